@@ -1,0 +1,156 @@
+#include "toolpath.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace frezka::gcode {
+
+void Toolpath::reserve(std::size_t n)
+{
+    m_kind.reserve(n);
+    m_x.reserve(n);
+    m_y.reserve(n);
+    m_z.reserve(n);
+    m_a.reserve(n);
+    m_feed.reserve(n);
+    m_line.reserve(n);
+    m_aux.reserve(n);
+}
+
+void Toolpath::clear()
+{
+    *this = Toolpath{};
+}
+
+void Toolpath::push(MotionKind kind, const Point4 &end, double feed, std::uint32_t line,
+                    std::uint32_t aux)
+{
+    m_kind.push_back(kind);
+    m_x.push_back(end.x);
+    m_y.push_back(end.y);
+    m_z.push_back(end.z);
+    m_a.push_back(end.a);
+    m_feed.push_back(feed);
+    m_line.push_back(line);
+    m_aux.push_back(aux);
+}
+
+void Toolpath::appendRapid(const Point4 &end, double feedMmPerMin, std::uint32_t line)
+{
+    push(MotionKind::Rapid, end, feedMmPerMin, line, kNone);
+}
+
+void Toolpath::appendFeed(const Point4 &end, double feedMmPerMin, std::uint32_t line)
+{
+    push(MotionKind::Feed, end, feedMmPerMin, line, kNone);
+}
+
+void Toolpath::appendArc(const Point4 &end, const ArcInfo &arc, double feedMmPerMin,
+                         std::uint32_t line)
+{
+    m_arcs.push_back(arc);
+    push(MotionKind::Arc, end, feedMmPerMin, line, static_cast<std::uint32_t>(m_arcs.size() - 1));
+}
+
+void Toolpath::appendProbe(const Point4 &end, ProbeKind kind, double feedMmPerMin,
+                           std::uint32_t line)
+{
+    push(MotionKind::Probe, end, feedMmPerMin, line, static_cast<std::uint32_t>(kind));
+}
+
+void Toolpath::appendEvent(const Event &event, double feedMmPerMin, std::uint32_t line)
+{
+    m_events.push_back(event);
+    push(event.kind == EventKind::Dwell ? MotionKind::Dwell : MotionKind::Event, last(),
+         feedMmPerMin, line, static_cast<std::uint32_t>(m_events.size() - 1));
+}
+
+std::size_t Toolpath::memoryBytes() const
+{
+    return m_kind.capacity() * sizeof(MotionKind)
+           + (m_x.capacity() + m_y.capacity() + m_z.capacity() + m_a.capacity()
+              + m_feed.capacity())
+                 * sizeof(double)
+           + (m_line.capacity() + m_aux.capacity()) * sizeof(std::uint32_t)
+           + m_arcs.capacity() * sizeof(ArcInfo) + m_events.capacity() * sizeof(Event);
+}
+
+namespace {
+
+// In-plane (u, v) and normal (w) coordinates of a point, per the arc convention in the header.
+struct PlaneCoords
+{
+    double u, v, w;
+};
+
+PlaneCoords toPlane(const Point4 &p, Plane plane)
+{
+    switch (plane) {
+    case Plane::XY:
+        return {p.x, p.y, p.z};
+    case Plane::XZ:
+        return {p.z, p.x, p.y};
+    case Plane::YZ:
+        return {p.y, p.z, p.x};
+    }
+    return {p.x, p.y, p.z};
+}
+
+Point4 fromPlane(const PlaneCoords &c, double a, Plane plane)
+{
+    switch (plane) {
+    case Plane::XY:
+        return {c.u, c.v, c.w, a};
+    case Plane::XZ:
+        return {c.v, c.w, c.u, a};
+    case Plane::YZ:
+        return {c.w, c.u, c.v, a};
+    }
+    return {c.u, c.v, c.w, a};
+}
+
+} // namespace
+
+std::vector<Point4> chordArc(const Point4 &start, const Point4 &end, const ArcInfo &arc,
+                             double toleranceMm)
+{
+    const PlaneCoords s = toPlane(start, arc.plane);
+    const PlaneCoords e = toPlane(end, arc.plane);
+    const PlaneCoords c = toPlane(arc.centre, arc.plane);
+    const double radius = std::hypot(s.u - c.u, s.v - c.v);
+    const double a0 = std::atan2(s.v - c.v, s.u - c.u);
+    const double a1 = std::atan2(e.v - c.v, e.u - c.u);
+    constexpr double kTwoPi = 2 * std::numbers::pi;
+    const bool ccw = arc.turns > 0;
+    double sweep = ccw ? a1 - a0 : a0 - a1; // positive angle travelled in the turning direction
+    while (sweep <= 1e-12)
+        sweep += kTwoPi;
+    while (sweep > kTwoPi + 1e-12)
+        sweep -= kTwoPi;
+    sweep += kTwoPi * (std::abs(arc.turns) - 1);
+
+    // Largest chord angle whose sagitta r(1 - cos(theta/2)) stays within the tolerance.
+    std::size_t n = 1;
+    if (radius > toleranceMm && toleranceMm > 0) {
+        const double maxStep = 2 * std::acos(1 - toleranceMm / radius);
+        n = static_cast<std::size_t>(std::max(1.0, std::ceil(sweep / maxStep)));
+    }
+    // The end radius may differ slightly from the start radius (within the interpreter's check):
+    // blend the radius so the last point lands exactly on the programmed end.
+    const double endRadius = std::hypot(e.u - c.u, e.v - c.v);
+    std::vector<Point4> points;
+    points.reserve(n);
+    for (std::size_t k = 1; k < n; ++k) {
+        const double t = static_cast<double>(k) / static_cast<double>(n);
+        const double angle = a0 + (ccw ? 1 : -1) * sweep * t;
+        const double r = radius + (endRadius - radius) * t;
+        const PlaneCoords p{c.u + r * std::cos(angle), c.v + r * std::sin(angle),
+                            s.w + (e.w - s.w) * t};
+        points.push_back(fromPlane(p, start.a + (end.a - start.a) * t, arc.plane));
+    }
+    points.push_back(end);
+    return points;
+}
+
+} // namespace frezka::gcode
