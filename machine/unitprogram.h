@@ -1,0 +1,59 @@
+#pragma once
+// UnitProgram: the planner's output and the driver's input (docs/architecture).
+//
+// A sequence of unit commands in the order they go to the unit, each tagged with the G-code
+// source line it came from and, for motion, the absolute step position it ends at, so that the
+// driver can show progress against the program and resume after a stop without re-deriving any
+// geometry. Steps exist only from here on.
+//
+// Speed semantics follow docs/gve-protocol.md §4: V, B in pulses/s (per the mode set by
+// SpeedMode), A in thousands of pulses/s², T in ms, $ in steps.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace frezka::machine {
+
+using Steps4 = std::array<std::int64_t, 4>; // absolute steps X, Y, Z, A
+
+enum class UnitOp : std::uint8_t {
+    Line,          // !0L dx,dy,dz[,da]  stand-alone move (queue must be empty)
+    Vector,        // !0C dx,dy,dz[,da]  continuous vector
+    Brake,         // !0B n    brake speed, pulses/s
+    Speed,         // !0V n    speed, pulses/s
+    Accel,         // !0A n    acceleration, thousands of pulses/s²
+    Pause,         // !0T n    pause between non-continuous moves, ms
+    ShortThreshold,// !0$ n    steps
+    SpeedModeVk,   // !0VK     path speeds
+    SpeedModeVn,   // !0VN     major-axis speeds
+    Output,        // !0O0,hh  output port 0 (active low), value = byte
+    Spindle,       // !7V n    spindle ‰ (0 = off)
+    WaitIdle,      // PC side: wait until the queue has drained (L0,0,0 accepted)
+    Dwell,         // PC side: wait idle, then value milliseconds
+    OperatorStop,  // PC side: M0 / M1 / M6, value = EventKind-like reason, tool in aux
+    Probe,         // PC side: G38.x probe move, delta in d, probe kind in aux
+    ProgramEnd,    // PC side: end of program
+};
+
+struct UnitCommand
+{
+    UnitOp op = UnitOp::Line;
+    std::array<std::int32_t, 4> d{}; // relative steps for Line/Vector/Probe (A = 0 on 3 axes)
+    std::int64_t value = 0;          // the scalar argument of the other ops
+    std::int32_t aux = 0;            // op-specific extra (see UnitOp)
+    std::uint32_t sourceLine = 0;    // 1-based G-code line; 0 = generated (setup)
+    Steps4 endSteps{};               // absolute step position after this command
+    friend bool operator==(const UnitCommand &, const UnitCommand &) = default;
+};
+
+struct UnitProgram
+{
+    int axisCount = 3;      // 3 or 4: how many components L/C carry on the wire
+    Steps4 startSteps{};    // absolute steps the program assumes at its start
+    std::vector<UnitCommand> commands;
+    friend bool operator==(const UnitProgram &, const UnitProgram &) = default;
+};
+
+} // namespace frezka::machine
