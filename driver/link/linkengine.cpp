@@ -11,6 +11,26 @@ namespace {
 constexpr std::size_t kLongestReplyBytes = 64;
 } // namespace
 
+bool mustArriveOnce(Op op)
+{
+    switch (op) {
+    case Op::Line:
+    case Op::Vector:
+    case Op::ExchangeUp:
+    case Op::ExchangeDown:
+    case Op::Keep:
+    case Op::Restore:
+    case Op::Go:
+    case Op::Home:
+    case Op::Jump:
+    case Op::PacketStart:
+    case Op::PacketEnd:
+        return true;
+    default:
+        return false;
+    }
+}
+
 int packetIndexAdvance(int commandCount)
 {
     return commandCount + 2;
@@ -21,7 +41,14 @@ bool advancesIndex(Op op)
     return op != Op::Index && op != Op::Repeat;
 }
 
-LinkEngine::LinkEngine(LinkOptions options) : m_options(options) {}
+LinkEngine::LinkEngine(LinkOptions options)
+    : m_options(options)
+{}
+
+bool LinkEngine::exact() const
+{
+    return m_packet || mustArriveOnce(m_commands.front().op);
+}
 
 double LinkEngine::wireTime(std::size_t bytes) const
 {
@@ -114,7 +141,7 @@ void LinkEngine::beginTransaction(double now)
 {
     ++m_stats.transactions;
     m_indexBefore = m_index;
-    if (m_index) {
+    if (m_index || !exact()) {
         transmitMain(now);
         return;
     }
@@ -182,7 +209,7 @@ std::optional<Reply> LinkEngine::decodeFor(const Command &c, const std::string &
     // The reply to %+ already carries a checksum, the reply to %- does not (§2.1); while the
     // unit's state is in doubt, accept either.
     const bool switching = c.op == Op::ChecksumOn || c.op == Op::ChecksumOff;
-    const ChecksumMode mode = switching   ? ChecksumMode::Auto
+    const ChecksumMode mode = switching     ? ChecksumMode::Auto
                               : m_checksums ? ChecksumMode::On
                                             : ChecksumMode::Off;
     const ReplyResult res = decodeReply(line, mode);
@@ -214,12 +241,11 @@ void LinkEngine::onMainReply(const Line &line, double now)
     }
     // Possibly damaged on the way in (code 4 = bad checksum) or cut short (code 2): the index
     // tells whether the unit took it as a command.
-    const bool doubtful = (reply->code == ReplyCode::Syntax && m_checksums) ||
-                          reply->code == ReplyCode::Watchdog;
-    if (doubtful && !m_syncing && m_indexBefore) {
+    const bool doubtful =
+        (reply->code == ReplyCode::Syntax && m_checksums) || reply->code == ReplyCode::Watchdog;
+    if (doubtful && !m_syncing && (m_indexBefore || !exact())) {
         m_lastRaw = line.text;
-        recover("reply '" + line.text + "' (" + std::string(replyCodeText(reply->code)) + ")",
-                now);
+        recover("reply '" + line.text + "' (" + std::string(replyCodeText(reply->code)) + ")", now);
         return;
     }
     finishOk(*reply, line.text);
@@ -318,9 +344,8 @@ void LinkEngine::onTime(double now)
         ++m_stats.timeouts;
         if (!m_decoder.pending().empty())
             m_lastRaw = m_decoder.pending();
-        recover(m_decoder.pending().empty()
-                    ? std::string("no reply")
-                    : "incomplete reply '" + m_decoder.pending() + "'",
+        recover(m_decoder.pending().empty() ? std::string("no reply")
+                                            : "incomplete reply '" + m_decoder.pending() + "'",
                 now);
         return;
     case State::AwaitIndex:
@@ -330,11 +355,19 @@ void LinkEngine::onTime(double now)
         return;
     case State::Settle:
         m_decoder.clear();
-        if (m_presync)
+        if (m_presync) {
             sendAux(cmd::index(), State::AwaitIndex, now);
-        else if (m_syncing)
+        } else if (m_syncing) {
             transmitMain(now);
-        else
+        } else if (!exact()) {
+            // Harmless to repeat: send it again. It may have arrived before, so the unit's
+            // index is no longer known (learnt again before the next exact command).
+            ++m_resent;
+            ++m_stats.resent;
+            m_index.reset();
+            m_indexBefore.reset();
+            transmitMain(now);
+        } else
             sendAux(cmd::index(), State::AwaitIndex, now);
         return;
     }
@@ -342,6 +375,7 @@ void LinkEngine::onTime(double now)
 
 void LinkEngine::finishOk(const Reply &r, const std::string &raw)
 {
+    const int after = indexAfter();
     Outcome o;
     o.status = OutcomeStatus::Ok;
     o.commands = std::move(m_commands);
@@ -357,9 +391,9 @@ void LinkEngine::finishOk(const Reply &r, const std::string &raw)
         o.accepted = r.ok() ? static_cast<int>(o.commands.size())
                             : static_cast<int>(r.decimal().value_or(0));
         // The index after a failed packet depends on where it stopped: learn it next time.
-        m_index = r.ok() && m_indexBefore ? std::optional<int>(indexAfter()) : std::nullopt;
+        m_index = r.ok() && m_indexBefore ? std::optional<int>(after) : std::nullopt;
     } else if (m_indexBefore && advancesIndex(o.commands.front().op)) {
-        m_index = indexAfter();
+        m_index = after;
     }
     if (o.commands.front().op == Op::Jump)
         m_index = 0;

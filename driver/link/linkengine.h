@@ -11,6 +11,7 @@
 // Outcome. Recovery (§8) when a reply is garbled, fails its checksum or does not come in time:
 //
 //   settle (let the rest of a broken line arrive, then forget it)
+//   a command that is harmless to repeat (queries, settings): send it again; else
 //   '@'  -> index of the last command the unit received
 //           == the index this transaction leads to   -> it arrived: '>' fetches its reply
 //           == the index before this transaction     -> it did not arrive: send it again
@@ -61,13 +62,13 @@ struct Outcome
     OutcomeStatus status = OutcomeStatus::Ok;
     std::vector<protocol::Command> commands; // the command, or the packet's C/B commands
     bool packet = false;
-    protocol::Reply reply;  // the unit's reply (a packet: the reply to *E)
-    int accepted = 0;       // packet: commands the unit accepted (all when reply.code == Ok)
-    std::string raw;        // the raw reply line, or the last garbled one
-    std::string error;      // Failed: English, names the command and what came back
-    int resent = 0;         // times the transaction was sent again (unit did not get it)
-    int recovered = 0;      // times a lost or garbled reply was recovered with '@' / '>'
-    std::uint64_t tag = 0;  // the caller's tag from start()
+    protocol::Reply reply; // the unit's reply (a packet: the reply to *E)
+    int accepted = 0;      // packet: commands the unit accepted (all when reply.code == Ok)
+    std::string raw;       // the raw reply line, or the last garbled one
+    std::string error;     // Failed: English, names the command and what came back
+    int resent = 0;        // times the transaction was sent again (unit did not get it)
+    int recovered = 0;     // times a lost or garbled reply was recovered with '@' / '>'
+    std::uint64_t tag = 0; // the caller's tag from start()
 };
 
 struct LinkStats
@@ -75,10 +76,10 @@ struct LinkStats
     std::int64_t bytesOut = 0;
     std::int64_t bytesIn = 0;
     std::int64_t transactions = 0;
-    std::int64_t resent = 0;      // transactions sent again
-    std::int64_t recovered = 0;   // replies recovered with '@' and '>'
+    std::int64_t resent = 0;       // transactions sent again
+    std::int64_t recovered = 0;    // replies recovered with '@' and '>'
     std::int64_t garbledLines = 0; // lines that did not decode or did not fit
-    std::int64_t noiseLines = 0;  // lines nobody waited for (logged, then dropped)
+    std::int64_t noiseLines = 0;   // lines nobody waited for (logged, then dropped)
     std::int64_t timeouts = 0;
     friend bool operator==(const LinkStats &, const LinkStats &) = default;
 };
@@ -146,6 +147,7 @@ private:
     void finish();
     void log(LinkLogKind kind, const std::string &text);
     int indexAfter() const; // the unit's index once this transaction has arrived
+    bool exact() const;     // the transaction must arrive exactly once (see mustArriveOnce)
     double timeoutFor(const protocol::Command &c, std::size_t bytes) const;
     const protocol::Command &mainCommand() const;
     std::string describe() const;
@@ -163,7 +165,7 @@ private:
     std::vector<protocol::Command> m_commands;
     bool m_packet = false;
     std::uint64_t m_tag = 0;
-    std::string m_wire;       // its bytes, as sent
+    std::string m_wire; // its bytes, as sent
     int m_attempts = 0;
     int m_resent = 0;
     int m_recovered = 0;
@@ -175,6 +177,9 @@ private:
 // How far a packet of n commands advances the unit's index once its *E has arrived: every line
 // (*S, the commands, *E) is a command (adopted reading §8). One place, to change with hardware.
 int packetIndexAdvance(int commandCount);
+// Commands whose repetition would change what the machine does (motion, XU/XD, K/R, G, W, J,
+// packets): recovered through the index. All others are resent as they are after a lost reply.
+bool mustArriveOnce(protocol::Op op);
 // Whether a command advances the unit's index (all but '@' and '>').
 bool advancesIndex(protocol::Op op);
 

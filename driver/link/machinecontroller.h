@@ -37,11 +37,11 @@ struct ConnectionSettings
         Emulator,   // the built-in in-process emulator, real time
     };
     Kind kind = Kind::Emulator;
-    QString portName;       // SerialPort
-    int baud = 115200;      // both (the emulator paces its wire at this rate)
-    double latencyMs = 0;   // Emulator: USB-serial latency per direction
-    double faultRate = 0;   // Emulator: byte errors per byte (1e-3 = one per 1000 bytes)
-    quint32 seed = 1;       // Emulator: fault injector seed
+    QString portName;     // SerialPort
+    int baud = 115200;    // both (the emulator paces its wire at this rate)
+    double latencyMs = 0; // Emulator: USB-serial latency per direction
+    double faultRate = 0; // Emulator: byte errors per byte (1e-3 = one per 1000 bytes)
+    quint32 seed = 1;     // Emulator: fault injector seed
     friend bool operator==(const ConnectionSettings &, const ConnectionSettings &) = default;
 };
 
@@ -82,11 +82,11 @@ public slots:
     void jogStop();
     void setMpg(bool on);
 
-    void setSpindleRpm(double rpm);                    // !7V, per mille from the profile's max rpm
-    void setOutputs(quint8 mask, quint8 activeHigh);   // bits per §10 (1 = on), others kept
-    void setOverride(int percent);                     // XM
-    void overrideUp();                                 // XU
-    void overrideDown();                               // XD
+    void setSpindleRpm(double rpm);                  // !7V, per mille from the profile's max rpm
+    void setOutputs(quint8 mask, quint8 activeHigh); // bits per §10 (1 = on), others kept
+    void setOverride(int percent);                   // XM
+    void overrideUp();                               // XU
+    void overrideDown();                             // XD
     // A raw command for the console, e.g. "!0PF" or "PF" (address 0 assumed). Validated
     // against the variant; the reply comes as a logLine.
     void sendRaw(const QString &text);

@@ -285,8 +285,8 @@ void MachineCore::applyFlags(std::uint8_t flags, double now)
     m_dirty = true;
     if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running)
         interrupted();
-    if (m_state.inta && !wasInta && (m_state.mode == MachineMode::Jogging ||
-                                     m_state.mode == MachineMode::Idle))
+    if (m_state.inta && !wasInta &&
+        (m_state.mode == MachineMode::Jogging || m_state.mode == MachineMode::Idle))
         interrupted();
     checkIdleWaiters();
 }
@@ -338,8 +338,8 @@ void MachineCore::linkClosed(const std::string &why, double now)
     m_haltPending = false;
     if (m_job) {
         m_needVerify = true;
-        fail("link lost: " + why + "; the job is kept and can resume after reconnecting",
-             nullptr, MachineMode::LinkLost);
+        fail("link lost: " + why + "; the job is kept and can resume after reconnecting", nullptr,
+             MachineMode::LinkLost);
     } else {
         log("link closed: " + why);
         setMode(why.empty() ? MachineMode::Disconnected : MachineMode::LinkLost);

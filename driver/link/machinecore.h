@@ -36,31 +36,31 @@ namespace frezka::driver {
 struct CoreOptions
 {
     LinkOptions link;
-    bool checksums = true;      // switch checksums on when connecting
-    bool packets = true;        // send runs of C/B as packets
-    int maxPacketCommands = 0;  // 0 = up to the variant's queue capacity
-    double pollIntervalS = 0.05;        // 20 Hz position + status while connected
-    double inputsPollIntervalS = 0.25;  // I1/I2
-    double maxPollGapS = 1.0;   // while streaming wire-bound, poll at least this often
-    int pollMinQueued = 24;     // streaming: poll only with at least this many vectors queued
-    bool compareEeprom = true;  // read the unit's EEPROM on connect and report differences
-    bool optionalStops = true;  // M1 pauses
+    bool checksums = true;             // switch checksums on when connecting
+    bool packets = true;               // send runs of C/B as packets
+    int maxPacketCommands = 0;         // 0 = up to the variant's queue capacity
+    double pollIntervalS = 0.05;       // 20 Hz position + status while connected
+    double inputsPollIntervalS = 0.25; // I1/I2
+    double maxPollGapS = 1.0;          // while streaming wire-bound, poll at least this often
+    int pollMinQueued = 24;    // streaming: poll only with at least this many vectors queued
+    bool compareEeprom = true; // read the unit's EEPROM on connect and report differences
+    bool optionalStops = true; // M1 pauses
     friend bool operator==(const CoreOptions &, const CoreOptions &) = default;
 };
 
 // Figures of a job for the CLI and the benchmarks.
 struct JobReport
 {
-    std::int64_t vectors = 0;      // C and L commands accepted
-    std::int64_t commands = 0;     // program commands accepted
+    std::int64_t vectors = 0;  // C and L commands accepted
+    std::int64_t commands = 0; // program commands accepted
     double startS = 0;
     double endS = 0;
-    std::int64_t linkBytes = 0;    // both directions during the job
+    std::int64_t linkBytes = 0; // both directions during the job
     std::int64_t resent = 0;
     std::int64_t recovered = 0;
-    std::int64_t verified = 0;     // times progress was re-established from the counters
-    std::int64_t polls = 0;        // position polls during the job
-    bool finished = false;         // reached ProgramEnd / the end of the program
+    std::int64_t verified = 0; // times progress was re-established from the counters
+    std::int64_t polls = 0;    // position polls during the job
+    bool finished = false;     // reached ProgramEnd / the end of the program
     friend bool operator==(const JobReport &, const JobReport &) = default;
 };
 
@@ -165,10 +165,10 @@ private:
     MachineState m_state;
     bool m_dirty = false;
     double m_now = 0;
-    std::deque<Step> m_steps;  // operation steps, before polls and the job
-    Then m_inFlight;           // continuation of the transaction in flight
+    std::deque<Step> m_steps;                         // operation steps, before polls and the job
+    Then m_inFlight;                                  // continuation of the transaction in flight
     std::vector<std::function<void()>> m_idleWaiters; // run when F shows RUN = 0
-    double m_waitUntil = -1;   // a dwell or back-off: nothing from the job before this time
+    double m_waitUntil = -1; // a dwell or back-off: nothing from the job before this time
     bool m_open = false;
 
     // polling
@@ -180,22 +180,22 @@ private:
     // job
     machine::UnitProgram m_program;
     bool m_job = false;
-    std::size_t m_next = 0;     // next program command to send
-    std::size_t m_exec = 0;     // program command executing (from the polled position)
+    std::size_t m_next = 0;        // next program command to send
+    std::size_t m_exec = 0;        // program command executing (from the polled position)
     std::size_t m_inflightEnd = 0; // end of the commands in flight
     std::int64_t m_vectorsAcked = 0;
-    bool m_streamBlocked = false;  // waiting for idle / operator / verification
-    bool m_queueFullSeen = false;  // last C/packet hit a full queue
+    bool m_streamBlocked = false; // waiting for idle / operator / verification
+    bool m_queueFullSeen = false; // last C/packet hit a full queue
     std::int64_t m_queuedAtFull = 0;
     JobReport m_report;
     std::int64_t m_bytesAtStart = 0;
-    bool m_needVerify = false;  // progress must be re-established from the counters
+    bool m_needVerify = false; // progress must be re-established from the counters
     bool m_jogContinuous = false;
-    int m_packetLimit = 1;            // adaptive packet size (commands)
+    int m_packetLimit = 1;                    // adaptive packet size (commands)
     std::vector<std::int64_t> m_vectorPrefix; // motion commands before each program index
     std::int64_t m_resentAtStart = 0;
     std::int64_t m_recoveredAtStart = 0;
-    bool m_holdNeedsGo = false;       // the unit holds (INTA): resume with G
+    bool m_holdNeedsGo = false; // the unit holds (INTA): resume with G
     // tool lift
     std::int64_t m_liftSteps = 0;
     bool m_spindleStopped = false;

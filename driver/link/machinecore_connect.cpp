@@ -45,12 +45,14 @@ void MachineCore::setupUnit()
             return;
         m_state.firmware = o.reply.values.empty() ? "" : o.reply.values[0];
         const auto found = variantFromFirmware(m_state.firmware);
-        const auto wantFamily = want.variant == Variant::Gve64Phantom ? Variant::Gve64
-                                                                      : want.variant;
+        const auto wantFamily =
+            want.variant == Variant::Gve64Phantom ? Variant::Gve64 : want.variant;
         if (!found || *found != wantFamily) {
             m_steps.clear();
-            fail("the unit reports firmware '" + m_state.firmware + "' but the machine profile is "
-                     "for a " + std::string(want.displayName) + "; choose the matching profile",
+            fail("the unit reports firmware '" + m_state.firmware +
+                     "' but the machine profile is "
+                     "for a " +
+                     std::string(want.displayName) + "; choose the matching profile",
                  &o, MachineMode::Alarm);
             return;
         }

@@ -111,8 +111,8 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
     m_vectorsAcked = 0;
     m_streamBlocked = m_queueFullSeen = m_needVerify = false;
     m_waitUntil = -1;
-    m_packetLimit = m_options.maxPacketCommands > 0 ? m_options.maxPacketCommands
-                                                     : info.queueCapacity - 1;
+    m_packetLimit =
+        m_options.maxPacketCommands > 0 ? m_options.maxPacketCommands : info.queueCapacity - 1;
     m_vectorPrefix.assign(m_program.commands.size() + 1, 0);
     for (std::size_t i = 0; i < m_program.commands.size(); ++i)
         m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(m_program.commands[i].op) ? 1 : 0);
@@ -182,8 +182,8 @@ void MachineCore::sendPacket(double now)
         packet.push_back(toCommand(cmds[end]));
         ++end;
     }
-    if (packet.empty() || (vectors == 0 && cmds[end < cmds.size() ? end : end - 1].op ==
-                                               UnitOp::Vector)) {
+    if (packet.empty() ||
+        (vectors == 0 && cmds[end < cmds.size() ? end : end - 1].op == UnitOp::Vector)) {
         // No room in the unit's queue by our estimate: wait for the next poll to tell.
         m_waitUntil = std::max(now, m_lastPoll) + m_options.pollIntervalS;
         m_queueFullSeen = true;
@@ -387,7 +387,8 @@ void MachineCore::locateExecuting()
         for (int a = 0; a < axes; ++a) {
             const std::int64_t start = end[a] - cmds[i].d[a];
             atEnd = atEnd && pos[a] == end[a];
-            inside = inside && pos[a] >= std::min(start, end[a]) && pos[a] <= std::max(start, end[a]);
+            inside =
+                inside && pos[a] >= std::min(start, end[a]) && pos[a] <= std::max(start, end[a]);
         }
         if (inside && !atEnd)
             break;
@@ -397,8 +398,8 @@ void MachineCore::locateExecuting()
     m_state.sourceLine = cmds.empty() ? 0 : cmds[shown].sourceLine;
     m_state.progress = cmds.empty() ? 0 : static_cast<double>(i) / static_cast<double>(cmds.size());
     const double elapsed = m_now - m_report.startS;
-    m_state.etaS = i > 0 ? elapsed * static_cast<double>(cmds.size() - i) / static_cast<double>(i)
-                         : -1;
+    m_state.etaS =
+        i > 0 ? elapsed * static_cast<double>(cmds.size() - i) / static_cast<double>(i) : -1;
 }
 
 void MachineCore::verifyProgress(const std::string &why)
@@ -474,8 +475,8 @@ void MachineCore::resendModals(std::function<void()> then)
         const UnitOp op = m_program.commands[i].op;
         if (!isModal(op))
             continue;
-        const auto slot = static_cast<std::size_t>(op == UnitOp::SpeedModeVn ? UnitOp::SpeedModeVk
-                                                                             : op);
+        const auto slot =
+            static_cast<std::size_t>(op == UnitOp::SpeedModeVn ? UnitOp::SpeedModeVk : op);
         if (seen[slot])
             continue;
         seen[slot] = true;

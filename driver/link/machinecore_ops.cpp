@@ -115,7 +115,8 @@ MachineCore::Result MachineCore::abort(double now)
     m_streamBlocked = false;
     m_needVerify = false;
     setMode(MachineMode::Stopping);
-    send(cmd::halt(), [this](const Outcome &o) { unitError(o, "stopping (H)", MachineMode::Alarm); });
+    send(cmd::halt(),
+         [this](const Outcome &o) { unitError(o, "stopping (H)", MachineMode::Alarm); });
     send(cmd::deleteQueue(), [this, wasJob](const Outcome &o) {
         if (unitError(o, "dropping the queue (D)", MachineMode::Alarm))
             return;
@@ -288,11 +289,11 @@ MachineCore::Result MachineCore::home(double now)
         const auto &ax = m_config.axes[static_cast<std::size_t>(a)];
         const auto &h = ax.homing;
         const auto axis = static_cast<Axis>(a);
-        const Command w = cmd::home(
-            axis, h.direction * stepsFromMm(a, h.travelMm),
-            std::max<std::int64_t>(10, std::llround(h.towardMmPerS * ax.stepsPerMm)),
-            stepsFromMm(a, h.backOffMm),
-            std::max<std::int64_t>(10, std::llround(h.offMmPerS * ax.stepsPerMm)));
+        const Command w =
+            cmd::home(axis, h.direction * stepsFromMm(a, h.travelMm),
+                      std::max<std::int64_t>(10, std::llround(h.towardMmPerS * ax.stepsPerMm)),
+                      stepsFromMm(a, h.backOffMm),
+                      std::max<std::int64_t>(10, std::llround(h.offMmPerS * ax.stepsPerMm)));
         if (auto bad = validate(w, m_config.unit.variant, m_config.unit.maxPulseRate)) {
             m_steps.clear();
             fail("homing axis " + std::string(1, axisLetter(axis)) + ": " + bad.message, nullptr,
@@ -344,12 +345,12 @@ MachineCore::Result MachineCore::jogTo(int axis, std::int64_t target, double spe
     if (delta == 0)
         return refusal("the axis is at its soft limit");
     const double rate = std::min(speedMmPerMin, ax.maxSpeedMmPerMin) / 60.0 * ax.stepsPerMm;
-    const auto pulses = std::clamp<std::int64_t>(std::llround(rate), 10,
-                                                 m_config.unit.maxPulseRate);
+    const auto pulses =
+        std::clamp<std::int64_t>(std::llround(rate), 10, m_config.unit.maxPulseRate);
     std::array<std::int64_t, 4> d{};
     d[static_cast<std::size_t>(axis)] = delta;
-    const Command l = m_state.axisCount == 4 ? cmd::line(d[0], d[1], d[2], d[3])
-                                             : cmd::line(d[0], d[1], d[2]);
+    const Command l =
+        m_state.axisCount == 4 ? cmd::line(d[0], d[1], d[2], d[3]) : cmd::line(d[0], d[1], d[2]);
     setMode(MachineMode::Jogging);
     send(cmd::speed(pulses), [this](const Outcome &o) {
         if (unitError(o, "setting the jog speed", MachineMode::Alarm))
@@ -390,8 +391,8 @@ MachineCore::Result MachineCore::jogContinuous(int axis, int direction, double s
         return refusal("no such axis or direction");
     const auto &ax = m_config.axes[static_cast<std::size_t>(axis)];
     m_jogContinuous = true;
-    const double limitMm = direction > 0 ? std::max(ax.softMinMm, ax.softMaxMm)
-                                         : std::min(ax.softMinMm, ax.softMaxMm);
+    const double limitMm =
+        direction > 0 ? std::max(ax.softMinMm, ax.softMaxMm) : std::min(ax.softMinMm, ax.softMaxMm);
     auto r = jogTo(axis, stepsFromMm(axis, limitMm), speedMmPerMin, now);
     if (r)
         m_jogContinuous = false;
@@ -403,7 +404,9 @@ MachineCore::Result MachineCore::jogStop(double now)
     if (m_state.mode != MachineMode::Jogging)
         return notNow("Stopping the jog", m_state.mode);
     m_jogContinuous = false;
-    sendFront(cmd::halt(), [this](const Outcome &o) { unitError(o, "stopping the jog (H)", MachineMode::Alarm); });
+    sendFront(cmd::halt(), [this](const Outcome &o) {
+        unitError(o, "stopping the jog (H)", MachineMode::Alarm);
+    });
     send(cmd::deleteQueue(), [this](const Outcome &o) {
         if (unitError(o, "ending the jog (D)", MachineMode::Alarm))
             return;

@@ -77,8 +77,8 @@ struct MachineState
     bool run = false;
     bool inta = false;
     bool queueFull = false;
-    std::uint8_t inputs1 = 0;   // I1: IN0..IN7
-    std::uint8_t inputs2 = 0;   // I2: bit6 IN14, bit7 IN15
+    std::uint8_t inputs1 = 0;          // I1: IN0..IN7
+    std::uint8_t inputs2 = 0;          // I2: bit6 IN14, bit7 IN15
     std::uint16_t interruptInputs = 0; // ST4 | ST5 << 8 of the last interrupt
     std::uint8_t outputs = 0xFF;       // port 0 as last written (active low)
     int spindlePermille = 0;
@@ -88,12 +88,12 @@ struct MachineState
 
     // job
     bool jobActive = false;
-    std::uint32_t sourceLine = 0;    // G-code line of the vector executing now (0 = none)
-    std::int64_t commandsTotal = 0;  // commands in the unit program
-    std::int64_t commandsAcked = 0;  // accepted by the unit
+    std::uint32_t sourceLine = 0;   // G-code line of the vector executing now (0 = none)
+    std::int64_t commandsTotal = 0; // commands in the unit program
+    std::int64_t commandsAcked = 0; // accepted by the unit
     std::int64_t vectorsAcked = 0;
-    double progress = 0;             // 0..1 by commands executed
-    double etaS = -1;                // estimated seconds left, -1 unknown
+    double progress = 0; // 0..1 by commands executed
+    double etaS = -1;    // estimated seconds left, -1 unknown
 
     // link
     LinkStats link;
