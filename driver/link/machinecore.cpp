@@ -146,8 +146,7 @@ double MachineCore::deadline() const
     if (!m_open)
         return d;
     if (m_engine.idle()) {
-        const double interval = m_options.pollIntervalS;
-        d = std::min(d, m_lastPoll + interval);
+        d = std::min(d, nextPollTime());
         if (m_waitUntil > m_now)
             d = std::min(d, m_waitUntil);
     }
@@ -196,29 +195,32 @@ void MachineCore::pump(double now)
     publish();
 }
 
-bool MachineCore::pollDue(double now) const
+double MachineCore::nextPollTime() const
 {
     if (m_haltPending)
-        return false;
+        return kNoDeadline;
     switch (m_state.mode) {
     case MachineMode::Disconnected:
     case MachineMode::Connecting:
     case MachineMode::LinkLost:
-        return false;
+        return kNoDeadline;
     default:
         break;
     }
-    if (now - m_lastPoll < m_options.pollIntervalS)
-        return false;
     const bool streaming = m_job && m_state.mode == MachineMode::Running && !m_streamBlocked &&
-                           now >= m_waitUntil && m_next < m_program.commands.size();
+                           m_now >= m_waitUntil && m_next < m_program.commands.size();
     if (!streaming || m_queueFullSeen)
-        return true;
+        return m_lastPoll + m_options.pollIntervalS;
     // Wire-bound streaming: a poll costs a round trip the queue may not have.
-    const std::int64_t queued = m_vectorsAcked - static_cast<std::int64_t>(m_exec);
+    const std::int64_t queued = m_vectorsAcked - m_vectorPrefix[std::min(m_exec, m_next)];
     if (queued >= m_options.pollMinQueued)
-        return true;
-    return now - m_lastPoll >= m_options.maxPollGapS;
+        return m_lastPoll + m_options.pollIntervalS;
+    return m_lastPoll + m_options.maxPollGapS;
+}
+
+bool MachineCore::pollDue(double now) const
+{
+    return now >= nextPollTime();
 }
 
 void MachineCore::startPoll(double now)

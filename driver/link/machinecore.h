@@ -121,6 +121,7 @@ private:
     void sendFront(const protocol::Command &c, Then then);
     void onOutcome(const Outcome &o);
     bool pollDue(double now) const;
+    double nextPollTime() const;
     void startPoll(double now);
     void applyPosition(const protocol::Reply &r);
     void applyFlags(std::uint8_t flags, double now);
