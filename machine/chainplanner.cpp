@@ -39,6 +39,13 @@ Vec4 normalized(const Vec4 &v)
     return r;
 }
 
+// floor() that forgives floating-point noise (1e-9 relative): a value the exact arithmetic
+// puts on an integer must not lose a whole unit.
+double floorUnits(double x)
+{
+    return std::floor(x + 1e-9 * std::max(1.0, std::abs(x)));
+}
+
 // floor(sqrt(x)) for x >= 0, exact in integers.
 std::int64_t isqrt(std::int64_t x)
 {
@@ -91,7 +98,13 @@ public:
         bound();
         std::size_t first = 0;
         for (std::size_t k = 0; k < n; ++k) {
-            if (k + 1 == n || m_capUnits[k] < kMinSpeed) {
+            const bool exact = m_options.strategy == PlanStrategy::ExactStop;
+            if (k + 1 < n && !exact && m_capUnits[k] < kMinSpeed && softStopAllowed(k)) {
+                // A sharp corner ends the chain at the unit's smallest speed; the queue keeps
+                // running, so the unit neither rests nor pauses T there.
+                m_capUnits[k] = kMinSpeed;
+                ++m_out.chains;
+            } else if (k + 1 == n || m_capUnits[k] < kMinSpeed) {
                 chain(first, k);
                 first = k + 1;
             }
@@ -106,6 +119,32 @@ private:
         m_d.resize(m_moves.size());
         for (std::size_t k = 0; k < m_moves.size(); ++k)
             deriveOne(m_moves[k], m_d[k]);
+        chooseAccels();
+    }
+
+    // A per vector: the smallest path-acceleration cap within a window of neighbours (step
+    // rounding makes the direction of tiny vectors jitter), kept from the previous vector while
+    // it lies within a tolerance below the cap. Fewer A commands: A cannot travel in packets.
+    void chooseAccels()
+    {
+        const std::size_t n = m_d.size();
+        const std::size_t w = static_cast<std::size_t>(std::max(0, m_options.accelWindow));
+        std::int64_t last = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            Derived &r = m_d[k];
+            double a = r.aMm; // r.aMm stays the limit itself: the bound uses it
+            for (std::size_t j = k > w ? k - w : 0; j < std::min(n, k + w + 1); ++j)
+                a = std::min(a, m_d[j].aMm);
+            const auto cap =
+                std::max<std::int64_t>(1, static_cast<std::int64_t>(floorUnits(a * r.f / 1000)));
+            const bool keep =
+                last > 0 && last <= cap && last >= cap * (1 - m_options.accelTolerance);
+            r.accel = keep ? last : cap;
+            last = r.accel;
+            const double whole = std::floor(r.units + 1e-9);
+            const double usable = std::max(whole - m_options.brakeMarginSteps, whole / 2);
+            r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * r.accel * 1000.0 * usable));
+        }
     }
 
     void deriveOne(const Move &m, Derived &r)
@@ -134,13 +173,12 @@ private:
         v = std::min(v, m_config.unit.maxPulseRate / r.f);
         r.vMm = v;
         r.aMm = a;
-        r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(v * r.f)),
+        r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(v * r.f)),
                                            kMinSpeed, m_config.unit.maxPulseRate);
-        r.accel = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::floor(a * r.f / 1000)));
-        const double whole = std::floor(r.units + 1e-9);
-        const double usable = std::max(whole - m_options.brakeMarginSteps, whole / 2);
-        r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * r.accel * 1000.0 * usable));
-        r.isShort = r.units < static_cast<double>(m_options.shortThreshold);
+        std::int64_t major = 0;
+        for (std::int32_t c : m.d)
+            major = std::max<std::int64_t>(major, std::abs(c));
+        r.isShort = major < m_options.shortThreshold; // the unit compares major-axis steps
     }
 
     // Junction-deviation and curvature caps of the path speed at the vertex after move k, mm/s.
@@ -203,7 +241,7 @@ private:
                         units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
             }
         }
-        m_capUnits[k] = static_cast<std::int64_t>(std::floor(units));
+        m_capUnits[k] = static_cast<std::int64_t>(floorUnits(units));
     }
 
     // The bound's cap at the vertex after move k: the same limits on a continuous path speed.
@@ -236,12 +274,25 @@ private:
             fullPasses(first, b);
         for (std::size_t k = first; k <= last; ++k) {
             const Derived &r = m_d[k];
-            PlannedVector v{m_moves[k].d, m_moves[k].endSteps, r.speed,        r.accel,
-                            b[k - first], k == last,           m_moves[k].line};
+            PlannedVector v{m_moves[k].d, m_moves[k].endSteps, r.speed,         r.accel,
+                            b[k - first], k == last,           m_moves[k].line, false};
             if (k == last) // nothing follows: the unit brakes to 0; a short vector cruises at B
                 v.brake = r.isShort ? r.speed : kMinSpeed;
+            v.line = m_options.strategy == PlanStrategy::ExactStop;
             m_out.vectors.push_back(v);
         }
+    }
+
+    // True when passing the vertex after move k at the smallest speed (10 pulses/s) keeps every
+    // axis's speed step within its limit; else the queue must drain there (a real stop).
+    bool softStopAllowed(std::size_t k) const
+    {
+        for (int i = 0; i < 4; ++i) {
+            if (kMinSpeed * jumpPerUnit(k, i) >
+                m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS)
+                return false;
+        }
+        return true;
     }
 
     void fullPasses(std::size_t first, std::vector<std::int64_t> &b) const

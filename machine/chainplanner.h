@@ -34,7 +34,8 @@ struct PlannedVector
     std::int64_t accel = 0; // A, thousands of pulses/s²
     std::int64_t brake = 0; // B, pulses/s; the chain's last vector: see chainEnd
     bool chainEnd = false;  // the unit must stop after this vector (queue drains)
-    std::uint32_t line = 0;
+    std::uint32_t sourceLine = 0;
+    bool line = false; // send as L (stand-alone, from and to rest), not C
 };
 
 struct RunOutcome

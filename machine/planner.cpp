@@ -48,6 +48,7 @@ public:
         m_result.stats.speedModeVk = m_vk;
         m_posMm = m_path.origin();
         m_steps = stepsOf(m_posMm, m_config);
+        m_emitted = m_steps;
         m_result.program.axisCount = wireAxisCount(m_config);
         m_result.program.startSteps = m_steps;
         m_jd = m_config.motion.junctionDeviationMm;
@@ -114,7 +115,7 @@ private:
         c.value = value;
         c.aux = aux;
         c.sourceLine = line;
-        c.endSteps = m_steps;
+        c.endSteps = m_emitted;
         m_result.program.commands.push_back(c);
     }
 
@@ -230,6 +231,7 @@ private:
         c.sourceLine = line;
         c.endSteps = target;
         m_result.program.commands.push_back(c);
+        m_emitted = target;
         // A probe ends where it touches: its time is in neither the estimate nor the bound.
     }
 
@@ -248,18 +250,22 @@ private:
             return;
         const detail::RunOutcome run = detail::planRun(m_moves, m_config, m_options, m_vk);
         for (const detail::PlannedVector &v : run.vectors) {
-            setModal(UnitOp::Accel, m_accel, v.accel, v.line);
-            setModal(UnitOp::Speed, m_speed, v.speed, v.line);
-            setModal(UnitOp::Brake, m_brake, v.brake, v.line);
+            setModal(UnitOp::Accel, m_accel, v.accel, v.sourceLine);
+            setModal(UnitOp::Speed, m_speed, v.speed, v.sourceLine);
+            if (!v.line)
+                setModal(UnitOp::Brake, m_brake, v.brake, v.sourceLine);
             UnitCommand c;
-            c.op = UnitOp::Vector;
+            c.op = v.line ? UnitOp::Line : UnitOp::Vector;
             c.d = v.d;
-            c.sourceLine = v.line;
+            c.sourceLine = v.sourceLine;
             c.endSteps = v.endSteps;
             m_result.program.commands.push_back(c);
-            if (v.chainEnd)
-                emit(UnitOp::WaitIdle, 0, v.line);
+            m_emitted = v.endSteps;
+            if (v.chainEnd && !v.line)
+                emit(UnitOp::WaitIdle, 0, v.sourceLine);
         }
+        if (!run.vectors.empty() && run.vectors.back().line)
+            emit(UnitOp::WaitIdle, 0, run.vectors.back().sourceLine);
         m_bound += run.boundS;
         PlanStats &s = m_result.stats;
         s.chains += run.chains;
@@ -281,7 +287,8 @@ private:
     PlanResult m_result;
     bool m_vk = false;
     Point4 m_posMm;   // intended position (mm) of the last vector's end
-    Steps4 m_steps{}; // absolute steps after the last emitted motion
+    Steps4 m_steps{};   // absolute steps after the last collected move
+    Steps4 m_emitted{}; // absolute steps after the last emitted motion command
     std::vector<detail::Move> m_moves;
     bool m_exactStop = false;
     double m_jd = 0;
@@ -432,7 +439,7 @@ void Planner::finishStats()
     s.vectors = model.vectors;
     s.brakeViolations = model.brakeViolations;
     s.waitS = m_waitS;
-    s.estimatedS = model.motionS + m_waitS;
+    s.estimatedS = model.motionS + model.waitS;
     s.boundS = m_bound + m_waitS;
 }
 

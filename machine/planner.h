@@ -31,7 +31,9 @@ struct PlanOptions
     PlanStrategy strategy = PlanStrategy::Full;
     int grblLookahead = 16;          // GrblJunction: blocks in the planner buffer (grbl: 16)
     std::int64_t shortThreshold = 1; // $: vectors shorter than this run "short" (§4)
-    double brakeMarginSteps = 1;     // distance kept in reserve when braking, steps (>= 0)
+    double brakeMarginSteps = 0.25;     // distance kept in reserve when braking, steps (>= 0)
+    double accelTolerance = 0.05;    // keep the last A while within this fraction below the cap
+    int accelWindow = 4;             // A: smallest cap over this many neighbours each side
     double feedOverride = 1.0;       // multiplies programmed feeds (not rapids), 0.01..10
 };
 
@@ -58,7 +60,7 @@ struct PlanStats
     std::size_t chains = 0;          // runs of C vectors that start and end at rest
     double estimatedS = 0;           // job time under the unit's motion model (§4.2)
     double boundS = 0;               // time-optimal bound for the same path and limits
-    double waitS = 0;                // PC-side waits in both figures (dwell, spin-up, T pauses)
+    double waitS = 0;                // dwells and spin-up waits (PC side), in both figures
     double maxVertexJumpMmPerS = 0;  // largest per-axis speed step at a vertex, mm/s
     double maxJumpRatio = 0;         // largest (speed step / axis limit) at a vertex
     std::size_t jumpOverLimit = 0;   // vertices whose speed step exceeds an axis limit

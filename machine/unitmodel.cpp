@@ -82,7 +82,16 @@ struct Pending
 {
     double n, a, v, b;
     bool isShort;
+    bool isLine;
 };
+
+std::int64_t majorSteps(const std::array<std::int32_t, 4> &d)
+{
+    std::int64_t major = 0;
+    for (std::int32_t c : d)
+        major = std::max<std::int64_t>(major, std::llabs(c));
+    return major;
+}
 
 class Model
 {
@@ -110,23 +119,25 @@ public:
             m_b = static_cast<double>(c.value);
             break;
         case UnitOp::ShortThreshold:
-            m_short = static_cast<double>(c.value);
+            m_short = c.value;
             break;
-        case UnitOp::Vector: {
-            const double n = speedUnitsLength(c.d, m_vk);
-            m_chain.push_back({n, m_a, m_v, m_b, n < m_short});
+        case UnitOp::Pause:
+            m_pauseS = static_cast<double>(c.value) / 1000.0;
             break;
-        }
+        case UnitOp::Vector:
+            m_chain.push_back(
+                {speedUnitsLength(c.d, m_vk), m_a, m_v, m_b, majorSteps(c.d) < m_short, false});
+            break;
         case UnitOp::Line:
             flush();
-            m_chain.push_back({speedUnitsLength(c.d, m_vk), m_a, m_v, 0, false});
+            m_chain.push_back({speedUnitsLength(c.d, m_vk), m_a, m_v, 0, false, true});
             flush();
             break;
         case UnitOp::Dwell:
             flush();
             m_result.waitS += static_cast<double>(c.value) / 1000.0;
+            m_sinceRest += static_cast<double>(c.value) / 1000.0;
             break;
-        case UnitOp::Pause:
         case UnitOp::Output:
         case UnitOp::Spindle:
             break;
@@ -143,30 +154,38 @@ public:
     }
 
 private:
+    // Runs the queued vectors from rest to rest (a chain: the queue never runs dry inside).
     void flush()
     {
         if (m_chain.empty())
             return;
         ++m_result.chains;
+        if (m_restedBefore) // the unit waits T after coming to rest (PC-side waits overlap it)
+            m_result.waitS += std::max(0.0, m_pauseS - m_sinceRest);
         double e = 0;
         for (std::size_t k = 0; k < m_chain.size(); ++k) {
             const Pending &p = m_chain[k];
             const bool last = k + 1 == m_chain.size();
-            const double cruise = p.isShort ? p.b : p.v;
-            const double exit = last ? 0 : p.b;
+            const double cruise = p.isShort ? std::min(p.v, p.b) : p.v;
+            const double exit = last || p.isLine ? 0 : std::min(p.b, cruise);
             const VectorRun r = runVector(e, cruise, exit, p.a, p.n);
             m_result.motionS += r.timeS;
             m_result.brakeViolations += r.violation ? 1 : 0;
-            m_result.peakSpeed = std::max({m_result.peakSpeed, e, std::min(cruise, p.v)});
+            m_result.peakSpeed = std::max({m_result.peakSpeed, e, r.exit});
             m_result.vertexSpeeds.push_back(r.exit);
             ++m_result.vectors;
             e = r.exit;
         }
         m_chain.clear();
+        m_restedBefore = true;
+        m_sinceRest = 0;
     }
 
     bool m_vk;
-    double m_a = 20000, m_v = 1000, m_b = 35000, m_short = 512;
+    double m_a = 20000, m_v = 1000, m_b = 35000, m_pauseS = 0.010;
+    std::int64_t m_short = 512;
+    bool m_restedBefore = false;
+    double m_sinceRest = 0;
     std::vector<Pending> m_chain;
     ModelResult m_result;
 };

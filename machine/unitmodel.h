@@ -28,7 +28,7 @@ VectorRun runVector(double e, double c, double x, double a, double n);
 struct ModelResult
 {
     double motionS = 0; // time with the axes moving
-    double waitS = 0;   // PC-side waits: Dwell ms
+    double waitS = 0;   // Dwell ms (PC side) and T pauses after rests
     std::size_t vectors = 0;
     std::size_t chains = 0;
     std::size_t brakeViolations = 0;
