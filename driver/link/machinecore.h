@@ -137,6 +137,7 @@ private:
     void connectSequence();
     void setupUnit();
     void compareEeprom();
+    void probeDoublePacketStart();
     void connected();
 
     // job streaming (machinecore_job.cpp)

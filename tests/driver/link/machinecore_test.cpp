@@ -39,3 +39,29 @@ TEST(MachineCore, StreamsADenseJobExactly)
     EXPECT_EQ(sim.port.unit().stats().motion.vectorsExecuted, 3000);
     EXPECT_EQ(sim.core.state().mode, MachineMode::Idle);
 }
+
+// 1 byte error per 1000 bytes (corrupted, dropped or duplicated) plus lost replies: every run
+// must end at exactly the expected counters with every vector executed exactly once.
+TEST(MachineCore, FaultSoakEndsExact)
+{
+    for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+        WireOptions wire;
+        wire.latencyS = 0.004;
+        wire.byteErrorRate = 1e-3;
+        wire.replyLossRate = 1e-3;
+        wire.seed = seed;
+        Sim sim(Variant::Gve64, wire);
+        ASSERT_TRUE(sim.connect(120)) << "seed " << seed << "\n" << sim.lastLog();
+        const auto program = denseProgram(1500);
+        ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+        ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 900))
+            << "seed " << seed << "\n"
+            << sim.lastLog();
+        EXPECT_TRUE(sim.finished.front()) << "seed " << seed;
+        const auto pos = sim.port.unit().position();
+        for (int a = 0; a < 3; ++a)
+            EXPECT_EQ(pos[a], program.commands.back().endSteps[a]) << "seed " << seed;
+        EXPECT_EQ(sim.port.unit().stats().motion.vectorsExecuted, 1500) << "seed " << seed;
+        EXPECT_GT(sim.port.wireStats().corrupted + sim.port.wireStats().dropped, 0);
+    }
+}
