@@ -31,8 +31,8 @@ public:
 
     // Creates the transport for a connection (serial port or in-process emulator). Replaceable
     // for tests; the default knows both kinds.
-    using TransportFactory =
-        std::function<Transport *(const ConnectionSettings &, QObject *parent, QString *error)>;
+    using TransportFactory = std::function<Transport *(
+        const ConnectionSettings &, const machine::MachineConfig &, QObject *parent, QString *error)>;
     void setTransportFactory(TransportFactory factory) { m_factory = std::move(factory); }
     void setCoreOptions(const CoreOptions &options) { m_options = options; }
 
@@ -81,8 +81,9 @@ private:
     TransportFactory m_factory;
 };
 
-// The default transport factory: SerialTransport, or EmulatorTransport when the emulator is
-// built in. Returns nullptr and sets *error when the kind is not available.
-Transport *createTransport(const ConnectionSettings &settings, QObject *parent, QString *error);
+// The default transport factory: SerialTransport, or EmulatorTransport (the variant and home
+// switches from the profile). Returns nullptr and sets *error when it cannot.
+Transport *createTransport(const ConnectionSettings &settings, const machine::MachineConfig &config,
+                           QObject *parent, QString *error);
 
 } // namespace frezka::driver

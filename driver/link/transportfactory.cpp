@@ -1,13 +1,15 @@
 // The default transport factory.
 
 #include "driver/link/linkworker.h"
+#include "driver/link/emulatortransport.h"
 #include "driver/link/serialtransport.h"
 
 #include <QCoreApplication>
 
 namespace frezka::driver {
 
-Transport *createTransport(const ConnectionSettings &settings, QObject *parent, QString *error)
+Transport *createTransport(const ConnectionSettings &settings, const machine::MachineConfig &config,
+                           QObject *parent, QString *error)
 {
     switch (settings.kind) {
     case ConnectionSettings::Kind::SerialPort:
