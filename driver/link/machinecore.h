@@ -153,6 +153,7 @@ private:
     void onJobCommandOutcome(const Outcome &o, std::size_t index, double now);
     void handlePcOp(const machine::UnitCommand &c, double now);
     void finishJob(bool ok);
+    void finishWithPosition();
     void verifyProgress(const std::string &why);
     void resendModals(std::function<void()> then);
     void locateExecuting();

@@ -227,7 +227,7 @@ void MachineCore::streamStep(double now)
         return;
     if (m_next >= m_program.commands.size()) {
         m_streamBlocked = true;
-        afterIdle([this] { finishJob(true); });
+        afterIdle([this] { finishWithPosition(); });
         return;
     }
     const machine::UnitCommand &c = m_program.commands[m_next];
@@ -448,7 +448,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
-            finishJob(true);
+            finishWithPosition();
         });
         return;
     case UnitOp::Probe:
@@ -458,6 +458,19 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
              MachineMode::Alarm);
         return;
     }
+}
+
+// The job ran to its end: read the counters once more so that the report and the last state
+// show where the machine really is.
+void MachineCore::finishWithPosition()
+{
+    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+    send(pos, [this](const Outcome &o) {
+        if (unitError(o, "reading the final position", MachineMode::LinkLost))
+            return;
+        applyPosition(o.reply);
+        finishJob(true);
+    });
 }
 
 void MachineCore::finishJob(bool ok)
