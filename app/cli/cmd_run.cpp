@@ -323,6 +323,7 @@ Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
     progress.show(state, true);
     progress.done();
     out.ok = finished.value_or(false);
+    out.report = worker.jobReport();
     out.finalSteps = state.positionSteps;
     if (emulated)
         out.unitStats = emulated->unit().stats();

@@ -35,6 +35,8 @@ public:
         const ConnectionSettings &, const machine::MachineConfig &, QObject *parent, QString *error)>;
     void setTransportFactory(TransportFactory factory) { m_factory = std::move(factory); }
     void setCoreOptions(const CoreOptions &options) { m_options = options; }
+    // The figures of the last job. Call from the worker's thread (or when it has none).
+    JobReport jobReport() const { return m_core ? m_core->jobReport() : JobReport{}; }
 
 public slots:
     void setMachineConfig(const frezka::machine::MachineConfig &config);

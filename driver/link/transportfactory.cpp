@@ -1,7 +1,7 @@
 // The default transport factory.
 
-#include "driver/link/linkworker.h"
 #include "driver/link/emulatortransport.h"
+#include "driver/link/linkworker.h"
 #include "driver/link/serialtransport.h"
 
 #include <QCoreApplication>
@@ -18,11 +18,17 @@ Transport *createTransport(const ConnectionSettings &settings, const machine::Ma
             return nullptr;
         }
         return new SerialTransport(settings.portName, settings.baud, parent);
-    case ConnectionSettings::Kind::Emulator:
-        break;
+    case ConnectionSettings::Kind::Emulator: {
+        WireOptions wire;
+        wire.baud = settings.baud;
+        wire.latencyS = settings.latencyMs / 1000.0;
+        wire.byteErrorRate = settings.faultRate;
+        wire.replyLossRate = settings.faultRate;
+        wire.seed = settings.seed;
+        return new EmulatorTransport(unitOptionsFor(config), wire, parent);
     }
-    *error =
-        QCoreApplication::translate("LinkWorker", "the built-in emulator is not available yet");
+    }
+    *error = QCoreApplication::translate("LinkWorker", "unknown connection kind");
     return nullptr;
 }
 
