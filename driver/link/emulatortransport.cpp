@@ -8,8 +8,7 @@ namespace frezka::driver {
 EmulatorTransport::EmulatorTransport(emulator::UnitOptions unit, WireOptions wire, QObject *parent)
     : Transport(parent)
     , m_port(std::make_unique<EmulatorPort>(std::move(unit), wire))
-{
-}
+{}
 
 EmulatorTransport::~EmulatorTransport() = default;
 
@@ -18,7 +17,7 @@ QString EmulatorTransport::description() const
     return QCoreApplication::translate("EmulatorTransport", "built-in %1 emulator")
         .arg(QString::fromUtf8(
             m_port->unit().variantInfo().displayName.data(),
-                               static_cast<qsizetype>(m_port->unit().variantInfo().displayName.size())));
+            static_cast<qsizetype>(m_port->unit().variantInfo().displayName.size())));
 }
 
 void EmulatorTransport::open()

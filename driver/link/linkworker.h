@@ -31,8 +31,9 @@ public:
 
     // Creates the transport for a connection (serial port or in-process emulator). Replaceable
     // for tests; the default knows both kinds.
-    using TransportFactory = std::function<Transport *(
-        const ConnectionSettings &, const machine::MachineConfig &, QObject *parent, QString *error)>;
+    using TransportFactory =
+        std::function<Transport *(const ConnectionSettings &, const machine::MachineConfig &,
+                                  QObject *parent, QString *error)>;
     void setTransportFactory(TransportFactory factory) { m_factory = std::move(factory); }
     void setCoreOptions(const CoreOptions &options) { m_options = options; }
     // The figures of the last job. Call from the worker's thread (or when it has none).

@@ -327,14 +327,29 @@ void MachineCore::afterIdle(std::function<void()> then)
     });
 }
 
+void MachineCore::afterJobIdle(std::function<void()> then)
+{
+    m_jobIdleWaiters.push_back(std::move(then));
+    afterIdle(nullptr);
+}
+
 void MachineCore::checkIdleWaiters()
 {
-    if (m_state.run || m_idleWaiters.empty())
+    if (m_state.run)
         return;
     auto waiters = std::move(m_idleWaiters);
     m_idleWaiters.clear();
-    for (auto &w : waiters)
-        w();
+    // The job's own waits (WaitIdle, M0, ProgramEnd, ...) count only while it runs: a queue
+    // kept by K or a pause is not the job's end.
+    if (m_state.mode == MachineMode::Running && !m_kept) {
+        for (auto &w : m_jobIdleWaiters)
+            waiters.push_back(std::move(w));
+        m_jobIdleWaiters.clear();
+    }
+    for (auto &w : waiters) {
+        if (w)
+            w();
+    }
 }
 
 // ---- transport events --------------------------------------------------------------------
@@ -348,6 +363,9 @@ void MachineCore::linkOpened(double now)
     m_idleWaiters.clear();
     m_inFlight = nullptr;
     m_haltPending = false;
+    m_jobIdleWaiters.clear();
+    if (m_job)
+        m_streamBlocked = false; // a wait in progress is taken up again from the program
     setMode(MachineMode::Connecting);
     connectSequence();
     pump(now);

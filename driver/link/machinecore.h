@@ -134,6 +134,7 @@ private:
     bool unitError(const Outcome &o, const std::string &what, MachineMode mode);
     void log(const std::string &text);
     void afterIdle(std::function<void()> then);
+    void afterJobIdle(std::function<void()> then);
     void checkIdleWaiters();
 
     // connect sequence (machinecore_connect.cpp)
@@ -180,6 +181,7 @@ private:
     std::deque<Step> m_steps;                         // operation steps, before polls and the job
     Then m_inFlight;                                  // continuation of the transaction in flight
     std::vector<std::function<void()>> m_idleWaiters; // run when F shows RUN = 0
+    std::vector<std::function<void()>> m_jobIdleWaiters; // the same, only while the job runs
     double m_waitUntil = -1; // a dwell or back-off: nothing from the job before this time
     bool m_open = false;
 

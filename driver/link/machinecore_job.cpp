@@ -227,7 +227,7 @@ void MachineCore::streamStep(double now)
         return;
     if (m_next >= m_program.commands.size()) {
         m_streamBlocked = true;
-        afterIdle([this] { finishWithPosition(); });
+        afterJobIdle([this] { finishWithPosition(); });
         return;
     }
     const machine::UnitCommand &c = m_program.commands[m_next];
@@ -404,7 +404,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
     m_streamBlocked = true;
     switch (c.op) {
     case UnitOp::WaitIdle:
-        afterIdle([this, index] {
+        afterJobIdle([this, index] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
@@ -412,7 +412,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
         });
         return;
     case UnitOp::Dwell:
-        afterIdle([this, index, ms = c.value] {
+        afterJobIdle([this, index, ms = c.value] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
@@ -431,7 +431,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
                                ? "M6: change to tool " + std::to_string(c.aux)
                            : kind == gcode::EventKind::OptionalPause ? "M1: optional stop"
                                                                      : "M0: program stop";
-        afterIdle([this, index, text] {
+        afterJobIdle([this, index, text] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
@@ -444,7 +444,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
         return;
     }
     case UnitOp::ProgramEnd:
-        afterIdle([this, index] {
+        afterJobIdle([this, index] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
