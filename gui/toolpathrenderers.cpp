@@ -5,7 +5,10 @@
 #include <QOpenGLContext>
 #include <QPainter>
 
+#include <QVector4D>
+
 #include <array>
+#include <cmath>
 
 namespace frezka::gui {
 namespace {
@@ -31,13 +34,20 @@ void addBox(std::vector<OverlayLine> &out, const SceneBounds &b, const QColor &c
 
 } // namespace
 
-std::vector<OverlayLine> overlayLines(const ToolpathViewModel &model, float mmPerPixel)
+std::vector<OverlayLine> boxLines(const ToolpathViewModel &model)
 {
     std::vector<OverlayLine> out;
     const auto &c = model.colours();
     addBox(out, model.travelBox(), c.travel);
     if (model.scene() && model.scene()->bounds.valid)
         addBox(out, model.scene()->bounds, model.boundsOutsideLimits() ? c.boundsBad : c.boundsOk);
+    return out;
+}
+
+std::vector<OverlayLine> toolLines(const ToolpathViewModel &model, float mmPerPixel)
+{
+    std::vector<OverlayLine> out;
+    const auto &c = model.colours();
     // Tool: a cone drawn as lines, tip at the tool position, about 30 px tall.
     const QVector3D t = model.toolPosition();
     const float h = 30.f * mmPerPixel, r = 10.f * mmPerPixel;
@@ -93,6 +103,10 @@ QImage SoftwareToolpathRenderer::renderImage(const QSize &size) const
         return QPointF(w2 + n.x() * w2, h2 - n.y() * h2);
     };
     const auto &colours = m_model->colours();
+    for (const auto &l : boxLines(*m_model)) {
+        p.setPen(QPen(l.colour, 1.0));
+        p.drawLine(toScreen(l.a), toScreen(l.b));
+    }
     if (const auto &scene = m_model->scene(); scene && !scene->isEmpty()) {
         const std::size_t cutEnd = m_model->cutEntry() == ToolpathViewModel::kNoneCut
                                        ? 0
@@ -110,7 +124,7 @@ QImage SoftwareToolpathRenderer::renderImage(const QSize &size) const
         }
     }
     p.setRenderHint(QPainter::Antialiasing);
-    for (const auto &l : overlayLines(*m_model, m_model->camera().scaleMmPerPixel(size))) {
+    for (const auto &l : toolLines(*m_model, m_model->camera().scaleMmPerPixel(size))) {
         p.setPen(QPen(l.colour, 1.0));
         p.drawLine(toScreen(l.a), toScreen(l.b));
     }
@@ -230,6 +244,7 @@ void GlToolpathRenderer::paintGL()
         {float(c.arc.redF()), float(c.arc.greenF()), float(c.arc.blueF()), 1.f},
         {float(c.probe.redF()), float(c.probe.greenF()), float(c.probe.blueF()), 1.f}};
     m_program.setUniformValueArray("u_colours", cols, 4);
+    drawOverlay(boxLines(*m_model));
     if (m_segmentCount > 0) {
         const auto &scene = m_model->scene();
         const std::size_t cutEnd = m_model->cutEntry() == ToolpathViewModel::kNoneCut
@@ -249,8 +264,13 @@ void GlToolpathRenderer::paintGL()
         glDrawArrays(GL_LINES, GLint(cutEnd * 2), GLsizei((m_segmentCount - cutEnd) * 2));
         m_vbo.release();
     }
-    // Overlay, one colour at a time.
-    const auto lines = overlayLines(*m_model, m_model->camera().scaleMmPerPixel(size()));
+    drawOverlay(toolLines(*m_model, m_model->camera().scaleMmPerPixel(size())));
+    m_program.release();
+}
+
+void GlToolpathRenderer::drawOverlay(const std::vector<OverlayLine> &lines)
+{
+    // One colour at a time.
     std::vector<float> buf;
     for (std::size_t i = 0; i < lines.size(); ++i) {
         const auto &l = lines[i];
@@ -260,7 +280,6 @@ void GlToolpathRenderer::paintGL()
             buf.clear();
         }
     }
-    m_program.release();
 }
 
 } // namespace frezka::gui

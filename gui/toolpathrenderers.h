@@ -21,8 +21,10 @@ struct OverlayLine
     QColor colour;
 };
 
-// Travel box, program bounds and tool marker as coloured 3D lines.
-std::vector<OverlayLine> overlayLines(const ToolpathViewModel &model, float mmPerPixel);
+// Travel box and program bounds (drawn under the path) as coloured 3D lines.
+std::vector<OverlayLine> boxLines(const ToolpathViewModel &model);
+// The tool marker (drawn over the path), about 30 px tall.
+std::vector<OverlayLine> toolLines(const ToolpathViewModel &model, float mmPerPixel);
 
 class SoftwareToolpathRenderer : public QWidget
 {
@@ -56,6 +58,7 @@ protected:
 
 private:
     void uploadScene();
+    void drawOverlay(const std::vector<OverlayLine> &lines);
     void drawLines(const std::vector<float> &xyz, const QColor &colour);
 
     ToolpathViewModel *m_model;
