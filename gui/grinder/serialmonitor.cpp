@@ -250,14 +250,14 @@ bool SerialMonitor::messageBytes(QByteArray &bytes, QString &error) const
 
 bool SerialMonitor::sendMessage(int index)
 {
+    if (!isPortOpen(index)) {
+        m_status->setText(tr("Port %1 is not open.").arg(index + 1));
+        return false;
+    }
     QByteArray bytes;
     QString error;
     if (!messageBytes(bytes, error)) {
         m_status->setText(error.isEmpty() ? tr("The message is empty.") : error);
-        return false;
-    }
-    if (!isPortOpen(index)) {
-        m_status->setText(tr("Port %1 is not open.").arg(index + 1));
         return false;
     }
     if (m_ports[index]->write(bytes) != bytes.size()) {

@@ -8,6 +8,7 @@
 #include "gui/grinder/zpositionpanel.h"
 
 #include <QLabel>
+#include <QSettings>
 #include <QPushButton>
 #include <QtTest>
 
@@ -37,6 +38,9 @@ void GrinderWindowTest::initTestCase()
     QCoreApplication::setOrganizationName(QStringLiteral("FrezkaTest"));
     QCoreApplication::setApplicationName(QStringLiteral("grinderwindow_test"));
     QStandardPaths::setTestModeEnabled(true);
+    // Settings of this run only: nothing leaks between runs or into the user's settings.
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.filePath("settings"));
 }
 
 void GrinderWindowTest::saveThenLoadRoundTripsByteExactlyOnPty()
