@@ -156,6 +156,10 @@ public:
     {
         if (!m_tty || total <= 0)
             return;
+        const std::int64_t now = m_clock.nowUs();
+        if (done < total && m_drawn && now - m_lastDrawUs < 100000)
+            return; // ten redraws a second are plenty
+        m_lastDrawUs = now;
         const int width = 30;
         const int filled = int(width * done / total);
         const double left = estimateSecondsLeft(done, total, m_clock.nowUs() - m_startUs, m_baud);
@@ -180,6 +184,7 @@ private:
     bool m_tty;
     std::int64_t m_startUs;
     bool m_drawn = false;
+    std::int64_t m_lastDrawUs = 0;
 };
 
 int report(const TransferResult &result)
@@ -200,8 +205,7 @@ int report(const TransferResult &result)
                 .arg(result.checksumFailures)
                 .arg(result.noiseBytes));
     if (result.operation != Operation::Ping && result.image.hasBlocks)
-        out(GrinderCli::tr("Inner blocks: %1\n")
-                .arg(QString::fromStdString(result.image.summary())));
+        out(GrinderCli::tr("Inner blocks: %1\n").arg(TransferSession::describeImage(result.image)));
     return 0;
 }
 

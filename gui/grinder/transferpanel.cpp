@@ -198,7 +198,7 @@ void TransferPanel::onFinished(const TransferResult &result)
         m_receivedLength->setText(tr("%1 bytes (0x%2)")
                                       .arg(result.data.size())
                                       .arg(QString::number(result.data.size(), 16).toUpper()));
-        m_receivedBlocks->setText(QString::fromStdString(result.image.summary()));
+        m_receivedBlocks->setText(TransferSession::describeImage(result.image));
         m_status->setText(tr("Received. Press Save to store the data in a file."));
     } else if (result.operation == Operation::Load && result.ok()) {
         m_status->setText(tr("Sent; the controller confirmed the transfer."));
@@ -271,7 +271,7 @@ bool TransferPanel::openFileToSend(const QString &path)
     const ImageReport report = checkImage(Bytes(m_toSend.begin(), m_toSend.end()));
     m_sendInfo->setText(tr("%1 bytes; inner blocks: %2")
                             .arg(m_toSend.size())
-                            .arg(QString::fromStdString(report.summary())));
+                            .arg(TransferSession::describeImage(report)));
     // K51LOAD 2.20 sent the file name when no header was given.
     m_header->setText(QFileInfo(path).completeBaseName().left(int(kHeaderSize)));
     updateEnabled();
