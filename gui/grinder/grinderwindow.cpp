@@ -32,6 +32,7 @@ GrinderWindow::GrinderWindow(QWidget *parent)
     , m_zPanel(new ZPositionPanel(this))
     , m_monitor(new SerialMonitor(this))
 {
+    setWindowFlag(Qt::Window); // a window of its own even when given a parent
     setWindowTitle(tr("Grinder transfer"));
     m_family->setObjectName(QStringLiteral("family"));
     m_mode->setObjectName(QStringLiteral("linkMode"));
