@@ -2,6 +2,7 @@
 
 #include "consolewidget.h"
 #include "drowidget.h"
+#include "interpreteradapter.h"
 #include "iopanel.h"
 #include "jogpanel.h"
 #include "language.h"
@@ -48,6 +49,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     setCentralWidget(m_view);
     m_program = new ProgramSession(this);
     m_program->setMaxSceneSegments(m_view->preferredMaxSegments());
+    m_program->setInterpreter(gcodeInterpreter());
     m_machine = nullptr;
 
     buildDocks();
@@ -336,7 +338,7 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
     m_profile = config;
     m_profilePath = path;
     const auto &info = protocol::variantInfo(config.unit.variant);
-    const int axes = machine::wireAxisCount(config);
+    const int axes = info.axisCount == 4 && config.axes[3].present ? 4 : 3;
     m_dro->setAxisCount(axes);
     m_jog->setAxisCount(axes);
     m_jog->setMpgAvailable(info.hasMpg);

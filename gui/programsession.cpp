@@ -92,6 +92,7 @@ void ProgramSession::load(const QString &path)
     const AnalyseFn analyse = m_analyse;
     const WorkOffsets offsets = m_offsets;
     const int active = m_activeOffset;
+    const std::array<double, 4> startMm = m_startMm;
     const std::size_t maxSegments = m_maxSegments;
     emit loadStarted(path);
 
@@ -129,9 +130,14 @@ void ProgramSession::load(const QString &path)
                 {0, 0, tr("This build has no G-code interpreter; the program cannot be checked.")});
             return done();
         }
-        InterpretRequest req{
-            data,   QFileInfo(path).fileName(), offsets,
-            active, cancelFlag.get(),           [&](double f) { progress->store(int(f * 1000)); }};
+        InterpretRequest req;
+        req.text = data;
+        req.fileName = QFileInfo(path).fileName();
+        req.offsets = offsets;
+        req.activeOffset = active;
+        req.startMm = startMm;
+        req.cancel = cancelFlag.get();
+        req.progress = [&](double f) { progress->store(int(f * 1000)); };
         InterpretOutcome outcome = interpret(req);
         result->errors = std::move(outcome.errors);
         if (cancelFlag->load())

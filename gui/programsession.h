@@ -53,6 +53,7 @@ struct InterpretRequest
     QString fileName;
     WorkOffsets offsets{};
     int activeOffset = 0;
+    std::array<double, 4> startMm{}; // machine position the program starts from
     const std::atomic_bool *cancel = nullptr;
     std::function<void(double)> progress; // fraction 0..1 of this step
 };
@@ -80,6 +81,8 @@ public:
     void setAnalyser(AnalyseFn fn) { m_analyse = std::move(fn); }
     void setMaxSceneSegments(std::size_t n) { m_maxSegments = n; }
     void setWorkOffsets(const WorkOffsets &offsets, int active);
+    // Machine position the next interpretation starts from (mm X Y Z A).
+    void setStartPosition(const std::array<double, 4> &mm) { m_startMm = mm; }
     const WorkOffsets &workOffsets() const { return m_offsets; }
     int activeOffset() const { return m_activeOffset; }
 
@@ -106,6 +109,7 @@ private:
     std::size_t m_maxSegments = 1'500'000;
     WorkOffsets m_offsets{};
     int m_activeOffset = 0;
+    std::array<double, 4> m_startMm{};
     LoadedProgram m_program;
     QThread *m_thread = nullptr;
     std::shared_ptr<std::atomic_bool> m_cancel;
