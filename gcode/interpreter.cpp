@@ -139,18 +139,23 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
 {
     if (!m_parser.normalize(raw, m_line, error))
         return false;
-    if (m_parser.isEmpty())
-        return true;
     if (m_parser.isPercent()) {
+        // % opens the program only as its first line (blank lines aside) and then closes it.
         if (!m_sawContent) {
             m_sawContent = true;
             m_percentStarted = true;
+        } else if (m_percentStarted) {
+            m_ended = true;
         } else {
-            m_ended = true; // the closing % ends the program
+            return failAt(ErrorCode::BadCharacter, static_cast<std::uint32_t>(raw.find('%') + 1),
+                          "%", error);
         }
         return true;
     }
-    m_sawContent = true;
+    if (!m_sawContent)
+        m_sawContent = raw.find_first_not_of(" \t\r") != std::string_view::npos;
+    if (m_parser.isEmpty())
+        return true;
     if (m_parser.hasBlockDelete() && m_options.blockDelete)
         return true;
     if (!m_parser.parse(m_block, m_assignments, error))
