@@ -7,6 +7,7 @@
 #include "jogpanel.h"
 #include "language.h"
 #include "outputspanel.h"
+#include "planneradapter.h"
 #include "profilestore.h"
 #include "programlisting.h"
 #include "programsession.h"
@@ -297,6 +298,8 @@ void MainWindow::connectProgram()
                             .arg(QFileInfo(p.path).fileName()));
         retranslate();
         addRecent(p.path);
+        for (const auto &w : p.warnings)
+            m_console->appendInfo(w.text);
         if (!p.errors.empty()) {
             std::set<int> lines;
             for (const auto &e : p.errors)
@@ -364,6 +367,9 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
         travel.max[i] = float(a.softMaxMm);
     }
     m_view->model()->setTravelBox(travel);
+    m_program->setAnalyser(plannerAnalyser(config));
+    if (!m_program->program().path.isEmpty())
+        m_program->reload(); // re-plan for the new profile
     m_unit->setText(QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size())));
     checkProgramLimits();
 }

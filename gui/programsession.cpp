@@ -39,6 +39,13 @@ double pathLength(const gcode::Toolpath &path)
 
 } // namespace
 
+std::uint32_t LoadedProgram::entryOfLine(std::uint32_t line) const
+{
+    if (line >= lineToEntry.size())
+        return gcode::Toolpath::kNone;
+    return lineToEntry[line];
+}
+
 ProgramSession::ProgramSession(QObject *parent)
     : QObject(parent)
 {
@@ -155,6 +162,13 @@ void ProgramSession::load(const QString &path)
                 cancelFlag.get()));
             result->scene = scene;
             result->lengthMm = pathLength(*outcome.toolpath);
+            const auto &tp = *outcome.toolpath;
+            std::uint32_t maxLine = 0;
+            for (std::size_t i = 0; i < tp.size(); ++i)
+                maxLine = std::max(maxLine, tp.line(i));
+            result->lineToEntry.assign(std::size_t(maxLine) + 1, gcode::Toolpath::kNone);
+            for (std::size_t i = 0; i < tp.size(); ++i)
+                result->lineToEntry[tp.line(i)] = std::uint32_t(i);
             result->toolpath = std::move(outcome.toolpath);
             if (result->errors.empty() && analyse) {
                 stage->store(4);

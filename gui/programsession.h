@@ -9,6 +9,8 @@
 #include "toolpathscene.h"
 
 #include "gcode/toolpath.h"
+#include "machine/planner.h"
+#include "machine/unitprogram.h"
 
 #include <QObject>
 #include <QString>
@@ -40,11 +42,18 @@ struct LoadedProgram
     std::shared_ptr<const ProgramText> text;
     std::shared_ptr<const gcode::Toolpath> toolpath;
     std::shared_ptr<const ToolpathScene> scene;
-    std::vector<ProgramMessage> errors;
+    std::vector<ProgramMessage> errors;                      // non-empty: nothing runs
+    std::vector<ProgramMessage> warnings;                    // runs, but the user should know
+    std::shared_ptr<const machine::UnitProgram> unitProgram; // planned for the active profile
+    machine::PlanStats planStats;
     std::vector<SpeedSample> speed; // planned speed along the path
     double estimatedS = -1;         // planner's exact duration, < 0 = unknown
     double lengthMm = 0;
     bool ok() const { return errors.empty() && toolpath != nullptr; }
+    bool runnable() const { return ok() && unitProgram != nullptr; }
+    // Toolpath entry of the last motion on a source line (for the cut colouring), or kNone.
+    std::uint32_t entryOfLine(std::uint32_t line) const;
+    std::vector<std::uint32_t> lineToEntry; // index = source line
 };
 
 struct InterpretRequest
