@@ -100,6 +100,12 @@ int parseArgs(const QStringList &list, Args &args)
             if (args.header.size() > int(kHeaderSize))
                 return fail(
                     GrinderCli::tr("--header: '%1' is longer than 16 characters").arg(args.header));
+            for (QChar c : args.header) {
+                if (c.unicode() < 0x20 || c.unicode() > 0x7E)
+                    return fail(GrinderCli::tr("--header: '%1' holds '%2'; the controller shows "
+                                               "plain ASCII only (no diacritics)")
+                                    .arg(args.header, QString(c)));
+            }
         } else if (arg == "--retries") {
             args.retries = list[++i].toInt(&ok);
             if (!ok || args.retries < 0 || args.retries > 100)

@@ -39,7 +39,8 @@ public:
     bool saveReceived(const QString &path); // write the received data, byte for byte
     bool openFileToSend(const QString &path);
     void setHeaderText(const QString &text);
-    bool send(); // PC -> Controller
+    bool send();   // PC -> Controller
+    void cancel(); // stop the transfer in progress
     QByteArray receivedData() const { return m_received.data; }
     QString statusText() const;
 
@@ -74,6 +75,7 @@ private:
     QLabel *m_sendInfo;
     QLineEdit *m_header;
     QPushButton *m_sendButton;
+    QPushButton *m_cancelButton;
     QProgressBar *m_progress;
     QLabel *m_progressText;
     QLabel *m_status;

@@ -8,8 +8,8 @@
 #include "gui/grinder/zpositionpanel.h"
 
 #include <QLabel>
-#include <QSettings>
 #include <QPushButton>
+#include <QSettings>
 #include <QtTest>
 
 using namespace frezka::grinder;

@@ -284,3 +284,20 @@ TEST(GrinderSession, TimeLeftEstimate)
     EXPECT_DOUBLE_EQ(estimateSecondsLeft(0, 9600, 0, 9600), 10.0);          // from the baud rate
     EXPECT_DOUBLE_EQ(estimateSecondsLeft(500, 1500, 1'000'000, 9600), 2.0); // measured rate
 }
+
+TEST(GrinderSession, CancelStopsATransferAndTheLinkStaysUsable)
+{
+    Rig rig(config(Family::K51));
+    rig.session.save();
+    rig.clock.advance(5'000'000); // part of the 22 s message is in
+    ASSERT_TRUE(rig.session.isBusy());
+    ASSERT_FALSE(rig.progress.empty());
+    rig.session.cancel();
+    ASSERT_TRUE(rig.result.has_value());
+    EXPECT_EQ(rig.result->error, TransferError::Cancelled);
+    EXPECT_FALSE(rig.session.isBusy());
+    rig.clock.advance(30'000'000); // the controller finishes its message; nobody listens
+    rig.result.reset();
+    rig.session.ping();
+    EXPECT_TRUE(rig.run().ok());
+}
