@@ -301,3 +301,26 @@ TEST(GrinderSession, CancelStopsATransferAndTheLinkStaysUsable)
     rig.session.ping();
     EXPECT_TRUE(rig.run().ok());
 }
+
+// The controller answers after the reply timeout: ENQ is repeated, both ENQs are answered, and
+// the second ACK must not be taken for the answer to the request or to the data.
+TEST(GrinderSession, LateDuplicateAckIsNotTakenForTheAnswer)
+{
+    EmulatorConfig c = config(Family::K51);
+    c.replyDelayUs = 3'500'000; // beyond the 3 s reply timeout
+    Rig saver(c);
+    const TransferResult saved = saver.save();
+    ASSERT_TRUE(saved.ok()) << saved.message.toStdString();
+    EXPECT_EQ(saved.retries, 1) << saver.trace.join(QLatin1Char(10)).toStdString();
+    EXPECT_EQ(toBytes(saved.data), saver.transport.emulator().image());
+
+    c.image = Bytes(kK51ImageSize, 0);
+    c.nakCount = 0;
+    Rig loader(c);
+    const Bytes file = generatedImage(Family::K51, kK51ImageSize);
+    const TransferResult loaded = loader.load("LATE", file);
+    ASSERT_TRUE(loaded.ok()) << loaded.message.toStdString();
+    EXPECT_EQ(loader.transport.emulator().image(), file);
+    EXPECT_TRUE(loader.trace.join('\n').contains("ACK ignored"))
+        << loader.trace.join('\n').toStdString();
+}
