@@ -75,6 +75,18 @@ TransferPanel::TransferPanel(Clock &clock, QWidget *parent)
     m_log->setMaximumBlockCount(2000);
     m_saveButton->setEnabled(false);
 
+    buildLayout();
+
+    connect(m_receiveButton, &QPushButton::clicked, this, &TransferPanel::receive);
+    connect(m_saveButton, &QPushButton::clicked, this, &TransferPanel::chooseSaveFile);
+    connect(m_chooseButton, &QPushButton::clicked, this, &TransferPanel::chooseSendFile);
+    connect(m_sendButton, &QPushButton::clicked, this, &TransferPanel::send);
+    connect(m_cancelButton, &QPushButton::clicked, this, &TransferPanel::cancel);
+    updateEnabled();
+}
+
+void TransferPanel::buildLayout()
+{
     auto *fromBox = new QGroupBox(tr("Controller → PC"), this);
     auto *fromForm = new QFormLayout(fromBox);
     fromForm->addRow(m_receiveButton);
@@ -107,13 +119,6 @@ TransferPanel::TransferPanel(Clock &clock, QWidget *parent)
     layout->addWidget(m_hint);
     layout->addWidget(new QLabel(tr("Messages:"), this));
     layout->addWidget(m_log, 1);
-
-    connect(m_receiveButton, &QPushButton::clicked, this, &TransferPanel::receive);
-    connect(m_saveButton, &QPushButton::clicked, this, &TransferPanel::chooseSaveFile);
-    connect(m_chooseButton, &QPushButton::clicked, this, &TransferPanel::chooseSendFile);
-    connect(m_sendButton, &QPushButton::clicked, this, &TransferPanel::send);
-    connect(m_cancelButton, &QPushButton::clicked, this, &TransferPanel::cancel);
-    updateEnabled();
 }
 
 void TransferPanel::setSession(TransferSession *session, int baud)

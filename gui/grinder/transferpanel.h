@@ -48,6 +48,7 @@ signals:
     void transferFinished(const frezka::grinder::TransferResult &result);
 
 private:
+    void buildLayout();
     void onProgress(qint64 done, qint64 total);
     void onFinished(const grinder::TransferResult &result);
     void chooseSaveFile();
