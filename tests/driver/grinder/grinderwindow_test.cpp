@@ -98,6 +98,10 @@ void GrinderWindowTest::saveThenLoadRoundTripsByteExactlyOnPty()
     for (QLabel *label : window.findChildren<QLabel *>())
         headerShown |= label->text() == "WINDOW TEST 16CH";
     QVERIFY(headerShown);
+    // For documentation: FREZKA_SCREENSHOT_DIR=/some/dir keeps a picture of the window.
+    const QString shots = qEnvironmentVariable("FREZKA_SCREENSHOT_DIR");
+    if (!shots.isEmpty())
+        QVERIFY(window.grab().save(QDir(shots).filePath("grinder-window.png")));
 }
 
 void GrinderWindowTest::silentControllerShowsNoConnection()
