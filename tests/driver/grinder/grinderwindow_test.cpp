@@ -154,6 +154,13 @@ void GrinderWindowTest::serialMonitorShowsBothDirectionsAndCaptures()
     QVERIFY(monitor->viewText().contains("<-1  <AA><06><00><00><FF>P"));
     QVERIFY(monitor->captureTo(file("capture-000.txt")));
     QVERIFY(readAll(file("capture-000.txt")).contains("<AA><06>"));
+    // A second port at the same time, answering on its own line of the view.
+    EmuProcess second({"--fast", "--family", "anc"});
+    QVERIFY(monitor->openPort(1, {second.path(), 4800, 8, 'n', 1}));
+    monitor->setHexView(true);
+    monitor->setMessage(QStringLiteral("AA 05 00 00 51"), true); // ANC ENQ
+    QVERIFY(monitor->sendMessage(1));
+    QTRY_VERIFY(monitor->viewText().contains("<-2  AA 06 00 00 50"));
     monitor->setMessage(QStringLiteral("AA 0"), true);
     QVERIFY(!monitor->sendMessage(0));
     QVERIFY(monitor->statusText().contains("not hex bytes"));
