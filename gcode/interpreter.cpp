@@ -32,6 +32,9 @@ Interpreter::Interpreter(Options options)
     , m_parser(m_params)
 {
     m_params.setSystem(this);
+    m_origin = m_options.workOffsetsMm;
+    m_coord = std::clamp(m_options.coordinateSystem, 0, 8);
+    m_pos = m_options.startMm;
 }
 
 Interpreter::~Interpreter() = default;
@@ -94,10 +97,13 @@ Result Interpreter::run(std::string_view text)
          ++p)
         ++lines;
     m_toolpath.reserve(lines + 16);
+    m_toolpath.setOrigin(m_pos);
 
     std::string_view raw;
     Error error;
     while (!m_ended && nextLine(&raw)) {
+        if (m_options.progress && (m_line & 0xFFFF) == 0)
+            m_options.progress(m_next, text.size());
         if (++m_executed > m_options.maxBlocks) {
             result.errors.push_back(
                 {ErrorCode::TooManyBlocks, m_line, 1, std::to_string(m_options.maxBlocks)});
@@ -133,18 +139,23 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
 {
     if (!m_parser.normalize(raw, m_line, error))
         return false;
-    if (m_parser.isEmpty())
-        return true;
     if (m_parser.isPercent()) {
+        // % opens the program only as its first line (blank lines aside) and then closes it.
         if (!m_sawContent) {
             m_sawContent = true;
             m_percentStarted = true;
+        } else if (m_percentStarted) {
+            m_ended = true;
         } else {
-            m_ended = true; // the closing % ends the program
+            return failAt(ErrorCode::BadCharacter, static_cast<std::uint32_t>(raw.find('%') + 1),
+                          "%", error);
         }
         return true;
     }
-    m_sawContent = true;
+    if (!m_sawContent)
+        m_sawContent = raw.find_first_not_of(" \t\r") != std::string_view::npos;
+    if (m_parser.isEmpty())
+        return true;
     if (m_parser.hasBlockDelete() && m_options.blockDelete)
         return true;
     if (!m_parser.parse(m_block, m_assignments, error))

@@ -19,6 +19,7 @@
 #include "gcode/toolpath.h"
 
 #include <array>
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
@@ -34,6 +35,13 @@ struct Options
     std::uint64_t maxBlocks = 200'000'000; // executed lines before TooManyBlocks (endless loops)
     std::size_t maxErrors = 1000;          // check mode stops after this many
     std::map<int, double> toolLengthMm;    // G43 Hn; tools not listed have length 0
+    // State at the start of the program (added for the GUI: persisted work offsets and the
+    // machine position the program starts from).
+    std::array<std::array<double, 4>, 9> workOffsetsMm{}; // G54..G59.3, machine mm (#5221..)
+    int coordinateSystem = 0;                             // active at the start: 0 = G54
+    Point4 startMm;                                       // machine position (toolpath origin)
+    // Called now and then (every 65 536 lines) with the bytes read so far and the total.
+    std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
 struct Result
@@ -145,7 +153,7 @@ private:
     double m_value = 0;
     bool m_valueReturned = false;
 
-    // Modal state (LinuxCNC defaults: G17 G21 G40 G49 G54 G64 G80 G90 G94 G98 G91.1).
+    // Modal state (LinuxCNC defaults: G17 G21 G40 G49 G54 G64 G80 G90 G94 G99 G91.1).
     Point4 m_pos;                                    // machine position, mm
     std::array<std::array<double, 4>, 9> m_origin{}; // G54..G59.3 offsets, mm
     std::array<double, 4> m_g92{};                   // active G92 offset, mm
@@ -160,10 +168,10 @@ private:
     bool m_arcAbsolute = false;
     bool m_inverseTime = false;
     bool m_metric = true;
-    bool m_retractToR = false; // G99
-    double m_feed = 0;         // F as programmed (units/min or 1/min in G93)
-    double m_speed = 0;        // S, rpm
-    int m_spindle = 0;         // 0 off, 1 cw, -1 ccw
+    bool m_retractToR = true; // G99 (rs274ngc starts in G99)
+    double m_feed = 0;        // F as programmed (units/min or 1/min in G93)
+    double m_speed = 0;       // S, rpm
+    int m_spindle = 0;        // 0 off, 1 cw, -1 ccw
     int m_tool = 0, m_selectedTool = 0;
     bool m_mist = false, m_flood = false;
     int m_pathMode = 2;                                             // 0 G61, 1 G61.1, 2 G64

@@ -333,8 +333,10 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
             ++m_pos;
             double v = 0;
             if (!readRealValue(&v, error)) {
-                if (error->code == ErrorCode::NumberExpected && error->detail.empty())
+                if (error->code == ErrorCode::NumberExpected && error->detail.empty()) {
                     error->detail = std::string(1, c - 32);
+                    error->column = columnAt(at);
+                }
                 return false;
             }
             block.letters |= bit;

@@ -220,7 +220,7 @@ private:
     {
         const Derived &a = m_d[k];
         const Derived &b = m_d[k + 1];
-        if (m_moves[k + 1].stopBefore)
+        if (m_moves[k].stopAfter)
             return; // caps stay 0: the program asks for a stop here
         boundCap(k);
         if (m_options.strategy == PlanStrategy::ExactStop)

@@ -20,7 +20,7 @@ struct Move
     std::array<double, 4> pathDelta{}; // the intended mm (deg) displacement, before rounding
     double feedMmPerS = 0;             // requested path speed; ignored for rapids
     bool rapid = false;
-    bool stopBefore = false;        // the vertex before this move must be a stop (G61)
+    bool stopAfter = false;         // the move must end at rest (G61 exact stop)
     double junctionDeviationMm = 0; // in force for the vertex before this move
     std::uint32_t line = 0;
 };

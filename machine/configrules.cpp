@@ -192,7 +192,7 @@ MachineConfig defaultMachineConfig(protocol::Variant variant)
         a.maxSpeedMmPerMin = i == 2 ? 2000 : 4000;
         a.rapidMmPerMin = a.maxSpeedMmPerMin;
         a.accelMmPerS2 = i == 2 ? 200 : 400;
-        a.maxJumpMmPerS = 2;
+        a.maxJumpMmPerS = 4;
         a.homing.order = i == 2 ? 1 : (i < 2 ? 2 : 0);
         a.homing.direction = i == 2 ? 1 : -1;
         a.homing.travelMm = travel[i] + 20;

@@ -45,7 +45,7 @@ struct AxisConfig
     double maxSpeedMmPerMin = 3000; // never exceeded by any move
     double rapidMmPerMin = 3000;    // G0 speed (<= maxSpeedMmPerMin)
     double accelMmPerS2 = 300;
-    double maxJumpMmPerS = 2; // largest instantaneous speed step at a vertex
+    double maxJumpMmPerS = 4; // largest instantaneous speed step at a vertex
     HomingConfig homing;
     friend bool operator==(const AxisConfig &, const AxisConfig &) = default;
 };

@@ -194,7 +194,7 @@ private:
         m.pathDelta = {p.x - m_posMm.x, p.y - m_posMm.y, p.z - m_posMm.z, p.a - m_posMm.a};
         m.feedMmPerS = feedMmPerS;
         m.rapid = rapid;
-        m.stopBefore = m_exactStop;
+        m.stopAfter = m_exactStop;
         m.junctionDeviationMm = m_jd;
         m.line = line;
         m_moves.push_back(m);
@@ -286,7 +286,7 @@ private:
     const PlanOptions &m_options;
     PlanResult m_result;
     bool m_vk = false;
-    Point4 m_posMm;   // intended position (mm) of the last vector's end
+    Point4 m_posMm;     // intended position (mm) of the last vector's end
     Steps4 m_steps{};   // absolute steps after the last collected move
     Steps4 m_emitted{}; // absolute steps after the last emitted motion command
     std::vector<detail::Move> m_moves;

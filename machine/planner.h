@@ -31,7 +31,7 @@ struct PlanOptions
     PlanStrategy strategy = PlanStrategy::Full;
     int grblLookahead = 16;          // GrblJunction: blocks in the planner buffer (grbl: 16)
     std::int64_t shortThreshold = 1; // $: vectors shorter than this run "short" (§4)
-    double brakeMarginSteps = 0.25;     // distance kept in reserve when braking, steps (>= 0)
+    double brakeMarginSteps = 0.25;  // distance kept in reserve when braking, steps (>= 0)
     double accelTolerance = 0.05;    // keep the last A while within this fraction below the cap
     int accelWindow = 4;             // A: smallest cap over this many neighbours each side
     double feedOverride = 1.0;       // multiplies programmed feeds (not rapids), 0.01..10
