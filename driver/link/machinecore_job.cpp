@@ -491,6 +491,7 @@ void MachineCore::finishJob(bool ok)
     if (m_state.mode == MachineMode::Running)
         setMode(MachineMode::Idle);
     log(ok ? "job finished" : "job ended");
+    publish(); // the final state before the news that the job ended
     if (onJobFinished)
         onJobFinished(ok);
 }
