@@ -151,6 +151,7 @@ private:
     void onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, double now);
     void acceptUpTo(std::size_t end);
     void matchProgress();
+    void readStillPosition();
     void onJobCommandOutcome(const Outcome &o, std::size_t index, double now);
     void handlePcOp(const machine::UnitCommand &c, double now);
     void finishJob(bool ok);
@@ -159,6 +160,7 @@ private:
     void resendModals(std::function<void()> then);
     void locateExecuting();
     int freeQueueEstimate() const;
+    int maxPacket() const;
     double bufferedS() const;
     void calibrateFull();
     std::int64_t queuedAfter(double aheadS) const; // estimated motion time queued in the unit

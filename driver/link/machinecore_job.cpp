@@ -111,8 +111,7 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
     m_vectorsAcked = 0;
     m_streamBlocked = m_queueFullSeen = m_needVerify = false;
     m_waitUntil = -1;
-    m_packetLimit =
-        m_options.maxPacketCommands > 0 ? m_options.maxPacketCommands : info.queueCapacity - 1;
+    m_packetLimit = maxPacket();
     m_vectorPrefix.assign(m_program.commands.size() + 1, 0);
     for (std::size_t i = 0; i < m_program.commands.size(); ++i)
         m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(m_program.commands[i].op) ? 1 : 0);
@@ -162,6 +161,16 @@ double MachineCore::bufferedS() const
         return 0;
     const std::size_t from = std::min(m_exec, m_next);
     return std::max(0.0, m_timePrefix[m_next] - m_timePrefix[from] - (m_now - m_execAt));
+}
+
+// The largest packet: the unit's queue, and the command index (mod 256) must be able to tell
+// a packet that arrived from one that did not: all its lines (*S *S, commands, *E) < 256.
+int MachineCore::maxPacket() const
+{
+    constexpr int kIndexLimit = 255 - 3;
+    const int queue = variantInfo(m_config.unit.variant).queueCapacity - 1;
+    const int wanted = m_options.maxPacketCommands > 0 ? m_options.maxPacketCommands : queue;
+    return std::clamp(wanted, 1, std::min(queue, kIndexLimit));
 }
 
 int MachineCore::freeQueueEstimate() const
@@ -340,10 +349,7 @@ void MachineCore::onPacketOutcome(const Outcome &o, std::size_t first, std::size
     switch (o.reply.code) {
     case ReplyCode::Ok:
         m_queueFullSeen = false;
-        m_packetLimit = std::min(m_options.maxPacketCommands > 0
-                                     ? m_options.maxPacketCommands
-                                     : variantInfo(m_config.unit.variant).queueCapacity - 1,
-                                 m_packetLimit + m_packetLimit / 2 + 1);
+        m_packetLimit = std::min(maxPacket(), m_packetLimit + m_packetLimit / 2 + 1);
         return;
     case ReplyCode::QueueFull:
         // The queue is full right now: that calibrates the estimate of where the unit is.
@@ -535,13 +541,28 @@ void MachineCore::verifyProgress(const std::string &why)
     ++m_report.verified;
     m_needVerify = true;
     m_streamBlocked = true;
+    readStillPosition();
+}
+
+// Waits for RUN = 0, then reads the counters twice: the machine stands only when both reads
+// agree (a late reply on a noisy line must not pass for the final position).
+void MachineCore::readStillPosition()
+{
     afterIdle([this] {
         const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
-        send(pos, [this](const Outcome &o) {
-            if (unitError(o, "reading the position", MachineMode::LinkLost))
+        send(pos, [this, pos](const Outcome &first) {
+            if (unitError(first, "reading the position", MachineMode::LinkLost))
                 return;
-            applyPosition(o.reply);
-            matchProgress();
+            send(pos, [this, a = first.reply.values](const Outcome &second) {
+                if (unitError(second, "reading the position", MachineMode::LinkLost))
+                    return;
+                if (second.reply.values != a) {
+                    readStillPosition(); // still moving: wait again
+                    return;
+                }
+                applyPosition(second.reply);
+                matchProgress();
+            });
         });
     });
 }
