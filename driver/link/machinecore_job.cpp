@@ -163,14 +163,12 @@ double MachineCore::bufferedS() const
     return std::max(0.0, m_timePrefix[m_next] - m_timePrefix[from] - (m_now - m_execAt));
 }
 
-// The largest packet: the unit's queue, and the command index (mod 256) must be able to tell
-// a packet that arrived from one that did not: all its lines (*S *S, commands, *E) < 256.
+// The largest packet: the unit's queue less one.
 int MachineCore::maxPacket() const
 {
-    constexpr int kIndexLimit = 255 - 3;
     const int queue = variantInfo(m_config.unit.variant).queueCapacity - 1;
     const int wanted = m_options.maxPacketCommands > 0 ? m_options.maxPacketCommands : queue;
-    return std::clamp(wanted, 1, std::min(queue, kIndexLimit));
+    return std::clamp(wanted, 1, queue);
 }
 
 int MachineCore::freeQueueEstimate() const
@@ -305,6 +303,12 @@ void MachineCore::sendPacket(double now)
         m_queueFullSeen = true;
         return;
     }
+    // The command index (mod 256) must tell a packet that arrived from one that did not: all its
+    // lines (*S *S, the commands, *E) must not advance it by a multiple of 256.
+    if ((packet.size() + 3) % 256 == 0) {
+        packet.pop_back();
+        --end;
+    }
     const std::size_t first = m_next;
     m_inflightEnd = end;
     if (packet.size() == 1) {
@@ -355,6 +359,8 @@ void MachineCore::onPacketOutcome(const Outcome &o, std::size_t first, std::size
         // The queue is full right now: that calibrates the estimate of where the unit is.
         m_queueFullSeen = true;
         calibrateFull();
+        // Bytes beyond the free space are wasted wire time: start smaller next time.
+        m_packetLimit = std::max(16, static_cast<int>(accepted));
         (void)now;
         return;
     case ReplyCode::Syntax:   // a line damaged on the way (bad checksum) or lost
