@@ -2,6 +2,8 @@
 
 #include "simfixture.h"
 
+#include "gcode/toolpath.h"
+
 #include <gtest/gtest.h>
 
 using namespace frezka;
@@ -268,4 +270,65 @@ TEST(MachineCore, UnitErrorNamesCommandAndReply)
     ASSERT_TRUE(refused.has_value());
     EXPECT_NE(refused->message.find("GVE84"), std::string::npos) << refused->message;
     EXPECT_EQ(sim84.core.state().mode, MachineMode::Idle);
+}
+
+TEST(MachineCore, OperatorStopsAndDwellWaitForTheMachine)
+{
+    using machine::UnitOp;
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    auto p = slowProgram(20);
+    const auto end = p.commands.back(); // ProgramEnd
+    p.commands.pop_back();
+    const auto mid = p.commands.back().endSteps;
+    machine::UnitCommand m6;
+    m6.op = UnitOp::OperatorStop;
+    m6.value = static_cast<std::int64_t>(gcode::EventKind::ToolChange);
+    m6.aux = 3;
+    m6.sourceLine = 77;
+    m6.endSteps = mid;
+    machine::UnitCommand dwell;
+    dwell.op = UnitOp::Dwell;
+    dwell.value = 1500; // ms
+    dwell.endSteps = mid;
+    p.commands.push_back(m6);
+    p.commands.push_back(dwell);
+    p.commands.push_back(end);
+    ASSERT_FALSE(sim.core.run(p, sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Paused, 120)) << sim.lastLog();
+    EXPECT_EQ(sim.core.state().hold, HoldReason::OperatorStop);
+    EXPECT_NE(sim.core.state().holdText.find("tool 3"), std::string::npos);
+    EXPECT_NE(sim.core.state().holdText.find("line 77"), std::string::npos);
+    expectAt(sim, mid); // all motion before M6 ran, the machine stands
+    const double resumed = sim.runner.now();
+    ASSERT_FALSE(sim.core.resume(resumed));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 60)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front());
+    EXPECT_GE(sim.runner.now() - resumed, 1.5); // the dwell
+}
+
+TEST(MachineCore, MpgRawCommandAndOverrideSteps)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.setMpg(true, sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_TRUE(sim.core.state().mpgOn);
+    EXPECT_TRUE(sim.core.state().run); // Y& counts as running (§13)
+    ASSERT_FALSE(sim.core.setMpg(false, sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_FALSE(sim.core.state().mpgOn);
+    EXPECT_FALSE(sim.core.state().run);
+
+    ASSERT_FALSE(sim.core.sendRaw("SW0,80", sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_EQ(sim.port.unit().status(0), 0x80);
+    EXPECT_TRUE(sim.core.sendRaw("!0Z", sim.runner.now()).has_value());    // unknown
+    EXPECT_TRUE(sim.core.sendRaw("!0T99", sim.runner.now()).has_value());  // out of range
+    EXPECT_TRUE(sim.core.sendRaw("!0L1,2", sim.runner.now()).has_value()); // syntax
+
+    ASSERT_FALSE(sim.core.overrideStep(true, sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_EQ(sim.core.state().overridePercent, 106);
+    EXPECT_TRUE(sim.errors.empty());
 }
