@@ -15,9 +15,11 @@
 //     input and other enabled interrupts hold the job (state.hold == Interrupt); link loss keeps
 //     the job and re-establishes its progress from the counters after reconnecting.
 //   implemented, no dedicated test yet: setMpg, overrideUp / overrideDown, sendRaw.
+//   G38.2-.5 probe moves in a job (IN15 armed as an interrupt; trip point in state.probeSteps;
+//     when the probe stops short and motion follows, the job ends: the planner planned the rest
+//     from the probe's end point).
 //   not implemented: writing the profile's EEPROM values to the unit (differences are only
-//     reported in state.eepromDifferences); G38 probing inside a job (the job stops with an
-//     error at a probe move).
+//     reported in state.eepromDifferences).
 
 #include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
