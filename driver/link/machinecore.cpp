@@ -387,6 +387,7 @@ void MachineCore::linkOpened(double now)
 void MachineCore::linkClosed(const std::string &why, double now)
 {
     m_now = now;
+    const bool wasOpen = m_open;
     m_open = false;
     m_engine.reset();
     m_steps.clear();
@@ -397,9 +398,13 @@ void MachineCore::linkClosed(const std::string &why, double now)
         m_needVerify = true;
         fail("link lost: " + why + "; the job is kept and can resume after reconnecting", nullptr,
              MachineMode::LinkLost);
+    } else if (why.empty()) {
+        log("link closed");
+        setMode(MachineMode::Disconnected);
     } else {
-        log("link closed: " + why);
-        setMode(why.empty() ? MachineMode::Disconnected : MachineMode::LinkLost);
+        // A port that failed to open or went away: the user must see why.
+        fail((wasOpen ? "link lost: " : "cannot connect: ") + why, nullptr,
+             wasOpen ? MachineMode::LinkLost : MachineMode::Disconnected);
     }
     publish();
 }
