@@ -48,13 +48,14 @@ double bytesPerVector(const machine::UnitProgram &p)
     return bytes / n;
 }
 
-Result stream(const machine::UnitProgram &program, double latencyS, bool packets)
+Result stream(const machine::UnitProgram &program, double latencyS, bool packets,
+              protocol::Variant variant = protocol::Variant::Gve64)
 {
     WireOptions wire;
     wire.latencyS = latencyS;
     CoreOptions options;
     options.packets = packets;
-    Sim sim(protocol::Variant::Gve64, wire, options);
+    Sim sim(variant, wire, options);
     Result r;
     if (!sim.connect())
         return r;
@@ -115,6 +116,18 @@ int main(int argc, char **argv)
                             r.wireLimit, 100.0 * r.vectorsPerS / r.wireLimit, r.pollHz,
                             static_cast<long long>(r.starvation), r.exact ? "yes" : "NO");
             }
+        }
+        std::printf("\n");
+    }
+    {
+        const auto dense = denseProgram(12000, 3, 50000, 50000, 30);
+        std::printf("# the same program A (12000 vectors) on a GVE114 (queue of 2048 vectors)\n");
+        for (double ms : {0.0, 8.0, 16.0}) {
+            const Result r = stream(dense, ms / 1000.0, true, protocol::Variant::Gve114);
+            std::printf("%-10s %-22s %12.1f %12.1f %9.1f%% %8.1f %11lld %6s\n",
+                        (std::to_string(static_cast<int>(ms)) + " ms").c_str(), "packets",
+                        r.vectorsPerS, r.wireLimit, 100.0 * r.vectorsPerS / r.wireLimit, r.pollHz,
+                        static_cast<long long>(r.starvation), r.exact ? "yes" : "NO");
         }
         std::printf("\n");
     }
