@@ -108,6 +108,11 @@ void MachineCore::matchProgress()
         contiguous = contiguous && (matches[k] == matches[k - 1] + 1 ||
                                     m_vectorPrefix[matches[k]] == m_vectorPrefix[matches[0]]);
     if (!contiguous) {
+        log("counters " + std::to_string(m_state.positionSteps[0]) + ", " +
+            std::to_string(m_state.positionSteps[1]) + ", " +
+            std::to_string(m_state.positionSteps[2]) + "; searched commands " + std::to_string(lo) +
+            ".." + std::to_string(hi) + " ending " + std::to_string(endOf(lo)[0]) + ".." +
+            std::to_string(endOf(hi)[0]) + " on X");
         fail(matches.empty()
                  ? "the unit's counters match no point the job has reached; the job cannot "
                    "resume exactly (re-home and start it again)"
