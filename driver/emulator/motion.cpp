@@ -306,6 +306,14 @@ void MotionEngine::reset()
 
 void MotionEngine::enqueue(const MotionVector &v)
 {
+    if (readings::kZeroVectorDoneAtOnce && m_queue.empty() && !m_held && v.lengthSteps() == 0) {
+        if (!v.isHoming)
+            ++m_stats.vectorsExecuted;
+        m_prevEndedDry = false;
+        if (onVectorDone)
+            onVectorDone(v);
+        return;
+    }
     m_queue.push_back(v);
 }
 

@@ -79,6 +79,10 @@ inline constexpr double kResetSeconds = 2.0;
 // T (pause between non-continuous moves) after reset, ms; the manuals' reset list omits T.
 inline constexpr int kResetPauseMs = 10;
 
+// A zero vector (L0,0,0) given to an idle unit is done at once, without the T pause, so that
+// "L0,0,0 answered 0" really means "nothing queued" and N or W may follow immediately.
+inline constexpr bool kZeroVectorDoneAtOnce = true;
+
 // Y reply: the code and the echoed command as one value: "!0Y-" -> "0,Y-".
 ReplyParts mpgReply(int code, std::string_view echoedCommand);
 
