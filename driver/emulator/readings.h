@@ -73,6 +73,10 @@ inline constexpr double kWatchdogSeconds = 0.1;
 // once their CR arrives and do not advance the index.
 inline constexpr std::size_t kMaxLineLength = 96;
 
+// Bytes that arrive while H or W is still to be answered wait in a receive buffer of this size
+// and are handled after the reply; more are lost.
+inline constexpr std::size_t kReceiveBufferBytes = 1024;
+
 // After J the unit is deaf for this long (manual: "about 2 s"); bytes received meanwhile are lost.
 inline constexpr double kResetSeconds = 2.0;
 
@@ -118,8 +122,8 @@ inline bool inputActive(bool level, bool polarityActiveHigh)
 }
 
 // Brake-violation tolerance: an arrival faster than the allowed exit speed by more than this
-// (pulses/s, plus 1e-9 relative) counts as a violation.
-inline constexpr double kBrakeViolationTolerance = 1e-6;
+// (pulses/s, plus 1e-9 relative) counts as a violation; below it is floating-point noise.
+inline constexpr double kBrakeViolationTolerance = 0.01;
 
 // The index and the last reply are shared by addresses 0 and 7 (one processor).
 inline constexpr bool kIndexSharedByAddresses = true;
