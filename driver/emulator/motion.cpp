@@ -156,6 +156,8 @@ double MotionEngine::nextWatchProgress() const
 
 double MotionEngine::dwellRemaining() const
 {
+    if (!m_queue.empty() && m_queue.front().isHoming)
+        return 0; // homing travel is one move: no T pause between its legs
     return std::max(0.0, m_restSince + m_pauseS - m_now);
 }
 
