@@ -68,12 +68,11 @@ void Toolpath::appendEvent(const Event &event, double feedMmPerMin, std::uint32_
 
 std::size_t Toolpath::memoryBytes() const
 {
-    return m_kind.capacity() * sizeof(MotionKind)
-           + (m_x.capacity() + m_y.capacity() + m_z.capacity() + m_a.capacity()
-              + m_feed.capacity())
-                 * sizeof(double)
-           + (m_line.capacity() + m_aux.capacity()) * sizeof(std::uint32_t)
-           + m_arcs.capacity() * sizeof(ArcInfo) + m_events.capacity() * sizeof(Event);
+    return m_kind.capacity() * sizeof(MotionKind) +
+           (m_x.capacity() + m_y.capacity() + m_z.capacity() + m_a.capacity() + m_feed.capacity()) *
+               sizeof(double) +
+           (m_line.capacity() + m_aux.capacity()) * sizeof(std::uint32_t) +
+           m_arcs.capacity() * sizeof(ArcInfo) + m_events.capacity() * sizeof(Event);
 }
 
 namespace {

@@ -33,7 +33,7 @@ enum class Plane : std::uint8_t { XY, XZ, YZ };
 
 struct ArcInfo
 {
-    Point4 centre;       // only the two in-plane coordinates matter; the normal one is the start's
+    Point4 centre; // only the two in-plane coordinates matter; the normal one is the start's
     Plane plane = Plane::XY;
     std::int32_t turns = 1; // signed, |turns| >= 1
     friend bool operator==(const ArcInfo &, const ArcInfo &) = default;
@@ -47,19 +47,19 @@ enum class ProbeKind : std::uint8_t {
 };
 
 enum class EventKind : std::uint8_t {
-    Dwell,          // value = seconds
-    SpindleCw,      // M3, value = rpm (S)
-    SpindleCcw,     // M4, value = rpm
-    SpindleOff,     // M5
-    SpindleSpeed,   // S changed while the spindle runs, value = rpm
-    CoolantMist,    // M7
-    CoolantFlood,   // M8
-    CoolantOff,     // M9
-    ToolChange,     // M6, value = tool number
-    Pause,          // M0
-    OptionalPause,  // M1
-    ProgramEnd,     // M2 / M30
-    PathMode,       // G61 (value = 0), G61.1 (value = 1), G64 (value = 2, p = P tol mm, q = Q mm)
+    Dwell,         // value = seconds
+    SpindleCw,     // M3, value = rpm (S)
+    SpindleCcw,    // M4, value = rpm
+    SpindleOff,    // M5
+    SpindleSpeed,  // S changed while the spindle runs, value = rpm
+    CoolantMist,   // M7
+    CoolantFlood,  // M8
+    CoolantOff,    // M9
+    ToolChange,    // M6, value = tool number
+    Pause,         // M0
+    OptionalPause, // M1
+    ProgramEnd,    // M2 / M30
+    PathMode,      // G61 (value = 0), G61.1 (value = 1), G64 (value = 2, p = P tol mm, q = Q mm)
 };
 
 struct Event

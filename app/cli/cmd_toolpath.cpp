@@ -1,0 +1,48 @@
+// frezka-cli toolpath FILE [--events]: the interpreted toolpath as JSON Lines on stdout
+// (format in gcode/trace.h). On a G-code error nothing is written to stdout, the error goes to
+// stderr as FILE:LINE:COL: message, and the exit code is 1.
+#include "cli.h"
+
+#include "gcode/interpreter.h"
+#include "gcode/trace.h"
+
+#include <cstdio>
+
+namespace {
+
+int runToolpath(const QStringList &args)
+{
+    using namespace frezka;
+    QString file;
+    bool events = false;
+    for (const QString &a : args) {
+        if (a == QLatin1String("--events"))
+            events = true;
+        else if (file.isEmpty() && !a.startsWith(QLatin1String("--")))
+            file = a;
+        else {
+            cli::err(QStringLiteral("usage: frezka-cli toolpath FILE [--events]\n"));
+            return 2;
+        }
+    }
+    if (file.isEmpty()) {
+        cli::err(QStringLiteral("usage: frezka-cli toolpath FILE [--events]\n"));
+        return 2;
+    }
+    const gcode::Result result = gcode::interpretFile(file.toStdString());
+    if (!result.ok()) {
+        for (const gcode::Error &e : result.errors)
+            cli::err(gcode::formatError(file, e) + QLatin1Char('\n'));
+        return 1;
+    }
+    if (!gcode::writeJsonLines(result.toolpath, stdout, events)) {
+        cli::err(QStringLiteral("frezka-cli: cannot write the toolpath\n"));
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+FREZKA_CLI_COMMAND(toolpath, "toolpath FILE [--events]",
+                   "Interpret a G-code program and print its moves as JSON Lines", runToolpath);

@@ -1,0 +1,401 @@
+// Motion: straight moves, arcs (LinuxCNC's centre and radius formats and its end-radius
+// checks), probe moves and the canned cycles G73 G81 G82 G83 G85 G89 expanded into moves
+// exactly as rs274ngc's convert_cycle_* does. All geometry is computed in program coordinates
+// (mm) in the active plane's (u, v, w) axes and written out in machine coordinates.
+#include "interpreter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace frezka::gcode {
+
+namespace {
+
+constexpr char kAxisLetters[4] = {'x', 'y', 'z', 'a'};
+
+// LinuxCNC's tolerances (interp_internal.hh), converted to mm.
+constexpr double kRadiusToleranceMm = 0.00005 * 25.4;
+constexpr double kSpiralAbsToleranceMetricMm = 2 * 0.01 * std::numbers::sqrt2;
+constexpr double kSpiralAbsToleranceInchMm = 2 * 0.001 * std::numbers::sqrt2 * 25.4;
+constexpr double kSpiralRelTolerance = 0.001;
+constexpr double kTiny = 1e-12;
+constexpr double kG83RapidDeltaMm = 0.010 * 25.4;
+
+struct PlaneAxes
+{
+    int u, v, w;      // indices into x y z
+    char ou, ov, bad; // centre offset letters and the letter that does not belong
+};
+
+PlaneAxes planeAxes(int plane)
+{
+    switch (plane) {
+    case 180:
+        return {2, 0, 1, 'k', 'i', 'j'};
+    case 190:
+        return {1, 2, 0, 'j', 'k', 'i'};
+    default:
+        return {0, 1, 2, 'i', 'j', 'k'};
+    }
+}
+
+Plane toPlane(int plane)
+{
+    return plane == 180 ? Plane::XZ : plane == 190 ? Plane::YZ : Plane::XY;
+}
+
+double &axisRef(Point4 &p, int i)
+{
+    return i == 0 ? p.x : i == 1 ? p.y : i == 2 ? p.z : p.a;
+}
+
+double axisOf(const Point4 &p, int i)
+{
+    return i == 0 ? p.x : i == 1 ? p.y : i == 2 ? p.z : p.a;
+}
+
+std::string fmt4(double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.4f", v);
+    return buf;
+}
+
+} // namespace
+
+Point4 Interpreter::targetOf(bool machineCoords) const
+{
+    Point4 end = m_pos;
+    for (int i = 0; i < 4; ++i) {
+        const char c = kAxisLetters[i];
+        if (!m_block.has(c))
+            continue;
+        const double v = i < 3 ? lengthWord(c) : m_block.get(c);
+        if (machineCoords)
+            axisRef(end, i) = v;
+        else if (m_absolute)
+            axisRef(end, i) = v + offset(i);
+        else
+            axisRef(end, i) = axisOf(m_pos, i) + v;
+    }
+    return end;
+}
+
+double Interpreter::feedFor(double lengthMm) const
+{
+    return m_inverseTime ? m_feed * lengthMm : m_feed * unit();
+}
+
+bool Interpreter::executeMotion(int motion, Error *error)
+{
+    const bool g53 = m_block.hasG(kGNonModal) && m_block.g[kGNonModal] == 530;
+    bool ok = true;
+    if (motion == 0 || motion == 10)
+        ok = straight(motion, targetOf(g53), error);
+    else if (motion == 20 || motion == 30)
+        ok = arc(motion, targetOf(false), error);
+    else if (motion >= 382 && motion <= 385)
+        ok = probe(motion, targetOf(false), error);
+    else
+        ok = cycle(motion, error);
+    if (ok)
+        m_motion = motion;
+    if (motion != 730 && !(motion >= 810 && motion <= 890))
+        m_cycleIlValid = false;
+    return ok;
+}
+
+bool Interpreter::straight(int motion, const Point4 &end, Error *error)
+{
+    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 1;
+    if (motion == 0) {
+        m_toolpath.appendRapid(end, m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
+        m_pos = end;
+        return true;
+    }
+    if (m_inverseTime && !m_block.has('f'))
+        return failAt(ErrorCode::InverseTimeFeedMissing, col, "G1", error);
+    if (!m_inverseTime && m_feed == 0)
+        return failAt(ErrorCode::ZeroFeedRate, col, "G1", error);
+    const double length =
+        std::sqrt((end.x - m_pos.x) * (end.x - m_pos.x) + (end.y - m_pos.y) * (end.y - m_pos.y) +
+                  (end.z - m_pos.z) * (end.z - m_pos.z));
+    m_toolpath.appendFeed(end, feedFor(length), m_line);
+    m_pos = end;
+    return true;
+}
+
+bool Interpreter::arc(int motion, const Point4 &end, Error *error)
+{
+    const Block &b = m_block;
+    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 1;
+    const std::string name = motion == 20 ? "G2" : "G3";
+    const bool ijk = b.has('i') || b.has('j') || b.has('k');
+    const bool rForm = b.has('r');
+    const PlaneAxes ax = planeAxes(m_plane);
+    if (!rForm && !ijk)
+        return failAt(ErrorCode::ArcMissingCentre, col, {}, error);
+    if (rForm && ijk)
+        return fail(ErrorCode::ArcMixedRAndIjk, 'r', {}, error);
+    if (m_inverseTime && !b.has('f'))
+        return failAt(ErrorCode::InverseTimeFeedMissing, col, name, error);
+    if (!m_inverseTime && m_feed == 0)
+        return failAt(ErrorCode::ZeroFeedRate, col, name, error);
+    if (ijk) {
+        if (b.has(ax.bad))
+            return fail(ErrorCode::ArcWrongPlaneWord, ax.bad, std::string(1, ax.bad - 32), error);
+        if (m_arcAbsolute && (!b.has(ax.ou) || !b.has(ax.ov))) {
+            const char missing = b.has(ax.ou) ? ax.ov : ax.ou;
+            return failAt(ErrorCode::ArcMissingAbsoluteCentre, col, std::string(1, missing - 32),
+                          error);
+        }
+    } else if (!b.has(kAxisLetters[ax.u]) && !b.has(kAxisLetters[ax.v])) {
+        return fail(ErrorCode::ArcMissingEndWords, 'r', {}, error);
+    }
+    int turns = 1;
+    if (b.has('p')) {
+        const double p = b.get('p');
+        const double rounded = std::round(p);
+        if (rounded < 1 || std::fabs(p - rounded) > 0.0001)
+            return fail(ErrorCode::ArcBadTurns, 'p', fmt4(p), error);
+        turns = static_cast<int>(rounded);
+    }
+
+    // Program coordinates in the plane.
+    const double su = axisOf(m_pos, ax.u) - offset(ax.u);
+    const double sv = axisOf(m_pos, ax.v) - offset(ax.v);
+    const double eu = axisOf(end, ax.u) - offset(ax.u);
+    const double ev = axisOf(end, ax.v) - offset(ax.v);
+    double cu = 0, cv = 0;
+    if (ijk) {
+        const double ou = b.has(ax.ou) ? lengthWord(ax.ou) : 0.0;
+        const double ov = b.has(ax.ov) ? lengthWord(ax.ov) : 0.0;
+        cu = m_arcAbsolute ? ou : su + ou;
+        cv = m_arcAbsolute ? ov : sv + ov;
+        const double r1 = std::hypot(cu - su, cv - sv);
+        const double r2 = std::hypot(cu - eu, cv - ev);
+        const std::string radii = "r1=" + fmt4(r1 / unit()) + " r2=" + fmt4(r2 / unit());
+        if (r1 < kRadiusToleranceMm || r2 < kRadiusToleranceMm)
+            return failAt(ErrorCode::ArcZeroRadius, col, radii, error);
+        const double spiralAbs = m_metric ? kSpiralAbsToleranceMetricMm : kSpiralAbsToleranceInchMm;
+        const double absErr = std::fabs(r1 - r2);
+        const double relErr = absErr / std::max(r1, r2);
+        if (absErr > spiralAbs * 100.0 || (relErr > kSpiralRelTolerance && absErr > spiralAbs))
+            return failAt(ErrorCode::ArcRadiusMismatch, col, radii, error);
+    } else {
+        if (eu == su && ev == sv)
+            return fail(ErrorCode::ArcEndEqualsStart, 'r', {}, error);
+        const double radius = lengthWord('r');
+        const double absRadius = std::fabs(radius);
+        const double mu = (eu + su) / 2.0, mv = (ev + sv) / 2.0;
+        double half = std::hypot(mu - eu, mv - ev);
+        if (half - absRadius > kRadiusToleranceMm)
+            return fail(ErrorCode::ArcRadiusTooSmall, 'r', "R" + fmt4(radius / unit()), error);
+        if (half / absRadius > 1 - kTiny)
+            half = absRadius;
+        const double chord = std::atan2(ev - sv, eu - su);
+        const bool minus = (motion == 20 && radius > 0) || (motion == 30 && radius < 0);
+        const double theta = chord + (minus ? -std::numbers::pi / 2 : std::numbers::pi / 2);
+        const double dist = absRadius * std::cos(std::asin(half / absRadius));
+        cu = mu + dist * std::cos(theta);
+        cv = mv + dist * std::sin(theta);
+    }
+    ArcInfo info;
+    info.plane = toPlane(m_plane);
+    info.turns = motion == 20 ? -turns : turns;
+    info.centre = m_pos;
+    axisRef(info.centre, ax.u) = cu + offset(ax.u);
+    axisRef(info.centre, ax.v) = cv + offset(ax.v);
+
+    double feed = m_feed * unit();
+    if (m_inverseTime) {
+        const double r = std::hypot(su - cu, sv - cv);
+        const double a0 = std::atan2(sv - cv, su - cu), a1 = std::atan2(ev - cv, eu - cu);
+        double sweep = motion == 30 ? a1 - a0 : a0 - a1;
+        while (sweep <= 1e-12)
+            sweep += 2 * std::numbers::pi;
+        sweep += 2 * std::numbers::pi * (turns - 1);
+        const double dw = axisOf(end, ax.w) - axisOf(m_pos, ax.w);
+        feed = feedFor(std::hypot(r * sweep, dw));
+    }
+    m_toolpath.appendArc(end, info, feed, m_line);
+    m_pos = end;
+    return true;
+}
+
+bool Interpreter::probe(int motion, const Point4 &end, Error *error)
+{
+    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 1;
+    if (m_inverseTime)
+        return failAt(ErrorCode::ProbeInverseTime, col, {}, error);
+    if (m_feed == 0)
+        return failAt(ErrorCode::ZeroFeedRate, col, gName(motion), error);
+    if (end == m_pos)
+        return failAt(ErrorCode::ProbeNoMotion, col, {}, error);
+    m_toolpath.appendProbe(end, static_cast<ProbeKind>(motion - 382), m_feed * unit(), m_line);
+    m_pos = end;
+    m_probe = programPosition();
+    m_probed = true;
+    return true;
+}
+
+void Interpreter::cycleTraverse(int plane, double aa, double bb, double cc)
+{
+    const PlaneAxes ax = planeAxes(plane);
+    Point4 p = m_pos;
+    axisRef(p, ax.u) = aa + offset(ax.u);
+    axisRef(p, ax.v) = bb + offset(ax.v);
+    axisRef(p, ax.w) = cc + offset(ax.w);
+    m_toolpath.appendRapid(p, m_feed * unit(), m_line);
+    m_pos = p;
+}
+
+void Interpreter::cycleFeed(int plane, double aa, double bb, double cc)
+{
+    const PlaneAxes ax = planeAxes(plane);
+    Point4 p = m_pos;
+    axisRef(p, ax.u) = aa + offset(ax.u);
+    axisRef(p, ax.v) = bb + offset(ax.v);
+    axisRef(p, ax.w) = cc + offset(ax.w);
+    m_toolpath.appendFeed(p, m_feed * unit(), m_line);
+    m_pos = p;
+}
+
+void Interpreter::cycleBody(int motion, double aa, double bb, double r, double clear, double cc,
+                            double dwell, double peck)
+{
+    switch (motion) {
+    case 810:
+        cycleFeed(m_plane, aa, bb, cc);
+        cycleTraverse(m_plane, aa, bb, clear);
+        break;
+    case 820:
+        cycleFeed(m_plane, aa, bb, cc);
+        event(EventKind::Dwell, dwell);
+        cycleTraverse(m_plane, aa, bb, clear);
+        break;
+    case 730: // chip breaking: back off a little after each peck
+    case 830: // peck: out to R after each peck
+        for (double depth = r - peck; depth > cc; depth -= peck) {
+            cycleFeed(m_plane, aa, bb, depth);
+            if (motion == 830)
+                cycleTraverse(m_plane, aa, bb, r);
+            cycleTraverse(m_plane, aa, bb, depth + kG83RapidDeltaMm);
+        }
+        cycleFeed(m_plane, aa, bb, cc);
+        cycleTraverse(m_plane, aa, bb, clear);
+        break;
+    case 850:
+        cycleFeed(m_plane, aa, bb, cc);
+        cycleFeed(m_plane, aa, bb, r);
+        cycleTraverse(m_plane, aa, bb, clear);
+        break;
+    case 890:
+        cycleFeed(m_plane, aa, bb, cc);
+        event(EventKind::Dwell, dwell);
+        cycleFeed(m_plane, aa, bb, clear);
+        break;
+    default:
+        break;
+    }
+}
+
+bool Interpreter::cycle(int motion, Error *error)
+{
+    const Block &b = m_block;
+    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 1;
+    const std::string name = gName(motion);
+    const PlaneAxes ax = planeAxes(m_plane);
+    const char uc = kAxisLetters[ax.u], vc = kAxisLetters[ax.v], wc = kAxisLetters[ax.w];
+    if (m_inverseTime)
+        return failAt(ErrorCode::CycleInverseTime, col, {}, error);
+    if (m_feed == 0)
+        return failAt(ErrorCode::ZeroFeedRate, col, name, error);
+    const bool same = m_motion == motion;
+    double rWord = m_cycleR;
+    if (b.has('r'))
+        rWord = lengthWord('r');
+    else if (!same)
+        return failAt(ErrorCode::CycleMissingR, col, name, error);
+    int repeats = 1;
+    if (b.has('l')) {
+        const double l = b.get('l');
+        if (l < 1 || l != std::floor(l))
+            return fail(ErrorCode::CycleBadL, 'l', {}, error);
+        repeats = static_cast<int>(l);
+    }
+    if (!same && !b.has(wc))
+        return failAt(ErrorCode::CycleMissingDepth, col, name, error);
+    const double ccWord = b.has(wc) ? lengthWord(wc) : m_cycleCC;
+    double p = m_cycleP, q = m_cycleQ;
+    if (motion == 820 || motion == 890) {
+        if (!same && !b.has('p'))
+            return failAt(ErrorCode::CycleMissingP, col, name, error);
+        if (b.has('p'))
+            p = b.get('p');
+    }
+    if (motion == 730 || motion == 830) {
+        if (!same && !b.has('q'))
+            return failAt(ErrorCode::CycleMissingQ, col, name, error);
+        if (b.has('q'))
+            q = lengthWord('q');
+        if (q <= 0)
+            return fail(ErrorCode::CycleBadQ, b.has('q') ? 'q' : 0, {}, error);
+    }
+
+    const Point4 prog = programPosition();
+    // LinuxCNC 2.9: the initial level is remembered over consecutive cycle blocks.
+    double currentCc = axisOf(prog, ax.w);
+    if (!m_cycleIlValid) {
+        m_cycleIl = currentCc;
+        m_cycleIlValid = true;
+    }
+    double oldCc = m_cycleIl;
+    double aa = 0, bb = 0, aaInc = 0, bbInc = 0, r = 0, cc = 0;
+    if (m_absolute) {
+        r = rWord;
+        cc = ccWord;
+        aa = b.has(uc) ? lengthWord(uc) : axisOf(prog, ax.u);
+        bb = b.has(vc) ? lengthWord(vc) : axisOf(prog, ax.v);
+    } else {
+        aaInc = b.has(uc) ? lengthWord(uc) : 0.0;
+        bbInc = b.has(vc) ? lengthWord(vc) : 0.0;
+        r = rWord + oldCc;
+        cc = r + ccWord;
+        aa = axisOf(prog, ax.u);
+        bb = axisOf(prog, ax.v);
+    }
+    if (r < cc)
+        return failAt(ErrorCode::CycleRBelowDepth, b.has('r') ? b.col('r') : col, {}, error);
+    if (oldCc < r) { // below the R plane: straight up to it first
+        cycleTraverse(m_plane, axisOf(prog, ax.u), axisOf(prog, ax.v), r);
+        oldCc = r;
+        currentCc = oldCc;
+    }
+    const double clear = m_retractToR ? r : oldCc;
+    if (m_pathMode != 0)
+        event(EventKind::PathMode, 0, 0, 0);
+    for (int n = 0; n < repeats; ++n) {
+        aa += aaInc;
+        bb += bbInc;
+        if (n == 0 && currentCc > r) {
+            cycleTraverse(m_plane, aa, bb, currentCc);
+            cycleTraverse(m_plane, aa, bb, r);
+        } else {
+            cycleTraverse(m_plane, aa, bb, clear);
+            if (clear > r)
+                cycleTraverse(m_plane, aa, bb, r);
+        }
+        cycleBody(motion, aa, bb, r, clear, cc, p, q);
+    }
+    if (m_pathMode != 0)
+        event(EventKind::PathMode, m_pathMode, m_pathP, m_pathQ);
+    m_cycleCC = ccWord;
+    m_cycleR = rWord;
+    m_cycleP = p;
+    m_cycleQ = q;
+    return true;
+}
+
+} // namespace frezka::gcode

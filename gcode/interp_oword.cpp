@@ -1,0 +1,258 @@
+// O-word control flow (LinuxCNC semantics): sub/endsub/call/return, if/elseif/else/endif,
+// while/endwhile, do/while, repeat/endrepeat, break/continue. Blocks are matched by their
+// O label, as in rs274ngc. Skipping reads lines with only their O word looked at (no
+// expression is evaluated while skipping); loops and calls jump back by byte offset.
+#include "interpreter.h"
+
+#include <cmath>
+
+namespace frezka::gcode {
+
+namespace {
+
+constexpr std::size_t kMaxCallDepth = 100;
+
+std::string labelText(const std::string &label)
+{
+    return "o" +
+           (label.empty() || (label[0] >= '0' && label[0] <= '9') ? label : "<" + label + ">");
+}
+
+} // namespace
+
+bool Interpreter::owordCondition(double *value, Error *error)
+{
+    if (!m_parser.owordArgs(m_block, &m_args, error))
+        return false;
+    if (m_args.size() != 1)
+        return failAt(ErrorCode::ExpressionExpected, m_block.oColumn,
+                      std::string("after ") + okindName(m_block.oKind), error);
+    *value = m_args[0];
+    return true;
+}
+
+bool Interpreter::skipTo(const std::string &label, std::initializer_list<OKind> kinds, OKind *found,
+                         Error *error)
+{
+    const std::uint32_t startLine = m_line;
+    const OKind opening = m_block.oKind;
+    std::string_view raw;
+    std::string seen;
+    OKind kind = OKind::None;
+    while (nextLine(&raw)) {
+        if (!m_parser.normalize(raw, m_line, error))
+            return false;
+        error->line = 0;
+        if (!m_parser.peekOword(&kind, &seen, error)) {
+            if (error->line == m_line) // a malformed O word
+                return false;
+            continue;
+        }
+        if (seen != label)
+            continue;
+        for (OKind k : kinds) {
+            if (k == kind) {
+                *found = kind;
+                // Leave the parser holding this line fully parsed, for its arguments.
+                return m_parser.parse(m_block, m_assignments, error);
+            }
+        }
+    }
+    *error = {ErrorCode::OwordNotClosed, startLine, 1, labelText(label) + " " + okindName(opening)};
+    return false;
+}
+
+bool Interpreter::executeOword(Error *error)
+{
+    const std::string label = m_block.oLabel;
+    const std::uint32_t col = m_block.oColumn;
+    const OKind kind = m_block.oKind;
+    const std::string what = labelText(label) + " " + okindName(kind);
+    auto topIs = [&](FrameKind k) {
+        return !m_frames.empty() && m_frames.back().kind == k && m_frames.back().label == label;
+    };
+    OKind found = OKind::None;
+    switch (kind) {
+    case OKind::Sub:
+        if (m_block.oArgsPos != m_parser.text().size())
+            return failAt(ErrorCode::OwordWithOtherWords, col, {}, error);
+        m_subs[label] = {m_next, m_line};
+        return skipTo(label, {OKind::EndSub}, &found, error);
+    case OKind::Call:
+        return callSub(error);
+    case OKind::EndSub:
+    case OKind::Return:
+        return returnFromSub(error);
+    case OKind::If: {
+        double c = 0;
+        if (!owordCondition(&c, error))
+            return false;
+        while (c == 0.0) {
+            if (!skipTo(label, {OKind::ElseIf, OKind::Else, OKind::EndIf}, &found, error))
+                return false;
+            if (found == OKind::EndIf)
+                return true;
+            if (found == OKind::Else)
+                break;
+            if (!owordCondition(&c, error))
+                return false;
+        }
+        m_frames.push_back({FrameKind::If, label, 0, m_line, 0});
+        return true;
+    }
+    case OKind::ElseIf:
+    case OKind::Else:
+        if (!topIs(FrameKind::If))
+            return failAt(ErrorCode::OwordUnmatched, col, what, error);
+        m_frames.pop_back();
+        return skipTo(label, {OKind::EndIf}, &found, error);
+    case OKind::EndIf:
+        if (!topIs(FrameKind::If))
+            return failAt(ErrorCode::OwordUnmatched, col, what, error);
+        m_frames.pop_back();
+        return true;
+    case OKind::Do:
+        m_frames.push_back({FrameKind::Do, label, m_next, m_line, 0});
+        return true;
+    case OKind::While: {
+        double c = 0;
+        if (!owordCondition(&c, error))
+            return false;
+        if (topIs(FrameKind::Do)) { // the tail of do ... while
+            if (c != 0.0)
+                jump(m_frames.back().offset, m_frames.back().line);
+            else
+                m_frames.pop_back();
+            return true;
+        }
+        const bool again = topIs(FrameKind::While) && m_frames.back().offset == m_lineStart;
+        if (c == 0.0) {
+            if (again)
+                m_frames.pop_back();
+            return skipTo(label, {OKind::EndWhile}, &found, error);
+        }
+        if (!again)
+            m_frames.push_back({FrameKind::While, label, m_lineStart, m_line - 1, 0});
+        return true;
+    }
+    case OKind::EndWhile:
+        if (!topIs(FrameKind::While))
+            return failAt(ErrorCode::OwordUnmatched, col, what, error);
+        jump(m_frames.back().offset, m_frames.back().line);
+        return true;
+    case OKind::Repeat: {
+        double c = 0;
+        if (!owordCondition(&c, error))
+            return false;
+        const auto count = static_cast<std::int64_t>(std::floor(c + 0.5));
+        if (count <= 0)
+            return skipTo(label, {OKind::EndRepeat}, &found, error);
+        m_frames.push_back({FrameKind::Repeat, label, m_next, m_line, count});
+        return true;
+    }
+    case OKind::EndRepeat:
+        if (!topIs(FrameKind::Repeat))
+            return failAt(ErrorCode::OwordUnmatched, col, what, error);
+        if (--m_frames.back().remaining > 0)
+            jump(m_frames.back().offset, m_frames.back().line);
+        else
+            m_frames.pop_back();
+        return true;
+    case OKind::Break:
+    case OKind::Continue:
+        return loopJump(kind == OKind::Break, error);
+    case OKind::None:
+        break;
+    }
+    return true;
+}
+
+bool Interpreter::callSub(Error *error)
+{
+    const std::string label = m_block.oLabel;
+    if (!m_parser.owordArgs(m_block, &m_args, error))
+        return false;
+    const auto it = m_subs.find(label);
+    if (it == m_subs.end())
+        return failAt(ErrorCode::SubroutineUndefined, m_block.oColumn, labelText(label), error);
+    std::size_t calls = 0;
+    for (const Frame &f : m_frames)
+        calls += f.kind == FrameKind::Call;
+    if (calls >= kMaxCallDepth)
+        return failAt(ErrorCode::CallTooDeep, m_block.oColumn, {}, error);
+    m_params.pushScope();
+    for (int i = 0; i < Parameters::kArgCount; ++i)
+        m_params.setNumbered(i + 1, i < static_cast<int>(m_args.size()) ? m_args[i] : 0.0);
+    m_frames.push_back({FrameKind::Call, label, m_next, m_line, 0});
+    jump(it->second.offset, it->second.line);
+    return true;
+}
+
+bool Interpreter::returnFromSub(Error *error)
+{
+    const std::string label = m_block.oLabel;
+    const std::string what = labelText(label) + " " + okindName(m_block.oKind);
+    if (!m_parser.owordArgs(m_block, &m_args, error))
+        return false;
+    // Leave every if/loop opened inside the subroutine.
+    std::size_t i = m_frames.size();
+    while (i > 0 && m_frames[i - 1].kind != FrameKind::Call)
+        --i;
+    if (i == 0 || m_frames[i - 1].label != label)
+        return failAt(ErrorCode::ReturnOutsideSub, m_block.oColumn, what, error);
+    m_valueReturned = !m_args.empty();
+    if (m_valueReturned)
+        m_value = m_args[0];
+    const Frame call = m_frames[i - 1];
+    m_frames.resize(i - 1);
+    m_params.popScope();
+    jump(call.offset, call.line);
+    return true;
+}
+
+bool Interpreter::loopJump(bool isBreak, Error *error)
+{
+    const std::string label = m_block.oLabel;
+    const std::string what = labelText(label) + " " + okindName(m_block.oKind);
+    std::size_t i = m_frames.size();
+    while (i > 0) {
+        const Frame &f = m_frames[i - 1];
+        if (f.kind == FrameKind::Call)
+            break;
+        if (f.label == label &&
+            (f.kind == FrameKind::While || f.kind == FrameKind::Do || f.kind == FrameKind::Repeat))
+            break;
+        --i;
+    }
+    if (i == 0 || m_frames[i - 1].kind == FrameKind::Call)
+        return failAt(ErrorCode::BreakOutsideLoop, m_block.oColumn, what, error);
+    m_frames.resize(i); // drop the ifs opened inside the loop
+    Frame &loop = m_frames.back();
+    OKind found = OKind::None;
+    if (loop.kind == FrameKind::While) {
+        if (isBreak) {
+            m_frames.pop_back();
+            return skipTo(label, {OKind::EndWhile}, &found, error);
+        }
+        jump(loop.offset, loop.line); // re-evaluates the condition
+        return true;
+    }
+    if (loop.kind == FrameKind::Repeat) {
+        if (!isBreak && --loop.remaining > 0) {
+            jump(loop.offset, loop.line);
+            return true;
+        }
+        m_frames.pop_back();
+        return skipTo(label, {OKind::EndRepeat}, &found, error);
+    }
+    // do ... while: break leaves after the closing while, continue evaluates it.
+    if (!skipTo(label, {OKind::While}, &found, error))
+        return false;
+    if (isBreak) {
+        m_frames.pop_back();
+        return true;
+    }
+    return executeOword(error);
+}
+
+} // namespace frezka::gcode

@@ -1,0 +1,190 @@
+#pragma once
+// The RS274/NGC interpreter (LinuxCNC rs274ngc semantics) turning program text into a Toolpath.
+//
+// One pass over the text, line by line (no copy of the file, no per-line allocation): the
+// Parser reads a line into a Block, the interpreter checks that every word is used by a code
+// of the block (a leftover word is an error), then executes the block in LinuxCNC's order:
+// parameter assignments, G93/G94, F, S, T, M6, M3/M4/M5, M7/M8/M9, G4, plane, units, G40,
+// G43/G49, G54.., G61/G64, G90/G91, G90.1/G91.1, G98/G99, G10/G28/G30/G92, motion (with G53),
+// M0/M1/M2/M30. O-word control flow jumps by byte offset inside the text, so loops and
+// subroutines cost nothing when a program has none.
+//
+// Positions are kept in machine coordinates in mm (A in degrees); program coordinates are
+// machine minus (work offset + G92 offset + tool length on Z). Every value read in G20 is
+// converted to mm on entry.
+
+#include "gcode/error.h"
+#include "gcode/parameters.h"
+#include "gcode/parser.h"
+#include "gcode/toolpath.h"
+
+#include <array>
+#include <functional>
+#include <map>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace frezka::gcode {
+
+struct Options
+{
+    bool collectAllErrors = false; // check mode: report every bad block and go on
+    bool blockDelete = false;      // skip lines starting with '/' (LinuxCNC's default is off)
+    std::uint64_t maxBlocks = 200'000'000; // executed lines before TooManyBlocks (endless loops)
+    std::size_t maxErrors = 1000;          // check mode stops after this many
+    std::map<int, double> toolLengthMm;    // G43 Hn; tools not listed have length 0
+    // State at the start of the program (added for the GUI: persisted work offsets and the
+    // machine position the program starts from).
+    std::array<std::array<double, 4>, 9> workOffsetsMm{}; // G54..G59.3, machine mm (#5221..)
+    int coordinateSystem = 0;                             // active at the start: 0 = G54
+    Point4 startMm;                                       // machine position (toolpath origin)
+    // Called now and then (every 65 536 lines) with the bytes read so far and the total.
+    std::function<void(std::size_t done, std::size_t total)> progress;
+};
+
+struct Result
+{
+    Toolpath toolpath;
+    std::vector<Error> errors; // the first error, or all of them in check mode
+    std::uint64_t linesRead = 0;
+    bool ended = false; // reached M2/M30 or the closing %
+    bool ok() const { return errors.empty(); }
+};
+
+class Interpreter final : private SystemParameters
+{
+public:
+    explicit Interpreter(Options options = {});
+    ~Interpreter() override;
+
+    // Interprets a whole program. The text must outlive the call only.
+    Result run(std::string_view text);
+
+private:
+    enum class FrameKind : std::uint8_t { Call, If, While, Do, Repeat };
+    struct Frame
+    {
+        FrameKind kind;
+        std::string label;
+        std::size_t offset = 0;     // While: the while line; Do/Repeat: the body; Call: return
+        std::uint32_t line = 0;     // line number at offset minus one
+        std::int64_t remaining = 0; // Repeat
+    };
+    struct SubDef
+    {
+        std::size_t offset = 0; // first body line
+        std::uint32_t line = 0; // line number of the sub line
+    };
+
+    // Reading lines.
+    bool nextLine(std::string_view *line);
+    void jump(std::size_t offset, std::uint32_t lineBefore);
+    void reset();
+
+    // Blocks.
+    bool processLine(std::string_view raw, Error *error);
+    bool executeBlock(Error *error);
+    bool checkWords(int motion, Error *error);
+    int motionToBe(Error *error);
+    bool executeModes(Error *error);
+    bool executeNonModal(Error *error);
+    bool executeStops();
+    bool setOffsets(Error *error);
+    bool homeMove(bool g30, Error *error);
+
+    // Motion (interp_motion.cpp).
+    bool executeMotion(int motion, Error *error);
+    Point4 targetOf(bool machineCoords) const;
+    bool straight(int motion, const Point4 &end, Error *error);
+    bool arc(int motion, const Point4 &end, Error *error);
+    bool probe(int motion, const Point4 &end, Error *error);
+    bool cycle(int motion, Error *error);
+    void cycleTraverse(int plane, double aa, double bb, double cc);
+    void cycleFeed(int plane, double aa, double bb, double cc);
+    void cycleBody(int motion, double aa, double bb, double r, double clear, double cc,
+                   double dwell, double peck);
+    double feedFor(double lengthMm) const;
+    void event(EventKind kind, double value = 0, double p = 0, double q = 0);
+
+    // O-words (interp_oword.cpp).
+    bool executeOword(Error *error);
+    bool skipTo(const std::string &label, std::initializer_list<OKind> kinds, OKind *found,
+                Error *error);
+    bool owordCondition(double *value, Error *error);
+    bool callSub(Error *error);
+    bool returnFromSub(Error *error);
+    bool loopJump(bool isBreak, Error *error);
+
+    // Coordinates.
+    double offset(int axis) const;
+    Point4 programPosition() const;
+    double unit() const { return m_metric ? 1.0 : 25.4; }
+    double lengthWord(char c) const { return m_block.get(c) * unit(); }
+    bool fail(ErrorCode code, char word, std::string detail, Error *error) const;
+    bool failAt(ErrorCode code, std::uint32_t column, std::string detail, Error *error) const;
+
+    // SystemParameters
+    bool systemNumbered(int index, double *value) const override;
+    bool systemNamed(std::string_view name, double *value) const override;
+
+    Options m_options;
+    Parameters m_params;
+    Parser m_parser;
+    Block m_block;
+    std::vector<Assignment> m_assignments;
+    std::vector<double> m_args;
+    Toolpath m_toolpath;
+
+    // Source reading.
+    std::string_view m_text;
+    std::size_t m_next = 0;      // offset of the next line
+    std::size_t m_lineStart = 0; // offset of the current line
+    std::uint32_t m_line = 0;    // current line number (1-based)
+    std::uint64_t m_executed = 0;
+    bool m_percentStarted = false;
+    bool m_sawContent = false;
+    bool m_ended = false;
+
+    // Control flow.
+    std::vector<Frame> m_frames;
+    std::unordered_map<std::string, SubDef> m_subs;
+    double m_value = 0;
+    bool m_valueReturned = false;
+
+    // Modal state (LinuxCNC defaults: G17 G21 G40 G49 G54 G64 G80 G90 G94 G99 G91.1).
+    Point4 m_pos;                                    // machine position, mm
+    std::array<std::array<double, 4>, 9> m_origin{}; // G54..G59.3 offsets, mm
+    std::array<double, 4> m_g92{};                   // active G92 offset, mm
+    std::array<double, 4> m_g92Saved{};              // #5211.. (kept by G92.2, restored by G92.3)
+    bool m_g92Enabled = false;
+    std::array<double, 4> m_g28{}, m_g30{}; // stored positions, machine mm
+    double m_toolZ = 0;                     // tool length offset, mm
+    int m_coord = 0;                        // 0 = G54 .. 8 = G59.3
+    int m_motion = 800;                     // 10 x G code of the motion mode
+    int m_plane = 170;
+    bool m_absolute = true;
+    bool m_arcAbsolute = false;
+    bool m_inverseTime = false;
+    bool m_metric = true;
+    bool m_retractToR = true; // G99 (rs274ngc starts in G99)
+    double m_feed = 0;        // F as programmed (units/min or 1/min in G93)
+    double m_speed = 0;       // S, rpm
+    int m_spindle = 0;        // 0 off, 1 cw, -1 ccw
+    int m_tool = 0, m_selectedTool = 0;
+    bool m_mist = false, m_flood = false;
+    int m_pathMode = 2;                                             // 0 G61, 1 G61.1, 2 G64
+    double m_pathP = 0, m_pathQ = 0;                                // mm
+    double m_cycleR = 0, m_cycleCC = 0, m_cycleP = 0, m_cycleQ = 0; // mm / s as programmed
+    double m_cycleIl = 0; // initial level of consecutive cycles
+    bool m_cycleIlValid = false;
+    Point4 m_probe; // #5061.. (program coordinates, mm)
+    bool m_probed = false;
+};
+
+// Interprets a file (memory-mapped). A file that cannot be read gives FileOpenFailed.
+Result interpretFile(const std::string &path, const Options &options = {});
+Result interpretText(std::string_view text, const Options &options = {});
+
+} // namespace frezka::gcode

@@ -1,0 +1,515 @@
+#include "parser.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace frezka::gcode {
+
+namespace {
+
+const char *const kOkindNames[] = {"",       "sub",       "endsub", "call",    "return",   "if",
+                                   "elseif", "else",      "endif",  "while",   "endwhile", "do",
+                                   "repeat", "endrepeat", "break",  "continue"};
+
+} // namespace
+
+const char *okindName(OKind kind)
+{
+    return kOkindNames[static_cast<int>(kind)];
+}
+
+std::string gName(int code10)
+{
+    std::string s = "G" + std::to_string(code10 / 10);
+    if (code10 % 10)
+        s += "." + std::to_string(code10 % 10);
+    return s;
+}
+
+int gGroup(int code10, bool *supported, const char **reason)
+{
+    *supported = true;
+    *reason = "";
+    auto refuse = [&](int group, const char *why) {
+        *supported = false;
+        *reason = why;
+        return group;
+    };
+    switch (code10) {
+    case 0:
+    case 10:
+    case 20:
+    case 30:
+    case 382:
+    case 383:
+    case 384:
+    case 385:
+    case 730:
+    case 800:
+    case 810:
+    case 820:
+    case 830:
+    case 850:
+    case 890:
+        return kGMotion;
+    case 40:
+    case 100:
+    case 280:
+    case 281:
+    case 300:
+    case 301:
+    case 530:
+    case 920:
+    case 921:
+    case 922:
+    case 923:
+        return kGNonModal;
+    case 170:
+    case 180:
+    case 190:
+        return kGPlane;
+    case 900:
+    case 910:
+        return kGDistance;
+    case 901:
+    case 911:
+        return kGArcDistance;
+    case 930:
+    case 940:
+        return kGFeedMode;
+    case 200:
+    case 210:
+        return kGUnits;
+    case 400:
+        return kGCutterComp;
+    case 430:
+    case 431:
+    case 490:
+        return kGToolLength;
+    case 980:
+    case 990:
+        return kGRetract;
+    case 540:
+    case 550:
+    case 560:
+    case 570:
+    case 580:
+    case 590:
+    case 591:
+    case 592:
+    case 593:
+        return kGCoordSystem;
+    case 610:
+    case 611:
+    case 640:
+        return kGPathControl;
+    case 970:
+        return kGSpindleMode;
+    // Known to LinuxCNC, refused by Frezka.
+    case 50:
+    case 51:
+    case 52:
+    case 53:
+        return refuse(kGMotion, "splines");
+    case 330:
+    case 331:
+        return refuse(kGMotion, "spindle-synchronized motion");
+    case 760:
+        return refuse(kGMotion, "threading cycle");
+    case 840:
+    case 860:
+    case 870:
+    case 880:
+        return refuse(kGMotion, "tapping and boring cycle");
+    case 700:
+    case 710:
+    case 711:
+    case 712:
+    case 720:
+    case 721:
+    case 722:
+        return refuse(kGMotion, "lathe cycle");
+    case 70:
+    case 80:
+        return refuse(15, "lathe diameter mode");
+    case 171:
+    case 181:
+    case 191:
+        return refuse(kGPlane, "UVW plane");
+    case 410:
+    case 411:
+    case 420:
+    case 421:
+        return refuse(kGCutterComp, "cutter radius compensation");
+    case 432:
+        return refuse(kGToolLength, "additional tool length offset");
+    case 520:
+        return refuse(kGNonModal, "local coordinate offset");
+    case 950:
+        return refuse(kGFeedMode, "feed per revolution");
+    case 960:
+        return refuse(kGSpindleMode, "constant surface speed");
+    default:
+        return -1;
+    }
+}
+
+int mGroup(int code, bool *supported, const char **reason)
+{
+    *supported = true;
+    *reason = "";
+    auto refuse = [&](int group, const char *why) {
+        *supported = false;
+        *reason = why;
+        return group;
+    };
+    switch (code) {
+    case 0:
+    case 1:
+    case 2:
+    case 30:
+        return kMStop;
+    case 6:
+        return kMToolChange;
+    case 3:
+    case 4:
+    case 5:
+        return kMSpindle;
+    case 7:
+    case 8:
+    case 9:
+        return kMCoolant;
+    case 60:
+        return refuse(kMStop, "pallet change pause");
+    case 61:
+        return refuse(kMToolChange, "set current tool");
+    case 19:
+        return refuse(kMSpindle, "spindle orientation");
+    case 48:
+    case 49:
+    case 50:
+    case 51:
+    case 52:
+    case 53:
+        return refuse(9, "override control");
+    case 62:
+    case 63:
+    case 64:
+    case 65:
+    case 66:
+    case 67:
+    case 68:
+        return refuse(5, "digital/analog I/O");
+    case 70:
+    case 71:
+    case 72:
+    case 73:
+        return refuse(10, "modal state save/restore");
+    default:
+        if (code >= 100 && code <= 199)
+            return refuse(10, "user-defined M code");
+        return -1;
+    }
+}
+
+Parser::Parser(Parameters &params)
+    : m_params(params)
+{
+    m_text.reserve(256);
+    m_columns.reserve(256);
+}
+
+std::uint32_t Parser::columnAt(std::size_t pos) const
+{
+    if (pos < m_columns.size())
+        return m_columns[pos];
+    return m_columns.empty() ? 1 : m_columns.back() + 1;
+}
+
+bool Parser::fail(ErrorCode code, std::size_t pos, std::string detail, Error *error) const
+{
+    error->code = code;
+    error->line = m_line;
+    error->column = columnAt(pos);
+    error->detail = std::move(detail);
+    return false;
+}
+
+bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error)
+{
+    m_line = line;
+    m_text.clear();
+    m_columns.clear();
+    m_blockDelete = false;
+    if (raw.size() > 65535) {
+        *error = {ErrorCode::LineTooLong, line, 1, std::to_string(raw.size())};
+        return false;
+    }
+    const char *s = raw.data();
+    const std::size_t n = raw.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const char c = s[i];
+        if (c == ' ' || c == '\t' || c == '\r')
+            continue;
+        if (c == ';')
+            break;
+        if (c == '(') {
+            const std::size_t open = i;
+            for (++i; i < n && s[i] != ')'; ++i) {
+                if (s[i] == '(') {
+                    *error = {
+                        ErrorCode::NestedComment, line, static_cast<std::uint32_t>(i + 1), {}};
+                    return false;
+                }
+            }
+            if (i >= n) {
+                *error = {
+                    ErrorCode::UnclosedComment, line, static_cast<std::uint32_t>(open + 1), {}};
+                return false;
+            }
+            continue;
+        }
+        m_text.push_back((c >= 'A' && c <= 'Z') ? static_cast<char>(c + 32) : c);
+        m_columns.push_back(static_cast<std::uint32_t>(i + 1));
+    }
+    if (!m_text.empty() && m_text[0] == '/') {
+        m_blockDelete = true;
+        m_text.erase(0, 1);
+        m_columns.erase(m_columns.begin());
+    }
+    return true;
+}
+
+bool Parser::readLineNumber(Error *error)
+{
+    // N followed by digits (LinuxCNC allows a decimal point in line numbers).
+    const std::size_t start = m_pos;
+    ++m_pos;
+    const std::size_t digits = m_pos;
+    while (m_pos < m_text.size() &&
+           ((m_text[m_pos] >= '0' && m_text[m_pos] <= '9') || m_text[m_pos] == '.'))
+        ++m_pos;
+    if (m_pos == digits)
+        return fail(ErrorCode::NumberExpected, start, "N", error);
+    return true;
+}
+
+bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *error)
+{
+    block.letters = 0;
+    block.gMask = 0;
+    block.mMask = 0;
+    block.oKind = OKind::None;
+    assignments.clear();
+    m_pos = 0;
+    const std::size_t n = m_text.size();
+    if (m_pos < n && m_text[m_pos] == 'n' && !readLineNumber(error))
+        return false;
+    if (m_pos < n && m_text[m_pos] == 'o')
+        return readOword(block, error);
+    while (m_pos < n) {
+        const char c = m_text[m_pos];
+        if (c == 'g') {
+            if (!readGCode(block, error))
+                return false;
+        } else if (c == 'm') {
+            if (!readMCode(block, error))
+                return false;
+        } else if (c == '#') {
+            if (!readAssignment(assignments, error))
+                return false;
+        } else if (c >= 'a' && c <= 'z') {
+            const std::size_t at = m_pos;
+            if (c == 'n' || c == 'o')
+                return fail(ErrorCode::BadCharacter, at,
+                            c == 'n' ? "N (line numbers go first)" : "O (O-words go first)", error);
+            if (c == 'b' || c == 'c' || c == 'u' || c == 'v' || c == 'w')
+                return fail(ErrorCode::UnsupportedAxis, at, std::string(1, c - 32), error);
+            if (c == 'd' || c == 'e')
+                return fail(ErrorCode::UnsupportedWord, at, std::string(1, c - 32), error);
+            const std::uint32_t bit = 1u << (c - 'a');
+            if (block.letters & bit)
+                return fail(ErrorCode::RepeatedWord, at, std::string(1, c - 32), error);
+            ++m_pos;
+            double v = 0;
+            if (!readRealValue(&v, error)) {
+                if (error->code == ErrorCode::NumberExpected && error->detail.empty()) {
+                    error->detail = std::string(1, c - 32);
+                    error->column = columnAt(at);
+                }
+                return false;
+            }
+            block.letters |= bit;
+            block.value[c - 'a'] = v;
+            block.column[c - 'a'] = columnAt(at);
+        } else {
+            return fail(ErrorCode::BadCharacter, m_pos, std::string(1, c), error);
+        }
+    }
+    return true;
+}
+
+bool Parser::readGCode(Block &block, Error *error)
+{
+    const std::size_t at = m_pos;
+    ++m_pos;
+    double v = 0;
+    if (!readRealValue(&v, error)) {
+        if (error->code == ErrorCode::NumberExpected && error->detail.empty())
+            error->detail = "G";
+        return false;
+    }
+    const double scaled = v * 10.0;
+    int code = static_cast<int>(std::floor(scaled));
+    if (scaled - code > 0.999)
+        code = static_cast<int>(std::ceil(scaled));
+    else if (scaled - code > 0.001)
+        return fail(ErrorCode::UnknownGCode, at, "G" + std::to_string(v), error);
+    if (code < 0 || code > 999)
+        return fail(ErrorCode::UnknownGCode, at, gName(code), error);
+    bool supported = true;
+    const char *reason = "";
+    const int group = gGroup(code, &supported, &reason);
+    if (group < 0)
+        return fail(ErrorCode::UnknownGCode, at, gName(code), error);
+    if (!supported)
+        return fail(ErrorCode::UnsupportedGCode, at, gName(code) + " (" + reason + ")", error);
+    if (block.hasG(group))
+        return fail(ErrorCode::ModalGroupConflict, at, gName(code), error);
+    block.gMask |= 1u << group;
+    block.g[group] = static_cast<std::int16_t>(code);
+    block.gColumn[group] = columnAt(at);
+    return true;
+}
+
+bool Parser::readMCode(Block &block, Error *error)
+{
+    const std::size_t at = m_pos;
+    ++m_pos;
+    double v = 0;
+    if (!readInteger(&v, at, error)) {
+        if (error->code == ErrorCode::NumberExpected && error->detail.empty())
+            error->detail = "M";
+        return false;
+    }
+    const int code = static_cast<int>(v);
+    const std::string name = "M" + std::to_string(code);
+    if (code < 0)
+        return fail(ErrorCode::UnknownMCode, at, name, error);
+    bool supported = true;
+    const char *reason = "";
+    const int group = mGroup(code, &supported, &reason);
+    if (group < 0)
+        return fail(ErrorCode::UnknownMCode, at, name, error);
+    if (!supported)
+        return fail(ErrorCode::UnsupportedMCode, at, name + " (" + reason + ")", error);
+    if (block.hasM(group))
+        return fail(ErrorCode::ModalGroupConflict, at, name, error);
+    block.mMask |= 1u << group;
+    block.m[group] = static_cast<std::int16_t>(code);
+    block.mColumn[group] = columnAt(at);
+    return true;
+}
+
+bool Parser::readAssignment(std::vector<Assignment> &assignments, Error *error)
+{
+    const std::size_t at = m_pos;
+    Assignment a;
+    a.column = columnAt(at);
+    if (!readParameterRef(&a.index, &a.name, error))
+        return false;
+    if (m_pos >= m_text.size() || m_text[m_pos] != '=')
+        return fail(ErrorCode::BadCharacter, m_pos,
+                    m_pos < m_text.size() ? std::string(1, m_text[m_pos]) : "end of line (=)",
+                    error);
+    ++m_pos;
+    if (a.index != 0 && m_params.isReadOnly(a.index))
+        return fail(ErrorCode::ReadOnlyParameter, at, "#" + std::to_string(a.index), error);
+    if (a.index == 0 && m_params.isSystemName(a.name))
+        return fail(ErrorCode::ReadOnlyParameter, at, "#<" + std::string(a.name) + ">", error);
+    if (!readRealValue(&a.value, error))
+        return false;
+    assignments.push_back(a);
+    return true;
+}
+
+bool Parser::readOwordHead(std::size_t *pos, OKind *kind, std::string *label, std::uint32_t *col,
+                           Error *error)
+{
+    const std::size_t at = *pos;
+    *col = columnAt(at);
+    std::size_t p = at + 1;
+    label->clear();
+    if (p < m_text.size() && m_text[p] == '<') {
+        const std::size_t end = m_text.find('>', p);
+        if (end == std::string::npos || end == p + 1)
+            return fail(ErrorCode::OwordSyntax, at, "O<", error);
+        label->assign(m_text, p + 1, end - p - 1);
+        p = end + 1;
+    } else {
+        const std::size_t digits = p;
+        while (p < m_text.size() && m_text[p] >= '0' && m_text[p] <= '9')
+            ++p;
+        if (p == digits)
+            return fail(ErrorCode::OwordSyntax, at, "O", error);
+        // o0100 and o100 are the same label.
+        std::size_t first = digits;
+        while (first + 1 < p && m_text[first] == '0')
+            ++first;
+        label->assign(m_text, first, p - first);
+    }
+    std::size_t word = p;
+    while (p < m_text.size() && m_text[p] >= 'a' && m_text[p] <= 'z')
+        ++p;
+    const std::string_view keyword(m_text.data() + word, p - word);
+    *kind = OKind::None;
+    for (int k = 1; k < static_cast<int>(std::size(kOkindNames)); ++k) {
+        if (keyword == kOkindNames[k])
+            *kind = static_cast<OKind>(k);
+    }
+    if (*kind == OKind::None)
+        return fail(ErrorCode::OwordUnknownKeyword, word,
+                    keyword.empty() ? std::string("(none)") : std::string(keyword), error);
+    *pos = p;
+    return true;
+}
+
+bool Parser::readOword(Block &block, Error *error)
+{
+    if (!readOwordHead(&m_pos, &block.oKind, &block.oLabel, &block.oColumn, error))
+        return false;
+    block.oArgsPos = m_pos;
+    return true;
+}
+
+bool Parser::peekOword(OKind *kind, std::string *label, Error *error)
+{
+    std::size_t p = 0;
+    if (p < m_text.size() && m_text[p] == 'n') {
+        m_pos = 0;
+        if (!readLineNumber(error))
+            return false;
+        p = m_pos;
+    }
+    if (p >= m_text.size() || m_text[p] != 'o')
+        return false;
+    std::uint32_t col = 0;
+    return readOwordHead(&p, kind, label, &col, error);
+}
+
+bool Parser::owordArgs(const Block &block, std::vector<double> *args, Error *error)
+{
+    args->clear();
+    m_pos = block.oArgsPos;
+    while (m_pos < m_text.size()) {
+        if (m_text[m_pos] != '[')
+            return fail(ErrorCode::OwordWithOtherWords, m_pos, {}, error);
+        double v = 0;
+        if (!readExpression(&v, error))
+            return false;
+        args->push_back(v);
+    }
+    return true;
+}
+
+} // namespace frezka::gcode

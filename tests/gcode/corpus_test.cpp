@@ -1,0 +1,192 @@
+// Corpus tests: golden traces of the good programs, the differential test against LinuxCNC's
+// rs274 on the same programs, and the bad programs with the error and line:col they expect.
+//
+// Golden traces (good/NAME.trace) are the JSON Lines of gcode/trace.h with events. They are
+// regenerated with FREZKA_UPDATE_GOLDEN=1 (then reviewed and checked against rs274 by
+// Rs274Diff, which is independent of them).
+#include "rs274.h"
+
+#include "gcode/interpreter.h"
+#include "gcode/trace.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace frezka::gcode;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kData = FREZKA_GCODE_DATA_DIR;
+
+std::vector<std::string> listPrograms(const char *dir)
+{
+    std::vector<std::string> names;
+    for (const auto &e : fs::directory_iterator(kData / dir)) {
+        if (e.path().extension() == ".nc")
+            names.push_back(e.path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string readFile(const fs::path &path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::string testName(const testing::TestParamInfo<std::string> &info)
+{
+    std::string s = info.param;
+    std::replace_if(
+        s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
+        '_');
+    return s;
+}
+
+std::string sourceLine(const std::string &text, std::uint32_t line)
+{
+    std::istringstream in(text);
+    std::string s;
+    for (std::uint32_t i = 0; i < line && std::getline(in, s); ++i) {
+    }
+    while (!s.empty() && (s.back() == '\r' || s.back() == ' '))
+        s.pop_back();
+    return s;
+}
+
+class GoodProgram : public testing::TestWithParam<std::string>
+{
+};
+
+class BadProgram : public testing::TestWithParam<std::string>
+{
+};
+
+} // namespace
+
+TEST_P(GoodProgram, MatchesGoldenTrace)
+{
+    const fs::path nc = kData / "good" / (GetParam() + ".nc");
+    const fs::path golden = kData / "good" / (GetParam() + ".trace");
+    const Result r = interpretFile(nc.string());
+    ASSERT_TRUE(r.ok()) << r.errors[0].line << ":" << r.errors[0].column << ": "
+                        << englishMessage(r.errors[0]);
+    EXPECT_TRUE(r.ended);
+    const std::string trace = jsonLines(r.toolpath, true);
+    if (std::getenv("FREZKA_UPDATE_GOLDEN")) {
+        std::ofstream(golden, std::ios::binary) << trace;
+        GTEST_SKIP() << "golden trace written: " << golden;
+    }
+    ASSERT_TRUE(fs::exists(golden)) << "missing " << golden << " (FREZKA_UPDATE_GOLDEN=1)";
+    const std::string expected = readFile(golden);
+    if (trace == expected)
+        return;
+    std::istringstream a(trace), b(expected);
+    std::string la, lb;
+    for (int n = 1;; ++n) {
+        const bool ga = static_cast<bool>(std::getline(a, la));
+        const bool gb = static_cast<bool>(std::getline(b, lb));
+        if (!ga && !gb)
+            break;
+        ASSERT_EQ(la, lb) << "first difference at trace line " << n;
+    }
+}
+
+TEST_P(GoodProgram, MatchesRs274)
+{
+    const fs::path nc = kData / "good" / (GetParam() + ".nc");
+    const test::Rs274Run ref = test::runRs274(nc.string());
+    if (!ref.available)
+        GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
+    ASSERT_TRUE(ref.error.empty()) << "rs274: " << ref.error << " at: " << ref.errorLine;
+    const Result r = interpretFile(nc.string());
+    ASSERT_TRUE(r.ok());
+    std::vector<std::size_t> ours;
+    for (std::size_t i = 0; i < r.toolpath.size(); ++i) {
+        if (r.toolpath.kind(i) != MotionKind::Event)
+            ours.push_back(i);
+    }
+    ASSERT_EQ(ours.size(), ref.moves.size()) << "number of motions and dwells";
+    auto near = [](const Point4 &p, const Point4 &q, double tol) {
+        return std::fabs(p.x - q.x) <= tol && std::fabs(p.y - q.y) <= tol &&
+               std::fabs(p.z - q.z) <= tol && std::fabs(p.a - q.a) <= 1e-4;
+    };
+    for (std::size_t k = 0; k < ours.size(); ++k) {
+        const std::size_t i = ours[k];
+        const test::CanonMove &m = ref.moves[k];
+        const Toolpath &tp = r.toolpath;
+        std::string entry;
+        appendJsonLine(entry, tp, i, true);
+        const std::string where =
+            "motion " + std::to_string(k) + ": ours " + entry + "\n  rs274 " + m.call;
+        ASSERT_EQ(static_cast<int>(tp.kind(i)), static_cast<int>(m.kind)) << where;
+        if (m.kind == MotionKind::Dwell)
+            continue;
+        // rs274 prints 4 decimals in program units: 1e-4 mm in G21, 1e-4 inch in G20.
+        const double tol = 1e-4 * m.unitMm + 1e-9;
+        ASSERT_TRUE(near(tp.end(i), m.end, tol)) << where;
+        if (m.kind == MotionKind::Arc) {
+            const ArcInfo &arc = tp.arc(i);
+            EXPECT_EQ(arc.plane, m.plane) << where;
+            EXPECT_EQ(arc.turns, m.turns) << where;
+            Point4 c = arc.centre, mc = m.centre;
+            // Only the in-plane coordinates of the centre are defined.
+            if (arc.plane == Plane::XY)
+                c.z = mc.z = 0;
+            else if (arc.plane == Plane::XZ)
+                c.y = mc.y = 0;
+            else
+                c.x = mc.x = 0;
+            c.a = mc.a = 0;
+            ASSERT_TRUE(near(c, mc, tol)) << "centre of " << where;
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, GoodProgram, testing::ValuesIn(listPrograms("good")), testName);
+
+TEST_P(BadProgram, ReportsExpectedErrorAt)
+{
+    const fs::path nc = kData / "bad" / (GetParam() + ".nc");
+    const std::string text = readFile(nc);
+    // A line "; expect: ErrorName LINE:COL" (the first line, or the second after a %), and
+    // "; rs274: error" when LinuxCNC's rs274 must reject the same line.
+    const auto pos = text.find("; expect: ");
+    ASSERT_NE(pos, std::string::npos) << "bad program without '; expect: NAME LINE:COL'";
+    std::istringstream header(text.substr(pos + 10, text.find('\n', pos) - pos - 10));
+    std::string name, where;
+    header >> name >> where;
+    ErrorCode code{};
+    ASSERT_TRUE(errorCodeFromName(name, &code)) << "unknown error name " << name;
+    const auto colon = where.find(':');
+    const auto line = static_cast<std::uint32_t>(std::stoul(where.substr(0, colon)));
+    const auto column = static_cast<std::uint32_t>(std::stoul(where.substr(colon + 1)));
+
+    const Result r = interpretFile(nc.string());
+    ASSERT_FALSE(r.ok());
+    const Error &e = r.errors.front();
+    EXPECT_EQ(errorName(e.code), name) << englishMessage(e);
+    EXPECT_EQ(e.line, line) << englishMessage(e);
+    EXPECT_EQ(e.column, column) << englishMessage(e);
+    EXPECT_FALSE(translatedMessage(e).isEmpty());
+
+    if (text.find("\n; rs274: error") != std::string::npos) {
+        const test::Rs274Run ref = test::runRs274(nc.string());
+        if (!ref.available)
+            GTEST_SKIP() << "rs274 is not installed";
+        EXPECT_FALSE(ref.error.empty()) << "rs274 accepted the program";
+        EXPECT_EQ(ref.errorLine, sourceLine(text, line)) << "rs274: " << ref.error;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, BadProgram, testing::ValuesIn(listPrograms("bad")), testName);

@@ -1,0 +1,5 @@
+; expect: OwordUnmatched 4:1
+; rs274: error
+G21
+o5 endif
+M2

@@ -1,0 +1,6 @@
+; expect: BadCharacter 4:1
+; rs274: error
+G21
+%
+G0 X1
+M2

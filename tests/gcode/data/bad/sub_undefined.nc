@@ -1,0 +1,4 @@
+; expect: SubroutineUndefined 3:1
+G21
+o<nowhere> call
+M2

@@ -1,0 +1,5 @@
+; expect: TwoAxisCodes 4:1
+; rs274: error
+G21
+G92 G0 X1
+M2

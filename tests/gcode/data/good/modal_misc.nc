@@ -1,0 +1,32 @@
+%
+( hand-written: modes, events, syntax corners )
+n10 g21 g90 g17 g94
+N20 G0X1Y2Z3
+/N30 G0 X4
+n40 g1 x 1 0 . 5 y-2. f1 2 0 0
+G93 G1 X20 Y0 F2
+G2 X30 Y10 I10 J0 F6
+G94 F300
+G61 G1 X31
+G61.1 G1 X32
+G64 P0.05 Q0.02 G1 X33
+G4 P1.5
+T2 M6
+S8000 M3
+S9000
+M4
+M7
+M8
+M9
+M5
+M0
+M1
+G0 G90 X0 ; a comment
+G0 X1 (inline) Y1 (two)
+G97 S100
+G43 H0
+G49
+G40
+G0 A45.5
+M30
+%

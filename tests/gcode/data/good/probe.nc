@@ -1,0 +1,12 @@
+( hand-written: probe moves )
+G21 G90 G17 F100
+G0 X0 Y0 Z10
+G38.2 Z-5
+G0 X0 Y0 Z10
+G38.3 X5 Z2
+G0 X0 Y0 Z10
+G38.4 Z8
+G0 X0 Y0 Z10
+G38.5 Y-3
+G0 X0 Y0 Z10
+M2

@@ -1,0 +1,160 @@
+#include "rs274.h"
+
+#include <QProcess>
+#include <QStandardPaths>
+#include <QString>
+#include <QTemporaryFile>
+
+#include <array>
+#include <cctype>
+#include <cstdlib>
+#include <sstream>
+
+namespace frezka::gcode::test {
+
+namespace {
+
+std::vector<double> numbersIn(const std::string &args)
+{
+    std::vector<double> out;
+    const char *p = args.c_str();
+    while (*p) {
+        char *end = nullptr;
+        const double v = std::strtod(p, &end);
+        if (end != p) {
+            out.push_back(v);
+            p = end;
+        } else {
+            ++p;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+std::string rs274Path()
+{
+    return QStandardPaths::findExecutable(QStringLiteral("rs274")).toStdString();
+}
+
+Rs274Run runRs274(const std::string &file)
+{
+    Rs274Run run;
+    const std::string exe = rs274Path();
+    if (exe.empty())
+        return run;
+    run.available = true;
+    QProcess process;
+    process.setProcessChannelMode(QProcess::MergedChannels);
+    // rs274's built-in tool table has non-zero lengths; Frezka's default is length 0 for
+    // every tool, so give rs274 a table of zero-length tools.
+    QTemporaryFile tools;
+    if (!tools.open()) {
+        run.error = "cannot write the tool table";
+        return run;
+    }
+    for (int t = 1; t <= 99; ++t)
+        tools.write(QStringLiteral("T%1 P%1 Z0 D1 ;\n").arg(t).toLatin1());
+    tools.flush();
+    process.start(QString::fromStdString(exe),
+                  {QStringLiteral("-t"), tools.fileName(), QStringLiteral("-g"),
+                   QString::fromStdString(file)});
+    process.closeWriteChannel();
+    if (!process.waitForFinished(60000)) {
+        run.error = "rs274 did not finish";
+        return run;
+    }
+    std::istringstream in(process.readAll().toStdString());
+    double unit = 1;
+    std::array<double, 6> g5x{}, g92{};
+    double toolZ = 0;
+    Plane plane = Plane::XY;
+    std::string line;
+    bool expectErrorLine = false;
+    while (std::getline(in, line)) {
+        // "   12 N..... CALL(...)" or "   12 N10    CALL(...)" when the block has an N word.
+        std::size_t n = line.find_first_not_of(' ');
+        const bool canon = n != std::string::npos &&
+                           std::isdigit(static_cast<unsigned char>(line[n])) &&
+                           line.find(" N", n) != std::string::npos;
+        if (canon) {
+            n = line.find(" N", n) + 2;
+            n = line.find(' ', n);
+            n = line.find_first_not_of(' ', n);
+        }
+        if (!canon || n == std::string::npos) {
+            if (line == "executing" || line.empty())
+                continue;
+            if (expectErrorLine) {
+                run.errorLine = line;
+                expectErrorLine = false;
+            } else if (run.error.empty()) {
+                run.error = line;
+                expectErrorLine = true;
+            }
+            continue;
+        }
+        const std::string call = line.substr(n);
+        const auto open = call.find('(');
+        const std::string name = call.substr(0, open);
+        const std::vector<double> v = numbersIn(open == std::string::npos ? "" : call.substr(open));
+        auto machine = [&](double x, double y, double z, double a) {
+            return Point4{(x + g5x[0] + g92[0]) * unit, (y + g5x[1] + g92[1]) * unit,
+                          (z + g5x[2] + g92[2] + toolZ) * unit, a + g5x[3] + g92[3]};
+        };
+        if (name == "USE_LENGTH_UNITS") {
+            unit = call.find("INCHES") != std::string::npos ? 25.4 : 1.0;
+        } else if (name == "SET_G5X_OFFSET" && v.size() >= 7) {
+            std::copy(v.begin() + 1, v.begin() + 7, g5x.begin());
+        } else if (name == "SET_G92_OFFSET" && v.size() >= 6) {
+            std::copy(v.begin(), v.begin() + 6, g92.begin());
+        } else if (name == "USE_TOOL_LENGTH_OFFSET" && v.size() >= 3) {
+            toolZ = v[2];
+        } else if (name == "SELECT_PLANE") {
+            plane = call.find("XZ") != std::string::npos   ? Plane::XZ
+                    : call.find("YZ") != std::string::npos ? Plane::YZ
+                                                           : Plane::XY;
+        } else if ((name == "STRAIGHT_TRAVERSE" || name == "STRAIGHT_FEED" ||
+                    name == "STRAIGHT_PROBE") &&
+                   v.size() >= 4) {
+            CanonMove m;
+            m.kind = name == "STRAIGHT_TRAVERSE" ? MotionKind::Rapid
+                     : name == "STRAIGHT_FEED"   ? MotionKind::Feed
+                                                 : MotionKind::Probe;
+            m.end = machine(v[0], v[1], v[2], v[3]);
+            m.unitMm = unit;
+            m.call = call;
+            run.moves.push_back(m);
+        } else if (name == "ARC_FEED" && v.size() >= 7) {
+            // ARC_FEED(first_end, second_end, first_axis, second_axis, rotation, axis_end, a..)
+            CanonMove m;
+            m.kind = MotionKind::Arc;
+            m.plane = plane;
+            m.turns = static_cast<int>(v[4]);
+            m.unitMm = unit;
+            m.call = call;
+            double e[3] = {0, 0, 0}, c[3] = {0, 0, 0};
+            const int u = plane == Plane::XY ? 0 : plane == Plane::XZ ? 2 : 1;
+            const int w = plane == Plane::XY ? 2 : plane == Plane::XZ ? 1 : 0;
+            const int vv = 3 - u - w;
+            e[u] = v[0];
+            e[vv] = v[1];
+            e[w] = v[5];
+            c[u] = v[2];
+            c[vv] = v[3];
+            m.end = machine(e[0], e[1], e[2], v[6]);
+            m.centre = machine(c[0], c[1], c[2], 0);
+            run.moves.push_back(m);
+        } else if (name == "DWELL") {
+            CanonMove m;
+            m.kind = MotionKind::Dwell;
+            m.call = call;
+            m.unitMm = unit;
+            run.moves.push_back(m);
+        }
+    }
+    return run;
+}
+
+} // namespace frezka::gcode::test
