@@ -7,6 +7,7 @@
 // can adopt or change them. Each is used from exactly one place in the emulator; tests in
 // tests/driver/emulator/readings_test.cpp pin every one of them.
 
+#include "driver/protocol/lines.h"
 #include "driver/protocol/variant.h"
 
 #include <array>
@@ -69,9 +70,9 @@ inline constexpr bool kMpgSendsReports = false;
 // lines of a packet must follow each other within it.
 inline constexpr double kWatchdogSeconds = 0.1;
 
-// Longest command line accepted (bytes between '!' and CR); longer lines are answered code 4
-// once their CR arrives and do not advance the index.
-inline constexpr std::size_t kMaxLineLength = 96;
+// Longest command line accepted (bytes between '!' and CR), the codec's line limit; longer
+// lines are answered code 4 once their CR arrives and do not advance the index.
+inline constexpr std::size_t kMaxLineLength = protocol::kMaxLineLength;
 
 // Bytes that arrive while H or W is still to be answered wait in a receive buffer of this size
 // and are handled after the reply; more are lost.
