@@ -82,8 +82,9 @@ void runCorpus(Variant variant, bool checksums)
     UnitOptions o = optionsFor(variant);
     o.switches = {{0, 0, -3000, -1}};
     Unit unit(o);
-    if (checksums)
+    if (checksums) {
         ASSERT_EQ(ask(unit, p::encode(p::cmd::checksumOn(), false)), "0,5C\r");
+    }
     int sent = 0;
     for (const p::Command &c : corpus()) {
         if (p::validate(c, variant))
