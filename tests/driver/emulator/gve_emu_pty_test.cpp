@@ -3,9 +3,12 @@
 // exactly as the application talks to hardware. Checks the manuals' own examples byte-exactly.
 
 #include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
 #include <QProcess>
 #include <QSerialPort>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 class GveEmuPtyTest : public QObject
@@ -19,6 +22,7 @@ private slots:
     void checksummedPacketGve64();
     void queueCapacityAndHaltOverThePty();
     void exitsCleanlyOnSigint();
+    void optionsShapeTheUnit();
     void rejectsBadOptions();
 
 private:
@@ -167,6 +171,39 @@ void GveEmuPtyTest::exitsCleanlyOnSigint()
     QVERIFY(finished.wait(5000));
     QCOMPARE(m_process->exitStatus(), QProcess::NormalExit);
     QCOMPARE(m_process->exitCode(), 0);
+}
+
+void GveEmuPtyTest::optionsShapeTheUnit()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString eeprom = dir.filePath(QStringLiteral("unit.eeprom"));
+    const QString link = dir.filePath(QStringLiteral("gve"));
+    start({QStringLiteral("--variant"), QStringLiteral("gve114"), QStringLiteral("--address"),
+           QStringLiteral("3"), QStringLiteral("--latency"), QStringLiteral("30"),
+           QStringLiteral("--home"), QStringLiteral("X=-200"), QStringLiteral("--eeprom"), eeprom,
+           QStringLiteral("--link"), link});
+    QVERIFY(QFileInfo(link).isSymLink());
+    QElapsedTimer clock;
+    clock.start();
+    QCOMPARE(ask("!3?\r"), QByteArray("0,IP114/500 x16 16.9.2018\r"));
+    QVERIFY(clock.elapsed() >= 60); // 30 ms each way at least: the model cannot be faster
+    QCOMPARE(ask("!3Y-\r"), QByteArray("0,Y-\r"));
+    QCOMPARE(ask("!3WX,-1000,20000,100,20000\r"), QByteArray("0\r"));
+    QCOMPARE(ask("!3P\r"), QByteArray("0,-199,0\r"));
+    QCOMPARE(ask("!3EW05,AC\r"), QByteArray("0\r"));
+    QFile file(eeprom);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.readLine().startsWith("FF 02 03 08 FF AC"));
+    // Only address 3 (and the spindle address 7) answer: a command to 0 gets nothing back, and
+    // the next one to 3 is answered normally.
+    m_port->write("!0?\r");
+    QCOMPARE(ask("!3Q\r"), QByteArray("0,16091801\r"));
+    QSignalSpy finished(m_process, &QProcess::finished);
+    m_process->terminate(); // SIGTERM
+    QVERIFY(finished.wait(5000));
+    QCOMPARE(m_process->exitCode(), 0);
+    QVERIFY(!QFileInfo::exists(link) && !QFileInfo(link).isSymLink());
 }
 
 void GveEmuPtyTest::rejectsBadOptions()
