@@ -156,7 +156,8 @@ void Unit::Impl::handleLine(int address, std::string_view body)
             packetOpen = false;
             int declared = -1;
             std::string_view n = body.substr(2);
-            if (!n.empty() && n.size() <= 4 && std::all_of(n.begin(), n.end(), ::isdigit))
+            const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+            if (!n.empty() && n.size() <= 4 && std::all_of(n.begin(), n.end(), digit))
                 declared = std::stoi(std::string(n));
             const Reply r = executePacket(declared);
             packet.clear();
