@@ -108,7 +108,7 @@ bool Interpreter::executeMotion(int motion, Error *error)
 
 bool Interpreter::straight(int motion, const Point4 &end, Error *error)
 {
-    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 1;
+    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
     if (motion == 0) {
         m_toolpath.appendRapid(end, m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
         m_pos = end;
@@ -129,8 +129,8 @@ bool Interpreter::straight(int motion, const Point4 &end, Error *error)
 bool Interpreter::arc(int motion, const Point4 &end, Error *error)
 {
     const Block &b = m_block;
-    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 1;
-    const std::string name = motion == 20 ? "G2" : "G3";
+    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 0;
+    const char *name = motion == 20 ? "G2" : "G3";
     const bool ijk = b.has('i') || b.has('j') || b.has('k');
     const bool rForm = b.has('r');
     const PlaneAxes ax = planeAxes(m_plane);
@@ -175,14 +175,14 @@ bool Interpreter::arc(int motion, const Point4 &end, Error *error)
         cv = m_arcAbsolute ? ov : sv + ov;
         const double r1 = std::hypot(cu - su, cv - sv);
         const double r2 = std::hypot(cu - eu, cv - ev);
-        const std::string radii = "r1=" + fmt4(r1 / unit()) + " r2=" + fmt4(r2 / unit());
+        auto radii = [&] { return "r1=" + fmt4(r1 / unit()) + " r2=" + fmt4(r2 / unit()); };
         if (r1 < kRadiusToleranceMm || r2 < kRadiusToleranceMm)
-            return failAt(ErrorCode::ArcZeroRadius, col, radii, error);
+            return failAt(ErrorCode::ArcZeroRadius, col, radii(), error);
         const double spiralAbs = m_metric ? kSpiralAbsToleranceMetricMm : kSpiralAbsToleranceInchMm;
         const double absErr = std::fabs(r1 - r2);
         const double relErr = absErr / std::max(r1, r2);
         if (absErr > spiralAbs * 100.0 || (relErr > kSpiralRelTolerance && absErr > spiralAbs))
-            return failAt(ErrorCode::ArcRadiusMismatch, col, radii, error);
+            return failAt(ErrorCode::ArcRadiusMismatch, col, radii(), error);
     } else {
         if (eu == su && ev == sv)
             return fail(ErrorCode::ArcEndEqualsStart, 'r', {}, error);
@@ -226,7 +226,7 @@ bool Interpreter::arc(int motion, const Point4 &end, Error *error)
 
 bool Interpreter::probe(int motion, const Point4 &end, Error *error)
 {
-    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 1;
+    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
     if (m_inverseTime)
         return failAt(ErrorCode::ProbeInverseTime, col, {}, error);
     if (m_feed == 0)
@@ -304,7 +304,7 @@ void Interpreter::cycleBody(int motion, double aa, double bb, double r, double c
 bool Interpreter::cycle(int motion, Error *error)
 {
     const Block &b = m_block;
-    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 1;
+    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 0;
     const std::string name = gName(motion);
     const PlaneAxes ax = planeAxes(m_plane);
     const char uc = kAxisLetters[ax.u], vc = kAxisLetters[ax.v], wc = kAxisLetters[ax.w];

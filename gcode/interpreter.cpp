@@ -7,6 +7,10 @@
 #include <cstring>
 #include <memory>
 
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
 namespace frezka::gcode {
 
 namespace {
@@ -38,13 +42,12 @@ Interpreter::~Interpreter() = default;
 
 bool Interpreter::fail(ErrorCode code, char word, std::string detail, Error *error) const
 {
-    return failAt(code, word ? m_block.col(word) : 1, std::move(detail), error);
+    return failAt(code, word ? m_block.col(word) : 0, std::move(detail), error);
 }
 
-bool Interpreter::failAt(ErrorCode code, std::uint32_t column, std::string detail,
-                         Error *error) const
+bool Interpreter::failAt(ErrorCode code, std::uint32_t pos, std::string detail, Error *error) const
 {
-    *error = {code, m_line, column, std::move(detail)};
+    *error = {code, m_line, m_parser.columnAt(pos), std::move(detail)};
     return false;
 }
 
@@ -81,8 +84,10 @@ void Interpreter::jump(std::size_t offset, std::uint32_t lineBefore)
     m_line = lineBefore;
 }
 
-Result Interpreter::run(std::string_view text)
+Result Interpreter::run(std::string_view text, const std::function<void(std::size_t)> &consumed)
 {
+    constexpr std::size_t kReleaseStep = 1u << 20;
+    std::size_t releaseMark = kReleaseStep;
     m_text = text;
     m_next = 0;
     m_line = 0;
@@ -98,6 +103,10 @@ Result Interpreter::run(std::string_view text)
     std::string_view raw;
     Error error;
     while (!m_ended && nextLine(&raw)) {
+        if (m_next >= releaseMark && consumed) {
+            consumed(releaseMark - kReleaseStep);
+            releaseMark += kReleaseStep;
+        }
         if (++m_executed > m_options.maxBlocks) {
             result.errors.push_back(
                 {ErrorCode::TooManyBlocks, m_line, 1, std::to_string(m_options.maxBlocks)});
@@ -141,8 +150,7 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
         } else if (m_percentStarted) {
             m_ended = true;
         } else {
-            return failAt(ErrorCode::BadCharacter, static_cast<std::uint32_t>(raw.find('%') + 1),
-                          "%", error);
+            return failAt(ErrorCode::BadCharacter, 0, "%", error);
         }
         return true;
     }
@@ -621,8 +629,21 @@ Result interpretFile(const std::string &path, const Options &options)
     if (size == 0)
         return interpretText({}, options);
     if (uchar *data = file.map(0, size)) {
-        Result r = interpretText(
-            {reinterpret_cast<const char *>(data), static_cast<std::size_t>(size)}, options);
+        Interpreter interpreter(options);
+        // Pages already read are dropped from this process's memory as the interpreter moves
+        // on (they stay in the page cache; a loop jumping back faults them in again).
+        const auto release = [data](std::size_t upTo) {
+#ifdef __linux__
+            const std::size_t page = 4096;
+            if (upTo >= page)
+                ::madvise(data, upTo / page * page, MADV_DONTNEED);
+#else
+            (void)data;
+            (void)upTo;
+#endif
+        };
+        Result r = interpreter.run(
+            {reinterpret_cast<const char *>(data), static_cast<std::size_t>(size)}, release);
         file.unmap(data);
         return r;
     }

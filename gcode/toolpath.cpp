@@ -49,7 +49,18 @@ void Toolpath::appendFeed(const Point4 &end, double feedMmPerMin, std::uint32_t 
 void Toolpath::appendArc(const Point4 &end, const ArcInfo &arc, double feedMmPerMin,
                          std::uint32_t line)
 {
-    m_arcs.push_back(arc);
+    const Point4 &c = arc.centre;
+    switch (arc.plane) {
+    case Plane::XY:
+        m_arcs.push_back({c.x, c.y, arc.turns, arc.plane});
+        break;
+    case Plane::XZ:
+        m_arcs.push_back({c.z, c.x, arc.turns, arc.plane});
+        break;
+    case Plane::YZ:
+        m_arcs.push_back({c.y, c.z, arc.turns, arc.plane});
+        break;
+    }
     push(MotionKind::Arc, end, feedMmPerMin, line, static_cast<std::uint32_t>(m_arcs.size() - 1));
 }
 
@@ -72,7 +83,31 @@ std::size_t Toolpath::memoryBytes() const
            (m_x.capacity() + m_y.capacity() + m_z.capacity() + m_a.capacity() + m_feed.capacity()) *
                sizeof(double) +
            (m_line.capacity() + m_aux.capacity()) * sizeof(std::uint32_t) +
-           m_arcs.capacity() * sizeof(ArcInfo) + m_events.capacity() * sizeof(Event);
+           m_arcs.capacity() * sizeof(StoredArc) + m_events.capacity() * sizeof(Event);
+}
+
+ArcInfo Toolpath::arc(std::size_t i) const
+{
+    const StoredArc &s = m_arcs[m_aux[i]];
+    ArcInfo arc;
+    arc.centre = start(i);
+    arc.plane = s.plane;
+    arc.turns = s.turns;
+    switch (s.plane) {
+    case Plane::XY:
+        arc.centre.x = s.u;
+        arc.centre.y = s.v;
+        break;
+    case Plane::XZ:
+        arc.centre.z = s.u;
+        arc.centre.x = s.v;
+        break;
+    case Plane::YZ:
+        arc.centre.y = s.u;
+        arc.centre.z = s.v;
+        break;
+    }
+    return arc;
 }
 
 namespace {
