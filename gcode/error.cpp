@@ -86,6 +86,8 @@ constexpr ErrorInfo kErrors[] = {
     {ErrorCode::UnsupportedRotation, "UnsupportedRotation",
      FZ_TR("Coordinate system rotation (G10 R) is not supported"),
      FZ_TR("Remove the R word.")},
+    {ErrorCode::ValueOutOfRange, "ValueOutOfRange", FZ_TR("Value of %1 is out of range"),
+     FZ_TR("Values must be finite and below 1e12 in size; check the expression.")},
     {ErrorCode::ZeroFeedRate, "ZeroFeedRate", FZ_TR("%1 with zero feed rate"),
      FZ_TR("Set a feed rate with F before the first feed move.")},
     {ErrorCode::InverseTimeFeedMissing, "InverseTimeFeedMissing",
@@ -250,6 +252,8 @@ QString translatedMessage(const Error &error)
 
 QString formatError(const QString &file, const Error &error)
 {
+    if (error.line == 0)
+        return QStringLiteral("%1: %2").arg(file, translatedMessage(error));
     return QStringLiteral("%1:%2:%3: %4")
         .arg(file)
         .arg(error.line)

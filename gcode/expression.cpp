@@ -321,7 +321,10 @@ bool Parser::readUnary(double *value, Error *error)
             return domain();
         *value = std::log(a);
     } else if (name == "round") {
-        *value = static_cast<double>(static_cast<long long>(a + (a < 0 ? -0.5 : 0.5)));
+        // LinuxCNC: (int)(a +- 0.5); beyond 2^53 every double is already whole.
+        *value = std::fabs(a) < 4.5e15
+                     ? static_cast<double>(static_cast<long long>(a + (a < 0 ? -0.5 : 0.5)))
+                     : a;
     } else if (name == "sin") {
         *value = std::sin(a * kDegToRad);
     } else if (name == "sqrt") {
@@ -361,8 +364,7 @@ bool Parser::readParameterRef(int *index, std::string_view *name, Error *error)
         return false;
     }
     if (v < 1 || v >= Parameters::kCount)
-        return fail(ErrorCode::ParameterOutOfRange, start, std::to_string(static_cast<long>(v)),
-                    error);
+        return fail(ErrorCode::ParameterOutOfRange, start, std::to_string(v), error);
     *index = static_cast<int>(v);
     return true;
 }

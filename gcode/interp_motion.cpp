@@ -21,6 +21,8 @@ constexpr double kSpiralAbsToleranceInchMm = 2 * 0.001 * std::numbers::sqrt2 * 2
 constexpr double kSpiralRelTolerance = 0.001;
 constexpr double kTiny = 1e-12;
 constexpr double kG83RapidDeltaMm = 0.010 * 25.4;
+constexpr double kMaxTurns = 1e6; // P of an arc, L of a cycle: bounds against absurd output
+constexpr double kMaxRepeats = 1e6;
 
 struct PlaneAxes
 {
@@ -157,7 +159,7 @@ bool Interpreter::arc(int motion, const Point4 &end, Error *error)
     if (b.has('p')) {
         const double p = b.get('p');
         const double rounded = std::round(p);
-        if (rounded < 1 || std::fabs(p - rounded) > 0.0001)
+        if (rounded < 1 || rounded > kMaxTurns || std::fabs(p - rounded) > 0.0001)
             return fail(ErrorCode::ArcBadTurns, 'p', fmt4(p), error);
         turns = static_cast<int>(rounded);
     }
@@ -321,7 +323,7 @@ bool Interpreter::cycle(int motion, Error *error)
     int repeats = 1;
     if (b.has('l')) {
         const double l = b.get('l');
-        if (l < 1 || l != std::floor(l))
+        if (l < 1 || l > kMaxRepeats || l != std::floor(l))
             return fail(ErrorCode::CycleBadL, 'l', {}, error);
         repeats = static_cast<int>(l);
     }

@@ -4,6 +4,7 @@
 // expression is evaluated while skipping); loops and calls jump back by byte offset.
 #include "interpreter.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace frezka::gcode {
@@ -144,7 +145,7 @@ bool Interpreter::executeOword(Error *error)
         double c = 0;
         if (!owordCondition(&c, error))
             return false;
-        const auto count = static_cast<std::int64_t>(std::floor(c + 0.5));
+        const auto count = static_cast<std::int64_t>(std::floor(std::min(c, 1e15) + 0.5));
         if (count <= 0)
             return skipTo(label, {OKind::EndRepeat}, &found, error);
         m_frames.push_back({FrameKind::Repeat, label, m_next, m_line, count});

@@ -126,9 +126,10 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
             result.errors.push_back(
                 {ErrorCode::OwordNotClosed, f.line + 1, 1, std::string(what) + " " + f.label});
         } else if (m_percentStarted) {
-            result.errors.push_back({ErrorCode::FileEndedWithoutPercent, m_line, 1, {}});
+            result.errors.push_back(
+                {ErrorCode::FileEndedWithoutPercent, std::max(m_line, 1u), 1, {}});
         } else {
-            result.errors.push_back({ErrorCode::FileEndedWithoutEnd, m_line, 1, {}});
+            result.errors.push_back({ErrorCode::FileEndedWithoutEnd, std::max(m_line, 1u), 1, {}});
         }
     }
     result.linesRead = m_line;
@@ -311,7 +312,7 @@ bool Interpreter::executeModes(Error *error)
         const double t = b.get('t');
         if (t < 0)
             return fail(ErrorCode::NegativeValue, 't', "T", error);
-        if (t != std::floor(t))
+        if (t != std::floor(t) || t > 1e9)
             return fail(ErrorCode::NonIntegerValue, 't', "T", error);
         m_selectedTool = static_cast<int>(t);
     }
@@ -356,7 +357,7 @@ bool Interpreter::executeModes(Error *error)
             int tool = m_tool;
             if (b.has('h')) {
                 const double h = b.get('h');
-                if (h < 0 || h != std::floor(h))
+                if (h < 0 || h > 1e9 || h != std::floor(h))
                     return fail(ErrorCode::NonIntegerValue, 'h', "H", error);
                 tool = static_cast<int>(h);
             }
@@ -440,7 +441,7 @@ bool Interpreter::setOffsets(Error *error)
         return failAt(ErrorCode::G10BadL, col, "without L", error);
     const double l = b.get('l');
     if (l != 2 && l != 20)
-        return fail(ErrorCode::G10BadL, 'l', "L" + std::to_string(static_cast<int>(l)), error);
+        return fail(ErrorCode::G10BadL, 'l', "L" + std::to_string(l), error);
     if (!b.has('p'))
         return failAt(ErrorCode::G10BadP, col, "none", error);
     const double p = b.get('p');

@@ -362,6 +362,8 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
                 }
                 return false;
             }
+            if (!(std::fabs(v) < 1e12))
+                return fail(ErrorCode::ValueOutOfRange, at, std::string(1, c - 32), error);
             block.letters |= bit;
             block.value[c - 'a'] = v;
             block.column[c - 'a'] = static_cast<std::uint32_t>(at);
@@ -383,6 +385,8 @@ bool Parser::readGCode(Block &block, Error *error)
         return false;
     }
     const double scaled = v * 10.0;
+    if (!(scaled > -0.5 && scaled < 9999.5))
+        return fail(ErrorCode::UnknownGCode, at, "G" + std::to_string(v), error);
     int code = static_cast<int>(std::floor(scaled));
     if (scaled - code > 0.999)
         code = static_cast<int>(std::ceil(scaled));
@@ -415,6 +419,8 @@ bool Parser::readMCode(Block &block, Error *error)
             error->detail = "M";
         return false;
     }
+    if (!(v >= 0 && v <= 99999))
+        return fail(ErrorCode::UnknownMCode, at, "M" + std::to_string(v), error);
     const int code = static_cast<int>(v);
     const std::string name = "M" + std::to_string(code);
     if (code < 0)

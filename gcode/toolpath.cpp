@@ -165,10 +165,13 @@ std::vector<Point4> chordArc(const Point4 &start, const Point4 &end, const ArcIn
     sweep += kTwoPi * (std::abs(arc.turns) - 1);
 
     // Largest chord angle whose sagitta r(1 - cos(theta/2)) stays within the tolerance.
+    // At most kMaxPoints points: an arc needing more (a radius of kilometres) is not real.
+    constexpr double kMaxPoints = 1e7;
     std::size_t n = 1;
-    if (radius > toleranceMm && toleranceMm > 0) {
+    if (radius > toleranceMm && toleranceMm > 0 && std::isfinite(sweep)) {
         const double maxStep = 2 * std::acos(1 - toleranceMm / radius);
-        n = static_cast<std::size_t>(std::max(1.0, std::ceil(sweep / maxStep)));
+        const double count = maxStep > 0 ? std::ceil(sweep / maxStep) : kMaxPoints;
+        n = static_cast<std::size_t>(std::clamp(count, 1.0, kMaxPoints));
     }
     // The end radius may differ slightly from the start radius (within the interpreter's check):
     // blend the radius so the last point lands exactly on the programmed end.
