@@ -19,22 +19,29 @@ namespace frezka::machine {
 using Steps4 = std::array<std::int64_t, 4>; // absolute steps X, Y, Z, A
 
 enum class UnitOp : std::uint8_t {
-    Line,          // !0L dx,dy,dz[,da]  stand-alone move (queue must be empty)
-    Vector,        // !0C dx,dy,dz[,da]  continuous vector
-    Brake,         // !0B n    brake speed, pulses/s
-    Speed,         // !0V n    speed, pulses/s
-    Accel,         // !0A n    acceleration, thousands of pulses/s²
-    Pause,         // !0T n    pause between non-continuous moves, ms
-    ShortThreshold,// !0$ n    steps
-    SpeedModeVk,   // !0VK     path speeds
-    SpeedModeVn,   // !0VN     major-axis speeds
-    Output,        // !0O0,hh  output port 0 (active low), value = byte
-    Spindle,       // !7V n    spindle ‰ (0 = off)
-    WaitIdle,      // PC side: wait until the queue has drained (L0,0,0 accepted)
-    Dwell,         // PC side: wait idle, then value milliseconds
-    OperatorStop,  // PC side: M0 / M1 / M6, value = EventKind-like reason, tool in aux
-    Probe,         // PC side: G38.x probe move, delta in d, probe kind in aux
-    ProgramEnd,    // PC side: end of program
+    Line,           // !0L dx,dy,dz[,da]  stand-alone move (queue must be empty)
+    Vector,         // !0C dx,dy,dz[,da]  continuous vector
+    Brake,          // !0B n    brake speed, pulses/s
+    Speed,          // !0V n    speed, pulses/s
+    Accel,          // !0A n    acceleration, thousands of pulses/s²
+    Pause,          // !0T n    pause between non-continuous moves, ms
+    ShortThreshold, // !0$ n    steps
+    SpeedModeVk,    // !0VK     path speeds
+    SpeedModeVn,    // !0VN     major-axis speeds
+    Output,         // !0O0,hh  output port 0 (active low), value = byte
+    Spindle,        // !7V n    spindle ‰ (0 = off)
+    WaitIdle,       // PC side: wait until the queue has drained (L0,0,0 accepted)
+    Dwell,          // PC side: wait idle, then value milliseconds
+    OperatorStop,   // PC side: M0 / M1 / M6, value = EventKind-like reason, tool in aux
+    Probe,          // PC side: G38.x probe move, delta in d, probe kind in aux
+    ProgramEnd,     // PC side: end of program
+};
+
+// UnitOp::OperatorStop reasons (UnitCommand::value); the tool number rides in aux.
+enum class StopReason : std::int64_t {
+    Pause = 0,         // M0: wait for the operator
+    OptionalPause = 1, // M1: wait if the operator enabled optional stops
+    ToolChange = 2,    // M6: change to tool aux, then continue
 };
 
 struct UnitCommand
@@ -50,8 +57,8 @@ struct UnitCommand
 
 struct UnitProgram
 {
-    int axisCount = 3;      // 3 or 4: how many components L/C carry on the wire
-    Steps4 startSteps{};    // absolute steps the program assumes at its start
+    int axisCount = 3;   // 3 or 4: how many components L/C carry on the wire
+    Steps4 startSteps{}; // absolute steps the program assumes at its start
     std::vector<UnitCommand> commands;
     friend bool operator==(const UnitProgram &, const UnitProgram &) = default;
 };

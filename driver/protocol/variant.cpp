@@ -20,8 +20,8 @@ const std::array<VariantInfo, 4> kVariants{{
      true, 4, 35000, "IP64MPG v19 10.9.2010", "25020304"},
     {Variant::Gve64Phantom, "gve64-phantom", "GVE64 PHANTOM", 4, kRatesPhantom, 200000, 420,
      kBauds64, 115200, true, true, true, true, 4, 35000, "IP64MPG v19 10.9.2010", "25020305"},
-    {Variant::Gve114, "gve114", "GVE114", 4, kRates114, 125000, 2048, kBauds114, 115200, true,
-     true, true, true, 4, 50000, "IP114/500 x16 16.9.2018", "16091801"},
+    {Variant::Gve114, "gve114", "GVE114", 4, kRates114, 125000, 2048, kBauds114, 115200, true, true,
+     true, true, 4, 50000, "IP114/500 x16 16.9.2018", "16091801"},
 }};
 
 } // namespace

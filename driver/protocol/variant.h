@@ -13,22 +13,22 @@ enum class Variant { Gve84, Gve64, Gve64Phantom, Gve114 };
 struct VariantInfo
 {
     Variant variant;
-    std::string_view id;          // command-line / profile name: "gve84", "gve64", ...
-    std::string_view displayName; // "GVE64 PHANTOM"
-    int axisCount;                // interpolated axes: 3 (XYZ) or 4 (XYZA)
+    std::string_view id;                // command-line / profile name: "gve84", "gve64", ...
+    std::string_view displayName;       // "GVE64 PHANTOM"
+    int axisCount;                      // interpolated axes: 3 (XYZ) or 4 (XYZA)
     std::span<const int> maxPulseRates; // orderable maximum pulse rates, pulses/s
-    int defaultMaxPulseRate;      // pulses/s of the default (emulated) unit
-    int queueCapacity;            // C vectors: one executing plus the rest waiting
-    std::span<const int> bauds;   // selectable baud rates
+    int defaultMaxPulseRate;            // pulses/s of the default (emulated) unit
+    int queueCapacity;                  // C vectors: one executing plus the rest waiting
+    std::span<const int> bauds;         // selectable baud rates
     int defaultBaud;
-    bool hasSpindleAddress7;      // address 7 answers (§9)
-    bool hasMpg;                  // Y+/Y&/Y- (§13)
-    bool hasEepromFloat;          // EFR/EUR/EFW/EUW (§12)
-    bool hasVlVkXmNa;             // VL, VK, XM, N<axis> (§4, §5)
-    int relayOutputs;             // 1 on GVE84, 4 on GVE64/GVE114
-    int resetBrakeSpeed;          // B after reset, pulses/s
-    std::string_view firmware;    // reply to '?', without the "0,"
-    std::string_view defaultId;   // reply to 'Q' (ddmmyypp) of the emulated unit
+    bool hasSpindleAddress7;    // address 7 answers (§9)
+    bool hasMpg;                // Y+/Y&/Y- (§13)
+    bool hasEepromFloat;        // EFR/EUR/EFW/EUW (§12)
+    bool hasVlVkXmNa;           // VL, VK, XM, N<axis> (§4, §5)
+    int relayOutputs;           // 1 on GVE84, 4 on GVE64/GVE114
+    int resetBrakeSpeed;        // B after reset, pulses/s
+    std::string_view firmware;  // reply to '?', without the "0,"
+    std::string_view defaultId; // reply to 'Q' (ddmmyypp) of the emulated unit
 };
 
 // The table entry of a variant; never fails.

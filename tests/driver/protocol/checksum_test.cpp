@@ -7,10 +7,10 @@ using namespace frezka::protocol;
 
 TEST(Checksum, ManualExamples)
 {
-    EXPECT_EQ(hexByte(checksum("!0A100,")), "4F");  // !0A100,4F
-    EXPECT_EQ(hexByte(checksum("0,")), "5C");       // reply to %+: 0,5C
-    EXPECT_EQ(hexByte(checksum("!0%-,")), "CF");    // !0%-,CF
-    EXPECT_EQ(hexByte(checksum("0,10,")), "E9");    // packet reply 0,10,E9
+    EXPECT_EQ(hexByte(checksum("!0A100,")), "4F"); // !0A100,4F
+    EXPECT_EQ(hexByte(checksum("0,")), "5C");      // reply to %+: 0,5C
+    EXPECT_EQ(hexByte(checksum("!0%-,")), "CF");   // !0%-,CF
+    EXPECT_EQ(hexByte(checksum("0,10,")), "E9");   // packet reply 0,10,E9
 }
 
 TEST(Checksum, ParseHexByte)

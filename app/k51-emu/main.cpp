@@ -1,0 +1,48 @@
+// k51-emu: an ANC/K51 grinding control on a pseudo-terminal, for tests and for trying the
+// transfer tools without a machine. Prints the terminal path on the first line of stdout.
+#include "app/k51-emu/options.h"
+#include "app/k51-emu/ptyserver.h"
+
+#include <csignal>
+#include <cstdio>
+
+namespace {
+volatile std::sig_atomic_t g_stop = 0;
+void onSignal(int)
+{
+    g_stop = 1;
+}
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    using namespace frezka::k51emu;
+    Options options;
+    std::string error;
+    if (!parseOptions(std::vector<std::string>(argv + 1, argv + argc), options, error)) {
+        std::fprintf(stderr, "k51-emu: %s\n", error.c_str());
+        return 2;
+    }
+    if (options.help) {
+        std::fputs(usageText().c_str(), stdout);
+        return 0;
+    }
+    struct sigaction action
+    {
+    };
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+    std::signal(SIGPIPE, SIG_IGN);
+
+    PtyServer server(options.config, options.baud, options.fast);
+    const std::string path = server.open(error);
+    if (path.empty()) {
+        std::fprintf(stderr, "k51-emu: %s\n", error.c_str());
+        return 1;
+    }
+    std::printf("%s\n", path.c_str());
+    std::fflush(stdout);
+    return server.run(g_stop, options.verbose, options.storePath);
+}

@@ -1,0 +1,540 @@
+// Unit: framing (lines, checksums, packets, watchdog, deferred replies), the clock, inputs and
+// interrupts, homing progress. The command set itself is in unit_commands.cpp.
+
+#include "driver/emulator/unit_impl.h"
+
+#include "driver/protocol/checksum.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace frezka::emulator {
+
+Unit::Impl::Impl(UnitOptions opts)
+    : options(std::move(opts))
+    , info(&protocol::variantInfo(options.variant))
+    , maxRate(options.maxPulseRate > 0 ? options.maxPulseRate : info->defaultMaxPulseRate)
+    , eeprom(options.variant)
+    , switches(options.switches)
+{
+    engine.onStopped = [this] { onStopped(); };
+    engine.setTraceEnabled(options.trace);
+    if (!options.eepromFile.empty()) {
+        const std::string err = eeprom.load(options.eepromFile);
+        // A missing file starts from the factory contents and is created on the first write.
+        if (!err.empty() && !err.starts_with("cannot open"))
+            eepromError = err;
+    }
+    resetState(true);
+}
+
+// docs/gve-protocol.md §3: the state after power-on or J.
+void Unit::Impl::resetState(bool powerOn)
+{
+    engine.reset();
+    limits = SpeedLimits{};
+    limits.maxPulseRate = maxRate;
+    engine.setLimits(limits);
+    accelK = 20;
+    speed = 1000;
+    brake = info->resetBrakeSpeed;
+    shortSteps = 512;
+    pauseMs = readings::kResetPauseMs;
+    engine.setPauseS(pauseMs / 1000.0);
+    velocityCorrection = readings::kResetModeIsVk;
+    std::fill(std::begin(st), std::end(st), 0);
+    inta = intcom = stopBit = freeBit = false;
+    mpg = info->hasMpg ? Mpg::Silent : Mpg::Off;
+    outputs = 0xFF;
+    spindle = 0;
+    kept = false;
+    keptQueue = {};
+    homing.reset();
+    deferred = Deferred::None;
+    checksums = false;
+    index = 0;
+    lastReply.clear();
+    packetOpen = false;
+    packet.clear();
+    rx = Rx::Idle;
+    line.clear();
+    backlog.clear();
+    if (powerOn)
+        deafUntil = -1;
+    updateWatches();
+    checkInterrupts(); // takes the current input state as the reference, nothing is enabled
+}
+
+// ---- framing -------------------------------------------------------------------------------
+
+void Unit::Impl::feed(char c)
+{
+    switch (rx) {
+    case Rx::AfterCr:
+        rx = Rx::Idle;
+        if (c == '\n' && readings::kIgnoreLfAfterCr)
+            return;
+        [[fallthrough]];
+    case Rx::Idle:
+        if (c == '!') {
+            rx = Rx::InLine;
+            line.clear();
+            lineOverlong = false;
+            lineStart = engine.now();
+        } else {
+            ++stats.discardedBytes;
+        }
+        return;
+    case Rx::InLine:
+        if (c == '\r') {
+            rx = Rx::AfterCr;
+            lineComplete();
+        } else if (c == '!') { // a new command cuts off an incomplete one
+            stats.discardedBytes += static_cast<std::int64_t>(line.size()) + 1;
+            line.clear();
+            lineOverlong = false;
+            lineStart = engine.now();
+        } else if (line.size() >= readings::kMaxLineLength) {
+            lineOverlong = true;
+        } else {
+            line += c;
+        }
+        return;
+    }
+}
+
+void Unit::Impl::lineComplete()
+{
+    if (line.empty() || line[0] < '0' || line[0] > '7') {
+        stats.discardedBytes += static_cast<std::int64_t>(line.size()) + 2;
+        return;
+    }
+    const int address = line[0] - '0';
+    if (address != options.address && !(address == 7 && info->hasSpindleAddress7))
+        return; // another unit on the line answers this one
+    ++stats.commands;
+    if (lineOverlong) {
+        if (packetOpen)
+            packet.push_back({{}, 4});
+        else
+            sendReply({4, {}});
+        return;
+    }
+    std::string_view body(line);
+    body.remove_prefix(1);
+    if (checksums) {
+        const auto comma = body.rfind(',');
+        const auto given = comma == std::string_view::npos
+                               ? std::nullopt
+                               : protocol::parseHexByte(body.substr(comma + 1));
+        const std::string summed = "!" + line.substr(0, comma + 2);
+        if (!given || protocol::checksum(summed) != *given) {
+            ++stats.checksumErrors;
+            if (packetOpen)
+                packet.push_back({{}, readings::kBadChecksumCode});
+            else
+                sendReply({readings::kBadChecksumCode, {}});
+            return; // readings::kBadChecksumAdvancesIndex == false
+        }
+        body = body.substr(0, comma);
+    }
+    handleLine(address, body);
+}
+
+void Unit::Impl::handleLine(int address, std::string_view body)
+{
+    if (readings::advancesIndex(body))
+        index = (index + 1) % 256;
+    if (packetOpen) {
+        if (body == "*S") {
+            packet.clear();
+            packetLastLine = engine.now();
+            return;
+        }
+        if (body.starts_with("*E")) {
+            packetOpen = false;
+            int declared = -1;
+            std::string_view n = body.substr(2);
+            if (!n.empty() && n.size() <= 4 && std::all_of(n.begin(), n.end(), ::isdigit))
+                declared = std::stoi(std::string(n));
+            const Reply r = executePacket(declared);
+            packet.clear();
+            sendReply(r);
+            lastReply = formatReply(r);
+            return;
+        }
+        if (readings::advancesIndex(body)) {
+            packet.push_back({std::string(body), 0});
+            packetLastLine = engine.now();
+            return;
+        }
+        packetOpen = false; // '@' or '>' ends an unfinished packet: nothing of it runs
+        packet.clear();
+    }
+    const Reply r = execute(address, body);
+    if (r.code < 0)
+        return; // deferred (H, W) or no reply at all (*S)
+    sendReply(r);
+    if (readings::advancesIndex(body) && !body.starts_with("J"))
+        lastReply = formatReply(r);
+}
+
+std::string Unit::Impl::formatReply(const Reply &r) const
+{
+    std::string text(1, "0123456789ABCDEF"[(r.code & 7) | (inta ? 8 : 0)]);
+    if (!r.values.empty())
+        text += "," + r.values;
+    if (checksums) {
+        text += ',';
+        text += protocol::hexByte(protocol::checksum(text));
+    }
+    text += '\r';
+    return text;
+}
+
+void Unit::Impl::sendReply(const Reply &r)
+{
+    tx += formatReply(r);
+}
+
+double Unit::Impl::watchdogAt() const
+{
+    if (rx == Rx::InLine && !line.empty()) {
+        const int address = line[0] - '0';
+        if (address == options.address || (address == 7 && info->hasSpindleAddress7))
+            return lineStart + readings::kWatchdogSeconds;
+        return kNever;
+    }
+    if (packetOpen)
+        return packetLastLine + readings::kWatchdogSeconds;
+    return kNever;
+}
+
+void Unit::Impl::fireWatchdog()
+{
+    ++stats.watchdogs;
+    if (rx == Rx::InLine) {
+        stats.discardedBytes += static_cast<std::int64_t>(line.size()) + 1;
+        rx = Rx::Idle;
+        line.clear();
+    }
+    packetOpen = false;
+    packet.clear();
+    sendReply({2, {}});
+}
+
+void Unit::Impl::processBacklog()
+{
+    while (!backlog.empty() && deferred == Deferred::None && deafUntil <= engine.now()) {
+        const char c = backlog.front();
+        backlog.erase(0, 1);
+        feed(c);
+    }
+}
+
+// ---- clock -----------------------------------------------------------------------------------
+
+double Unit::Impl::nextEventIn() const
+{
+    const double now = engine.now();
+    double next = engine.nextEventIn();
+    if (deferred == Deferred::None)
+        next = std::min(next, std::max(0.0, watchdogAt() - now));
+    if (deafUntil > now)
+        next = std::min(next, deafUntil - now);
+    return next;
+}
+
+void Unit::Impl::advanceTo(double target)
+{
+    for (;;) {
+        const double remaining = std::max(0.0, target - engine.now());
+        const double event = nextEventIn();
+        const double dt = std::min(event, remaining);
+        engine.step(dt);
+        checkInterrupts();
+        checkHoming();
+        if (deferred == Deferred::None && watchdogAt() <= engine.now())
+            fireWatchdog();
+        if (deafUntil >= 0 && deafUntil <= engine.now()) {
+            deafUntil = -1;
+            processBacklog();
+        }
+        if (deferred == Deferred::None && !backlog.empty() && deafUntil < 0)
+            processBacklog();
+        if (event > remaining)
+            return;
+    }
+}
+
+// ---- inputs and interrupts ------------------------------------------------------------------
+
+std::uint16_t Unit::Impl::inputLevels() const
+{
+    std::uint16_t levels = manualInputs;
+    const auto pos = engine.position();
+    for (const PositionSwitch &s : switches) {
+        const std::int64_t p = pos[s.axis];
+        const bool on = s.side < 0 ? p <= s.positionSteps : p >= s.positionSteps;
+        if (on)
+            levels |= static_cast<std::uint16_t>(1u << s.input);
+    }
+    return levels;
+}
+
+void Unit::Impl::updateWatches()
+{
+    std::vector<MotionEngine::Watch> watches;
+    for (const PositionSwitch &s : switches)
+        watches.push_back({s.axis, s.side < 0 ? s.positionSteps + 1 : s.positionSteps});
+    engine.setWatches(std::move(watches));
+}
+
+void Unit::Impl::checkInterrupts()
+{
+    const std::uint16_t levels = inputLevels();
+    const std::uint16_t enabled = static_cast<std::uint16_t>(st[0] | (st[1] << 8));
+    const std::uint16_t polarity = static_cast<std::uint16_t>(st[2] | (st[3] << 8));
+    std::uint16_t active = 0;
+    for (int i = 0; i < 16; ++i) {
+        if (readings::inputActive((levels >> i) & 1, (polarity >> i) & 1))
+            active |= static_cast<std::uint16_t>(1u << i);
+    }
+    std::uint16_t fired = active & ~prevActive & enabled;
+    prevActive = active;
+    if (homing)
+        fired &= static_cast<std::uint16_t>(~(1u << homing->axis)); // its own switch
+    if (!fired)
+        return;
+    ++stats.interrupts;
+    st[4] |= static_cast<std::uint8_t>(fired & 0xFF);
+    st[5] |= static_cast<std::uint8_t>(fired >> 8);
+    inta = true;
+    if (homing) {
+        engine.clear();
+        engine.requestStop();
+        finishHoming(readings::kHomingNotFoundCode);
+        return;
+    }
+    stopBit = engine.isMoving();
+    engine.requestStop();
+}
+
+bool Unit::Impl::homeSwitchPressed() const
+{
+    return (inputLevels() >> homing->axis) & 1;
+}
+
+void Unit::Impl::checkHoming()
+{
+    if (!homing || deferred != Deferred::Homing)
+        return;
+    const bool pressed = homeSwitchPressed();
+    if (!homing->backingOff) {
+        if (pressed) {
+            engine.abortHead();
+            homing->backingOff = true;
+            if (homing->backSteps == 0) {
+                finishHoming(readings::kHomingNotFoundCode);
+                return;
+            }
+            MotionVector v;
+            v.isHoming = true;
+            v.steps[homing->axis] = homing->backSteps;
+            v.speedPulsesPerS = homing->backRate;
+            engine.enqueue(v);
+        } else if (engine.isIdle()) {
+            finishHoming(readings::kHomingNotFoundCode);
+        }
+        return;
+    }
+    if (!pressed) {
+        engine.abortHead();
+        finishHoming(0);
+    } else if (engine.isIdle()) {
+        finishHoming(readings::kHomingNotFoundCode);
+    }
+}
+
+void Unit::Impl::finishHoming(int code)
+{
+    homing.reset();
+    if (deferred != Deferred::Homing)
+        return;
+    deferred = Deferred::None;
+    const Reply r{code, {}};
+    sendReply(r);
+    lastReply = formatReply(r);
+}
+
+void Unit::Impl::onStopped()
+{
+    stopBit = false;
+    if (deferred != Deferred::Halt)
+        return;
+    deferred = Deferred::None;
+    const Reply r{0, {}};
+    sendReply(r);
+    lastReply = formatReply(r);
+}
+
+bool Unit::Impl::runBit() const
+{
+    return !engine.isIdle() || mpg != Mpg::Off || homing.has_value();
+}
+
+std::uint8_t Unit::Impl::st6() const
+{
+    return static_cast<std::uint8_t>((stopBit ? 0x01 : 0) | (freeBit ? 0x02 : 0) |
+                                     (intcom ? 0x10 : 0) | (runBit() ? 0x40 : 0) |
+                                     (inta ? 0x80 : 0));
+}
+
+// ---- public API ------------------------------------------------------------------------------
+
+Unit::Unit(UnitOptions options)
+    : m_impl(std::make_unique<Impl>(std::move(options)))
+{}
+Unit::~Unit() = default;
+Unit::Unit(Unit &&) noexcept = default;
+Unit &Unit::operator=(Unit &&) noexcept = default;
+
+void Unit::receive(std::string_view bytes)
+{
+    Impl &d = *m_impl;
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        if (d.deafUntil > d.engine.now()) {
+            d.stats.discardedBytes += 1;
+            continue;
+        }
+        if (d.deferred != Impl::Deferred::None) {
+            d.backlog.append(bytes.substr(i));
+            return;
+        }
+        d.feed(bytes[i]);
+    }
+}
+
+std::string Unit::takeTransmit()
+{
+    return std::exchange(m_impl->tx, {});
+}
+
+void Unit::advance(double seconds)
+{
+    m_impl->advanceTo(m_impl->engine.now() + std::max(0.0, seconds));
+}
+
+double Unit::now() const
+{
+    return m_impl->engine.now();
+}
+
+double Unit::nextEventIn() const
+{
+    return m_impl->nextEventIn();
+}
+
+Stats Unit::stats() const
+{
+    Stats s = m_impl->stats;
+    s.motion = m_impl->engine.stats();
+    return s;
+}
+
+std::array<std::int64_t, 4> Unit::position() const
+{
+    return m_impl->engine.position();
+}
+
+double Unit::pathSpeed() const
+{
+    return m_impl->engine.pathSpeed();
+}
+
+std::size_t Unit::queueLength() const
+{
+    return m_impl->engine.queueLength();
+}
+
+bool Unit::isMoving() const
+{
+    return m_impl->engine.isMoving();
+}
+
+const std::vector<TracePoint> &Unit::trace() const
+{
+    return m_impl->engine.trace();
+}
+
+void Unit::clearTrace()
+{
+    m_impl->engine.clearTrace();
+}
+
+void Unit::setInput(int input, bool level)
+{
+    if (input < 0 || input > 15)
+        return;
+    const auto bit = static_cast<std::uint16_t>(1u << input);
+    m_impl->manualInputs = level ? (m_impl->manualInputs | bit) : (m_impl->manualInputs & ~bit);
+    m_impl->checkInterrupts();
+    m_impl->checkHoming();
+}
+
+bool Unit::input(int input) const
+{
+    return input >= 0 && input < 16 && ((m_impl->inputLevels() >> input) & 1);
+}
+
+void Unit::setSwitches(std::vector<PositionSwitch> switches)
+{
+    m_impl->switches = std::move(switches);
+    m_impl->updateWatches();
+    m_impl->checkInterrupts();
+}
+
+std::uint8_t Unit::outputs() const
+{
+    return m_impl->outputs;
+}
+
+int Unit::spindlePermille() const
+{
+    return m_impl->spindle;
+}
+
+std::uint8_t Unit::status(int n) const
+{
+    if (n == 6)
+        return m_impl->st6();
+    return (n >= 0 && n < 6) ? m_impl->st[n] : 0;
+}
+
+std::uint8_t Unit::eepromByte(int address) const
+{
+    return m_impl->eeprom.byte(address);
+}
+
+bool Unit::checksumsOn() const
+{
+    return m_impl->checksums;
+}
+
+const UnitOptions &Unit::options() const
+{
+    return m_impl->options;
+}
+
+const protocol::VariantInfo &Unit::variantInfo() const
+{
+    return *m_impl->info;
+}
+
+std::string Unit::eepromError() const
+{
+    return m_impl->eepromError;
+}
+
+} // namespace frezka::emulator

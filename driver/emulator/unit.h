@@ -1,0 +1,111 @@
+#pragma once
+// An emulated GVE interpolator (GVE84, GVE64, GVE64 PHANTOM, GVE114) as a pure, deterministic
+// state machine: bytes from the PC go in with receive(), the bytes the unit sends come out of
+// takeTransmit(), and time moves only when the caller calls advance(). See docs/emulator.md
+// and docs/gve-protocol.md; the readings it relies on are in readings.h.
+//
+// Typical use (the planner benchmark, tests):
+//     Unit unit({.variant = Variant::Gve64});
+//     unit.receive("!0Y-\r");  unit.takeTransmit();      // "0,Y-\r"
+//     unit.receive("!0C1000,0,0\r");                      // queued -> "0\r"
+//     unit.advance(unit.nextEventIn());                   // event-driven virtual clock
+
+#include "driver/emulator/motion.h"
+#include "driver/protocol/variant.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace frezka::emulator {
+
+// An input driven by an axis position: a home switch (IN0..IN3 for X..A) or a limit switch.
+// The input reads 1 (contact open: a normally closed switch actuated) while the counter of
+// `axis` is at or beyond `positionSteps` on `side` (-1: at or below, +1: at or above).
+struct PositionSwitch
+{
+    int input = 0; // 0..15 (IN0..IN7, IN8..IN15)
+    int axis = 0;  // 0..3 = X, Y, Z, A
+    std::int64_t positionSteps = 0;
+    int side = -1;
+    bool operator==(const PositionSwitch &) const = default;
+};
+
+struct UnitOptions
+{
+    protocol::Variant variant = protocol::Variant::Gve64;
+    int address = 0;      // 0..7; address 7 is the spindle on GVE64/114
+    int maxPulseRate = 0; // pulses/s; 0 = the variant's default
+    std::vector<PositionSwitch> switches{};
+    std::string eepromFile{}; // "" = not persisted; else loaded at start, saved on write
+    bool trace = false;       // record TracePoints at every motion event
+    bool operator==(const UnitOptions &) const = default;
+};
+
+struct Stats
+{
+    MotionStats motion;              // vectors, brake violations, starvation, peak speeds
+    std::int64_t commands = 0;       // complete lines addressed to the unit
+    std::int64_t checksumErrors = 0; // answered code 4 for a bad checksum
+    std::int64_t watchdogs = 0;      // answered code 2
+    std::int64_t discardedBytes = 0; // outside any command, cut off by '!', or lost in reset
+    std::int64_t interrupts = 0;     // input interrupts accepted
+    bool operator==(const Stats &) const = default;
+};
+
+class Unit
+{
+public:
+    explicit Unit(UnitOptions options = {});
+    ~Unit();
+    Unit(Unit &&) noexcept;
+    Unit &operator=(Unit &&) noexcept;
+
+    // Bytes from the PC at the current time. Replies go to the transmit buffer at once, except
+    // H and W which reply during a later advance().
+    void receive(std::string_view bytesFromPc);
+    // Bytes the unit has sent since the last call.
+    std::string takeTransmit();
+    // Moves the virtual clock by `seconds` (>= 0), event by event.
+    void advance(double seconds);
+    double now() const;
+    // Seconds until the unit's state next changes by itself (motion event, deferred reply,
+    // watchdog, end of reset); kNever when it would wait forever.
+    double nextEventIn() const;
+
+    Stats stats() const;
+    std::array<std::int64_t, 4> position() const;
+    double pathSpeed() const;        // pulses/s along the current vector
+    std::size_t queueLength() const; // vectors executing or waiting
+    bool isMoving() const;
+    const std::vector<TracePoint> &trace() const;
+    void clearTrace();
+
+    // Inputs as the PC reads them (I1 = bits 0..7, I2 = IN8..IN15 as bits 0..7).
+    // setInput sets the level driven from outside (buttons, probe); position switches add to it.
+    void setInput(int input, bool level);
+    bool input(int input) const;
+    void setSwitches(std::vector<PositionSwitch> switches);
+    // STOP button (IN7 on GVE64/114) and tool probe (IN15), normally closed: pressed reads 1.
+    void setStopButton(bool pressed) { setInput(7, pressed); }
+    void setProbe(bool touching) { setInput(15, touching); }
+
+    std::uint8_t outputs() const;     // port 0 as written by O0 (active low)
+    int spindlePermille() const;      // last !7V value
+    std::uint8_t status(int n) const; // ST0..ST6 as SRn would answer
+    std::uint8_t eepromByte(int address) const;
+    bool checksumsOn() const;
+    const UnitOptions &options() const;
+    const protocol::VariantInfo &variantInfo() const;
+    // Non-empty when the EEPROM file could not be read or written.
+    std::string eepromError() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace frezka::emulator

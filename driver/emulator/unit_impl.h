@@ -1,0 +1,128 @@
+#pragma once
+// Private state of Unit, shared by unit.cpp (framing, replies, clock, inputs) and
+// unit_commands.cpp (the command set). Not part of the public API.
+
+#include "driver/emulator/eeprom.h"
+#include "driver/emulator/motion.h"
+#include "driver/emulator/readings.h"
+#include "driver/emulator/unit.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frezka::emulator {
+
+using Reply = readings::ReplyParts;
+
+struct Unit::Impl
+{
+    explicit Impl(UnitOptions opts);
+
+    // ---- configuration
+    UnitOptions options;
+    const protocol::VariantInfo *info;
+    int maxRate;
+
+    // ---- link
+    enum class Rx { Idle, InLine, AfterCr };
+    Rx rx = Rx::Idle;
+    std::string line; // bytes after '!' of the line being received
+    bool lineOverlong = false;
+    double lineStart = 0; // time of the '!' of the current line
+    std::string backlog;  // bytes received while a deferred reply is pending
+    std::string tx;
+    bool checksums = false;
+    int index = 0;         // @: index of the last command, mod 256
+    std::string lastReply; // bytes of the last reply, for '>'
+    double deafUntil = -1; // after J
+    enum class Deferred { None, Halt, Homing };
+    Deferred deferred = Deferred::None;
+    // packet being collected between *S and *E
+    struct PacketLine
+    {
+        std::string body;
+        int failCode = 0; // bad checksum etc. found on reception
+    };
+    bool packetOpen = false;
+    std::vector<PacketLine> packet;
+    double packetLastLine = 0;
+
+    // ---- machine state
+    MotionEngine engine;
+    Eeprom eeprom;
+    std::string eepromError;
+    int accelK = 20;                       // A, thousands of pulses/s^2
+    int speed = 1000;                      // V
+    int brake = 35000;                     // B
+    std::int64_t shortSteps = 512;         // $
+    int pauseMs = readings::kResetPauseMs; // T
+    bool velocityCorrection = readings::kResetModeIsVk;
+    SpeedLimits limits;
+    std::uint8_t st[6] = {}; // ST0..ST5
+    bool inta = false, intcom = false, stopBit = false, freeBit = false;
+    enum class Mpg { Off, Reporting, Silent };
+    Mpg mpg = Mpg::Off;
+    std::uint8_t outputs = 0xFF;
+    int spindle = 0;
+    bool kept = false;
+    MotionEngine::Saved keptQueue;
+    std::uint8_t keptSt[3] = {};
+    bool keptInta = false, keptIntcom = false;
+    std::uint64_t serial = 0;
+    // inputs
+    std::uint16_t manualInputs = 0;
+    std::uint16_t prevActive = 0;
+    std::vector<PositionSwitch> switches;
+    // homing (W)
+    struct Homing
+    {
+        int axis = 0;
+        std::int64_t seekSteps = 0, backSteps = 0;
+        int seekRate = 0, backRate = 0;
+        bool backingOff = false;
+    };
+    std::optional<Homing> homing;
+    Stats stats;
+
+    // ---- unit.cpp
+    void resetState(bool powerOn);
+    void feed(char c);
+    void lineComplete();
+    void handleLine(int address, std::string_view body);
+    void sendReply(const Reply &r);
+    std::string formatReply(const Reply &r) const;
+    void advanceTo(double target);
+    double nextEventIn() const;
+    double watchdogAt() const;
+    void fireWatchdog();
+    void processBacklog();
+    std::uint16_t inputLevels() const;
+    void checkInterrupts();
+    void updateWatches();
+    bool homeSwitchPressed() const;
+    void checkHoming();
+    void finishHoming(int code);
+    void onStopped();
+    std::uint8_t st6() const;
+    bool runBit() const;
+
+    // ---- unit_commands.cpp
+    Reply execute(int address, std::string_view body);
+    Reply executeSpindle(std::string_view body);
+    Reply executePacket(int declaredCount);
+    Reply cmdVector(char kind, std::string_view args);
+    Reply cmdSpeeds(std::string_view mnemonic, std::string_view args);
+    Reply cmdExchange(std::string_view args);
+    Reply cmdPosition(std::string_view body);
+    Reply cmdNull(std::string_view args);
+    Reply cmdHoming(std::string_view args);
+    Reply cmdQueue(char c);
+    Reply cmdEeprom(std::string_view body);
+    Reply cmdStatus(std::string_view body);
+    Reply cmdIo(std::string_view body);
+    Reply cmdMpg(std::string_view body);
+    bool hasFourAxes() const { return info->axisCount == 4; }
+};
+
+} // namespace frezka::emulator

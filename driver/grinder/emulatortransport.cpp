@@ -1,0 +1,97 @@
+#include "driver/grinder/emulatortransport.h"
+
+namespace frezka::grinder {
+
+EmulatorTransport::EmulatorTransport(Clock &clock, EmulatorConfig config, int baud,
+                                     std::int64_t tickUs, QObject *parent)
+    : Transport(parent)
+    , m_clock(clock)
+    , m_emulator(std::move(config))
+    , m_baud(baud > 0 ? baud : 9600)
+    , m_byteUs(10'000'000 / m_baud)
+    , m_tickUs(tickUs > 0 ? tickUs : m_byteUs)
+{}
+
+EmulatorTransport::~EmulatorTransport()
+{
+    close();
+}
+
+bool EmulatorTransport::open(QString *)
+{
+    m_open = true;
+    m_lastUs = m_clock.nowUs();
+    schedulePump();
+    return true;
+}
+
+void EmulatorTransport::close()
+{
+    if (m_timer)
+        m_clock.cancel(m_timer);
+    m_timer = 0;
+    m_open = false;
+    m_toController.clear();
+    m_toPc.clear();
+}
+
+void EmulatorTransport::write(const QByteArray &bytes)
+{
+    if (!m_open) {
+        emit failed(tr("The emulator is not open"));
+        return;
+    }
+    m_toController.insert(m_toController.end(), bytes.begin(), bytes.end());
+    schedulePump();
+}
+
+void EmulatorTransport::schedulePump()
+{
+    if (m_timer || !m_open)
+        return;
+    m_timer = m_clock.callAfter(m_tickUs, [this] {
+        m_timer = 0;
+        pump();
+    });
+}
+
+// Moves as many bytes each way as the wire time since the last pump allows.
+void EmulatorTransport::pump()
+{
+    const std::int64_t now = m_clock.nowUs();
+    const std::int64_t dt = now - m_lastUs;
+    m_lastUs = now;
+
+    m_txCreditUs = m_toController.empty() ? 0 : m_txCreditUs + dt;
+    QByteArray sent;
+    while (!m_toController.empty() && m_txCreditUs >= m_byteUs) {
+        m_txCreditUs -= m_byteUs;
+        sent.append(static_cast<char>(m_toController.front()));
+        m_toController.pop_front();
+    }
+    m_emulator.advance(dt);
+    if (!sent.isEmpty()) {
+        m_emulator.feed(reinterpret_cast<const std::uint8_t *>(sent.constData()),
+                        static_cast<std::size_t>(sent.size()));
+    }
+    const Bytes out = m_emulator.takeOutput();
+    m_toPc.insert(m_toPc.end(), out.begin(), out.end());
+    for (const std::string &line : m_emulator.takeLog())
+        emit emulatorLogged(QString::fromStdString(line));
+
+    m_rxCreditUs = m_toPc.empty() ? 0 : m_rxCreditUs + dt;
+    QByteArray arrived;
+    while (!m_toPc.empty() && m_rxCreditUs >= m_byteUs) {
+        m_rxCreditUs -= m_byteUs;
+        arrived.append(static_cast<char>(m_toPc.front()));
+        m_toPc.pop_front();
+    }
+    if (!m_toPc.empty() || !m_toController.empty() || m_emulator.hasPendingWork())
+        schedulePump();
+    if (!sent.isEmpty())
+        emit written(sent.size());
+    if (!arrived.isEmpty())
+        emit received(arrived);
+}
+
+} // namespace frezka::grinder

@@ -1,0 +1,474 @@
+#include "driver/grinder/transfersession.h"
+
+namespace frezka::grinder {
+
+const char *transferErrorId(TransferError error)
+{
+    switch (error) {
+    case TransferError::None:
+        return "ok";
+    case TransferError::NotOpen:
+        return "not-open";
+    case TransferError::Busy:
+        return "busy";
+    case TransferError::InvalidInput:
+        return "invalid-input";
+    case TransferError::Timeout:
+        return "timeout";
+    case TransferError::Rejected:
+        return "rejected";
+    case TransferError::ChecksumFailed:
+        return "checksum";
+    case TransferError::UnexpectedReply:
+        return "unexpected-reply";
+    case TransferError::Transport:
+        return "transport";
+    case TransferError::Cancelled:
+        return "cancelled";
+    }
+    return "unknown";
+}
+
+double estimateSecondsLeft(qint64 doneBytes, qint64 totalBytes, qint64 elapsedUs, int baud)
+{
+    const qint64 left = std::max<qint64>(0, totalBytes - doneBytes);
+    double bytesPerSecond = baud > 0 ? baud / 10.0 : 960.0;
+    if (doneBytes > 0 && elapsedUs > 500000)
+        bytesPerSecond = doneBytes * 1e6 / double(elapsedUs);
+    return left / bytesPerSecond;
+}
+
+TransferSession::TransferSession(Transport &transport, Clock &clock, Family family, QObject *parent)
+    : QObject(parent)
+    , m_transport(transport)
+    , m_clock(clock)
+    , m_family(family)
+    , m_decoder(familyInfo(family).framing)
+{
+    qRegisterMetaType<frezka::grinder::TransferResult>();
+    connect(&m_transport, &Transport::received, this, &TransferSession::onReceived);
+    connect(&m_transport, &Transport::written, this, &TransferSession::onWritten);
+    connect(&m_transport, &Transport::failed, this, &TransferSession::onTransportFailed);
+}
+
+TransferSession::~TransferSession()
+{
+    m_clock.cancel(m_timer);
+    m_clock.cancel(m_pauseTimer);
+}
+
+void TransferSession::setFamily(Family family)
+{
+    if (isBusy())
+        return;
+    m_family = family;
+    m_decoder = FrameDecoder(familyInfo(family).framing);
+}
+
+bool TransferSession::start(Operation operation)
+{
+    if (isBusy())
+        return false;
+    m_operation = operation;
+    m_result = TransferResult();
+    m_result.operation = operation;
+    m_attempt = 0;
+    m_inFlight = 0;
+    m_startUs = m_clock.nowUs();
+    std::vector<DecodeEvent> stale;
+    m_decoder.reset(stale); // bytes from before this operation are not part of it
+    if (!m_transport.isOpen()) {
+        m_state = State::Enquiring; // finish() reports from a busy state
+        finish(TransferError::NotOpen, tr("The port %1 is not open.").arg(m_transport.name()));
+        return false;
+    }
+    return true;
+}
+
+QString TransferSession::describeImage(const ImageReport &report)
+{
+    if (!report.hasBlocks)
+        return tr("no inner blocks (%1 bytes)").arg(report.size);
+    const std::size_t bad = report.badBlocks();
+    if (bad == 0)
+        return tr("%1 blocks, all valid").arg(report.blocks.size());
+    QStringList problems;
+    for (const BlockReport &block : report.blocks) {
+        if (block.ok())
+            continue;
+        const QString id =
+            QStringLiteral("0x") +
+            QString::number(block.id, 16).rightJustified(2, QLatin1Char('0')).toUpper();
+        problems << (!block.startOk ? tr("%1 (no AA)").arg(id)
+                     : !block.idOk  ? tr("%1 (wrong block id)").arg(id)
+                                    : tr("%1 (checksum)").arg(id));
+    }
+    return tr("%1 of %2 blocks invalid: %3 (the data are kept unchanged)")
+        .arg(bad)
+        .arg(report.blocks.size())
+        .arg(problems.join(QLatin1String(", ")));
+}
+
+void TransferSession::ping()
+{
+    if (start(Operation::Ping))
+        sendLater(Frame::control(familyInfo(m_family).framing, Code::Enq), State::Enquiring);
+}
+
+void TransferSession::save()
+{
+    if (start(Operation::Save))
+        sendLater(Frame::control(familyInfo(m_family).framing, Code::Enq), State::Enquiring);
+}
+
+void TransferSession::load(const Header &header, const QByteArray &data)
+{
+    if (!start(Operation::Load))
+        return;
+    const FamilyInfo &info = familyInfo(m_family);
+    const Bytes bytes(data.begin(), data.end());
+    m_dataFrame = Frame::withData(info.framing, info.loadCode, header, bytes);
+    m_result.header = m_dataFrame.header;
+    m_result.data = data;
+    m_result.image = checkImage(bytes);
+    QString invalid;
+    if (data.isEmpty()) {
+        invalid = tr("The file is empty; there is nothing to send.");
+    } else if (validateFrame(m_dataFrame) != FrameError::None) {
+        invalid = tr("The data are too long for one message: %1 bytes, at most %2.")
+                      .arg(data.size())
+                      .arg(kMaxPayload - m_dataFrame.payloadSize() + data.size());
+    } else if (m_family == Family::Anc && std::size_t(data.size()) != kProgramImageSize &&
+               std::size_t(data.size()) != kAncImageSizeWithWheel) {
+        invalid = tr("ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506); the file "
+                     "has %1. Choose a file saved from an ANC control.")
+                      .arg(data.size());
+    } else if (m_family == Family::HardChrome && std::size_t(data.size()) != kHardChromeSize) {
+        invalid = tr("HEDIT data have 46 bytes (0x2E); the file has %1. Choose a file saved "
+                     "with HEDIT.")
+                      .arg(data.size());
+    }
+    if (!invalid.isEmpty()) {
+        m_state = State::Enquiring;
+        finish(TransferError::InvalidInput, invalid);
+        return;
+    }
+    if (!m_result.image.ok())
+        emit traced(tr("Warning: inner blocks: %1").arg(describeImage(m_result.image)));
+    sendLater(Frame::control(info.framing, Code::Enq), State::Enquiring);
+}
+
+void TransferSession::cancel()
+{
+    if (isBusy())
+        finish(TransferError::Cancelled, tr("Cancelled."));
+}
+
+QString TransferSession::frameName(const Frame &frame) const
+{
+    QString name = QString::fromStdString(codeName(frame.framing, std::uint8_t(frame.code)));
+    if (frame.payloadSize() > 0)
+        name += QStringLiteral(" (%1 B)").arg(frame.payloadSize());
+    return name;
+}
+
+QString TransferSession::sentName() const
+{
+    return QString::fromStdString(codeName(m_lastSent.framing, std::uint8_t(m_lastSent.code)));
+}
+
+void TransferSession::arm(int timeoutMs)
+{
+    m_clock.cancel(m_timer);
+    m_timeoutMs = timeoutMs;
+    m_timer = m_clock.callAfter(std::int64_t(timeoutMs) * 1000, [this] {
+        m_timer = 0;
+        onTimeout();
+    });
+}
+
+void TransferSession::sendLater(const Frame &frame, State next, int pauseMs)
+{
+    if (pauseMs < 0)
+        pauseMs = m_timing.pauseMs;
+    m_clock.cancel(m_timer);
+    m_timer = 0;
+    m_state = State::Pausing;
+    m_pauseTimer = m_clock.callAfter(std::int64_t(pauseMs) * 1000, [this, frame, next] {
+        m_pauseTimer = 0;
+        const Bytes wire = encodeFrame(frame);
+        m_lastSent = frame;
+        m_state = next;
+        if (next == State::Sending) {
+            m_sentSize = qint64(wire.size());
+            emit progressed(0, m_sentSize);
+        }
+        switch (next) {
+        case State::Requesting:
+            m_requestDeadlineUs =
+                m_clock.nowUs() + std::int64_t(m_timing.firstByteTimeoutMs) * 1000;
+            arm(m_timing.firstByteTimeoutMs);
+            break;
+        case State::Sending:
+            arm(m_timing.storeTimeoutMs);
+            break;
+        default:
+            arm(m_timing.replyTimeoutMs);
+            break;
+        }
+        m_inFlight += qint64(wire.size());
+        emit traced(QStringLiteral("-> %1").arg(frameName(frame)));
+        m_transport.write(
+            QByteArray(reinterpret_cast<const char *>(wire.data()), qsizetype(wire.size())));
+    });
+}
+
+void TransferSession::onReceived(const QByteArray &bytes)
+{
+    std::vector<DecodeEvent> events;
+    m_decoder.feed(reinterpret_cast<const std::uint8_t *>(bytes.constData()),
+                   std::size_t(bytes.size()), events);
+    for (const DecodeEvent &event : events) {
+        onEvent(event);
+        if (!isBusy())
+            return; // finished: later bytes belong to no operation
+    }
+    if (m_state == State::Requesting && m_decoder.pendingBytes() > 0) {
+        arm(m_timing.gapTimeoutMs); // a message is coming: now silence inside it counts
+        if (m_decoder.pendingTotal() > 0)
+            emit progressed(qint64(m_decoder.pendingBytes()), qint64(m_decoder.pendingTotal()));
+    } else if (m_state == State::Requesting) {
+        // Noise or a stray message: the wait for the data keeps its original deadline.
+        const std::int64_t leftUs = m_requestDeadlineUs - m_clock.nowUs();
+        arm(int(std::max<std::int64_t>(0, leftUs) / 1000));
+    }
+}
+
+void TransferSession::onEvent(const DecodeEvent &event)
+{
+    switch (event.kind) {
+    case DecodeEvent::Kind::Noise:
+        m_result.noiseBytes += qint64(event.noise.size());
+        emit traced(
+            tr("<- noise, %1 bytes skipped: %2")
+                .arg(event.noise.size())
+                .arg(QString::fromStdString(hexDump(
+                    Bytes(event.noise.begin(),
+                          event.noise.begin() + std::min<std::size_t>(16, event.noise.size()))))));
+        break;
+    case DecodeEvent::Kind::ChecksumError:
+        onBadChecksum(event);
+        break;
+    case DecodeEvent::Kind::Frame:
+        emit traced(QStringLiteral("<- %1").arg(frameName(event.frame)));
+        onFrame(event.frame);
+        break;
+    }
+}
+
+void TransferSession::onFrame(const Frame &frame)
+{
+    const FamilyInfo &info = familyInfo(m_family);
+    const QString unexpected = tr("Unexpected reply %1 to %2.").arg(frameName(frame), sentName());
+    if (frame.code == Code::Nak)
+        ++m_result.naks;
+    switch (m_state) {
+    case State::Enquiring:
+        if (frame.code == Code::Ack)
+            afterAck();
+        else if (frame.code == Code::Nak)
+            retryOrFail(TransferError::Rejected, tr("The controller answered NAK to ENQ."));
+        else
+            finish(TransferError::UnexpectedReply, unexpected);
+        break;
+    case State::Requesting:
+        if (frame.code == info.saveCode && !frame.data.empty()) {
+            m_result.header = frame.header;
+            m_result.data = QByteArray(reinterpret_cast<const char *>(frame.data.data()),
+                                       qsizetype(frame.data.size()));
+            m_result.image = checkImage(frame.data);
+            const auto wireSize = qint64(4 + frame.payloadSize() + checksumSize(info.framing));
+            emit progressed(wireSize, wireSize);
+            sendLater(Frame::control(info.framing, Code::Ack), State::AckingSave);
+        } else if (frame.code == Code::Nak) {
+            retryOrFail(TransferError::Rejected,
+                        tr("The controller answered NAK to %1: is it set to program transfer "
+                           "(KONFIG6) with the selector in PGN?")
+                            .arg(sentName()));
+        } else if (frame.code == Code::Ack) {
+            // A late answer to a repeated ENQ: never an answer to a request.
+            emit traced(tr("<- ACK ignored: a late answer to an earlier message"));
+        } else {
+            finish(TransferError::UnexpectedReply, unexpected);
+        }
+        break;
+    case State::Sending:
+        if (frame.code == Code::Ack && m_inFlight > 0)
+            // The data message is not out yet, so this cannot be its answer.
+            emit traced(tr("<- ACK ignored: a late answer to an earlier message"));
+        else if (frame.code == Code::Ack)
+            finish(TransferError::None);
+        else if (frame.code == Code::Nak)
+            retryOrFail(TransferError::Rejected,
+                        tr("The controller answered NAK to %1 (%2 times): it did not accept "
+                           "the data.")
+                            .arg(sentName())
+                            .arg(m_result.naks));
+        else
+            finish(TransferError::UnexpectedReply, unexpected);
+        break;
+    case State::Idle:
+    case State::Pausing:
+    case State::AckingSave:
+        emit traced(tr("<- %1 ignored: no reply expected now").arg(frameName(frame)));
+        break;
+    }
+}
+
+void TransferSession::onBadChecksum(const DecodeEvent &event)
+{
+    ++m_result.checksumFailures;
+    const QString text = tr("Bad checksum in %1 from the controller: received %2, computed %3.")
+                             .arg(frameName(event.frame))
+                             .arg(QString::number(event.receivedSum, 16).toUpper())
+                             .arg(QString::number(event.expectedSum, 16).toUpper());
+    emit traced(QStringLiteral("<- ") + text);
+    if (m_state == State::Enquiring || m_state == State::Requesting || m_state == State::Sending)
+        retryOrFail(TransferError::ChecksumFailed, text, m_state == State::Requesting);
+}
+
+void TransferSession::afterAck()
+{
+    const FamilyInfo &info = familyInfo(m_family);
+    // After a repeated ENQ a second ACK may still be on its way: let it arrive (and be
+    // ignored) before the next message, so it cannot be taken for that message's answer.
+    const int pauseMs =
+        m_attempt > 0 ? std::max(m_timing.pauseMs, m_timing.replyTimeoutMs) : m_timing.pauseMs;
+    m_attempt = 0;
+    switch (m_operation) {
+    case Operation::Ping:
+        finish(TransferError::None);
+        break;
+    case Operation::Save:
+        sendLater(Frame::control(info.framing, info.requestCode), State::Requesting, pauseMs);
+        break;
+    case Operation::Load:
+        sendLater(m_dataFrame, State::Sending, pauseMs);
+        break;
+    }
+}
+
+void TransferSession::retryOrFail(TransferError error, const QString &message, bool askRepeat)
+{
+    if (m_attempt >= m_timing.maxRetries) {
+        finish(error, m_timing.maxRetries > 0
+                          ? tr("%1 Given up after %2 repeats.").arg(message).arg(m_attempt)
+                          : message);
+        return;
+    }
+    ++m_attempt;
+    ++m_result.retries;
+    emit traced(tr("Repeat %1 of %2: %3").arg(m_attempt).arg(m_timing.maxRetries).arg(message));
+    if (askRepeat) // the data message came (partly): ask for it again
+        sendLater(Frame::control(familyInfo(m_family).framing, Code::Nak), State::Requesting);
+    else
+        sendLater(m_lastSent, m_state);
+}
+
+void TransferSession::onTimeout()
+{
+    const double seconds = m_timeoutMs / 1000.0;
+    switch (m_state) {
+    case State::Enquiring:
+        retryOrFail(TransferError::Timeout,
+                    tr("No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd) "
+                       "and that the controller is set to transfer (KONFIG6).")
+                        .arg(seconds)
+                        .arg(m_transport.baud()));
+        break;
+    case State::Requesting: {
+        const std::size_t got = m_decoder.pendingBytes();
+        const std::size_t total = m_decoder.pendingTotal();
+        std::vector<DecodeEvent> events;
+        m_decoder.reset(events);
+        for (const DecodeEvent &event : events)
+            m_result.noiseBytes += qint64(event.noise.size());
+        if (got > 0)
+            retryOrFail(TransferError::Timeout,
+                        tr("The data message stopped after %1 of %2 bytes (no byte for %3 s).")
+                            .arg(got)
+                            .arg(total)
+                            .arg(seconds),
+                        true);
+        else
+            retryOrFail(TransferError::Timeout,
+                        tr("No data from the controller within %1 s after %2.")
+                            .arg(m_timing.firstByteTimeoutMs / 1000.0)
+                            .arg(sentName()));
+        break;
+    }
+    case State::Sending:
+        retryOrFail(
+            TransferError::Timeout,
+            tr("No ACK to %1 within %2 s after its last byte.").arg(sentName()).arg(seconds));
+        break;
+    case State::AckingSave:
+        if (m_inFlight > 0)
+            finish(TransferError::Transport,
+                   tr("The final ACK could not be sent within %1 s.").arg(seconds));
+        else
+            finish(TransferError::None);
+        break;
+    case State::Idle:
+    case State::Pausing:
+        break;
+    }
+}
+
+void TransferSession::onWritten(qint64 bytes)
+{
+    m_inFlight = std::max<qint64>(0, m_inFlight - bytes);
+    if (m_state == State::Sending) {
+        emit progressed(std::max<qint64>(0, m_sentSize - m_inFlight), m_sentSize);
+        arm(m_timing.storeTimeoutMs);
+    } else if (m_state == State::AckingSave && m_inFlight == 0) {
+        finish(TransferError::None);
+    }
+}
+
+void TransferSession::onTransportFailed(const QString &error)
+{
+    if (isBusy())
+        finish(TransferError::Transport, error);
+}
+
+void TransferSession::finish(TransferError error, const QString &message)
+{
+    m_clock.cancel(m_timer);
+    m_clock.cancel(m_pauseTimer);
+    m_timer = m_pauseTimer = 0;
+    m_state = State::Idle;
+    m_result.error = error;
+    m_result.elapsedUs = m_clock.nowUs() - m_startUs;
+    m_result.message = message;
+    if (error == TransferError::None) {
+        switch (m_operation) {
+        case Operation::Ping:
+            m_result.message = tr("Connected.");
+            break;
+        case Operation::Save:
+            m_result.message = tr("Received %1 bytes, header \"%2\".")
+                                   .arg(m_result.data.size())
+                                   .arg(QString::fromLatin1(headerText(m_result.header)));
+            break;
+        case Operation::Load:
+            m_result.message =
+                tr("Sent %1 bytes; the controller stored them.").arg(m_result.data.size());
+            break;
+        }
+    }
+    emit traced(m_result.message);
+    emit finished(m_result);
+}
+
+} // namespace frezka::grinder

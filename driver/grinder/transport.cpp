@@ -1,0 +1,86 @@
+#include "driver/grinder/transport.h"
+
+#include <QSerialPort>
+
+namespace frezka::grinder {
+
+SerialTransport::SerialTransport(SerialSettings settings, QObject *parent)
+    : Transport(parent)
+    , m_settings(std::move(settings))
+    , m_port(new QSerialPort(this))
+{
+    connect(m_port, &QSerialPort::readyRead, this, [this] { emit received(m_port->readAll()); });
+    connect(m_port, &QSerialPort::bytesWritten, this, &Transport::written);
+    connect(m_port, &QSerialPort::errorOccurred, this, &SerialTransport::onError);
+}
+
+SerialTransport::~SerialTransport() = default;
+
+bool SerialTransport::open(QString *error)
+{
+    m_port->setPortName(m_settings.portName);
+    if (!m_port->open(QIODevice::ReadWrite)) {
+        if (error)
+            *error = tr("Cannot open %1: %2").arg(m_settings.portName, m_port->errorString());
+        return false;
+    }
+    const auto parity = m_settings.parity == 'e'   ? QSerialPort::EvenParity
+                        : m_settings.parity == 'o' ? QSerialPort::OddParity
+                                                   : QSerialPort::NoParity;
+    const bool ok = m_port->setBaudRate(m_settings.baud) &&
+                    m_port->setDataBits(static_cast<QSerialPort::DataBits>(m_settings.dataBits)) &&
+                    m_port->setParity(parity) &&
+                    m_port->setStopBits(m_settings.stopBits == 2 ? QSerialPort::TwoStop
+                                                                 : QSerialPort::OneStop) &&
+                    m_port->setFlowControl(QSerialPort::NoFlowControl);
+    if (!ok) {
+        if (error)
+            *error = tr("Cannot set %1 to %2 Bd: %3")
+                         .arg(m_settings.portName)
+                         .arg(m_settings.baud)
+                         .arg(m_port->errorString());
+        m_port->close();
+        return false;
+    }
+    m_port->clear();
+    return true;
+}
+
+void SerialTransport::close()
+{
+    if (m_port->isOpen())
+        m_port->close();
+}
+
+bool SerialTransport::isOpen() const
+{
+    return m_port->isOpen();
+}
+
+void SerialTransport::write(const QByteArray &bytes)
+{
+    if (!m_port->isOpen()) {
+        emit failed(tr("%1 is not open").arg(m_settings.portName));
+        return;
+    }
+    const qint64 queued = m_port->write(bytes);
+    if (queued != bytes.size())
+        emit failed(tr("Short write on %1: %2 of %3 bytes queued (%4)")
+                        .arg(m_settings.portName)
+                        .arg(queued)
+                        .arg(bytes.size())
+                        .arg(m_port->errorString()));
+}
+
+void SerialTransport::onError()
+{
+    const QSerialPort::SerialPortError error = m_port->error();
+    // A pty refuses DTR/RTS ioctls (platform notes): not a failure of the link.
+    if (error == QSerialPort::NoError || error == QSerialPort::UnsupportedOperationError)
+        return;
+    if (error == QSerialPort::TimeoutError)
+        return;
+    emit failed(tr("Serial port %1: %2").arg(m_settings.portName, m_port->errorString()));
+}
+
+} // namespace frezka::grinder

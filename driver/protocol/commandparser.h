@@ -1,0 +1,41 @@
+#pragma once
+// Unit side of the codec: one received command line -> Command, or the reply code a unit gives
+// for it (docs/gve-protocol.md §2). Used by the emulator and by round-trip tests.
+//
+// parseCommand() checks the framing, the checksum and the syntax; unitCheck() then applies the
+// variant table (validate() in command.h) and maps its verdict to the unit's reply code.
+
+#include "driver/protocol/command.h"
+#include "driver/protocol/reply.h"
+
+#include <string>
+#include <string_view>
+
+namespace frezka::protocol {
+
+enum class ParseStatus : std::uint8_t {
+    Ok,          // command parsed
+    NotACommand, // no '!' + address digit at the start: a unit ignores the line
+    Error,       // addressed, but malformed: reply with code
+};
+
+struct ParsedCommand
+{
+    ParseStatus status = ParseStatus::NotACommand;
+    std::uint8_t address = 0;
+    Command command;                // valid when status == Ok
+    ReplyCode code = ReplyCode::Ok; // when status == Error: UnknownCommand / Syntax / OutOfRange
+    bool checksumFailed = false;    // Error because the checksum was missing or wrong
+    std::string message;            // English, for logs
+    friend bool operator==(const ParsedCommand &, const ParsedCommand &) = default;
+};
+
+// Parses a line (without CR). checksums: whether the unit currently expects ",HH".
+ParsedCommand parseCommand(std::string_view line, bool checksums);
+
+// The reply code a unit of the given variant gives a parsed command that fails validate():
+// Ok when it passes; UnknownCommand for a command the variant lacks; Syntax for a wrong
+// component count (adopted reading §4); OutOfRange for a value outside its range.
+ReplyCode unitCheck(const Command &c, Variant variant, int maxPulseRate = 0);
+
+} // namespace frezka::protocol

@@ -1,0 +1,166 @@
+#include "consolewidget.h"
+
+#include <QCheckBox>
+#include <QEvent>
+#include <QFile>
+#include <QFileDialog>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace frezka::gui {
+
+ConsoleWidget::ConsoleWidget(QWidget *parent)
+    : QWidget(parent)
+{
+    m_view = new QPlainTextEdit(this);
+    m_view->setObjectName(QStringLiteral("consoleLog"));
+    m_view->setReadOnly(true);
+    m_view->setMaximumBlockCount(20000);
+    m_view->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_view->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_hexBox = new QCheckBox(this);
+    m_hexBox->setObjectName(QStringLiteral("consoleHex"));
+    connect(m_hexBox, &QCheckBox::toggled, this, &ConsoleWidget::setHex);
+    m_save = new QPushButton(this);
+    connect(m_save, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save log"), QString(),
+                                                          tr("Text files (*.txt *.log)"));
+        QString error;
+        if (!path.isEmpty() && !saveTo(path, &error))
+            QMessageBox::warning(this, tr("Save log"), error);
+    });
+    m_clear = new QPushButton(this);
+    connect(m_clear, &QPushButton::clicked, this, [this] {
+        m_entries.clear();
+        m_pending = 0;
+        m_view->clear();
+    });
+    m_line = new QLineEdit(this);
+    m_line->setObjectName(QStringLiteral("consoleLine"));
+    m_send = new QPushButton(this);
+    auto send = [this] {
+        const QString text = m_line->text().trimmed();
+        if (text.isEmpty())
+            return;
+        m_line->clear();
+        emit manualLineEntered(text);
+    };
+    connect(m_line, &QLineEdit::returnPressed, this, send);
+    connect(m_send, &QPushButton::clicked, this, send);
+
+    auto *tools = new QHBoxLayout;
+    tools->addWidget(m_hexBox);
+    tools->addStretch();
+    tools->addWidget(m_clear);
+    tools->addWidget(m_save);
+    auto *input = new QHBoxLayout;
+    input->addWidget(m_line, 1);
+    input->addWidget(m_send);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addLayout(tools);
+    layout->addWidget(m_view, 1);
+    layout->addLayout(input);
+
+    m_flushTimer.setInterval(100);
+    m_flushTimer.setSingleShot(true);
+    connect(&m_flushTimer, &QTimer::timeout, this, &ConsoleWidget::flush);
+    retranslate();
+}
+
+void ConsoleWidget::append(LogDirection direction, const QByteArray &bytes)
+{
+    m_entries.push_back({QDateTime::currentDateTime(), direction, bytes});
+    if (m_entries.size() > kKeep)
+        m_entries.pop_front();
+    m_pending = std::min(m_pending + 1, m_entries.size());
+    if (!m_flushTimer.isActive())
+        m_flushTimer.start();
+}
+
+QString ConsoleWidget::formatEntry(const LogEntry &e) const
+{
+    static const char *kPrefix[] = {"> ", "< ", "# ", "! "};
+    QString body;
+    if (m_hex && (e.direction == LogDirection::Sent || e.direction == LogDirection::Received)) {
+        body = QString::fromLatin1(e.bytes.toHex(' ').toUpper());
+    } else {
+        body = QString::fromUtf8(e.bytes);
+        body.replace(QLatin1Char('\r'), QStringLiteral("\\r"));
+        body.replace(QLatin1Char('\n'), QStringLiteral("\\n"));
+    }
+    return e.time.toString(QStringLiteral("HH:mm:ss.zzz ")) +
+           QLatin1String(kPrefix[int(e.direction)]) + body;
+}
+
+void ConsoleWidget::flush()
+{
+    if (m_pending == 0)
+        return;
+    QStringList lines;
+    const std::size_t from = m_entries.size() - m_pending;
+    const std::size_t shown = std::min<std::size_t>(m_pending, 20000);
+    for (std::size_t i = m_entries.size() - shown; i < m_entries.size(); ++i)
+        lines << formatEntry(m_entries[i]);
+    Q_UNUSED(from);
+    m_pending = 0;
+    m_view->appendPlainText(lines.join(QLatin1Char('\n')));
+}
+
+void ConsoleWidget::setHex(bool hex)
+{
+    if (hex == m_hex)
+        return;
+    m_hex = hex;
+    m_hexBox->setChecked(hex);
+    rebuildView();
+}
+
+void ConsoleWidget::rebuildView()
+{
+    m_view->clear();
+    m_pending = std::min<std::size_t>(m_entries.size(), 20000);
+    flush();
+}
+
+bool ConsoleWidget::saveTo(const QString &path, QString *error) const
+{
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
+        if (error)
+            *error = tr("Cannot write %1: %2").arg(path, f.errorString());
+        return false;
+    }
+    for (const auto &e : m_entries)
+        f.write(formatEntry(e).toUtf8() + '\n');
+    if (!f.flush()) {
+        if (error)
+            *error = tr("Cannot write %1: %2").arg(path, f.errorString());
+        return false;
+    }
+    return true;
+}
+
+void ConsoleWidget::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ConsoleWidget::retranslate()
+{
+    m_hexBox->setText(tr("Hex"));
+    m_save->setText(tr("Save log…"));
+    m_clear->setText(tr("Clear"));
+    m_send->setText(tr("Send"));
+    m_line->setPlaceholderText(
+        tr("G-code (e.g. G0 X10) or a raw unit command (e.g. !0PF), Enter sends"));
+}
+
+} // namespace frezka::gui

@@ -1,0 +1,49 @@
+#pragma once
+// DroWidget: digital read-out — work and machine coordinates for each axis of the unit variant,
+// with per-axis and all-axes "set work zero" and the active work offset (G54-G59).
+
+#include <QWidget>
+
+#include <array>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+
+namespace frezka::gui {
+
+class DroWidget : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit DroWidget(QWidget *parent = nullptr);
+    void setAxisCount(int count); // 3 (XYZ) or 4 (XYZA)
+    int axisCount() const { return m_axisCount; }
+    void setPositions(const std::array<double, 4> &machineMm, const std::array<double, 4> &workMm);
+    void setActiveOffset(int index); // 0 = G54 .. 5 = G59
+    void setHomed(const std::array<bool, 4> &homed);
+    // Shown text of an axis (tests).
+    QString workText(int axis) const;
+    QString machineText(int axis) const;
+
+signals:
+    void zeroAxisRequested(int axis);
+    void zeroAllRequested();
+    void offsetSelected(int index);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslate();
+
+    int m_axisCount = 4;
+    std::array<QLabel *, 4> m_name{}, m_work{}, m_machine{};
+    std::array<QPushButton *, 4> m_zero{};
+    QPushButton *m_zeroAll;
+    QComboBox *m_offset;
+    QLabel *m_workHeader, *m_machineHeader, *m_offsetLabel;
+};
+
+} // namespace frezka::gui

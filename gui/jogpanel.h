@@ -1,0 +1,59 @@
+#pragma once
+// JogPanel: jog buttons per axis (step 0.01 / 0.1 / 1 / 10 mm or continuous while held),
+// jog feed, homing (all / per axis) and the MPG switch. It only asks; the controller checks the
+// soft limits and refuses what would pass them.
+
+#include <QWidget>
+
+#include <array>
+
+class QButtonGroup;
+class QCheckBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QRadioButton;
+
+namespace frezka::gui {
+
+class JogPanel : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit JogPanel(QWidget *parent = nullptr);
+    void setAxisCount(int count);
+    // 0 = continuous, otherwise the step in mm.
+    double stepMm() const;
+    void setStepMm(double stepMm);
+    double feedMmPerMin() const;
+    void setMpgAvailable(bool available);
+    void setMpgOn(bool on);
+    // Jog as if the button of axis (0..3) in direction (+1/-1) was clicked (keyboard).
+    void jogKey(int axis, int direction, bool pressed);
+
+signals:
+    void jogStepRequested(int axis, double deltaMm, double feedMmPerMin);
+    void jogContinuousStarted(int axis, int direction, double feedMmPerMin);
+    void jogContinuousStopped();
+    void homeRequested(int axis); // -1 = all axes in the profile's order
+    void mpgToggled(bool on);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslate();
+
+    std::array<QPushButton *, 8> m_jog{};
+    std::array<QPushButton *, 4> m_home{};
+    QPushButton *m_homeAll;
+    QButtonGroup *m_steps;
+    QRadioButton *m_continuous;
+    QDoubleSpinBox *m_feed;
+    QLabel *m_feedLabel, *m_stepLabel;
+    QCheckBox *m_mpg;
+    int m_axisCount = 4;
+};
+
+} // namespace frezka::gui

@@ -1,0 +1,168 @@
+#include "outputspanel.h"
+
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <QVBoxLayout>
+
+namespace frezka::gui {
+
+OutputsPanel::OutputsPanel(QWidget *parent)
+    : QWidget(parent)
+{
+    auto toggle = [this](const char *name) {
+        auto *b = new QPushButton(this);
+        b->setObjectName(QLatin1String(name));
+        b->setCheckable(true);
+        return b;
+    };
+    m_spindle = toggle("spindle");
+    m_coolant = toggle("coolant");
+    m_air = toggle("air");
+    m_rpm = new QDoubleSpinBox(this);
+    m_rpm->setObjectName(QStringLiteral("spindleRpm"));
+    m_rpm->setDecimals(0);
+    m_rpm->setRange(0, 24000);
+    m_rpm->setValue(12000);
+    m_rpm->setSuffix(QStringLiteral(" rpm"));
+    m_rpmLabel = new QLabel(this);
+    connect(m_spindle, &QPushButton::clicked, this,
+            [this](bool on) { emit spindleRequested(on, m_rpm->value()); });
+    connect(m_rpm, &QDoubleSpinBox::editingFinished, this, [this] {
+        if (m_spindle->isChecked())
+            emit spindleRequested(true, m_rpm->value());
+    });
+    connect(m_coolant, &QPushButton::clicked, this, &OutputsPanel::coolantRequested);
+    connect(m_air, &QPushButton::clicked, this, &OutputsPanel::airRequested);
+
+    m_feedLabel = new QLabel(this);
+    m_feed = new QSlider(Qt::Horizontal, this);
+    m_feed->setObjectName(QStringLiteral("feedOverride"));
+    m_feed->setRange(10, 200);
+    m_feed->setValue(100);
+    m_feed->setPageStep(10);
+    m_feedValue = new QLabel(QStringLiteral("100 %"), this);
+    m_feedValue->setMinimumWidth(QFontMetrics(font()).horizontalAdvance(QStringLiteral("200 %")));
+    connect(m_feed, &QSlider::valueChanged, this,
+            [this](int v) { m_feedValue->setText(QStringLiteral("%1 %").arg(v)); });
+    connect(m_feed, &QSlider::sliderReleased, this,
+            [this] { emit feedOverrideRequested(m_feed->value()); });
+    connect(m_feed, &QSlider::actionTriggered, this, [this](int action) {
+        if (action != QAbstractSlider::SliderMove)
+            QMetaObject::invokeMethod(
+                this, [this] { emit feedOverrideRequested(m_feed->value()); },
+                Qt::QueuedConnection);
+    });
+    m_feedUp = new QPushButton(QStringLiteral("+"), this);
+    m_feedUp->setObjectName(QStringLiteral("feedUp"));
+    m_feedDown = new QPushButton(QStringLiteral("−"), this);
+    m_feedDown->setObjectName(QStringLiteral("feedDown"));
+    m_feedReset = new QPushButton(QStringLiteral("100 %"), this);
+    m_feedReset->setObjectName(QStringLiteral("feedReset"));
+    for (auto *b : {m_feedUp, m_feedDown, m_feedReset})
+        b->setMaximumWidth(60);
+    connect(m_feedUp, &QPushButton::clicked, this, [this] { emit feedStepRequested(+1); });
+    connect(m_feedDown, &QPushButton::clicked, this, [this] { emit feedStepRequested(-1); });
+    connect(m_feedReset, &QPushButton::clicked, this, [this] {
+        m_feed->setValue(100);
+        emit feedOverrideRequested(100);
+    });
+
+    auto *grid = new QGridLayout;
+    grid->addWidget(m_spindle, 0, 0);
+    grid->addWidget(m_rpmLabel, 0, 1);
+    grid->addWidget(m_rpm, 0, 2);
+    grid->addWidget(m_coolant, 1, 0);
+    grid->addWidget(m_air, 1, 1);
+    auto *feedRow = new QHBoxLayout;
+    feedRow->addWidget(m_feedLabel);
+    feedRow->addWidget(m_feedDown);
+    feedRow->addWidget(m_feed, 1);
+    feedRow->addWidget(m_feedUp);
+    feedRow->addWidget(m_feedValue);
+    feedRow->addWidget(m_feedReset);
+    m_extraBox = new QVBoxLayout;
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addLayout(grid);
+    layout->addLayout(m_extraBox);
+    layout->addLayout(feedRow);
+    layout->addStretch();
+    retranslate();
+}
+
+void OutputsPanel::setMaxRpm(double rpm)
+{
+    m_rpm->setRange(0, rpm);
+}
+
+void OutputsPanel::setExtraOutputs(const std::vector<std::pair<QString, std::uint8_t>> &outputs)
+{
+    for (auto &[b, bit] : m_extra)
+        delete b;
+    m_extra.clear();
+    for (const auto &[caption, bit] : outputs) {
+        auto *b = new QPushButton(caption, this);
+        b->setCheckable(true);
+        b->setObjectName(QStringLiteral("output%1").arg(bit));
+        const std::uint8_t theBit = bit;
+        connect(b, &QPushButton::clicked, this,
+                [this, theBit](bool on) { emit outputRequested(theBit, on); });
+        m_extraBox->addWidget(b);
+        m_extra.emplace_back(b, bit);
+    }
+}
+
+void OutputsPanel::showState(bool spindleOn, bool coolantOn, bool airOn, std::uint8_t outputsOn)
+{
+    m_spindle->setChecked(spindleOn);
+    m_coolant->setChecked(coolantOn);
+    m_air->setChecked(airOn);
+    for (auto &[b, bit] : m_extra)
+        b->setChecked(outputsOn & bit);
+}
+
+void OutputsPanel::showFeedOverride(int percent)
+{
+    if (m_feed->isSliderDown())
+        return;
+    const QSignalBlocker block(m_feed);
+    m_feed->setValue(percent);
+    m_feedValue->setText(QStringLiteral("%1 %").arg(percent));
+}
+
+int OutputsPanel::feedOverride() const
+{
+    return m_feed->value();
+}
+
+double OutputsPanel::spindleRpm() const
+{
+    return m_rpm->value();
+}
+
+void OutputsPanel::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void OutputsPanel::retranslate()
+{
+    m_spindle->setText(tr("Spindle"));
+    m_spindle->setToolTip(tr("Switch the spindle on or off at the speed on the right"));
+    m_rpmLabel->setText(tr("Speed:"));
+    m_coolant->setText(tr("Coolant"));
+    m_air->setText(tr("Air blow"));
+    m_feedLabel->setText(tr("Feed:"));
+    m_feed->setToolTip(tr("Feed override in percent of the programmed feed (XM)"));
+    m_feedUp->setToolTip(tr("Raise every queued speed by 6.25 % (XU)"));
+    m_feedDown->setToolTip(tr("Lower every queued speed by 6.25 % (XD)"));
+}
+
+} // namespace frezka::gui

@@ -1,0 +1,204 @@
+#include "programsession.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QThread>
+
+namespace frezka::gui {
+namespace {
+
+QString stageName(int stage)
+{
+    switch (stage) {
+    case 0:
+        return ProgramSession::tr("Reading");
+    case 1:
+        return ProgramSession::tr("Indexing lines");
+    case 2:
+        return ProgramSession::tr("Interpreting");
+    case 3:
+        return ProgramSession::tr("Preparing the view");
+    default:
+        return ProgramSession::tr("Planning");
+    }
+}
+
+double pathLength(const gcode::Toolpath &path)
+{
+    double total = 0;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        if (!path.isMotion(i))
+            continue;
+        const auto a = path.start(i), b = path.end(i);
+        total += std::sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y) +
+                           (b.z - a.z) * (b.z - a.z));
+    }
+    return total;
+}
+
+} // namespace
+
+std::uint32_t LoadedProgram::entryOfLine(std::uint32_t line) const
+{
+    if (line >= lineToEntry.size())
+        return gcode::Toolpath::kNone;
+    return lineToEntry[line];
+}
+
+ProgramSession::ProgramSession(QObject *parent)
+    : QObject(parent)
+{
+    m_poll.setInterval(50);
+    connect(&m_poll, &QTimer::timeout, this, [this] {
+        if (m_progress && m_stage)
+            emit loadProgress(double(m_progress->load()) / 1000.0, stageName(m_stage->load()));
+    });
+}
+
+ProgramSession::~ProgramSession()
+{
+    cancel();
+}
+
+void ProgramSession::setWorkOffsets(const WorkOffsets &offsets, int active)
+{
+    m_offsets = offsets;
+    m_activeOffset = active;
+}
+
+void ProgramSession::cancel()
+{
+    if (!m_thread)
+        return;
+    m_cancel->store(true);
+    m_thread->wait();
+    delete m_thread;
+    m_thread = nullptr;
+    m_poll.stop();
+    ++m_generation;
+}
+
+void ProgramSession::reload()
+{
+    if (!m_program.path.isEmpty())
+        load(m_program.path);
+}
+
+void ProgramSession::load(const QString &path)
+{
+    cancel();
+    const quint64 generation = ++m_generation;
+    m_cancel = std::make_shared<std::atomic_bool>(false);
+    m_progress = std::make_shared<std::atomic_int>(0);
+    m_stage = std::make_shared<std::atomic_int>(0);
+    auto cancelFlag = m_cancel;
+    auto progress = m_progress;
+    auto stage = m_stage;
+    const InterpretFn interpret = m_interpret;
+    const AnalyseFn analyse = m_analyse;
+    const WorkOffsets offsets = m_offsets;
+    const int active = m_activeOffset;
+    const std::array<double, 4> startMm = m_startMm;
+    const std::size_t maxSegments = m_maxSegments;
+    emit loadStarted(path);
+
+    m_thread = QThread::create([=, this] {
+        auto result = std::make_shared<LoadedProgram>();
+        result->path = path;
+        QString failure;
+        auto done = [&] {
+            QMetaObject::invokeMethod(
+                this,
+                [this, generation, result, failure] {
+                    if (generation == m_generation)
+                        finish(result, failure);
+                },
+                Qt::QueuedConnection);
+        };
+        QFile file(path);
+        if (!file.open(QIODevice::ReadOnly)) {
+            failure = tr("Cannot open %1: %2").arg(path, file.errorString());
+            return done();
+        }
+        QByteArray data = file.readAll();
+        stage->store(1);
+        auto text = std::make_shared<ProgramText>(
+            data,
+            [&](qint64 d, qint64 t) { progress->store(int(d * 1000 / std::max<qint64>(1, t))); },
+            cancelFlag.get());
+        result->text = text;
+        if (cancelFlag->load())
+            return;
+        stage->store(2);
+        progress->store(0);
+        if (!interpret) {
+            result->errors.push_back(
+                {0, 0, tr("This build has no G-code interpreter; the program cannot be checked.")});
+            return done();
+        }
+        InterpretRequest req;
+        req.text = data;
+        req.fileName = QFileInfo(path).fileName();
+        req.offsets = offsets;
+        req.activeOffset = active;
+        req.startMm = startMm;
+        req.cancel = cancelFlag.get();
+        req.progress = [&](double f) { progress->store(int(f * 1000)); };
+        InterpretOutcome outcome = interpret(req);
+        result->errors = std::move(outcome.errors);
+        if (cancelFlag->load())
+            return;
+        if (outcome.toolpath) {
+            stage->store(3);
+            progress->store(0);
+            SceneOptions options;
+            options.maxSegments = maxSegments;
+            auto scene = std::make_shared<ToolpathScene>(buildScene(
+                *outcome.toolpath, options,
+                [&](std::size_t d, std::size_t t) {
+                    progress->store(int(d * 1000 / std::max<std::size_t>(1, t)));
+                },
+                cancelFlag.get()));
+            result->scene = scene;
+            result->lengthMm = pathLength(*outcome.toolpath);
+            const auto &tp = *outcome.toolpath;
+            std::uint32_t maxLine = 0;
+            for (std::size_t i = 0; i < tp.size(); ++i)
+                maxLine = std::max(maxLine, tp.line(i));
+            result->lineToEntry.assign(std::size_t(maxLine) + 1, gcode::Toolpath::kNone);
+            for (std::size_t i = 0; i < tp.size(); ++i)
+                result->lineToEntry[tp.line(i)] = std::uint32_t(i);
+            result->toolpath = std::move(outcome.toolpath);
+            if (result->errors.empty() && analyse) {
+                stage->store(4);
+                progress->store(0);
+                analyse(*result, cancelFlag.get());
+            }
+        }
+        if (cancelFlag->load())
+            return;
+        done();
+    });
+    m_thread->start();
+    m_poll.start();
+}
+
+void ProgramSession::finish(std::shared_ptr<LoadedProgram> result, QString failure)
+{
+    if (m_thread) {
+        m_thread->wait();
+        delete m_thread;
+        m_thread = nullptr;
+    }
+    m_poll.stop();
+    if (!failure.isEmpty()) {
+        emit loadFailed(failure);
+        return;
+    }
+    m_program = std::move(*result);
+    emit loadProgress(1.0, QString());
+    emit loaded();
+}
+
+} // namespace frezka::gui

@@ -1,0 +1,143 @@
+#include "speedplot.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QToolTip>
+
+#include <algorithm>
+
+namespace frezka::gui {
+
+std::vector<SpeedSample> decimateSpeed(const std::vector<SpeedSample> &in, std::size_t maxPoints)
+{
+    if (in.size() <= maxPoints || maxPoints < 4)
+        return in;
+    std::vector<SpeedSample> out;
+    out.reserve(maxPoints);
+    const std::size_t buckets = maxPoints / 2;
+    const double per = double(in.size()) / double(buckets);
+    for (std::size_t b = 0; b < buckets; ++b) {
+        const auto from = std::size_t(double(b) * per);
+        const auto to = std::min(in.size(), std::size_t(double(b + 1) * per));
+        if (from >= to)
+            continue;
+        auto [lo, hi] = std::minmax_element(in.begin() + long(from), in.begin() + long(to),
+                                            [](const SpeedSample &a, const SpeedSample &c) {
+                                                return a.speedMmPerMin < c.speedMmPerMin;
+                                            });
+        if (lo->distanceMm <= hi->distanceMm) {
+            out.push_back(*lo);
+            if (hi != lo)
+                out.push_back(*hi);
+        } else {
+            out.push_back(*hi);
+            out.push_back(*lo);
+        }
+    }
+    return out;
+}
+
+SpeedPlot::SpeedPlot(QWidget *parent)
+    : QWidget(parent)
+{
+    setMouseTracking(true);
+    setMinimumHeight(80);
+}
+
+void SpeedPlot::setPlanned(std::vector<SpeedSample> samples)
+{
+    m_planned = decimateSpeed(samples, 4000);
+    m_actual.clear();
+    m_maxDistance = 1;
+    m_maxSpeed = 1;
+    for (const auto &s : m_planned) {
+        m_maxDistance = std::max(m_maxDistance, s.distanceMm);
+        m_maxSpeed = std::max(m_maxSpeed, s.speedMmPerMin);
+    }
+    update();
+}
+
+void SpeedPlot::clearActual()
+{
+    m_actual.clear();
+    update();
+}
+
+void SpeedPlot::addActual(const SpeedSample &sample)
+{
+    m_actual.push_back(sample);
+    if (m_actual.size() > 20000)
+        m_actual = decimateSpeed(m_actual, 10000);
+    m_maxSpeed = std::max(m_maxSpeed, sample.speedMmPerMin);
+    m_maxDistance = std::max(m_maxDistance, sample.distanceMm);
+    update();
+}
+
+void SpeedPlot::setCursorDistance(double mm)
+{
+    m_cursor = mm;
+    update();
+}
+
+QRectF SpeedPlot::plotRect() const
+{
+    const int left = fontMetrics().horizontalAdvance(QStringLiteral("00000")) + 6;
+    return QRectF(left, 4, width() - left - 4, height() - fontMetrics().height() - 8);
+}
+
+void SpeedPlot::paintEvent(QPaintEvent *)
+{
+    QPainter p(this);
+    p.fillRect(rect(), QColor(30, 32, 36));
+    const QRectF r = plotRect();
+    p.setPen(QColor(90, 90, 90));
+    p.drawRect(r);
+    p.setPen(QColor(200, 200, 200));
+    p.drawText(QRectF(0, r.top(), r.left() - 4, 20), Qt::AlignRight | Qt::AlignTop,
+               QString::number(m_maxSpeed, 'f', 0));
+    p.drawText(QRectF(0, r.bottom() - 16, r.left() - 4, 16), Qt::AlignRight, QStringLiteral("0"));
+    p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), 20), Qt::AlignLeft,
+               tr("mm/min along the path (%1 mm)").arg(m_maxDistance, 0, 'f', 0));
+    auto map = [&](const SpeedSample &s) {
+        return QPointF(r.left() + s.distanceMm / m_maxDistance * r.width(),
+                       r.bottom() - s.speedMmPerMin / m_maxSpeed * r.height());
+    };
+    p.setRenderHint(QPainter::Antialiasing);
+    auto draw = [&](const std::vector<SpeedSample> &v, const QColor &c) {
+        if (v.empty())
+            return;
+        QPainterPath path(map(v.front()));
+        for (std::size_t i = 1; i < v.size(); ++i)
+            path.lineTo(map(v[i]));
+        p.setPen(QPen(c, 1.2));
+        p.drawPath(path);
+    };
+    draw(m_planned, QColor(70, 160, 255));
+    draw(m_actual, QColor(255, 170, 40));
+    if (m_cursor >= 0) {
+        const double x = r.left() + m_cursor / m_maxDistance * r.width();
+        p.setPen(QPen(QColor(255, 60, 60), 1));
+        p.drawLine(QPointF(x, r.top()), QPointF(x, r.bottom()));
+    }
+}
+
+void SpeedPlot::mouseMoveEvent(QMouseEvent *event)
+{
+    const QRectF r = plotRect();
+    if (m_planned.empty() || !r.contains(event->position()))
+        return;
+    const double d = (event->position().x() - r.left()) / r.width() * m_maxDistance;
+    auto it = std::lower_bound(m_planned.begin(), m_planned.end(), d,
+                               [](const SpeedSample &s, double v) { return s.distanceMm < v; });
+    if (it == m_planned.end())
+        --it;
+    QToolTip::showText(event->globalPosition().toPoint(),
+                       tr("%1 mm/min at %2 mm, line %3")
+                           .arg(it->speedMmPerMin, 0, 'f', 0)
+                           .arg(it->distanceMm, 0, 'f', 1)
+                           .arg(it->line),
+                       this);
+}
+
+} // namespace frezka::gui

@@ -1,0 +1,50 @@
+#pragma once
+// SpeedPlot: planned speed along the program (path length on x, mm/min on y) and, while
+// running, the actual speed measured from the live position. Hovering shows the source line
+// at that point so the user sees where the machine slows down and why (corner, arc, short
+// segments, axis limit).
+
+#include <QWidget>
+
+#include <cstdint>
+#include <vector>
+
+namespace frezka::gui {
+
+struct SpeedSample
+{
+    double distanceMm = 0;
+    double speedMmPerMin = 0;
+    std::uint32_t line = 0;
+    friend bool operator==(const SpeedSample &, const SpeedSample &) = default;
+};
+
+// Keeps at most maxPoints samples, preserving the minimum and maximum of each bucket so dips
+// stay visible.
+std::vector<SpeedSample> decimateSpeed(const std::vector<SpeedSample> &in, std::size_t maxPoints);
+
+class SpeedPlot : public QWidget
+{
+    Q_OBJECT
+
+public:
+    explicit SpeedPlot(QWidget *parent = nullptr);
+    void setPlanned(std::vector<SpeedSample> samples);
+    void clearActual();
+    void addActual(const SpeedSample &sample);
+    void setCursorDistance(double mm);
+    const std::vector<SpeedSample> &planned() const { return m_planned; }
+    const std::vector<SpeedSample> &actual() const { return m_actual; }
+    QSize sizeHint() const override { return {400, 120}; }
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+
+private:
+    QRectF plotRect() const;
+    std::vector<SpeedSample> m_planned, m_actual;
+    double m_maxDistance = 1, m_maxSpeed = 1, m_cursor = -1;
+};
+
+} // namespace frezka::gui

@@ -1,0 +1,91 @@
+#include "toolpathviewmodel.h"
+
+namespace frezka::gui {
+
+QColor ViewColours::colourOf(SegmentClass c) const
+{
+    switch (c) {
+    case SegmentClass::Rapid:
+        return rapid;
+    case SegmentClass::Arc:
+        return arc;
+    case SegmentClass::Probe:
+        return probe;
+    case SegmentClass::Feed:
+        break;
+    }
+    return feed;
+}
+
+ToolpathViewModel::ToolpathViewModel(QObject *parent)
+    : QObject(parent)
+{
+    m_camera.setPreset(ViewPreset::Iso);
+}
+
+void ToolpathViewModel::setScene(std::shared_ptr<const ToolpathScene> scene)
+{
+    m_scene = std::move(scene);
+    m_cutEntry = kNoneCut;
+    fitAll();
+    emit sceneChanged();
+    emit changed();
+}
+
+void ToolpathViewModel::setCutEntry(std::uint32_t entry)
+{
+    if (entry == m_cutEntry)
+        return;
+    m_cutEntry = entry;
+    emit changed();
+}
+
+void ToolpathViewModel::setToolPosition(const QVector3D &mm)
+{
+    if (mm == m_tool)
+        return;
+    m_tool = mm;
+    emit changed();
+}
+
+void ToolpathViewModel::setTravelBox(const SceneBounds &box)
+{
+    if (box == m_travel)
+        return;
+    m_travel = box;
+    if (!m_scene || m_scene->isEmpty())
+        fitAll();
+    emit changed();
+}
+
+void ToolpathViewModel::setBoundsOutsideLimits(bool outside)
+{
+    if (outside == m_outside)
+        return;
+    m_outside = outside;
+    emit changed();
+}
+
+void ToolpathViewModel::setPreset(ViewPreset preset)
+{
+    m_camera.setPreset(preset);
+    fitAll();
+    emit changed();
+}
+
+void ToolpathViewModel::fitAll()
+{
+    SceneBounds b;
+    if (m_scene && m_scene->bounds.valid) {
+        b = m_scene->bounds;
+    } else if (m_travel.valid) {
+        b = m_travel;
+    }
+    if (b.valid) {
+        b.include(m_tool);
+        m_camera.fit(b.min, b.max);
+    }
+    emit changed();
+}
+
+} // namespace frezka::gui

@@ -1,0 +1,76 @@
+#pragma once
+// ToolpathViewModel: what both toolpath renderers show — the scene, the camera, the tool
+// marker, how far the program has been cut, the machine travel box and the program bounds.
+
+#include "toolpathscene.h"
+#include "viewcamera.h"
+
+#include <QColor>
+#include <QObject>
+
+#include <memory>
+
+namespace frezka::gui {
+
+struct ViewColours
+{
+    QColor background{30, 32, 36};
+    QColor rapid{230, 160, 40};
+    QColor feed{70, 160, 255};
+    QColor arc{60, 210, 140};
+    QColor probe{220, 80, 220};
+    QColor cut{120, 120, 120};
+    QColor tool{255, 60, 60};
+    QColor travel{110, 110, 120};
+    QColor boundsOk{90, 200, 90};
+    QColor boundsBad{255, 40, 40};
+    QColor colourOf(SegmentClass c) const;
+};
+
+class ToolpathViewModel : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit ToolpathViewModel(QObject *parent = nullptr);
+
+    void setScene(std::shared_ptr<const ToolpathScene> scene);
+    const std::shared_ptr<const ToolpathScene> &scene() const { return m_scene; }
+
+    // Entries up to and including this one are drawn as cut; kNoneCut = nothing cut.
+    static constexpr std::uint32_t kNoneCut = 0xFFFFFFFFu;
+    void setCutEntry(std::uint32_t entry);
+    std::uint32_t cutEntry() const { return m_cutEntry; }
+
+    void setToolPosition(const QVector3D &mm);
+    QVector3D toolPosition() const { return m_tool; }
+
+    void setTravelBox(const SceneBounds &box);
+    const SceneBounds &travelBox() const { return m_travel; }
+    // Red bounds when the program leaves the soft limits.
+    void setBoundsOutsideLimits(bool outside);
+    bool boundsOutsideLimits() const { return m_outside; }
+
+    ViewCamera &camera() { return m_camera; }
+    const ViewCamera &camera() const { return m_camera; }
+    void setPreset(ViewPreset preset);
+    void fitAll();
+    void notifyCameraChanged() { emit changed(); }
+
+    const ViewColours &colours() const { return m_colours; }
+
+signals:
+    void changed();
+    void sceneChanged();
+
+private:
+    std::shared_ptr<const ToolpathScene> m_scene;
+    std::uint32_t m_cutEntry = kNoneCut;
+    QVector3D m_tool;
+    SceneBounds m_travel;
+    bool m_outside = false;
+    ViewCamera m_camera;
+    ViewColours m_colours;
+};
+
+} // namespace frezka::gui

@@ -1,0 +1,388 @@
+// Vertex caps, integer passes and the time-optimal bound (docs/planner.md §3-§5).
+#include "machine/chainplanner.h"
+
+#include "machine/unitmodel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace frezka::machine::detail {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr std::int64_t kMinSpeed = 10; // smallest V / B the unit takes, pulses/s
+
+using Vec4 = std::array<double, 4>;
+
+double dot(const Vec4 &a, const Vec4 &b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+}
+
+// Path length of a displacement: X/Y/Z length, or |A| for a pure rotary move (feed in °/min).
+double pathLength(const Vec4 &delta)
+{
+    const double xyz = std::sqrt(delta[0] * delta[0] + delta[1] * delta[1] + delta[2] * delta[2]);
+    return xyz > 1e-12 ? xyz : std::abs(delta[3]);
+}
+
+Vec4 normalized(const Vec4 &v)
+{
+    const double n = std::sqrt(dot(v, v));
+    Vec4 r{};
+    if (n > 0) {
+        for (int i = 0; i < 4; ++i)
+            r[i] = v[i] / n;
+    }
+    return r;
+}
+
+// floor() that forgives floating-point noise (1e-9 relative): a value the exact arithmetic
+// puts on an integer must not lose a whole unit.
+double floorUnits(double x)
+{
+    return std::floor(x + 1e-9 * std::max(1.0, std::abs(x)));
+}
+
+// floor(sqrt(x)) for x >= 0, exact in integers.
+std::int64_t isqrt(std::int64_t x)
+{
+    if (x <= 0)
+        return 0;
+    auto r = static_cast<std::int64_t>(std::sqrt(static_cast<double>(x)));
+    while (r * r > x)
+        --r;
+    while ((r + 1) * (r + 1) <= x)
+        ++r;
+    return r;
+}
+
+// Everything the passes need about one move, derived once.
+struct Derived
+{
+    Vec4 uStep{}; // axis mm (°) per path mm of the step vector: what the unit really does
+    Vec4 uPath{}; // unit direction of the intended segment (corner geometry)
+    double lengthMm = 0;
+    double pathLengthMm = 0;
+    double f = 0;           // speed units per path mm (VN: major steps/mm, VK: step length/mm)
+    double units = 0;       // distance in speed units
+    double vMm = 0;         // cruise cap, mm/s
+    double aMm = 0;         // acceleration cap, mm/s²
+    std::int64_t speed = 0; // V
+    std::int64_t accel = 0; // A (thousands)
+    std::int64_t twoAU = 0; // 2 · A · usable distance, integer pulses²/s², floored
+    bool isShort = false;
+};
+
+class RunPlanner
+{
+public:
+    RunPlanner(const std::vector<Move> &moves, const MachineConfig &config,
+               const PlanOptions &options, bool vk)
+        : m_moves(moves)
+        , m_config(config)
+        , m_options(options)
+        , m_vk(vk)
+    {}
+
+    RunOutcome run()
+    {
+        derive();
+        const std::size_t n = m_moves.size();
+        m_capUnits.assign(n, 0);
+        m_capMm.assign(n, 0);
+        for (std::size_t k = 0; k + 1 < n; ++k)
+            vertexCaps(k);
+        bound();
+        std::size_t first = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const bool exact = m_options.strategy == PlanStrategy::ExactStop;
+            if (k + 1 < n && !exact && m_capUnits[k] < kMinSpeed && softStopAllowed(k)) {
+                // A sharp corner ends the chain at the unit's smallest speed; the queue keeps
+                // running, so the unit neither rests nor pauses T there.
+                m_capUnits[k] = kMinSpeed;
+                ++m_out.chains;
+            } else if (k + 1 == n || m_capUnits[k] < kMinSpeed) {
+                chain(first, k);
+                first = k + 1;
+            }
+        }
+        jumpStats();
+        return std::move(m_out);
+    }
+
+private:
+    void derive()
+    {
+        m_d.resize(m_moves.size());
+        for (std::size_t k = 0; k < m_moves.size(); ++k)
+            deriveOne(m_moves[k], m_d[k]);
+        chooseAccels();
+    }
+
+    // A per vector: the smallest path-acceleration cap within a window of neighbours (step
+    // rounding makes the direction of tiny vectors jitter), kept from the previous vector while
+    // it lies within a tolerance below the cap. Fewer A commands: A cannot travel in packets.
+    void chooseAccels()
+    {
+        const std::size_t n = m_d.size();
+        const std::size_t w = static_cast<std::size_t>(std::max(0, m_options.accelWindow));
+        std::int64_t last = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            Derived &r = m_d[k];
+            double a = r.aMm; // r.aMm stays the limit itself: the bound uses it
+            for (std::size_t j = k > w ? k - w : 0; j < std::min(n, k + w + 1); ++j)
+                a = std::min(a, m_d[j].aMm);
+            const auto cap =
+                std::max<std::int64_t>(1, static_cast<std::int64_t>(floorUnits(a * r.f / 1000)));
+            const bool keep =
+                last > 0 && last <= cap && last >= cap * (1 - m_options.accelTolerance);
+            r.accel = keep ? last : cap;
+            last = r.accel;
+            const double whole = std::floor(r.units + 1e-9);
+            const double usable = std::max(whole - m_options.brakeMarginSteps, whole / 2);
+            r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * r.accel * 1000.0 * usable));
+        }
+    }
+
+    void deriveOne(const Move &m, Derived &r)
+    {
+        Vec4 stepMm{};
+        for (int i = 0; i < 4; ++i)
+            stepMm[i] = m.d[i] / m_config.axes[static_cast<std::size_t>(i)].stepsPerMm;
+        r.lengthMm = pathLength(stepMm);
+        r.pathLengthMm = pathLength(m.pathDelta);
+        r.uPath = normalized(m.pathDelta);
+        if (r.pathLengthMm <= 0) // rounding made a step out of a zero-length intent
+            r.uPath = normalized(stepMm), r.pathLengthMm = r.lengthMm;
+        r.units = speedUnitsLength(m.d, m_vk);
+        r.f = r.units / r.lengthMm;
+        double v = m.rapid ? kInf : m.feedMmPerS * m_options.feedOverride;
+        double a = kInf;
+        for (int i = 0; i < 4; ++i) {
+            r.uStep[i] = stepMm[i] / r.lengthMm;
+            const double u = std::abs(r.uStep[i]);
+            if (u < 1e-12)
+                continue;
+            const AxisConfig &ax = m_config.axes[static_cast<std::size_t>(i)];
+            v = std::min(v, (m.rapid ? ax.rapidMmPerMin : ax.maxSpeedMmPerMin) / 60.0 / u);
+            a = std::min(a, ax.accelMmPerS2 / u);
+        }
+        v = std::min(v, m_config.unit.maxPulseRate / r.f);
+        r.vMm = v;
+        r.aMm = a;
+        r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(v * r.f)),
+                                           kMinSpeed, m_config.unit.maxPulseRate);
+        std::int64_t major = 0;
+        for (std::int32_t c : m.d)
+            major = std::max<std::int64_t>(major, std::abs(c));
+        r.isShort = major < m_options.shortThreshold; // the unit compares major-axis steps
+    }
+
+    // Junction-deviation and curvature caps of the path speed at the vertex after move k, mm/s.
+    void pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double &jd, double &curv) const
+    {
+        const double cosTheta = -dot(u0, u1);
+        jd = kInf;
+        curv = kInf;
+        if (cosTheta < -0.999999)
+            return; // straight on
+        if (cosTheta > 0.999999) {
+            jd = curv = 0; // reversal
+            return;
+        }
+        Vec4 j{};
+        for (int i = 0; i < 4; ++i)
+            j[i] = u1[i] - u0[i];
+        j = normalized(j);
+        double aj = kInf;
+        for (int i = 0; i < 4; ++i) {
+            if (std::abs(j[i]) > 1e-12)
+                aj = std::min(aj, m_config.axes[static_cast<std::size_t>(i)].accelMmPerS2 /
+                                      std::abs(j[i]));
+        }
+        const double sinHalfTheta = std::sqrt(0.5 * (1 - cosTheta));
+        jd = std::sqrt(aj * m_moves[k + 1].junctionDeviationMm * sinHalfTheta / (1 - sinHalfTheta));
+        const double sinHalfPhi = std::sqrt(0.5 * (1 + cosTheta)); // φ: the turn angle
+        const double chord = std::min(m_d[k].pathLengthMm, m_d[k + 1].pathLengthMm);
+        curv = std::sqrt(aj * chord / (2 * sinHalfPhi));
+    }
+
+    // Per-axis speed step at the vertex after move k, per unit of the scalar speed there.
+    double jumpPerUnit(std::size_t k, int i) const
+    {
+        return std::abs(m_d[k].uStep[i] / m_d[k].f - m_d[k + 1].uStep[i] / m_d[k + 1].f);
+    }
+
+    void vertexCaps(std::size_t k)
+    {
+        const Derived &a = m_d[k];
+        const Derived &b = m_d[k + 1];
+        if (m_moves[k].stopAfter)
+            return; // caps stay 0: the program asks for a stop here
+        boundCap(k);
+        if (m_options.strategy == PlanStrategy::ExactStop)
+            return;
+        const double fMin = std::min(a.f, b.f);
+        double units = static_cast<double>(std::min(a.speed, b.speed));
+        double jd = 0, curv = 0;
+        if (m_options.strategy == PlanStrategy::GrblJunction) {
+            pathCaps(k, a.uStep, b.uStep, jd, curv); // grbl: geometry of the steps, no curvature
+            units = std::min(units, jd * fMin);
+        } else {
+            pathCaps(k, a.uPath, b.uPath, jd, curv);
+            units = std::min({units, jd * fMin, curv * fMin});
+            for (int i = 0; i < 4; ++i) {
+                const double per = jumpPerUnit(k, i);
+                if (per > 1e-15)
+                    units = std::min(
+                        units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
+            }
+        }
+        m_capUnits[k] = static_cast<std::int64_t>(floorUnits(units));
+    }
+
+    // The bound's cap at the vertex after move k: the same limits on a continuous path speed.
+    void boundCap(std::size_t k)
+    {
+        const Derived &a = m_d[k];
+        const Derived &b = m_d[k + 1];
+        double jd = 0, curv = 0;
+        pathCaps(k, a.uPath, b.uPath, jd, curv);
+        double mm = std::min({a.vMm, b.vMm, jd, curv});
+        for (int i = 0; i < 4; ++i) {
+            const double per = std::abs(a.uStep[i] - b.uStep[i]);
+            if (per > 1e-15)
+                mm = std::min(mm, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
+        }
+        m_capMm[k] = mm;
+    }
+
+    // Integer passes over moves first..last (a chain), then the vectors as they go out.
+    void chain(std::size_t first, std::size_t last)
+    {
+        ++m_out.chains;
+        std::vector<std::int64_t> b(last - first + 1, 0);
+        for (std::size_t k = first; k < last; ++k)
+            b[k - first] = m_capUnits[k];
+        b.back() = 0;
+        if (m_options.strategy == PlanStrategy::GrblJunction)
+            windowedPasses(first, b);
+        else
+            fullPasses(first, b);
+        for (std::size_t k = first; k <= last; ++k) {
+            const Derived &r = m_d[k];
+            PlannedVector v{m_moves[k].d, m_moves[k].endSteps, r.speed,         r.accel,
+                            b[k - first], k == last,           m_moves[k].line, false};
+            if (k == last) // nothing follows: the unit brakes to 0; a short vector cruises at B
+                v.brake = r.isShort ? r.speed : kMinSpeed;
+            v.line = m_options.strategy == PlanStrategy::ExactStop;
+            m_out.vectors.push_back(v);
+        }
+    }
+
+    // True when passing the vertex after move k at the smallest speed (10 pulses/s) keeps every
+    // axis's speed step within its limit; else the queue must drain there (a real stop).
+    bool softStopAllowed(std::size_t k) const
+    {
+        for (int i = 0; i < 4; ++i) {
+            if (kMinSpeed * jumpPerUnit(k, i) >
+                m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS)
+                return false;
+        }
+        return true;
+    }
+
+    void fullPasses(std::size_t first, std::vector<std::int64_t> &b) const
+    {
+        const std::size_t n = b.size();
+        for (std::size_t k = n - 1; k > 0; --k) {
+            const std::int64_t entry = isqrt(b[k] * b[k] + m_d[first + k].twoAU);
+            b[k - 1] = std::min(b[k - 1], entry);
+        }
+        std::int64_t e = 0;
+        for (std::size_t k = 0; k + 1 < n; ++k) {
+            b[k] = std::min(b[k], isqrt(e * e + m_d[first + k].twoAU));
+            e = b[k];
+        }
+    }
+
+    // grbl: when a block starts, the planner sees only the next `lookahead` blocks and plans
+    // the last of them to stop.
+    void windowedPasses(std::size_t first, std::vector<std::int64_t> &b) const
+    {
+        const std::size_t n = b.size();
+        const std::size_t window = static_cast<std::size_t>(std::max(2, m_options.grblLookahead));
+        const std::vector<std::int64_t> caps = b;
+        std::int64_t e = 0;
+        for (std::size_t k = 0; k + 1 < n; ++k) {
+            const std::size_t end = std::min(n - 1, k + window - 1);
+            std::int64_t exit = 0; // the buffer's last block plans a stop
+            for (std::size_t j = end; j > k; --j)
+                exit = std::min(caps[j - 1], isqrt(exit * exit + m_d[first + j].twoAU));
+            b[k] = std::min(exit, isqrt(e * e + m_d[first + k].twoAU));
+            e = b[k];
+        }
+    }
+
+    // Continuous backward/forward passes in mm/s with the bound's caps; closed-form times.
+    void bound()
+    {
+        const std::size_t n = m_moves.size();
+        if (n == 0)
+            return;
+        std::vector<double> x(m_capMm);
+        x[n - 1] = 0;
+        for (std::size_t k = n - 1; k > 0; --k) {
+            const double entry = std::sqrt(x[k] * x[k] + 2 * m_d[k].aMm * m_d[k].lengthMm);
+            x[k - 1] = std::min(x[k - 1], entry);
+        }
+        double e = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const Derived &r = m_d[k];
+            x[k] = std::min(x[k], std::sqrt(e * e + 2 * r.aMm * r.lengthMm));
+            m_out.boundS += runVector(e, r.vMm, x[k], r.aMm, r.lengthMm).timeS;
+            e = x[k];
+        }
+    }
+
+    void jumpStats()
+    {
+        for (std::size_t k = 0; k + 1 < m_out.vectors.size(); ++k) {
+            const PlannedVector &v = m_out.vectors[k];
+            if (v.chainEnd)
+                continue;
+            bool over = false;
+            for (int i = 0; i < 4; ++i) {
+                const double jump = static_cast<double>(v.brake) * jumpPerUnit(k, i);
+                const double limit = m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS;
+                m_out.maxJumpMmPerS = std::max(m_out.maxJumpMmPerS, jump);
+                const double ratio = limit > 0 ? jump / limit : (jump > 0 ? kInf : 0);
+                m_out.maxJumpRatio = std::max(m_out.maxJumpRatio, ratio);
+                over = over || ratio > 1 + 1e-9;
+            }
+            m_out.jumpOverLimit += over ? 1 : 0;
+        }
+    }
+
+    const std::vector<Move> &m_moves;
+    const MachineConfig &m_config;
+    const PlanOptions &m_options;
+    bool m_vk;
+    std::vector<Derived> m_d;
+    std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
+    std::vector<double> m_capMm;          // the bound's cap there, mm/s
+    RunOutcome m_out;
+};
+
+} // namespace
+
+RunOutcome planRun(const std::vector<Move> &moves, const MachineConfig &config,
+                   const PlanOptions &options, bool vk)
+{
+    return RunPlanner(moves, config, options, vk).run();
+}
+
+} // namespace frezka::machine::detail

@@ -1,0 +1,55 @@
+#pragma once
+// Internal to frezka_machine: vertex caps, the integer backward/forward passes and the
+// time-optimal bound for a run of moves that starts and ends at rest (docs/planner.md §3-§5).
+
+#include "machine/machineconfig.h"
+#include "machine/planner.h"
+#include "machine/unitprogram.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace frezka::machine::detail {
+
+// One non-zero step vector of the path, as the walk over the toolpath produced it.
+struct Move
+{
+    std::array<std::int32_t, 4> d{}; // relative steps (difference of rounded absolutes)
+    Steps4 endSteps{};
+    std::array<double, 4> pathDelta{}; // the intended mm (deg) displacement, before rounding
+    double feedMmPerS = 0;             // requested path speed; ignored for rapids
+    bool rapid = false;
+    bool stopAfter = false;         // the move must end at rest (G61 exact stop)
+    double junctionDeviationMm = 0; // in force for the vertex before this move
+    std::uint32_t line = 0;
+};
+
+// A vector as it goes to the unit.
+struct PlannedVector
+{
+    std::array<std::int32_t, 4> d{};
+    Steps4 endSteps{};
+    std::int64_t speed = 0; // V, pulses/s in the mode's units
+    std::int64_t accel = 0; // A, thousands of pulses/s²
+    std::int64_t brake = 0; // B, pulses/s; the chain's last vector: see chainEnd
+    bool chainEnd = false;  // the unit must stop after this vector (queue drains)
+    std::uint32_t sourceLine = 0;
+    bool line = false; // send as L (stand-alone, from and to rest), not C
+};
+
+struct RunOutcome
+{
+    std::vector<PlannedVector> vectors;
+    std::size_t chains = 0;
+    double boundS = 0;             // time-optimal bound of these moves
+    double maxJumpMmPerS = 0;      // largest per-axis speed step at a vertex of the plan
+    double maxJumpRatio = 0;       // largest speed step / axis limit
+    std::size_t jumpOverLimit = 0; // vertices with a step over an axis limit
+};
+
+// Plans moves that start and end at rest. vk: speeds are VK path speeds (else VN major axis).
+RunOutcome planRun(const std::vector<Move> &moves, const MachineConfig &config,
+                   const PlanOptions &options, bool vk);
+
+} // namespace frezka::machine::detail

@@ -1,0 +1,34 @@
+#pragma once
+// Steps from millimetres: the one function and the one rounding rule (docs/planner.md §2).
+//
+// Every absolute position is rounded on its own, to the nearest step, halves away from zero
+// (std::llround); a relative vector is always the difference of two rounded absolutes. So after
+// any number of moves the unit's counter equals stepsOf(final mm) exactly: rounding never drifts.
+
+#include "gcode/toolpath.h"
+#include "machine/machineconfig.h"
+#include "machine/unitprogram.h"
+
+#include <cmath>
+#include <cstdint>
+
+namespace frezka::machine {
+
+// Largest magnitude of a unit position counter or vector component (signed 32 bit).
+inline constexpr std::int64_t kMaxCounter = 2147483647;
+
+// Absolute step count of a position in mm (A: degrees) at stepsPerMm.
+inline std::int64_t stepsOf(double mm, double stepsPerMm)
+{
+    return std::llround(mm * stepsPerMm);
+}
+
+// Absolute steps of a machine position for every axis (absent axes: their value still rounds,
+// the planner refuses motion on them).
+inline Steps4 stepsOf(const gcode::Point4 &p, const MachineConfig &config)
+{
+    return {stepsOf(p.x, config.axes[0].stepsPerMm), stepsOf(p.y, config.axes[1].stepsPerMm),
+            stepsOf(p.z, config.axes[2].stepsPerMm), stepsOf(p.a, config.axes[3].stepsPerMm)};
+}
+
+} // namespace frezka::machine

@@ -1,0 +1,199 @@
+#include "machine/machineconfig.h"
+
+#include <gtest/gtest.h>
+
+#include <QTemporaryDir>
+
+using namespace frezka;
+using namespace frezka::machine;
+
+namespace {
+
+bool hasError(const ConfigResult &r, ConfigErrorCode code, const std::string &key)
+{
+    for (const ConfigError &e : r.errors) {
+        if (e.code == code && e.key == key)
+            return true;
+    }
+    return false;
+}
+
+std::string errorsText(const ConfigResult &r)
+{
+    std::string s;
+    for (const ConfigError &e : r.errors)
+        s += e.message + "\n";
+    return s;
+}
+
+} // namespace
+
+TEST(MachineConfig, ShippedProfilesLoadAndMatchTheDefaults)
+{
+    const std::pair<const char *, protocol::Variant> shipped[] = {
+        {"gve84", protocol::Variant::Gve84},
+        {"gve64", protocol::Variant::Gve64},
+        {"gve114", protocol::Variant::Gve114}};
+    for (const auto &[name, variant] : shipped) {
+        const std::string path =
+            std::string(FREZKA_SOURCE_DIR) + "/resources/machines/" + name + ".json";
+        const ConfigResult r = loadMachineConfig(path);
+        ASSERT_TRUE(r.config.has_value()) << path << "\n" << errorsText(r);
+        EXPECT_EQ(*r.config, defaultMachineConfig(variant)) << name;
+        EXPECT_TRUE(validateMachineConfig(*r.config).empty()) << name;
+    }
+}
+
+TEST(MachineConfig, SaveThenLoadGivesTheSameConfig)
+{
+    QTemporaryDir dir;
+    MachineConfig c = defaultMachineConfig(protocol::Variant::Gve114);
+    c.name = "Big \"mill\" ü";
+    c.axes[3].present = true;
+    c.axes[0].stepsPerMm = 320.5;
+    c.axes[1].invertDirection = true;
+    c.eeprom.interruptEnable = 0xC7;
+    c.motion.speedMode = SpeedModeChoice::Vn;
+    const std::string path = dir.filePath("m.json").toStdString();
+    ASSERT_FALSE(saveMachineConfig(c, path).has_value());
+    const ConfigResult r = loadMachineConfig(path);
+    ASSERT_TRUE(r.config.has_value()) << errorsText(r);
+    EXPECT_EQ(*r.config, c);
+}
+
+TEST(MachineConfig, MissingKeysTakeTheVariantDefaults)
+{
+    const ConfigResult r = parseMachineConfig(R"({"unit": {"variant": "gve84"}})");
+    ASSERT_TRUE(r.config.has_value()) << errorsText(r);
+    EXPECT_EQ(*r.config, defaultMachineConfig(protocol::Variant::Gve84));
+    EXPECT_FALSE(r.config->axes[3].present);
+}
+
+TEST(MachineConfig, SyntaxErrorNamesLineAndColumn)
+{
+    const ConfigResult r = parseMachineConfig("{\n  \"name\": \"x\",\n  \"unit\": {,}\n}");
+    ASSERT_FALSE(r.config.has_value());
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].code, ConfigErrorCode::Syntax);
+    EXPECT_NE(r.errors[0].message.find("line 3"), std::string::npos) << r.errors[0].message;
+}
+
+TEST(MachineConfig, EveryErrorIsReportedWithItsKey)
+{
+    const ConfigResult r = parseMachineConfig(R"({
+        "axes": {"x": {"stepsPerMm": 0, "present": "yes", "stepsPerMM": 3}},
+        "motion": {"pauseMs": 30, "speedMode": "fast"},
+        "eeprom": {"polarity": "0x1FF"},
+        "colour": "red"
+    })");
+    EXPECT_FALSE(r.config.has_value());
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::OutOfRange, "axes.x.stepsPerMm")) << errorsText(r);
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::WrongType, "axes.x.present"));
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::UnknownKey, "axes.x.stepsPerMM"));
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::OutOfRange, "motion.pauseMs"));
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::BadChoice, "motion.speedMode"));
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::OutOfRange, "eeprom.polarity"));
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::UnknownKey, "colour"));
+    EXPECT_EQ(r.errors.size(), 7u) << errorsText(r);
+    for (const ConfigError &e : r.errors)
+        EXPECT_EQ(e.message.rfind(e.key + ": ", 0), 0u) << e.message;
+}
+
+TEST(MachineConfig, RangeMessageSaysTheRange)
+{
+    const ConfigResult r = parseMachineConfig(R"({"motion": {"pauseMs": 30}})");
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].message, "motion.pauseMs: is 30, must be 1 .. 24 ms");
+}
+
+TEST(MachineConfig, SpeedBeyondThePulseRateIsInconsistent)
+{
+    // 200 steps/mm at 50 000 pulses/s allow 15 000 mm/min.
+    const ConfigResult r = parseMachineConfig(
+        R"({"axes": {"x": {"maxSpeedMmPerMin": 15001, "rapidMmPerMin": 15001}}})");
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "axes.x.maxSpeedMmPerMin"))
+        << errorsText(r);
+    EXPECT_NE(errorsText(r).find("at most 15000 mm/min"), std::string::npos) << errorsText(r);
+    const ConfigResult ok = parseMachineConfig(
+        R"({"axes": {"x": {"maxSpeedMmPerMin": 15000, "rapidMmPerMin": 15000}}})");
+    EXPECT_TRUE(ok.config.has_value()) << errorsText(ok);
+}
+
+TEST(MachineConfig, VariantRulesAreChecked)
+{
+    const ConfigResult r = parseMachineConfig(R"({
+        "unit": {"variant": "gve84", "maxPulseRate": 125000},
+        "link": {"baud": 57600},
+        "axes": {"a": {"present": true}, "x": {"softMinMm": 10, "softMaxMm": 10}},
+        "outputs": {"out2": "coolant"},
+        "eeprom": {"mpg": "on"}
+    })");
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "unit.maxPulseRate")) << errorsText(r);
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "link.baud"));
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "axes.a.present"));
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "axes.x.softMaxMm"));
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "outputs.out2"));
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "eeprom.mpg"));
+}
+
+TEST(MachineConfig, OldGve64FirmwareHasNoVk)
+{
+    const ConfigResult r =
+        parseMachineConfig(R"({"unit": {"firmwareVersion": 18}, "motion": {"speedMode": "vk"}})");
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "motion.speedMode")) << errorsText(r);
+}
+
+TEST(MachineConfig, ValidateChecksConfigsBuiltInCode)
+{
+    MachineConfig c = defaultMachineConfig(protocol::Variant::Gve64);
+    EXPECT_TRUE(validateMachineConfig(c).empty());
+    c.axes[1].accelMmPerS2 = 0;
+    const auto errors = validateMachineConfig(c);
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0].key, "axes.y.accelMmPerS2");
+}
+
+TEST(MachineConfig, UnreadableFileIsAnError)
+{
+    const ConfigResult r = loadMachineConfig("/nonexistent/profile.json");
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].code, ConfigErrorCode::FileUnreadable);
+    EXPECT_NE(r.errors[0].message.find("/nonexistent/profile.json"), std::string::npos);
+}
+
+TEST(MachineConfig, OutputBitsFollowPortZero)
+{
+    MachineConfig c = defaultMachineConfig(protocol::Variant::Gve64);
+    EXPECT_EQ(outputBit(c, OutputFunction::Coolant), 0x04); // OUT1 = bit2
+    EXPECT_EQ(outputBit(c, OutputFunction::AirBlow), 0x08); // OUT2 = bit3
+    EXPECT_EQ(outputBit(c, OutputFunction::Brake), 0x02);   // OUT3 = bit1
+    EXPECT_EQ(outputBit(c, OutputFunction::Laser), 0x00);
+    const MachineConfig g84 = defaultMachineConfig(protocol::Variant::Gve84);
+    EXPECT_EQ(outputBit(g84, OutputFunction::Spindle), 0x01);
+    EXPECT_EQ(outputBit(g84, OutputFunction::Coolant), 0x00);
+}
+
+TEST(MachineConfig, EepromImageCarriesAxisSettings)
+{
+    MachineConfig c = defaultMachineConfig(protocol::Variant::Gve64);
+    c.axes[0].stepsPerMm = 250;
+    c.axes[1].invertDirection = true;
+    const auto entries = eepromEntries(c);
+    auto find = [&](int addr) {
+        for (const EepromEntry &e : entries) {
+            if (e.address == addr)
+                return e;
+        }
+        return EepromEntry{0xEE, EepromKind::Byte, -1, "missing"};
+    };
+    EXPECT_EQ(find(0x30).value, 250);
+    EXPECT_EQ(find(0x30).kind, EepromKind::Float);
+    EXPECT_EQ(find(0x05).value, 0xFD); // DIR Y inverted: bit1 cleared
+    EXPECT_EQ(find(0x01).value, 0x02); // OUT1 coolant
+    EXPECT_EQ(find(0x06).value, 0x01); // MPG on
+    EXPECT_EQ(find(0x58).value, 10);   // Z homed toward its switch at 10 mm/s
+    const MachineConfig g114 = defaultMachineConfig(protocol::Variant::Gve114);
+    EXPECT_EQ(eepromEntries(g114).back().address, 0xFD);
+    const auto e84 = eepromEntries(defaultMachineConfig(protocol::Variant::Gve84));
+    EXPECT_EQ(e84.size(), 3u);
+}

@@ -1,0 +1,362 @@
+#include "machine/planner.h"
+
+#include "machine/steps.h"
+#include "plancheck.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace frezka;
+using namespace frezka::machine;
+using namespace frezka::machine::test;
+using gcode::Point4;
+
+namespace {
+
+MachineConfig gve64()
+{
+    return defaultMachineConfig(protocol::Variant::Gve64);
+}
+
+// Limits that let one cap act alone: huge jumps, deviation and accelerations.
+MachineConfig looseConfig()
+{
+    MachineConfig c = gve64();
+    for (AxisConfig &a : c.axes) {
+        a.maxJumpMmPerS = 1000;
+        a.accelMmPerS2 = 100000;
+        a.softMinMm = -1000;
+        a.softMaxMm = 1000;
+    }
+    c.motion.junctionDeviationMm = 10;
+    return c;
+}
+
+PlanResult planOk(const gcode::Toolpath &tp, const MachineConfig &c, PlanOptions o = {})
+{
+    PlanResult r = plan(tp, c, o);
+    for (const PlanError &e : r.errors)
+        ADD_FAILURE() << e.message;
+    return r;
+}
+
+std::vector<UnitCommand> ops(const PlanResult &r, UnitOp op)
+{
+    std::vector<UnitCommand> out;
+    for (const UnitCommand &c : r.program.commands) {
+        if (c.op == op)
+            out.push_back(c);
+    }
+    return out;
+}
+
+Steps4 finalSteps(const PlanResult &r)
+{
+    Steps4 pos = r.program.startSteps;
+    for (const UnitCommand &c : r.program.commands) {
+        if (c.op == UnitOp::Vector || c.op == UnitOp::Line) {
+            for (int i = 0; i < 4; ++i)
+                pos[i] += c.d[i];
+        }
+    }
+    return pos;
+}
+
+void expectValid(const PlanResult &r)
+{
+    bool vk = r.stats.speedModeVk;
+    const auto vs = replay(r.program, &vk);
+    expectFeasible(vs, vk);
+    EXPECT_EQ(r.stats.brakeViolations, 0u);
+    EXPECT_EQ(r.stats.jumpOverLimit, 0u);
+}
+
+} // namespace
+
+TEST(Steps, OneRoundingRuleHalvesAwayFromZero)
+{
+    EXPECT_EQ(stepsOf(0.0025, 200), 1);
+    EXPECT_EQ(stepsOf(-0.0025, 200), -1);
+    EXPECT_EQ(stepsOf(0.0024, 200), 0);
+    EXPECT_EQ(stepsOf(123.456, 200), 24691);
+}
+
+TEST(Steps, NoDriftAfterManyMoves)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({1, 1, -1, 0});
+    Point4 p{1, 1, -1, 0};
+    for (int i = 0; i < 5000; ++i) {
+        p.x += 0.0137;
+        p.y += (i % 7 == 0) ? -0.0031 : 0.0013;
+        tp.appendFeed(p, 1200, static_cast<std::uint32_t>(i + 1));
+    }
+    const PlanResult r = planOk(tp, gve64());
+    EXPECT_EQ(finalSteps(r), stepsOf(p, gve64()));
+    replay(r.program); // endSteps of every command follow the vectors; no zero vectors
+    expectValid(r);
+}
+
+TEST(Steps, SubStepSegmentsSendOnlyWholeSteps)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    for (int i = 1; i <= 100; ++i) // 0.001 mm = 0.2 steps each
+        tp.appendFeed({10 + 0.001 * i, 10, -1, 0}, 600, static_cast<std::uint32_t>(i));
+    const PlanResult r = planOk(tp, gve64());
+    const auto vectors = ops(r, UnitOp::Vector);
+    EXPECT_EQ(vectors.size(), 20u);
+    for (const UnitCommand &c : vectors)
+        EXPECT_EQ(c.d, (std::array<std::int32_t, 4>{1, 0, 0, 0}));
+    EXPECT_EQ(finalSteps(r)[0], stepsOf(10.1, 200));
+    EXPECT_EQ(r.stats.chains, 1u);
+    expectValid(r);
+}
+
+TEST(Steps, ZeroLengthSegmentsSendNothingAndKeepTheChain)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    tp.appendFeed({20, 10, -1, 0}, 1200, 1);
+    tp.appendFeed({20, 10, -1, 0}, 1200, 2);      // zero length
+    tp.appendFeed({20.0001, 10, -1, 0}, 1200, 3); // sub-step: rounds to the same step
+    tp.appendFeed({30, 10, -1, 0}, 1200, 4);
+    const PlanResult r = planOk(tp, gve64());
+    const auto vectors = ops(r, UnitOp::Vector);
+    ASSERT_EQ(vectors.size(), 2u);
+    EXPECT_EQ(vectors[1].sourceLine, 4u);
+    EXPECT_EQ(r.stats.chains, 1u);
+    EXPECT_EQ(ops(r, UnitOp::WaitIdle).size(), 1u);
+    const auto vs = replay(r.program);
+    EXPECT_EQ(vs[0].b, vs[0].v); // straight on at full speed
+    expectValid(r);
+}
+
+TEST(Corners, VelocityJumpLimitsASquareCorner)
+{
+    MachineConfig c = looseConfig();
+    c.axes[0].maxJumpMmPerS = 2;
+    c.axes[1].maxJumpMmPerS = 3;
+    gcode::Toolpath tp;
+    tp.setOrigin({0, 0, 0, 0});
+    tp.appendFeed({50, 0, 0, 0}, 3000, 1);
+    tp.appendFeed({50, 50, 0, 0}, 3000, 2);
+    const PlanResult r = planOk(tp, c);
+    const auto vs = replay(r.program);
+    ASSERT_EQ(vs.size(), 2u);
+    // X stops from B/200 mm/s to 0, Y starts from 0 to B/200: X's 2 mm/s limit decides.
+    EXPECT_EQ(vs[0].b, 400);
+    EXPECT_DOUBLE_EQ(r.stats.maxVertexJumpMmPerS, 2.0);
+    EXPECT_DOUBLE_EQ(r.stats.maxJumpRatio, 1.0);
+    expectValid(r);
+}
+
+TEST(Corners, JunctionDeviationLimitsACorner)
+{
+    MachineConfig c = looseConfig();
+    c.motion.junctionDeviationMm = 0.01;
+    c.axes[0].accelMmPerS2 = 400;
+    c.axes[1].accelMmPerS2 = 400;
+    gcode::Toolpath tp;
+    tp.setOrigin({0, 0, 0, 0});
+    tp.appendFeed({50, 0, 0, 0}, 3000, 1);
+    tp.appendFeed({50, 50, 0, 0}, 3000, 2);
+    const PlanResult r = planOk(tp, c);
+    const auto vs = replay(r.program);
+    // grbl's formula: the junction direction (-1, 1)/sqrt2 allows 400 * sqrt2 mm/s².
+    const double aj = 400 * std::sqrt(2.0);
+    const double s = std::sqrt(0.5);
+    const double v = std::sqrt(aj * 0.01 * s / (1 - s));
+    EXPECT_EQ(vs[0].b, static_cast<std::int64_t>(std::floor(v * 200)));
+    expectValid(r);
+}
+
+TEST(Corners, ReversalStopsAtTheUnitsSmallestSpeed)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    tp.appendFeed({30, 10, -1, 0}, 3000, 1);
+    tp.appendFeed({10, 10, -1, 0}, 3000, 2);
+    const PlanResult r = planOk(tp, gve64());
+    const auto vs = replay(r.program);
+    ASSERT_EQ(vs.size(), 2u);
+    EXPECT_EQ(vs[0].b, 10);
+    EXPECT_FALSE(vs[0].chainEnd); // the queue keeps running through the stop
+    EXPECT_EQ(r.stats.chains, 2u);
+    expectValid(r);
+}
+
+TEST(Corners, ReversalDrainsTheQueueWhenEvenTheSmallestSpeedJumpsTooFar)
+{
+    MachineConfig c = gve64();
+    c.axes[0].maxJumpMmPerS = 0.05; // 10 pulses/s each way = 0.1 mm/s step at 200 steps/mm
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    tp.appendFeed({30, 10, -1, 0}, 3000, 1);
+    tp.appendFeed({10, 10, -1, 0}, 3000, 2);
+    const PlanResult r = planOk(tp, c);
+    const auto vs = replay(r.program);
+    ASSERT_EQ(vs.size(), 2u);
+    EXPECT_TRUE(vs[0].chainEnd);
+    EXPECT_EQ(ops(r, UnitOp::WaitIdle).size(), 2u);
+    expectValid(r);
+}
+
+TEST(Corners, TenTinySegmentsMakingAUTurnKeepCentripetalAcceleration)
+{
+    const MachineConfig c = gve64();
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 20, -1, 0});
+    tp.appendFeed({50, 20, -1, 0}, 3000, 1);
+    // 10 chords of a half circle of radius 0.2 mm (each 0.0626 mm, 18° apart).
+    const double r0 = 0.2;
+    for (int k = 1; k <= 10; ++k) {
+        const double phi = -std::numbers::pi / 2 + std::numbers::pi * k / 10;
+        tp.appendFeed({50 + r0 * std::cos(phi), 20.2 + r0 * std::sin(phi), -1, 0}, 3000,
+                      static_cast<std::uint32_t>(k + 1));
+    }
+    tp.appendFeed({10, 20.4, -1, 0}, 3000, 12);
+    const PlanResult r = planOk(tp, c);
+    const auto vs = replay(r.program);
+    ASSERT_EQ(vs.size(), 12u);
+    EXPECT_EQ(r.stats.chains, 1u); // 18° corners: no stop
+    // Centripetal acceleration v²/r within the axes' 400 mm/s² (VK: B / 200 = mm/s) at the
+    // vertices inside the turn (entering and leaving it, braking over one chord is allowed).
+    for (std::size_t k = 1; k + 2 < vs.size(); ++k) {
+        const double v = static_cast<double>(vs[k].b) / 200.0;
+        EXPECT_LE(v * v / r0, 400 * std::sqrt(2.0) * 1.0001) << "vertex " << k;
+    }
+    expectValid(r);
+    EXPECT_LE(r.stats.estimatedS, 1.02 * r.stats.boundS);
+}
+
+TEST(Corners, DenseChordedCircleRunsSmoothly)
+{
+    const MachineConfig c = gve64();
+    gcode::Toolpath tp;
+    tp.setOrigin({25, 20, -1, 0});
+    gcode::ArcInfo arc;
+    arc.centre = {20, 20, -1, 0};
+    arc.turns = 3; // three full circles
+    tp.appendArc({25, 20, -1, 0}, arc, 3000, 1);
+    const PlanResult r = planOk(tp, c);
+    const auto vs = replay(r.program);
+    EXPECT_GT(vs.size(), 300u);
+    EXPECT_EQ(r.stats.chains, 1u);
+    EXPECT_EQ(ops(r, UnitOp::Speed).size(), 1u); // one path speed all around
+    // Far from the start and end the vertex speed is steady: no stop-and-go.
+    std::int64_t lo = vs[vs.size() / 3].b, hi = lo;
+    for (std::size_t k = vs.size() / 3; k < 2 * vs.size() / 3; ++k) {
+        lo = std::min(lo, vs[k].b);
+        hi = std::max(hi, vs[k].b);
+    }
+    EXPECT_GE(lo, hi / 2);
+    EXPECT_EQ(finalSteps(r), stepsOf(Point4{25, 20, -1, 0}, c));
+    expectValid(r);
+    EXPECT_LE(r.stats.estimatedS, 1.02 * r.stats.boundS);
+}
+
+TEST(Speeds, AxisSpeedLimitCapsTheFeed)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    tp.appendFeed({60, 60, -1, 0}, 10000, 1);  // X and Y may each do 4000 mm/min
+    tp.appendFeed({60, 60, -11, 0}, 10000, 2); // Z may do 2000 mm/min
+    const PlanResult r = planOk(tp, gve64());
+    const auto vs = replay(r.program);
+    ASSERT_EQ(vs.size(), 2u);
+    // VK: V is the path step rate. Diagonal: path 4000/60 * sqrt2 mm/s.
+    EXPECT_EQ(vs[0].v, static_cast<std::int64_t>(std::floor(4000 / 60.0 * std::sqrt(2.0) * 200)));
+    EXPECT_EQ(vs[1].v, static_cast<std::int64_t>(std::floor(2000 / 60.0 * 200 + 1e-6)));
+    expectValid(r);
+}
+
+TEST(Speeds, PathSpeedIsTheFeedWhateverTheAxisScales)
+{
+    MachineConfig c = gve64();
+    c.axes[0].stepsPerMm = 200;
+    c.axes[1].stepsPerMm = 320;
+    c.axes[2].stepsPerMm = 800;
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    tp.appendFeed({40, 50, -1, 0}, 1200, 1); // 20 mm/s
+    tp.appendFeed({40, 50, -3, 0}, 1200, 2);
+    gcode::ArcInfo arc;
+    arc.centre = {40, 40, -3, 0};
+    tp.appendArc({40, 50, -3, 0}, arc, 1200, 3);
+    const PlanResult r = planOk(tp, c);
+    EXPECT_FALSE(r.stats.speedModeVk); // unequal scales: VN, speeds per vector
+    bool vk = true;
+    const auto vs = replay(r.program, &vk);
+    EXPECT_FALSE(vk);
+    for (const Captured &v : vs) {
+        const double dx = v.d[0] / 200.0, dy = v.d[1] / 320.0, dz = v.d[2] / 800.0;
+        const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+        const double major = speedUnitsLength(v.d, false);
+        const double pathSpeed = v.v * length / major; // mm/s the unit runs at V
+        EXPECT_LE(pathSpeed, 20.0 + 1e-9);
+        EXPECT_GT(pathSpeed, 20.0 - length / major * 1.0001); // within one pulse/s
+    }
+    expectValid(r);
+    EXPECT_LE(r.stats.estimatedS, 1.02 * r.stats.boundS);
+}
+
+TEST(Passes, BackwardAndForwardFitEveryVectorInIntegers)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    std::uint32_t line = 1;
+    // Short colinear hops from rest: speeds limited by accelerating and braking within them.
+    for (int i = 1; i <= 40; ++i)
+        tp.appendFeed({10 + 0.02 * i, 10 + 0.01 * i, -1, 0}, 6000, line++);
+    tp.appendFeed({30, 20, -1, 0}, 6000, line++); // straight on
+    const PlanResult r = planOk(tp, gve64());
+    const auto vs = replay(r.program);
+    expectValid(r);
+    // The first vertex is as fast as accelerating from rest over the first vector allows.
+    // Usable distance: whole speed units less the 0.25-step braking margin.
+    const double usable = std::floor(speedUnitsLength(vs[0].d, true)) - 0.25;
+    const auto room = static_cast<std::int64_t>(2.0 * vs[0].a * 1000 * usable);
+    EXPECT_LE(vs[0].b * vs[0].b, room);
+    EXPECT_GT((vs[0].b + 1) * (vs[0].b + 1), room);
+}
+
+TEST(Passes, TheLastVectorBrakesToRest)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    tp.appendFeed({10.05, 10, -1, 0}, 6000, 1);
+    tp.appendFeed({10.1, 10.01, -1, 0}, 6000, 2);
+    tp.appendFeed({10.15, 10.03, -1, 0}, 6000, 3);
+    const PlanResult r = planOk(tp, gve64());
+    expectValid(r);
+    const ModelResult m = runUnitModel(r.program, r.stats.speedModeVk);
+    EXPECT_EQ(m.brakeViolations, 0u);
+    EXPECT_DOUBLE_EQ(m.vertexSpeeds.back(), 0.0);
+}
+
+TEST(Strategies, BaselinesPlanTheSamePath)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({25, 20, -1, 0});
+    gcode::ArcInfo arc;
+    arc.centre = {20, 20, -1, 0};
+    tp.appendArc({25, 20, -1, 0}, arc, 3000, 1);
+    const PlanResult full = planOk(tp, gve64());
+    PlanOptions naive;
+    naive.strategy = PlanStrategy::ExactStop;
+    const PlanResult stop = planOk(tp, gve64(), naive);
+    PlanOptions grbl;
+    grbl.strategy = PlanStrategy::GrblJunction;
+    const PlanResult g = planOk(tp, gve64(), grbl);
+    EXPECT_EQ(finalSteps(stop), finalSteps(full));
+    EXPECT_EQ(finalSteps(g), finalSteps(full));
+    EXPECT_TRUE(ops(stop, UnitOp::Vector).empty());
+    EXPECT_EQ(ops(stop, UnitOp::Line).size(), ops(full, UnitOp::Vector).size());
+    EXPECT_GT(stop.stats.estimatedS, 2 * full.stats.estimatedS);
+    EXPECT_DOUBLE_EQ(stop.stats.boundS, full.stats.boundS);
+    expectFeasible(replay(g.program), g.stats.speedModeVk);
+    EXPECT_EQ(g.stats.brakeViolations, 0u);
+}
