@@ -128,13 +128,23 @@ private:
     void chooseAccels()
     {
         const std::size_t n = m_d.size();
-        const std::size_t w = static_cast<std::size_t>(std::max(0, m_options.accelWindow));
+        const double w = std::max(0.0, m_options.accelWindowSteps);
         std::int64_t last = 0;
         for (std::size_t k = 0; k < n; ++k) {
             Derived &r = m_d[k];
             double a = r.aMm; // r.aMm stays the limit itself: the bound uses it
-            for (std::size_t j = k > w ? k - w : 0; j < std::min(n, k + w + 1); ++j)
+            // Only a short vector's direction jitters with the step rounding: it takes the
+            // smallest cap of the neighbours within w speed units; a long one keeps its own.
+            double reach = r.units < w ? 0 : w;
+            for (std::size_t j = k; j > 0 && reach < w; --j) {
+                a = std::min(a, m_d[j - 1].aMm);
+                reach += m_d[j - 1].units;
+            }
+            reach = r.units < w ? 0 : w;
+            for (std::size_t j = k + 1; j < n && reach < w; ++j) {
                 a = std::min(a, m_d[j].aMm);
+                reach += m_d[j].units;
+            }
             const auto cap =
                 std::max<std::int64_t>(1, static_cast<std::int64_t>(floorUnits(a * r.f / 1000)));
             const bool keep =

@@ -69,7 +69,11 @@ public:
     }
 
 private:
-    // VK when it is exact: every present linear axis has the same scale and A never moves.
+    // VK unless the rotary axis moves (VK's path length leaves A out) or the firmware lacks it.
+    // With VK the unit's speed is the length of the step vector per second, so its ratio to the
+    // path speed in mm changes smoothly with the direction even when the axis scales differ;
+    // with VN it follows the major axis, whose ratio has kinks: measured, VK keeps the path
+    // speed closer to the program's (docs/planner.md §6).
     bool chooseVk() const
     {
         const SpeedModeChoice mode = m_config.motion.speedMode;
@@ -79,15 +83,6 @@ private:
         const bool is64 = m_config.unit.variant == protocol::Variant::Gve64;
         if (!info.hasVlVkXmNa || (is64 && m_config.unit.firmwareVersion < 19))
             return false;
-        double scale = 0;
-        for (int i = 0; i < 3; ++i) {
-            const AxisConfig &a = m_config.axes[static_cast<std::size_t>(i)];
-            if (!a.present)
-                continue;
-            if (scale != 0 && a.stepsPerMm != scale)
-                return false;
-            scale = a.stepsPerMm;
-        }
         const double a0 = m_path.origin().a;
         for (std::size_t i = 0; i < m_path.size(); ++i) {
             if (m_path.isMotion(i) && m_path.end(i).a != a0)

@@ -33,7 +33,7 @@ struct PlanOptions
     std::int64_t shortThreshold = 1; // $: vectors shorter than this run "short" (§4)
     double brakeMarginSteps = 0.25;  // distance kept in reserve when braking, steps (>= 0)
     double accelTolerance = 0.05;    // keep the last A while within this fraction below the cap
-    int accelWindow = 4;             // A: smallest cap over this many neighbours each side
+    double accelWindowSteps = 32;    // A: smallest cap of the neighbours within this distance
     double feedOverride = 1.0;       // multiplies programmed feeds (not rapids), 0.01..10
 };
 

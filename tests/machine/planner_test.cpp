@@ -275,32 +275,36 @@ TEST(Speeds, AxisSpeedLimitCapsTheFeed)
 
 TEST(Speeds, PathSpeedIsTheFeedWhateverTheAxisScales)
 {
-    MachineConfig c = gve64();
-    c.axes[0].stepsPerMm = 200;
-    c.axes[1].stepsPerMm = 320;
-    c.axes[2].stepsPerMm = 800;
-    gcode::Toolpath tp;
-    tp.setOrigin({10, 10, -1, 0});
-    tp.appendFeed({40, 50, -1, 0}, 1200, 1); // 20 mm/s
-    tp.appendFeed({40, 50, -3, 0}, 1200, 2);
-    gcode::ArcInfo arc;
-    arc.centre = {40, 40, -3, 0};
-    tp.appendArc({40, 50, -3, 0}, arc, 1200, 3);
-    const PlanResult r = planOk(tp, c);
-    EXPECT_FALSE(r.stats.speedModeVk); // unequal scales: VN, speeds per vector
-    bool vk = true;
-    const auto vs = replay(r.program, &vk);
-    EXPECT_FALSE(vk);
-    for (const Captured &v : vs) {
-        const double dx = v.d[0] / 200.0, dy = v.d[1] / 320.0, dz = v.d[2] / 800.0;
-        const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
-        const double major = speedUnitsLength(v.d, false);
-        const double pathSpeed = v.v * length / major; // mm/s the unit runs at V
-        EXPECT_LE(pathSpeed, 20.0 + 1e-9);
-        EXPECT_GT(pathSpeed, 20.0 - length / major * 1.0001); // within one pulse/s
+    for (SpeedModeChoice mode : {SpeedModeChoice::Auto, SpeedModeChoice::Vn}) {
+        MachineConfig c = gve64();
+        c.axes[0].stepsPerMm = 200;
+        c.axes[1].stepsPerMm = 320;
+        c.axes[2].stepsPerMm = 800;
+        c.motion.speedMode = mode;
+        gcode::Toolpath tp;
+        tp.setOrigin({10, 10, -1, 0});
+        tp.appendFeed({40, 50, -1, 0}, 1200, 1); // 20 mm/s
+        tp.appendFeed({40, 50, -3, 0}, 1200, 2);
+        gcode::ArcInfo arc;
+        arc.centre = {40, 40, -3, 0};
+        tp.appendArc({40, 50, -3, 0}, arc, 1200, 3);
+        const PlanResult r = planOk(tp, c);
+        // Auto takes VK (A does not move); V is then the step vector's length per second.
+        EXPECT_EQ(r.stats.speedModeVk, mode == SpeedModeChoice::Auto);
+        bool vk = !r.stats.speedModeVk;
+        const auto vs = replay(r.program, &vk);
+        EXPECT_EQ(vk, r.stats.speedModeVk);
+        for (const Captured &v : vs) {
+            const double dx = v.d[0] / 200.0, dy = v.d[1] / 320.0, dz = v.d[2] / 800.0;
+            const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+            const double units = speedUnitsLength(v.d, vk);
+            const double pathSpeed = v.v * length / units; // mm/s the unit runs at V
+            EXPECT_LE(pathSpeed, 20.0 + 1e-9);
+            EXPECT_GT(pathSpeed, 20.0 - length / units * 1.0001); // within one pulse/s
+        }
+        expectValid(r);
+        EXPECT_LE(r.stats.estimatedS, 1.02 * r.stats.boundS);
     }
-    expectValid(r);
-    EXPECT_LE(r.stats.estimatedS, 1.02 * r.stats.boundS);
 }
 
 TEST(Passes, BackwardAndForwardFitEveryVectorInIntegers)
