@@ -238,18 +238,19 @@ private:
         const double fMin = std::min(a.f, b.f);
         double units = static_cast<double>(std::min(a.speed, b.speed));
         double jd = 0, curv = 0;
-        if (m_options.strategy == PlanStrategy::GrblJunction) {
+        const bool grbl = m_options.strategy == PlanStrategy::GrblJunction;
+        if (grbl) {
             pathCaps(k, a.uStep, b.uStep, jd, curv); // grbl: geometry of the steps, no curvature
             units = std::min(units, jd * fMin);
         } else {
             pathCaps(k, a.uPath, b.uPath, jd, curv);
             units = std::min({units, jd * fMin, curv * fMin});
-            for (int i = 0; i < 4; ++i) {
-                const double per = jumpPerUnit(k, i);
-                if (per > 1e-15)
-                    units = std::min(
-                        units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
-            }
+        }
+        for (int i = 0; i < 4 && (!grbl || m_options.grblHonoursJumpLimit); ++i) {
+            const double per = jumpPerUnit(k, i);
+            if (per > 1e-15)
+                units =
+                    std::min(units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
         }
         m_capUnits[k] = static_cast<std::int64_t>(floorUnits(units));
     }

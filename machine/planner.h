@@ -29,12 +29,13 @@ enum class PlanStrategy : std::uint8_t {
 struct PlanOptions
 {
     PlanStrategy strategy = PlanStrategy::Full;
-    int grblLookahead = 16;          // GrblJunction: blocks in the planner buffer (grbl: 16)
-    std::int64_t shortThreshold = 1; // $: vectors shorter than this run "short" (§4)
-    double brakeMarginSteps = 0.25;  // distance kept in reserve when braking, steps (>= 0)
-    double accelTolerance = 0.05;    // keep the last A while within this fraction below the cap
-    double accelWindowSteps = 32;    // A: smallest cap of the neighbours within this distance
-    double feedOverride = 1.0;       // multiplies programmed feeds (not rapids), 0.01..10
+    int grblLookahead = 16;            // GrblJunction: blocks in the planner buffer (grbl: 16)
+    bool grblHonoursJumpLimit = false; // GrblJunction: add the velocity-jump cap (not grbl's)
+    std::int64_t shortThreshold = 1;   // $: vectors shorter than this run "short" (§4)
+    double brakeMarginSteps = 0.25;    // distance kept in reserve when braking, steps (>= 0)
+    double accelTolerance = 0.05;      // keep the last A while within this fraction below the cap
+    double accelWindowSteps = 32;      // A: smallest cap of the neighbours within this distance
+    double feedOverride = 1.0;         // multiplies programmed feeds (not rapids), 0.01..10
 };
 
 enum class PlanErrorCode : std::uint8_t {
