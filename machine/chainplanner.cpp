@@ -238,7 +238,10 @@ private:
         const double fMin = std::min(a.f, b.f);
         double units = static_cast<double>(std::min(a.speed, b.speed));
         double jd = 0, curv = 0;
-        const bool grbl = m_options.strategy == PlanStrategy::GrblJunction;
+        // grbl's own caps, unless the baseline is asked to keep every limit of the full plan
+        // (then it differs from the full plan only by its short lookahead).
+        const bool grbl =
+            m_options.strategy == PlanStrategy::GrblJunction && !m_options.grblKeepsAllLimits;
         if (grbl) {
             pathCaps(k, a.uStep, b.uStep, jd, curv); // grbl: geometry of the steps, no curvature
             units = std::min(units, jd * fMin);
@@ -246,7 +249,7 @@ private:
             pathCaps(k, a.uPath, b.uPath, jd, curv);
             units = std::min({units, jd * fMin, curv * fMin});
         }
-        for (int i = 0; i < 4 && (!grbl || m_options.grblHonoursJumpLimit); ++i) {
+        for (int i = 0; i < 4 && !grbl; ++i) {
             const double per = jumpPerUnit(k, i);
             if (per > 1e-15)
                 units =
@@ -375,7 +378,27 @@ private:
                 over = over || ratio > 1 + 1e-9;
             }
             m_out.jumpOverLimit += over ? 1 : 0;
+            curveStats(k, static_cast<double>(v.brake));
         }
+    }
+
+    // The axes' acceleration through the turn at the vertex after move k, as the intended path
+    // turns: each axis's speed changes by v·Δu_i over the time between the two segments'
+    // middles, (L_k + L_k+1) / 2v. On a chorded arc that is v²/r per unit of turn direction.
+    void curveStats(std::size_t k, double brake)
+    {
+        const Derived &a = m_d[k];
+        const Derived &b = m_d[k + 1];
+        const double v = brake / std::min(a.f, b.f); // the faster side of the vertex, mm/s
+        const double span = 0.5 * (a.pathLengthMm + b.pathLengthMm);
+        bool over = false;
+        for (int i = 0; i < 4; ++i) {
+            const double accel = v * v * std::abs(b.uPath[i] - a.uPath[i]) / span;
+            const double ratio = accel / m_config.axes[static_cast<std::size_t>(i)].accelMmPerS2;
+            m_out.maxCurveAccelRatio = std::max(m_out.maxCurveAccelRatio, ratio);
+            over = over || ratio > 1 + 1e-6;
+        }
+        m_out.curveAccelOverLimit += over ? 1 : 0;
     }
 
     const std::vector<Move> &m_moves;

@@ -42,10 +42,12 @@ struct RunOutcome
 {
     std::vector<PlannedVector> vectors;
     std::size_t chains = 0;
-    double boundS = 0;             // time-optimal bound of these moves
-    double maxJumpMmPerS = 0;      // largest per-axis speed step at a vertex of the plan
-    double maxJumpRatio = 0;       // largest speed step / axis limit
-    std::size_t jumpOverLimit = 0; // vertices with a step over an axis limit
+    double boundS = 0;                   // time-optimal bound of these moves
+    double maxJumpMmPerS = 0;            // largest per-axis speed step at a vertex of the plan
+    double maxJumpRatio = 0;             // largest speed step / axis limit
+    std::size_t jumpOverLimit = 0;       // vertices with a step over an axis limit
+    double maxCurveAccelRatio = 0;       // largest axis acceleration through a turn / limit
+    std::size_t curveAccelOverLimit = 0; // vertices turning faster than the axes accelerate
 };
 
 // Plans moves that start and end at rest. vk: speeds are VK path speeds (else VN major axis).

@@ -267,6 +267,8 @@ private:
         s.maxVertexJumpMmPerS = std::max(s.maxVertexJumpMmPerS, run.maxJumpMmPerS);
         s.maxJumpRatio = std::max(s.maxJumpRatio, run.maxJumpRatio);
         s.jumpOverLimit += run.jumpOverLimit;
+        s.maxCurveAccelRatio = std::max(s.maxCurveAccelRatio, run.maxCurveAccelRatio);
+        s.curveAccelOverLimit += run.curveAccelOverLimit;
         m_moves.clear();
     }
 

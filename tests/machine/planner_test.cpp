@@ -71,6 +71,7 @@ void expectValid(const PlanResult &r)
     expectFeasible(vs, vk);
     EXPECT_EQ(r.stats.brakeViolations, 0u);
     EXPECT_EQ(r.stats.jumpOverLimit, 0u);
+    EXPECT_EQ(r.stats.curveAccelOverLimit, 0u);
 }
 
 } // namespace
@@ -361,6 +362,10 @@ TEST(Strategies, BaselinesPlanTheSamePath)
     EXPECT_EQ(ops(stop, UnitOp::Line).size(), ops(full, UnitOp::Vector).size());
     EXPECT_GT(stop.stats.estimatedS, 2 * full.stats.estimatedS);
     EXPECT_DOUBLE_EQ(stop.stats.boundS, full.stats.boundS);
+    // grbl's junction deviation (0.01 mm) on a 5 mm circle chorded to 0.002 mm: faster than the
+    // axes can accelerate round it, which the full plan's curvature cap prevents.
+    EXPECT_GT(g.stats.curveAccelOverLimit, 0u);
+    EXPECT_EQ(full.stats.curveAccelOverLimit, 0u);
     expectFeasible(replay(g.program), g.stats.speedModeVk);
     EXPECT_EQ(g.stats.brakeViolations, 0u);
 }

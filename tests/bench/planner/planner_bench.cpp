@@ -1,7 +1,8 @@
 // Planner benchmark: every bundled program (tests/bench/planner/programs) is interpreted,
 // planned four ways (the product's full plan; a grbl-style junction-deviation plan with a
-// 16-block lookahead, as grbl plans, and the same with the machine's velocity-jump cap added so
-// that it keeps the limits our plan keeps; a naive exact-stop plan of L moves) and run on the
+// 16-block lookahead and grbl's per-block acceleration, as grbl plans; the same lookahead with
+// every cap of the full plan, so that it keeps the limits our plan keeps; a naive exact-stop
+// plan of L moves) and run on the
 // in-process emulator core, fed as fast as its queue accepts with no link delay. Per program and
 // plan it prints the emulator job time, the time-optimal bound, their ratio, brake violations,
 // starvation stops, vertices over the velocity-jump limit (measured on the emulator's own vertex
@@ -37,11 +38,15 @@ struct Row
 };
 
 Row runOne(const char *name, const gcode::Toolpath &tp, const MachineConfig &c, PlanStrategy s,
-           bool jumps = false)
+           bool limits = false)
 {
     PlanOptions o;
     o.strategy = s;
-    o.grblHonoursJumpLimit = jumps;
+    o.grblKeepsAllLimits = limits;
+    if (s == PlanStrategy::GrblJunction) { // grbl: each block's own acceleration limit
+        o.accelWindowSteps = 0;
+        o.accelTolerance = 0;
+    }
     const auto t0 = std::chrono::steady_clock::now();
     Row row{name, plan(tp, c, o), {}, 0};
     row.planMs =
@@ -54,24 +59,26 @@ Row runOne(const char *name, const gcode::Toolpath &tp, const MachineConfig &c, 
 void print(const std::string &program, const Row &r, double bound)
 {
     if (!r.result.ok()) {
-        std::printf("%-14s %-10s plan error: %s\n", program.c_str(), r.plan,
+        std::printf("%-10s %-11s plan error: %s\n", program.c_str(), r.plan,
                     r.result.errors.front().message.c_str());
         return;
     }
     if (!r.run.error.empty()) {
-        std::printf("%-14s %-10s emulator error: %s\n", program.c_str(), r.plan,
+        std::printf("%-10s %-11s emulator error: %s\n", program.c_str(), r.plan,
                     r.run.error.c_str());
         return;
     }
     std::size_t av = 0; // A and V commands: they cannot travel in packets (§2.2)
     for (const UnitCommand &c : r.result.program.commands)
         av += c.op == UnitOp::Accel || c.op == UnitOp::Speed ? 1 : 0;
-    std::printf(
-        "%-14s %-10s %8zu %10.3f %10.3f %7.4f %6lld %6lld/%-4lld %6zu %7.3f %5s %6zu %8.1f\n",
-        program.c_str(), r.plan, r.result.stats.vectors, r.run.jobS, bound, r.run.jobS / bound,
-        static_cast<long long>(r.run.brakeViolations),
-        static_cast<long long>(r.run.starvationStops), static_cast<long long>(r.run.plannedStops),
-        r.run.jumpOverLimit, r.run.maxJumpRatio, r.run.countersMatch ? "yes" : "NO", av, r.planMs);
+    std::printf("%-10s %-11s %8zu %10.3f %10.3f %7.4f %6lld %6lld/%-4lld %6zu %7.3f %6zu %7.3f %5s "
+                "%6zu %8.1f\n",
+                program.c_str(), r.plan, r.result.stats.vectors, r.run.jobS, bound,
+                r.run.jobS / bound, static_cast<long long>(r.run.brakeViolations),
+                static_cast<long long>(r.run.starvationStops),
+                static_cast<long long>(r.run.plannedStops), r.run.jumpOverLimit, r.run.maxJumpRatio,
+                r.result.stats.curveAccelOverLimit, r.result.stats.maxCurveAccelRatio,
+                r.run.countersMatch ? "yes" : "NO", av, r.planMs);
 }
 
 } // namespace
@@ -103,9 +110,9 @@ int main(int argc, char **argv)
     std::printf("machine: %s (%s), jump limit X %.1f mm/s\n", config.name.c_str(),
                 protocol::variantInfo(config.unit.variant).displayName.data(),
                 config.axes[0].maxJumpMmPerS);
-    std::printf("%-14s %-10s %8s %10s %10s %7s %6s %11s %6s %7s %5s %6s %8s\n", "program", "plan",
-                "vectors", "emulator_s", "bound_s", "ratio", "brakeV", "starv/plan", "jump>",
-                "jumpMax", "cnt", "A+V", "plan_ms");
+    std::printf("%-10s %-11s %8s %10s %10s %7s %6s %11s %6s %7s %6s %7s %5s %6s %8s\n", "program",
+                "plan", "vectors", "emulator_s", "bound_s", "ratio", "brakeV", "starv/plan",
+                "jump>", "jumpMax", "acc>", "accMax", "cnt", "A+V", "plan_ms");
     int failures = 0;
     for (const std::string &file : files) {
         const gcode::Result g = gcode::interpretFile(file);
@@ -121,7 +128,8 @@ int main(int argc, char **argv)
         }
         const Row full = runOne("full", g.toolpath, config, PlanStrategy::Full);
         const Row grbl = runOne("grbl-jd", g.toolpath, config, PlanStrategy::GrblJunction);
-        const Row grblJ = runOne("grbl+jump", g.toolpath, config, PlanStrategy::GrblJunction, true);
+        const Row grblJ =
+            runOne("grbl+limits", g.toolpath, config, PlanStrategy::GrblJunction, true);
         const Row stop = runOne("exact-stop", g.toolpath, config, PlanStrategy::ExactStop);
         const double bound = full.result.stats.boundS;
         for (const Row *r : {&full, &grbl, &grblJ, &stop})
