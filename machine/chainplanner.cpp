@@ -13,6 +13,9 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::int64_t kMinSpeed = 10; // smallest V / B the unit takes, pulses/s
+// Largest A sent, thousands of pulses/s²: the manuals give no bound; the emulator accepts up to
+// this (readings of driver/emulator), and a lower A is always safe.
+constexpr std::int64_t kMaxAccel = 100000;
 
 using Vec4 = std::array<double, 4>;
 
@@ -145,8 +148,8 @@ private:
                 a = std::min(a, m_d[j].aMm);
                 reach += m_d[j].units;
             }
-            const auto cap =
-                std::max<std::int64_t>(1, static_cast<std::int64_t>(floorUnits(a * r.f / 1000)));
+            const auto cap = std::clamp<std::int64_t>(
+                static_cast<std::int64_t>(floorUnits(a * r.f / 1000)), 1, kMaxAccel);
             const bool keep =
                 last > 0 && last <= cap && last >= cap * (1 - m_options.accelTolerance);
             r.accel = keep ? last : cap;

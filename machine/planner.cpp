@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 
 namespace frezka::machine {
 
@@ -180,6 +181,12 @@ private:
         detail::Move m;
         bool any = false;
         for (int k = 0; k < 4; ++k) {
+            if (std::llabs(target[k] - m_steps[k]) > kMaxCounter) {
+                error(PlanErrorCode::CounterOverflow, line,
+                      std::string("the move on ") + kAxisLetters[static_cast<std::size_t>(k)] +
+                          " is longer than one unit vector can be (2147483647 steps)");
+                return;
+            }
             m.d[k] = static_cast<std::int32_t>(target[k] - m_steps[k]);
             any = any || m.d[k] != 0;
         }
