@@ -32,6 +32,9 @@ Interpreter::Interpreter(Options options)
     , m_parser(m_params)
 {
     m_params.setSystem(this);
+    m_origin = m_options.workOffsetsMm;
+    m_coord = std::clamp(m_options.coordinateSystem, 0, 8);
+    m_pos = m_options.startMm;
 }
 
 Interpreter::~Interpreter() = default;
@@ -94,10 +97,13 @@ Result Interpreter::run(std::string_view text)
          ++p)
         ++lines;
     m_toolpath.reserve(lines + 16);
+    m_toolpath.setOrigin(m_pos);
 
     std::string_view raw;
     Error error;
     while (!m_ended && nextLine(&raw)) {
+        if (m_options.progress && (m_line & 0xFFFF) == 0)
+            m_options.progress(m_next, text.size());
         if (++m_executed > m_options.maxBlocks) {
             result.errors.push_back(
                 {ErrorCode::TooManyBlocks, m_line, 1, std::to_string(m_options.maxBlocks)});

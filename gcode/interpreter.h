@@ -19,6 +19,7 @@
 #include "gcode/toolpath.h"
 
 #include <array>
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
@@ -34,6 +35,13 @@ struct Options
     std::uint64_t maxBlocks = 200'000'000; // executed lines before TooManyBlocks (endless loops)
     std::size_t maxErrors = 1000;          // check mode stops after this many
     std::map<int, double> toolLengthMm;    // G43 Hn; tools not listed have length 0
+    // State at the start of the program (added for the GUI: persisted work offsets and the
+    // machine position the program starts from).
+    std::array<std::array<double, 4>, 9> workOffsetsMm{}; // G54..G59.3, machine mm (#5221..)
+    int coordinateSystem = 0;                             // active at the start: 0 = G54
+    Point4 startMm;                                       // machine position (toolpath origin)
+    // Called now and then (every 65 536 lines) with the bytes read so far and the total.
+    std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
 struct Result

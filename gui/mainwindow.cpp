@@ -2,15 +2,21 @@
 
 #include "consolewidget.h"
 #include "drowidget.h"
+#include "interpreteradapter.h"
 #include "iopanel.h"
 #include "jogpanel.h"
 #include "language.h"
 #include "outputspanel.h"
+#include "planneradapter.h"
+#include "profilestore.h"
 #include "programlisting.h"
 #include "programsession.h"
 #include "runpanel.h"
+#include "settingsdialog.h"
 #include "speedplot.h"
 #include "toolpathview.h"
+
+#include "driver/protocol/variant.h"
 
 #include <QAction>
 #include <QApplication>
@@ -44,6 +50,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     setCentralWidget(m_view);
     m_program = new ProgramSession(this);
     m_program->setMaxSceneSegments(m_view->preferredMaxSegments());
+    m_program->setInterpreter(gcodeInterpreter());
     m_machine = nullptr;
 
     buildDocks();
@@ -79,6 +86,11 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
         restoreState(s.value(QStringLiteral("window/state")).toByteArray());
     }
     updateRecentMenu();
+    const ProfileLoad profile = loadCurrentProfile();
+    applyProfile(profile.config, profile.path);
+    if (!profile.error.isEmpty())
+        QMetaObject::invokeMethod(
+            this, [this, e = profile.error] { showError(e); }, Qt::QueuedConnection);
     updateRunPhase();
 }
 
@@ -134,7 +146,7 @@ void MainWindow::buildMenus()
     m_connectAction = m_machineMenu->addAction(QString());
     m_disconnectAction = m_machineMenu->addAction(QString());
     m_machineMenu->addSeparator();
-    m_settingsAction = m_machineMenu->addAction(QString(), this, &MainWindow::openSettings);
+    m_settingsAction = m_machineMenu->addAction(QString(), this, [this] { openSettings(); });
     m_unitConfigAction = m_machineMenu->addAction(QString());
 
     m_viewMenu = menuBar()->addMenu(QString());
@@ -280,11 +292,14 @@ void MainWindow::connectProgram()
         m_listing->listModel()->setText(p.text);
         m_view->model()->setScene(p.scene);
         m_plot->setPlanned(p.speed);
+        checkProgramLimits();
         m_run->setProgress(0, 0, p.estimatedS);
         m_file->setText(tr("%1 — %n line(s)", nullptr, p.text ? p.text->lineCount() : 0)
                             .arg(QFileInfo(p.path).fileName()));
         retranslate();
         addRecent(p.path);
+        for (const auto &w : p.warnings)
+            m_console->appendInfo(w.text);
         if (!p.errors.empty()) {
             std::set<int> lines;
             for (const auto &e : p.errors)
@@ -309,7 +324,73 @@ void MainWindow::updateRunPhase()
 
 void MainWindow::connectMachine() {}
 
-void MainWindow::openSettings() {}
+SettingsDialog *MainWindow::openSettings()
+{
+    if (!m_settings) {
+        m_settings = new SettingsDialog(m_profile, m_profilePath, this);
+        m_settings->setAttribute(Qt::WA_DeleteOnClose);
+        connect(m_settings, &SettingsDialog::profileApplied, this, &MainWindow::applyProfile);
+    }
+    m_settings->show();
+    m_settings->raise();
+    return m_settings;
+}
+
+void MainWindow::applyProfile(const machine::MachineConfig &config, const QString &path)
+{
+    m_profile = config;
+    m_profilePath = path;
+    const auto &info = protocol::variantInfo(config.unit.variant);
+    const int axes = info.axisCount == 4 && config.axes[3].present ? 4 : 3;
+    m_dro->setAxisCount(axes);
+    m_jog->setAxisCount(axes);
+    m_jog->setMpgAvailable(info.hasMpg);
+    m_io->setRelayCount(info.relayOutputs);
+    m_outputs->setMaxRpm(config.spindle.maxRpm);
+    using F = machine::OutputFunction;
+    static const std::pair<F, const char *> kExtra[] = {
+        {F::Laser, QT_TR_NOOP("Laser")},
+        {F::CoverLock, QT_TR_NOOP("Cover lock")},
+        {F::ToolRelease, QT_TR_NOOP("Tool release")},
+        {F::ToolCoverOpen, QT_TR_NOOP("Tool cover")}};
+    std::vector<std::pair<QString, std::uint8_t>> extra;
+    for (const auto &[function, name] : kExtra) {
+        if (const std::uint8_t bit = machine::outputBit(config, function))
+            extra.emplace_back(tr(name), bit);
+    }
+    m_outputs->setExtraOutputs(extra);
+    SceneBounds travel;
+    travel.valid = true;
+    for (int i = 0; i < 3; ++i) {
+        const auto &a = config.axes[std::size_t(i)];
+        travel.min[i] = float(a.softMinMm);
+        travel.max[i] = float(a.softMaxMm);
+    }
+    m_view->model()->setTravelBox(travel);
+    m_program->setAnalyser(plannerAnalyser(config));
+    if (!m_program->program().path.isEmpty())
+        m_program->reload(); // re-plan for the new profile
+    m_unit->setText(QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size())));
+    checkProgramLimits();
+}
+
+void MainWindow::checkProgramLimits()
+{
+    const auto &scene = m_program->program().scene;
+    if (!scene || !scene->bounds.valid) {
+        m_view->model()->setBoundsOutsideLimits(false);
+        return;
+    }
+    bool outside = false;
+    for (int i = 0; i < 3; ++i) {
+        const auto &a = m_profile.axes[std::size_t(i)];
+        if (!a.present)
+            continue;
+        outside = outside || scene->bounds.min[i] < a.softMinMm - 1e-6 ||
+                  scene->bounds.max[i] > a.softMaxMm + 1e-6;
+    }
+    m_view->model()->setBoundsOutsideLimits(outside);
+}
 
 // ---- keyboard jog ----
 

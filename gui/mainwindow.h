@@ -4,6 +4,8 @@
 // unit's LEDs in the status bar. It renders what the controller reports and asks the
 // controller to act; it keeps no machine state of its own.
 
+#include "machine/machineconfig.h"
+
 #include <QMainWindow>
 #include <QPointer>
 
@@ -27,6 +29,7 @@ class RunPanel;
 class SpeedPlot;
 class ToolpathView;
 class MachineSession;
+class SettingsDialog;
 
 struct MainWindowOptions
 {
@@ -56,6 +59,12 @@ public:
     IoPanel *ioPanel() const { return m_io; }
     ProgramSession *program() const { return m_program; }
     MachineSession *machine() const { return m_machine; }
+    const machine::MachineConfig &profile() const { return m_profile; }
+    QString profilePath() const { return m_profilePath; }
+    // Makes a (valid) profile the active one: axes, limits, outputs, connection.
+    void applyProfile(const machine::MachineConfig &config, const QString &path);
+    // Opens the settings dialog (non-modal) and returns it.
+    class SettingsDialog *openSettings();
     // The last message shown to the user as an error (tests read it; no modal dialog needed).
     QString lastError() const { return m_lastError; }
 
@@ -78,7 +87,7 @@ private:
     void updateRecentMenu();
     void addRecent(const QString &path);
     void openDialog();
-    void openSettings();
+    void checkProgramLimits();
     void updateRunPhase();
     bool jogKey(QKeyEvent *event, bool pressed);
 
@@ -101,6 +110,9 @@ private:
     ProgramSession *m_program;
     MachineSession *m_machine;
     QString m_lastError;
+    machine::MachineConfig m_profile;
+    QString m_profilePath;
+    QPointer<SettingsDialog> m_settings;
     QByteArray m_defaultState;
 };
 

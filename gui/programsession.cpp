@@ -39,6 +39,13 @@ double pathLength(const gcode::Toolpath &path)
 
 } // namespace
 
+std::uint32_t LoadedProgram::entryOfLine(std::uint32_t line) const
+{
+    if (line >= lineToEntry.size())
+        return gcode::Toolpath::kNone;
+    return lineToEntry[line];
+}
+
 ProgramSession::ProgramSession(QObject *parent)
     : QObject(parent)
 {
@@ -92,6 +99,7 @@ void ProgramSession::load(const QString &path)
     const AnalyseFn analyse = m_analyse;
     const WorkOffsets offsets = m_offsets;
     const int active = m_activeOffset;
+    const std::array<double, 4> startMm = m_startMm;
     const std::size_t maxSegments = m_maxSegments;
     emit loadStarted(path);
 
@@ -129,9 +137,14 @@ void ProgramSession::load(const QString &path)
                 {0, 0, tr("This build has no G-code interpreter; the program cannot be checked.")});
             return done();
         }
-        InterpretRequest req{
-            data,   QFileInfo(path).fileName(), offsets,
-            active, cancelFlag.get(),           [&](double f) { progress->store(int(f * 1000)); }};
+        InterpretRequest req;
+        req.text = data;
+        req.fileName = QFileInfo(path).fileName();
+        req.offsets = offsets;
+        req.activeOffset = active;
+        req.startMm = startMm;
+        req.cancel = cancelFlag.get();
+        req.progress = [&](double f) { progress->store(int(f * 1000)); };
         InterpretOutcome outcome = interpret(req);
         result->errors = std::move(outcome.errors);
         if (cancelFlag->load())
@@ -149,6 +162,13 @@ void ProgramSession::load(const QString &path)
                 cancelFlag.get()));
             result->scene = scene;
             result->lengthMm = pathLength(*outcome.toolpath);
+            const auto &tp = *outcome.toolpath;
+            std::uint32_t maxLine = 0;
+            for (std::size_t i = 0; i < tp.size(); ++i)
+                maxLine = std::max(maxLine, tp.line(i));
+            result->lineToEntry.assign(std::size_t(maxLine) + 1, gcode::Toolpath::kNone);
+            for (std::size_t i = 0; i < tp.size(); ++i)
+                result->lineToEntry[tp.line(i)] = std::uint32_t(i);
             result->toolpath = std::move(outcome.toolpath);
             if (result->errors.empty() && analyse) {
                 stage->store(4);

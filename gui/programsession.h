@@ -9,6 +9,8 @@
 #include "toolpathscene.h"
 
 #include "gcode/toolpath.h"
+#include "machine/planner.h"
+#include "machine/unitprogram.h"
 
 #include <QObject>
 #include <QString>
@@ -40,11 +42,18 @@ struct LoadedProgram
     std::shared_ptr<const ProgramText> text;
     std::shared_ptr<const gcode::Toolpath> toolpath;
     std::shared_ptr<const ToolpathScene> scene;
-    std::vector<ProgramMessage> errors;
+    std::vector<ProgramMessage> errors;                      // non-empty: nothing runs
+    std::vector<ProgramMessage> warnings;                    // runs, but the user should know
+    std::shared_ptr<const machine::UnitProgram> unitProgram; // planned for the active profile
+    machine::PlanStats planStats;
     std::vector<SpeedSample> speed; // planned speed along the path
     double estimatedS = -1;         // planner's exact duration, < 0 = unknown
     double lengthMm = 0;
     bool ok() const { return errors.empty() && toolpath != nullptr; }
+    bool runnable() const { return ok() && unitProgram != nullptr; }
+    // Toolpath entry of the last motion on a source line (for the cut colouring), or kNone.
+    std::uint32_t entryOfLine(std::uint32_t line) const;
+    std::vector<std::uint32_t> lineToEntry; // index = source line
 };
 
 struct InterpretRequest
@@ -53,6 +62,7 @@ struct InterpretRequest
     QString fileName;
     WorkOffsets offsets{};
     int activeOffset = 0;
+    std::array<double, 4> startMm{}; // machine position the program starts from
     const std::atomic_bool *cancel = nullptr;
     std::function<void(double)> progress; // fraction 0..1 of this step
 };
@@ -80,6 +90,8 @@ public:
     void setAnalyser(AnalyseFn fn) { m_analyse = std::move(fn); }
     void setMaxSceneSegments(std::size_t n) { m_maxSegments = n; }
     void setWorkOffsets(const WorkOffsets &offsets, int active);
+    // Machine position the next interpretation starts from (mm X Y Z A).
+    void setStartPosition(const std::array<double, 4> &mm) { m_startMm = mm; }
     const WorkOffsets &workOffsets() const { return m_offsets; }
     int activeOffset() const { return m_activeOffset; }
 
@@ -106,6 +118,7 @@ private:
     std::size_t m_maxSegments = 1'500'000;
     WorkOffsets m_offsets{};
     int m_activeOffset = 0;
+    std::array<double, 4> m_startMm{};
     LoadedProgram m_program;
     QThread *m_thread = nullptr;
     std::shared_ptr<std::atomic_bool> m_cancel;

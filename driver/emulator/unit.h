@@ -39,9 +39,9 @@ struct UnitOptions
     protocol::Variant variant = protocol::Variant::Gve64;
     int address = 0;      // 0..7; address 7 is the spindle on GVE64/114
     int maxPulseRate = 0; // pulses/s; 0 = the variant's default
-    std::vector<PositionSwitch> switches;
-    std::string eepromFile; // "" = not persisted; else loaded at start, saved on write
-    bool trace = false;     // record TracePoints at every motion event
+    std::vector<PositionSwitch> switches{};
+    std::string eepromFile{}; // "" = not persisted; else loaded at start, saved on write
+    bool trace = false;       // record TracePoints at every motion event
     bool operator==(const UnitOptions &) const = default;
 };
 

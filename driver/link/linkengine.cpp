@@ -1,0 +1,439 @@
+#include "linkengine.h"
+
+#include <algorithm>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+
+namespace {
+// Longest reply we allow time for: a P4 reply with checksum is ~56 bytes.
+constexpr std::size_t kLongestReplyBytes = 64;
+} // namespace
+
+bool mustArriveOnce(Op op)
+{
+    switch (op) {
+    case Op::Line:
+    case Op::Vector:
+    case Op::ExchangeUp:
+    case Op::ExchangeDown:
+    case Op::Keep:
+    case Op::Restore:
+    case Op::Go:
+    case Op::Home:
+    case Op::Jump:
+    case Op::PacketStart:
+    case Op::PacketEnd:
+        return true;
+    default:
+        return false;
+    }
+}
+
+int packetIndexAdvance(int commandCount)
+{
+    return commandCount + 2;
+}
+
+bool advancesIndex(Op op)
+{
+    return op != Op::Index && op != Op::Repeat;
+}
+
+LinkEngine::LinkEngine(LinkOptions options)
+    : m_options(options)
+{}
+
+bool LinkEngine::exact() const
+{
+    return m_packet || mustArriveOnce(m_commands.front().op);
+}
+
+double LinkEngine::wireTime(std::size_t bytes) const
+{
+    return static_cast<double>(bytes) * 10.0 / m_options.baud;
+}
+
+const Command &LinkEngine::mainCommand() const
+{
+    static const Command kPacketEnd = cmd::packetEnd(0);
+    return m_packet ? kPacketEnd : m_commands.front();
+}
+
+std::string LinkEngine::describe() const
+{
+    if (!m_packet)
+        return "'" + encodeBody(m_commands.front()) + "'";
+    return "packet of " + std::to_string(m_commands.size()) + " commands starting '" +
+           encodeBody(m_commands.front()) + "'";
+}
+
+double LinkEngine::timeoutFor(const Command &c, std::size_t bytes) const
+{
+    const double wire = wireTime(bytes + kLongestReplyBytes);
+    switch (c.op) {
+    case Op::Halt:
+        return wire + m_options.haltTimeoutS;
+    case Op::Home:
+        return wire + m_options.homeTimeoutS;
+    case Op::Jump: // the unit is deaf for about 2 s after J and does not answer it
+        return wire + m_options.replyTimeoutS + 2.5;
+    default:
+        return wire + m_options.replyTimeoutS;
+    }
+}
+
+int LinkEngine::indexAfter() const
+{
+    const int before = m_indexBefore.value_or(0);
+    if (m_packet)
+        return (before + packetIndexAdvance(static_cast<int>(m_commands.size()))) % 256;
+    return advancesIndex(m_commands.front().op) ? (before + 1) % 256 : before;
+}
+
+void LinkEngine::log(LinkLogKind kind, const std::string &text)
+{
+    if (onLog)
+        onLog(kind, text);
+}
+
+std::string LinkEngine::takeOutput()
+{
+    std::string out;
+    out.swap(m_out);
+    return out;
+}
+
+void LinkEngine::start(const Command &command, double now, std::uint64_t tag)
+{
+    m_commands = {command};
+    m_packet = false;
+    m_syncing = false;
+    m_tag = tag;
+    m_attempts = m_resent = m_recovered = 0;
+    beginTransaction(now);
+}
+
+void LinkEngine::startPacket(std::vector<Command> commands, double now, std::uint64_t tag)
+{
+    m_commands = std::move(commands);
+    m_packet = true;
+    m_syncing = false;
+    m_tag = tag;
+    m_attempts = m_resent = m_recovered = 0;
+    beginTransaction(now);
+}
+
+void LinkEngine::syncIndex(double now, std::uint64_t tag)
+{
+    m_commands = {cmd::index()};
+    m_packet = false;
+    m_syncing = true;
+    m_tag = tag;
+    m_attempts = m_resent = m_recovered = 0;
+    m_indexBefore = m_index;
+    ++m_stats.transactions;
+    transmitMain(now);
+}
+
+void LinkEngine::beginTransaction(double now)
+{
+    ++m_stats.transactions;
+    m_indexBefore = m_index;
+    if (m_index || !exact()) {
+        transmitMain(now);
+        return;
+    }
+    // Without the unit's index a lost reply could not be resolved: learn it first.
+    m_presync = true;
+    sendAux(cmd::index(), State::AwaitIndex, now);
+}
+
+void LinkEngine::transmitMain(double now)
+{
+    m_wire = m_packet ? encodePacket(m_commands, m_checksums) : encode(m_commands[0], m_checksums);
+    m_out += m_wire;
+    m_stats.bytesOut += static_cast<std::int64_t>(m_wire.size());
+    log(LinkLogKind::Sent, m_packet ? describe() : encodeBody(m_commands[0]));
+    m_state = State::AwaitReply;
+    m_deadline = now + timeoutFor(mainCommand(), m_wire.size());
+}
+
+void LinkEngine::sendAux(const Command &c, State next, double now)
+{
+    const std::string bytes = encode(c, m_checksums);
+    m_out += bytes;
+    m_stats.bytesOut += static_cast<std::int64_t>(bytes.size());
+    log(LinkLogKind::Recovery, encodeBody(c));
+    m_state = next;
+    m_deadline = now + timeoutFor(c, bytes.size());
+}
+
+void LinkEngine::receive(std::string_view bytes, double now)
+{
+    m_stats.bytesIn += static_cast<std::int64_t>(bytes.size());
+    m_decoder.feed(bytes);
+    while (auto line = m_decoder.nextLine())
+        handleLine(*line, now);
+}
+
+void LinkEngine::handleLine(const Line &line, double now)
+{
+    if (line.text.empty() && !line.overlong) {
+        ++m_stats.noiseLines; // a stray CR: nothing to decode, nothing lost
+        log(LinkLogKind::Noise, "empty line");
+        return;
+    }
+    switch (m_state) {
+    case State::Idle:
+    case State::Settle:
+        ++m_stats.noiseLines;
+        log(LinkLogKind::Noise, line.text);
+        return;
+    case State::AwaitReply:
+        onMainReply(line, now);
+        return;
+    case State::AwaitIndex:
+        onIndexReply(line, now);
+        return;
+    case State::AwaitRepeat:
+        onRepeatReply(line, now);
+        return;
+    }
+}
+
+std::optional<Reply> LinkEngine::decodeFor(const Command &c, const std::string &line,
+                                           std::string &err)
+{
+    // The reply to %+ already carries a checksum, the reply to %- does not (§2.1); while the
+    // unit's state is in doubt, accept either.
+    const bool switching = c.op == Op::ChecksumOn || c.op == Op::ChecksumOff;
+    const ChecksumMode mode = switching     ? ChecksumMode::Auto
+                              : m_checksums ? ChecksumMode::On
+                                            : ChecksumMode::Off;
+    const ReplyResult res = decodeReply(line, mode);
+    if (res.error) {
+        err = res.error->message;
+        return std::nullopt;
+    }
+    if (auto shape = checkReplyShape(c, *res.reply, line)) {
+        err = shape->message;
+        return std::nullopt;
+    }
+    if (c.op == Op::ChecksumOn && res.reply->ok())
+        m_checksums = true;
+    if (c.op == Op::ChecksumOff && res.reply->ok())
+        m_checksums = false;
+    return res.reply;
+}
+
+void LinkEngine::onMainReply(const Line &line, double now)
+{
+    std::string err;
+    const auto reply = line.overlong ? std::nullopt : decodeFor(mainCommand(), line.text, err);
+    log(LinkLogKind::Received, line.text);
+    if (!reply) {
+        ++m_stats.garbledLines;
+        m_lastRaw = line.text;
+        recover("garbled reply '" + line.text + "'" + (err.empty() ? "" : ": " + err), now);
+        return;
+    }
+    // Possibly damaged on the way in (code 4 = bad checksum) or cut short (code 2): the index
+    // tells whether the unit took it as a command.
+    const bool doubtful =
+        (reply->code == ReplyCode::Syntax && m_checksums) || reply->code == ReplyCode::Watchdog;
+    if (doubtful && !m_syncing && (m_indexBefore || !exact())) {
+        m_lastRaw = line.text;
+        recover("reply '" + line.text + "' (" + std::string(replyCodeText(reply->code)) + ")", now);
+        return;
+    }
+    finishOk(*reply, line.text);
+}
+
+void LinkEngine::onIndexReply(const Line &line, double now)
+{
+    std::string err;
+    const auto reply = line.overlong ? std::nullopt : decodeFor(cmd::index(), line.text, err);
+    if (!reply || !reply->ok()) {
+        ++m_stats.garbledLines;
+        retryAux("garbled reply to '@': '" + line.text + "'", now);
+        return;
+    }
+    const int unitIndex = static_cast<int>(*reply->decimal());
+    log(LinkLogKind::Recovery, "index " + std::to_string(unitIndex));
+    if (m_presync) {
+        m_presync = false;
+        m_index = m_indexBefore = unitIndex;
+        transmitMain(now);
+        return;
+    }
+    if (!m_indexBefore) {
+        // We did not know the index before this transaction: we cannot tell whether it
+        // arrived. Learn it and report the transaction failed (the caller decides).
+        m_index = unitIndex;
+        finishFailed(describe() + ": reply lost and the unit's command index was unknown");
+        return;
+    }
+    if (unitIndex == indexAfter()) {
+        m_index = unitIndex;
+        sendAux(cmd::repeat(), State::AwaitRepeat, now);
+        return;
+    }
+    if (unitIndex == *m_indexBefore) {
+        ++m_resent;
+        ++m_stats.resent;
+        log(LinkLogKind::Recovery, "not received, sending again: " + describe());
+        transmitMain(now);
+        return;
+    }
+    m_index = unitIndex;
+    finishFailed(describe() + ": the unit's command index is " + std::to_string(unitIndex) +
+                 ", expected " + std::to_string(*m_indexBefore) + " or " +
+                 std::to_string(indexAfter()));
+}
+
+void LinkEngine::onRepeatReply(const Line &line, double now)
+{
+    std::string err;
+    const auto reply = line.overlong ? std::nullopt : decodeFor(mainCommand(), line.text, err);
+    if (!reply) {
+        ++m_stats.garbledLines;
+        retryAux("garbled repeated reply '" + line.text + "'", now);
+        return;
+    }
+    ++m_recovered;
+    ++m_stats.recovered;
+    finishOk(*reply, line.text);
+}
+
+void LinkEngine::recover(const std::string &why, double now)
+{
+    log(LinkLogKind::Recovery, describe() + ": " + why);
+    if (++m_attempts > m_options.maxAttempts) {
+        finishFailed(describe() + ": " + why + "; gave up after " +
+                     std::to_string(m_options.maxAttempts) + " attempts");
+        return;
+    }
+    m_state = State::Settle;
+    m_deadline = now + m_options.settleS;
+}
+
+void LinkEngine::retryAux(const std::string &why, double now)
+{
+    log(LinkLogKind::Recovery, why);
+    if (++m_attempts > m_options.maxAttempts) {
+        finishFailed(describe() + ": " + why + "; gave up after " +
+                     std::to_string(m_options.maxAttempts) + " attempts");
+        return;
+    }
+    // Both '@' and '>' are harmless to repeat; after a settle pause to drop broken bytes.
+    m_state = State::Settle;
+    m_deadline = now + m_options.settleS;
+}
+
+void LinkEngine::onTime(double now)
+{
+    if (now < m_deadline)
+        return;
+    switch (m_state) {
+    case State::Idle:
+        m_deadline = kNoDeadline;
+        return;
+    case State::AwaitReply:
+        ++m_stats.timeouts;
+        if (!m_decoder.pending().empty())
+            m_lastRaw = m_decoder.pending();
+        recover(m_decoder.pending().empty() ? std::string("no reply")
+                                            : "incomplete reply '" + m_decoder.pending() + "'",
+                now);
+        return;
+    case State::AwaitIndex:
+    case State::AwaitRepeat:
+        ++m_stats.timeouts;
+        retryAux("no reply to recovery query", now);
+        return;
+    case State::Settle:
+        m_decoder.clear();
+        if (m_presync) {
+            sendAux(cmd::index(), State::AwaitIndex, now);
+        } else if (m_syncing) {
+            transmitMain(now);
+        } else if (!exact()) {
+            // Harmless to repeat: send it again. It may have arrived before, so the unit's
+            // index is no longer known (learnt again before the next exact command).
+            ++m_resent;
+            ++m_stats.resent;
+            m_index.reset();
+            m_indexBefore.reset();
+            transmitMain(now);
+        } else
+            sendAux(cmd::index(), State::AwaitIndex, now);
+        return;
+    }
+}
+
+void LinkEngine::finishOk(const Reply &r, const std::string &raw)
+{
+    const int after = indexAfter();
+    Outcome o;
+    o.status = OutcomeStatus::Ok;
+    o.commands = std::move(m_commands);
+    o.packet = m_packet;
+    o.reply = r;
+    o.raw = raw;
+    o.resent = m_resent;
+    o.recovered = m_recovered;
+    o.tag = m_tag;
+    if (m_syncing) {
+        m_index = static_cast<int>(r.decimal().value_or(0));
+    } else if (m_packet) {
+        o.accepted = r.ok() ? static_cast<int>(o.commands.size())
+                            : static_cast<int>(r.decimal().value_or(0));
+        // The index after a failed packet depends on where it stopped: learn it next time.
+        m_index = r.ok() && m_indexBefore ? std::optional<int>(after) : std::nullopt;
+    } else if (m_indexBefore && advancesIndex(o.commands.front().op)) {
+        m_index = after;
+    }
+    if (o.commands.front().op == Op::Jump)
+        m_index = 0;
+    finish();
+    if (onOutcome)
+        onOutcome(o);
+}
+
+void LinkEngine::finishFailed(const std::string &why)
+{
+    Outcome o;
+    o.status = OutcomeStatus::Failed;
+    o.commands = std::move(m_commands);
+    o.packet = m_packet;
+    o.raw = m_lastRaw;
+    o.error = why;
+    o.resent = m_resent;
+    o.recovered = m_recovered;
+    o.tag = m_tag;
+    log(LinkLogKind::Error, why);
+    finish();
+    if (onOutcome)
+        onOutcome(o);
+}
+
+void LinkEngine::finish()
+{
+    m_presync = false;
+    m_state = State::Idle;
+    m_deadline = kNoDeadline;
+    m_commands.clear();
+    m_lastRaw.clear();
+}
+
+void LinkEngine::reset()
+{
+    finish();
+    m_decoder.clear();
+    m_out.clear();
+    m_index.reset();
+}
+
+} // namespace frezka::driver

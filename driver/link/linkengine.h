@@ -1,0 +1,186 @@
+#pragma once
+// LinkEngine: the request/response layer of the GVE link, with exact recovery.
+//
+// Pure C++ and clock-free: the owner feeds received bytes and the current time (seconds, any
+// monotonic origin), writes out whatever takeOutput() returns, and calls onTime() when
+// deadline() has passed. The same engine therefore runs on a real serial port (LinkWorker, with
+// a QTimer) and on the emulator's virtual clock (SimRunner), byte for byte alike.
+//
+// One transaction at a time (the link is strictly half-duplex, docs/gve-protocol.md §2): a single
+// command, or a packet of C/B commands (*S .. *E, §2.2). A transaction ends in exactly one
+// Outcome. Recovery (§8) when a reply is garbled, fails its checksum or does not come in time:
+//
+//   settle (let the rest of a broken line arrive, then forget it)
+//   a command that is harmless to repeat (queries, settings): send it again; else
+//   '@'  -> index of the last command the unit received
+//           == the index this transaction leads to   -> it arrived: '>' fetches its reply
+//           == the index before this transaction     -> it did not arrive: send it again
+//           anything else                            -> Failed (desynchronised; see below)
+//   '>'  -> the reply, decoded as the reply to the original command
+//
+// So a position command is sent again only when the unit provably did not get it. A code 4
+// reply while checksums are on may mean the command was damaged on the way (bad checksum: not
+// executed, index not advanced, adopted reading §2.1) or a real syntax error: the index tells
+// which. Code 2 (watchdog: command incomplete) is resolved the same way. Every step counts as an
+// attempt; after LinkOptions::maxAttempts the transaction fails and the link counts as lost.
+//
+// The engine knows the unit's command index after syncIndex() (or the first recovery that
+// learns it): it is advanced for every command except '@' and '>' (adopted reading §8).
+
+#include "driver/protocol/command.h"
+#include "driver/protocol/reply.h"
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frezka::driver {
+
+inline constexpr double kNoDeadline = std::numeric_limits<double>::infinity();
+
+struct LinkOptions
+{
+    int baud = 115200;          // for transmit-time allowances in timeouts
+    double replyTimeoutS = 0.2; // beyond the command's and reply's transmit time
+    double haltTimeoutS = 60;   // H replies only when the machine has stopped
+    double homeTimeoutS = 600;  // W replies only when homing has finished
+    double settleS = 0.01;      // quiet time after a garbled line before asking '@'
+    int maxAttempts = 10;       // recovery steps per transaction before it fails
+    friend bool operator==(const LinkOptions &, const LinkOptions &) = default;
+};
+
+enum class OutcomeStatus : std::uint8_t {
+    Ok,     // reply received (may carry a unit error code: look at reply.code)
+    Failed, // no usable reply after maxAttempts, or the unit's index contradicts ours
+};
+
+struct Outcome
+{
+    OutcomeStatus status = OutcomeStatus::Ok;
+    std::vector<protocol::Command> commands; // the command, or the packet's C/B commands
+    bool packet = false;
+    protocol::Reply reply; // the unit's reply (a packet: the reply to *E)
+    int accepted = 0;      // packet: commands the unit accepted (all when reply.code == Ok)
+    std::string raw;       // the raw reply line, or the last garbled one
+    std::string error;     // Failed: English, names the command and what came back
+    int resent = 0;        // times the transaction was sent again (unit did not get it)
+    int recovered = 0;     // times a lost or garbled reply was recovered with '@' / '>'
+    std::uint64_t tag = 0; // the caller's tag from start()
+};
+
+struct LinkStats
+{
+    std::int64_t bytesOut = 0;
+    std::int64_t bytesIn = 0;
+    std::int64_t transactions = 0;
+    std::int64_t resent = 0;       // transactions sent again
+    std::int64_t recovered = 0;    // replies recovered with '@' and '>'
+    std::int64_t garbledLines = 0; // lines that did not decode or did not fit
+    std::int64_t noiseLines = 0;   // lines nobody waited for (logged, then dropped)
+    std::int64_t timeouts = 0;
+    friend bool operator==(const LinkStats &, const LinkStats &) = default;
+};
+
+enum class LinkLogKind : std::uint8_t { Sent, Received, Noise, Recovery, Error };
+
+class LinkEngine
+{
+public:
+    explicit LinkEngine(LinkOptions options = {});
+
+    // ---- transactions (only when idle())
+    bool idle() const { return m_state == State::Idle; }
+    // Sends one command. The Outcome arrives through onOutcome.
+    void start(const protocol::Command &command, double now, std::uint64_t tag = 0);
+    // Sends C/B commands as one packet.
+    void startPacket(std::vector<protocol::Command> commands, double now, std::uint64_t tag = 0);
+    // Asks '@' and takes the answer as the unit's current index (after connecting, after a
+    // desynchronisation). Outcome: the '@' reply.
+    void syncIndex(double now, std::uint64_t tag = 0);
+
+    // ---- I/O
+    void receive(std::string_view bytes, double now);
+    void onTime(double now);
+    // Absolute time of the next timeout, kNoDeadline when none.
+    double deadline() const { return m_deadline; }
+    // Bytes to write now (the caller must write all of them, in order).
+    std::string takeOutput();
+    bool hasOutput() const { return !m_out.empty(); }
+
+    // ---- state
+    bool checksums() const { return m_checksums; }
+    // Sets the framing after the unit's checksum state is known (the engine also follows
+    // successful %+ / %- by itself).
+    void setChecksums(bool on) { m_checksums = on; }
+    std::optional<int> unitIndex() const { return m_index; }
+    const LinkStats &stats() const { return m_stats; }
+    const LinkOptions &options() const { return m_options; }
+    // Forgets the transaction in flight and all pending bytes (after the port closed). The
+    // transaction gets no Outcome; the caller knows it was lost.
+    void reset();
+    // Seconds a message of n bytes takes on the wire.
+    double wireTime(std::size_t bytes) const;
+
+    std::function<void(const Outcome &)> onOutcome;
+    std::function<void(LinkLogKind, const std::string &)> onLog;
+
+private:
+    enum class State : std::uint8_t { Idle, AwaitReply, Settle, AwaitIndex, AwaitRepeat };
+
+    void beginTransaction(double now);
+    void transmitMain(double now);
+    void sendAux(const protocol::Command &c, State next, double now);
+    void handleLine(const protocol::Line &line, double now);
+    void onMainReply(const protocol::Line &line, double now);
+    void onIndexReply(const protocol::Line &line, double now);
+    void onRepeatReply(const protocol::Line &line, double now);
+    // Decodes a reply to `c`; nullopt (and raw/err set) when garbled or not fitting.
+    std::optional<protocol::Reply> decodeFor(const protocol::Command &c, const std::string &line,
+                                             std::string &err);
+    void recover(const std::string &why, double now);
+    void retryAux(const std::string &why, double now);
+    void finishOk(const protocol::Reply &r, const std::string &raw);
+    void finishFailed(const std::string &why);
+    void finish();
+    void log(LinkLogKind kind, const std::string &text);
+    int indexAfter() const; // the unit's index once this transaction has arrived
+    bool exact() const;     // the transaction must arrive exactly once (see mustArriveOnce)
+    double timeoutFor(const protocol::Command &c, std::size_t bytes) const;
+    const protocol::Command &mainCommand() const;
+    std::string describe() const;
+
+    LinkOptions m_options;
+    State m_state = State::Idle;
+    bool m_checksums = false;
+    std::optional<int> m_index; // the unit's index of the last command received
+    bool m_syncing = false;     // the transaction is syncIndex()
+    bool m_presync = false;     // asking '@' before the transaction (index unknown)
+    protocol::ReplyDecoder m_decoder;
+    std::string m_out;
+    double m_deadline = kNoDeadline;
+    // the transaction in flight
+    std::vector<protocol::Command> m_commands;
+    bool m_packet = false;
+    std::uint64_t m_tag = 0;
+    std::string m_wire; // its bytes, as sent
+    int m_attempts = 0;
+    int m_resent = 0;
+    int m_recovered = 0;
+    std::string m_lastRaw;
+    std::optional<int> m_indexBefore;
+    LinkStats m_stats;
+};
+
+// How far a packet of n commands advances the unit's index once its *E has arrived: every line
+// (*S, the commands, *E) is a command (adopted reading §8). One place, to change with hardware.
+int packetIndexAdvance(int commandCount);
+// Commands whose repetition would change what the machine does (motion, XU/XD, K/R, G, W, J,
+// packets): recovered through the index. All others are resent as they are after a lost reply.
+bool mustArriveOnce(protocol::Op op);
+// Whether a command advances the unit's index (all but '@' and '>').
+bool advancesIndex(protocol::Op op);
+
+} // namespace frezka::driver

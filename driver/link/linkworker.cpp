@@ -1,0 +1,199 @@
+#include "linkworker.h"
+
+#include "driver/link/transport.h"
+
+#include <QCoreApplication>
+#include <QTimer>
+
+#include <cmath>
+
+namespace frezka::driver {
+
+LinkWorker::LinkWorker(QObject *parent)
+    : QObject(parent)
+    , m_config(machine::defaultMachineConfig(protocol::Variant::Gve64))
+    , m_factory(&createTransport)
+{
+    m_clock.start();
+}
+
+LinkWorker::~LinkWorker() = default;
+
+double LinkWorker::now() const
+{
+    return static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
+}
+
+MachineCore &LinkWorker::core()
+{
+    if (!m_core) {
+        m_core = std::make_unique<MachineCore>(m_config, m_options);
+        m_core->onStateChanged = [this](const MachineState &s) { emit stateChanged(s); };
+        m_core->onLog = [this](const std::string &line) {
+            emit logLine(QString::fromStdString(line));
+        };
+        m_core->onError = [this](const MachineError &e) { emit errorOccurred(e); };
+        m_core->onJobFinished = [this](bool ok) { emit jobFinished(ok); };
+    }
+    if (!m_timer) {
+        m_timer = new QTimer(this);
+        m_timer->setSingleShot(true);
+        m_timer->setTimerType(Qt::PreciseTimer);
+        connect(m_timer, &QTimer::timeout, this, [this] {
+            m_core->onTime(now());
+            service();
+        });
+    }
+    return *m_core;
+}
+
+void LinkWorker::service()
+{
+    if (!m_core)
+        return;
+    const std::string out = m_core->takeOutput();
+    if (!out.empty() && m_transport && m_transport->isOpen())
+        m_transport->write(QByteArray(out.data(), static_cast<qsizetype>(out.size())));
+    const double d = m_core->deadline();
+    if (std::isinf(d)) {
+        m_timer->stop();
+        return;
+    }
+    const double ms = std::max(0.0, (d - now()) * 1000.0);
+    m_timer->start(static_cast<int>(std::ceil(ms)));
+}
+
+void LinkWorker::apply(const MachineCore::Result &result)
+{
+    if (result)
+        emit errorOccurred(*result);
+    service();
+}
+
+void LinkWorker::setMachineConfig(const machine::MachineConfig &config)
+{
+    m_config = config;
+    if (m_core)
+        m_core->setConfig(config);
+}
+
+void LinkWorker::connectTo(const ConnectionSettings &settings)
+{
+    core();
+    if (m_transport) {
+        m_transport->disconnect(this);
+        m_transport->close();
+        m_transport->deleteLater();
+        m_transport = nullptr;
+    }
+    QString error;
+    m_transport = m_factory(settings, this, &error);
+    if (!m_transport) {
+        MachineError e;
+        e.message = error.toStdString();
+        emit errorOccurred(e);
+        return;
+    }
+    connect(m_transport, &Transport::opened, this, [this] {
+        emit logLine(QCoreApplication::translate("LinkWorker", "connected: %1")
+                         .arg(m_transport->description()));
+        m_core->linkOpened(now());
+        service();
+    });
+    connect(m_transport, &Transport::bytesReceived, this, &LinkWorker::onBytes);
+    connect(m_transport, &Transport::closed, this, &LinkWorker::onClosed);
+    connect(m_transport, &Transport::logLine, this, &LinkWorker::logLine);
+    m_transport->open();
+}
+
+void LinkWorker::disconnectFromUnit()
+{
+    if (m_transport)
+        m_transport->close();
+}
+
+void LinkWorker::onBytes(const QByteArray &bytes)
+{
+    m_core->receive(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())),
+                    now());
+    service();
+}
+
+void LinkWorker::onClosed(const QString &why)
+{
+    if (!m_core)
+        return;
+    m_core->linkClosed(why.toStdString(), now());
+    service();
+}
+
+void LinkWorker::run(const machine::UnitProgram &program)
+{
+    apply(core().run(program, now()));
+}
+void LinkWorker::pause()
+{
+    apply(core().pause(now()));
+}
+void LinkWorker::resume()
+{
+    apply(core().resume(now()));
+}
+void LinkWorker::abort()
+{
+    apply(core().abort(now()));
+}
+void LinkWorker::toolLift(bool stopSpindle)
+{
+    apply(core().toolLift(stopSpindle, now()));
+}
+void LinkWorker::toolLower(int speed)
+{
+    apply(core().toolLower(speed, now()));
+}
+void LinkWorker::home()
+{
+    apply(core().home(now()));
+}
+void LinkWorker::jogStep(int axis, double distanceMm, double speedMmPerMin)
+{
+    apply(core().jogStep(axis, distanceMm, speedMmPerMin, now()));
+}
+void LinkWorker::jogContinuous(int axis, int direction, double speedMmPerMin)
+{
+    apply(core().jogContinuous(axis, direction, speedMmPerMin, now()));
+}
+void LinkWorker::jogStop()
+{
+    apply(core().jogStop(now()));
+}
+void LinkWorker::setMpg(bool on)
+{
+    apply(core().setMpg(on, now()));
+}
+void LinkWorker::setSpindleRpm(double rpm)
+{
+    apply(core().setSpindleRpm(rpm, now()));
+}
+void LinkWorker::setOutputs(quint8 mask, quint8 activeHigh)
+{
+    apply(core().setOutputs(mask, activeHigh, now()));
+}
+void LinkWorker::setOverride(int percent)
+{
+    apply(core().setOverride(percent, now()));
+}
+void LinkWorker::overrideUp()
+{
+    apply(core().overrideStep(true, now()));
+}
+void LinkWorker::overrideDown()
+{
+    apply(core().overrideStep(false, now()));
+}
+void LinkWorker::sendRaw(const QString &text)
+{
+    apply(core().sendRaw(text.toStdString(), now()));
+}
+
+} // namespace frezka::driver

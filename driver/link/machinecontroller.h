@@ -1,0 +1,117 @@
+#pragma once
+// MachineController: the GUI-thread facade of the driver.
+//
+// Lives in the GUI thread and owns a QThread running the link worker (which owns the port or
+// the in-process emulator and all machine state). Every slot is a queued call into that thread
+// and returns at once; results come back as signals carrying values (MachineState snapshots,
+// log lines, errors). Nothing here blocks and nothing here holds machine state besides the
+// last snapshot for convenience.
+//
+// Status of the operations (updated as they land; the rest is listed in the report):
+//   connectTo (serial port or pty path, built-in emulator), disconnectFromUnit, run, pause,
+//   resume, abort, setOverride, overrideUp/Down, setSpindleRpm, setOutputs, sendRaw,
+//   toolLift / toolLower, home, jogStep, jogContinuous / jogStop, setMpg:
+//   see the "Implemented" column of docs/driver.md.
+
+#include "driver/link/machinestate.h"
+#include "machine/machineconfig.h"
+#include "machine/unitprogram.h"
+
+#include <QMetaType>
+#include <QObject>
+#include <QString>
+
+#include <memory>
+
+class QThread;
+
+namespace frezka::driver {
+
+class LinkWorker;
+
+// Where to connect.
+struct ConnectionSettings
+{
+    enum class Kind : std::uint8_t {
+        SerialPort, // a real port or a pty path ("/dev/ttyUSB0", "/dev/pts/5")
+        Emulator,   // the built-in in-process emulator, real time
+    };
+    Kind kind = Kind::Emulator;
+    QString portName;     // SerialPort
+    int baud = 115200;    // both (the emulator paces its wire at this rate)
+    double latencyMs = 0; // Emulator: USB-serial latency per direction
+    double faultRate = 0; // Emulator: byte errors per byte (1e-3 = one per 1000 bytes)
+    quint32 seed = 1;     // Emulator: fault injector seed
+    friend bool operator==(const ConnectionSettings &, const ConnectionSettings &) = default;
+};
+
+class MachineController : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit MachineController(QObject *parent = nullptr);
+    ~MachineController() override;
+
+    // The last snapshot received from the link thread.
+    const MachineState &state() const { return m_state; }
+
+public slots:
+    // The machine profile (axes, limits, steps/mm, outputs, homing). Applies from the next
+    // connect / operation; a running job keeps the profile it started with.
+    void setMachineConfig(const frezka::machine::MachineConfig &config);
+
+    void connectTo(const frezka::driver::ConnectionSettings &settings);
+    void disconnectFromUnit();
+
+    // Job: stream a planned program (its first command runs from the current position).
+    void run(const frezka::machine::UnitProgram &program);
+    void pause();  // H: brake along the ramp, keep the queue
+    void resume(); // G (after pause, interrupt, M0/M1/M6)
+    void abort();  // H, D: stop and drop the rest of the job
+    // Tool lift while paused: K, lift Z by the profile's toolLiftMm, optional spindle stop;
+    // toolLower lowers back, R, optional new speed (V + XA) when speedPulsesPerS > 0.
+    void toolLift(bool stopSpindle);
+    void toolLower(int speedPulsesPerS);
+
+    void home(); // W per axis in the configured order, then set the counters
+    // Incremental jog: distance in mm (A: degrees), clipped to the soft limits.
+    void jogStep(int axis, double distanceMm, double speedMmPerMin);
+    // Continuous jog toward the soft limit until jogStop().
+    void jogContinuous(int axis, int direction, double speedMmPerMin);
+    void jogStop();
+    void setMpg(bool on);
+
+    void setSpindleRpm(double rpm);                  // !7V, per mille from the profile's max rpm
+    void setOutputs(quint8 mask, quint8 activeHigh); // bits per §10 (1 = on), others kept
+    void setOverride(int percent);                   // XM
+    void overrideUp();                               // XU
+    void overrideDown();                             // XD
+    // A raw command for the console, e.g. "!0PF" or "PF" (address 0 assumed). Validated
+    // against the variant; the reply comes as a logLine.
+    void sendRaw(const QString &text);
+
+signals:
+    void stateChanged(const frezka::driver::MachineState &state);
+    // One line for the communication console / log ("> !0PF", "< 0,1,2,3", "! recovery ...").
+    void logLine(const QString &line);
+    // A user-visible error: the message names the command and the reply.
+    void errorOccurred(const frezka::driver::MachineError &error);
+    // The job ended (ok = reached its end; otherwise aborted or failed with lastError).
+    void jobFinished(bool ok);
+
+private:
+    void onState(const frezka::driver::MachineState &state);
+
+    QThread *m_thread = nullptr;
+    LinkWorker *m_worker = nullptr; // lives in m_thread
+    MachineState m_state;
+};
+
+} // namespace frezka::driver
+
+Q_DECLARE_METATYPE(frezka::driver::MachineState)
+Q_DECLARE_METATYPE(frezka::driver::MachineError)
+Q_DECLARE_METATYPE(frezka::driver::ConnectionSettings)
+Q_DECLARE_METATYPE(frezka::machine::UnitProgram)
+Q_DECLARE_METATYPE(frezka::machine::MachineConfig)

@@ -1,0 +1,352 @@
+// MachineCore: scheduling, polling, state publication. See machinecore.h for the design.
+
+#include "machinecore.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+
+const char *machineModeName(MachineMode mode)
+{
+    switch (mode) {
+    case MachineMode::Disconnected:
+        return "Disconnected";
+    case MachineMode::Connecting:
+        return "Connecting";
+    case MachineMode::Idle:
+        return "Idle";
+    case MachineMode::Homing:
+        return "Homing";
+    case MachineMode::Jogging:
+        return "Jogging";
+    case MachineMode::Running:
+        return "Running";
+    case MachineMode::Stopping:
+        return "Stopping";
+    case MachineMode::Paused:
+        return "Paused";
+    case MachineMode::ToolLifted:
+        return "Tool lifted";
+    case MachineMode::Alarm:
+        return "Alarm";
+    case MachineMode::LinkLost:
+        return "Link lost";
+    }
+    return "?";
+}
+
+MachineCore::MachineCore(machine::MachineConfig config, CoreOptions options)
+    : m_config(std::move(config))
+    , m_options(options)
+    , m_engine(options.link)
+{
+    m_engine.onOutcome = [this](const Outcome &o) { onOutcome(o); };
+    m_engine.onLog = [this](LinkLogKind kind, const std::string &text) {
+        static constexpr const char *kPrefix[] = {"> ", "< ", "? ", "! ", "!! "};
+        log(kPrefix[static_cast<int>(kind)] + text);
+    };
+    m_state.variant = m_config.unit.variant;
+    m_state.axisCount = machine::wireAxisCount(m_config);
+}
+
+void MachineCore::log(const std::string &text)
+{
+    if (onLog)
+        onLog(text);
+}
+
+void MachineCore::setMode(MachineMode mode)
+{
+    if (m_state.mode == mode)
+        return;
+    log("mode: " + std::string(machineModeName(m_state.mode)) + " -> " + machineModeName(mode));
+    m_state.mode = mode;
+    m_dirty = true;
+}
+
+void MachineCore::publish()
+{
+    m_state.link = m_engine.stats();
+    m_state.checksums = m_engine.checksums();
+    if (m_job) {
+        m_state.commandsAcked = static_cast<std::int64_t>(m_next);
+        m_state.vectorsAcked = m_vectorsAcked;
+    }
+    if (!m_dirty)
+        return;
+    m_dirty = false;
+    if (onStateChanged)
+        onStateChanged(m_state);
+}
+
+void MachineCore::fail(const std::string &message, const Outcome *o, MachineMode mode)
+{
+    MachineError e;
+    e.message = message;
+    if (o) {
+        if (!o->commands.empty())
+            e.command = o->packet ? encodeBody(o->commands.front()) + " (packet of " +
+                                        std::to_string(o->commands.size()) + ")"
+                                  : encodeBody(o->commands.front());
+        e.reply = o->raw;
+        if (o->status == OutcomeStatus::Ok)
+            e.unitCode = static_cast<int>(o->reply.code);
+    }
+    m_state.lastError = e;
+    m_dirty = true;
+    log("error: " + message + (e.command.empty() ? "" : " [" + e.command + "]") +
+        (e.reply.empty() ? "" : " -> '" + e.reply + "'"));
+    if (onError)
+        onError(e);
+    setMode(mode);
+}
+
+bool MachineCore::unitError(const Outcome &o, const std::string &what, MachineMode mode)
+{
+    if (o.status == OutcomeStatus::Ok && o.reply.ok())
+        return false;
+    if (o.status == OutcomeStatus::Failed) {
+        fail(what + ": " + o.error, &o, MachineMode::LinkLost);
+        m_steps.clear();
+        return true;
+    }
+    fail(what + ": the unit answered " + std::string(replyCodeText(o.reply.code)), &o, mode);
+    return true;
+}
+
+// ---- scheduling ------------------------------------------------------------------------------
+
+void MachineCore::send(const Command &c, Then then)
+{
+    m_steps.push_back({c, std::move(then)});
+}
+
+void MachineCore::sendFront(const Command &c, Then then)
+{
+    m_steps.push_front({c, std::move(then)});
+}
+
+void MachineCore::onOutcome(const Outcome &o)
+{
+    if (!o.commands.empty() &&
+        (o.commands.front().op == Op::Halt || o.commands.front().op == Op::Home))
+        m_haltPending = false;
+    Then then = std::move(m_inFlight);
+    m_inFlight = nullptr;
+    if (then)
+        then(o);
+}
+
+double MachineCore::deadline() const
+{
+    double d = m_engine.deadline();
+    if (!m_open)
+        return d;
+    if (m_engine.idle()) {
+        d = std::min(d, nextPollTime());
+        if (m_waitUntil > m_now)
+            d = std::min(d, m_waitUntil);
+    }
+    return d;
+}
+
+void MachineCore::receive(std::string_view bytes, double now)
+{
+    m_now = now;
+    m_engine.receive(bytes, now);
+    pump(now);
+}
+
+void MachineCore::onTime(double now)
+{
+    m_now = now;
+    m_engine.onTime(now);
+    pump(now);
+}
+
+void MachineCore::pump(double now)
+{
+    m_now = now;
+    while (m_open && m_engine.idle()) {
+        if (!m_steps.empty()) {
+            Step s = std::move(m_steps.front());
+            m_steps.pop_front();
+            m_inFlight = std::move(s.then);
+            if (s.command.op == Op::Halt || s.command.op == Op::Home)
+                m_haltPending = true;
+            m_engine.start(s.command, now);
+            break;
+        }
+        if (pollDue(now)) {
+            startPoll(now);
+            break;
+        }
+        if (m_job && m_state.mode == MachineMode::Running && !m_streamBlocked &&
+            now >= m_waitUntil) {
+            streamStep(now);
+            if (!m_engine.idle() || !m_steps.empty())
+                continue;
+        }
+        break;
+    }
+    publish();
+}
+
+double MachineCore::nextPollTime() const
+{
+    if (m_haltPending)
+        return kNoDeadline;
+    switch (m_state.mode) {
+    case MachineMode::Disconnected:
+    case MachineMode::Connecting:
+    case MachineMode::LinkLost:
+        return kNoDeadline;
+    default:
+        break;
+    }
+    const bool streaming = m_job && m_state.mode == MachineMode::Running && !m_streamBlocked &&
+                           m_now >= m_waitUntil && m_next < m_program.commands.size();
+    if (!streaming || m_queueFullSeen)
+        return m_lastPoll + m_options.pollIntervalS;
+    // Wire-bound streaming: a poll costs a round trip the queue may not have.
+    const std::int64_t queued = m_vectorsAcked - m_vectorPrefix[std::min(m_exec, m_next)];
+    if (queued >= m_options.pollMinQueued)
+        return m_lastPoll + m_options.pollIntervalS;
+    return m_lastPoll + m_options.maxPollGapS;
+}
+
+bool MachineCore::pollDue(double now) const
+{
+    return now >= nextPollTime();
+}
+
+void MachineCore::startPoll(double now)
+{
+    m_lastPoll = now;
+    m_pollTimes.push_back(now);
+    while (!m_pollTimes.empty() && m_pollTimes.front() < now - 1.0)
+        m_pollTimes.pop_front();
+    m_state.pollHz = static_cast<double>(m_pollTimes.size());
+    if (m_job)
+        ++m_report.polls;
+    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+    const bool inputs = now - m_lastInputsPoll >= m_options.inputsPollIntervalS;
+    if (inputs)
+        m_lastInputsPoll = now;
+    // Position now, F right after it, inputs after that: one poll, ahead of other steps.
+    auto byte = [this](std::uint8_t &field) {
+        return [this, &field](const Outcome &o) {
+            if (o.status == OutcomeStatus::Ok && o.reply.ok()) {
+                field = *o.reply.hexValue();
+                m_dirty = true;
+            }
+        };
+    };
+    if (inputs && m_config.unit.variant != Variant::Gve84)
+        sendFront(cmd::input2(), byte(m_state.inputs2));
+    if (inputs)
+        sendFront(cmd::input1(), byte(m_state.inputs1));
+    sendFront(cmd::flag(), [this](const Outcome &o) {
+        if (o.status != OutcomeStatus::Ok || !o.reply.ok())
+            return (void)unitError(o, "status poll", MachineMode::Alarm);
+        applyFlags(*o.reply.hexValue(), m_now);
+    });
+    m_inFlight = [this](const Outcome &o) {
+        if (o.status != OutcomeStatus::Ok || !o.reply.ok())
+            return (void)unitError(o, "position poll", MachineMode::Alarm);
+        applyPosition(o.reply);
+    };
+    m_engine.start(pos, now);
+}
+
+void MachineCore::applyPosition(const Reply &r)
+{
+    const auto v = r.decimals();
+    if (!v)
+        return;
+    for (std::size_t i = 0; i < v->size() && i < 4; ++i) {
+        m_state.positionSteps[i] = (*v)[i];
+        m_state.positionMm[i] = mmFromSteps(static_cast<int>(i), (*v)[i]);
+    }
+    m_dirty = true;
+    if (m_job)
+        locateExecuting();
+}
+
+void MachineCore::applyFlags(std::uint8_t flags, double now)
+{
+    (void)now;
+    const bool wasInta = m_state.inta;
+    m_state.flags = flags;
+    m_state.run = (flags & 0x40) != 0;
+    m_state.inta = (flags & 0x80) != 0;
+    m_state.queueFull = (flags & 0x20) != 0;
+    m_dirty = true;
+    if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running)
+        interrupted();
+    if (m_state.inta && !wasInta &&
+        (m_state.mode == MachineMode::Jogging || m_state.mode == MachineMode::Idle))
+        interrupted();
+    checkIdleWaiters();
+}
+
+void MachineCore::afterIdle(std::function<void()> then)
+{
+    m_idleWaiters.push_back(std::move(then));
+    send(cmd::flag(), [this](const Outcome &o) {
+        if (o.status != OutcomeStatus::Ok || !o.reply.ok())
+            return (void)unitError(o, "status", MachineMode::Alarm);
+        applyFlags(*o.reply.hexValue(), m_now);
+    });
+}
+
+void MachineCore::checkIdleWaiters()
+{
+    if (m_state.run || m_idleWaiters.empty())
+        return;
+    auto waiters = std::move(m_idleWaiters);
+    m_idleWaiters.clear();
+    for (auto &w : waiters)
+        w();
+}
+
+// ---- transport events --------------------------------------------------------------------
+
+void MachineCore::linkOpened(double now)
+{
+    m_now = now;
+    m_open = true;
+    m_engine.reset();
+    m_steps.clear();
+    m_idleWaiters.clear();
+    m_inFlight = nullptr;
+    m_haltPending = false;
+    setMode(MachineMode::Connecting);
+    connectSequence();
+    pump(now);
+}
+
+void MachineCore::linkClosed(const std::string &why, double now)
+{
+    m_now = now;
+    m_open = false;
+    m_engine.reset();
+    m_steps.clear();
+    m_idleWaiters.clear();
+    m_inFlight = nullptr;
+    m_haltPending = false;
+    if (m_job) {
+        m_needVerify = true;
+        fail("link lost: " + why + "; the job is kept and can resume after reconnecting", nullptr,
+             MachineMode::LinkLost);
+    } else {
+        log("link closed: " + why);
+        setMode(why.empty() ? MachineMode::Disconnected : MachineMode::LinkLost);
+    }
+    publish();
+}
+
+} // namespace frezka::driver

@@ -1,0 +1,159 @@
+// MachineCore: the connect sequence (issue 5 item 3).
+//
+//   %+        checksums on (sent plain; a unit that already has them on answers 4 with a
+//             checksum, then it is sent again with one)
+//   ? Q       identify: firmware string -> variant, compared with the profile; unit id
+//   Y-        MPG off where the unit has one (reset state Y& refuses vectors)
+//   T VN/VK   pause between moves, speed mode set explicitly (adopted reading §4)
+//   SW0..SW3  interrupt masks and polarities from the profile
+//   E*R       the unit's EEPROM compared with the profile; differences reported, never written
+//   P4/PF F   position and status -> Idle (or, with a job kept over a link loss, re-establish
+//             its progress from the counters -> Paused)
+
+#include "machinecore.h"
+
+#include <cmath>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+
+void MachineCore::connectSequence()
+{
+    const Command first = m_options.checksums ? cmd::checksumOn() : cmd::checksumOff();
+    m_engine.setChecksums(false);
+    send(first, [this, first](const Outcome &o) {
+        if (o.status == OutcomeStatus::Ok && o.reply.code == ReplyCode::Syntax) {
+            // The unit's checksums were on and it refused the plain command: send it framed.
+            m_engine.setChecksums(true);
+            sendFront(first, [this](const Outcome &again) {
+                if (!unitError(again, "switching checksums", MachineMode::Alarm))
+                    setupUnit();
+            });
+            return;
+        }
+        if (!unitError(o, "switching checksums", MachineMode::Alarm))
+            setupUnit();
+    });
+}
+
+void MachineCore::setupUnit()
+{
+    const VariantInfo &want = variantInfo(m_config.unit.variant);
+    send(cmd::version(), [this, &want](const Outcome &o) {
+        if (unitError(o, "identifying the unit ('?')", MachineMode::Alarm))
+            return;
+        m_state.firmware = o.reply.values.empty() ? "" : o.reply.values[0];
+        const auto found = variantFromFirmware(m_state.firmware);
+        const auto wantFamily =
+            want.variant == Variant::Gve64Phantom ? Variant::Gve64 : want.variant;
+        if (!found || *found != wantFamily) {
+            m_steps.clear();
+            fail("the unit reports firmware '" + m_state.firmware +
+                     "' but the machine profile is "
+                     "for a " +
+                     std::string(want.displayName) + "; choose the matching profile",
+                 &o, MachineMode::Alarm);
+            return;
+        }
+        m_state.variant = want.variant;
+        m_dirty = true;
+    });
+    send(cmd::identify(), [this](const Outcome &o) {
+        if (unitError(o, "identifying the unit ('Q')", MachineMode::Alarm))
+            return;
+        m_state.unitId = o.reply.values.empty() ? "" : o.reply.values[0];
+    });
+    auto check = [this](const char *what) {
+        return [this, what](const Outcome &o) { unitError(o, what, MachineMode::Alarm); };
+    };
+    if (want.hasMpg) {
+        send(cmd::mpgOff(), check("switching the MPG off"));
+        m_state.mpgOn = false;
+    }
+    send(cmd::pause(std::clamp(m_config.motion.pauseMs, 1, 24)), check("setting T"));
+    if (want.hasVlVkXmNa)
+        send(cmd::speedModeVn(), check("setting VN"));
+    const machine::EepromConfig &ee = m_config.eeprom;
+    send(cmd::statusWrite(0, ee.interruptEnable), check("setting the interrupt mask"));
+    send(cmd::statusWrite(2, ee.polarity), check("setting the input polarity"));
+    if (want.variant != Variant::Gve84) {
+        send(cmd::statusWrite(1, ee.interruptEnableHigh), check("setting the interrupt mask"));
+        send(cmd::statusWrite(3, ee.polarityHigh), check("setting the input polarity"));
+    }
+    if (m_options.compareEeprom && ee.sync)
+        compareEeprom();
+    connected();
+}
+
+void MachineCore::compareEeprom()
+{
+    m_state.eepromDifferences.clear();
+    const bool wide = variantInfo(m_config.unit.variant).hasEepromFloat;
+    for (const machine::EepromEntry &e : machine::eepromEntries(m_config)) {
+        Command c;
+        switch (e.kind) {
+        case machine::EepromKind::Byte:
+            c = cmd::eepromReadByte(e.address);
+            break;
+        case machine::EepromKind::Float:
+            c = cmd::eepromReadFloat(e.address);
+            break;
+        case machine::EepromKind::Uint32:
+            c = cmd::eepromReadUint(e.address);
+            break;
+        }
+        if (!wide && e.kind != machine::EepromKind::Byte)
+            continue;
+        send(c, [this, e](const Outcome &o) {
+            if (unitError(o, "reading the EEPROM", MachineMode::Alarm))
+                return;
+            double have = 0;
+            if (e.kind == machine::EepromKind::Byte)
+                have = o.reply.hexValue().value_or(0);
+            else
+                have = o.reply.real().value_or(0);
+            const double tolerance = e.kind == machine::EepromKind::Float
+                                         ? 1e-4 * std::max(1.0, std::abs(e.value))
+                                         : 0.0;
+            if (std::abs(have - e.value) > tolerance) {
+                const std::string text = e.what + ": unit " + o.reply.values.front() +
+                                         ", profile " + std::to_string(e.value);
+                m_state.eepromDifferences.push_back(text);
+                m_dirty = true;
+                log("EEPROM differs: " + text);
+            }
+        });
+    }
+}
+
+void MachineCore::connected()
+{
+    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+    send(pos, [this](const Outcome &o) {
+        if (unitError(o, "reading the position", MachineMode::Alarm))
+            return;
+        applyPosition(o.reply);
+    });
+    send(cmd::flag(), [this](const Outcome &o) {
+        if (unitError(o, "reading the status", MachineMode::Alarm))
+            return;
+        m_state.flags = *o.reply.hexValue();
+        m_state.run = (m_state.flags & 0x40) != 0;
+        m_state.inta = (m_state.flags & 0x80) != 0;
+        m_state.queueFull = (m_state.flags & 0x20) != 0;
+        m_lastPoll = m_now;
+        if (m_state.mode != MachineMode::Connecting)
+            return; // an error on the way
+        if (m_job && m_needVerify) {
+            setMode(MachineMode::Paused);
+            m_state.hold = HoldReason::User;
+            m_state.holdText = "link restored: checking the job's progress against the counters";
+            verifyProgress("reconnected");
+            return;
+        }
+        setMode(MachineMode::Idle);
+    });
+}
+
+} // namespace frezka::driver

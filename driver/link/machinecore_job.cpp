@@ -1,0 +1,499 @@
+// MachineCore: job streaming, progress and its re-establishment from the unit's counters.
+
+#include "machinecore.h"
+
+#include "gcode/toolpath.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+using machine::UnitOp;
+
+namespace {
+
+bool isMotion(UnitOp op)
+{
+    return op == UnitOp::Vector || op == UnitOp::Line;
+}
+
+bool isModal(UnitOp op)
+{
+    switch (op) {
+    case UnitOp::Brake:
+    case UnitOp::Speed:
+    case UnitOp::Accel:
+    case UnitOp::Pause:
+    case UnitOp::ShortThreshold:
+    case UnitOp::SpeedModeVk:
+    case UnitOp::SpeedModeVn:
+        return true;
+    default:
+        return false;
+    }
+}
+
+std::string lineText(const machine::UnitCommand &c)
+{
+    return c.sourceLine ? "line " + std::to_string(c.sourceLine) : "setup";
+}
+
+} // namespace
+
+Command MachineCore::toCommand(const machine::UnitCommand &c) const
+{
+    const bool four = m_program.axisCount == 4;
+    switch (c.op) {
+    case UnitOp::Line:
+        return four ? cmd::line(c.d[0], c.d[1], c.d[2], c.d[3]) : cmd::line(c.d[0], c.d[1], c.d[2]);
+    case UnitOp::Vector:
+        return four ? cmd::vector(c.d[0], c.d[1], c.d[2], c.d[3])
+                    : cmd::vector(c.d[0], c.d[1], c.d[2]);
+    case UnitOp::Brake:
+        return cmd::brake(c.value);
+    case UnitOp::Speed:
+        return cmd::speed(c.value);
+    case UnitOp::Accel:
+        return cmd::accel(c.value);
+    case UnitOp::Pause:
+        return cmd::pause(c.value);
+    case UnitOp::ShortThreshold:
+        return cmd::shortThreshold(c.value);
+    case UnitOp::SpeedModeVk:
+        return cmd::speedModeVk();
+    case UnitOp::SpeedModeVn:
+        return cmd::speedModeVn();
+    case UnitOp::Output:
+        return cmd::output(static_cast<int>(c.value));
+    case UnitOp::Spindle:
+        return cmd::spindle(c.value);
+    default:
+        return cmd::flag(); // PC-side ops are never sent
+    }
+}
+
+MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
+{
+    auto refuse = [](std::string text) { return MachineError{std::move(text), {}, {}, -1}; };
+    if (m_state.mode != MachineMode::Idle)
+        return refuse(std::string("a job can start only when the machine is idle (it is ") +
+                      machineModeName(m_state.mode) + ")");
+    const VariantInfo &info = variantInfo(m_config.unit.variant);
+    if (program.axisCount != 3 && program.axisCount != 4)
+        return refuse("the unit program has " + std::to_string(program.axisCount) + " axes");
+    if (program.axisCount > info.axisCount)
+        return refuse("the unit program has 4 axes but the " + std::string(info.displayName) +
+                      " has 3");
+    for (int a = 0; a < program.axisCount; ++a) {
+        if (program.startSteps[a] != m_state.positionSteps[a])
+            return refuse("the program was planned from " + std::to_string(program.startSteps[a]) +
+                          " steps on axis " + "XYZA"[a] + " but the machine is at " +
+                          std::to_string(m_state.positionSteps[a]) + "; plan it again from here");
+    }
+    m_program = std::move(program);
+    for (const machine::UnitCommand &c : m_program.commands) {
+        if (c.op > UnitOp::Spindle)
+            continue;
+        Command wire = toCommand(c);
+        if (c.op == UnitOp::Spindle && !info.hasSpindleAddress7)
+            wire = cmd::output(c.value ? 0xFE : 0xFF); // GVE84: the relay
+        if (auto bad = validate(wire, m_config.unit.variant, m_config.unit.maxPulseRate)) {
+            auto e = refuse(lineText(c) + ": " + bad.message);
+            e.command = encodeBody(wire);
+            m_program = {};
+            return e;
+        }
+    }
+    m_job = true;
+    m_next = m_exec = m_inflightEnd = 0;
+    m_vectorsAcked = 0;
+    m_streamBlocked = m_queueFullSeen = m_needVerify = false;
+    m_waitUntil = -1;
+    m_packetLimit =
+        m_options.maxPacketCommands > 0 ? m_options.maxPacketCommands : info.queueCapacity - 1;
+    m_vectorPrefix.assign(m_program.commands.size() + 1, 0);
+    for (std::size_t i = 0; i < m_program.commands.size(); ++i)
+        m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(m_program.commands[i].op) ? 1 : 0);
+    m_report = {};
+    m_report.startS = now;
+    m_bytesAtStart = m_engine.stats().bytesIn + m_engine.stats().bytesOut;
+    m_resentAtStart = m_engine.stats().resent;
+    m_recoveredAtStart = m_engine.stats().recovered;
+    m_state.jobActive = true;
+    m_state.commandsTotal = static_cast<std::int64_t>(m_program.commands.size());
+    m_state.hold = HoldReason::None;
+    m_state.holdText.clear();
+    m_state.lastError.reset();
+    setMode(MachineMode::Running);
+    pump(now);
+    return std::nullopt;
+}
+
+int MachineCore::freeQueueEstimate() const
+{
+    const int capacity = variantInfo(m_config.unit.variant).queueCapacity;
+    const std::int64_t queued = m_vectorsAcked - m_vectorPrefix[std::min(m_exec, m_next)];
+    return static_cast<int>(std::max<std::int64_t>(0, capacity - 1 - queued));
+}
+
+void MachineCore::streamStep(double now)
+{
+    if (m_needVerify)
+        return;
+    if (m_next >= m_program.commands.size()) {
+        m_streamBlocked = true;
+        afterIdle([this] { finishJob(true); });
+        return;
+    }
+    const machine::UnitCommand &c = m_program.commands[m_next];
+    if ((c.op == UnitOp::Vector || c.op == UnitOp::Brake) && m_options.packets) {
+        sendPacket(now);
+        return;
+    }
+    if (c.op > UnitOp::Spindle) {
+        handlePcOp(c, now);
+        return;
+    }
+    Command wire = toCommand(c);
+    if (c.op == UnitOp::Spindle && !variantInfo(m_config.unit.variant).hasSpindleAddress7)
+        wire = cmd::output((m_state.outputs & 0xFE) | (c.value ? 0 : 1));
+    const std::size_t index = m_next;
+    m_inflightEnd = m_next + 1;
+    m_inFlight = [this, index](const Outcome &o) { onJobCommandOutcome(o, index, m_now); };
+    m_engine.start(wire, now);
+}
+
+void MachineCore::sendPacket(double now)
+{
+    const auto &cmds = m_program.commands;
+    const int room = std::min(freeQueueEstimate(), static_cast<int>(m_packetLimit));
+    std::vector<Command> packet;
+    int vectors = 0;
+    std::size_t end = m_next;
+    while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
+        const UnitOp op = cmds[end].op;
+        if (op != UnitOp::Vector && op != UnitOp::Brake)
+            break;
+        if (op == UnitOp::Vector && vectors >= room)
+            break;
+        vectors += op == UnitOp::Vector ? 1 : 0;
+        packet.push_back(toCommand(cmds[end]));
+        ++end;
+    }
+    if (packet.empty() ||
+        (vectors == 0 && cmds[end < cmds.size() ? end : end - 1].op == UnitOp::Vector)) {
+        // No room in the unit's queue by our estimate: wait for the next poll to tell.
+        m_waitUntil = std::max(now, m_lastPoll) + m_options.pollIntervalS;
+        m_queueFullSeen = true;
+        return;
+    }
+    const std::size_t first = m_next;
+    m_inflightEnd = end;
+    if (packet.size() == 1) {
+        m_inFlight = [this, first](const Outcome &o) { onJobCommandOutcome(o, first, m_now); };
+        m_engine.start(packet.front(), now);
+        return;
+    }
+    const std::size_t n = packet.size();
+    m_inFlight = [this, first, n](const Outcome &o) { onPacketOutcome(o, first, n, m_now); };
+    m_engine.startPacket(std::move(packet), now);
+}
+
+void MachineCore::acceptUpTo(std::size_t end)
+{
+    for (; m_next < end; ++m_next) {
+        if (isMotion(m_program.commands[m_next].op)) {
+            ++m_vectorsAcked;
+            ++m_report.vectors;
+        }
+        ++m_report.commands;
+    }
+    m_state.commandsAcked = static_cast<std::int64_t>(m_next);
+    m_state.vectorsAcked = m_vectorsAcked;
+    m_dirty = true;
+}
+
+void MachineCore::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, double now)
+{
+    if (m_next != first)
+        return; // superseded (abort, link loss)
+    if (o.status == OutcomeStatus::Failed) {
+        m_packetLimit = std::max(4, m_packetLimit / 2);
+        verifyProgress("packet outcome unknown: " + o.error);
+        return;
+    }
+    const std::size_t accepted = std::min<std::size_t>(static_cast<std::size_t>(o.accepted), n);
+    acceptUpTo(first + accepted);
+    switch (o.reply.code) {
+    case ReplyCode::Ok:
+        m_queueFullSeen = false;
+        m_packetLimit = std::min(m_options.maxPacketCommands > 0
+                                     ? m_options.maxPacketCommands
+                                     : variantInfo(m_config.unit.variant).queueCapacity - 1,
+                                 m_packetLimit + m_packetLimit / 2 + 1);
+        return;
+    case ReplyCode::QueueFull:
+        m_queueFullSeen = true;
+        m_waitUntil = now + m_options.pollIntervalS;
+        return;
+    case ReplyCode::Syntax:   // a line damaged on the way (bad checksum) or lost
+    case ReplyCode::Watchdog: // the packet came in too slowly: none of the rest ran
+        m_packetLimit = std::max(4, m_packetLimit / 2);
+        m_report.resent += static_cast<std::int64_t>(n - accepted);
+        return;
+    default:
+        fail(lineText(m_program.commands[first + accepted]) + ": the unit refused '" +
+                 encodeBody(toCommand(m_program.commands[first + accepted])) + "' (" +
+                 std::string(replyCodeText(o.reply.code)) + ")",
+             &o, MachineMode::Alarm);
+        return;
+    }
+}
+
+void MachineCore::onJobCommandOutcome(const Outcome &o, std::size_t index, double now)
+{
+    if (m_next != index)
+        return;
+    const machine::UnitCommand &c = m_program.commands[index];
+    if (o.status == OutcomeStatus::Failed) {
+        if (isMotion(c.op)) {
+            verifyProgress("outcome unknown: " + o.error);
+        } else {
+            m_needVerify = true;
+            fail(lineText(c) + ": " + o.error, &o, MachineMode::LinkLost);
+        }
+        return;
+    }
+    switch (o.reply.code) {
+    case ReplyCode::Ok:
+        if (c.op == UnitOp::Vector)
+            m_queueFullSeen = false;
+        acceptUpTo(index + 1);
+        return;
+    case ReplyCode::QueueFull: // C: queue full; L: queue not yet empty. Not accepted: again.
+        m_queueFullSeen = c.op == UnitOp::Vector;
+        m_waitUntil = now + m_options.pollIntervalS;
+        return;
+    default:
+        fail(lineText(c) + ": the unit refused '" + encodeBody(o.commands.front()) + "' (" +
+                 std::string(replyCodeText(o.reply.code)) + ")",
+             &o, MachineMode::Alarm);
+        return;
+    }
+}
+
+void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
+{
+    (void)now;
+    const std::size_t index = m_next;
+    m_streamBlocked = true;
+    switch (c.op) {
+    case UnitOp::WaitIdle:
+        afterIdle([this, index] {
+            if (m_next != index)
+                return;
+            acceptUpTo(index + 1);
+            m_streamBlocked = false;
+        });
+        return;
+    case UnitOp::Dwell:
+        afterIdle([this, index, ms = c.value] {
+            if (m_next != index)
+                return;
+            acceptUpTo(index + 1);
+            m_waitUntil = m_now + static_cast<double>(ms) / 1000.0;
+            m_streamBlocked = false;
+        });
+        return;
+    case UnitOp::OperatorStop: {
+        const auto kind = static_cast<gcode::EventKind>(c.value);
+        if (kind == gcode::EventKind::OptionalPause && !m_options.optionalStops) {
+            acceptUpTo(index + 1);
+            m_streamBlocked = false;
+            return;
+        }
+        std::string text = kind == gcode::EventKind::ToolChange
+                               ? "M6: change to tool " + std::to_string(c.aux)
+                           : kind == gcode::EventKind::OptionalPause ? "M1: optional stop"
+                                                                     : "M0: program stop";
+        afterIdle([this, index, text] {
+            if (m_next != index)
+                return;
+            acceptUpTo(index + 1);
+            m_streamBlocked = false;
+            m_holdNeedsGo = false;
+            m_state.hold = HoldReason::OperatorStop;
+            m_state.holdText = lineText(m_program.commands[index]) + ": " + text;
+            setMode(MachineMode::Paused);
+        });
+        return;
+    }
+    case UnitOp::ProgramEnd:
+        afterIdle([this, index] {
+            if (m_next != index)
+                return;
+            acceptUpTo(index + 1);
+            finishJob(true);
+        });
+        return;
+    case UnitOp::Probe:
+    default:
+        m_streamBlocked = false;
+        fail(lineText(c) + ": G38 probing is not implemented in the driver yet", nullptr,
+             MachineMode::Alarm);
+        return;
+    }
+}
+
+void MachineCore::finishJob(bool ok)
+{
+    if (!m_job)
+        return;
+    m_job = false;
+    m_streamBlocked = false;
+    m_report.finished = ok;
+    m_report.endS = m_now;
+    m_report.linkBytes = m_engine.stats().bytesIn + m_engine.stats().bytesOut - m_bytesAtStart;
+    m_report.resent += m_engine.stats().resent - m_resentAtStart;
+    m_report.recovered = m_engine.stats().recovered - m_recoveredAtStart;
+    m_state.jobActive = false;
+    m_state.progress = ok ? 1.0 : m_state.progress;
+    m_state.etaS = ok ? 0 : -1;
+    m_dirty = true;
+    if (m_state.mode == MachineMode::Running)
+        setMode(MachineMode::Idle);
+    log(ok ? "job finished" : "job ended");
+    if (onJobFinished)
+        onJobFinished(ok);
+}
+
+// The executing command from the polled position: the first motion command from m_exec on
+// whose box (from its start to its end position) holds the position and which has not ended.
+void MachineCore::locateExecuting()
+{
+    const auto &cmds = m_program.commands;
+    const int axes = m_program.axisCount;
+    const auto &pos = m_state.positionSteps;
+    std::size_t i = m_exec;
+    const std::size_t limit = std::min(m_next, cmds.size());
+    for (int guard = 0; i < limit && guard < 100000; ++i, ++guard) {
+        if (!isMotion(cmds[i].op))
+            continue;
+        const machine::Steps4 &end = cmds[i].endSteps;
+        bool atEnd = true;
+        bool inside = true;
+        for (int a = 0; a < axes; ++a) {
+            const std::int64_t start = end[a] - cmds[i].d[a];
+            atEnd = atEnd && pos[a] == end[a];
+            inside =
+                inside && pos[a] >= std::min(start, end[a]) && pos[a] <= std::max(start, end[a]);
+        }
+        if (inside && !atEnd)
+            break;
+    }
+    m_exec = i;
+    const std::size_t shown = std::min(i, cmds.empty() ? 0 : cmds.size() - 1);
+    m_state.sourceLine = cmds.empty() ? 0 : cmds[shown].sourceLine;
+    m_state.progress = cmds.empty() ? 0 : static_cast<double>(i) / static_cast<double>(cmds.size());
+    const double elapsed = m_now - m_report.startS;
+    m_state.etaS =
+        i > 0 ? elapsed * static_cast<double>(cmds.size() - i) / static_cast<double>(i) : -1;
+}
+
+void MachineCore::verifyProgress(const std::string &why)
+{
+    log("re-establishing job progress from the unit's counters: " + why);
+    ++m_report.verified;
+    m_needVerify = true;
+    m_streamBlocked = true;
+    afterIdle([this] {
+        const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+        send(pos, [this](const Outcome &o) {
+            if (unitError(o, "reading the position", MachineMode::LinkLost))
+                return;
+            applyPosition(o.reply);
+            matchProgress();
+        });
+    });
+}
+
+void MachineCore::matchProgress()
+{
+    // The unit ran everything it accepted; it accepted a prefix of the program. Find the
+    // prefix lengths j in [m_next, m_inflightEnd] whose end position equals the counters.
+    const auto &cmds = m_program.commands;
+    const int axes = m_program.axisCount;
+    const std::size_t hi = std::min(std::max(m_inflightEnd, m_next), cmds.size());
+    std::size_t lo = m_next;
+    auto endOf = [&](std::size_t j) -> const machine::Steps4 & {
+        return j == 0 ? m_program.startSteps : cmds[j - 1].endSteps;
+    };
+    std::vector<std::size_t> matches;
+    for (std::size_t j = lo; j <= hi; ++j) {
+        bool same = true;
+        for (int a = 0; a < axes; ++a)
+            same = same && endOf(j)[a] == m_state.positionSteps[a];
+        if (same)
+            matches.push_back(j);
+    }
+    // Several j with the same end position differ only by modal commands (B) or zero moves:
+    // taking the first is exact as long as they are contiguous (modal commands are re-sent).
+    bool contiguous = !matches.empty();
+    for (std::size_t k = 1; k < matches.size(); ++k)
+        contiguous = contiguous && (matches[k] == matches[k - 1] + 1 ||
+                                    m_vectorPrefix[matches[k]] == m_vectorPrefix[matches[0]]);
+    if (!contiguous) {
+        fail(matches.empty()
+                 ? "the unit's counters match no point the job has reached; the job cannot "
+                   "resume exactly (re-home and start it again)"
+                 : "the unit's counters match several points of the job; cannot tell how far "
+                   "it got (abort the job)",
+             nullptr, MachineMode::Alarm);
+        return;
+    }
+    const std::size_t j = matches.front();
+    log("progress re-established at command " + std::to_string(j) + " of " +
+        std::to_string(cmds.size()));
+    acceptUpTo(j);
+    m_inflightEnd = j;
+    m_exec = std::min(m_exec, j);
+    resendModals([this] {
+        m_needVerify = false;
+        m_streamBlocked = false;
+        m_queueFullSeen = false;
+    });
+}
+
+void MachineCore::resendModals(std::function<void()> then)
+{
+    // The last value of each modal command before m_next, sent again in program order.
+    std::vector<std::size_t> last;
+    std::array<bool, 16> seen{};
+    for (std::size_t i = m_next; i-- > 0;) {
+        const UnitOp op = m_program.commands[i].op;
+        if (!isModal(op))
+            continue;
+        const auto slot =
+            static_cast<std::size_t>(op == UnitOp::SpeedModeVn ? UnitOp::SpeedModeVk : op);
+        if (seen[slot])
+            continue;
+        seen[slot] = true;
+        last.push_back(i);
+    }
+    std::reverse(last.begin(), last.end());
+    for (std::size_t i : last) {
+        send(toCommand(m_program.commands[i]), [this](const Outcome &o) {
+            unitError(o, "re-sending the job's speed settings", MachineMode::Alarm);
+        });
+    }
+    send(cmd::flag(), [this, then = std::move(then)](const Outcome &o) {
+        if (unitError(o, "status", MachineMode::Alarm))
+            return;
+        applyFlags(*o.reply.hexValue(), m_now);
+        then();
+    });
+}
+
+} // namespace frezka::driver

@@ -1,0 +1,538 @@
+// MachineCore: machine operations (issue 5 item 4): pause/resume/abort, tool lift with
+// KEEP/RESTORE, homing, jog, MPG, spindle, outputs, feed override, raw commands, interrupts.
+
+#include "machinecore.h"
+
+#include "driver/protocol/commandparser.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+
+namespace {
+
+MachineError refusal(std::string text)
+{
+    return MachineError{std::move(text), {}, {}, -1};
+}
+
+MachineError notNow(const char *what, MachineMode mode)
+{
+    return refusal(std::string(what) + " is not possible now (the machine is " +
+                   machineModeName(mode) + ")");
+}
+
+} // namespace
+
+std::int64_t MachineCore::stepsFromMm(int axis, double mm) const
+{
+    return std::llround(mm * m_config.axes[static_cast<std::size_t>(axis)].stepsPerMm);
+}
+
+double MachineCore::mmFromSteps(int axis, std::int64_t steps) const
+{
+    return static_cast<double>(steps) / m_config.axes[static_cast<std::size_t>(axis)].stepsPerMm;
+}
+
+// ---- pause / resume / abort ----------------------------------------------------------------
+
+MachineCore::Result MachineCore::pause(double now)
+{
+    if (m_state.mode != MachineMode::Running)
+        return notNow("Pause", m_state.mode);
+    setMode(MachineMode::Stopping);
+    sendFront(cmd::halt(), [this](const Outcome &o) {
+        if (unitError(o, "pausing (H)", MachineMode::Alarm))
+            return;
+        m_holdNeedsGo = true;
+        m_state.inta = true;
+        m_state.hold = HoldReason::User;
+        m_state.holdText = "paused";
+        setMode(MachineMode::Paused);
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+MachineCore::Result MachineCore::resume(double now)
+{
+    if (m_state.mode != MachineMode::Paused)
+        return notNow("Resume", m_state.mode);
+    if (m_needVerify)
+        return refusal("the job's progress is still being checked against the unit's counters");
+    auto running = [this] {
+        m_state.hold = HoldReason::None;
+        m_state.holdText.clear();
+        m_state.interruptInputs = 0;
+        setMode(m_job ? MachineMode::Running : MachineMode::Idle);
+    };
+    if (!m_holdNeedsGo) {
+        running();
+        pump(now);
+        return std::nullopt;
+    }
+    send(cmd::go(), [this, running](const Outcome &o) {
+        // 6 = nothing to continue: the queue ran out while braking; the job streams on.
+        if (o.status == OutcomeStatus::Ok && o.reply.code == ReplyCode::NothingToContinue) {
+            m_holdNeedsGo = false;
+            running();
+            return;
+        }
+        if (unitError(o, "continuing (G)", MachineMode::Alarm))
+            return;
+        m_holdNeedsGo = false;
+        m_state.inta = false;
+        running();
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+MachineCore::Result MachineCore::abort(double now)
+{
+    switch (m_state.mode) {
+    case MachineMode::Running:
+    case MachineMode::Paused:
+    case MachineMode::Stopping:
+    case MachineMode::Jogging:
+    case MachineMode::Alarm:
+    case MachineMode::Homing:
+        break;
+    default:
+        if (!m_job)
+            return notNow("Abort", m_state.mode);
+    }
+    if (m_state.mode == MachineMode::ToolLifted)
+        return refusal("lower the tool first: the job's queue is kept in the unit (K)");
+    m_steps.clear();
+    m_idleWaiters.clear();
+    const bool wasJob = m_job;
+    m_job = false;
+    m_state.jobActive = false;
+    m_streamBlocked = false;
+    m_needVerify = false;
+    setMode(MachineMode::Stopping);
+    send(cmd::halt(),
+         [this](const Outcome &o) { unitError(o, "stopping (H)", MachineMode::Alarm); });
+    send(cmd::deleteQueue(), [this, wasJob](const Outcome &o) {
+        if (unitError(o, "dropping the queue (D)", MachineMode::Alarm))
+            return;
+        m_holdNeedsGo = false;
+        m_state.hold = HoldReason::None;
+        m_state.holdText.clear();
+        setMode(MachineMode::Idle);
+        if (wasJob) {
+            m_report.endS = m_now;
+            if (onJobFinished)
+                onJobFinished(false);
+        }
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+// ---- tool lift: H (pause) .. K, L up, [operator], L down, R, [V, XA], G (resume) ----------
+
+MachineCore::Result MachineCore::toolLift(bool stopSpindle, double now)
+{
+    if (m_state.mode != MachineMode::Paused || !m_job)
+        return notNow("Lifting the tool", m_state.mode);
+    const double liftMm = m_config.motion.toolLiftMm;
+    if (liftMm <= 0)
+        return refusal("the machine profile sets no tool lift height (motion.toolLiftMm)");
+    // Up is toward the upper soft limit of Z, never beyond it.
+    const machine::AxisConfig &z = m_config.axes[2];
+    const std::int64_t now_z = m_state.positionSteps[2];
+    const std::int64_t top = stepsFromMm(2, z.softMaxMm);
+    m_liftSteps = std::min(stepsFromMm(2, liftMm), std::max<std::int64_t>(0, top - now_z));
+    if (m_liftSteps == 0)
+        return refusal("Z is at its upper soft limit: no room to lift the tool");
+    m_spindleStopped = stopSpindle && m_state.spindlePermille > 0;
+    const int permille = m_state.spindlePermille;
+    m_liftSpindle = permille;
+    setMode(MachineMode::Stopping);
+    send(cmd::statusRead(4), [this](const Outcome &o) {
+        if (o.status == OutcomeStatus::Ok && o.reply.ok())
+            m_state.interruptInputs = (m_state.interruptInputs & 0xFF00) | *o.reply.hexValue();
+    });
+    send(cmd::keep(), [this](const Outcome &o) {
+        if (unitError(o, "keeping the queue (K)", MachineMode::Alarm))
+            return;
+        m_kept = true;
+    });
+    if (m_spindleStopped)
+        send(cmd::spindle(0), [this](const Outcome &o) {
+            if (!unitError(o, "stopping the spindle", MachineMode::Alarm))
+                m_state.spindlePermille = 0;
+        });
+    const int axes = m_state.axisCount;
+    const Command up = axes == 4 ? cmd::line(0, 0, m_liftSteps, 0) : cmd::line(0, 0, m_liftSteps);
+    send(up, [this](const Outcome &o) {
+        if (unitError(o, "lifting the tool", MachineMode::Alarm))
+            return;
+        afterIdle([this] {
+            m_state.hold = HoldReason::User;
+            m_state.holdText = "tool lifted";
+            setMode(MachineMode::ToolLifted);
+        });
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+MachineCore::Result MachineCore::toolLower(int speedPulsesPerS, double now)
+{
+    if (m_state.mode != MachineMode::ToolLifted)
+        return notNow("Lowering the tool", m_state.mode);
+    if (speedPulsesPerS > 0) {
+        if (auto bad = validate(cmd::speed(speedPulsesPerS), m_config.unit.variant,
+                                m_config.unit.maxPulseRate))
+            return refusal(bad.message);
+    }
+    setMode(MachineMode::Stopping);
+    if (m_spindleStopped) {
+        send(cmd::spindle(m_liftSpindle), [this](const Outcome &o) {
+            if (!unitError(o, "starting the spindle", MachineMode::Alarm))
+                m_state.spindlePermille = m_liftSpindle;
+        });
+    }
+    const int axes = m_state.axisCount;
+    const Command down =
+        axes == 4 ? cmd::line(0, 0, -m_liftSteps, 0) : cmd::line(0, 0, -m_liftSteps);
+    send(down, [this, speedPulsesPerS](const Outcome &o) {
+        if (unitError(o, "lowering the tool", MachineMode::Alarm))
+            return;
+        afterIdle([this, speedPulsesPerS] {
+            sendFront(cmd::restore(), [this, speedPulsesPerS](const Outcome &r) {
+                if (unitError(r, "restoring the queue (R)", MachineMode::Alarm))
+                    return;
+                m_kept = false;
+                if (speedPulsesPerS > 0) {
+                    send(cmd::speed(speedPulsesPerS), [this](const Outcome &v) {
+                        unitError(v, "setting the new speed", MachineMode::Alarm);
+                    });
+                    send(cmd::exchangeAll(), [this](const Outcome &x) {
+                        unitError(x, "applying the new speed (XA)", MachineMode::Alarm);
+                    });
+                }
+                send(cmd::flag(), [this](const Outcome &f) {
+                    if (unitError(f, "status", MachineMode::Alarm))
+                        return;
+                    applyFlags(*f.reply.hexValue(), m_now);
+                    m_holdNeedsGo = m_state.inta;
+                    m_state.holdText = "tool lowered";
+                    setMode(MachineMode::Paused);
+                });
+            });
+        });
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+// ---- interrupts ----------------------------------------------------------------------------
+
+void MachineCore::interrupted()
+{
+    const bool job = m_state.mode == MachineMode::Running;
+    setMode(job ? MachineMode::Paused : MachineMode::Alarm);
+    m_holdNeedsGo = true;
+    m_state.hold = HoldReason::Interrupt;
+    m_state.holdText = "an input interrupt stopped the machine";
+    auto cause = [this](int n) {
+        return [this, n](const Outcome &o) {
+            if (o.status != OutcomeStatus::Ok || !o.reply.ok())
+                return;
+            const int bits = *o.reply.hexValue();
+            m_state.interruptInputs = static_cast<std::uint16_t>(
+                n == 4 ? (m_state.interruptInputs & 0xFF00) | bits
+                       : (m_state.interruptInputs & 0x00FF) | (bits << 8));
+            std::string names;
+            for (int b = 0; b < 16; ++b) {
+                if (m_state.interruptInputs & (1 << b))
+                    names += (names.empty() ? "IN" : ", IN") + std::to_string(b);
+            }
+            m_state.holdText = "stopped by input " + (names.empty() ? "?" : names) +
+                               (m_state.interruptInputs & 0x80 ? " (STOP button)" : "");
+            m_dirty = true;
+        };
+    };
+    sendFront(cmd::statusRead(4), cause(4));
+    if (m_config.unit.variant != Variant::Gve84)
+        send(cmd::statusRead(5), cause(5));
+}
+
+// ---- homing --------------------------------------------------------------------------------
+
+MachineCore::Result MachineCore::home(double now)
+{
+    if (m_state.mode != MachineMode::Idle && m_state.mode != MachineMode::Alarm)
+        return notNow("Homing", m_state.mode);
+    std::vector<int> order;
+    for (int a = 0; a < m_state.axisCount; ++a) {
+        const auto &ax = m_config.axes[static_cast<std::size_t>(a)];
+        if (ax.present && ax.homing.order > 0)
+            order.push_back(a);
+    }
+    if (order.empty())
+        return refusal("the machine profile homes no axis (axes.*.homing.order)");
+    std::stable_sort(order.begin(), order.end(), [this](int a, int b) {
+        return m_config.axes[static_cast<std::size_t>(a)].homing.order <
+               m_config.axes[static_cast<std::size_t>(b)].homing.order;
+    });
+    m_state.homed = false;
+    setMode(MachineMode::Homing);
+    for (int a : order) {
+        const auto &ax = m_config.axes[static_cast<std::size_t>(a)];
+        const auto &h = ax.homing;
+        const auto axis = static_cast<Axis>(a);
+        const Command w =
+            cmd::home(axis, h.direction * stepsFromMm(a, h.travelMm),
+                      std::max<std::int64_t>(10, std::llround(h.towardMmPerS * ax.stepsPerMm)),
+                      stepsFromMm(a, h.backOffMm),
+                      std::max<std::int64_t>(10, std::llround(h.offMmPerS * ax.stepsPerMm)));
+        if (auto bad = validate(w, m_config.unit.variant, m_config.unit.maxPulseRate)) {
+            m_steps.clear();
+            fail("homing axis " + std::string(1, axisLetter(axis)) + ": " + bad.message, nullptr,
+                 MachineMode::Alarm);
+            return std::nullopt;
+        }
+        send(w, [this, axis](const Outcome &o) {
+            if (o.status == OutcomeStatus::Ok && o.reply.code == ReplyCode::OutOfRange) {
+                m_steps.clear();
+                fail(std::string("homing axis ") + axisLetter(axis) +
+                         ": the home switch was not found within the configured travel",
+                     &o, MachineMode::Alarm);
+                return;
+            }
+            if (unitError(o, std::string("homing axis ") + axisLetter(axis), MachineMode::Alarm))
+                m_steps.clear();
+        });
+        send(cmd::setCounter(axis, stepsFromMm(a, h.homePositionMm)),
+             [this, axis](const Outcome &o) {
+                 if (unitError(o, std::string("setting the counter of ") + axisLetter(axis),
+                               MachineMode::Alarm))
+                     m_steps.clear();
+             });
+    }
+    connected(); // position + status -> Idle
+    send(cmd::flag(), [this](const Outcome &o) {
+        if (unitError(o, "status", MachineMode::Alarm))
+            return;
+        m_state.homed = true;
+        setMode(MachineMode::Idle);
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+// ---- jog -----------------------------------------------------------------------------------
+
+MachineCore::Result MachineCore::jogTo(int axis, std::int64_t target, double speedMmPerMin,
+                                       double now)
+{
+    const auto &ax = m_config.axes[static_cast<std::size_t>(axis)];
+    const std::int64_t lo = stepsFromMm(axis, ax.softMinMm);
+    const std::int64_t hi = stepsFromMm(axis, ax.softMaxMm);
+    const std::int64_t from = m_state.positionSteps[static_cast<std::size_t>(axis)];
+    target = std::clamp(target, std::min(lo, hi), std::max(lo, hi));
+    if (from < std::min(lo, hi) || from > std::max(lo, hi))
+        return refusal("the axis is outside its soft limits: home the machine first");
+    const std::int64_t delta = target - from;
+    if (delta == 0)
+        return refusal("the axis is at its soft limit");
+    const double rate = std::min(speedMmPerMin, ax.maxSpeedMmPerMin) / 60.0 * ax.stepsPerMm;
+    const auto pulses =
+        std::clamp<std::int64_t>(std::llround(rate), 10, m_config.unit.maxPulseRate);
+    std::array<std::int64_t, 4> d{};
+    d[static_cast<std::size_t>(axis)] = delta;
+    const Command l =
+        m_state.axisCount == 4 ? cmd::line(d[0], d[1], d[2], d[3]) : cmd::line(d[0], d[1], d[2]);
+    setMode(MachineMode::Jogging);
+    send(cmd::speed(pulses), [this](const Outcome &o) {
+        if (unitError(o, "setting the jog speed", MachineMode::Alarm))
+            m_steps.clear();
+    });
+    send(l, [this](const Outcome &o) {
+        if (unitError(o, "jogging", MachineMode::Alarm)) {
+            m_steps.clear();
+            return;
+        }
+        afterIdle([this] {
+            if (m_state.mode == MachineMode::Jogging && !m_jogContinuous)
+                setMode(MachineMode::Idle);
+        });
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+MachineCore::Result MachineCore::jogStep(int axis, double distanceMm, double speedMmPerMin,
+                                         double now)
+{
+    if (m_state.mode != MachineMode::Idle)
+        return notNow("Jogging", m_state.mode);
+    if (axis < 0 || axis >= m_state.axisCount)
+        return refusal("no such axis");
+    m_jogContinuous = false;
+    const auto from = m_state.positionSteps[static_cast<std::size_t>(axis)];
+    return jogTo(axis, from + stepsFromMm(axis, distanceMm), speedMmPerMin, now);
+}
+
+MachineCore::Result MachineCore::jogContinuous(int axis, int direction, double speedMmPerMin,
+                                               double now)
+{
+    if (m_state.mode != MachineMode::Idle)
+        return notNow("Jogging", m_state.mode);
+    if (axis < 0 || axis >= m_state.axisCount || direction == 0)
+        return refusal("no such axis or direction");
+    const auto &ax = m_config.axes[static_cast<std::size_t>(axis)];
+    m_jogContinuous = true;
+    const double limitMm =
+        direction > 0 ? std::max(ax.softMinMm, ax.softMaxMm) : std::min(ax.softMinMm, ax.softMaxMm);
+    auto r = jogTo(axis, stepsFromMm(axis, limitMm), speedMmPerMin, now);
+    if (r)
+        m_jogContinuous = false;
+    return r;
+}
+
+MachineCore::Result MachineCore::jogStop(double now)
+{
+    if (m_state.mode != MachineMode::Jogging)
+        return notNow("Stopping the jog", m_state.mode);
+    m_jogContinuous = false;
+    sendFront(cmd::halt(), [this](const Outcome &o) {
+        unitError(o, "stopping the jog (H)", MachineMode::Alarm);
+    });
+    send(cmd::deleteQueue(), [this](const Outcome &o) {
+        if (unitError(o, "ending the jog (D)", MachineMode::Alarm))
+            return;
+        m_state.inta = false;
+        setMode(MachineMode::Idle);
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+// ---- MPG, spindle, outputs, override, raw --------------------------------------------------
+
+MachineCore::Result MachineCore::setMpg(bool on, double now)
+{
+    if (!variantInfo(m_config.unit.variant).hasMpg)
+        return refusal("this unit has no MPG handwheel");
+    if (m_state.mode != MachineMode::Idle)
+        return notNow("Switching the MPG", m_state.mode);
+    send(on ? cmd::mpgSilent() : cmd::mpgOff(), [this, on](const Outcome &o) {
+        if (!unitError(o, "switching the MPG", MachineMode::Alarm)) {
+            m_state.mpgOn = on;
+            m_dirty = true;
+        }
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+MachineCore::Result MachineCore::setSpindleRpm(double rpm, double now)
+{
+    if (m_state.mode == MachineMode::Disconnected || m_state.mode == MachineMode::Connecting ||
+        m_state.mode == MachineMode::LinkLost)
+        return notNow("Setting the spindle", m_state.mode);
+    const double maxRpm = m_config.spindle.maxRpm;
+    if (rpm < 0 || rpm > maxRpm)
+        return refusal("spindle speed " + std::to_string(rpm) + " rpm is outside 0.." +
+                       std::to_string(maxRpm));
+    const int permille = static_cast<int>(std::lround(rpm / maxRpm * 1000.0));
+    Command c = cmd::spindle(permille);
+    if (!variantInfo(m_config.unit.variant).hasSpindleAddress7)
+        c = cmd::output((m_state.outputs & 0xFE) | (permille > 0 ? 0 : 1));
+    send(c, [this, permille, rpm](const Outcome &o) {
+        if (unitError(o, "setting the spindle", MachineMode::Alarm))
+            return;
+        m_state.spindlePermille = permille;
+        m_state.spindleRpm = rpm;
+        m_dirty = true;
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+MachineCore::Result MachineCore::setOutputs(std::uint8_t mask, std::uint8_t activeHigh, double now)
+{
+    if (m_state.mode == MachineMode::Disconnected || m_state.mode == MachineMode::LinkLost)
+        return notNow("Switching outputs", m_state.mode);
+    const auto value = static_cast<std::uint8_t>((m_state.outputs & ~mask) | (~activeHigh & mask));
+    send(cmd::output(value), [this, value](const Outcome &o) {
+        if (unitError(o, "switching outputs", MachineMode::Alarm))
+            return;
+        m_state.outputs = value;
+        m_dirty = true;
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+MachineCore::Result MachineCore::setOverride(int percent, double now)
+{
+    if (auto bad = validate(cmd::multiplier(percent), m_config.unit.variant))
+        return refusal(bad.message);
+    if (!variantInfo(m_config.unit.variant).hasVlVkXmNa)
+        return refusal("this unit has no XM");
+    send(cmd::multiplier(percent), [this, percent](const Outcome &o) {
+        if (unitError(o, "setting the feed override (XM)", MachineMode::Alarm))
+            return;
+        m_state.overridePercent = percent;
+        m_dirty = true;
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+MachineCore::Result MachineCore::overrideStep(bool up, double now)
+{
+    send(up ? cmd::exchangeUp() : cmd::exchangeDown(), [this, up](const Outcome &o) {
+        if (unitError(o, up ? "raising queued speeds (XU)" : "lowering queued speeds (XD)",
+                      MachineMode::Alarm))
+            return;
+        // XU/XD change the queued vectors by 1/16 of their speed; shown as an approximation.
+        m_state.overridePercent =
+            static_cast<int>(std::lround(m_state.overridePercent * (up ? 17.0 : 15.0) / 16.0));
+        m_dirty = true;
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+MachineCore::Result MachineCore::sendRaw(const std::string &text, double now)
+{
+    std::string line = text;
+    while (!line.empty() && (line.back() == '\r' || line.back() == '\n' || line.back() == ' '))
+        line.pop_back();
+    if (line.empty())
+        return refusal("empty command");
+    if (line.front() != '!')
+        line = "!0" + line;
+    const ParsedCommand p = parseCommand(line, false);
+    if (p.status != ParseStatus::Ok)
+        return refusal("'" + text + "': " + (p.message.empty() ? "not a command" : p.message));
+    if (auto bad = validate(p.command, m_config.unit.variant, m_config.unit.maxPulseRate))
+        return refusal(bad.message);
+    const Op op = p.command.op;
+    if (m_job && (op == Op::Line || op == Op::Vector || op == Op::Delete || op == Op::Keep ||
+                  op == Op::Restore || op == Op::Jump || op == Op::ZeroAll ||
+                  op == Op::SetCounter || op == Op::Home))
+        return refusal("'" + text + "' would disturb the running job");
+    send(p.command, [this](const Outcome &o) {
+        if (o.status != OutcomeStatus::Ok) {
+            unitError(o, "raw command", MachineMode::LinkLost);
+            return;
+        }
+        log("reply: " + o.raw);
+    });
+    pump(now);
+    return std::nullopt;
+}
+
+} // namespace frezka::driver

@@ -1,0 +1,106 @@
+#pragma once
+// MachineState: the snapshot of the machine the driver publishes (GUI, CLI, tests).
+//
+// A plain value (std types only, operator==): the link thread owns the live state and sends a
+// copy whenever something changed; nobody else keeps machine state. Positions come in steps (the
+// unit's counters) and in mm (steps / steps-per-mm of the profile; A in degrees).
+
+#include "driver/link/linkengine.h"
+#include "driver/protocol/variant.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace frezka::driver {
+
+// The operations state machine (issue 5 item 4). Exactly one at a time.
+enum class MachineMode : std::uint8_t {
+    Disconnected, // no port open
+    Connecting,   // identify, checksums, setup (connect sequence)
+    Idle,         // connected, nothing running
+    Homing,       // W per axis in the configured order
+    Jogging,      // a jog move runs (continuous or incremental)
+    Running,      // a job is streaming / executing
+    Stopping,     // H sent, the machine brakes along its ramp
+    Paused,       // job held (user pause, interrupt, M0/M1/M6); resume or abort
+    ToolLifted,   // job held, queue kept (K), tool lifted; lower to continue
+    Alarm,        // the unit refused something or an input fired outside a job: needs the user
+    LinkLost,     // port error / no reply; job progress kept for resuming after reconnecting
+};
+
+// English name ("Running"); the GUI maps modes to translated strings.
+const char *machineModeName(MachineMode mode);
+
+// Why a job is held (mode Paused / ToolLifted).
+enum class HoldReason : std::uint8_t {
+    None,
+    User,         // pause()
+    Interrupt,    // an enabled input fired (STOP button, limit, ...): see interruptInputs
+    OperatorStop, // M0 / M1 / M6 in the program: see holdText
+    ProbeFailed,  // G38.2 / G38.4 ended without the expected contact change
+};
+
+// The last error, with the command and the unit's reply (or what came back instead).
+struct MachineError
+{
+    std::string message; // English, complete
+    std::string command; // the command text, e.g. "!0C697,30,0", empty when not command-related
+    std::string reply;   // the raw reply line, empty when none came
+    int unitCode = -1;   // the unit's error code 0..7 when it replied, else -1
+    friend bool operator==(const MachineError &, const MachineError &) = default;
+};
+
+struct MachineState
+{
+    MachineMode mode = MachineMode::Disconnected;
+    HoldReason hold = HoldReason::None;
+    std::string holdText; // operator message ("M6 T3: change tool"), interrupt names, ...
+
+    // unit
+    protocol::Variant variant = protocol::Variant::Gve64;
+    std::string firmware; // reply to '?'
+    std::string unitId;   // reply to 'Q'
+    bool checksums = false;
+    int axisCount = 3;
+    std::vector<std::string> eepromDifferences; // "steps per mm X: unit 200, profile 400"
+
+    // position (instantaneous counters, polled)
+    std::array<std::int64_t, 4> positionSteps{};
+    std::array<double, 4> positionMm{};
+    bool homed = false;
+
+    // status (F / ST6): RUN, INTA, queue full
+    std::uint8_t flags = 0;
+    bool run = false;
+    bool inta = false;
+    bool queueFull = false;
+    std::uint8_t inputs1 = 0;          // I1: IN0..IN7
+    std::uint8_t inputs2 = 0;          // I2: bit6 IN14, bit7 IN15
+    std::uint16_t interruptInputs = 0; // ST4 | ST5 << 8 of the last interrupt
+    std::uint8_t outputs = 0xFF;       // port 0 as last written (active low)
+    int spindlePermille = 0;
+    double spindleRpm = 0;
+    int overridePercent = 100;
+    bool mpgOn = false;
+
+    // job
+    bool jobActive = false;
+    std::uint32_t sourceLine = 0;   // G-code line of the vector executing now (0 = none)
+    std::int64_t commandsTotal = 0; // commands in the unit program
+    std::int64_t commandsAcked = 0; // accepted by the unit
+    std::int64_t vectorsAcked = 0;
+    double progress = 0; // 0..1 by commands executed
+    double etaS = -1;    // estimated seconds left, -1 unknown
+
+    // link
+    LinkStats link;
+    double pollHz = 0; // achieved position/status poll rate over the last second
+
+    std::optional<MachineError> lastError;
+    friend bool operator==(const MachineState &, const MachineState &) = default;
+};
+
+} // namespace frezka::driver

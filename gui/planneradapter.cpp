@@ -1,0 +1,107 @@
+#include "planneradapter.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+
+#include <cmath>
+
+namespace frezka::gui {
+namespace {
+
+const char *planErrorWhat(machine::PlanErrorCode code)
+{
+    using C = machine::PlanErrorCode;
+    switch (code) {
+    case C::SoftLimit:
+        return QT_TRANSLATE_NOOP("frezka::gui::Plan",
+                                 "the move leaves the machine's travel (soft limits); check the "
+                                 "work zero and the program");
+    case C::AbsentAxis:
+        return QT_TRANSLATE_NOOP("frezka::gui::Plan",
+                                 "the program moves an axis this machine does not have");
+    case C::CounterOverflow:
+        return QT_TRANSLATE_NOOP("frezka::gui::Plan",
+                                 "the position is beyond the unit's step counters");
+    case C::NoFeed:
+        return QT_TRANSLATE_NOOP("frezka::gui::Plan", "a feed move has no feed rate (F)");
+    case C::SpindleTooFast:
+        return QT_TRANSLATE_NOOP("frezka::gui::Plan",
+                                 "the spindle speed (S) is above the machine's maximum");
+    case C::Unsupported:
+        return QT_TRANSLATE_NOOP("frezka::gui::Plan", "the unit cannot do this");
+    }
+    return "";
+}
+
+} // namespace
+
+QString planErrorText(const QString &fileName, const machine::PlanError &error)
+{
+    const QString what =
+        QCoreApplication::translate("frezka::gui::Plan", planErrorWhat(error.code));
+    if (error.line == 0)
+        return QCoreApplication::translate("frezka::gui::Plan", "%1: %2 (%3)")
+            .arg(fileName, what, QString::fromStdString(error.message));
+    return QCoreApplication::translate("frezka::gui::Plan", "%1:%2: %3 (%4)")
+        .arg(fileName)
+        .arg(error.line)
+        .arg(what, QString::fromStdString(error.message));
+}
+
+std::vector<SpeedSample> plannedSpeed(const machine::UnitProgram &program,
+                                      const machine::MachineConfig &config, bool speedModeVk)
+{
+    std::vector<SpeedSample> out;
+    double distance = 0;
+    double v = 0, b = 0; // pulses/s
+    for (const auto &c : program.commands) {
+        using Op = machine::UnitOp;
+        if (c.op == Op::Speed) {
+            v = double(c.value);
+        } else if (c.op == Op::Brake) {
+            b = double(c.value);
+        } else if (c.op == Op::Vector || c.op == Op::Line) {
+            double mm2 = 0, steps2 = 0, major = 0;
+            for (int i = 0; i < 4; ++i) {
+                const double d = c.d[std::size_t(i)];
+                const double mm = d / config.axes[std::size_t(i)].stepsPerMm;
+                mm2 += i < 3 ? mm * mm : 0;
+                steps2 += i < 3 ? d * d : 0;
+                major = std::max(major, std::abs(d));
+            }
+            const double lengthMm = std::sqrt(mm2);
+            const double stepLength = speedModeVk ? std::sqrt(steps2) : major;
+            if (stepLength <= 0 || lengthMm <= 0)
+                continue;
+            const double toMmPerMin = lengthMm / stepLength * 60.0;
+            const bool continuous = c.op == Op::Vector;
+            out.push_back({distance, out.empty() ? 0.0 : out.back().speedMmPerMin, c.sourceLine});
+            out.push_back({distance + lengthMm / 2, v * toMmPerMin, c.sourceLine});
+            distance += lengthMm;
+            out.push_back({distance, continuous ? std::min(v, b) * toMmPerMin : 0.0, c.sourceLine});
+        }
+    }
+    return out;
+}
+
+AnalyseFn plannerAnalyser(const machine::MachineConfig &config, double feedOverride)
+{
+    return [config, feedOverride](LoadedProgram &program, const std::atomic_bool *) {
+        machine::PlanOptions options;
+        options.feedOverride = feedOverride;
+        const machine::PlanResult result = machine::plan(*program.toolpath, config, options);
+        const QString file = QFileInfo(program.path).fileName();
+        for (const auto &e : result.errors)
+            program.errors.push_back({int(e.line), 0, planErrorText(file, e)});
+        for (const auto &w : result.warnings)
+            program.warnings.push_back({int(w.line), 0, planErrorText(file, w)});
+        if (!result.ok())
+            return;
+        program.estimatedS = result.stats.estimatedS;
+        program.speed = plannedSpeed(result.program, config, result.stats.speedModeVk);
+        program.unitProgram = std::make_shared<machine::UnitProgram>(result.program);
+        program.planStats = result.stats;
+    };
+}
+
+} // namespace frezka::gui

@@ -1,0 +1,61 @@
+#pragma once
+// SettingsDialog: the machine profile (every key, with load / save / export) and the
+// application settings (language, reconnect). Non-modal: open it with show(); it applies by
+// signals and never blocks the machine window.
+
+#include "machine/machineconfig.h"
+
+#include <QDialog>
+
+class QCheckBox;
+class QComboBox;
+class QDialogButtonBox;
+class QLabel;
+class QPushButton;
+class QTabWidget;
+
+namespace frezka::gui {
+
+class ProfileEditor;
+
+class SettingsDialog : public QDialog
+{
+    Q_OBJECT
+
+public:
+    SettingsDialog(const machine::MachineConfig &config, const QString &profilePath,
+                   QWidget *parent = nullptr);
+    ProfileEditor *editor() const { return m_editor; }
+    QString profilePath() const { return m_path; }
+
+    // The actions behind the buttons, without file dialogs (tests, scripts). Errors are shown
+    // in the dialog and returned.
+    bool saveTo(const QString &path, QString *error = nullptr);
+    bool loadFrom(const QString &path, QString *error = nullptr);
+    // Applies the language choice ("cs", "en", "" = system).
+    void chooseLanguage(const QString &code);
+
+signals:
+    // The user applied or saved a valid profile.
+    void profileApplied(const machine::MachineConfig &config, const QString &path);
+    void languageChosen(const QString &code);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslate();
+    void apply();
+    void showMessage(const QString &text, bool error);
+
+    ProfileEditor *m_editor;
+    QString m_path;
+    QTabWidget *m_tabs;
+    QLabel *m_pathLabel, *m_message, *m_languageLabel;
+    QComboBox *m_language;
+    QCheckBox *m_reconnect;
+    QPushButton *m_load, *m_save, *m_export, *m_defaults, *m_apply;
+    QDialogButtonBox *m_buttons;
+};
+
+} // namespace frezka::gui

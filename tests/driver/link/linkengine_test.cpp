@@ -1,0 +1,258 @@
+// LinkEngine against scripted unit replies: every recovery path, byte-exact.
+
+#include "driver/link/linkengine.h"
+#include "driver/protocol/reply.h"
+
+#include <gtest/gtest.h>
+
+using namespace frezka::driver;
+using namespace frezka::protocol;
+
+namespace {
+
+std::string reply(const std::string &body, bool checksums = true)
+{
+    std::string s = checksums ? withChecksum(body) : body;
+    return s + "\r";
+}
+
+struct Harness
+{
+    explicit Harness(LinkOptions o = {})
+        : engine(o)
+    {
+        engine.onOutcome = [this](const Outcome &o) { outcomes.push_back(o); };
+        engine.setChecksums(true);
+    }
+    // Learns index `index` through the engine's own presync.
+    void sync(int index)
+    {
+        engine.syncIndex(t);
+        EXPECT_EQ(engine.takeOutput(), encode(cmd::index(), true));
+        engine.receive(reply("0," + std::to_string(index)), t);
+        ASSERT_EQ(outcomes.size(), 1u);
+        outcomes.clear();
+        EXPECT_EQ(engine.unitIndex(), index);
+    }
+    void timeout()
+    {
+        t = engine.deadline();
+        engine.onTime(t);
+    }
+    LinkEngine engine;
+    std::vector<Outcome> outcomes;
+    double t = 0;
+};
+
+} // namespace
+
+TEST(LinkEngine, PresyncThenCommand)
+{
+    Harness h;
+    h.engine.start(cmd::vector(697, 30, 0), 0);
+    // The index is unknown: '@' first, then the command.
+    EXPECT_EQ(h.engine.takeOutput(), "!0@,BD\r");
+    h.engine.receive(reply("0,41"), 0);
+    EXPECT_EQ(h.engine.takeOutput(), "!0C697,30,0,51\r");
+    h.engine.receive(reply("0"), 0);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].status, OutcomeStatus::Ok);
+    EXPECT_TRUE(h.outcomes[0].reply.ok());
+    EXPECT_EQ(h.engine.unitIndex(), 42);
+    EXPECT_TRUE(h.engine.idle());
+}
+
+TEST(LinkEngine, ReplySplitIntoSingleBytes)
+{
+    Harness h;
+    h.sync(0);
+    h.engine.start(cmd::positionXYZ(), 0);
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::positionXYZ(), true));
+    for (char c : reply("0,-1000,2000,50"))
+        h.engine.receive(std::string(1, c), 0);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].reply.decimals(), (std::vector<std::int64_t>{-1000, 2000, 50}));
+}
+
+TEST(LinkEngine, LostReplyArrivedRecoveredWithRepeat)
+{
+    Harness h;
+    h.sync(10);
+    h.engine.start(cmd::vector(1, 2, 3), 0);
+    h.engine.takeOutput();
+    h.timeout(); // no reply at all
+    h.timeout(); // settle
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true));
+    h.engine.receive(reply("0,11"), h.t); // it arrived
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::repeat(), true));
+    h.engine.receive(reply("1"), h.t); // its reply: queue full
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].reply.code, ReplyCode::QueueFull);
+    EXPECT_EQ(h.outcomes[0].recovered, 1);
+    EXPECT_EQ(h.outcomes[0].resent, 0);
+    EXPECT_EQ(h.engine.unitIndex(), 11);
+}
+
+TEST(LinkEngine, LostCommandIsSentAgainOnlyThen)
+{
+    Harness h;
+    h.sync(255);
+    h.engine.start(cmd::vector(1, 2, 3), 0);
+    const std::string first = h.engine.takeOutput();
+    h.engine.receive("0,1\xff"
+                     "5\r",
+                     0); // garbled reply
+    h.timeout();         // settle
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true));
+    h.engine.receive(reply("0,255"), h.t); // not arrived (index unchanged)
+    EXPECT_EQ(h.engine.takeOutput(), first);
+    h.engine.receive(reply("0"), h.t);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].resent, 1);
+    EXPECT_EQ(h.engine.unitIndex(), 0); // wraps mod 256
+}
+
+TEST(LinkEngine, BadChecksumReplyFromUnitMeansCheckIndex)
+{
+    Harness h;
+    h.sync(5);
+    h.engine.start(cmd::line(0, 0, 100), 0);
+    const std::string first = h.engine.takeOutput();
+    h.engine.receive(reply("4"), 0); // code 4: damaged on the way, or a real syntax error
+    h.timeout();
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true));
+    h.engine.receive(reply("0,5"), h.t); // not taken as a command: send again
+    EXPECT_EQ(h.engine.takeOutput(), first);
+    h.engine.receive(reply("0"), h.t);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_TRUE(h.outcomes[0].reply.ok());
+
+    // A genuine code 4 (the index advanced) is reported as the unit's answer.
+    h.outcomes.clear();
+    h.engine.start(cmd::line(0, 0, 100), h.t);
+    h.engine.takeOutput();
+    h.engine.receive(reply("4"), h.t);
+    h.timeout();
+    h.engine.takeOutput();
+    h.engine.receive(reply("0,7"), h.t);
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::repeat(), true));
+    h.engine.receive(reply("4"), h.t);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].reply.code, ReplyCode::Syntax);
+}
+
+TEST(LinkEngine, PacketAndPartialFailure)
+{
+    Harness h;
+    h.sync(0);
+    std::vector<Command> p{cmd::brake(500), cmd::vector(1, 0, 0), cmd::vector(2, 0, 0)};
+    h.engine.startPacket(p, 0);
+    EXPECT_EQ(h.engine.takeOutput(), encodePacket(p, true));
+    h.engine.receive(reply("0,3"), 0);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].accepted, 3);
+    EXPECT_EQ(h.engine.unitIndex(), 5); // *S, 3 commands, *E
+    h.engine.startPacket(p, 0);
+    h.engine.takeOutput();
+    h.engine.receive(reply("1,2"), 0);
+    ASSERT_EQ(h.outcomes.size(), 2u);
+    EXPECT_EQ(h.outcomes[1].accepted, 2);
+    EXPECT_EQ(h.outcomes[1].reply.code, ReplyCode::QueueFull);
+    EXPECT_FALSE(h.engine.unitIndex()); // unknown after a failed packet: learnt next time
+}
+
+TEST(LinkEngine, IndexContradictionFails)
+{
+    Harness h;
+    h.sync(3);
+    std::vector<Command> p{cmd::vector(1, 0, 0), cmd::vector(2, 0, 0)};
+    h.engine.startPacket(p, 0);
+    h.engine.takeOutput();
+    h.timeout();
+    h.timeout();
+    h.engine.takeOutput();
+    h.engine.receive(reply("0,6"), h.t); // neither 3 (nothing) nor 7 (all): partly received
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].status, OutcomeStatus::Failed);
+    EXPECT_NE(h.outcomes[0].error.find("index is 6"), std::string::npos);
+}
+
+TEST(LinkEngine, GivesUpAfterMaxAttempts)
+{
+    LinkOptions o;
+    o.maxAttempts = 3;
+    Harness h(o);
+    h.sync(0);
+    h.engine.start(cmd::flag(), 0);
+    for (int i = 0; i < 20 && h.outcomes.empty(); ++i)
+        h.timeout();
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].status, OutcomeStatus::Failed);
+    EXPECT_NE(h.outcomes[0].error.find("!0F"), std::string::npos);
+    EXPECT_NE(h.outcomes[0].error.find("gave up"), std::string::npos);
+}
+
+TEST(LinkEngine, HaltWaitsLonger)
+{
+    Harness h;
+    h.sync(0);
+    h.engine.start(cmd::flag(), 0);
+    const double normal = h.engine.deadline();
+    h.engine.receive(reply("0,00"), 0);
+    h.engine.start(cmd::halt(), 0);
+    EXPECT_GT(h.engine.deadline(), normal + 30);
+    h.engine.onTime(normal + 1); // no timeout yet
+    EXPECT_TRUE(h.outcomes.size() == 1);
+    h.engine.receive(reply("8"), normal + 5);
+    ASSERT_EQ(h.outcomes.size(), 2u);
+    EXPECT_TRUE(h.outcomes[1].reply.inta);
+}
+
+TEST(LinkEngine, ChecksumSwitchingAcceptsBothFramings)
+{
+    LinkEngine e;
+    std::vector<Outcome> out;
+    e.onOutcome = [&](const Outcome &o) { out.push_back(o); };
+    e.start(cmd::checksumOn(), 0); // harmless to repeat: no index needed first
+    EXPECT_EQ(e.takeOutput(), "!0%+\r");
+    e.receive("0,5C\r", 0); // the reply to %+ already carries a checksum
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_TRUE(out[0].reply.ok());
+    EXPECT_TRUE(e.checksums());
+    e.start(cmd::checksumOff(), 0);
+    EXPECT_EQ(e.takeOutput(), "!0%-,CF\r");
+    e.receive("0\r", 0); // the reply to %- does not
+    ASSERT_EQ(out.size(), 2u);
+    EXPECT_TRUE(out[1].reply.ok());
+    EXPECT_FALSE(e.checksums());
+}
+
+TEST(LinkEngine, QueryIsSimplyRepeatedAfterALostReply)
+{
+    Harness h;
+    h.sync(9);
+    h.engine.start(cmd::positionXYZ(), 0);
+    const std::string first = h.engine.takeOutput();
+    h.timeout(); // lost
+    h.timeout(); // settle
+    EXPECT_EQ(h.engine.takeOutput(), first);
+    h.engine.receive(reply("0,1,2,3"), h.t);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].resent, 1);
+    EXPECT_FALSE(h.engine.unitIndex()); // it may have arrived twice: unknown now
+    h.engine.start(cmd::vector(1, 1, 1), h.t);
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true)); // learnt before a vector
+}
+
+TEST(LinkEngine, NoiseBetweenTransactionsIsCountedNotMatched)
+{
+    Harness h;
+    h.sync(0);
+    h.engine.receive("\r0,5\r", 0); // a stray CR and a late line while idle
+    EXPECT_EQ(h.engine.stats().noiseLines, 2);
+    h.engine.start(cmd::flag(), 0);
+    h.engine.takeOutput();
+    h.engine.receive(reply("0,40"), 0);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].reply.hexValue(), 0x40);
+}
