@@ -38,8 +38,8 @@ TEST(UnitWire, MotionAndSpeedCommandsAsOnTheWire)
 
 TEST(UnitWire, PcSideOpsAreCommentsNotWireCommands)
 {
-    for (UnitOp op : {UnitOp::WaitIdle, UnitOp::Dwell, UnitOp::OperatorStop, UnitOp::Probe,
-                      UnitOp::ProgramEnd})
+    for (UnitOp op :
+         {UnitOp::WaitIdle, UnitOp::Dwell, UnitOp::OperatorStop, UnitOp::Probe, UnitOp::ProgramEnd})
         EXPECT_FALSE(wireCommand(command(op), 3).has_value());
     EXPECT_EQ(commandText(command(UnitOp::WaitIdle), 3), "# wait-idle");
     EXPECT_EQ(commandText(command(UnitOp::Dwell, 500), 3), "# dwell 500 ms");
