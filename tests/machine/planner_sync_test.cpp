@@ -87,8 +87,9 @@ TEST(Sync, ChangedSpindleSpeedCoolantAndEndAreSyncPoints)
     // Active low: coolant (OUT1, bit2) on with the spindle (bit0) running, then coolant off.
     EXPECT_EQ(ports, (std::vector<std::int64_t>{0xFA, 0xFE}));
     for (const UnitCommand &c : r.program.commands) {
-        if (c.op == UnitOp::Output)
+        if (c.op == UnitOp::Output) {
             EXPECT_GT(c.sourceLine, 0u);
+        }
     }
 }
 
