@@ -188,6 +188,11 @@ private:
         r.aMm = a;
         r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(v * r.f)),
                                            kMinSpeed, m_config.unit.maxPulseRate);
+        if (v * r.f < kMinSpeed) { // the unit cannot go slower: the move runs faster than asked
+            r.vMm = kMinSpeed / r.f;
+            if (m_out.slowLines.empty() || m_out.slowLines.back() != m.line)
+                m_out.slowLines.push_back(m.line);
+        }
         std::int64_t major = 0;
         for (std::int32_t c : m.d)
             major = std::max<std::int64_t>(major, std::abs(c));

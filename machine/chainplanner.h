@@ -41,6 +41,7 @@ struct PlannedVector
 struct RunOutcome
 {
     std::vector<PlannedVector> vectors;
+    std::vector<std::uint32_t> slowLines; // lines whose feed is below the unit's 10 pulses/s
     std::size_t chains = 0;
     double boundS = 0;                   // time-optimal bound of these moves
     double maxJumpMmPerS = 0;            // largest per-axis speed step at a vertex of the plan

@@ -269,6 +269,9 @@ private:
         if (!run.vectors.empty() && run.vectors.back().line)
             emit(UnitOp::WaitIdle, 0, run.vectors.back().sourceLine);
         m_bound += run.boundS;
+        for (std::uint32_t line : run.slowLines)
+            warning(line, "the feed is below the unit's slowest speed (10 pulses/s) for this "
+                          "move; it runs at that speed instead");
         PlanStats &s = m_result.stats;
         s.chains += run.chains;
         s.maxVertexJumpMmPerS = std::max(s.maxVertexJumpMmPerS, run.maxJumpMmPerS);

@@ -205,3 +205,18 @@ TEST(Sync, Gve84SwitchesItsRelayAndWarnsAboutCoolant)
     EXPECT_EQ(r.warnings[0].line, 2u);
     EXPECT_TRUE(r.stats.speedModeVk); // the GVE84 has VK
 }
+
+TEST(Sync, AFeedBelowTheUnitsSlowestSpeedIsAWarning)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    tp.appendFeed({11, 10, -1, 0}, 1, 4); // 1 mm/min = 3.3 pulses/s at 200 steps/mm
+    const PlanResult r = plan(tp, gve64());
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_EQ(r.warnings[0].line, 4u);
+    const auto vs = replay(r.program);
+    ASSERT_EQ(vs.size(), 1u);
+    EXPECT_EQ(vs[0].v, 10);
+    EXPECT_LE(r.stats.estimatedS, 1.02 * r.stats.boundS); // the bound runs at 10 pulses/s too
+}
