@@ -213,8 +213,17 @@ private:
         flush();
         const Steps4 target = stepsOf(p, m_config);
         detail::Move m;
-        for (int k = 0; k < 4; ++k)
+        bool any = false;
+        for (int k = 0; k < 4; ++k) {
             m.d[k] = static_cast<std::int32_t>(target[k] - m_steps[k]);
+            any = any || m.d[k] != 0;
+        }
+        if (!any) {
+            error(PlanErrorCode::Unsupported, line,
+                  "the probe move has no length (not a single step); program a probe target "
+                  "away from the current position");
+            return;
+        }
         m.endSteps = target;
         m.pathDelta = {p.x - m_posMm.x, p.y - m_posMm.y, p.z - m_posMm.z, p.a - m_posMm.a};
         m.feedMmPerS = feed;
