@@ -296,8 +296,7 @@ private:
             fullPasses(first, b);
         for (std::size_t k = first; k <= last; ++k) {
             const Derived &r = m_d[k];
-            PlannedVector v{m_moves[k].d, m_moves[k].endSteps, r.speed,         r.accel,
-                            b[k - first], k == last,           m_moves[k].line, false};
+            PlannedVector v{r.speed, r.accel, b[k - first], k == last, false};
             if (k == last) // nothing follows: the unit brakes to 0; a short vector cruises at B
                 v.brake = r.isShort ? r.speed : kMinSpeed;
             v.line = m_options.strategy == PlanStrategy::ExactStop;

@@ -260,23 +260,25 @@ private:
         if (m_moves.empty())
             return;
         const detail::RunOutcome run = detail::planRun(m_moves, m_config, m_options, m_vk);
-        for (const detail::PlannedVector &v : run.vectors) {
-            setModal(UnitOp::Accel, m_accel, v.accel, v.sourceLine);
-            setModal(UnitOp::Speed, m_speed, v.speed, v.sourceLine);
+        for (std::size_t k = 0; k < run.vectors.size(); ++k) {
+            const detail::PlannedVector &v = run.vectors[k];
+            const detail::Move &m = m_moves[k];
+            setModal(UnitOp::Accel, m_accel, v.accel, m.line);
+            setModal(UnitOp::Speed, m_speed, v.speed, m.line);
             if (!v.line)
-                setModal(UnitOp::Brake, m_brake, v.brake, v.sourceLine);
+                setModal(UnitOp::Brake, m_brake, v.brake, m.line);
             UnitCommand c;
             c.op = v.line ? UnitOp::Line : UnitOp::Vector;
-            c.d = v.d;
-            c.sourceLine = v.sourceLine;
-            c.endSteps = v.endSteps;
+            c.d = m.d;
+            c.sourceLine = m.line;
+            c.endSteps = m.endSteps;
             m_result.program.commands.push_back(c);
-            m_emitted = v.endSteps;
+            m_emitted = m.endSteps;
             if (v.chainEnd && !v.line)
-                emit(UnitOp::WaitIdle, 0, v.sourceLine);
+                emit(UnitOp::WaitIdle, 0, m.line);
         }
         if (!run.vectors.empty() && run.vectors.back().line)
-            emit(UnitOp::WaitIdle, 0, run.vectors.back().sourceLine);
+            emit(UnitOp::WaitIdle, 0, m_moves.back().line);
         m_bound += run.boundS;
         for (std::uint32_t line : run.slowLines)
             warning(line, "the feed is below the unit's slowest speed (10 pulses/s) for this "
