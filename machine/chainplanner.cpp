@@ -150,8 +150,11 @@ private:
             }
             const auto cap = std::clamp<std::int64_t>(
                 static_cast<std::int64_t>(floorUnits(a * r.f / 1000)), 1, kMaxAccel);
+            // Only a vector that passes quickly keeps a lower A: on a long one the acceleration
+            // matters and one A command costs the link nothing in comparison.
+            const bool quick = r.units < m_options.accelKeepS * static_cast<double>(r.speed);
             const bool keep =
-                last > 0 && last <= cap && last >= cap * (1 - m_options.accelTolerance);
+                quick && last > 0 && last <= cap && last >= cap * (1 - m_options.accelTolerance);
             r.accel = keep ? last : cap;
             last = r.accel;
             const double whole = std::floor(r.units + 1e-9);

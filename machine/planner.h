@@ -35,6 +35,7 @@ struct PlanOptions
     double brakeMarginSteps = 0.25;  // distance kept in reserve when braking, steps (>= 0)
     double accelTolerance = 0.3;     // keep the last A while within this fraction below the cap
     double accelWindowSteps = 12;    // A: smallest cap of the neighbours within this distance
+    double accelKeepS = 0.05;        // ... but only on vectors shorter than this at their V, s
     double feedOverride = 1.0;       // multiplies programmed feeds (not rapids), 0.01..10
 };
 

@@ -369,3 +369,28 @@ TEST(Strategies, BaselinesPlanTheSamePath)
     expectFeasible(replay(g.program), g.stats.speedModeVk);
     EXPECT_EQ(g.stats.brakeViolations, 0u);
 }
+
+TEST(Accel, ShortVectorsKeepALowerAButALongMoveGetsItsOwn)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({25, 20, -1, 0});
+    gcode::ArcInfo arc;
+    arc.centre = {20, 20, -1, 0};
+    tp.appendArc({25, 20, -1, 0}, arc, 3000, 1); // chords in every direction
+    tp.appendFeed({125, 120, -1, 0}, 3000, 2);   // a long diagonal
+    const PlanResult r = planOk(tp, gve64());
+    const auto vs = replay(r.program);
+    std::size_t changes = 0;
+    for (std::size_t k = 1; k + 1 < vs.size(); ++k)
+        changes += vs[k].a != vs[k - 1].a ? 1 : 0;
+    EXPECT_LE(changes, 4u); // the circle's chords share one A or two
+    // The diagonal may accelerate at 400 mm/s² on both axes: 400·sqrt2 mm/s² of path.
+    EXPECT_EQ(vs.back().a,
+              static_cast<std::int64_t>(std::floor(400 * std::sqrt(2.0) * 200 / 1000)));
+    for (const Captured &v : vs) { // no vector accelerates an axis beyond its limit
+        const double len = std::sqrt(double(v.d[0]) * v.d[0] + double(v.d[1]) * v.d[1]);
+        for (int i = 0; i < 2; ++i)
+            EXPECT_LE(v.a * 1000.0 * std::abs(v.d[i]) / len / 200.0, 400.0 * 1.000001);
+    }
+    expectValid(r);
+}
