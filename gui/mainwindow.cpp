@@ -47,11 +47,10 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
                       : options.view == MainWindowOptions::View::OpenGl ? B::OpenGl
                                                                         : B::Auto;
     m_view = new ToolpathView(this, backend);
-    setCentralWidget(m_view);
+    buildCentral();
     m_program = new ProgramSession(this);
     m_program->setMaxSceneSegments(m_view->preferredMaxSegments());
     m_program->setInterpreter(gcodeInterpreter());
-    m_machine = nullptr;
 
     buildDocks();
     buildMenus();
@@ -143,8 +142,9 @@ void MainWindow::buildMenus()
     m_quitAction->setShortcut(QKeySequence::Quit);
 
     m_machineMenu = menuBar()->addMenu(QString());
-    m_connectAction = m_machineMenu->addAction(QString());
-    m_disconnectAction = m_machineMenu->addAction(QString());
+    m_connectAction = m_machineMenu->addAction(QString(), this, [this] { connectToUnit(); });
+    m_disconnectAction =
+        m_machineMenu->addAction(QString(), this, [this] { disconnectFromUnit(); });
     m_machineMenu->addSeparator();
     m_settingsAction = m_machineMenu->addAction(QString(), this, [this] { openSettings(); });
     m_unitConfigAction = m_machineMenu->addAction(QString());
@@ -315,14 +315,6 @@ void MainWindow::connectProgram()
         updateRunPhase();
     });
 }
-
-void MainWindow::updateRunPhase()
-{
-    const bool connected = false;
-    m_run->setPhase(m_program->hasProgram() ? RunPhase::Ready : RunPhase::NoProgram, connected);
-}
-
-void MainWindow::connectMachine() {}
 
 SettingsDialog *MainWindow::openSettings()
 {
