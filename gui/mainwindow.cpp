@@ -13,6 +13,9 @@
 #include "programsession.h"
 #include "runpanel.h"
 #include "settingsdialog.h"
+#include "unitconfigdialog.h"
+
+#include "driver/link/machinecontroller.h"
 #include "speedplot.h"
 #include "toolpathview.h"
 
@@ -147,7 +150,7 @@ void MainWindow::buildMenus()
         m_machineMenu->addAction(QString(), this, [this] { disconnectFromUnit(); });
     m_machineMenu->addSeparator();
     m_settingsAction = m_machineMenu->addAction(QString(), this, [this] { openSettings(); });
-    m_unitConfigAction = m_machineMenu->addAction(QString());
+    m_unitConfigAction = m_machineMenu->addAction(QString(), this, [this] { openUnitConfig(); });
 
     m_viewMenu = menuBar()->addMenu(QString());
     for (auto *d :
@@ -328,6 +331,17 @@ SettingsDialog *MainWindow::openSettings()
     return m_settings;
 }
 
+UnitConfigDialog *MainWindow::openUnitConfig()
+{
+    if (!m_unitConfig) {
+        m_unitConfig = new UnitConfigDialog(m_controller, m_profile, this);
+        m_unitConfig->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    m_unitConfig->show();
+    m_unitConfig->raise();
+    return m_unitConfig;
+}
+
 void MainWindow::applyProfile(const machine::MachineConfig &config, const QString &path)
 {
     m_profile = config;
@@ -360,6 +374,10 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
     }
     m_view->model()->setTravelBox(travel);
     m_program->setAnalyser(plannerAnalyser(config));
+    if (m_unitConfig)
+        m_unitConfig->setProfile(config);
+    if (m_controller)
+        m_controller->setMachineConfig(config);
     if (!m_program->program().path.isEmpty())
         m_program->reload(); // re-plan for the new profile
     m_unit->setText(QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size())));

@@ -39,6 +39,7 @@ class SpeedPlot;
 class ToolpathView;
 class HoldBanner;
 class SettingsDialog;
+class UnitConfigDialog;
 
 struct MainWindowOptions
 {
@@ -91,6 +92,8 @@ public:
     void applyProfile(const machine::MachineConfig &config, const QString &path);
     // Opens the settings dialog (non-modal) and returns it.
     class SettingsDialog *openSettings();
+    // Opens the unit configuration (EEPROM) page (non-modal) and returns it.
+    class UnitConfigDialog *openUnitConfig();
     // The last message shown to the user as an error (tests read it; no modal dialog needed).
     QString lastError() const { return m_lastError; }
 
@@ -165,6 +168,7 @@ private:
     machine::MachineConfig m_profile;
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;
+    QPointer<UnitConfigDialog> m_unitConfig;
     QByteArray m_defaultState;
 };
 
