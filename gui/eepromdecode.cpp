@@ -8,9 +8,8 @@
 namespace frezka::gui {
 namespace {
 
-QString tr(const char *s)
-{
-    return QCoreApplication::translate("frezka::gui::Eeprom", s);
+QString tr(const char *s){
+    return QCoreApplication::translate("frezka::gui", s) // context of tr() here for lupdate;
 }
 
 QString axisList(unsigned bits, int first, int count)

@@ -12,103 +12,101 @@ struct Label
     const char *text;
 };
 
-// Context "frezka::gui::Profile" for lupdate.
-#define P(k, t)                                                                                    \
-    {                                                                                              \
-        k, QT_TRANSLATE_NOOP("frezka::gui::Profile", t)                                            \
-    }
 const Label kKeys[] = {
-    P("name", "Profile name"),
-    P("unit", "Unit"),
-    P("variant", "Unit type"),
-    P("maxPulseRate", "Maximum pulse rate"),
-    P("firmwareVersion", "Firmware version"),
-    P("link", "Connection"),
-    P("port", "Port"),
-    P("baud", "Baud rate"),
-    P("checksums", "Checksums"),
-    P("packets", "Packets"),
-    P("packetCommands", "Commands per packet"),
-    P("axes", "Axes"),
-    P("x", "X axis"),
-    P("y", "Y axis"),
-    P("z", "Z axis"),
-    P("a", "A axis"),
-    P("present", "Present"),
-    P("stepsPerMm", "Steps per mm"),
-    P("invertDirection", "Invert direction"),
-    P("softMinMm", "Soft limit min"),
-    P("softMaxMm", "Soft limit max"),
-    P("maxSpeedMmPerMin", "Maximum speed"),
-    P("rapidMmPerMin", "Rapid speed"),
-    P("accelMmPerS2", "Acceleration"),
-    P("maxJumpMmPerS", "Maximum speed jump at a corner"),
-    P("homing", "Homing"),
-    P("order", "Order (0 = not homed)"),
-    P("direction", "Direction to the switch (-1/+1)"),
-    P("travelMm", "Maximum search travel"),
-    P("towardMmPerS", "Speed toward the switch"),
-    P("offMmPerS", "Speed off the switch"),
-    P("backOffMm", "Maximum back-off travel"),
-    P("homePositionMm", "Position after homing"),
-    P("motion", "Motion"),
-    P("junctionDeviationMm", "Corner deviation"),
-    P("chordToleranceMm", "Arc chord tolerance"),
-    P("pauseMs", "Pause between stand-alone moves"),
-    P("speedMode", "Speed mode"),
-    P("toolLiftMm", "Tool lift"),
-    P("spindle", "Spindle"),
-    P("maxRpm", "Maximum speed"),
-    P("spinUpMs", "Spin-up wait"),
-    P("outputs", "Outputs"),
-    P("out1", "OUT1 function"),
-    P("out2", "OUT2 function"),
-    P("out3", "OUT3 function"),
-    P("mist", "Output switched by M7"),
-    P("eeprom", "Unit EEPROM"),
-    P("sync", "Compare with the unit on connect"),
-    P("mpg", "Handwheel (MPG)"),
-    P("mpgAccelMmPerS2", "Handwheel acceleration"),
-    P("mpgMaxSpeedMmPerS", "Handwheel maximum speed"),
-    P("mpgDelayMs", "Handwheel brake delay"),
-    P("mpgStepMultiplier", "Handwheel step multiplier"),
-    P("homingInput", "Input that starts homing (0 = off)"),
-    P("interruptEnable", "Interrupt enable IN0-7"),
-    P("interruptEnableHigh", "Interrupt enable IN14/IN15"),
-    P("polarity", "Polarity IN0-7"),
-    P("polarityHigh", "Polarity IN14/IN15"),
-    P("aSlavedTo", "A axis slaved to (0 none, 1 X, 2 Y, 3 Z)"),
-    P("pwmBreakout", "PWM for breakout boards"),
-    P("stepPolarityInvert", "Invert STEP polarity"),
-    P("defaultSpindlePermille", "Default spindle speed"),
-    P("brakeReleaseDelayS", "Brake release delay"),
+    {"name", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Profile name")},
+    {"unit", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Unit")},
+    {"variant", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Unit type")},
+    {"maxPulseRate", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Maximum pulse rate")},
+    {"firmwareVersion", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Firmware version")},
+    {"link", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Connection")},
+    {"port", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Port")},
+    {"baud", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Baud rate")},
+    {"checksums", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Checksums")},
+    {"packets", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Packets")},
+    {"packetCommands", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Commands per packet")},
+    {"axes", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Axes")},
+    {"x", QT_TRANSLATE_NOOP("frezka::gui::Profile", "X axis")},
+    {"y", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Y axis")},
+    {"z", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Z axis")},
+    {"a", QT_TRANSLATE_NOOP("frezka::gui::Profile", "A axis")},
+    {"present", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Present")},
+    {"stepsPerMm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Steps per mm")},
+    {"invertDirection", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Invert direction")},
+    {"softMinMm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Soft limit min")},
+    {"softMaxMm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Soft limit max")},
+    {"maxSpeedMmPerMin", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Maximum speed")},
+    {"rapidMmPerMin", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Rapid speed")},
+    {"accelMmPerS2", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Acceleration")},
+    {"maxJumpMmPerS", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Maximum speed jump at a corner")},
+    {"homing", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Homing")},
+    {"order", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Order (0 = not homed)")},
+    {"direction", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Direction to the switch (-1/+1)")},
+    {"travelMm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Maximum search travel")},
+    {"towardMmPerS", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Speed toward the switch")},
+    {"offMmPerS", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Speed off the switch")},
+    {"backOffMm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Maximum back-off travel")},
+    {"homePositionMm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Position after homing")},
+    {"motion", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Motion")},
+    {"junctionDeviationMm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Corner deviation")},
+    {"chordToleranceMm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Arc chord tolerance")},
+    {"pauseMs", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Pause between stand-alone moves")},
+    {"speedMode", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Speed mode")},
+    {"toolLiftMm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Tool lift")},
+    {"spindle", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Spindle")},
+    {"maxRpm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Maximum speed")},
+    {"spinUpMs", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Spin-up wait")},
+    {"outputs", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Outputs")},
+    {"out1", QT_TRANSLATE_NOOP("frezka::gui::Profile", "OUT1 function")},
+    {"out2", QT_TRANSLATE_NOOP("frezka::gui::Profile", "OUT2 function")},
+    {"out3", QT_TRANSLATE_NOOP("frezka::gui::Profile", "OUT3 function")},
+    {"mist", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Output switched by M7")},
+    {"eeprom", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Unit EEPROM")},
+    {"sync", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Compare with the unit on connect")},
+    {"mpg", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Handwheel (MPG)")},
+    {"mpgAccelMmPerS2", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Handwheel acceleration")},
+    {"mpgMaxSpeedMmPerS", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Handwheel maximum speed")},
+    {"mpgDelayMs", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Handwheel brake delay")},
+    {"mpgStepMultiplier", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Handwheel step multiplier")},
+    {"homingInput",
+     QT_TRANSLATE_NOOP("frezka::gui::Profile", "Input that starts homing (0 = off)")},
+    {"interruptEnable", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Interrupt enable IN0-7")},
+    {"interruptEnableHigh",
+     QT_TRANSLATE_NOOP("frezka::gui::Profile", "Interrupt enable IN14/IN15")},
+    {"polarity", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Polarity IN0-7")},
+    {"polarityHigh", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Polarity IN14/IN15")},
+    {"aSlavedTo",
+     QT_TRANSLATE_NOOP("frezka::gui::Profile", "A axis slaved to (0 none, 1 X, 2 Y, 3 Z)")},
+    {"pwmBreakout", QT_TRANSLATE_NOOP("frezka::gui::Profile", "PWM for breakout boards")},
+    {"stepPolarityInvert", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Invert STEP polarity")},
+    {"defaultSpindlePermille", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Default spindle speed")},
+    {"brakeReleaseDelayS", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Brake release delay")},
 };
 
 const Label kChoices[] = {
-    P("auto", "Automatic"),
-    P("vk", "Path speed (VK)"),
-    P("vn", "Major axis speed (VN)"),
-    P("unused", "Unused"),
-    P("spindle", "Spindle"),
-    P("laser", "Laser"),
-    P("coolant", "Coolant"),
-    P("airBlow", "Air blow"),
-    P("coverLock", "Machine cover lock"),
-    P("toolRelease", "Tool release"),
-    P("toolCoverOpen", "Tool cover open"),
-    P("brake", "Brake"),
-    P("interrupt", "Interrupt signal"),
-    P("off", "Off"),
-    P("on", "On"),
-    P("onWithLimits", "On, within the limits"),
-    P("onRotaryA", "On, 4th position drives rotary A"),
-    P("onRotaryAWithLimits", "On with limits, 4th position drives rotary A"),
-    P("gve84", "GVE84"),
-    P("gve64", "GVE64"),
-    P("gve64-phantom", "GVE64 PHANTOM"),
-    P("gve114", "GVE114"),
+    {"auto", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Automatic")},
+    {"vk", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Path speed (VK)")},
+    {"vn", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Major axis speed (VN)")},
+    {"unused", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Unused")},
+    {"spindle", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Spindle")},
+    {"laser", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Laser")},
+    {"coolant", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Coolant")},
+    {"airBlow", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Air blow")},
+    {"coverLock", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Machine cover lock")},
+    {"toolRelease", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Tool release")},
+    {"toolCoverOpen", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Tool cover open")},
+    {"brake", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Brake")},
+    {"interrupt", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Interrupt signal")},
+    {"off", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Off")},
+    {"on", QT_TRANSLATE_NOOP("frezka::gui::Profile", "On")},
+    {"onWithLimits", QT_TRANSLATE_NOOP("frezka::gui::Profile", "On, within the limits")},
+    {"onRotaryA", QT_TRANSLATE_NOOP("frezka::gui::Profile", "On, 4th position drives rotary A")},
+    {"onRotaryAWithLimits",
+     QT_TRANSLATE_NOOP("frezka::gui::Profile", "On with limits, 4th position drives rotary A")},
+    {"gve84", QT_TRANSLATE_NOOP("frezka::gui::Profile", "GVE84")},
+    {"gve64", QT_TRANSLATE_NOOP("frezka::gui::Profile", "GVE64")},
+    {"gve64-phantom", QT_TRANSLATE_NOOP("frezka::gui::Profile", "GVE64 PHANTOM")},
+    {"gve114", QT_TRANSLATE_NOOP("frezka::gui::Profile", "GVE114")},
 };
-#undef P
 
 QString lookup(const Label *table, std::size_t n, const QString &key)
 {
@@ -144,22 +142,33 @@ QString configErrorText(const machine::ConfigError &error)
     using C = machine::ConfigErrorCode;
     switch (error.code) {
     case C::FileUnreadable:
-        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "the file cannot be read or written");
+        what = QT_TRANSLATE_NOO{
+            "frezka::gui::Profile",
+            QT_TRANSLATE_NOOP("frezka::gui::Profile", "the file cannot be read or written")};
         break;
     case C::Syntax:
-        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "the file is not valid JSON");
+        what = QT_TRANSLATE_NOO{
+            "frezka::gui::Profile",
+            QT_TRANSLATE_NOOP("frezka::gui::Profile", "the file is not valid JSON")};
         break;
     case C::WrongType:
-        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value has the wrong type");
+        what = QT_TRANSLATE_NOO{
+            "frezka::gui::Profile",
+            QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value has the wrong type")};
         break;
     case C::UnknownKey:
-        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "unknown key (a typo?)");
+        what = QT_TRANSLATE_NOO{"frezka::gui::Profile",
+                                QT_TRANSLATE_NOOP("frezka::gui::Profile", "unknown key (a typo?)")};
         break;
     case C::OutOfRange:
-        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value is outside its range");
+        what = QT_TRANSLATE_NOO{
+            "frezka::gui::Profile",
+            QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value is outside its range")};
         break;
     case C::BadChoice:
-        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value is none of the allowed ones");
+        what = QT_TRANSLATE_NOO{
+            "frezka::gui::Profile",
+            QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value is none of the allowed ones")};
         break;
     case C::Inconsistent:
         what = QT_TRANSLATE_NOOP("frezka::gui::Profile",

@@ -48,6 +48,581 @@
     </message>
 </context>
 <context>
+    <name>frezka::gcode</name>
+    <message>
+        <source>Cannot read the file %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check that the file exists and is readable.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unexpected character &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove it or put it inside a comment ( ).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comment is not closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add &apos;)&apos; at the end of the comment.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Comment inside a comment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close the first comment before opening another one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A number is expected after %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write a number, a #parameter or an [expression] after the letter.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 needs a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use an integer value here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Word %1 appears twice in one block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep one of them or split the block into two lines.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Word %1 is not supported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the word; Frezka does not use it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1 is not supported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frezka machines have the axes X, Y, Z and A.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file ended without M2, M30 or %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End the program with M2 or M30 (or enclose it in % lines).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The program starts with % but has no closing %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a line with % at the end of the program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line is too long (%1 characters)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Split the line; at most 65535 characters are allowed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown G code %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the number; see the list of supported codes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not supported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove it or post-process the program without it (see the supported codes).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown M code %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 conflicts with another code of the same group in this block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use one code of each modal group per block.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Too many M codes in one block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use at most four M codes per block.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Word %1 is not used by any code in this block</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the word or add the code that uses it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis words are given with G80</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G80 cancels the motion mode; give the axis words with G0 or G1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis words are given but no motion mode is active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add G0, G1, G2 or G3 to the block.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 and a motion code both use the axis words</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Put them on separate lines.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 needs at least one axis word</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add the axis words (X, Y, Z or A).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 must not be negative</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use zero or a positive value.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G53 needs G0 or G1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write G53 together with G0 or G1 on the same line.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G53 cannot be used in G91 mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch to G90 before moving in machine coordinates.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G4 needs the dwell time P</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add P with the dwell time in seconds.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G10 %1 is not supported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use G10 L2 or G10 L20 to set a work offset.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G10 needs P0 to P9 (got %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>P0 is the active coordinate system, P1 to P9 are G54 to G59.3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coordinate system rotation (G10 R) is not supported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the R word.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 with zero feed rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set a feed rate with F before the first feed move.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 in inverse time mode (G93) needs an F word</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give F on every feed move in G93, or switch to G94.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc without I, J, K or R</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give the centre with I/J/K or the radius with R.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc with both R and I/J/K</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use either the centre (I/J/K) or the radius (R).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not in the arc&apos;s plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G17 uses I and J, G18 uses I and K, G19 uses J and K.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is missing for an arc with absolute centre (G90.1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give both centre coordinates in G90.1 mode.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc with zero radius %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the centre offsets I/J/K.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc end point is not on the circle: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the end point and the centre; the radii to start and end must match.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc radius is too small to reach the end point %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use a radius of at least half the distance between start and end.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc given by R ends where it starts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use I/J/K to program a full circle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc given by R has no end point in its plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give the end point, or use I/J/K for a full circle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc turns P must be a positive integer (got %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use P1 or more, or leave P out.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Probe move does not move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give an end point different from the current position.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Probe move in inverse time mode (G93)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch to G94 before probing.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs R</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give the retract plane R on the first block of the cycle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs its depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give the hole depth (Z in G17) on the first block of the cycle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Canned cycle retract plane R is below the hole depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R must be above the bottom of the hole.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs the dwell P</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give P (seconds) on the first block of the cycle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs the peck Q</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give Q (peck depth) on the first block of the cycle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Peck depth Q must be positive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use a positive Q.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Canned cycle repeat L must be a positive integer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use L1 or more, or leave L out.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Canned cycle in inverse time mode (G93)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch to G94 before a canned cycle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Expression is not closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add the missing &apos;]&apos;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown operator %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use + - * / ** MOD AND OR XOR EQ NE GT GE LT LE.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown function %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>See the list of functions (ABS, ACOS, ASIN, ATAN, COS, EXP, FIX, FUP, LN, ROUND, SIN, SQRT, TAN, EXISTS).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Division by zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the divisor.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of a value outside its domain</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the argument (e.g. SQRT of a negative number).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Negative number raised to a non-integer power</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the operands of **.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter number %1 is out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use parameters #1 to #5601.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter %1 is not defined</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Assign it a value before reading it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parameter %1 is read-only</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>System parameters are set by codes (e.g. G10 L2, G92), not by assignment.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bad parameter name %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write named parameters as #&lt;name&gt;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An expression is expected %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the value in brackets, e.g. [#1 + 2].</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Malformed O word %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write O-words as o100 if [...] or o&lt;name&gt; sub.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unknown O-word keyword %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use sub, endsub, call, return, if, elseif, else, endif, while, endwhile, do, repeat, endrepeat, break or continue.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An O-word line has other words</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Put the other words on their own line.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 without its opening O-word</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the O numbers; they must match the opening line.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is never closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add the matching end line (endsub, endif, endwhile, endrepeat or while).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subroutine %1 is not defined</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Define the subroutine before calling it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subroutine calls nested too deeply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check for unbounded recursion.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 outside a loop with this O number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use break and continue only inside their own loop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 outside a subroutine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use return and endsub only inside a subroutine.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The program executes more than %1 blocks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the loops; one of them may never end.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>frezka::grinder::EmulatorTransport</name>
     <message>
         <source>The emulator is not open</source>
@@ -192,6 +767,249 @@
     </message>
     <message>
         <source>Unreadable reply &quot;%1&quot;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui</name>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>laser</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coolant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>air blow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>machine cover lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tool release</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tool cover open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>brake</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>interrupt signal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lower limit %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upper limit %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Steps per mm %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Homing speed %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Relay function</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OUT1 function</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OUT2 function</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OUT3 function</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PWM mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STEP/DIR polarity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handwheel (MPG)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input that starts homing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN0-7</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN14/IN15</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input polarity IN0-7</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input polarity IN14/IN15</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A axis coupling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Baud range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handwheel acceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handwheel maximum speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handwheel brake delay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Default spindle speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handwheel step multiplier</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brake release delay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address 0x%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 steps/mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>homing off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>standard PWM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>breakout-board signal (jumper ANA/PWM)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown (0x%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STEP inverted: %1; DIR inverted: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DIR inverted: %1; STEP on %2 edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>falling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rising</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on, within the limits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on, 4th position drives rotary A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on with limits, 4th position drives rotary A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IN%1 held &gt; 1 s starts homing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>enabled: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>active high: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>slaved to X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>slaved to Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>slaved to Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>independent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>921 600 / 460 800 / 230 400 / 115 200 Bd</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>19 200 / 38 400 / 57 600 / 115 200 Bd</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>×%1 (x1 = %2 mm)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -801,6 +1619,342 @@ The probe did not touch as expected. Abort the job or Continue.</source>
 %2</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Profile name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unit type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum pulse rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Firmware version</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Checksums</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Packets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Commands per packet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Present</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Steps per mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invert direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Soft limit min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Soft limit max</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rapid speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum speed jump at a corner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Order (0 = not homed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Direction to the switch (-1/+1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum search travel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed toward the switch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed off the switch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum back-off travel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position after homing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corner deviation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Arc chord tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause between stand-alone moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool lift</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spin-up wait</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OUT1 function</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OUT2 function</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OUT3 function</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output switched by M7</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unit EEPROM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compare with the unit on connect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handwheel (MPG)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handwheel acceleration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handwheel maximum speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handwheel brake delay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Handwheel step multiplier</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input that starts homing (0 = off)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN0-7</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN14/IN15</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Polarity IN0-7</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Polarity IN14/IN15</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A axis slaved to (0 none, 1 X, 2 Y, 3 Z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PWM for breakout boards</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Invert STEP polarity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Default spindle speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brake release delay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Path speed (VK)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Major axis speed (VN)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Laser</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coolant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Air blow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine cover lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool release</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool cover open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brake</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interrupt signal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On, within the limits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On, 4th position drives rotary A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On with limits, 4th position drives rotary A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GVE84</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GVE64</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GVE64 PHANTOM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GVE114</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ProfileEditor</name>
@@ -1046,6 +2200,106 @@ The probe did not touch as expected. Abort the job or Continue.</source>
     </message>
     <message>
         <source>Left drag: orbit · right/middle drag or Shift+left: pan · wheel: zoom</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::UnitConfigDialog</name>
+    <message>
+        <source>No reply to %1 within 5 s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the unit&apos;s EEPROM…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The unit already matches the profile.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the unit first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Writing %n setting(s) and reading them back…</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The unit refused %1 (reply %2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot read the value in the reply to %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read-back of %1 gives %2, not the %3 written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not read yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>The unit matches the profile (%n setting(s) compared).</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ from the profile.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Unit configuration (EEPROM)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Meaning (unit value)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read from unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write differences</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Close</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
