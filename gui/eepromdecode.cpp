@@ -8,8 +8,10 @@
 namespace frezka::gui {
 namespace {
 
-QString tr(const char *s){
-    return QCoreApplication::translate("frezka::gui", s) // context of tr() here for lupdate;
+// lupdate files tr() calls here under the namespace, "frezka::gui".
+QString tr(const char *s)
+{
+    return QCoreApplication::translate("frezka::gui", s);
 }
 
 QString axisList(unsigned bits, int first, int count)

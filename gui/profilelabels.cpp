@@ -142,33 +142,22 @@ QString configErrorText(const machine::ConfigError &error)
     using C = machine::ConfigErrorCode;
     switch (error.code) {
     case C::FileUnreadable:
-        what = QT_TRANSLATE_NOO{
-            "frezka::gui::Profile",
-            QT_TRANSLATE_NOOP("frezka::gui::Profile", "the file cannot be read or written")};
+        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "the file cannot be read or written");
         break;
     case C::Syntax:
-        what = QT_TRANSLATE_NOO{
-            "frezka::gui::Profile",
-            QT_TRANSLATE_NOOP("frezka::gui::Profile", "the file is not valid JSON")};
+        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "the file is not valid JSON");
         break;
     case C::WrongType:
-        what = QT_TRANSLATE_NOO{
-            "frezka::gui::Profile",
-            QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value has the wrong type")};
+        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value has the wrong type");
         break;
     case C::UnknownKey:
-        what = QT_TRANSLATE_NOO{"frezka::gui::Profile",
-                                QT_TRANSLATE_NOOP("frezka::gui::Profile", "unknown key (a typo?)")};
+        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "unknown key (a typo?)");
         break;
     case C::OutOfRange:
-        what = QT_TRANSLATE_NOO{
-            "frezka::gui::Profile",
-            QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value is outside its range")};
+        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value is outside its range");
         break;
     case C::BadChoice:
-        what = QT_TRANSLATE_NOO{
-            "frezka::gui::Profile",
-            QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value is none of the allowed ones")};
+        what = QT_TRANSLATE_NOOP("frezka::gui::Profile", "the value is none of the allowed ones");
         break;
     case C::Inconsistent:
         what = QT_TRANSLATE_NOOP("frezka::gui::Profile",
