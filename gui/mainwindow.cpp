@@ -292,8 +292,9 @@ void MainWindow::connectProgram()
     connect(m_program, &ProgramSession::loaded, this, [this] {
         m_loadProgress->setVisible(false);
         const LoadedProgram &p = m_program->program();
-        m_listing->listModel()->setText(p.text);
+        m_listing->setText(p.text);
         m_view->model()->setScene(p.scene);
+
         m_plot->setPlanned(p.speed);
         checkProgramLimits();
         m_run->setProgress(0, 0, p.estimatedS);
@@ -307,7 +308,7 @@ void MainWindow::connectProgram()
             std::set<int> lines;
             for (const auto &e : p.errors)
                 lines.insert(e.line);
-            m_listing->listModel()->setErrorLines(lines);
+            m_listing->setErrorLines(lines);
             m_listing->showErrorLine(p.errors.front().line);
             for (std::size_t i = 1; i < p.errors.size(); ++i)
                 m_console->appendError(p.errors[i].text);
