@@ -409,7 +409,12 @@ void Unit::receive(std::string_view bytes)
             continue;
         }
         if (d.deferred != Impl::Deferred::None) {
-            d.backlog.append(bytes.substr(i));
+            const std::string_view rest = bytes.substr(i);
+            const std::size_t room = readings::kReceiveBufferBytes -
+                                     std::min(d.backlog.size(), readings::kReceiveBufferBytes);
+            d.backlog.append(rest.substr(0, room));
+            d.stats.discardedBytes +=
+                static_cast<std::int64_t>(rest.size() - std::min(room, rest.size()));
             return;
         }
         d.feed(bytes[i]);

@@ -85,6 +85,30 @@ bool TransferSession::start(Operation operation)
     return true;
 }
 
+QString TransferSession::describeImage(const ImageReport &report)
+{
+    if (!report.hasBlocks)
+        return tr("no inner blocks (%1 bytes)").arg(report.size);
+    const std::size_t bad = report.badBlocks();
+    if (bad == 0)
+        return tr("%1 blocks, all valid").arg(report.blocks.size());
+    QStringList problems;
+    for (const BlockReport &block : report.blocks) {
+        if (block.ok())
+            continue;
+        const QString id =
+            QStringLiteral("0x") +
+            QString::number(block.id, 16).rightJustified(2, QLatin1Char('0')).toUpper();
+        problems << (!block.startOk ? tr("%1 (no AA)").arg(id)
+                     : !block.idOk  ? tr("%1 (wrong block id)").arg(id)
+                                    : tr("%1 (checksum)").arg(id));
+    }
+    return tr("%1 of %2 blocks invalid: %3 (the data are kept unchanged)")
+        .arg(bad)
+        .arg(report.blocks.size())
+        .arg(problems.join(QLatin1String(", ")));
+}
+
 void TransferSession::ping()
 {
     if (start(Operation::Ping))
@@ -130,7 +154,7 @@ void TransferSession::load(const Header &header, const QByteArray &data)
         return;
     }
     if (!m_result.image.ok())
-        emit traced(tr("Warning: %1").arg(QString::fromStdString(m_result.image.summary())));
+        emit traced(tr("Warning: inner blocks: %1").arg(describeImage(m_result.image)));
     sendLater(Frame::control(info.framing, Code::Enq), State::Enquiring);
 }
 

@@ -87,6 +87,9 @@ public:
     bool isBusy() const { return m_state != State::Idle; }
     const TransferResult &lastResult() const { return m_result; }
 
+    // Translated one-line summary of an inner-block check ("20 blocks, all valid", ...).
+    static QString describeImage(const ImageReport &report);
+
     void ping();
     void save();
     // Sends `data` exactly as given; `header` is ignored by the ANC family (no header).

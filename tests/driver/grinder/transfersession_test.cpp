@@ -150,7 +150,8 @@ TEST(GrinderSession, ImageRoundTripIsByteExactEvenWithBadInnerBlocks)
     Rig to(config(Family::K51));
     ASSERT_TRUE(to.load(headerText(saved.header), toBytes(saved.data)).ok());
     EXPECT_EQ(to.transport.emulator().image(), image);
-    EXPECT_TRUE(to.trace.join('\n').contains("1 of 20 blocks invalid"));
+    EXPECT_TRUE(to.trace.join('\n').contains("1 of 20 blocks invalid: 0x02 (checksum)"))
+        << to.trace.join('\n').toStdString();
 }
 
 TEST(GrinderSession, NakThenSuccess)

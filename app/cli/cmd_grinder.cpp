@@ -1,0 +1,341 @@
+// frezka-cli grinder: program/table transfer and Z-position link with ANC/K51 grinding
+// controls (issue 7). See docs/grinder.md.
+#include "cli.h"
+
+#include "driver/grinder/transfersession.h"
+#include "driver/grinder/zlinksession.h"
+
+#include <QCoreApplication>
+#include <QEventLoop>
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+
+#include <cstdio>
+#include <unistd.h>
+
+using namespace frezka::grinder;
+using frezka::cli::err;
+using frezka::cli::out;
+
+namespace {
+
+struct GrinderCli
+{
+    Q_DECLARE_TR_FUNCTIONS(GrinderCli)
+};
+
+struct Args
+{
+    QString action; // ping, save, load, z
+    QString file;
+    SerialSettings serial;
+    Family family = Family::K51;
+    QString header;
+    bool hasHeader = false;
+    int retries = 3;
+    int replyTimeoutMs = 0; // 0: the session defaults
+    int form = 1;
+    bool hasGo = false;
+    std::int64_t goUm = 0;
+};
+
+QString usage()
+{
+    return GrinderCli::tr(
+        "usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]\n"
+        "                          [--baud N] [--header TEXT] [--retries N]\n"
+        "                          [--reply-timeout-ms N] FILE\n"
+        "       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]\n"
+        "                          [--reply-timeout-ms N]\n"
+        "  ping   link check (ENQ/ACK)\n"
+        "  save   controller -> PC: write the controller's data to FILE, byte for byte\n"
+        "  load   PC -> controller: send FILE unchanged; the 16-character header is --header\n"
+        "         or, as K51LOAD 2.20 did, the file name\n"
+        "  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2\n"
+        "         waits for a binary frame); --go MM moves the table and waits until reached\n"
+        "  --retries N            repeats after a timeout, NAK or bad checksum (default 3)\n"
+        "  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for\n"
+        "                         the data after a request)\n"
+        "Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.\n");
+}
+
+// Returns 0 when parsed, else the exit code (2) after printing the reason.
+int parseArgs(const QStringList &list, Args &args)
+{
+    if (list.isEmpty()) {
+        err(usage());
+        return 2;
+    }
+    args.action = list.first();
+    if (args.action != "ping" && args.action != "save" && args.action != "load" &&
+        args.action != "z") {
+        err(GrinderCli::tr("frezka-cli grinder: unknown action '%1'\n").arg(args.action) + usage());
+        return 2;
+    }
+    for (int i = 1; i < list.size(); ++i) {
+        const QString &arg = list[i];
+        const bool hasValue = i + 1 < list.size();
+        auto fail = [&](const QString &reason) {
+            err(QStringLiteral("frezka-cli grinder: %1\n").arg(reason));
+            return 2;
+        };
+        if (arg.startsWith("--") && !hasValue)
+            return fail(GrinderCli::tr("%1 needs a value").arg(arg));
+        bool ok = true;
+        if (arg == "--port") {
+            args.serial.portName = list[++i];
+        } else if (arg == "--family") {
+            const auto family = familyFromId(list[++i].toStdString());
+            if (!family)
+                return fail(GrinderCli::tr("--family: '%1' is not k51, anc or hedit").arg(list[i]));
+            args.family = *family;
+        } else if (arg == "--baud") {
+            args.serial.baud = list[++i].toInt(&ok);
+            if (!ok || args.serial.baud <= 0)
+                return fail(GrinderCli::tr("--baud: '%1' is not a baud rate").arg(list[i]));
+        } else if (arg == "--header") {
+            args.header = list[++i];
+            args.hasHeader = true;
+            if (args.header.size() > int(kHeaderSize))
+                return fail(
+                    GrinderCli::tr("--header: '%1' is longer than 16 characters").arg(args.header));
+        } else if (arg == "--retries") {
+            args.retries = list[++i].toInt(&ok);
+            if (!ok || args.retries < 0 || args.retries > 100)
+                return fail(GrinderCli::tr("--retries: '%1' is not 0 to 100").arg(list[i]));
+        } else if (arg == "--reply-timeout-ms") {
+            args.replyTimeoutMs = list[++i].toInt(&ok);
+            if (!ok || args.replyTimeoutMs < 100 || args.replyTimeoutMs > 600000)
+                return fail(
+                    GrinderCli::tr("--reply-timeout-ms: '%1' is not 100 to 600000").arg(list[i]));
+        } else if (arg == "--form") {
+            args.form = list[++i].toInt(&ok);
+            if (!ok || (args.form != 1 && args.form != 2))
+                return fail(GrinderCli::tr("--form: '%1' is not 1 or 2").arg(list[i]));
+        } else if (arg == "--go") {
+            const auto um = parseMillimetres(list[++i].toStdString());
+            if (!um)
+                return fail(
+                    GrinderCli::tr("--go: '%1' is not a position in mm (e.g. 12.5)").arg(list[i]));
+            args.hasGo = true;
+            args.goUm = *um;
+        } else if (arg.startsWith("--")) {
+            return fail(GrinderCli::tr("unknown option '%1'").arg(arg));
+        } else if (args.file.isEmpty()) {
+            args.file = arg;
+        } else {
+            return fail(GrinderCli::tr("unexpected argument '%1'").arg(arg));
+        }
+    }
+    if (args.serial.portName.isEmpty())
+        return err(GrinderCli::tr("frezka-cli grinder: --port PATH is required\n")), 2;
+    if ((args.action == "save" || args.action == "load") && args.file.isEmpty())
+        return err(GrinderCli::tr("frezka-cli grinder: %1 needs a FILE\n").arg(args.action)), 2;
+    return 0;
+}
+
+QString formatSeconds(double seconds)
+{
+    const int s = int(seconds + 0.5);
+    return s >= 60 ? QStringLiteral("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'))
+                   : GrinderCli::tr("%1 s").arg(s);
+}
+
+// "[#########...........]  9876/21789 B  45%  12 s left" on a terminal; nothing otherwise.
+class ProgressBar
+{
+public:
+    ProgressBar(Clock &clock, int baud)
+        : m_clock(clock)
+        , m_baud(baud)
+        , m_tty(::isatty(STDERR_FILENO) == 1)
+        , m_startUs(clock.nowUs())
+    {}
+    void update(qint64 done, qint64 total)
+    {
+        if (!m_tty || total <= 0)
+            return;
+        const std::int64_t now = m_clock.nowUs();
+        if (done < total && m_drawn && now - m_lastDrawUs < 100000)
+            return; // ten redraws a second are plenty
+        m_lastDrawUs = now;
+        const int width = 30;
+        const int filled = int(width * done / total);
+        const double left = estimateSecondsLeft(done, total, m_clock.nowUs() - m_startUs, m_baud);
+        err(QStringLiteral("\r[%1%2] %3/%4 B %5%  %6   ")
+                .arg(QString(filled, QLatin1Char('#')), QString(width - filled, QLatin1Char('.')))
+                .arg(done, 6)
+                .arg(total)
+                .arg(100 * done / total, 3)
+                .arg(GrinderCli::tr("%1 left").arg(formatSeconds(left))));
+        m_drawn = true;
+    }
+    void end()
+    {
+        if (m_drawn)
+            err(QStringLiteral("\n"));
+        m_drawn = false;
+    }
+
+private:
+    Clock &m_clock;
+    int m_baud;
+    bool m_tty;
+    std::int64_t m_startUs;
+    bool m_drawn = false;
+    std::int64_t m_lastDrawUs = 0;
+};
+
+int report(const TransferResult &result)
+{
+    if (!result.ok()) {
+        err(GrinderCli::tr("frezka-cli grinder: %1 failed (%2): %3\n")
+                .arg(result.operation == Operation::Ping   ? QStringLiteral("ping")
+                     : result.operation == Operation::Save ? QStringLiteral("save")
+                                                           : QStringLiteral("load"),
+                     QString::fromLatin1(transferErrorId(result.error)), result.message));
+        return 1;
+    }
+    out(result.message + QLatin1Char('\n'));
+    if (result.retries > 0 || result.noiseBytes > 0)
+        out(GrinderCli::tr("Repeats: %1 (NAK %2, bad checksum %3), noise bytes skipped: %4\n")
+                .arg(result.retries)
+                .arg(result.naks)
+                .arg(result.checksumFailures)
+                .arg(result.noiseBytes));
+    if (result.operation != Operation::Ping && result.image.hasBlocks)
+        out(GrinderCli::tr("Inner blocks: %1\n").arg(TransferSession::describeImage(result.image)));
+    return 0;
+}
+
+int runTransfer(const Args &args)
+{
+    QByteArray data;
+    if (args.action == "load") {
+        QFile file(args.file);
+        if (!file.open(QIODevice::ReadOnly)) {
+            err(GrinderCli::tr("frezka-cli grinder: cannot read %1: %2\n")
+                    .arg(args.file, file.errorString()));
+            return 1;
+        }
+        data = file.readAll();
+    }
+    RealClock clock;
+    SerialTransport transport(args.serial);
+    QString error;
+    if (!transport.open(&error)) {
+        err(QStringLiteral("frezka-cli grinder: %1\n").arg(error));
+        return 1;
+    }
+    TransferSession session(transport, clock, args.family);
+    SessionTiming timing;
+    timing.maxRetries = args.retries;
+    if (args.replyTimeoutMs > 0) {
+        timing.replyTimeoutMs = args.replyTimeoutMs;
+        timing.firstByteTimeoutMs = args.replyTimeoutMs;
+        timing.gapTimeoutMs = args.replyTimeoutMs;
+    }
+    session.setTiming(timing);
+    ProgressBar bar(clock, args.serial.baud);
+    QEventLoop loop;
+    TransferResult result;
+    QObject::connect(&session, &TransferSession::progressed, &loop,
+                     [&](qint64 d, qint64 t) { bar.update(d, t); });
+    QObject::connect(&session, &TransferSession::finished, &loop, [&](const TransferResult &r) {
+        result = r;
+        loop.quit();
+    });
+    if (args.action == "ping") {
+        session.ping();
+    } else if (args.action == "save") {
+        session.save();
+    } else {
+        const QString header =
+            args.hasHeader ? args.header : QFileInfo(args.file).completeBaseName().left(16);
+        session.load(headerFromText(header.toLatin1().toStdString()), data);
+    }
+    if (session.isBusy())
+        loop.exec();
+    bar.end();
+    if (result.ok() && args.action == "save") {
+        QSaveFile file(args.file);
+        if (!file.open(QIODevice::WriteOnly) || file.write(result.data) != result.data.size() ||
+            !file.commit()) {
+            err(GrinderCli::tr("frezka-cli grinder: cannot write %1: %2 (the data were received "
+                               "but not saved)\n")
+                    .arg(args.file, file.errorString()));
+            return 1;
+        }
+    }
+    const int code = report(result);
+    if (code == 0 && args.action == "load" && args.family != Family::HardChrome)
+        out(GrinderCli::tr("Note: TCHIN programs show \"no prg set\" once until the X axis is set "
+                           "up: select the program in AUT and hold RES.\n"));
+    return code;
+}
+
+QString formatMm(qint64 um)
+{
+    return QString::fromStdString(formatMillimetres(um));
+}
+
+int runZ(const Args &args)
+{
+    RealClock clock;
+    SerialTransport transport(args.serial);
+    QString error;
+    if (!transport.open(&error)) {
+        err(QStringLiteral("frezka-cli grinder: %1\n").arg(error));
+        return 1;
+    }
+    ZLinkSession session(transport, clock, args.form);
+    if (args.replyTimeoutMs > 0)
+        session.setReplyTimeoutMs(args.replyTimeoutMs);
+    QEventLoop loop;
+    int code = 1;
+    QObject::connect(&session, &ZLinkSession::positionReceived, &loop, [&](qint64 um) {
+        out(GrinderCli::tr("Z = %1 mm\n").arg(formatMm(um)));
+        code = 0;
+        loop.quit();
+    });
+    QObject::connect(&session, &ZLinkSession::replyFailed, &loop, [&](const QString &message) {
+        err(QStringLiteral("frezka-cli grinder: %1\n").arg(message));
+        code = 1;
+        loop.quit();
+    });
+    if (args.form == 2) {
+        if (args.hasGo) {
+            err(GrinderCli::tr("frezka-cli grinder: --go needs FORM=1; FORM=2 only reports\n"));
+            return 2;
+        }
+        const int waitMs = args.replyTimeoutMs > 0 ? args.replyTimeoutMs : 3000;
+        const auto timer = clock.callAfter(std::int64_t(waitMs) * 1000, [&] {
+            err(GrinderCli::tr("frezka-cli grinder: no FORM=2 position frame within %1 s\n")
+                    .arg(waitMs / 1000.0));
+            loop.quit();
+        });
+        loop.exec();
+        clock.cancel(timer);
+        return code;
+    }
+    if (args.hasGo)
+        out(GrinderCli::tr("Moving to %1 mm...\n").arg(formatMm(args.goUm)));
+    if (args.hasGo ? session.go(args.goUm) : session.query())
+        loop.exec();
+    return code;
+}
+
+int runGrinder(const QStringList &list)
+{
+    Args args;
+    if (const int code = parseArgs(list, args))
+        return code;
+    return args.action == "z" ? runZ(args) : runTransfer(args);
+}
+
+} // namespace
+
+FREZKA_CLI_COMMAND(grinder, "grinder ping|save|load|z --port PATH [options] [FILE]",
+                   "Transfer programs to/from ANC/K51 grinding controls; Z-position link",
+                   runGrinder);

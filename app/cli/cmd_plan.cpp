@@ -1,0 +1,136 @@
+// frezka-cli plan FILE [--machine PROFILE.json] [--strategy full|exact-stop|grbl]
+//
+// Interprets FILE, plans it for the machine (default: the shipped GVE64 profile) and writes the
+// unit commands one per line as they would go on the wire without checksums ("!0B1200",
+// "!0C697,30,0"); the driver's own steps (waiting for the queue to drain, dwells, operator
+// stops, probing, the end) are comment lines starting with '#'. The last line is a JSON summary:
+// {"vectors":…,"chains":…,"estimated_s":…,"bound_s":…,"max_vertex_jump_mm_s":…}.
+// G-code, profile and plan errors (soft limits first) go to stderr before anything is written
+// to stdout; exit code 1. Plan warnings go to stderr and the plan is written.
+#include "cli.h"
+
+#include "gcode/interpreter.h"
+#include "machine/machineconfig.h"
+#include "machine/planner.h"
+#include "machine/unitwire.h"
+
+#include <QCoreApplication>
+
+#include <cstdio>
+
+namespace {
+
+using namespace frezka;
+
+const char *kUsage =
+    "usage: frezka-cli plan FILE [--machine PROFILE.json] [--strategy full|exact-stop|grbl]\n";
+
+struct Args
+{
+    QString file;
+    QString machine;
+    machine::PlanStrategy strategy = machine::PlanStrategy::Full;
+};
+
+bool parseArgs(const QStringList &args, Args *out)
+{
+    for (int i = 0; i < args.size(); ++i) {
+        const QString &a = args[i];
+        if (a == QLatin1String("--machine") && i + 1 < args.size()) {
+            out->machine = args[++i];
+        } else if (a == QLatin1String("--strategy") && i + 1 < args.size()) {
+            const QString s = args[++i];
+            if (s == QLatin1String("full"))
+                out->strategy = machine::PlanStrategy::Full;
+            else if (s == QLatin1String("exact-stop"))
+                out->strategy = machine::PlanStrategy::ExactStop;
+            else if (s == QLatin1String("grbl"))
+                out->strategy = machine::PlanStrategy::GrblJunction;
+            else
+                return false;
+        } else if (out->file.isEmpty() && !a.startsWith(QLatin1String("--"))) {
+            out->file = a;
+        } else {
+            return false;
+        }
+    }
+    return !out->file.isEmpty();
+}
+
+// "FILE:LINE: what" (the message without its own "line N: " prefix).
+QString located(const QString &file, const machine::PlanError &e, const QString &kind)
+{
+    std::string what = e.message;
+    const std::string prefix = "line " + std::to_string(e.line) + ": ";
+    if (what.rfind(prefix, 0) == 0)
+        what.erase(0, prefix.size());
+    return file + QLatin1Char(':') + QString::number(e.line) + QStringLiteral(": ") + kind +
+           QString::fromStdString(what) + QLatin1Char('\n');
+}
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("frezka::cli", text);
+}
+
+int runPlan(const QStringList &rawArgs)
+{
+    Args args;
+    if (!parseArgs(rawArgs, &args)) {
+        cli::err(QString::fromLatin1(kUsage));
+        return 2;
+    }
+    machine::MachineConfig config = machine::defaultMachineConfig(protocol::Variant::Gve64);
+    if (!args.machine.isEmpty()) {
+        const machine::ConfigResult loaded = machine::loadMachineConfig(args.machine.toStdString());
+        if (!loaded.config) {
+            for (const machine::ConfigError &e : loaded.errors)
+                cli::err(QString::fromStdString(e.message) + QLatin1Char('\n'));
+            return 1;
+        }
+        config = *loaded.config;
+    }
+    const gcode::Result program = gcode::interpretFile(args.file.toStdString());
+    if (!program.ok()) {
+        for (const gcode::Error &e : program.errors)
+            cli::err(gcode::formatError(args.file, e) + QLatin1Char('\n'));
+        return 1;
+    }
+    machine::PlanOptions options;
+    options.strategy = args.strategy;
+    const machine::PlanResult plan = machine::plan(program.toolpath, config, options);
+    for (const machine::PlanError &e : plan.warnings)
+        cli::err(located(args.file, e, tr("warning: ")));
+    if (!plan.ok()) {
+        for (const machine::PlanError &e : plan.errors)
+            cli::err(located(args.file, e, QString()));
+        return 1;
+    }
+    std::string out;
+    out.reserve(1 << 20);
+    for (const machine::UnitCommand &c : plan.program.commands) {
+        out += machine::commandText(c, plan.program.axisCount);
+        out += '\n';
+        if (out.size() > (1 << 20) - 64) {
+            std::fwrite(out.data(), 1, out.size(), stdout);
+            out.clear();
+        }
+    }
+    char summary[256];
+    const machine::PlanStats &s = plan.stats;
+    std::snprintf(summary, sizeof summary,
+                  "{\"vectors\":%zu,\"chains\":%zu,\"estimated_s\":%.4f,\"bound_s\":%.4f,"
+                  "\"max_vertex_jump_mm_s\":%.4f}\n",
+                  s.vectors, s.chains, s.estimatedS, s.boundS, s.maxVertexJumpMmPerS);
+    out += summary;
+    if (std::fwrite(out.data(), 1, out.size(), stdout) != out.size() || std::fflush(stdout) != 0) {
+        cli::err(tr("frezka-cli: cannot write the plan\n"));
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+FREZKA_CLI_COMMAND(plan, "plan FILE [--machine PROFILE.json] [--strategy full|exact-stop|grbl]",
+                   "Plan a G-code program for a machine and print the unit commands", runPlan);

@@ -1,0 +1,196 @@
+#include "emuoptions.h"
+
+#include "driver/protocol/variant.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace frezka::gveemu {
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("gve-emu", text);
+}
+
+int axisFromLetter(QChar c)
+{
+    return QStringLiteral("XYZA").indexOf(c.toUpper());
+}
+
+// AXIS=POS[,+|-] -> switch; `input` < 0 means the axis' home input (IN0..IN3).
+bool parseSwitch(const QString &spec, int input, emulator::PositionSwitch &sw)
+{
+    const auto eq = spec.indexOf(QLatin1Char('='));
+    if (eq != 1)
+        return false;
+    const int axis = axisFromLetter(spec.at(0));
+    if (axis < 0)
+        return false;
+    QString rest = spec.mid(2);
+    int side = -1;
+    if (rest.endsWith(QLatin1String(",+")) || rest.endsWith(QLatin1String(",-"))) {
+        side = rest.endsWith(QLatin1Char('+')) ? 1 : -1;
+        rest.chop(2);
+    }
+    bool ok = false;
+    const qlonglong pos = rest.toLongLong(&ok);
+    if (!ok)
+        return false;
+    sw = {input < 0 ? axis : input, axis, pos, side};
+    return true;
+}
+
+bool parseRate(const QString &text, double &out)
+{
+    bool ok = false;
+    const double v = text.toDouble(&ok);
+    if (!ok || !(v >= 0 && v <= 1))
+        return false;
+    out = v;
+    return true;
+}
+
+} // namespace
+
+QString emuHelpText()
+{
+    return tr(
+        "Usage: gve-emu [options]\n"
+        "Serves an emulated GVE interpolator on a new pseudo-terminal in real time.\n"
+        "The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).\n"
+        "Stop it with Ctrl+C (SIGINT) or SIGTERM.\n"
+        "\n"
+        "Options:\n"
+        "  --variant ID        gve84 | gve64 | gve64-phantom | gve114 (default gve64)\n"
+        "  --baud N            line speed, one of the variant's rates (default 115200)\n"
+        "  --max-rate N        maximum pulse rate of the unit, pulses/s (one of the\n"
+        "                      variant's orderable rates; default the variant's default)\n"
+        "  --address N         unit address 0..6 (default 0)\n"
+        "  --latency MS        added delay each way, milliseconds (default 0)\n"
+        "  --latency-to-unit MS, --latency-to-pc MS   the same for one direction\n"
+        "  --seed N            seed of the fault injector (default 1)\n"
+        "  --corrupt P         probability per byte of a flipped bit, both ways (0..1)\n"
+        "  --drop P            probability per byte that it is lost, both ways\n"
+        "  --duplicate P       probability per byte that it arrives twice, both ways\n"
+        "  --lose-reply P      probability that a whole reply is lost\n"
+        "  --eeprom FILE       keep the EEPROM in FILE (read at start, written on EW/EFW/EUW)\n"
+        "  --home AXIS=POS[,+|-]   home switch of AXIS (X, Y, Z, A on IN0..IN3): it is\n"
+        "                      pressed at and below POS (-, default) or at and above (+)\n"
+        "  --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.\n"
+        "                      --limit 6:X=200000,+ (GVE64 end switch X)\n"
+        "  --link PATH         also create a symlink PATH to the terminal\n"
+        "  --verbose           log every byte to stderr\n"
+        "  --help              this text\n");
+}
+
+bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &error)
+{
+    using protocol::variantInfo;
+    auto &unit = options.simulation.unit;
+    auto &wire = options.simulation.wire;
+    int baud = 0;
+    for (int i = 0; i < args.size(); ++i) {
+        const QString &a = args.at(i);
+        if (a == QLatin1String("--help") || a == QLatin1String("-h")) {
+            options.help = true;
+            return true;
+        }
+        if (a == QLatin1String("--verbose")) {
+            options.verbose = true;
+            continue;
+        }
+        if (i + 1 >= args.size()) {
+            error = tr("%1 needs a value (see --help)").arg(a);
+            return false;
+        }
+        const QString v = args.at(++i);
+        bool ok = true;
+        if (a == QLatin1String("--variant")) {
+            const auto variant = protocol::variantFromId(v.toStdString());
+            ok = variant.has_value();
+            if (ok)
+                unit.variant = *variant;
+        } else if (a == QLatin1String("--baud")) {
+            baud = v.toInt(&ok);
+        } else if (a == QLatin1String("--max-rate")) {
+            unit.maxPulseRate = v.toInt(&ok);
+        } else if (a == QLatin1String("--address")) {
+            unit.address = v.toInt(&ok);
+            ok = ok && unit.address >= 0 && unit.address <= 6;
+        } else if (a == QLatin1String("--latency") || a == QLatin1String("--latency-to-unit") ||
+                   a == QLatin1String("--latency-to-pc")) {
+            const double ms = v.toDouble(&ok);
+            ok = ok && ms >= 0 && ms <= 10000;
+            if (a != QLatin1String("--latency-to-pc"))
+                wire.latencyPcToUnitS = ms / 1000.0;
+            if (a != QLatin1String("--latency-to-unit"))
+                wire.latencyUnitToPcS = ms / 1000.0;
+        } else if (a == QLatin1String("--seed")) {
+            wire.seed = v.toULongLong(&ok);
+        } else if (a == QLatin1String("--corrupt")) {
+            ok = parseRate(v, wire.pcToUnit.corruptByteRate);
+            wire.unitToPc.corruptByteRate = wire.pcToUnit.corruptByteRate;
+        } else if (a == QLatin1String("--drop")) {
+            ok = parseRate(v, wire.pcToUnit.dropByteRate);
+            wire.unitToPc.dropByteRate = wire.pcToUnit.dropByteRate;
+        } else if (a == QLatin1String("--duplicate")) {
+            ok = parseRate(v, wire.pcToUnit.duplicateByteRate);
+            wire.unitToPc.duplicateByteRate = wire.pcToUnit.duplicateByteRate;
+        } else if (a == QLatin1String("--lose-reply")) {
+            ok = parseRate(v, wire.unitToPc.loseMessageRate);
+        } else if (a == QLatin1String("--eeprom")) {
+            unit.eepromFile = v.toStdString();
+            ok = !v.isEmpty();
+        } else if (a == QLatin1String("--home")) {
+            emulator::PositionSwitch sw;
+            ok = parseSwitch(v, -1, sw);
+            if (ok)
+                unit.switches.push_back(sw);
+        } else if (a == QLatin1String("--limit")) {
+            const auto colon = v.indexOf(QLatin1Char(':'));
+            const int input = colon > 0 ? v.left(colon).toInt(&ok) : -1;
+            emulator::PositionSwitch sw;
+            ok = ok && input >= 0 && input <= 15 && parseSwitch(v.mid(colon + 1), input, sw);
+            if (ok)
+                unit.switches.push_back(sw);
+        } else if (a == QLatin1String("--link")) {
+            options.linkPath = v;
+        } else {
+            error = tr("unknown option %1 (see --help)").arg(a);
+            return false;
+        }
+        if (!ok) {
+            error = tr("invalid value '%1' for %2 (see --help)").arg(v, a);
+            return false;
+        }
+    }
+    const auto &info = variantInfo(unit.variant);
+    wire.baud = baud ? baud : info.defaultBaud;
+    if (std::find(info.bauds.begin(), info.bauds.end(), wire.baud) == info.bauds.end()) {
+        error = tr("%1 Bd is not a baud rate of the %2")
+                    .arg(wire.baud)
+                    .arg(QString::fromUtf8(info.displayName.data(), int(info.displayName.size())));
+        return false;
+    }
+    if (unit.maxPulseRate != 0 && std::find(info.maxPulseRates.begin(), info.maxPulseRates.end(),
+                                            unit.maxPulseRate) == info.maxPulseRates.end()) {
+        error = tr("%1 pulses/s is not an orderable rate of the %2")
+                    .arg(unit.maxPulseRate)
+                    .arg(QString::fromUtf8(info.displayName.data(), int(info.displayName.size())));
+        return false;
+    }
+    for (const auto &sw : unit.switches) {
+        if (sw.axis >= info.axisCount) {
+            error =
+                tr("the %1 has no axis A")
+                    .arg(QString::fromUtf8(info.displayName.data(), int(info.displayName.size())));
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace frezka::gveemu

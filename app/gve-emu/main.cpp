@@ -1,0 +1,85 @@
+// gve-emu: an emulated GVE interpolator on a pseudo-terminal. See --help and docs/emulator.md.
+
+#include "emuoptions.h"
+#include "ptyserver.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QSocketNotifier>
+
+#include <csignal>
+#include <cstdio>
+#include <unistd.h>
+
+namespace {
+
+int g_signalPipe[2] = {-1, -1};
+
+void onSignal(int)
+{
+    const char c = 1;
+    [[maybe_unused]] const auto n = ::write(g_signalPipe[1], &c, 1);
+}
+
+void printErr(const QString &text)
+{
+    std::fprintf(stderr, "gve-emu: %s\n", text.toLocal8Bit().constData());
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    using namespace frezka::gveemu;
+    EmuOptions options;
+    QString error;
+    if (!parseEmuOptions(app.arguments().mid(1), options, error)) {
+        printErr(error);
+        return 2;
+    }
+    if (options.help) {
+        std::fputs(emuHelpText().toLocal8Bit().constData(), stdout);
+        return 0;
+    }
+    if (::pipe(g_signalPipe) != 0) {
+        printErr(QCoreApplication::translate("gve-emu", "cannot create a pipe"));
+        return 1;
+    }
+    struct sigaction sa
+    {
+    };
+    sa.sa_handler = onSignal;
+    sigemptyset(&sa.sa_mask);
+    ::sigaction(SIGINT, &sa, nullptr);
+    ::sigaction(SIGTERM, &sa, nullptr);
+    QSocketNotifier signalNotifier(g_signalPipe[0], QSocketNotifier::Read);
+    QObject::connect(&signalNotifier, &QSocketNotifier::activated, &app, &QCoreApplication::quit);
+
+    PtyServer server(options);
+    if (!server.open(error)) {
+        printErr(error);
+        return 1;
+    }
+    const auto eepromError = options.simulation.unit.eepromFile.empty()
+                                 ? std::string()
+                                 : frezka::emulator::Unit(options.simulation.unit).eepromError();
+    if (!eepromError.empty()) {
+        printErr(QString::fromStdString(eepromError));
+        return 1;
+    }
+    if (!options.linkPath.isEmpty()) {
+        QFile::remove(options.linkPath);
+        if (!QFile::link(server.slavePath(), options.linkPath)) {
+            printErr(QCoreApplication::translate("gve-emu", "cannot create the link %1")
+                         .arg(options.linkPath));
+            return 1;
+        }
+    }
+    std::printf("%s\n", server.slavePath().toLocal8Bit().constData());
+    std::fflush(stdout);
+    const int rc = app.exec();
+    if (!options.linkPath.isEmpty())
+        QFile::remove(options.linkPath);
+    return rc;
+}

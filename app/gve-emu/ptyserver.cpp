@@ -1,0 +1,145 @@
+#include "ptyserver.h"
+
+#include <QCoreApplication>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+namespace frezka::gveemu {
+
+PtyServer::PtyServer(const EmuOptions &options, QObject *parent)
+    : QObject(parent)
+    , m_sim(options.simulation)
+    , m_verbose(options.verbose)
+{
+    m_timer.setSingleShot(true);
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, &PtyServer::pump);
+}
+
+PtyServer::~PtyServer()
+{
+    if (m_slave >= 0)
+        ::close(m_slave);
+    if (m_master >= 0)
+        ::close(m_master);
+}
+
+bool PtyServer::open(QString &error)
+{
+    auto fail = [&error](const char *what) {
+        error = QCoreApplication::translate("gve-emu", "cannot create the pseudo-terminal "
+                                                       "(%1): %2")
+                    .arg(QLatin1String(what), QString::fromLocal8Bit(std::strerror(errno)));
+        return false;
+    };
+    m_master = ::posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK);
+    if (m_master < 0)
+        return fail("posix_openpt");
+    if (::grantpt(m_master) != 0 || ::unlockpt(m_master) != 0)
+        return fail("grantpt/unlockpt");
+    const char *name = ::ptsname(m_master);
+    if (!name)
+        return fail("ptsname");
+    m_slavePath = QString::fromLocal8Bit(name);
+    m_slave = ::open(name, O_RDWR | O_NOCTTY);
+    if (m_slave < 0)
+        return fail("open slave");
+    termios tio{};
+    if (::tcgetattr(m_slave, &tio) != 0)
+        return fail("tcgetattr");
+    ::cfmakeraw(&tio);
+    if (::tcsetattr(m_slave, TCSANOW, &tio) != 0)
+        return fail("tcsetattr");
+    m_readNotifier = std::make_unique<QSocketNotifier>(m_master, QSocketNotifier::Read);
+    connect(m_readNotifier.get(), &QSocketNotifier::activated, this, &PtyServer::onReadable);
+    m_writeNotifier = std::make_unique<QSocketNotifier>(m_master, QSocketNotifier::Write);
+    m_writeNotifier->setEnabled(false);
+    connect(m_writeNotifier.get(), &QSocketNotifier::activated, this, &PtyServer::onWritable);
+    m_clock.start();
+    return true;
+}
+
+void PtyServer::onReadable()
+{
+    pump(); // bring the simulation to now before the new bytes enter the wire
+    char buf[4096];
+    for (;;) {
+        const ssize_t n = ::read(m_master, buf, sizeof buf);
+        if (n > 0) {
+            const std::string bytes(buf, static_cast<std::size_t>(n));
+            log("pc>", bytes);
+            m_sim.pcWrite(bytes);
+            continue;
+        }
+        if (n < 0 && errno == EINTR)
+            continue;
+        break; // EAGAIN: all read; EIO cannot happen while m_slave is open
+    }
+    pump();
+}
+
+void PtyServer::pump()
+{
+    const double wall = static_cast<double>(m_clock.nsecsElapsed()) / 1e9;
+    if (wall > m_sim.now())
+        m_sim.advance(wall - m_sim.now());
+    if (std::string out = m_sim.pcRead(); !out.empty()) {
+        log("<unit", out);
+        m_out += out;
+        flushOut();
+    }
+    const double next = m_sim.nextEventIn();
+    if (std::isfinite(next))
+        m_timer.start(static_cast<int>(std::ceil(next * 1000.0)));
+    else
+        m_timer.stop();
+}
+
+void PtyServer::flushOut()
+{
+    while (!m_out.empty()) {
+        const ssize_t n = ::write(m_master, m_out.data(), m_out.size());
+        if (n > 0) {
+            m_out.erase(0, static_cast<std::size_t>(n));
+            continue;
+        }
+        if (n < 0 && errno == EINTR)
+            continue;
+        break; // EAGAIN: the client does not read; try again when writable
+    }
+    m_writeNotifier->setEnabled(!m_out.empty());
+}
+
+void PtyServer::onWritable()
+{
+    flushOut();
+}
+
+void PtyServer::log(const char *direction, const std::string &bytes) const
+{
+    if (!m_verbose)
+        return;
+    std::string shown;
+    for (char c : bytes) {
+        if (c == '\r')
+            shown += "\\r";
+        else if (c == '\n')
+            shown += "\\n";
+        else if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02X", static_cast<unsigned char>(c));
+            shown += hex;
+        } else {
+            shown += c;
+        }
+    }
+    std::fprintf(stderr, "%10.6f %s %s\n", m_sim.now(), direction, shown.c_str());
+}
+
+} // namespace frezka::gveemu

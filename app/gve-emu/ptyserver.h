@@ -1,0 +1,49 @@
+#pragma once
+// Serves a Simulation (unit + wire model) on a pseudo-terminal, with the simulation clock
+// following the wall clock: bytes the client writes enter the wire when they are read, and the
+// unit's replies are written to the terminal when the wire model delivers them.
+
+#include "emuoptions.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QSocketNotifier>
+#include <QTimer>
+
+#include <memory>
+#include <string>
+
+namespace frezka::gveemu {
+
+class PtyServer : public QObject
+{
+    Q_OBJECT
+
+public:
+    explicit PtyServer(const EmuOptions &options, QObject *parent = nullptr);
+    ~PtyServer() override;
+
+    // Creates the terminal (raw mode). Returns false with a message on failure.
+    bool open(QString &error);
+    QString slavePath() const { return m_slavePath; }
+
+private:
+    void onReadable();
+    void onWritable();
+    void pump();
+    void flushOut();
+    void log(const char *direction, const std::string &bytes) const;
+
+    emulator::Simulation m_sim;
+    bool m_verbose;
+    int m_master = -1;
+    int m_slave = -1; // kept open so the master never sees a hang-up between clients
+    QString m_slavePath;
+    std::unique_ptr<QSocketNotifier> m_readNotifier;
+    std::unique_ptr<QSocketNotifier> m_writeNotifier;
+    QTimer m_timer;
+    QElapsedTimer m_clock;
+    std::string m_out; // bytes delivered by the wire model, not yet written to the terminal
+};
+
+} // namespace frezka::gveemu

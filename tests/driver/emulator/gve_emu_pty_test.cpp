@@ -1,0 +1,193 @@
+#include <csignal>
+// A real pty round trip: gve-emu runs as a child process and is spoken to through QSerialPort,
+// exactly as the application talks to hardware. Checks the manuals' own examples byte-exactly.
+
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QSerialPort>
+#include <QSignalSpy>
+#include <QTest>
+
+class GveEmuPtyTest : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void init();
+    void cleanup();
+    void manualExamplesGve64();
+    void checksummedPacketGve64();
+    void queueCapacityAndHaltOverThePty();
+    void exitsCleanlyOnSigint();
+    void rejectsBadOptions();
+
+private:
+    QByteArray ask(const QByteArray &command);
+    bool waitUntilDrained();
+    void start(const QStringList &args);
+
+    QProcess *m_process = nullptr;
+    QSerialPort *m_port = nullptr;
+    QByteArray m_rx;
+};
+
+void GveEmuPtyTest::start(const QStringList &args)
+{
+    m_process = new QProcess(this);
+    m_process->setProgram(QStringLiteral(GVE_EMU_PATH));
+    m_process->setArguments(args);
+    m_process->start();
+    QVERIFY(m_process->waitForStarted(5000));
+    QTRY_VERIFY_WITH_TIMEOUT(m_process->canReadLine(), 5000);
+    const QString path = QString::fromLocal8Bit(m_process->readLine()).trimmed();
+    QVERIFY2(path.startsWith(QLatin1String("/dev/pts/")), qPrintable(path));
+    m_port = new QSerialPort(path, this);
+    m_port->setBaudRate(115200);
+    QVERIFY2(m_port->open(QIODevice::ReadWrite), qPrintable(m_port->errorString()));
+    connect(m_port, &QSerialPort::readyRead, this, [this] { m_rx += m_port->readAll(); });
+}
+
+void GveEmuPtyTest::init()
+{
+    m_rx.clear();
+}
+
+void GveEmuPtyTest::cleanup()
+{
+    delete m_port;
+    m_port = nullptr;
+    if (m_process) {
+        m_process->terminate();
+        m_process->waitForFinished(5000);
+        delete m_process;
+        m_process = nullptr;
+    }
+}
+
+QByteArray GveEmuPtyTest::ask(const QByteArray &command)
+{
+    QSignalSpy readyRead(m_port, &QSerialPort::readyRead);
+    m_port->write(command);
+    while (!m_rx.contains('\r')) {
+        if (!readyRead.wait(5000))
+            return "(no reply within 5 s)";
+    }
+    const auto cr = m_rx.indexOf('\r');
+    const QByteArray reply = m_rx.left(cr + 1);
+    m_rx.remove(0, cr + 1);
+    return reply;
+}
+
+// The manual's way to learn that the queue has run out: L0,0,0 is refused (1) until it is empty.
+bool GveEmuPtyTest::waitUntilDrained()
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < 10000) {
+        const QByteArray r = ask("!0L0,0,0\r");
+        if (r == "0\r")
+            return true;
+        if (r != "1\r")
+            return false;
+        QTest::qWait(10); // poll, as a driver would, without flooding the line
+    }
+    return false;
+}
+
+void GveEmuPtyTest::manualExamplesGve64()
+{
+    start({QStringLiteral("--variant"), QStringLiteral("gve64")});
+    QCOMPARE(ask("!0?\r"), QByteArray("0,IP64MPG v19 10.9.2010\r"));
+    QCOMPARE(ask("!0Q\r"), QByteArray("0,25020304\r"));
+    QCOMPARE(ask("!0Y-\r"), QByteArray("0,Y-\r"));
+    QCOMPARE(ask("!0V20000\r"), QByteArray("0\r"));
+    QCOMPARE(ask("!0L1000,0,0\r"), QByteArray("0\r"));
+    // L is accepted only on an empty queue: poll with L0,0,0 until the move has ended.
+    QVERIFY(waitUntilDrained());
+    QCOMPARE(ask("!0NX-1000\r"), QByteArray("0\r"));
+    QCOMPARE(ask("!0NY2000\r"), QByteArray("0\r"));
+    QCOMPARE(ask("!0NZ50\r"), QByteArray("0\r"));
+    QCOMPARE(ask("!0PF\r"), QByteArray("0,-1000,2000,50\r"));
+    QCOMPARE(ask("!0SW8,F1\r"), QByteArray("5\r"));
+    QCOMPARE(ask("!0SW2,2B\r"), QByteArray("0\r"));
+    QCOMPARE(ask("!0SR2\r"), QByteArray("0,2B\r"));
+    QCOMPARE(ask("!0H\r"), QByteArray("8\r"));
+    QCOMPARE(ask("!0V1000\r"), QByteArray("8\r"));
+    QCOMPARE(ask("!0G\r"), QByteArray("6\r")); // INTA cleared, nothing left to run
+    QCOMPARE(ask("!0%+\r"), QByteArray("0,5C\r"));
+    QCOMPARE(ask("!0A100,4F\r"), QByteArray("0,5C\r"));
+    QCOMPARE(ask("!0%-,CF\r"), QByteArray("0\r"));
+}
+
+void GveEmuPtyTest::checksummedPacketGve64()
+{
+    start({QStringLiteral("--variant"), QStringLiteral("gve64")});
+    QCOMPARE(ask("!0Y-\r"), QByteArray("0,Y-\r"));
+    QCOMPARE(ask("!0V20000\r"), QByteArray("0\r")); // keep the test short
+    QCOMPARE(ask("!0A500\r"), QByteArray("0\r"));
+    QCOMPARE(ask("!0%+\r"), QByteArray("0,5C\r"));
+    // The manuals' packet, byte for byte: one reply at the end.
+    m_port->write("!0*S,FA\r!0C697,30,0,51\r!0C692,92,0,54\r!0C682,151,0,7F\r"
+                  "!0C665,209,0,84\r!0C645,268,0,87\r!0C619,322,0,7F\r!0C589,375,0,8D\r"
+                  "!0C553,425,0,80\r!0C515,471,0,7F\r!0C471,515,0,7F\r");
+    QCOMPARE(ask("!0*E10,4D\r"), QByteArray("0,10,E9\r"));
+    QCOMPARE(ask("!0%-,CF\r"), QByteArray("0\r"));
+    QVERIFY(waitUntilDrained());
+    QCOMPARE(ask("!0PF\r"), QByteArray("0,6128,2858,0\r"));
+}
+
+void GveEmuPtyTest::queueCapacityAndHaltOverThePty()
+{
+    start({QStringLiteral("--variant"), QStringLiteral("gve84")});
+    QCOMPARE(ask("!0V10\r"), QByteArray("0\r"));
+    int accepted = 0;
+    for (;;) {
+        const QByteArray r = ask("!0C100,20,0\r");
+        if (r != "0\r") {
+            QCOMPARE(r, QByteArray("1\r")); // the manual's "vector not accepted"
+            break;
+        }
+        ++accepted;
+        QVERIFY(accepted <= 64);
+    }
+    QCOMPARE(accepted, 64);
+    QCOMPARE(ask("!0F\r"), QByteArray("0,60\r")); // RUN + queue full
+    QCOMPARE(ask("!0H\r"), QByteArray("8\r"));
+    QCOMPARE(ask("!0SR6\r"), QByteArray("8,D0\r")); // INTA, RUN (vectors left), INTCOM
+    QCOMPARE(ask("!0D\r"), QByteArray("0\r"));
+    QCOMPARE(ask("!0SR6\r"), QByteArray("0,00\r"));
+}
+
+void GveEmuPtyTest::exitsCleanlyOnSigint()
+{
+    start({});
+    QCOMPARE(ask("!0?\r"), QByteArray("0,IP64MPG v19 10.9.2010\r"));
+    QSignalSpy finished(m_process, &QProcess::finished);
+    ::kill(static_cast<pid_t>(m_process->processId()), SIGINT);
+    QVERIFY(finished.wait(5000));
+    QCOMPARE(m_process->exitStatus(), QProcess::NormalExit);
+    QCOMPARE(m_process->exitCode(), 0);
+}
+
+void GveEmuPtyTest::rejectsBadOptions()
+{
+    QProcess p;
+    p.start(QStringLiteral(GVE_EMU_PATH), {QStringLiteral("--variant"), QStringLiteral("gve99")});
+    QVERIFY(p.waitForFinished(5000));
+    QCOMPARE(p.exitCode(), 2);
+    QVERIFY(p.readAllStandardError().contains("--variant"));
+    p.start(QStringLiteral(GVE_EMU_PATH), {QStringLiteral("--baud"), QStringLiteral("921600")});
+    QVERIFY(p.waitForFinished(5000));
+    QCOMPARE(p.exitCode(), 2);
+    p.start(QStringLiteral(GVE_EMU_PATH), {QStringLiteral("--help")});
+    QVERIFY(p.waitForFinished(5000));
+    QCOMPARE(p.exitCode(), 0);
+    const QByteArray help = p.readAllStandardOutput();
+    for (const char *opt : {"--variant", "--baud", "--max-rate", "--address", "--latency", "--seed",
+                            "--corrupt", "--drop", "--duplicate", "--lose-reply", "--eeprom",
+                            "--home", "--limit", "--link", "--verbose"})
+        QVERIFY2(help.contains(opt), opt);
+}
+
+QTEST_GUILESS_MAIN(GveEmuPtyTest)
+#include "gve_emu_pty_test.moc"

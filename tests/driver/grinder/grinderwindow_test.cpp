@@ -1,0 +1,159 @@
+// The "Grinder transfer" window, offscreen, against k51-emu on a pty and the in-process
+// emulator. No modal dialog: files are chosen through the panels' file choosers.
+#include "ptyprocess.h"
+
+#include "driver/grinder/controlleremulator.h"
+#include "gui/grinder/grinderwindow.h"
+#include "gui/grinder/serialmonitor.h"
+#include "gui/grinder/zpositionpanel.h"
+
+#include <QLabel>
+#include <QSettings>
+#include <QPushButton>
+#include <QtTest>
+
+using namespace frezka::grinder;
+using namespace frezka::grinder::test;
+using frezka::gui::GrinderWindow;
+using frezka::gui::TransferPanel;
+
+class GrinderWindowTest : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void saveThenLoadRoundTripsByteExactlyOnPty();
+    void silentControllerShowsNoConnection();
+    void zPositionForm1WithTheInProcessEmulator();
+    void serialMonitorShowsBothDirectionsAndCaptures();
+
+private:
+    QTemporaryDir m_dir;
+    QString file(const QString &name) const { return m_dir.filePath(name); }
+};
+
+void GrinderWindowTest::initTestCase()
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("FrezkaTest"));
+    QCoreApplication::setApplicationName(QStringLiteral("grinderwindow_test"));
+    QStandardPaths::setTestModeEnabled(true);
+    // Settings of this run only: nothing leaks between runs or into the user's settings.
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.filePath("settings"));
+}
+
+void GrinderWindowTest::saveThenLoadRoundTripsByteExactlyOnPty()
+{
+    const Bytes generated = generatedImage(Family::K51, kK51ImageSize);
+    const QByteArray image(reinterpret_cast<const char *>(generated.data()),
+                           qsizetype(generated.size()));
+    QVERIFY(writeAll(file("held.bin"), image));
+    EmuProcess emu({"--fast", "--image", file("held.bin"), "--header", "FROM EMU", "--store",
+                    file("stored.bin")});
+    QVERIFY(!emu.path().isEmpty());
+
+    GrinderWindow window;
+    window.show();
+    window.setSerialSettings({emu.path(), 9600, 8, 'n', 1});
+    window.setFamily(Family::K51);
+    TransferPanel *panel = window.transferPanel();
+    panel->setFileChooser([this](TransferPanel::FileChoice choice, const QString &) {
+        return choice == TransferPanel::FileChoice::SaveReceived ? file("saved.bin")
+                                                                 : file("saved.bin");
+    });
+    auto *receive = window.findChild<QPushButton *>("receiveButton");
+    auto *save = window.findChild<QPushButton *>("saveButton");
+    auto *choose = window.findChild<QPushButton *>("chooseButton");
+    auto *send = window.findChild<QPushButton *>("sendButton");
+    auto *hint = window.findChild<QLabel *>("hint");
+    QVERIFY(receive && save && choose && send && hint);
+    QVERIFY(!receive->isEnabled()); // transfer buttons only while connected
+
+    QVERIFY(window.connectPort());
+    QTRY_VERIFY(window.isLinkUp());
+    QVERIFY(window.connectionText().startsWith("Connected"));
+    QTRY_VERIFY(receive->isEnabled());
+
+    receive->click();
+    QTRY_VERIFY(save->isEnabled());
+    QVERIFY(panel->statusText().startsWith("Received"));
+    save->click();
+    QCOMPARE(readAll(file("saved.bin")), image);
+
+    choose->click();
+    QVERIFY(send->isEnabled());
+    panel->setHeaderText(QStringLiteral("WINDOW TEST 16CH"));
+    send->click();
+    QTRY_VERIFY(hint->isVisibleTo(&window));
+    QVERIFY(hint->text().contains("no prg set"));
+    QVERIFY2(panel->statusText().contains("confirmed"), qPrintable(panel->statusText()));
+    QTRY_COMPARE(readAll(file("stored.bin")), image);
+
+    QTRY_VERIFY(receive->isEnabled());
+    receive->click();
+    QTRY_VERIFY(panel->statusText().startsWith("Received"));
+    QCOMPARE(panel->receivedData(), image);
+    bool headerShown = false;
+    for (QLabel *label : window.findChildren<QLabel *>())
+        headerShown |= label->text() == "WINDOW TEST 16CH";
+    QVERIFY(headerShown);
+}
+
+void GrinderWindowTest::silentControllerShowsNoConnection()
+{
+    EmuProcess emu({"--fast", "--silent"});
+    GrinderWindow window;
+    window.setSerialSettings({emu.path(), 9600, 8, 'n', 1});
+    QVERIFY(window.connectPort());
+    QTRY_VERIFY_WITH_TIMEOUT(window.connectionText().startsWith("No connection") &&
+                                 window.connectionText().contains("No answer to ENQ"),
+                             10000);
+    QVERIFY(!window.isLinkUp());
+    QVERIFY(!window.findChild<QPushButton *>("receiveButton")->isEnabled());
+    window.disconnectPort();
+    QCOMPARE(window.connectionText(), QStringLiteral("Not connected."));
+
+    GrinderWindow other;
+    other.setSerialSettings({file("no-such-port"), 9600, 8, 'n', 1});
+    QVERIFY(!other.connectPort());
+    QVERIFY(other.connectionText().startsWith("Cannot connect"));
+}
+
+void GrinderWindowTest::zPositionForm1WithTheInProcessEmulator()
+{
+    GrinderWindow window;
+    window.setSerialSettings({QStringLiteral("emulator"), 115200, 8, 'n', 1});
+    window.setLinkMode(GrinderWindow::LinkMode::ZForm1);
+    QVERIFY(window.connectPort());
+    frezka::gui::ZPositionPanel *z = window.zPositionPanel();
+    QVERIFY(z->readPosition());
+    QTRY_COMPARE(z->positionText(), QStringLiteral("-0001.234 mm"));
+    QVERIFY(z->goTo(0.5));
+    QTRY_COMPARE(z->positionText(), QStringLiteral("0000.500 mm"));
+}
+
+void GrinderWindowTest::serialMonitorShowsBothDirectionsAndCaptures()
+{
+    EmuProcess emu({"--fast"});
+    GrinderWindow window;
+    frezka::gui::SerialMonitor *monitor = window.serialMonitor();
+    QVERIFY(monitor->openPort(0, {emu.path(), 9600, 8, 'n', 1}));
+    QVERIFY(!monitor->sendMessage(1)); // port 2 is not open: said so
+    QVERIFY(monitor->statusText().contains("not open"));
+    monitor->setHexView(true);
+    monitor->setMessage(QStringLiteral("AA 05 00 00 FF 51"), true);
+    QVERIFY(monitor->sendMessage(0));
+    QTRY_VERIFY(monitor->viewText().contains("<-1  AA 06 00 00 FF 50"));
+    QVERIFY(monitor->viewText().contains("->1  AA 05 00 00 FF 51"));
+    monitor->setHexView(false);
+    QVERIFY(monitor->viewText().contains("<-1  <AA><06><00><00><FF>P"));
+    QVERIFY(monitor->captureTo(file("capture-000.txt")));
+    QVERIFY(readAll(file("capture-000.txt")).contains("<AA><06>"));
+    monitor->setMessage(QStringLiteral("AA 0"), true);
+    QVERIFY(!monitor->sendMessage(0));
+    QVERIFY(monitor->statusText().contains("not hex bytes"));
+}
+
+QTEST_MAIN(GrinderWindowTest)
+#include "grinderwindow_test.moc"

@@ -1,0 +1,186 @@
+// End to end on a pseudo-terminal: k51-emu as a process, frezka-cli and the sessions on
+// QSerialPort against it, in real time (k51-emu --fast: no baud pacing).
+#include "ptyprocess.h"
+
+#include "driver/grinder/controlleremulator.h"
+#include "driver/grinder/transfersession.h"
+#include "driver/grinder/zlinksession.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace frezka::grinder;
+using namespace frezka::grinder::test;
+
+class GrinderPtyTest : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void cliSaveThenLoadRoundTripsByteExactly();
+    void cliRoundTripEachFamily_data();
+    void cliRoundTripEachFamily();
+    void cliReportsNakThenSuccessAndChecksumRepeats();
+    void cliReportsFailuresWithNonZeroExit();
+    void cliZPositionBothForms();
+    void sessionOnSerialPortWithNoise();
+    void emulatorExitsCleanlyOnSigterm();
+
+private:
+    QTemporaryDir m_dir;
+    QString file(const QString &name) const { return m_dir.filePath(name); }
+};
+
+// The "Done when": save then load against k51-emu on a pty, byte for byte.
+void GrinderPtyTest::cliSaveThenLoadRoundTripsByteExactly()
+{
+    QByteArray image;
+    const Bytes generated = generatedImage(Family::K51, kK51ImageSize);
+    image =
+        QByteArray(reinterpret_cast<const char *>(generated.data()), qsizetype(generated.size()));
+    image[100] = char(0xAA); // arbitrary content, inner AA bytes included
+    QVERIFY(writeAll(file("held.bin"), image));
+
+    EmuProcess emu({"--fast", "--image", file("held.bin"), "--header", "ORIGINAL", "--store",
+                    file("stored.bin")});
+    QVERIFY2(!emu.path().isEmpty(), qPrintable(emu.errorOutput()));
+
+    CliRun save = runCli({"grinder", "save", "--port", emu.path(), file("saved.bin")});
+    QCOMPARE(save.exitCode, 0);
+    QVERIFY2(save.out.contains("header \"ORIGINAL\""), qPrintable(save.out));
+    QCOMPARE(readAll(file("saved.bin")), image);
+
+    CliRun load = runCli({"grinder", "load", "--port", emu.path(), "--header", "ROUND TRIP 16CH",
+                          file("saved.bin")});
+    QCOMPARE(load.exitCode, 0);
+    QVERIFY2(load.out.contains("no prg set"), qPrintable(load.out));
+    QTRY_COMPARE(readAll(file("stored.bin")), image);
+
+    CliRun again = runCli({"grinder", "save", "--port", emu.path(), file("again.bin")});
+    QCOMPARE(again.exitCode, 0);
+    QVERIFY2(again.out.contains("header \"ROUND TRIP 16CH\""), qPrintable(again.out));
+    QCOMPARE(readAll(file("again.bin")), image);
+}
+
+void GrinderPtyTest::cliRoundTripEachFamily_data()
+{
+    QTest::addColumn<QString>("family");
+    QTest::newRow("anc") << "anc";
+    QTest::newRow("k51") << "k51";
+    QTest::newRow("hedit") << "hedit";
+}
+
+void GrinderPtyTest::cliRoundTripEachFamily()
+{
+    QFETCH(QString, family);
+    EmuProcess emu({"--fast", "--family", family, "--store", file(family + "-stored.bin")});
+    QVERIFY(!emu.path().isEmpty());
+    CliRun ping = runCli({"grinder", "ping", "--port", emu.path(), "--family", family});
+    QCOMPARE(ping.exitCode, 0);
+    QCOMPARE(ping.out.trimmed(), QStringLiteral("Connected."));
+    const QString saved = file(family + ".bin");
+    QCOMPARE(runCli({"grinder", "save", "--port", emu.path(), "--family", family, saved}).exitCode,
+             0);
+    const QByteArray data = readAll(saved);
+    QCOMPARE(std::size_t(data.size()), familyInfo(*familyFromId(family.toStdString())).defaultSize);
+    QCOMPARE(runCli({"grinder", "load", "--port", emu.path(), "--family", family, saved}).exitCode,
+             0);
+    QTRY_COMPARE(readAll(file(family + "-stored.bin")), data);
+}
+
+void GrinderPtyTest::cliReportsNakThenSuccessAndChecksumRepeats()
+{
+    EmuProcess emu({"--fast", "--naks", "2", "--corrupt", "1", "--noise"});
+    QVERIFY(!emu.path().isEmpty());
+    CliRun save = runCli({"grinder", "save", "--port", emu.path(), file("c.bin")});
+    QCOMPARE(save.exitCode, 0);
+    QVERIFY2(save.out.contains("Repeats: 1 (NAK 0, bad checksum 1)"), qPrintable(save.out));
+    CliRun load = runCli({"grinder", "load", "--port", emu.path(), file("c.bin")});
+    QCOMPARE(load.exitCode, 0);
+    QVERIFY2(load.out.contains("Repeats: 2 (NAK 2, bad checksum 0)"), qPrintable(load.out));
+}
+
+void GrinderPtyTest::cliReportsFailuresWithNonZeroExit()
+{
+    {
+        EmuProcess emu({"--fast", "--silent"});
+        CliRun ping = runCli({"grinder", "ping", "--port", emu.path(), "--retries", "1",
+                              "--reply-timeout-ms", "300"});
+        QCOMPARE(ping.exitCode, 1);
+        QVERIFY2(ping.err.contains("(timeout)") && ping.err.contains("No answer to ENQ"),
+                 qPrintable(ping.err));
+    }
+    {
+        EmuProcess emu({"--fast", "--corrupt", "100"});
+        CliRun save =
+            runCli({"grinder", "save", "--port", emu.path(), "--retries", "2", file("never.bin")});
+        QCOMPARE(save.exitCode, 1);
+        QVERIFY2(save.err.contains("(checksum)") && save.err.contains("Bad checksum"),
+                 qPrintable(save.err));
+        QVERIFY(!QFile::exists(file("never.bin"))); // nothing half-written
+    }
+    CliRun noPort = runCli({"grinder", "ping", "--port", file("no-such-port")});
+    QCOMPARE(noPort.exitCode, 1);
+    QVERIFY2(noPort.err.contains("Cannot open"), qPrintable(noPort.err));
+    CliRun badFile = runCli({"grinder", "load", "--port", "/dev/null", file("missing.bin")});
+    QCOMPARE(badFile.exitCode, 1);
+    QCOMPARE(runCli({"grinder", "save", "--port", "/dev/null"}).exitCode, 2);
+    QCOMPARE(runCli({"grinder", "ping", "--family", "xyz", "--port", "/dev/null"}).exitCode, 2);
+}
+
+void GrinderPtyTest::cliZPositionBothForms()
+{
+    {
+        EmuProcess emu({"--fast", "--konfig6", "1", "--z-start", "-1,234", "--z-speed", "100"});
+        CliRun query = runCli({"grinder", "z", "--port", emu.path()});
+        QCOMPARE(query.exitCode, 0);
+        QCOMPARE(query.out.trimmed(), QStringLiteral("Z = -0001.234 mm"));
+        CliRun go = runCli({"grinder", "z", "--port", emu.path(), "--go", "2.5"});
+        QCOMPARE(go.exitCode, 0);
+        QVERIFY2(go.out.contains("Z = 0002.500 mm"), qPrintable(go.out));
+    }
+    {
+        EmuProcess emu({"--fast", "--konfig6", "1", "--zform", "2", "--z-start", "7.007"});
+        CliRun frame = runCli({"grinder", "z", "--port", emu.path(), "--form", "2"});
+        QCOMPARE(frame.exitCode, 0);
+        QCOMPARE(frame.out.trimmed(), QStringLiteral("Z = 0007.007 mm"));
+    }
+}
+
+void GrinderPtyTest::sessionOnSerialPortWithNoise()
+{
+    EmuProcess emu({"--fast", "--noise", "--header", "SERIAL"});
+    QVERIFY(!emu.path().isEmpty());
+    RealClock clock;
+    SerialTransport transport({emu.path(), 9600, 8, 'n', 1});
+    QString error;
+    QVERIFY2(transport.open(&error), qPrintable(error));
+    TransferSession session(transport, clock, Family::K51);
+    QSignalSpy finished(&session, &TransferSession::finished);
+    session.save();
+    QVERIFY(finished.wait(10000));
+    const auto result = finished.first().first().value<TransferResult>();
+    QVERIFY2(result.ok(), qPrintable(result.message));
+    QCOMPARE(QString::fromLatin1(headerText(result.header)), QStringLiteral("SERIAL"));
+    QCOMPARE(result.noiseBytes, qint64(2 * emulatorNoise().size()));
+    QCOMPARE(std::size_t(result.data.size()), kK51ImageSize);
+}
+
+void GrinderPtyTest::emulatorExitsCleanlyOnSigterm()
+{
+    EmuProcess emu({"--fast"});
+    QVERIFY(!emu.path().isEmpty());
+    QCOMPARE(emu.terminate(), 0);
+    QProcess help;
+    help.start(QStringLiteral(K51_EMU_PATH), {"--help"});
+    QVERIFY(help.waitForFinished(5000));
+    QCOMPARE(help.exitCode(), 0);
+    const QString text = QString::fromLocal8Bit(help.readAllStandardOutput());
+    for (const char *option : {"--family", "--image", "--header", "--konfig6", "--zform", "--baud",
+                               "--fast", "--naks", "--corrupt", "--noise", "--silent", "--store"})
+        QVERIFY2(text.contains(QLatin1String(option)), option);
+}
+
+QTEST_GUILESS_MAIN(GrinderPtyTest)
+#include "pty_test.moc"
