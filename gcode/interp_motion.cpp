@@ -21,6 +21,8 @@ constexpr double kSpiralAbsToleranceInchMm = 2 * 0.001 * std::numbers::sqrt2 * 2
 constexpr double kSpiralRelTolerance = 0.001;
 constexpr double kTiny = 1e-12;
 constexpr double kG83RapidDeltaMm = 0.010 * 25.4;
+constexpr double kMaxTurns = 1e6; // P of an arc, L of a cycle: bounds against absurd output
+constexpr double kMaxRepeats = 1e6;
 
 struct PlaneAxes
 {
@@ -108,7 +110,7 @@ bool Interpreter::executeMotion(int motion, Error *error)
 
 bool Interpreter::straight(int motion, const Point4 &end, Error *error)
 {
-    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 1;
+    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
     if (motion == 0) {
         m_toolpath.appendRapid(end, m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
         m_pos = end;
@@ -129,8 +131,8 @@ bool Interpreter::straight(int motion, const Point4 &end, Error *error)
 bool Interpreter::arc(int motion, const Point4 &end, Error *error)
 {
     const Block &b = m_block;
-    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 1;
-    const std::string name = motion == 20 ? "G2" : "G3";
+    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 0;
+    const char *name = motion == 20 ? "G2" : "G3";
     const bool ijk = b.has('i') || b.has('j') || b.has('k');
     const bool rForm = b.has('r');
     const PlaneAxes ax = planeAxes(m_plane);
@@ -157,7 +159,7 @@ bool Interpreter::arc(int motion, const Point4 &end, Error *error)
     if (b.has('p')) {
         const double p = b.get('p');
         const double rounded = std::round(p);
-        if (rounded < 1 || std::fabs(p - rounded) > 0.0001)
+        if (rounded < 1 || rounded > kMaxTurns || std::fabs(p - rounded) > 0.0001)
             return fail(ErrorCode::ArcBadTurns, 'p', fmt4(p), error);
         turns = static_cast<int>(rounded);
     }
@@ -175,14 +177,14 @@ bool Interpreter::arc(int motion, const Point4 &end, Error *error)
         cv = m_arcAbsolute ? ov : sv + ov;
         const double r1 = std::hypot(cu - su, cv - sv);
         const double r2 = std::hypot(cu - eu, cv - ev);
-        const std::string radii = "r1=" + fmt4(r1 / unit()) + " r2=" + fmt4(r2 / unit());
+        auto radii = [&] { return "r1=" + fmt4(r1 / unit()) + " r2=" + fmt4(r2 / unit()); };
         if (r1 < kRadiusToleranceMm || r2 < kRadiusToleranceMm)
-            return failAt(ErrorCode::ArcZeroRadius, col, radii, error);
+            return failAt(ErrorCode::ArcZeroRadius, col, radii(), error);
         const double spiralAbs = m_metric ? kSpiralAbsToleranceMetricMm : kSpiralAbsToleranceInchMm;
         const double absErr = std::fabs(r1 - r2);
         const double relErr = absErr / std::max(r1, r2);
         if (absErr > spiralAbs * 100.0 || (relErr > kSpiralRelTolerance && absErr > spiralAbs))
-            return failAt(ErrorCode::ArcRadiusMismatch, col, radii, error);
+            return failAt(ErrorCode::ArcRadiusMismatch, col, radii(), error);
     } else {
         if (eu == su && ev == sv)
             return fail(ErrorCode::ArcEndEqualsStart, 'r', {}, error);
@@ -226,7 +228,7 @@ bool Interpreter::arc(int motion, const Point4 &end, Error *error)
 
 bool Interpreter::probe(int motion, const Point4 &end, Error *error)
 {
-    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 1;
+    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
     if (m_inverseTime)
         return failAt(ErrorCode::ProbeInverseTime, col, {}, error);
     if (m_feed == 0)
@@ -304,7 +306,7 @@ void Interpreter::cycleBody(int motion, double aa, double bb, double r, double c
 bool Interpreter::cycle(int motion, Error *error)
 {
     const Block &b = m_block;
-    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 1;
+    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 0;
     const std::string name = gName(motion);
     const PlaneAxes ax = planeAxes(m_plane);
     const char uc = kAxisLetters[ax.u], vc = kAxisLetters[ax.v], wc = kAxisLetters[ax.w];
@@ -321,7 +323,7 @@ bool Interpreter::cycle(int motion, Error *error)
     int repeats = 1;
     if (b.has('l')) {
         const double l = b.get('l');
-        if (l < 1 || l != std::floor(l))
+        if (l < 1 || l > kMaxRepeats || l != std::floor(l))
             return fail(ErrorCode::CycleBadL, 'l', {}, error);
         repeats = static_cast<int>(l);
     }

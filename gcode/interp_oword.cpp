@@ -4,6 +4,7 @@
 // expression is evaluated while skipping); loops and calls jump back by byte offset.
 #include "interpreter.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace frezka::gcode {
@@ -144,7 +145,7 @@ bool Interpreter::executeOword(Error *error)
         double c = 0;
         if (!owordCondition(&c, error))
             return false;
-        const auto count = static_cast<std::int64_t>(std::floor(c + 0.5));
+        const auto count = static_cast<std::int64_t>(std::floor(std::min(c, 1e15) + 0.5));
         if (count <= 0)
             return skipTo(label, {OKind::EndRepeat}, &found, error);
         m_frames.push_back({FrameKind::Repeat, label, m_next, m_line, count});
@@ -172,14 +173,31 @@ bool Interpreter::callSub(Error *error)
     const std::string label = m_block.oLabel;
     if (!m_parser.owordArgs(m_block, &m_args, error))
         return false;
-    const auto it = m_subs.find(label);
-    if (it == m_subs.end())
-        return failAt(ErrorCode::SubroutineUndefined, m_block.oColumn, labelText(label), error);
+    const std::uint32_t col = m_block.oColumn;
+    auto it = m_subs.find(label);
+    if (it == m_subs.end()) {
+        // Like rs274ngc, look for the definition further down the file (subroutines are often
+        // written after M2) without executing anything on the way.
+        const std::size_t next = m_next, start = m_lineStart;
+        const std::uint32_t line = m_line;
+        OKind found = OKind::None;
+        Error ignored;
+        const bool defined = skipTo(label, {OKind::Sub}, &found, &ignored);
+        if (defined)
+            it = m_subs.emplace(label, SubDef{m_next, m_line}).first;
+        m_next = next;
+        m_lineStart = start;
+        m_line = line;
+        if (!defined) {
+            m_parser.normalize(m_text.substr(start, next - start), line, &ignored);
+            return failAt(ErrorCode::SubroutineUndefined, col, labelText(label), error);
+        }
+    }
     std::size_t calls = 0;
     for (const Frame &f : m_frames)
         calls += f.kind == FrameKind::Call;
     if (calls >= kMaxCallDepth)
-        return failAt(ErrorCode::CallTooDeep, m_block.oColumn, {}, error);
+        return failAt(ErrorCode::CallTooDeep, col, {}, error);
     m_params.pushScope();
     for (int i = 0; i < Parameters::kArgCount; ++i)
         m_params.setNumbered(i + 1, i < static_cast<int>(m_args.size()) ? m_args[i] : 0.0);

@@ -7,6 +7,10 @@
 #include <cstring>
 #include <memory>
 
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
 namespace frezka::gcode {
 
 namespace {
@@ -41,13 +45,12 @@ Interpreter::~Interpreter() = default;
 
 bool Interpreter::fail(ErrorCode code, char word, std::string detail, Error *error) const
 {
-    return failAt(code, word ? m_block.col(word) : 1, std::move(detail), error);
+    return failAt(code, word ? m_block.col(word) : 0, std::move(detail), error);
 }
 
-bool Interpreter::failAt(ErrorCode code, std::uint32_t column, std::string detail,
-                         Error *error) const
+bool Interpreter::failAt(ErrorCode code, std::uint32_t pos, std::string detail, Error *error) const
 {
-    *error = {code, m_line, column, std::move(detail)};
+    *error = {code, m_line, m_parser.columnAt(pos), std::move(detail)};
     return false;
 }
 
@@ -84,8 +87,10 @@ void Interpreter::jump(std::size_t offset, std::uint32_t lineBefore)
     m_line = lineBefore;
 }
 
-Result Interpreter::run(std::string_view text)
+Result Interpreter::run(std::string_view text, const std::function<void(std::size_t)> &consumed)
 {
+    constexpr std::size_t kReleaseStep = 1u << 20;
+    std::size_t releaseMark = kReleaseStep;
     m_text = text;
     m_next = 0;
     m_line = 0;
@@ -102,6 +107,10 @@ Result Interpreter::run(std::string_view text)
     std::string_view raw;
     Error error;
     while (!m_ended && nextLine(&raw)) {
+        if (m_next >= releaseMark && consumed) {
+            consumed(releaseMark - kReleaseStep);
+            releaseMark += kReleaseStep;
+        }
         if (m_options.progress && (m_line & 0xFFFF) == 0)
             m_options.progress(m_next, text.size());
         if (++m_executed > m_options.maxBlocks) {
@@ -123,9 +132,10 @@ Result Interpreter::run(std::string_view text)
             result.errors.push_back(
                 {ErrorCode::OwordNotClosed, f.line + 1, 1, std::string(what) + " " + f.label});
         } else if (m_percentStarted) {
-            result.errors.push_back({ErrorCode::FileEndedWithoutPercent, m_line, 1, {}});
+            result.errors.push_back(
+                {ErrorCode::FileEndedWithoutPercent, std::max(m_line, 1u), 1, {}});
         } else {
-            result.errors.push_back({ErrorCode::FileEndedWithoutEnd, m_line, 1, {}});
+            result.errors.push_back({ErrorCode::FileEndedWithoutEnd, std::max(m_line, 1u), 1, {}});
         }
     }
     result.linesRead = m_line;
@@ -147,8 +157,7 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
         } else if (m_percentStarted) {
             m_ended = true;
         } else {
-            return failAt(ErrorCode::BadCharacter, static_cast<std::uint32_t>(raw.find('%') + 1),
-                          "%", error);
+            return failAt(ErrorCode::BadCharacter, 0, "%", error);
         }
         return true;
     }
@@ -309,7 +318,7 @@ bool Interpreter::executeModes(Error *error)
         const double t = b.get('t');
         if (t < 0)
             return fail(ErrorCode::NegativeValue, 't', "T", error);
-        if (t != std::floor(t))
+        if (t != std::floor(t) || t > 1e9)
             return fail(ErrorCode::NonIntegerValue, 't', "T", error);
         m_selectedTool = static_cast<int>(t);
     }
@@ -354,7 +363,7 @@ bool Interpreter::executeModes(Error *error)
             int tool = m_tool;
             if (b.has('h')) {
                 const double h = b.get('h');
-                if (h < 0 || h != std::floor(h))
+                if (h < 0 || h > 1e9 || h != std::floor(h))
                     return fail(ErrorCode::NonIntegerValue, 'h', "H", error);
                 tool = static_cast<int>(h);
             }
@@ -438,7 +447,7 @@ bool Interpreter::setOffsets(Error *error)
         return failAt(ErrorCode::G10BadL, col, "without L", error);
     const double l = b.get('l');
     if (l != 2 && l != 20)
-        return fail(ErrorCode::G10BadL, 'l', "L" + std::to_string(static_cast<int>(l)), error);
+        return fail(ErrorCode::G10BadL, 'l', "L" + std::to_string(l), error);
     if (!b.has('p'))
         return failAt(ErrorCode::G10BadP, col, "none", error);
     const double p = b.get('p');
@@ -627,8 +636,21 @@ Result interpretFile(const std::string &path, const Options &options)
     if (size == 0)
         return interpretText({}, options);
     if (uchar *data = file.map(0, size)) {
-        Result r = interpretText(
-            {reinterpret_cast<const char *>(data), static_cast<std::size_t>(size)}, options);
+        Interpreter interpreter(options);
+        // Pages already read are dropped from this process's memory as the interpreter moves
+        // on (they stay in the page cache; a loop jumping back faults them in again).
+        const auto release = [data](std::size_t upTo) {
+#ifdef __linux__
+            const std::size_t page = 4096;
+            if (upTo >= page)
+                ::madvise(data, upTo / page * page, MADV_DONTNEED);
+#else
+            (void)data;
+            (void)upTo;
+#endif
+        };
+        Result r = interpreter.run(
+            {reinterpret_cast<const char *>(data), static_cast<std::size_t>(size)}, release);
         file.unmap(data);
         return r;
     }

@@ -59,8 +59,10 @@ public:
     explicit Interpreter(Options options = {});
     ~Interpreter() override;
 
-    // Interprets a whole program. The text must outlive the call only.
-    Result run(std::string_view text);
+    // Interprets a whole program. The text must outlive the call only. consumed, when set, is
+    // called now and then with an offset below which the text has been read (loops may still
+    // jump back there): a memory-mapped file can drop those pages from memory.
+    Result run(std::string_view text, const std::function<void(std::size_t)> &consumed = {});
 
 private:
     enum class FrameKind : std::uint8_t { Call, If, While, Do, Repeat };
@@ -123,7 +125,8 @@ private:
     double unit() const { return m_metric ? 1.0 : 25.4; }
     double lengthWord(char c) const { return m_block.get(c) * unit(); }
     bool fail(ErrorCode code, char word, std::string detail, Error *error) const;
-    bool failAt(ErrorCode code, std::uint32_t column, std::string detail, Error *error) const;
+    // pos: offset into the normalized line (Block's word positions), 0 for the block start.
+    bool failAt(ErrorCode code, std::uint32_t pos, std::string detail, Error *error) const;
 
     // SystemParameters
     bool systemNumbered(int index, double *value) const override;

@@ -88,7 +88,9 @@ int LinkEngine::indexAfter() const
 {
     const int before = m_indexBefore.value_or(0);
     if (m_packet)
-        return (before + packetIndexAdvance(static_cast<int>(m_commands.size()))) % 256;
+        return (before + packetIndexAdvance(static_cast<int>(m_commands.size())) +
+                (m_options.doublePacketStart ? 1 : 0)) %
+               256;
     return advancesIndex(m_commands.front().op) ? (before + 1) % 256 : before;
 }
 
@@ -153,6 +155,8 @@ void LinkEngine::beginTransaction(double now)
 void LinkEngine::transmitMain(double now)
 {
     m_wire = m_packet ? encodePacket(m_commands, m_checksums) : encode(m_commands[0], m_checksums);
+    if (m_packet && m_options.doublePacketStart)
+        m_wire = encode(cmd::packetStart(), m_checksums) + m_wire;
     m_out += m_wire;
     m_stats.bytesOut += static_cast<std::int64_t>(m_wire.size());
     log(LinkLogKind::Sent, m_packet ? describe() : encodeBody(m_commands[0]));

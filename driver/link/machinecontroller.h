@@ -34,7 +34,7 @@ struct ConnectionSettings
 {
     enum class Kind : std::uint8_t {
         SerialPort, // a real port or a pty path ("/dev/ttyUSB0", "/dev/pts/5")
-        Emulator,   // the built-in in-process emulator, real time
+        Emulator,   // the built-in in-process emulator, real time (variant from the profile)
     };
     Kind kind = Kind::Emulator;
     QString portName;     // SerialPort

@@ -116,6 +116,9 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
     m_vectorPrefix.assign(m_program.commands.size() + 1, 0);
     for (std::size_t i = 0; i < m_program.commands.size(); ++i)
         m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(m_program.commands[i].op) ? 1 : 0);
+    estimateDurations();
+    m_execAt = now;
+    m_pollCount = 0;
     m_report = {};
     m_report.startS = now;
     m_bytesAtStart = m_engine.stats().bytesIn + m_engine.stats().bytesOut;
@@ -131,11 +134,91 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
     return std::nullopt;
 }
 
+// The unit just reported a full queue: it holds `capacity` vectors ending at m_next.
+void MachineCore::calibrateFull()
+{
+    const std::int64_t capacity = variantInfo(m_config.unit.variant).queueCapacity;
+    std::size_t k = m_next;
+    while (k > m_exec && m_vectorPrefix[m_next] - m_vectorPrefix[k - 1] <= capacity)
+        --k;
+    m_exec = std::max(m_exec, k);
+    m_execAt = m_now;
+}
+
+std::size_t MachineCore::execEstimate() const
+{
+    double elapsed = m_now - m_execAt;
+    std::size_t i = std::min(m_exec, m_next);
+    while (i < m_next && elapsed >= m_timePrefix[i + 1] - m_timePrefix[i]) {
+        elapsed -= m_timePrefix[i + 1] - m_timePrefix[i];
+        ++i;
+    }
+    return i;
+}
+
+double MachineCore::bufferedS() const
+{
+    if (!m_job)
+        return 0;
+    const std::size_t from = std::min(m_exec, m_next);
+    return std::max(0.0, m_timePrefix[m_next] - m_timePrefix[from] - (m_now - m_execAt));
+}
+
 int MachineCore::freeQueueEstimate() const
 {
     const int capacity = variantInfo(m_config.unit.variant).queueCapacity;
-    const std::int64_t queued = m_vectorsAcked - m_vectorPrefix[std::min(m_exec, m_next)];
+    const std::int64_t queued = m_vectorsAcked - m_vectorPrefix[execEstimate()];
     return static_cast<int>(std::max<std::int64_t>(0, capacity - 1 - queued));
+}
+
+// Rough motion time per command (cruise at V, or min(V, B) for short vectors; acceleration
+// ignored): used only to judge how much motion the unit holds, never for the motion itself.
+void MachineCore::estimateDurations()
+{
+    double v = 1000, b = variantInfo(m_config.unit.variant).resetBrakeSpeed;
+    std::int64_t shortSteps = 512;
+    bool vk = false;
+    m_timePrefix.assign(m_program.commands.size() + 1, 0.0);
+    for (std::size_t i = 0; i < m_program.commands.size(); ++i) {
+        const machine::UnitCommand &c = m_program.commands[i];
+        double t = 0;
+        switch (c.op) {
+        case UnitOp::Speed:
+            v = static_cast<double>(std::max<std::int64_t>(10, c.value));
+            break;
+        case UnitOp::Brake:
+            b = static_cast<double>(std::max<std::int64_t>(10, c.value));
+            break;
+        case UnitOp::ShortThreshold:
+            shortSteps = c.value;
+            break;
+        case UnitOp::SpeedModeVk:
+            vk = true;
+            break;
+        case UnitOp::SpeedModeVn:
+            vk = false;
+            break;
+        case UnitOp::Line:
+        case UnitOp::Vector: {
+            std::int64_t major = 0;
+            double sq = 0;
+            for (int a = 0; a < 4; ++a) {
+                major = std::max<std::int64_t>(major, std::abs(c.d[a]));
+                sq += a < 3 ? static_cast<double>(c.d[a]) * c.d[a] : 0.0;
+            }
+            const double length = vk ? std::sqrt(sq) : static_cast<double>(major);
+            const double rate = major < shortSteps ? std::min(v, b) : v;
+            t = length / rate;
+            break;
+        }
+        case UnitOp::Dwell:
+            t = static_cast<double>(c.value) / 1000.0;
+            break;
+        default:
+            break;
+        }
+        m_timePrefix[i + 1] = m_timePrefix[i] + t;
+    }
 }
 
 void MachineCore::streamStep(double now)
@@ -144,7 +227,7 @@ void MachineCore::streamStep(double now)
         return;
     if (m_next >= m_program.commands.size()) {
         m_streamBlocked = true;
-        afterIdle([this] { finishJob(true); });
+        afterJobIdle([this] { finishWithPosition(); });
         return;
     }
     const machine::UnitCommand &c = m_program.commands[m_next];
@@ -165,27 +248,51 @@ void MachineCore::streamStep(double now)
     m_engine.start(wire, now);
 }
 
+// Vectors still queued in the unit `ahead` seconds from now, by the duration estimates.
+std::int64_t MachineCore::queuedAfter(double ahead) const
+{
+    const std::size_t from = std::min(m_exec, m_next);
+    const double at =
+        std::min(m_timePrefix[from] + (m_now - m_execAt) + ahead, m_timePrefix[m_next]);
+    // The command executing at program time `at`: the last k with m_timePrefix[k] <= at.
+    auto it = std::upper_bound(m_timePrefix.begin() + static_cast<std::ptrdiff_t>(from),
+                               m_timePrefix.begin() + static_cast<std::ptrdiff_t>(m_next) + 1, at);
+    const auto k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+        static_cast<std::ptrdiff_t>(from), (it - m_timePrefix.begin()) - 1));
+    return m_vectorPrefix[m_next] - m_vectorPrefix[std::min(k, m_next)];
+}
+
 void MachineCore::sendPacket(double now)
 {
+    // As many C/B commands as fit: the unit takes a packet at its *E, by when it has run part of
+    // its queue for as long as the packet takes on the wire.
     const auto &cmds = m_program.commands;
-    const int room = std::min(freeQueueEstimate(), static_cast<int>(m_packetLimit));
+    const std::int64_t capacity = variantInfo(m_config.unit.variant).queueCapacity - 1;
     std::vector<Command> packet;
-    int vectors = 0;
+    std::int64_t vectors = 0;
+    std::size_t bytes = 24; // *S *S *E
     std::size_t end = m_next;
     while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
         const UnitOp op = cmds[end].op;
         if (op != UnitOp::Vector && op != UnitOp::Brake)
             break;
-        if (op == UnitOp::Vector && vectors >= room)
+        Command c = toCommand(cmds[end]);
+        const std::size_t size = encode(c, m_engine.checksums()).size();
+        if (op == UnitOp::Vector &&
+            queuedAfter(m_engine.wireTime(bytes + size)) + vectors + 1 > capacity)
             break;
+        bytes += size;
         vectors += op == UnitOp::Vector ? 1 : 0;
-        packet.push_back(toCommand(cmds[end]));
+        packet.push_back(std::move(c));
         ++end;
     }
     if (packet.empty() ||
         (vectors == 0 && cmds[end < cmds.size() ? end : end - 1].op == UnitOp::Vector)) {
-        // No room in the unit's queue by our estimate: wait for the next poll to tell.
-        m_waitUntil = std::max(now, m_lastPoll) + m_options.pollIntervalS;
+        // No room in the unit's queue by our estimate: wait until about 16 vectors have run.
+        const std::size_t at = execEstimate();
+        const std::size_t later = std::min(at + 16, m_next);
+        m_waitUntil = now + std::clamp(m_timePrefix[later] - m_timePrefix[at], 0.002,
+                                       m_options.pollIntervalS);
         m_queueFullSeen = true;
         return;
     }
@@ -198,6 +305,7 @@ void MachineCore::sendPacket(double now)
     }
     const std::size_t n = packet.size();
     m_inFlight = [this, first, n](const Outcome &o) { onPacketOutcome(o, first, n, m_now); };
+    ++m_report.packets;
     m_engine.startPacket(std::move(packet), now);
 }
 
@@ -207,6 +315,9 @@ void MachineCore::acceptUpTo(std::size_t end)
         if (isMotion(m_program.commands[m_next].op)) {
             ++m_vectorsAcked;
             ++m_report.vectors;
+            if (m_report.firstVectorAckS < 0)
+                m_report.firstVectorAckS = m_now;
+            m_report.lastVectorAckS = m_now;
         }
         ++m_report.commands;
     }
@@ -235,8 +346,10 @@ void MachineCore::onPacketOutcome(const Outcome &o, std::size_t first, std::size
                                  m_packetLimit + m_packetLimit / 2 + 1);
         return;
     case ReplyCode::QueueFull:
+        // The queue is full right now: that calibrates the estimate of where the unit is.
         m_queueFullSeen = true;
-        m_waitUntil = now + m_options.pollIntervalS;
+        calibrateFull();
+        (void)now;
         return;
     case ReplyCode::Syntax:   // a line damaged on the way (bad checksum) or lost
     case ReplyCode::Watchdog: // the packet came in too slowly: none of the rest ran
@@ -291,7 +404,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
     m_streamBlocked = true;
     switch (c.op) {
     case UnitOp::WaitIdle:
-        afterIdle([this, index] {
+        afterJobIdle([this, index] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
@@ -299,7 +412,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
         });
         return;
     case UnitOp::Dwell:
-        afterIdle([this, index, ms = c.value] {
+        afterJobIdle([this, index, ms = c.value] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
@@ -318,7 +431,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
                                ? "M6: change to tool " + std::to_string(c.aux)
                            : kind == gcode::EventKind::OptionalPause ? "M1: optional stop"
                                                                      : "M0: program stop";
-        afterIdle([this, index, text] {
+        afterJobIdle([this, index, text] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
@@ -331,11 +444,11 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
         return;
     }
     case UnitOp::ProgramEnd:
-        afterIdle([this, index] {
+        afterJobIdle([this, index] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
-            finishJob(true);
+            finishWithPosition();
         });
         return;
     case UnitOp::Probe:
@@ -345,6 +458,19 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
              MachineMode::Alarm);
         return;
     }
+}
+
+// The job ran to its end: read the counters once more so that the report and the last state
+// show where the machine really is.
+void MachineCore::finishWithPosition()
+{
+    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+    send(pos, [this](const Outcome &o) {
+        if (unitError(o, "reading the final position", MachineMode::LinkLost))
+            return;
+        applyPosition(o.reply);
+        finishJob(true);
+    });
 }
 
 void MachineCore::finishJob(bool ok)
