@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace frezka::emulator {
@@ -236,6 +237,16 @@ void Unit::Impl::processBacklog()
 
 // ---- clock -----------------------------------------------------------------------------------
 
+namespace {
+
+// Rounding of the clock: a few ulps of the time t (never less than those of one second).
+double clockSlack(double t)
+{
+    return 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t));
+}
+
+} // namespace
+
 double Unit::Impl::nextEventIn() const
 {
     const double now = engine.now();
@@ -247,13 +258,19 @@ double Unit::Impl::nextEventIn() const
     return next;
 }
 
-void Unit::Impl::advanceTo(double target)
+void Unit::Impl::advanceBy(double seconds)
 {
+    // What is left is kept as a duration, never as a clock reading: (now + dt) - now is dt
+    // rounded to the clock's ulp and can fall short of an event exactly dt ahead. An event
+    // within a few ulps of the clock beyond what is left counts as reached, so that
+    // advance(nextEventIn()) always takes its event, even hours into a job.
+    double left = std::max(0.0, seconds);
     for (;;) {
-        const double remaining = std::max(0.0, target - engine.now());
         const double event = nextEventIn();
-        const double dt = std::min(event, remaining);
+        const bool reached = event <= left + clockSlack(engine.now());
+        const double dt = reached ? event : left;
         engine.step(dt);
+        left = std::max(0.0, left - dt);
         checkInterrupts();
         checkHoming();
         if (deferred == Deferred::None && watchdogAt() <= engine.now())
@@ -264,7 +281,7 @@ void Unit::Impl::advanceTo(double target)
         }
         if (deferred == Deferred::None && !backlog.empty() && deafUntil < 0)
             processBacklog();
-        if (event > remaining)
+        if (!reached)
             return;
     }
 }

@@ -44,7 +44,7 @@ std::string Unit::takeTransmit()
 
 void Unit::advance(double seconds)
 {
-    m_impl->advanceTo(m_impl->engine.now() + std::max(0.0, seconds));
+    m_impl->advanceBy(seconds);
 }
 
 double Unit::now() const

@@ -92,7 +92,7 @@ struct Unit::Impl
     void handleLine(int address, std::string_view body);
     void sendReply(const Reply &r);
     std::string formatReply(const Reply &r) const;
-    void advanceTo(double target);
+    void advanceBy(double seconds);
     double nextEventIn() const;
     double watchdogAt() const;
     void fireWatchdog();
