@@ -28,6 +28,10 @@
 
 namespace frezka::gcode {
 
+inline constexpr char kAxisLetters[4] = {'x', 'y', 'z', 'a'}; // Block letters of the axes
+inline constexpr std::uint32_t kAxisBits =
+    (1u << ('x' - 'a')) | (1u << ('y' - 'a')) | (1u << ('z' - 'a')) | (1u << ('a' - 'a'));
+
 struct Options
 {
     bool collectAllErrors = false; // check mode: report every bad block and go on
@@ -90,7 +94,8 @@ private:
     bool executeBlock(Error *error);
     bool checkWords(int motion, Error *error);
     int motionToBe(Error *error);
-    bool executeModes(Error *error);
+    bool executeModes(Error *error);       // G93/G94 F S T M6 M3-M5 M7-M9 G4
+    bool executeModalGroups(Error *error); // plane .. retract mode
     bool executeNonModal(Error *error);
     bool executeStops();
     bool setOffsets(Error *error);
@@ -101,7 +106,17 @@ private:
     Point4 targetOf(bool machineCoords) const;
     bool straight(int motion, const Point4 &end, Error *error);
     bool arc(int motion, const Point4 &end, Error *error);
+    bool arcCentreIjk(double su, double sv, double eu, double ev, std::uint32_t col, double *cu,
+                      double *cv, Error *error) const;
+    bool arcCentreR(int motion, double su, double sv, double eu, double ev, double *cu, double *cv,
+                    Error *error) const;
     bool probe(int motion, const Point4 &end, Error *error);
+    struct CycleWords
+    {
+        double r = 0, depth = 0, dwell = 0, peck = 0; // mm (depth: the normal axis word), s
+        int repeats = 1;
+    };
+    bool cycleWords(int motion, CycleWords *words, Error *error) const;
     bool cycle(int motion, Error *error);
     void cycleTraverse(int plane, double aa, double bb, double cc);
     void cycleFeed(int plane, double aa, double bb, double cc);
@@ -115,6 +130,8 @@ private:
     bool skipTo(const std::string &label, std::initializer_list<OKind> kinds, OKind *found,
                 Error *error);
     bool owordCondition(double *value, Error *error);
+    bool owordIf(const std::string &label, Error *error);
+    bool owordWhile(const std::string &label, Error *error);
     bool callSub(Error *error);
     bool returnFromSub(Error *error);
     bool loopJump(bool isBreak, Error *error);
