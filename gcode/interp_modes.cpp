@@ -81,6 +81,7 @@ bool Interpreter::executeModalGroups(Error *error)
     if (b.hasG(kGUnits))
         m_metric = b.g[kGUnits] == 210;
     if (b.hasG(kGToolLength)) {
+        const auto before = offsets();
         if (b.g[kGToolLength] == 490) {
             m_toolZ = 0;
         } else {
@@ -94,10 +95,13 @@ bool Interpreter::executeModalGroups(Error *error)
             const auto it = m_options.toolLengthMm.find(tool);
             m_toolZ = it == m_options.toolLengthMm.end() ? 0.0 : it->second;
         }
+        shiftProgram(before);
     }
     if (b.hasG(kGCoordSystem)) {
         const int g = b.g[kGCoordSystem];
+        const auto before = offsets();
         m_coord = g < 590 ? (g - 540) / 10 : 5 + (g - 590);
+        shiftProgram(before);
     }
     if (b.hasG(kGPathControl)) {
         const int g = b.g[kGPathControl];
@@ -133,31 +137,31 @@ bool Interpreter::executeNonModal(Error *error)
         m_g30 = {m_pos.x, m_pos.y, m_pos.z, m_pos.a};
         return true;
     case 920: {
-        double *p = &m_pos.x;
+        // rs274ngc: offset = current + offset - value, and the current position becomes value.
+        double *prog = &m_prog.x;
         for (int i = 0; i < 4; ++i) {
             const char c = kAxisLetters[i];
             if (!m_block.has(c))
                 continue;
             const double v = i < 3 ? lengthWord(c) : m_block.get(c);
-            m_g92[i] = p[i] - m_origin[m_coord][i] - (i == 2 ? m_toolZ : 0.0) - v;
+            m_g92[i] = prog[i] + m_g92[i] - v;
+            prog[i] = v;
         }
         m_g92Saved = m_g92;
         m_g92Enabled = true;
         return true;
     }
     case 921:
-        m_g92 = {};
-        m_g92Saved = {};
-        m_g92Enabled = false;
-        return true;
     case 922:
-        m_g92 = {};
-        m_g92Enabled = false;
+    case 923: {
+        const auto before = offsets();
+        m_g92 = g == 923 ? m_g92Saved : std::array<double, 4>{};
+        if (g == 921)
+            m_g92Saved = {};
+        m_g92Enabled = g == 923;
+        shiftProgram(before);
         return true;
-    case 923:
-        m_g92 = m_g92Saved;
-        m_g92Enabled = true;
-        return true;
+    }
     default: // G4 (executed with the modes), G53 (with the motion)
         return true;
     }
@@ -178,17 +182,18 @@ bool Interpreter::setOffsets(Error *error)
     if (p < 0 || p > 9 || p != std::floor(p))
         return fail(ErrorCode::G10BadP, 'p', std::to_string(p), error);
     const int system = p == 0 ? m_coord : static_cast<int>(p) - 1;
-    const double *pos = &m_pos.x;
+    const auto before = offsets();
+    const auto active = m_origin[m_coord];
+    const double *prog = &m_prog.x;
     for (int i = 0; i < 4; ++i) {
         const char c = kAxisLetters[i];
         if (!b.has(c))
             continue;
         const double v = i < 3 ? lengthWord(c) : b.get(c);
-        if (l == 2)
-            m_origin[system][i] = v;
-        else
-            m_origin[system][i] = pos[i] - m_g92[i] - (i == 2 ? m_toolZ : 0.0) - v;
+        // L20: the offset that makes the current position read v.
+        m_origin[system][i] = l == 2 ? v : prog[i] + active[i] - v;
     }
+    shiftProgram(before); // no change unless the active system was set
     return true;
 }
 
@@ -197,15 +202,18 @@ bool Interpreter::homeMove(bool g30, Error *error)
     (void)error;
     // Rapid to the intermediate point (program coordinates, G90/G91 honoured), then to the
     // stored position: all axes when none is given, else only the given ones.
-    const Point4 mid = targetOf(false);
-    m_toolpath.appendRapid(mid, m_feed * unit(), m_line);
-    m_pos = mid;
+    const Target mid = targetOf(false);
+    m_toolpath.appendRapid(mid.machine, m_feed * unit(), m_line);
+    moveTo(mid);
     const std::array<double, 4> &home = g30 ? m_g30 : m_g28;
     const bool all = !(m_block.letters & kAxisBits);
     double *p = &m_pos.x;
+    double *prog = &m_prog.x;
     for (int i = 0; i < 4; ++i) {
-        if (all || m_block.has(kAxisLetters[i]))
+        if (all || m_block.has(kAxisLetters[i])) {
             p[i] = home[i];
+            prog[i] = home[i] - offset(i);
+        }
     }
     m_toolpath.appendRapid(m_pos, m_feed * unit(), m_line);
     return true;

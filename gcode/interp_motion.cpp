@@ -64,22 +64,29 @@ std::string fmt4(double v)
 
 } // namespace
 
-Point4 Interpreter::targetOf(bool machineCoords) const
+Interpreter::Target Interpreter::targetOf(bool machineCoords) const
 {
-    Point4 end = m_pos;
+    Target t{m_pos, m_prog};
     for (int i = 0; i < 4; ++i) {
         const char c = kAxisLetters[i];
         if (!m_block.has(c))
             continue;
         const double v = i < 3 ? lengthWord(c) : m_block.get(c);
-        if (machineCoords)
-            axisRef(end, i) = v;
-        else if (m_absolute)
-            axisRef(end, i) = v + offset(i);
-        else
-            axisRef(end, i) = axisOf(m_pos, i) + v;
+        if (machineCoords) {
+            axisRef(t.machine, i) = v;
+            axisRef(t.prog, i) = v - offset(i);
+        } else {
+            axisRef(t.prog, i) = m_absolute ? v : axisOf(m_prog, i) + v;
+            axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
+        }
     }
-    return end;
+    return t;
+}
+
+void Interpreter::moveTo(const Target &target)
+{
+    m_pos = target.machine;
+    m_prog = target.prog;
 }
 
 double Interpreter::feedFor(double lengthMm) const
@@ -106,12 +113,13 @@ bool Interpreter::executeMotion(int motion, Error *error)
     return ok;
 }
 
-bool Interpreter::straight(int motion, const Point4 &end, Error *error)
+bool Interpreter::straight(int motion, const Target &target, Error *error)
 {
+    const Point4 &end = target.machine;
     const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
     if (motion == 0) {
         m_toolpath.appendRapid(end, m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
-        m_pos = end;
+        moveTo(target);
         return true;
     }
     if (m_inverseTime && !m_block.has('f'))
@@ -122,7 +130,7 @@ bool Interpreter::straight(int motion, const Point4 &end, Error *error)
         std::sqrt((end.x - m_pos.x) * (end.x - m_pos.x) + (end.y - m_pos.y) * (end.y - m_pos.y) +
                   (end.z - m_pos.z) * (end.z - m_pos.z));
     m_toolpath.appendFeed(end, feedFor(length), m_line);
-    m_pos = end;
+    moveTo(target);
     return true;
 }
 
@@ -171,8 +179,9 @@ bool Interpreter::arcCentreR(int motion, double su, double sv, double eu, double
     return true;
 }
 
-bool Interpreter::arc(int motion, const Point4 &end, Error *error)
+bool Interpreter::arc(int motion, const Target &target, Error *error)
 {
+    const Point4 &end = target.machine;
     const Block &b = m_block;
     const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 0;
     const char *name = motion == 20 ? "G2" : "G3";
@@ -208,10 +217,8 @@ bool Interpreter::arc(int motion, const Point4 &end, Error *error)
     }
 
     // Program coordinates in the plane.
-    const double su = axisOf(m_pos, ax.u) - offset(ax.u);
-    const double sv = axisOf(m_pos, ax.v) - offset(ax.v);
-    const double eu = axisOf(end, ax.u) - offset(ax.u);
-    const double ev = axisOf(end, ax.v) - offset(ax.v);
+    const double su = axisOf(m_prog, ax.u), sv = axisOf(m_prog, ax.v);
+    const double eu = axisOf(target.prog, ax.u), ev = axisOf(target.prog, ax.v);
     double cu = 0, cv = 0;
     const bool ok = ijk ? arcCentreIjk(su, sv, eu, ev, col, &cu, &cv, error)
                         : arcCentreR(motion, su, sv, eu, ev, &cu, &cv, error);
@@ -236,12 +243,13 @@ bool Interpreter::arc(int motion, const Point4 &end, Error *error)
         feed = feedFor(std::hypot(r * sweep, dw));
     }
     m_toolpath.appendArc(end, info, feed, m_line);
-    m_pos = end;
+    moveTo(target);
     return true;
 }
 
-bool Interpreter::probe(int motion, const Point4 &end, Error *error)
+bool Interpreter::probe(int motion, const Target &target, Error *error)
 {
+    const Point4 &end = target.machine;
     const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
     if (m_inverseTime)
         return failAt(ErrorCode::ProbeInverseTime, col, {}, error);
@@ -250,8 +258,8 @@ bool Interpreter::probe(int motion, const Point4 &end, Error *error)
     if (end == m_pos)
         return failAt(ErrorCode::ProbeNoMotion, col, {}, error);
     m_toolpath.appendProbe(end, static_cast<ProbeKind>(motion - 382), m_feed * unit(), m_line);
-    m_pos = end;
-    m_probe = programPosition();
+    moveTo(target);
+    m_probe = m_prog;
     m_probed = true;
     return true;
 }
@@ -259,23 +267,27 @@ bool Interpreter::probe(int motion, const Point4 &end, Error *error)
 void Interpreter::cycleTraverse(int plane, double aa, double bb, double cc)
 {
     const PlaneAxes ax = planeAxes(plane);
-    Point4 p = m_pos;
-    axisRef(p, ax.u) = aa + offset(ax.u);
-    axisRef(p, ax.v) = bb + offset(ax.v);
-    axisRef(p, ax.w) = cc + offset(ax.w);
-    m_toolpath.appendRapid(p, m_feed * unit(), m_line);
-    m_pos = p;
+    Target t{m_pos, m_prog};
+    axisRef(t.prog, ax.u) = aa;
+    axisRef(t.prog, ax.v) = bb;
+    axisRef(t.prog, ax.w) = cc;
+    for (int i : {ax.u, ax.v, ax.w})
+        axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
+    m_toolpath.appendRapid(t.machine, m_feed * unit(), m_line);
+    moveTo(t);
 }
 
 void Interpreter::cycleFeed(int plane, double aa, double bb, double cc)
 {
     const PlaneAxes ax = planeAxes(plane);
-    Point4 p = m_pos;
-    axisRef(p, ax.u) = aa + offset(ax.u);
-    axisRef(p, ax.v) = bb + offset(ax.v);
-    axisRef(p, ax.w) = cc + offset(ax.w);
-    m_toolpath.appendFeed(p, m_feed * unit(), m_line);
-    m_pos = p;
+    Target t{m_pos, m_prog};
+    axisRef(t.prog, ax.u) = aa;
+    axisRef(t.prog, ax.v) = bb;
+    axisRef(t.prog, ax.w) = cc;
+    for (int i : {ax.u, ax.v, ax.w})
+        axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
+    m_toolpath.appendFeed(t.machine, m_feed * unit(), m_line);
+    moveTo(t);
 }
 
 void Interpreter::cycleBody(int motion, double aa, double bb, double r, double clear, double cc,

@@ -35,6 +35,7 @@ Interpreter::Interpreter(Options options)
     m_origin = m_options.workOffsetsMm;
     m_coord = std::clamp(m_options.coordinateSystem, 0, 8);
     m_pos = m_options.startMm;
+    m_prog = {m_pos.x - offset(0), m_pos.y - offset(1), m_pos.z - offset(2), m_pos.a - offset(3)};
 }
 
 Interpreter::~Interpreter() = default;
@@ -55,9 +56,17 @@ double Interpreter::offset(int axis) const
     return m_origin[m_coord][axis] + m_g92[axis] + (axis == 2 ? m_toolZ : 0.0);
 }
 
-Point4 Interpreter::programPosition() const
+std::array<double, 4> Interpreter::offsets() const
 {
-    return {m_pos.x - offset(0), m_pos.y - offset(1), m_pos.z - offset(2), m_pos.a - offset(3)};
+    return {offset(0), offset(1), offset(2), offset(3)};
+}
+
+void Interpreter::shiftProgram(const std::array<double, 4> &oldOffsets)
+{
+    m_prog.x += oldOffsets[0] - offset(0);
+    m_prog.y += oldOffsets[1] - offset(1);
+    m_prog.z += oldOffsets[2] - offset(2);
+    m_prog.a += oldOffsets[3] - offset(3);
 }
 
 // ---- reading -------------------------------------------------------------------------------
