@@ -16,8 +16,11 @@ void Interpreter::event(EventKind kind, double value, double p, double q)
 bool Interpreter::executeModes(Error *error)
 {
     const Block &b = m_block;
-    if (b.hasG(kGFeedMode))
+    if (b.hasG(kGFeedMode)) {
+        // rs274ngc: any G93/G94 word resets the feed rate (an F on the same line sets it again).
         m_inverseTime = b.g[kGFeedMode] == 930;
+        m_feed = 0;
+    }
     if (b.has('f')) {
         if (b.get('f') < 0)
             return fail(ErrorCode::NegativeValue, 'f', "F", error);

@@ -55,7 +55,7 @@ private:
 
     void block()
     {
-        switch (pick(14)) {
+        switch (pick(17)) {
         case 0:
         case 1:
         case 2:
@@ -92,6 +92,20 @@ private:
             m_out << "#1 = " << num(real(-10, 10)) << "\nG1 X[#1 * 2 + " << num(1)
                   << "] Y[sin[#1] * " << num(10) << "]\n";
             break;
+        case 14: // inverse time feed: F on every move
+            m_out << "G93 G1 X" << pos() << " Y" << pos() << " F" << num(real(0.5, 20), 1)
+                  << "\nG91 G2 X" << num(4) << " Y0 I" << num(2) << " J0 F" << num(real(1, 9), 1)
+                  << "\nG90 G94 F" << num(100 + pick(900), 1) << "\n";
+            break;
+        case 15: { // loops and conditionals
+            const int loop = ++m_label, branch = ++m_label;
+            m_out << "#2 = " << pick(4) << "\no" << loop << " repeat [#2 + 1]\n"
+                  << "  G91 G1 X" << num(real(-3, 3)) << " Y" << num(real(-3, 3)) << "\n  G90\n"
+                  << "o" << loop << " endrepeat\no" << branch << " if [#2 GT 1]\n  G0 Z"
+                  << num(real(0, 5)) << "\no" << branch << " else\n  G0 Z" << num(real(-5, 0))
+                  << "\no" << branch << " endif\n";
+            break;
+        }
         default:
             m_out << "G91 G1 X" << num(real(-5, 5)) << " Y" << num(real(-5, 5)) << "\nG90\n";
             break;
@@ -132,26 +146,32 @@ private:
         const int cycles[] = {73, 81, 82, 83, 85, 89};
         const int g = cycles[pick(6)];
         const bool incremental = pick(3) == 0;
-        m_out << (pick(2) ? "G98" : "G99") << (incremental ? " G91" : " G90") << " G" << g;
+        // Plane: the two positioning letters and the depth letter.
+        static const char *kPlanes[3][4] = {
+            {"G17", "X", "Y", "Z"}, {"G18", "Z", "X", "Y"}, {"G19", "Y", "Z", "X"}};
+        const char *const *pl = kPlanes[pick(4) == 0 ? 1 + pick(2) : 0];
+        m_out << pl[0] << " " << (pick(2) ? "G98" : "G99") << (incremental ? " G91" : " G90")
+              << " G" << g;
         if (incremental)
-            m_out << " X" << num(real(-5, 5)) << " Y" << num(real(-5, 5)) << " Z"
-                  << num(-real(1, 5)) << " R" << num(real(-2, 2)) << " L" << 1 + pick(3);
+            m_out << " " << pl[1] << num(real(-5, 5)) << " " << pl[2] << num(real(-5, 5)) << " "
+                  << pl[3] << num(-real(1, 5)) << " R" << num(real(-2, 2)) << " L" << 1 + pick(3);
         else
-            m_out << " X" << pos() << " Y" << pos() << " Z" << num(-real(1, 5)) << " R"
-                  << num(real(0, 3));
+            m_out << " " << pl[1] << pos() << " " << pl[2] << pos() << " " << pl[3]
+                  << num(-real(1, 5)) << " R" << num(real(0, 3));
         if (g == 82 || g == 89)
             m_out << " P" << num(real(0, 1), 1);
         if (g == 73 || g == 83)
             m_out << " Q" << num(real(0.5, 2));
         m_out << "\n";
         for (int k = pick(3); k > 0; --k)
-            m_out << "X" << (incremental ? num(real(-5, 5)) : pos()) << "\n";
-        m_out << "G80 G90\n";
+            m_out << pl[1] << (incremental ? num(real(-5, 5)) : pos()) << "\n";
+        m_out << "G80 G90 G17\n";
     }
 
     std::mt19937 m_rng;
     std::ostringstream m_out;
     double m_scale = 1;
+    int m_label = 0;
 };
 
 } // namespace
