@@ -73,10 +73,15 @@ bool Interpreter::executeOword(Error *error)
         return !m_frames.empty() && m_frames.back().kind == k && m_frames.back().label == label;
     };
     OKind found = OKind::None;
+    const bool takesArguments = kind == OKind::If || kind == OKind::ElseIf ||
+                                kind == OKind::While || kind == OKind::Repeat ||
+                                kind == OKind::Call || kind == OKind::Return ||
+                                kind == OKind::EndSub;
+    if (!takesArguments && m_block.oArgsPos != m_parser.text().size())
+        return failAt(ErrorCode::OwordWithOtherWords, static_cast<std::uint32_t>(m_block.oArgsPos),
+                      {}, error);
     switch (kind) {
     case OKind::Sub:
-        if (m_block.oArgsPos != m_parser.text().size())
-            return failAt(ErrorCode::OwordWithOtherWords, col, {}, error);
         m_subs[label] = {m_next, m_line};
         return skipTo(label, {OKind::EndSub}, &found, error);
     case OKind::Call:
@@ -84,23 +89,8 @@ bool Interpreter::executeOword(Error *error)
     case OKind::EndSub:
     case OKind::Return:
         return returnFromSub(error);
-    case OKind::If: {
-        double c = 0;
-        if (!owordCondition(&c, error))
-            return false;
-        while (c == 0.0) {
-            if (!skipTo(label, {OKind::ElseIf, OKind::Else, OKind::EndIf}, &found, error))
-                return false;
-            if (found == OKind::EndIf)
-                return true;
-            if (found == OKind::Else)
-                break;
-            if (!owordCondition(&c, error))
-                return false;
-        }
-        m_frames.push_back({FrameKind::If, label, 0, m_line, 0});
-        return true;
-    }
+    case OKind::If:
+        return owordIf(label, error);
     case OKind::ElseIf:
     case OKind::Else:
         if (!topIs(FrameKind::If))
@@ -115,27 +105,8 @@ bool Interpreter::executeOword(Error *error)
     case OKind::Do:
         m_frames.push_back({FrameKind::Do, label, m_next, m_line, 0});
         return true;
-    case OKind::While: {
-        double c = 0;
-        if (!owordCondition(&c, error))
-            return false;
-        if (topIs(FrameKind::Do)) { // the tail of do ... while
-            if (c != 0.0)
-                jump(m_frames.back().offset, m_frames.back().line);
-            else
-                m_frames.pop_back();
-            return true;
-        }
-        const bool again = topIs(FrameKind::While) && m_frames.back().offset == m_lineStart;
-        if (c == 0.0) {
-            if (again)
-                m_frames.pop_back();
-            return skipTo(label, {OKind::EndWhile}, &found, error);
-        }
-        if (!again)
-            m_frames.push_back({FrameKind::While, label, m_lineStart, m_line - 1, 0});
-        return true;
-    }
+    case OKind::While:
+        return owordWhile(label, error);
     case OKind::EndWhile:
         if (!topIs(FrameKind::While))
             return failAt(ErrorCode::OwordUnmatched, col, what, error);
@@ -165,6 +136,54 @@ bool Interpreter::executeOword(Error *error)
     case OKind::None:
         break;
     }
+    return true;
+}
+
+bool Interpreter::owordIf(const std::string &label, Error *error)
+{
+    double c = 0;
+    if (!owordCondition(&c, error))
+        return false;
+    OKind found = OKind::None;
+    while (c == 0.0) {
+        if (!skipTo(label, {OKind::ElseIf, OKind::Else, OKind::EndIf}, &found, error))
+            return false;
+        if (found == OKind::EndIf)
+            return true;
+        if (found == OKind::Else)
+            break;
+        if (!owordCondition(&c, error))
+            return false;
+    }
+    m_frames.push_back({FrameKind::If, label, 0, m_line, 0});
+    return true;
+}
+
+// A while line opens a loop, re-tests it when endwhile jumps back, or closes a do loop.
+bool Interpreter::owordWhile(const std::string &label, Error *error)
+{
+    double c = 0;
+    if (!owordCondition(&c, error))
+        return false;
+    auto topIs = [&](FrameKind k) {
+        return !m_frames.empty() && m_frames.back().kind == k && m_frames.back().label == label;
+    };
+    if (topIs(FrameKind::Do)) {
+        if (c != 0.0)
+            jump(m_frames.back().offset, m_frames.back().line);
+        else
+            m_frames.pop_back();
+        return true;
+    }
+    const bool again = topIs(FrameKind::While) && m_frames.back().offset == m_lineStart;
+    if (c == 0.0) {
+        if (again)
+            m_frames.pop_back();
+        OKind found = OKind::None;
+        return skipTo(label, {OKind::EndWhile}, &found, error);
+    }
+    if (!again)
+        m_frames.push_back({FrameKind::While, label, m_lineStart, m_line - 1, 0});
     return true;
 }
 

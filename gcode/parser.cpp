@@ -487,18 +487,27 @@ bool Parser::readOwordHead(std::size_t *pos, OKind *kind, std::string *label, st
             ++first;
         label->assign(m_text, first, p - first);
     }
-    std::size_t word = p;
-    while (p < m_text.size() && m_text[p] >= 'a' && m_text[p] <= 'z')
-        ++p;
-    const std::string_view keyword(m_text.data() + word, p - word);
+    // The longest keyword the text starts with: spaces are gone, so "o1endifg0x1" must read
+    // as endif followed by other words (an error reported by the caller).
+    const std::size_t word = p;
+    const std::string_view rest = std::string_view(m_text).substr(p);
     *kind = OKind::None;
+    std::size_t best = 0;
     for (int k = 1; k < static_cast<int>(std::size(kOkindNames)); ++k) {
-        if (keyword == kOkindNames[k])
+        const std::string_view name = kOkindNames[k];
+        if (name.size() > best && rest.substr(0, name.size()) == name) {
             *kind = static_cast<OKind>(k);
+            best = name.size();
+        }
     }
-    if (*kind == OKind::None)
+    if (*kind == OKind::None) {
+        std::size_t end = p;
+        while (end < m_text.size() && m_text[end] >= 'a' && m_text[end] <= 'z')
+            ++end;
         return fail(ErrorCode::OwordUnknownKeyword, word,
-                    keyword.empty() ? std::string("(none)") : std::string(keyword), error);
+                    end == p ? std::string("(none)") : std::string(m_text, p, end - p), error);
+    }
+    p += best;
     *pos = p;
     return true;
 }

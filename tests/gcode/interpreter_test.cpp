@@ -162,3 +162,16 @@ TEST(Trace, JsonLinesUseFourDecimalsAndTheDocumentedKeys)
               "\"a\":0.0000,\"f\":60.0000,\"cx\":0.0000,\"cy\":0.0000,\"cz\":0.0000,"
               "\"plane\":\"XY\",\"turns\":1}\n");
 }
+
+TEST(Interpreter, StartsFromTheGivenMachineStateOptions)
+{
+    Options options;
+    options.workOffsetsMm[1] = {100, 200, -50, 0}; // G55
+    options.coordinateSystem = 1;
+    options.startMm = {1, 2, 3, 0};
+    const Result r = interpretText("G0 X0\nG54 G0 X0\nM2\n", options);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.toolpath.origin(), (Point4{1, 2, 3, 0}));
+    EXPECT_EQ(r.toolpath.end(0), (Point4{100, 2, 3, 0}));
+    EXPECT_EQ(r.toolpath.end(1), (Point4{0, 2, 3, 0}));
+}
