@@ -173,6 +173,7 @@ private:
     std::uint64_t m_tag = 0;
     std::string m_wire; // its bytes, as sent
     int m_attempts = 0;
+    bool m_doubtfulSeen = false; // a packet got a plain 4 / 2: its counted reply may follow
     int m_resent = 0;
     int m_recovered = 0;
     std::string m_lastRaw;

@@ -139,7 +139,7 @@ void MachineCore::onOutcome(const Outcome &o)
     if (then)
         then(o);
     // Every reply carries INTA: an input interrupt is seen at the next reply, whatever it was.
-    if (o.status == OutcomeStatus::Ok && o.reply.inta && !m_haltPending &&
+    if (o.status == OutcomeStatus::Ok && o.reply.inta && !m_haltPending && !m_haltExpected &&
         m_state.mode == MachineMode::Running && !m_state.inta) {
         m_state.inta = true;
         interrupted();
@@ -309,7 +309,7 @@ void MachineCore::applyFlags(std::uint8_t flags, double now)
     m_state.inta = (flags & 0x80) != 0;
     m_state.queueFull = (flags & 0x20) != 0;
     m_dirty = true;
-    if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running)
+    if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running && !m_haltExpected)
         interrupted();
     if (m_state.inta && !wasInta &&
         (m_state.mode == MachineMode::Jogging || m_state.mode == MachineMode::Idle))
@@ -333,8 +333,20 @@ void MachineCore::afterJobIdle(std::function<void()> then)
     afterIdle(nullptr);
 }
 
+void MachineCore::afterStopOrInterrupt(std::function<void()> then)
+{
+    m_stopWaiters.push_back(std::move(then));
+    afterIdle(nullptr);
+}
+
 void MachineCore::checkIdleWaiters()
 {
+    if ((m_state.inta || !m_state.run) && !m_stopWaiters.empty()) {
+        auto stop = std::move(m_stopWaiters);
+        m_stopWaiters.clear();
+        for (auto &w : stop)
+            w();
+    }
     if (m_state.run)
         return;
     auto waiters = std::move(m_idleWaiters);
@@ -364,6 +376,7 @@ void MachineCore::linkOpened(double now)
     m_inFlight = nullptr;
     m_haltPending = false;
     m_jobIdleWaiters.clear();
+    m_stopWaiters.clear();
     if (m_job)
         m_streamBlocked = false; // a wait in progress is taken up again from the program
     setMode(MachineMode::Connecting);

@@ -98,6 +98,8 @@ public:
     Result setOverride(int percent, double now);
     Result overrideStep(bool up, double now);
     Result sendRaw(const std::string &text, double now);
+    // Writes the profile's EEPROM settings (§12) to the unit, then compares again.
+    Result writeEeprom(double now);
     void setConfig(machine::MachineConfig config) { m_config = std::move(config); }
 
     const MachineState &state() const { return m_state; }
@@ -135,6 +137,9 @@ private:
     void log(const std::string &text);
     void afterIdle(std::function<void()> then);
     void afterJobIdle(std::function<void()> then);
+    // Runs `then` when F shows RUN = 0 or INTA = 1 (an interrupt braking a move).
+    void afterStopOrInterrupt(std::function<void()> then);
+    void whenStill(std::function<void()> then);
     void checkIdleWaiters();
 
     // connect sequence (machinecore_connect.cpp)
@@ -151,14 +156,18 @@ private:
     void onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, double now);
     void acceptUpTo(std::size_t end);
     void matchProgress();
+    void readStillPosition();
     void onJobCommandOutcome(const Outcome &o, std::size_t index, double now);
     void handlePcOp(const machine::UnitCommand &c, double now);
     void finishJob(bool ok);
     void finishWithPosition();
+    void startProbe(std::size_t index);
+    void endProbe(std::size_t index, bool mustTrip);
     void verifyProgress(const std::string &why);
     void resendModals(std::function<void()> then);
     void locateExecuting();
     int freeQueueEstimate() const;
+    int maxPacket() const;
     double bufferedS() const;
     void calibrateFull();
     std::int64_t queuedAfter(double aheadS) const; // estimated motion time queued in the unit
@@ -182,6 +191,7 @@ private:
     Then m_inFlight;                                  // continuation of the transaction in flight
     std::vector<std::function<void()>> m_idleWaiters; // run when F shows RUN = 0
     std::vector<std::function<void()>> m_jobIdleWaiters; // the same, only while the job runs
+    std::vector<std::function<void()>> m_stopWaiters;    // RUN = 0 or INTA = 1
     double m_waitUntil = -1; // a dwell or back-off: nothing from the job before this time
     bool m_open = false;
 
@@ -214,7 +224,9 @@ private:
     std::vector<std::int64_t> m_vectorPrefix; // motion commands before each program index
     std::int64_t m_resentAtStart = 0;
     std::int64_t m_recoveredAtStart = 0;
-    bool m_holdNeedsGo = false; // the unit holds (INTA): resume with G
+    bool m_holdNeedsGo = false;
+    bool m_haltExpected = false; // an interrupt is part of the operation (probe), not a hold // the
+                                 // unit holds (INTA): resume with G
     // tool lift
     std::int64_t m_liftSteps = 0;
     bool m_spindleStopped = false;

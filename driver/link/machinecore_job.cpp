@@ -111,8 +111,7 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
     m_vectorsAcked = 0;
     m_streamBlocked = m_queueFullSeen = m_needVerify = false;
     m_waitUntil = -1;
-    m_packetLimit =
-        m_options.maxPacketCommands > 0 ? m_options.maxPacketCommands : info.queueCapacity - 1;
+    m_packetLimit = maxPacket();
     m_vectorPrefix.assign(m_program.commands.size() + 1, 0);
     for (std::size_t i = 0; i < m_program.commands.size(); ++i)
         m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(m_program.commands[i].op) ? 1 : 0);
@@ -162,6 +161,14 @@ double MachineCore::bufferedS() const
         return 0;
     const std::size_t from = std::min(m_exec, m_next);
     return std::max(0.0, m_timePrefix[m_next] - m_timePrefix[from] - (m_now - m_execAt));
+}
+
+// The largest packet: the unit's queue less one.
+int MachineCore::maxPacket() const
+{
+    const int queue = variantInfo(m_config.unit.variant).queueCapacity - 1;
+    const int wanted = m_options.maxPacketCommands > 0 ? m_options.maxPacketCommands : queue;
+    return std::clamp(wanted, 1, queue);
 }
 
 int MachineCore::freeQueueEstimate() const
@@ -296,6 +303,12 @@ void MachineCore::sendPacket(double now)
         m_queueFullSeen = true;
         return;
     }
+    // The command index (mod 256) must tell a packet that arrived from one that did not: all its
+    // lines (*S *S, the commands, *E) must not advance it by a multiple of 256.
+    if ((packet.size() + 3) % 256 == 0) {
+        packet.pop_back();
+        --end;
+    }
     const std::size_t first = m_next;
     m_inflightEnd = end;
     if (packet.size() == 1) {
@@ -340,15 +353,14 @@ void MachineCore::onPacketOutcome(const Outcome &o, std::size_t first, std::size
     switch (o.reply.code) {
     case ReplyCode::Ok:
         m_queueFullSeen = false;
-        m_packetLimit = std::min(m_options.maxPacketCommands > 0
-                                     ? m_options.maxPacketCommands
-                                     : variantInfo(m_config.unit.variant).queueCapacity - 1,
-                                 m_packetLimit + m_packetLimit / 2 + 1);
+        m_packetLimit = std::min(maxPacket(), m_packetLimit + m_packetLimit / 2 + 1);
         return;
     case ReplyCode::QueueFull:
         // The queue is full right now: that calibrates the estimate of where the unit is.
         m_queueFullSeen = true;
         calibrateFull();
+        // Bytes beyond the free space are wasted wire time: start smaller next time.
+        m_packetLimit = std::max(16, static_cast<int>(accepted));
         (void)now;
         return;
     case ReplyCode::Syntax:   // a line damaged on the way (bad checksum) or lost
@@ -452,10 +464,14 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
         });
         return;
     case UnitOp::Probe:
+        afterJobIdle([this, index] {
+            if (m_next == index)
+                startProbe(index);
+        });
+        return;
     default:
         m_streamBlocked = false;
-        fail(lineText(c) + ": G38 probing is not implemented in the driver yet", nullptr,
-             MachineMode::Alarm);
+        fail(lineText(c) + ": unknown unit program operation", nullptr, MachineMode::Alarm);
         return;
     }
 }
@@ -470,6 +486,120 @@ void MachineCore::finishWithPosition()
             return;
         applyPosition(o.reply);
         finishJob(true);
+    });
+}
+
+// G38.x: the tool sensor probe (IN15) as an interrupt, armed for contact (G38.2/.3) or for its
+// loss (G38.4/.5), then the probe move as an L. The unit brakes when the input fires; the
+// counters give the trip point. The planner planned the rest of the program from the probe's
+// end point, so when the probe stops short and motion follows, the job ends there (to be planned
+// again from the trip point) rather than run displaced.
+// Two position reads that agree: the machine stands (after RUN = 0 or an interrupt's brake).
+void MachineCore::whenStill(std::function<void()> then)
+{
+    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+    send(pos, [this, pos, then](const Outcome &first) {
+        if (unitError(first, "reading the position", MachineMode::Alarm))
+            return;
+        send(pos, [this, then, a = first.reply.values](const Outcome &second) {
+            if (unitError(second, "reading the position", MachineMode::Alarm))
+                return;
+            applyPosition(second.reply);
+            if (second.reply.values == a)
+                then();
+            else
+                whenStill(then);
+        });
+    });
+}
+
+void MachineCore::startProbe(std::size_t index)
+{
+    const machine::UnitCommand c = m_program.commands[index];
+    const auto kind = static_cast<gcode::ProbeKind>(c.aux);
+    const bool toward =
+        kind == gcode::ProbeKind::TowardErrorIfNoContact || kind == gcode::ProbeKind::Toward;
+    const bool mustTrip = kind == gcode::ProbeKind::TowardErrorIfNoContact ||
+                          kind == gcode::ProbeKind::AwayErrorIfNoLoss;
+    const machine::EepromConfig &ee = m_config.eeprom;
+    const std::uint8_t contactHigh = ee.polarityHigh & 0x80; // IN15 level that means contact
+    const auto armPolarity = static_cast<std::uint8_t>(
+        (ee.polarityHigh & 0x7F) | (toward ? contactHigh : (contactHigh ^ 0x80)));
+    send(cmd::input2(), [this, index, armPolarity](const Outcome &o) {
+        if (unitError(o, "reading the probe input", MachineMode::Alarm))
+            return;
+        if ((*o.reply.hexValue() & 0x80) == (armPolarity & 0x80)) {
+            m_steps.clear();
+            finishJob(false);
+            fail(lineText(m_program.commands[index]) +
+                     ": the probe input is already in the state the probe move waits for",
+                 &o, MachineMode::Alarm);
+        }
+    });
+    send(cmd::statusWrite(1, ee.interruptEnableHigh | 0x80),
+         [this](const Outcome &o) { unitError(o, "arming the probe input", MachineMode::Alarm); });
+    send(cmd::statusWrite(3, armPolarity),
+         [this](const Outcome &o) { unitError(o, "arming the probe input", MachineMode::Alarm); });
+    send(toCommand({machine::UnitOp::Line, c.d}), [this, index, mustTrip](const Outcome &o) {
+        if (unitError(o, "probe move", MachineMode::Alarm))
+            return;
+        m_haltExpected = true;
+        afterStopOrInterrupt([this, index, mustTrip] {
+            whenStill([this, index, mustTrip] { endProbe(index, mustTrip); });
+        });
+    });
+}
+
+void MachineCore::endProbe(std::size_t index, bool mustTrip)
+{
+    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+    send(cmd::statusRead(5), [this](const Outcome &o) {
+        if (!unitError(o, "reading the probe result", MachineMode::Alarm))
+            m_state.probeTripped = (*o.reply.hexValue() & 0x80) != 0;
+    });
+    send(pos, [this](const Outcome &o) {
+        if (!unitError(o, "reading the probe position", MachineMode::Alarm)) {
+            applyPosition(o.reply);
+            m_state.probeSteps = m_state.positionSteps;
+        }
+    });
+    // D drops what is left of the probe move and clears INTA and the cause bits.
+    send(cmd::deleteQueue(), [this](const Outcome &o) { unitError(o, "D", MachineMode::Alarm); });
+    const machine::EepromConfig &ee = m_config.eeprom;
+    send(cmd::statusWrite(1, ee.interruptEnableHigh), [](const Outcome &) {});
+    send(cmd::statusWrite(3, ee.polarityHigh), [this, index, mustTrip](const Outcome &o) {
+        m_haltExpected = false;
+        if (unitError(o, "disarming the probe input", MachineMode::Alarm))
+            return;
+        m_state.inta = false;
+        const machine::UnitCommand &c = m_program.commands[index];
+        bool atEnd = true;
+        for (int a = 0; a < m_program.axisCount; ++a)
+            atEnd = atEnd && m_state.positionSteps[a] == c.endSteps[a];
+        if (!m_state.probeTripped && mustTrip) {
+            m_state.hold = HoldReason::ProbeFailed;
+            finishJob(false);
+            fail(lineText(c) + ": the probe move ended without the probe tripping", nullptr,
+                 MachineMode::Alarm);
+            return;
+        }
+        const bool motionFollows = std::any_of(
+            m_program.commands.begin() + static_cast<std::ptrdiff_t>(index) + 1,
+            m_program.commands.end(), [](const machine::UnitCommand &u) {
+                return u.op == UnitOp::Vector || u.op == UnitOp::Line || u.op == UnitOp::Probe;
+            });
+        if (!atEnd && motionFollows) {
+            finishJob(false);
+            fail(lineText(c) + ": the probe tripped at " + std::to_string(m_state.probeSteps[0]) +
+                     ", " + std::to_string(m_state.probeSteps[1]) + ", " +
+                     std::to_string(m_state.probeSteps[2]) +
+                     " steps; the rest of the program was planned from the probe's end point: "
+                     "plan it again from here",
+                 nullptr, MachineMode::Alarm);
+            return;
+        }
+        acceptUpTo(index + 1);
+        m_streamBlocked = false;
     });
 }
 
@@ -491,6 +621,7 @@ void MachineCore::finishJob(bool ok)
     if (m_state.mode == MachineMode::Running)
         setMode(MachineMode::Idle);
     log(ok ? "job finished" : "job ended");
+    publish(); // the final state before the news that the job ended
     if (onJobFinished)
         onJobFinished(ok);
 }
@@ -534,13 +665,28 @@ void MachineCore::verifyProgress(const std::string &why)
     ++m_report.verified;
     m_needVerify = true;
     m_streamBlocked = true;
+    readStillPosition();
+}
+
+// Waits for RUN = 0, then reads the counters twice: the machine stands only when both reads
+// agree (a late reply on a noisy line must not pass for the final position).
+void MachineCore::readStillPosition()
+{
     afterIdle([this] {
         const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
-        send(pos, [this](const Outcome &o) {
-            if (unitError(o, "reading the position", MachineMode::LinkLost))
+        send(pos, [this, pos](const Outcome &first) {
+            if (unitError(first, "reading the position", MachineMode::LinkLost))
                 return;
-            applyPosition(o.reply);
-            matchProgress();
+            send(pos, [this, a = first.reply.values](const Outcome &second) {
+                if (unitError(second, "reading the position", MachineMode::LinkLost))
+                    return;
+                if (second.reply.values != a) {
+                    readStillPosition(); // still moving: wait again
+                    return;
+                }
+                applyPosition(second.reply);
+                matchProgress();
+            });
         });
     });
 }

@@ -127,6 +127,7 @@ MachineCore::Result MachineCore::abort(double now)
         setMode(MachineMode::Idle);
         if (wasJob) {
             m_report.endS = m_now;
+            publish();
             if (onJobFinished)
                 onJobFinished(false);
         }

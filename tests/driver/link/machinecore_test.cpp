@@ -2,6 +2,8 @@
 
 #include "simfixture.h"
 
+#include "gcode/toolpath.h"
+
 #include <gtest/gtest.h>
 
 using namespace frezka;
@@ -268,4 +270,173 @@ TEST(MachineCore, UnitErrorNamesCommandAndReply)
     ASSERT_TRUE(refused.has_value());
     EXPECT_NE(refused->message.find("GVE84"), std::string::npos) << refused->message;
     EXPECT_EQ(sim84.core.state().mode, MachineMode::Idle);
+}
+
+TEST(MachineCore, OperatorStopsAndDwellWaitForTheMachine)
+{
+    using machine::UnitOp;
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    auto p = slowProgram(20);
+    const auto end = p.commands.back(); // ProgramEnd
+    p.commands.pop_back();
+    const auto mid = p.commands.back().endSteps;
+    machine::UnitCommand m6;
+    m6.op = UnitOp::OperatorStop;
+    m6.value = static_cast<std::int64_t>(gcode::EventKind::ToolChange);
+    m6.aux = 3;
+    m6.sourceLine = 77;
+    m6.endSteps = mid;
+    machine::UnitCommand dwell;
+    dwell.op = UnitOp::Dwell;
+    dwell.value = 1500; // ms
+    dwell.endSteps = mid;
+    p.commands.push_back(m6);
+    p.commands.push_back(dwell);
+    p.commands.push_back(end);
+    ASSERT_FALSE(sim.core.run(p, sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Paused, 120)) << sim.lastLog();
+    EXPECT_EQ(sim.core.state().hold, HoldReason::OperatorStop);
+    EXPECT_NE(sim.core.state().holdText.find("tool 3"), std::string::npos);
+    EXPECT_NE(sim.core.state().holdText.find("line 77"), std::string::npos);
+    expectAt(sim, mid); // all motion before M6 ran, the machine stands
+    const double resumed = sim.runner.now();
+    ASSERT_FALSE(sim.core.resume(resumed));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 60)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front());
+    EXPECT_GE(sim.runner.now() - resumed, 1.5); // the dwell
+}
+
+TEST(MachineCore, MpgRawCommandAndOverrideSteps)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.setMpg(true, sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_TRUE(sim.core.state().mpgOn);
+    EXPECT_TRUE(sim.core.state().run); // Y& counts as running (§13)
+    ASSERT_FALSE(sim.core.setMpg(false, sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_FALSE(sim.core.state().mpgOn);
+    EXPECT_FALSE(sim.core.state().run);
+
+    ASSERT_FALSE(sim.core.sendRaw("SW0,80", sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_EQ(sim.port.unit().status(0), 0x80);
+    EXPECT_TRUE(sim.core.sendRaw("!0Z", sim.runner.now()).has_value());    // unknown
+    EXPECT_TRUE(sim.core.sendRaw("!0T99", sim.runner.now()).has_value());  // out of range
+    EXPECT_TRUE(sim.core.sendRaw("!0L1,2", sim.runner.now()).has_value()); // syntax
+
+    ASSERT_FALSE(sim.core.overrideStep(true, sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_EQ(sim.core.state().overridePercent, 106);
+    EXPECT_TRUE(sim.errors.empty());
+}
+
+namespace {
+
+machine::UnitProgram probeProgram(gcode::ProbeKind kind, std::int32_t dz, bool moveAfter)
+{
+    using machine::UnitOp;
+    machine::UnitProgram p;
+    p.axisCount = 3;
+    auto add = [&p](UnitOp op, std::int64_t value, std::array<std::int32_t, 4> d,
+                    std::int32_t aux) {
+        machine::UnitCommand c;
+        c.op = op;
+        c.value = value;
+        c.d = d;
+        c.aux = aux;
+        c.sourceLine = static_cast<std::uint32_t>(p.commands.size() + 1);
+        c.endSteps = p.commands.empty() ? p.startSteps : p.commands.back().endSteps;
+        for (int a = 0; a < 4; ++a)
+            c.endSteps[a] += d[a];
+        p.commands.push_back(c);
+    };
+    add(UnitOp::Accel, 50, {}, 0);
+    add(UnitOp::Speed, 2000, {}, 0);
+    add(UnitOp::Probe, 0, {0, 0, dz, 0}, static_cast<std::int32_t>(kind));
+    if (moveAfter)
+        add(UnitOp::Line, 0, {100, 0, 0, 0}, 0);
+    add(UnitOp::ProgramEnd, 0, {}, 0);
+    return p;
+}
+
+} // namespace
+
+TEST(MachineCore, ProbeStopsAtContact)
+{
+    Sim sim;
+    sim.config.eeprom.polarityHigh = 0x80; // IN15 contact reads 1 in the emulator
+    sim.core.setConfig(sim.config);
+    // The probe touches when Z reaches -1000 steps.
+    sim.port.unit().setSwitches({{15, 2, -1000, -1}});
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.run(probeProgram(gcode::ProbeKind::TowardErrorIfNoContact, -3000, false),
+                              sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 120)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front()) << sim.lastLog();
+    EXPECT_TRUE(sim.core.state().probeTripped);
+    const auto z = sim.core.state().probeSteps[2];
+    EXPECT_LE(z, -1000);
+    EXPECT_GT(z, -3000);
+    EXPECT_EQ(sim.port.unit().position()[2], z);
+}
+
+TEST(MachineCore, ProbeWithoutContactIsAnErrorForG38_2)
+{
+    Sim sim;
+    sim.config.eeprom.polarityHigh = 0x80;
+    sim.core.setConfig(sim.config);
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.run(probeProgram(gcode::ProbeKind::TowardErrorIfNoContact, -500, true),
+                              sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 120)) << sim.lastLog();
+    EXPECT_FALSE(sim.finished.front());
+    EXPECT_EQ(sim.core.state().mode, MachineMode::Alarm);
+    ASSERT_FALSE(sim.errors.empty());
+    EXPECT_NE(sim.errors.back().message.find("without the probe tripping"), std::string::npos);
+    // G38.3: no contact is fine and the program goes on from the planned end point.
+    Sim sim3;
+    sim3.config.eeprom.polarityHigh = 0x80;
+    sim3.core.setConfig(sim3.config);
+    ASSERT_TRUE(sim3.connect());
+    const auto p = probeProgram(gcode::ProbeKind::Toward, -500, true);
+    ASSERT_FALSE(sim3.core.run(p, sim3.runner.now()));
+    ASSERT_TRUE(sim3.runner.runUntil([&] { return !sim3.finished.empty(); }, 120))
+        << sim3.lastLog();
+    EXPECT_TRUE(sim3.finished.front()) << sim3.lastLog();
+    expectAt(sim3, endOf(p));
+}
+
+TEST(MachineCore, ProbeTrippedWithMotionAfterEndsTheJob)
+{
+    Sim sim;
+    sim.config.eeprom.polarityHigh = 0x80;
+    sim.core.setConfig(sim.config);
+    sim.port.unit().setSwitches({{15, 2, -1000, -1}});
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(
+        sim.core.run(probeProgram(gcode::ProbeKind::Toward, -3000, true), sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 120)) << sim.lastLog();
+    EXPECT_FALSE(sim.finished.front());
+    ASSERT_FALSE(sim.errors.empty());
+    EXPECT_NE(sim.errors.back().message.find("plan it again"), std::string::npos);
+    EXPECT_EQ(sim.port.unit().position()[0], 0) << "nothing after the probe ran";
+}
+
+TEST(MachineCore, EepromComparedOnConnectWrittenOnlyWhenAsked)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    const auto differences = sim.core.state().eepromDifferences;
+    ASSERT_FALSE(differences.empty()) << "the emulator's defaults differ from the profile";
+    const auto before = sim.port.unit().eepromByte(0x01);
+    sim.runner.runFor(1.0);
+    EXPECT_EQ(sim.port.unit().eepromByte(0x01), before) << "connecting never writes";
+    ASSERT_FALSE(sim.core.writeEeprom(sim.runner.now()));
+    sim.runner.runFor(2.0);
+    EXPECT_TRUE(sim.core.state().eepromDifferences.empty())
+        << sim.core.state().eepromDifferences.front();
+    EXPECT_TRUE(sim.errors.empty()) << sim.errors.front().message;
 }

@@ -22,6 +22,8 @@ struct Sim
         , runner(core, port)
     {
         core.onLog = [this](const std::string &line) {
+            if (!errors.empty() && ++afterError > 20)
+                return; // keep what led to the first error
             // Keep the interesting lines: routine polls would push everything else out.
             static const char *kRoutine[] = {"> !0P4", "> !0PF", "> !0F", "> !0I1", "> !0I2"};
             for (const char *r : kRoutine) {
@@ -71,6 +73,7 @@ struct Sim
     SimRunner runner;
     std::vector<std::string> log;
     bool skipNext = false;
+    int afterError = 0;
     std::vector<MachineError> errors;
     std::vector<bool> finished;
 };
