@@ -99,6 +99,8 @@ public:
 
 signals:
     void errorShown(const QString &message);
+    // A Check (re-interpretation and planning) has finished; ok = the program can run.
+    void programChecked(bool ok);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
