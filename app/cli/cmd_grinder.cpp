@@ -60,78 +60,95 @@ QString usage()
         "Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.\n");
 }
 
+QString checkHeader(const QString &header)
+{
+    if (header.size() > int(kHeaderSize))
+        return GrinderCli::tr("--header: '%1' is longer than 16 characters").arg(header);
+    for (QChar c : header) {
+        if (c.unicode() < 0x20 || c.unicode() > 0x7E)
+            return GrinderCli::tr("--header: '%1' holds '%2'; the controller shows plain ASCII "
+                                  "only (no diacritics)")
+                .arg(header, QString(c));
+    }
+    return QString();
+}
+
+// One option with its value; returns the reason when it is unknown or the value is bad.
+QString parseOption(const QString &option, const QString &value, Args &args)
+{
+    bool ok = true;
+    if (option == "--port") {
+        args.serial.portName = value;
+    } else if (option == "--family") {
+        const auto family = familyFromId(value.toStdString());
+        if (!family)
+            return GrinderCli::tr("--family: '%1' is not k51, anc or hedit").arg(value);
+        args.family = *family;
+    } else if (option == "--baud") {
+        args.serial.baud = value.toInt(&ok);
+        if (!ok || args.serial.baud <= 0)
+            return GrinderCli::tr("--baud: '%1' is not a baud rate").arg(value);
+    } else if (option == "--header") {
+        args.header = value;
+        args.hasHeader = true;
+        return checkHeader(value);
+    } else if (option == "--retries") {
+        args.retries = value.toInt(&ok);
+        if (!ok || args.retries < 0 || args.retries > 100)
+            return GrinderCli::tr("--retries: '%1' is not 0 to 100").arg(value);
+    } else if (option == "--reply-timeout-ms") {
+        args.replyTimeoutMs = value.toInt(&ok);
+        if (!ok || args.replyTimeoutMs < 100 || args.replyTimeoutMs > 600000)
+            return GrinderCli::tr("--reply-timeout-ms: '%1' is not 100 to 600000").arg(value);
+    } else if (option == "--form") {
+        args.form = value.toInt(&ok);
+        if (!ok || (args.form != 1 && args.form != 2))
+            return GrinderCli::tr("--form: '%1' is not 1 or 2").arg(value);
+    } else if (option == "--go") {
+        const auto um = parseMillimetres(value.toStdString());
+        if (!um)
+            return GrinderCli::tr("--go: '%1' is not a position in mm (e.g. 12.5)").arg(value);
+        args.hasGo = true;
+        args.goUm = *um;
+    } else {
+        return GrinderCli::tr("unknown option '%1'").arg(option);
+    }
+    return QString();
+}
+
 // Returns 0 when parsed, else the exit code (2) after printing the reason.
 int parseArgs(const QStringList &list, Args &args)
 {
-    if (list.isEmpty()) {
-        err(usage());
+    auto fail = [](const QString &reason) {
+        err(QStringLiteral("frezka-cli grinder: %1\n").arg(reason));
         return 2;
-    }
-    args.action = list.first();
+    };
+    args.action = list.value(0);
     if (args.action != "ping" && args.action != "save" && args.action != "load" &&
         args.action != "z") {
-        err(GrinderCli::tr("frezka-cli grinder: unknown action '%1'\n").arg(args.action) + usage());
+        if (!args.action.isEmpty())
+            err(GrinderCli::tr("frezka-cli grinder: unknown action '%1'\n").arg(args.action));
+        err(usage());
         return 2;
     }
     for (int i = 1; i < list.size(); ++i) {
         const QString &arg = list[i];
-        const bool hasValue = i + 1 < list.size();
-        auto fail = [&](const QString &reason) {
-            err(QStringLiteral("frezka-cli grinder: %1\n").arg(reason));
-            return 2;
-        };
-        if (arg.startsWith("--") && !hasValue)
-            return fail(GrinderCli::tr("%1 needs a value").arg(arg));
-        bool ok = true;
-        if (arg == "--port") {
-            args.serial.portName = list[++i];
-        } else if (arg == "--family") {
-            const auto family = familyFromId(list[++i].toStdString());
-            if (!family)
-                return fail(GrinderCli::tr("--family: '%1' is not k51, anc or hedit").arg(list[i]));
-            args.family = *family;
-        } else if (arg == "--baud") {
-            args.serial.baud = list[++i].toInt(&ok);
-            if (!ok || args.serial.baud <= 0)
-                return fail(GrinderCli::tr("--baud: '%1' is not a baud rate").arg(list[i]));
-        } else if (arg == "--header") {
-            args.header = list[++i];
-            args.hasHeader = true;
-            if (args.header.size() > int(kHeaderSize))
-                return fail(
-                    GrinderCli::tr("--header: '%1' is longer than 16 characters").arg(args.header));
-        } else if (arg == "--retries") {
-            args.retries = list[++i].toInt(&ok);
-            if (!ok || args.retries < 0 || args.retries > 100)
-                return fail(GrinderCli::tr("--retries: '%1' is not 0 to 100").arg(list[i]));
-        } else if (arg == "--reply-timeout-ms") {
-            args.replyTimeoutMs = list[++i].toInt(&ok);
-            if (!ok || args.replyTimeoutMs < 100 || args.replyTimeoutMs > 600000)
-                return fail(
-                    GrinderCli::tr("--reply-timeout-ms: '%1' is not 100 to 600000").arg(list[i]));
-        } else if (arg == "--form") {
-            args.form = list[++i].toInt(&ok);
-            if (!ok || (args.form != 1 && args.form != 2))
-                return fail(GrinderCli::tr("--form: '%1' is not 1 or 2").arg(list[i]));
-        } else if (arg == "--go") {
-            const auto um = parseMillimetres(list[++i].toStdString());
-            if (!um)
-                return fail(
-                    GrinderCli::tr("--go: '%1' is not a position in mm (e.g. 12.5)").arg(list[i]));
-            args.hasGo = true;
-            args.goUm = *um;
-        } else if (arg.startsWith("--")) {
-            return fail(GrinderCli::tr("unknown option '%1'").arg(arg));
-        } else if (args.file.isEmpty()) {
+        if (!arg.startsWith("--")) {
+            if (!args.file.isEmpty())
+                return fail(GrinderCli::tr("unexpected argument '%1'").arg(arg));
             args.file = arg;
-        } else {
-            return fail(GrinderCli::tr("unexpected argument '%1'").arg(arg));
+            continue;
         }
+        if (i + 1 >= list.size())
+            return fail(GrinderCli::tr("%1 needs a value").arg(arg));
+        const QString reason = parseOption(arg, list[++i], args);
+        if (!reason.isEmpty())
+            return fail(reason);
     }
     if (args.serial.portName.isEmpty())
-        return err(GrinderCli::tr("frezka-cli grinder: --port PATH is required\n")), 2;
+        return fail(GrinderCli::tr("--port PATH is required"));
     if ((args.action == "save" || args.action == "load") && args.file.isEmpty())
-        return err(GrinderCli::tr("frezka-cli grinder: %1 needs a FILE\n").arg(args.action)), 2;
+        return fail(GrinderCli::tr("%1 needs a FILE").arg(args.action));
     return 0;
 }
 
@@ -209,6 +226,18 @@ int report(const TransferResult &result)
     return 0;
 }
 
+// Writes atomically: a failed write leaves no half file behind.
+bool writeFile(const QString &path, const QByteArray &data)
+{
+    QSaveFile file(path);
+    if (file.open(QIODevice::WriteOnly) && file.write(data) == data.size() && file.commit())
+        return true;
+    err(GrinderCli::tr("frezka-cli grinder: cannot write %1: %2 (the data were received but not "
+                       "saved)\n")
+            .arg(path, file.errorString()));
+    return false;
+}
+
 int runTransfer(const Args &args)
 {
     QByteArray data;
@@ -258,16 +287,8 @@ int runTransfer(const Args &args)
     if (session.isBusy())
         loop.exec();
     bar.end();
-    if (result.ok() && args.action == "save") {
-        QSaveFile file(args.file);
-        if (!file.open(QIODevice::WriteOnly) || file.write(result.data) != result.data.size() ||
-            !file.commit()) {
-            err(GrinderCli::tr("frezka-cli grinder: cannot write %1: %2 (the data were received "
-                               "but not saved)\n")
-                    .arg(args.file, file.errorString()));
-            return 1;
-        }
-    }
+    if (result.ok() && args.action == "save" && !writeFile(args.file, result.data))
+        return 1;
     const int code = report(result);
     if (code == 0 && args.action == "load" && args.family != Family::HardChrome)
         out(GrinderCli::tr("Note: TCHIN programs show \"no prg set\" once until the X axis is set "

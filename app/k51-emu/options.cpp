@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <fstream>
+#include <functional>
 #include <iterator>
 
 namespace frezka::k51emu {
@@ -67,144 +68,163 @@ bool readFile(const std::string &path, Bytes &bytes)
     return true;
 }
 
+// Parsing state beyond Options: values checked together at the end.
+struct Pending
+{
+    int konfig6 = 2;
+    bool k51Type2 = false;
+    std::string imagePath;
+};
+
+bool parseNumber(const std::string &option, const std::string &text, long long lo, long long hi,
+                 long long &out, std::string &error)
+{
+    if (toInt(text, out) && out >= lo && out <= hi)
+        return true;
+    error = option + ": '" + text + "' is not a number from " + std::to_string(lo) + " to " +
+            std::to_string(hi);
+    return false;
+}
+
+bool parseLength(const std::string &option, const std::string &text, std::int64_t &um,
+                 std::string &error)
+{
+    const auto value = parseMillimetres(text);
+    if (!value) {
+        error = option + ": '" + text + "' is not a length in mm (e.g. -1.234)";
+        return false;
+    }
+    um = *value;
+    return true;
+}
+
+// Options without a value; false when `option` is not one of them.
+bool parseFlag(const std::string &option, Options &options, Pending &pending)
+{
+    EmulatorConfig &c = options.config;
+    if (option == "--help" || option == "-h")
+        options.help = true;
+    else if (option == "--k51-2")
+        pending.k51Type2 = true;
+    else if (option == "--fast")
+        options.fast = true;
+    else if (option == "--noise")
+        c.noise = true;
+    else if (option == "--silent")
+        c.silentAfterReplies = 0;
+    else if (option == "--verbose")
+        options.verbose = true;
+    else
+        return false;
+    return true;
+}
+
+// Options with a value. Sets `error` (unknown option or bad value) and returns false on failure.
+bool parseValue(const std::string &option, const std::string &value, Options &options,
+                Pending &pending, std::string &error)
+{
+    EmulatorConfig &c = options.config;
+    long long n = 0;
+    if (option == "--family") {
+        const auto family = familyFromId(value);
+        if (!family)
+            error = "--family: '" + value + "' is not anc, k51 or hedit";
+        else
+            c.family = *family;
+        return family.has_value();
+    }
+    if (option == "--image") {
+        pending.imagePath = value;
+        return true;
+    }
+    if (option == "--header") {
+        c.header = headerFromText(value);
+        return true;
+    }
+    if (option == "--store") {
+        options.storePath = value;
+        return true;
+    }
+    if (option == "--z-start")
+        return parseLength(option, value, c.zStartUm, error);
+    if (option == "--z-speed") {
+        if (!parseLength(option, value, c.zSpeedUmPerS, error))
+            return false;
+        if (c.zSpeedUmPerS <= 0)
+            error = "--z-speed must be positive";
+        return c.zSpeedUmPerS > 0;
+    }
+    struct NumberOption
+    {
+        const char *name;
+        long long lo, hi;
+        std::function<void(long long)> set;
+    };
+    const NumberOption numbers[] = {
+        {"--konfig6", 0, 255, [&](long long v) { pending.konfig6 = int(v); }},
+        {"--zform", 1, 2, [&](long long v) { c.zForm = int(v); }},
+        {"--baud", 50, 4000000, [&](long long v) { options.baud = int(v); }},
+        {"--reply-delay-ms", 0, 600000, [&](long long v) { c.replyDelayUs = v * 1000; }},
+        {"--naks", 0, 1000000, [&](long long v) { c.nakCount = int(v); }},
+        {"--corrupt", 0, 1000000, [&](long long v) { c.corruptCount = int(v); }},
+        {"--silent-after", 0, 1000000, [&](long long v) { c.silentAfterReplies = int(v); }},
+    };
+    for (const NumberOption &number : numbers) {
+        if (option != number.name)
+            continue;
+        if (!parseNumber(option, value, number.lo, number.hi, n, error))
+            return false;
+        number.set(n);
+        return true;
+    }
+    error = "unknown option '" + option + "' (see --help)";
+    return false;
+}
+
+// Checks what depends on several options and loads the image file.
+bool finish(const Pending &pending, Options &options, std::string &error)
+{
+    EmulatorConfig &c = options.config;
+    const auto mode = transferModeFromKonfig6(pending.konfig6, pending.k51Type2);
+    if (!mode) {
+        error = "--konfig6 " + std::to_string(pending.konfig6) + " is not a transfer mode of " +
+                (pending.k51Type2 ? "K51-2 (0 or 1)" : "K51-1 (0 to 3)");
+        return false;
+    }
+    c.mode = *mode;
+    if (pending.imagePath.empty())
+        return true;
+    if (!readFile(pending.imagePath, c.image)) {
+        error = "--image: cannot read '" + pending.imagePath + "'";
+        return false;
+    }
+    if (c.image.empty() || c.image.size() + kHeaderSize > kMaxPayload) {
+        error = "--image: '" + pending.imagePath + "' has " + std::to_string(c.image.size()) +
+                " bytes; a message carries 1 to 65519";
+        return false;
+    }
+    return true;
+}
+
 } // namespace
 
 bool parseOptions(const std::vector<std::string> &args, Options &options, std::string &error)
 {
-    EmulatorConfig &c = options.config;
-    int konfig6 = 2;
-    bool k51Type2 = false;
-    std::string imagePath;
+    Pending pending;
     for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string &arg = args[i];
-        auto value = [&](std::string &out) {
-            if (i + 1 >= args.size()) {
-                error = arg + " needs a value";
-                return false;
-            }
-            out = args[++i];
-            return true;
-        };
-        auto number = [&](long long &out, long long lo, long long hi) {
-            std::string text;
-            if (!value(text))
-                return false;
-            if (!toInt(text, out) || out < lo || out > hi) {
-                error = arg + ": '" + text + "' is not a number from " + std::to_string(lo) +
-                        " to " + std::to_string(hi);
-                return false;
-            }
-            return true;
-        };
-        auto millimetres = [&](std::int64_t &out) {
-            std::string text;
-            if (!value(text))
-                return false;
-            const auto um = parseMillimetres(text);
-            if (!um) {
-                error = arg + ": '" + text + "' is not a length in mm (e.g. -1.234)";
-                return false;
-            }
-            out = *um;
-            return true;
-        };
-        long long n = 0;
-        std::string text;
-        if (arg == "--help" || arg == "-h") {
-            options.help = true;
-        } else if (arg == "--family") {
-            if (!value(text))
-                return false;
-            const auto family = familyFromId(text);
-            if (!family) {
-                error = "--family: '" + text + "' is not anc, k51 or hedit";
-                return false;
-            }
-            c.family = *family;
-        } else if (arg == "--image") {
-            if (!value(imagePath))
-                return false;
-        } else if (arg == "--header") {
-            if (!value(text))
-                return false;
-            c.header = headerFromText(text);
-        } else if (arg == "--konfig6") {
-            if (!number(n, 0, 255))
-                return false;
-            konfig6 = int(n);
-        } else if (arg == "--k51-2") {
-            k51Type2 = true;
-        } else if (arg == "--zform") {
-            if (!number(n, 1, 2))
-                return false;
-            c.zForm = int(n);
-        } else if (arg == "--z-start") {
-            if (!millimetres(c.zStartUm))
-                return false;
-        } else if (arg == "--z-speed") {
-            std::int64_t umPerS = 0;
-            if (!millimetres(umPerS))
-                return false;
-            if (umPerS <= 0) {
-                error = "--z-speed must be positive";
-                return false;
-            }
-            c.zSpeedUmPerS = umPerS;
-        } else if (arg == "--store") {
-            if (!value(options.storePath))
-                return false;
-        } else if (arg == "--baud") {
-            if (!number(n, 50, 4000000))
-                return false;
-            options.baud = int(n);
-        } else if (arg == "--fast") {
-            options.fast = true;
-        } else if (arg == "--reply-delay-ms") {
-            if (!number(n, 0, 600000))
-                return false;
-            c.replyDelayUs = n * 1000;
-        } else if (arg == "--naks") {
-            if (!number(n, 0, 1000000))
-                return false;
-            c.nakCount = int(n);
-        } else if (arg == "--corrupt") {
-            if (!number(n, 0, 1000000))
-                return false;
-            c.corruptCount = int(n);
-        } else if (arg == "--noise") {
-            c.noise = true;
-        } else if (arg == "--silent") {
-            c.silentAfterReplies = 0;
-        } else if (arg == "--silent-after") {
-            if (!number(n, 0, 1000000))
-                return false;
-            c.silentAfterReplies = int(n);
-        } else if (arg == "--verbose") {
-            options.verbose = true;
-        } else {
-            error = "unknown option '" + arg + "' (see --help)";
+        const std::string &option = args[i];
+        if (parseFlag(option, options, pending))
+            continue;
+        if (option.rfind("--", 0) == 0 && i + 1 >= args.size()) {
+            error = option + " needs a value (or is unknown; see --help)";
             return false;
         }
-    }
-    const auto mode = transferModeFromKonfig6(konfig6, k51Type2);
-    if (!mode) {
-        error = "--konfig6 " + std::to_string(konfig6) + " is not a transfer mode of " +
-                (k51Type2 ? "K51-2 (0 or 1)" : "K51-1 (0 to 3)");
-        return false;
-    }
-    c.mode = *mode;
-    if (!imagePath.empty()) {
-        if (!readFile(imagePath, c.image)) {
-            error = "--image: cannot read '" + imagePath + "'";
+        if (!parseValue(option, i + 1 < args.size() ? args[i + 1] : std::string(), options, pending,
+                        error))
             return false;
-        }
-        if (c.image.empty() || c.image.size() + kHeaderSize > kMaxPayload) {
-            error = "--image: '" + imagePath + "' has " + std::to_string(c.image.size()) +
-                    " bytes; a message carries 1 to 65519";
-            return false;
-        }
+        ++i;
     }
-    return true;
+    return finish(pending, options, error);
 }
 
 } // namespace frezka::k51emu

@@ -187,12 +187,14 @@ void TransferSession::arm(int timeoutMs)
     });
 }
 
-void TransferSession::sendLater(const Frame &frame, State next)
+void TransferSession::sendLater(const Frame &frame, State next, int pauseMs)
 {
+    if (pauseMs < 0)
+        pauseMs = m_timing.pauseMs;
     m_clock.cancel(m_timer);
     m_timer = 0;
     m_state = State::Pausing;
-    m_pauseTimer = m_clock.callAfter(std::int64_t(m_timing.pauseMs) * 1000, [this, frame, next] {
+    m_pauseTimer = m_clock.callAfter(std::int64_t(pauseMs) * 1000, [this, frame, next] {
         m_pauseTimer = 0;
         const Bytes wire = encodeFrame(frame);
         m_lastSent = frame;
@@ -203,6 +205,8 @@ void TransferSession::sendLater(const Frame &frame, State next)
         }
         switch (next) {
         case State::Requesting:
+            m_requestDeadlineUs =
+                m_clock.nowUs() + std::int64_t(m_timing.firstByteTimeoutMs) * 1000;
             arm(m_timing.firstByteTimeoutMs);
             break;
         case State::Sending:
@@ -230,9 +234,13 @@ void TransferSession::onReceived(const QByteArray &bytes)
             return; // finished: later bytes belong to no operation
     }
     if (m_state == State::Requesting && m_decoder.pendingBytes() > 0) {
-        arm(m_timing.gapTimeoutMs);
+        arm(m_timing.gapTimeoutMs); // a message is coming: now silence inside it counts
         if (m_decoder.pendingTotal() > 0)
             emit progressed(qint64(m_decoder.pendingBytes()), qint64(m_decoder.pendingTotal()));
+    } else if (m_state == State::Requesting) {
+        // Noise or a stray message: the wait for the data keeps its original deadline.
+        const std::int64_t leftUs = m_requestDeadlineUs - m_clock.nowUs();
+        arm(int(std::max<std::int64_t>(0, leftUs) / 1000));
     }
 }
 
@@ -287,12 +295,18 @@ void TransferSession::onFrame(const Frame &frame)
                         tr("The controller answered NAK to %1: is it set to program transfer "
                            "(KONFIG6) with the selector in PGN?")
                             .arg(sentName()));
+        } else if (frame.code == Code::Ack) {
+            // A late answer to a repeated ENQ: never an answer to a request.
+            emit traced(tr("<- ACK ignored: a late answer to an earlier message"));
         } else {
             finish(TransferError::UnexpectedReply, unexpected);
         }
         break;
     case State::Sending:
-        if (frame.code == Code::Ack)
+        if (frame.code == Code::Ack && m_inFlight > 0)
+            // The data message is not out yet, so this cannot be its answer.
+            emit traced(tr("<- ACK ignored: a late answer to an earlier message"));
+        else if (frame.code == Code::Ack)
             finish(TransferError::None);
         else if (frame.code == Code::Nak)
             retryOrFail(TransferError::Rejected,
@@ -326,16 +340,20 @@ void TransferSession::onBadChecksum(const DecodeEvent &event)
 void TransferSession::afterAck()
 {
     const FamilyInfo &info = familyInfo(m_family);
+    // After a repeated ENQ a second ACK may still be on its way: let it arrive (and be
+    // ignored) before the next message, so it cannot be taken for that message's answer.
+    const int pauseMs =
+        m_attempt > 0 ? std::max(m_timing.pauseMs, m_timing.replyTimeoutMs) : m_timing.pauseMs;
     m_attempt = 0;
     switch (m_operation) {
     case Operation::Ping:
         finish(TransferError::None);
         break;
     case Operation::Save:
-        sendLater(Frame::control(info.framing, info.requestCode), State::Requesting);
+        sendLater(Frame::control(info.framing, info.requestCode), State::Requesting, pauseMs);
         break;
     case Operation::Load:
-        sendLater(m_dataFrame, State::Sending);
+        sendLater(m_dataFrame, State::Sending, pauseMs);
         break;
     }
 }
@@ -385,7 +403,7 @@ void TransferSession::onTimeout()
         else
             retryOrFail(TransferError::Timeout,
                         tr("No data from the controller within %1 s after %2.")
-                            .arg(seconds)
+                            .arg(m_timing.firstByteTimeoutMs / 1000.0)
                             .arg(sentName()));
         break;
     }

@@ -113,7 +113,8 @@ private:
     void onBadChecksum(const DecodeEvent &event);
     void onTimeout();
     void afterAck();
-    void sendLater(const Frame &frame, State next);
+    // Sends `frame` after a pause (the timing's pauseMs unless given), then waits in `next`.
+    void sendLater(const Frame &frame, State next, int pauseMs = -1);
     // Repeats the last message (or sends NAK when `askRepeat`), or fails after maxRetries.
     void retryOrFail(TransferError error, const QString &message, bool askRepeat = false);
     void arm(int timeoutMs);
@@ -136,6 +137,7 @@ private:
     int m_attempt = 0;     // retries in the current step
     int m_timeoutMs = 0;
     std::int64_t m_startUs = 0;
+    std::int64_t m_requestDeadlineUs = 0; // first-byte deadline of the data after a request
     Clock::TimerId m_timer = 0;
     Clock::TimerId m_pauseTimer = 0;
 };

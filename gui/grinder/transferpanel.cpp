@@ -11,6 +11,7 @@
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpressionValidator>
 #include <QSaveFile>
 #include <QTime>
 #include <QVBoxLayout>
@@ -40,6 +41,7 @@ TransferPanel::TransferPanel(Clock &clock, QWidget *parent)
     , m_sendInfo(new QLabel(this))
     , m_header(new QLineEdit(this))
     , m_sendButton(new QPushButton(tr("PC → Controller"), this))
+    , m_cancelButton(new QPushButton(tr("Cancel"), this))
     , m_progress(new QProgressBar(this))
     , m_progressText(new QLabel(this))
     , m_status(new QLabel(this))
@@ -55,7 +57,11 @@ TransferPanel::TransferPanel(Clock &clock, QWidget *parent)
     m_hint->setObjectName(QStringLiteral("hint"));
     m_receiveButton->setToolTip(tr("Ask the controller for its programs (DEJ) and receive them."));
     m_sendButton->setToolTip(tr("Send the chosen file to the controller unchanged."));
+    m_cancelButton->setObjectName(QStringLiteral("cancelButton"));
     m_header->setMaxLength(int(kHeaderSize));
+    // The controller shows the header on its display: printable ASCII only.
+    m_header->setValidator(new QRegularExpressionValidator(
+        QRegularExpression(QStringLiteral("[\\x20-\\x7E]{0,16}")), m_header));
     m_header->setPlaceholderText(tr("16 characters shown on the controller"));
     m_sendFile->setReadOnly(true);
     m_sendFile->setPlaceholderText(tr("No file chosen"));
@@ -69,6 +75,18 @@ TransferPanel::TransferPanel(Clock &clock, QWidget *parent)
     m_log->setMaximumBlockCount(2000);
     m_saveButton->setEnabled(false);
 
+    buildLayout();
+
+    connect(m_receiveButton, &QPushButton::clicked, this, &TransferPanel::receive);
+    connect(m_saveButton, &QPushButton::clicked, this, &TransferPanel::chooseSaveFile);
+    connect(m_chooseButton, &QPushButton::clicked, this, &TransferPanel::chooseSendFile);
+    connect(m_sendButton, &QPushButton::clicked, this, &TransferPanel::send);
+    connect(m_cancelButton, &QPushButton::clicked, this, &TransferPanel::cancel);
+    updateEnabled();
+}
+
+void TransferPanel::buildLayout()
+{
     auto *fromBox = new QGroupBox(tr("Controller → PC"), this);
     auto *fromForm = new QFormLayout(fromBox);
     fromForm->addRow(m_receiveButton);
@@ -92,18 +110,15 @@ TransferPanel::TransferPanel(Clock &clock, QWidget *parent)
     boxes->addWidget(toBox, 1);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(boxes);
-    layout->addWidget(m_progress);
+    auto *progressRow = new QHBoxLayout;
+    progressRow->addWidget(m_progress, 1);
+    progressRow->addWidget(m_cancelButton);
+    layout->addLayout(progressRow);
     layout->addWidget(m_progressText);
     layout->addWidget(m_status);
     layout->addWidget(m_hint);
     layout->addWidget(new QLabel(tr("Messages:"), this));
     layout->addWidget(m_log, 1);
-
-    connect(m_receiveButton, &QPushButton::clicked, this, &TransferPanel::receive);
-    connect(m_saveButton, &QPushButton::clicked, this, &TransferPanel::chooseSaveFile);
-    connect(m_chooseButton, &QPushButton::clicked, this, &TransferPanel::chooseSendFile);
-    connect(m_sendButton, &QPushButton::clicked, this, &TransferPanel::send);
-    updateEnabled();
 }
 
 void TransferPanel::setSession(TransferSession *session, int baud)
@@ -132,6 +147,14 @@ void TransferPanel::updateEnabled()
     m_receiveButton->setEnabled(ready);
     m_sendButton->setEnabled(ready && !m_toSend.isEmpty());
     m_saveButton->setEnabled(!m_received.data.isEmpty());
+    m_cancelButton->setEnabled(m_session && m_session->isBusy() &&
+                               m_session->lastResult().operation != Operation::Ping);
+}
+
+void TransferPanel::cancel()
+{
+    if (m_session && m_session->isBusy())
+        m_session->cancel();
 }
 
 QString TransferPanel::statusText() const

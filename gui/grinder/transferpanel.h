@@ -39,7 +39,8 @@ public:
     bool saveReceived(const QString &path); // write the received data, byte for byte
     bool openFileToSend(const QString &path);
     void setHeaderText(const QString &text);
-    bool send(); // PC -> Controller
+    bool send();   // PC -> Controller
+    void cancel(); // stop the transfer in progress
     QByteArray receivedData() const { return m_received.data; }
     QString statusText() const;
 
@@ -47,6 +48,7 @@ signals:
     void transferFinished(const frezka::grinder::TransferResult &result);
 
 private:
+    void buildLayout();
     void onProgress(qint64 done, qint64 total);
     void onFinished(const grinder::TransferResult &result);
     void chooseSaveFile();
@@ -74,6 +76,7 @@ private:
     QLabel *m_sendInfo;
     QLineEdit *m_header;
     QPushButton *m_sendButton;
+    QPushButton *m_cancelButton;
     QProgressBar *m_progress;
     QLabel *m_progressText;
     QLabel *m_status;

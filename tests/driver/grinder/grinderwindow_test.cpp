@@ -8,8 +8,8 @@
 #include "gui/grinder/zpositionpanel.h"
 
 #include <QLabel>
-#include <QSettings>
 #include <QPushButton>
+#include <QSettings>
 #include <QtTest>
 
 using namespace frezka::grinder;
@@ -98,6 +98,10 @@ void GrinderWindowTest::saveThenLoadRoundTripsByteExactlyOnPty()
     for (QLabel *label : window.findChildren<QLabel *>())
         headerShown |= label->text() == "WINDOW TEST 16CH";
     QVERIFY(headerShown);
+    // For documentation: FREZKA_SCREENSHOT_DIR=/some/dir keeps a picture of the window.
+    const QString shots = qEnvironmentVariable("FREZKA_SCREENSHOT_DIR");
+    if (!shots.isEmpty())
+        QVERIFY(window.grab().save(QDir(shots).filePath("grinder-window.png")));
 }
 
 void GrinderWindowTest::silentControllerShowsNoConnection()
@@ -150,6 +154,13 @@ void GrinderWindowTest::serialMonitorShowsBothDirectionsAndCaptures()
     QVERIFY(monitor->viewText().contains("<-1  <AA><06><00><00><FF>P"));
     QVERIFY(monitor->captureTo(file("capture-000.txt")));
     QVERIFY(readAll(file("capture-000.txt")).contains("<AA><06>"));
+    // A second port at the same time, answering on its own line of the view.
+    EmuProcess second({"--fast", "--family", "anc"});
+    QVERIFY(monitor->openPort(1, {second.path(), 4800, 8, 'n', 1}));
+    monitor->setHexView(true);
+    monitor->setMessage(QStringLiteral("AA 05 00 00 51"), true); // ANC ENQ
+    QVERIFY(monitor->sendMessage(1));
+    QTRY_VERIFY(monitor->viewText().contains("<-2  AA 06 00 00 50"));
     monitor->setMessage(QStringLiteral("AA 0"), true);
     QVERIFY(!monitor->sendMessage(0));
     QVERIFY(monitor->statusText().contains("not hex bytes"));

@@ -127,6 +127,10 @@ void GrinderPtyTest::cliReportsFailuresWithNonZeroExit()
     QCOMPARE(badFile.exitCode, 1);
     QCOMPARE(runCli({"grinder", "save", "--port", "/dev/null"}).exitCode, 2);
     QCOMPARE(runCli({"grinder", "ping", "--family", "xyz", "--port", "/dev/null"}).exitCode, 2);
+    CliRun header = runCli({"grinder", "load", "--port", "/dev/null", "--header",
+                            QStringLiteral("BRUS\u00CD"), file("x.bin")});
+    QCOMPARE(header.exitCode, 2);
+    QVERIFY2(header.err.contains("plain ASCII"), qPrintable(header.err));
 }
 
 void GrinderPtyTest::cliZPositionBothForms()

@@ -284,3 +284,43 @@ TEST(GrinderSession, TimeLeftEstimate)
     EXPECT_DOUBLE_EQ(estimateSecondsLeft(0, 9600, 0, 9600), 10.0);          // from the baud rate
     EXPECT_DOUBLE_EQ(estimateSecondsLeft(500, 1500, 1'000'000, 9600), 2.0); // measured rate
 }
+
+TEST(GrinderSession, CancelStopsATransferAndTheLinkStaysUsable)
+{
+    Rig rig(config(Family::K51));
+    rig.session.save();
+    rig.clock.advance(5'000'000); // part of the 22 s message is in
+    ASSERT_TRUE(rig.session.isBusy());
+    ASSERT_FALSE(rig.progress.empty());
+    rig.session.cancel();
+    ASSERT_TRUE(rig.result.has_value());
+    EXPECT_EQ(rig.result->error, TransferError::Cancelled);
+    EXPECT_FALSE(rig.session.isBusy());
+    rig.clock.advance(30'000'000); // the controller finishes its message; nobody listens
+    rig.result.reset();
+    rig.session.ping();
+    EXPECT_TRUE(rig.run().ok());
+}
+
+// The controller answers after the reply timeout: ENQ is repeated, both ENQs are answered, and
+// the second ACK must not be taken for the answer to the request or to the data.
+TEST(GrinderSession, LateDuplicateAckIsNotTakenForTheAnswer)
+{
+    EmulatorConfig c = config(Family::K51);
+    c.replyDelayUs = 3'500'000; // beyond the 3 s reply timeout
+    Rig saver(c);
+    const TransferResult saved = saver.save();
+    ASSERT_TRUE(saved.ok()) << saved.message.toStdString();
+    EXPECT_EQ(saved.retries, 1) << saver.trace.join(QLatin1Char(10)).toStdString();
+    EXPECT_EQ(toBytes(saved.data), saver.transport.emulator().image());
+
+    c.image = Bytes(kK51ImageSize, 0);
+    c.nakCount = 0;
+    Rig loader(c);
+    const Bytes file = generatedImage(Family::K51, kK51ImageSize);
+    const TransferResult loaded = loader.load("LATE", file);
+    ASSERT_TRUE(loaded.ok()) << loaded.message.toStdString();
+    EXPECT_EQ(loader.transport.emulator().image(), file);
+    EXPECT_TRUE(loader.trace.join('\n').contains("ACK ignored"))
+        << loader.trace.join('\n').toStdString();
+}
