@@ -171,6 +171,7 @@ private:
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;
     QPointer<UnitConfigDialog> m_unitConfig;
+    QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };
 
