@@ -283,6 +283,19 @@ M30
         dlg->close();
     }
 
+    void languageSwitch()
+    {
+        auto *run = button(m_window->runPanel(), "run");
+        QCOMPARE(run->text(), QStringLiteral("Run"));
+        SettingsDialog *settings = m_window->openSettings();
+        settings->chooseLanguage(QStringLiteral("cs"));
+        QTRY_COMPARE(run->text(), QStringLiteral("Spustit"));
+        QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), QStringLiteral("cs"));
+        settings->chooseLanguage(QStringLiteral("en"));
+        QTRY_COMPARE(run->text(), QStringLiteral("Run"));
+        settings->close();
+    }
+
     // A failed step must not leave the machine held for the next one.
     void cleanup()
     {
