@@ -1,12 +1,28 @@
 #include "emulatorport.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace frezka::driver {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+}
+
+emulator::UnitOptions unitOptionsFor(const machine::MachineConfig &config)
+{
+    emulator::UnitOptions o;
+    o.variant = config.unit.variant;
+    o.maxPulseRate = config.unit.maxPulseRate;
+    for (int a = 0; a < 4; ++a) {
+        const machine::AxisConfig &ax = config.axes[static_cast<std::size_t>(a)];
+        if (!ax.present || ax.homing.order <= 0)
+            continue;
+        const int d = ax.homing.direction < 0 ? -1 : 1;
+        o.switches.push_back({a, a, d * std::llround(5.0 * ax.stepsPerMm), d});
+    }
+    return o;
 }
 
 EmulatorPort::EmulatorPort(emulator::UnitOptions unit, WireOptions wire)

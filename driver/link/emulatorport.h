@@ -9,6 +9,7 @@
 
 #include "driver/emulator/unit.h"
 #include "driver/link/simrunner.h"
+#include "machine/machineconfig.h"
 
 #include <cstdint>
 #include <deque>
@@ -35,6 +36,10 @@ struct WireStats
     std::int64_t duplicated = 0;
     std::int64_t repliesLost = 0;
 };
+
+// An emulated unit for a machine profile: its variant and maximum pulse rate, and a home switch
+// (IN0..IN3) for every homed axis, 5 mm from the counter's zero in the homing direction.
+emulator::UnitOptions unitOptionsFor(const machine::MachineConfig &config);
 
 class EmulatorPort : public VirtualPort
 {

@@ -12,6 +12,7 @@
 
 #include "machinecore.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace frezka::driver {
@@ -83,7 +84,32 @@ void MachineCore::setupUnit()
     }
     if (m_options.compareEeprom && ee.sync)
         compareEeprom();
+    probeDoublePacketStart();
     connected();
+}
+
+// A one-command packet opened with *S twice: "0,1" means the unit restarts an open packet on a
+// second *S, and every packet is sent that way (see LinkOptions::doublePacketStart).
+void MachineCore::probeDoublePacketStart()
+{
+    if (!m_options.packets || !m_options.link.doublePacketStart)
+        return;
+    m_steps.push_back({cmd::flag(), [this](const Outcome &) {
+                           m_engine.setDoublePacketStart(true);
+                           m_inFlight = [this](const Outcome &o) {
+                               const bool ok =
+                                   o.status == OutcomeStatus::Ok && o.reply.ok() && o.accepted == 1;
+                               m_engine.setDoublePacketStart(ok);
+                               log(ok ? "packets open with *S *S"
+                                      : "the unit refuses *S *S: packets open with one *S");
+                               if (o.status != OutcomeStatus::Ok)
+                                   unitError(o, "testing packets", MachineMode::Alarm);
+                           };
+                           const int b =
+                               std::min(variantInfo(m_config.unit.variant).resetBrakeSpeed,
+                                        m_config.unit.maxPulseRate);
+                           m_engine.startPacket({cmd::brake(b)}, m_now);
+                       }});
 }
 
 void MachineCore::compareEeprom()

@@ -1,8 +1,11 @@
 #include "rs274.h"
 
+#include <QDir>
+#include <QLockFile>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QString>
+#include <QTemporaryDir>
 #include <QTemporaryFile>
 
 #include <array>
@@ -57,6 +60,17 @@ Rs274Run runRs274(const std::string &file)
     for (int t = 1; t <= 99; ++t)
         tools.write(QStringLiteral("T%1 P%1 Z0 D1 ;\n").arg(t).toLatin1());
     tools.flush();
+    // Concurrent rs274 runs (ctest -j) interfere with each other (they end with exit code 7 and
+    // lose their output): one at a time across processes, each in a directory of its own, since
+    // rs274 also rewrites its parameter file (rs274ngc.var) in its working directory.
+    QLockFile lock(QDir::temp().filePath(QStringLiteral("frezka-rs274.lock")));
+    lock.setStaleLockTime(0);
+    if (!lock.lock()) {
+        run.error = "cannot take the rs274 lock";
+        return run;
+    }
+    QTemporaryDir workDir;
+    process.setWorkingDirectory(workDir.path());
     process.start(QString::fromStdString(exe),
                   {QStringLiteral("-t"), tools.fileName(), QStringLiteral("-g"),
                    QString::fromStdString(file)});

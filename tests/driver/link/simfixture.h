@@ -22,6 +22,21 @@ struct Sim
         , runner(core, port)
     {
         core.onLog = [this](const std::string &line) {
+            if (!errors.empty() && ++afterError > 20)
+                return; // keep what led to the first error
+            // Keep the interesting lines: routine polls would push everything else out.
+            static const char *kRoutine[] = {"> !0P4", "> !0PF", "> !0F", "> !0I1", "> !0I2"};
+            for (const char *r : kRoutine) {
+                if (line == r) {
+                    skipNext = true;
+                    return;
+                }
+            }
+            if (skipNext && line.rfind("< ", 0) == 0) {
+                skipNext = false;
+                return;
+            }
+            skipNext = false;
             log.push_back(line);
             if (log.size() > 400)
                 log.erase(log.begin(), log.begin() + 200);
@@ -42,7 +57,10 @@ struct Sim
     }
     std::string lastLog(int n = 30) const
     {
-        std::string s;
+        std::string s = std::string("mode ") + machineModeName(core.state().mode) + ", acked " +
+                        std::to_string(core.state().commandsAcked) + "\n";
+        for (const MachineError &e : errors)
+            s += "error: " + e.message + " [" + e.command + "] -> '" + e.reply + "'\n";
         for (std::size_t i = log.size() > static_cast<std::size_t>(n) ? log.size() - n : 0;
              i < log.size(); ++i)
             s += log[i] + "\n";
@@ -54,6 +72,8 @@ struct Sim
     MachineCore core;
     SimRunner runner;
     std::vector<std::string> log;
+    bool skipNext = false;
+    int afterError = 0;
     std::vector<MachineError> errors;
     std::vector<bool> finished;
 };
