@@ -1,6 +1,7 @@
 // The operator's workflows of issue 6 on the whole main window against the emulated unit in real
-// time (offscreen, software view): gve-emu on a pty, connected through the profile's port as a
-// typed path, exactly like hardware. One window for the whole run, like an operator's day:
+// time (offscreen, software view): the built-in (in-process) emulator, or with
+// FREZKA_WORKFLOW_UNIT=pty gve-emu on a pty connected through the profile's port as a typed path,
+// exactly like hardware. One window for the whole run, like an operator's day:
 // connect -> open -> check -> home -> run; pause -> tool lift -> resume; jog and soft-limit
 // refusal; spindle/coolant; feed override; a program with an error; EEPROM write/read back.
 // Never sleeps: every wait is QTRY_* / QSignalSpy::wait on the machine's own signals.
@@ -90,19 +91,24 @@ private slots:
         QSettings::setDefaultFormat(QSettings::IniFormat);
         QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
         QCoreApplication::setOrganizationName(QStringLiteral("FrezkaWorkflowTest"));
-        // The unit: gve-emu with home switches where a GVE64 mill has them.
-        m_emu.setProgram(QStringLiteral(FREZKA_GVE_EMU));
-        m_emu.setArguments({QStringLiteral("--variant"), QStringLiteral("gve64"),
-                            QStringLiteral("--home"), QStringLiteral("X=0"),
-                            QStringLiteral("--home"), QStringLiteral("Y=0"),
-                            QStringLiteral("--home"), QStringLiteral("Z=0,+")});
-        m_emu.start();
-        QVERIFY(m_emu.waitForStarted());
-        QTRY_VERIFY_WITH_TIMEOUT(m_emu.canReadLine(), 10000);
-        const QString pty = QString::fromLocal8Bit(m_emu.readLine()).trimmed();
-        QVERIFY2(pty.startsWith(QLatin1Char('/')), qPrintable(pty));
         machine::MachineConfig profile = machine::defaultMachineConfig(protocol::Variant::Gve64);
-        profile.link.port = pty.toStdString();
+        if (qgetenv("FREZKA_WORKFLOW_UNIT") == "pty") {
+            // gve-emu with home switches where a GVE64 mill has them, on a pty opened by its
+            // path like hardware.
+            m_emu.setProgram(QStringLiteral(FREZKA_GVE_EMU));
+            m_emu.setArguments({QStringLiteral("--variant"), QStringLiteral("gve64"),
+                                QStringLiteral("--home"), QStringLiteral("X=0"),
+                                QStringLiteral("--home"), QStringLiteral("Y=0"),
+                                QStringLiteral("--home"), QStringLiteral("Z=0,+")});
+            m_emu.start();
+            QVERIFY(m_emu.waitForStarted());
+            QTRY_VERIFY_WITH_TIMEOUT(m_emu.canReadLine(), 10000);
+            const QString pty = QString::fromLocal8Bit(m_emu.readLine()).trimmed();
+            QVERIFY2(pty.startsWith(QLatin1Char('/')), qPrintable(pty));
+            profile.link.port = pty.toStdString();
+        } else {
+            profile.link.port = "emulator"; // the built-in emulator, in real time
+        }
         const QString profilePath = m_dir.filePath(QStringLiteral("machine.json"));
         QVERIFY(!machine::saveMachineConfig(profile, profilePath.toStdString()));
         QSettings().setValue(QStringLiteral("lastProfile"), profilePath);
