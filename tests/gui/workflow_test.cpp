@@ -18,6 +18,7 @@
 
 #include "driver/link/machinecontroller.h"
 
+#include <QDir>
 #include <QProcess>
 #include <QPushButton>
 #include <QSettings>
@@ -287,6 +288,36 @@ M30
         QVERIFY(finished.wait(kMachineTimeoutMs));
         QCOMPARE(dlg->differences(), 0);
         dlg->close();
+    }
+
+    // Every shipped sample program checks clean against the default profile; the short one runs
+    // to completion from the GUI.
+    void samplePrograms()
+    {
+        QVERIFY(waitIdle());
+        const QDir dir(QStringLiteral(FREZKA_SOURCE_DIR "/resources/programs"));
+        const QStringList files = dir.entryList({QStringLiteral("*.nc")}, QDir::Files);
+        QVERIFY(files.size() >= 2);
+        for (const QString &f : files) {
+            QVERIFY(load(dir.filePath(f)));
+            const LoadedProgram &p = m_window->program()->program();
+            QVERIFY2(p.runnable(), qPrintable(f + QStringLiteral(": ") + m_window->lastError()));
+            QVERIFY(p.estimatedS > 0);
+            qInfo("%s: %d lines, estimated %.1f s", qPrintable(f), p.text->lineCount(),
+                  p.estimatedS);
+        }
+        if (qgetenv("FREZKA_WORKFLOW_UNIT") == "pty")
+            QSKIP("The sample run is covered by the built-in emulator run.");
+        QVERIFY(load(dir.filePath(QStringLiteral("engraving-star.nc"))));
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QVERIFY(waitIdle());
+        // Ends at X0 Y0 Z3 of its own G54 (X100 Y100 Z-60 in machine coordinates).
+        QTRY_COMPARE(m_window->dro()->machineText(0), QStringLiteral("100.000"));
+        QTRY_COMPARE(m_window->dro()->machineText(1), QStringLiteral("100.000"));
+        QTRY_COMPARE(m_window->dro()->machineText(2), QStringLiteral("-57.000"));
     }
 
     void languageSwitch()
