@@ -16,6 +16,9 @@
 #include "unitconfigdialog.h"
 
 #include "driver/link/machinecontroller.h"
+#ifdef FREZKA_HAVE_GRINDER_GUI
+#include "gui/grinder/grinderwindow.h"
+#endif
 #include "speedplot.h"
 #include "toolpathview.h"
 
@@ -161,6 +164,17 @@ void MainWindow::buildMenus()
         m_viewMenu->addAction(QString(), this, [this] { restoreState(m_defaultState); });
 
     m_toolsMenu = menuBar()->addMenu(QString());
+#ifdef FREZKA_HAVE_GRINDER_GUI
+    m_grinderAction = m_toolsMenu->addAction(QString(), this, [this] {
+        if (!m_grinder) {
+            m_grinder = new GrinderWindow(); // a window of its own, not tied to the machine
+            m_grinder->setAttribute(Qt::WA_DeleteOnClose);
+        }
+        m_grinder->show();
+        m_grinder->raise();
+    });
+#endif
+    m_toolsMenu->menuAction()->setVisible(m_grinderAction != nullptr);
     m_helpMenu = menuBar()->addMenu(QString());
     m_aboutAction = m_helpMenu->addAction(QString(), this, [this] {
         QMessageBox::about(this, tr("About Frezka"),

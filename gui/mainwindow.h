@@ -99,6 +99,8 @@ public:
 
 signals:
     void errorShown(const QString &message);
+    // A Check (re-interpretation and planning) has finished; ok = the program can run.
+    void programChecked(bool ok);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -169,6 +171,7 @@ private:
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;
     QPointer<UnitConfigDialog> m_unitConfig;
+    QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };
 

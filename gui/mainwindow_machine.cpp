@@ -185,6 +185,8 @@ void MainWindow::connectMachine()
                     .arg(RunPanel::formatDuration(p.estimatedS)));
             statusBar()->showMessage(tr("Check passed."), 10000);
         }
+        if (check)
+            emit programChecked(p.runnable());
         if (run && p.runnable())
             startPlannedRun();
     });
@@ -244,7 +246,9 @@ void MainWindow::onState(const driver::MachineState &state)
     m_view->model()->setToolPosition(QVector3D(
         float(state.positionMm[0]), float(state.positionMm[1]), float(state.positionMm[2])));
     const std::uint16_t inputs = std::uint16_t(state.inputs1 | ((state.inputs2 & 0xC0) << 8));
-    const std::uint8_t outputs = logicalOutputs(state.outputs);
+    // !7V1..1000 switches OUT0 on in the unit as well (docs/gve-protocol.md §9).
+    const std::uint8_t outputs =
+        std::uint8_t(logicalOutputs(state.outputs) | (state.spindlePermille > 0 ? 0x01 : 0));
     m_io->setIo(inputs, outputs, state.run, state.inta);
     auto on = [&](machine::OutputFunction f) {
         const std::uint8_t bit = machine::outputBit(m_profile, f);

@@ -53,7 +53,7 @@ const Label kKeys[] = {
     {"speedMode", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Speed mode")},
     {"toolLiftMm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Tool lift")},
     {"spindle", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Spindle")},
-    {"maxRpm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Maximum speed")},
+    {"maxRpm", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Maximum spindle speed")},
     {"spinUpMs", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Spin-up wait")},
     {"outputs", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Outputs")},
     {"out1", QT_TRANSLATE_NOOP("frezka::gui::Profile", "OUT1 function")},
