@@ -13,6 +13,12 @@
 #include "programsession.h"
 #include "runpanel.h"
 #include "settingsdialog.h"
+#include "unitconfigdialog.h"
+
+#include "driver/link/machinecontroller.h"
+#ifdef FREZKA_HAVE_GRINDER_GUI
+#include "gui/grinder/grinderwindow.h"
+#endif
 #include "speedplot.h"
 #include "toolpathview.h"
 
@@ -47,11 +53,10 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
                       : options.view == MainWindowOptions::View::OpenGl ? B::OpenGl
                                                                         : B::Auto;
     m_view = new ToolpathView(this, backend);
-    setCentralWidget(m_view);
+    buildCentral();
     m_program = new ProgramSession(this);
     m_program->setMaxSceneSegments(m_view->preferredMaxSegments());
     m_program->setInterpreter(gcodeInterpreter());
-    m_machine = nullptr;
 
     buildDocks();
     buildMenus();
@@ -143,11 +148,12 @@ void MainWindow::buildMenus()
     m_quitAction->setShortcut(QKeySequence::Quit);
 
     m_machineMenu = menuBar()->addMenu(QString());
-    m_connectAction = m_machineMenu->addAction(QString());
-    m_disconnectAction = m_machineMenu->addAction(QString());
+    m_connectAction = m_machineMenu->addAction(QString(), this, [this] { connectToUnit(); });
+    m_disconnectAction =
+        m_machineMenu->addAction(QString(), this, [this] { disconnectFromUnit(); });
     m_machineMenu->addSeparator();
     m_settingsAction = m_machineMenu->addAction(QString(), this, [this] { openSettings(); });
-    m_unitConfigAction = m_machineMenu->addAction(QString());
+    m_unitConfigAction = m_machineMenu->addAction(QString(), this, [this] { openUnitConfig(); });
 
     m_viewMenu = menuBar()->addMenu(QString());
     for (auto *d :
@@ -158,6 +164,17 @@ void MainWindow::buildMenus()
         m_viewMenu->addAction(QString(), this, [this] { restoreState(m_defaultState); });
 
     m_toolsMenu = menuBar()->addMenu(QString());
+#ifdef FREZKA_HAVE_GRINDER_GUI
+    m_grinderAction = m_toolsMenu->addAction(QString(), this, [this] {
+        if (!m_grinder) {
+            m_grinder = new GrinderWindow(); // a window of its own, not tied to the machine
+            m_grinder->setAttribute(Qt::WA_DeleteOnClose);
+        }
+        m_grinder->show();
+        m_grinder->raise();
+    });
+#endif
+    m_toolsMenu->menuAction()->setVisible(m_grinderAction != nullptr);
     m_helpMenu = menuBar()->addMenu(QString());
     m_aboutAction = m_helpMenu->addAction(QString(), this, [this] {
         QMessageBox::about(this, tr("About Frezka"),
@@ -289,8 +306,9 @@ void MainWindow::connectProgram()
     connect(m_program, &ProgramSession::loaded, this, [this] {
         m_loadProgress->setVisible(false);
         const LoadedProgram &p = m_program->program();
-        m_listing->listModel()->setText(p.text);
+        m_listing->setText(p.text);
         m_view->model()->setScene(p.scene);
+
         m_plot->setPlanned(p.speed);
         checkProgramLimits();
         m_run->setProgress(0, 0, p.estimatedS);
@@ -304,7 +322,7 @@ void MainWindow::connectProgram()
             std::set<int> lines;
             for (const auto &e : p.errors)
                 lines.insert(e.line);
-            m_listing->listModel()->setErrorLines(lines);
+            m_listing->setErrorLines(lines);
             m_listing->showErrorLine(p.errors.front().line);
             for (std::size_t i = 1; i < p.errors.size(); ++i)
                 m_console->appendError(p.errors[i].text);
@@ -316,14 +334,6 @@ void MainWindow::connectProgram()
     });
 }
 
-void MainWindow::updateRunPhase()
-{
-    const bool connected = false;
-    m_run->setPhase(m_program->hasProgram() ? RunPhase::Ready : RunPhase::NoProgram, connected);
-}
-
-void MainWindow::connectMachine() {}
-
 SettingsDialog *MainWindow::openSettings()
 {
     if (!m_settings) {
@@ -334,6 +344,17 @@ SettingsDialog *MainWindow::openSettings()
     m_settings->show();
     m_settings->raise();
     return m_settings;
+}
+
+UnitConfigDialog *MainWindow::openUnitConfig()
+{
+    if (!m_unitConfig) {
+        m_unitConfig = new UnitConfigDialog(m_controller, m_profile, this);
+        m_unitConfig->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    m_unitConfig->show();
+    m_unitConfig->raise();
+    return m_unitConfig;
 }
 
 void MainWindow::applyProfile(const machine::MachineConfig &config, const QString &path)
@@ -368,6 +389,10 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
     }
     m_view->model()->setTravelBox(travel);
     m_program->setAnalyser(plannerAnalyser(config));
+    if (m_unitConfig)
+        m_unitConfig->setProfile(config);
+    if (m_controller)
+        m_controller->setMachineConfig(config);
     if (!m_program->program().path.isEmpty())
         m_program->reload(); // re-plan for the new profile
     m_unit->setText(QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size())));

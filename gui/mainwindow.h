@@ -4,10 +4,14 @@
 // unit's LEDs in the status bar. It renders what the controller reports and asks the
 // controller to act; it keeps no machine state of its own.
 
+#include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
+#include "programsession.h"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QPointer>
+#include <QTimer>
 
 #include <memory>
 
@@ -15,6 +19,11 @@ class QLabel;
 class QMenu;
 class QProgressBar;
 class QDockWidget;
+
+namespace frezka::driver {
+class MachineController;
+struct MachineError;
+} // namespace frezka::driver
 
 namespace frezka::gui {
 
@@ -28,8 +37,9 @@ class ProgramSession;
 class RunPanel;
 class SpeedPlot;
 class ToolpathView;
-class MachineSession;
+class HoldBanner;
 class SettingsDialog;
+class UnitConfigDialog;
 
 struct MainWindowOptions
 {
@@ -58,18 +68,39 @@ public:
     SpeedPlot *speedPlot() const { return m_plot; }
     IoPanel *ioPanel() const { return m_io; }
     ProgramSession *program() const { return m_program; }
-    MachineSession *machine() const { return m_machine; }
+    driver::MachineController *controller() const { return m_controller; }
+    HoldBanner *holdBanner() const { return m_hold; }
+    const WorkOffsets &workOffsets() const { return m_offsets; }
+    int activeOffset() const { return m_activeOffset; }
+
+    // Operator actions (the buttons call these; tests too).
+    void connectToUnit();
+    void disconnectFromUnit();
+    // Runs the loaded program; re-plans first when the machine is not where the plan starts.
+    void runProgram();
+    // Re-interprets and re-plans the program and reports the outcome in words.
+    void checkProgram();
+    // Sets the work zero of an axis (-1 = all) at the current machine position.
+    void setWorkZero(int axis);
+    void selectWorkOffset(int index);
+    // A manual line: "!..." is a raw unit command, anything else one block of G-code.
+    void executeManualLine(const QString &line);
+    void jogStep(int axis, double deltaMm, double feedMmPerMin);
     const machine::MachineConfig &profile() const { return m_profile; }
     QString profilePath() const { return m_profilePath; }
     // Makes a (valid) profile the active one: axes, limits, outputs, connection.
     void applyProfile(const machine::MachineConfig &config, const QString &path);
     // Opens the settings dialog (non-modal) and returns it.
     class SettingsDialog *openSettings();
+    // Opens the unit configuration (EEPROM) page (non-modal) and returns it.
+    class UnitConfigDialog *openUnitConfig();
     // The last message shown to the user as an error (tests read it; no modal dialog needed).
     QString lastError() const { return m_lastError; }
 
 signals:
     void errorShown(const QString &message);
+    // A Check (re-interpretation and planning) has finished; ok = the program can run.
+    void programChecked(bool ok);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -88,6 +119,17 @@ private:
     void addRecent(const QString &path);
     void openDialog();
     void checkProgramLimits();
+    void buildCentral();
+    void onState(const driver::MachineState &state);
+    void onMachineError(const driver::MachineError &error);
+    void onLogLine(const QString &line);
+    void updateHold(const driver::MachineState &state);
+    void updateProgress(const driver::MachineState &state);
+    void lowerTool(double newFeedMmPerMin, bool thenContinue);
+    void loadWorkOffsets();
+    void saveWorkOffsets();
+    void startPlannedRun();
+    std::array<double, 4> workPosition(const std::array<double, 4> &machineMm) const;
     void updateRunPhase();
     bool jogKey(QKeyEvent *event, bool pressed);
 
@@ -108,11 +150,28 @@ private:
     QAction *m_openAction, *m_quitAction, *m_connectAction, *m_disconnectAction, *m_settingsAction,
         *m_unitConfigAction, *m_aboutAction, *m_grinderAction = nullptr, *m_resetLayoutAction;
     ProgramSession *m_program;
-    MachineSession *m_machine;
+    driver::MachineController *m_controller = nullptr;
+    HoldBanner *m_hold = nullptr;
+    WorkOffsets m_offsets{};
+    int m_activeOffset = 0;
+    bool m_runAfterLoad = false;
+    bool m_checkAfterLoad = false;
+    bool m_continueAfterLower = false;
+    bool m_userDisconnected = false;
+    double m_savedSpindleRpm = 0;
+    QElapsedTimer m_jobClock;
+    double m_jobElapsedS = 0;
+    std::array<double, 4> m_lastPos{};
+    qint64 m_lastPosMs = -1;
+    double m_actualDistanceMm = 0;
+    QTimer m_reconnectTimer;
+    driver::MachineMode m_lastMode{};
     QString m_lastError;
     machine::MachineConfig m_profile;
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;
+    QPointer<UnitConfigDialog> m_unitConfig;
+    QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };
 

@@ -98,7 +98,9 @@ AnalyseFn plannerAnalyser(const machine::MachineConfig &config, double feedOverr
         if (!result.ok())
             return;
         program.estimatedS = result.stats.estimatedS;
-        program.speed = plannedSpeed(result.program, config, result.stats.speedModeVk);
+        // Decimated here, off the GUI thread (min and max of each bucket survive).
+        program.speed =
+            decimateSpeed(plannedSpeed(result.program, config, result.stats.speedModeVk), 4000);
         program.unitProgram = std::make_shared<machine::UnitProgram>(result.program);
         program.planStats = result.stats;
     };

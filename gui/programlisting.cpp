@@ -1,92 +1,157 @@
 #include "programlisting.h"
 
-#include <QBrush>
 #include <QFontDatabase>
-#include <QPalette>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QScrollBar>
 
 namespace frezka::gui {
 
-void ProgramListModel::setText(std::shared_ptr<const ProgramText> text)
+ProgramListing::ProgramListing(QWidget *parent)
+    : QAbstractScrollArea(parent)
 {
-    beginResetModel();
+    setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    setFocusPolicy(Qt::StrongFocus);
+    viewport()->setBackgroundRole(QPalette::Base);
+    viewport()->setAutoFillBackground(true);
+    connect(verticalScrollBar(), &QScrollBar::valueChanged, viewport(),
+            qOverload<>(&QWidget::update));
+    connect(horizontalScrollBar(), &QScrollBar::valueChanged, viewport(),
+            qOverload<>(&QWidget::update));
+}
+
+int ProgramListing::lineHeight() const
+{
+    return fontMetrics().height() + 1;
+}
+
+int ProgramListing::visibleLines() const
+{
+    return std::max(1, viewport()->height() / lineHeight());
+}
+
+int ProgramListing::firstVisibleLine() const
+{
+    return verticalScrollBar()->value() + 1;
+}
+
+void ProgramListing::updateScrollBars()
+{
+    verticalScrollBar()->setRange(0, std::max(0, lineCount() - visibleLines()));
+    verticalScrollBar()->setPageStep(visibleLines());
+    horizontalScrollBar()->setRange(0, 40 * fontMetrics().horizontalAdvance(QLatin1Char('0')));
+    horizontalScrollBar()->setPageStep(viewport()->width());
+}
+
+void ProgramListing::setText(std::shared_ptr<const ProgramText> text)
+{
     m_text = std::move(text);
     m_current = 0;
+    m_selected = 0;
     m_errors.clear();
-    endResetModel();
+    updateScrollBars();
+    verticalScrollBar()->setValue(0);
+    viewport()->update();
 }
 
-void ProgramListModel::setCurrentLine(int line)
+void ProgramListing::centreOn(int line)
 {
-    if (line == m_current)
-        return;
-    const int old = m_current;
-    m_current = line;
-    if (old > 0 && old <= rowCount())
-        emit dataChanged(index(old - 1), index(old - 1));
-    if (line > 0 && line <= rowCount())
-        emit dataChanged(index(line - 1), index(line - 1));
-}
-
-void ProgramListModel::setErrorLines(std::set<int> lines)
-{
-    m_errors = std::move(lines);
-    if (rowCount() > 0)
-        emit dataChanged(index(0), index(rowCount() - 1));
-}
-
-int ProgramListModel::rowCount(const QModelIndex &parent) const
-{
-    return parent.isValid() || !m_text ? 0 : m_text->lineCount();
-}
-
-QVariant ProgramListModel::data(const QModelIndex &index, int role) const
-{
-    if (!m_text || !index.isValid())
-        return {};
-    const int line = index.row() + 1;
-    switch (role) {
-    case Qt::DisplayRole:
-        return QStringLiteral("%1  %2").arg(line, 7).arg(m_text->line(index.row()));
-    case Qt::BackgroundRole:
-        if (line == m_current)
-            return QBrush(QColor(255, 220, 80));
-        if (m_errors.count(line))
-            return QBrush(QColor(255, 150, 150));
-        return {};
-    case Qt::ForegroundRole:
-        if (line == m_current || m_errors.count(line))
-            return QBrush(Qt::black);
-        return {};
-    default:
-        return {};
-    }
-}
-
-ProgramListing::ProgramListing(QWidget *parent)
-    : QListView(parent)
-    , m_model(new ProgramListModel(this))
-{
-    setModel(m_model);
-    setUniformItemSizes(true);
-    setLayoutMode(QListView::SinglePass);
-    setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    setSelectionMode(QAbstractItemView::SingleSelection);
-    setEditTriggers(QAbstractItemView::NoEditTriggers);
+    const int first = verticalScrollBar()->value() + 1;
+    const int n = visibleLines();
+    if (line < first + 2 || line > first + n - 3)
+        verticalScrollBar()->setValue(line - 1 - n / 2);
 }
 
 void ProgramListing::showCurrentLine(int line)
 {
-    m_model->setCurrentLine(line);
-    if (line > 0 && line <= m_model->rowCount())
-        scrollTo(m_model->index(line - 1), QAbstractItemView::PositionAtCenter);
+    if (line == m_current)
+        return;
+    m_current = line;
+    if (line > 0 && line <= lineCount())
+        centreOn(line);
+    viewport()->update();
+}
+
+void ProgramListing::setErrorLines(std::set<int> lines)
+{
+    m_errors = std::move(lines);
+    viewport()->update();
 }
 
 void ProgramListing::showErrorLine(int line)
 {
-    if (line > 0 && line <= m_model->rowCount()) {
-        const QModelIndex idx = m_model->index(line - 1);
-        scrollTo(idx, QAbstractItemView::PositionAtCenter);
-        setCurrentIndex(idx);
+    if (line <= 0 || line > lineCount())
+        return;
+    m_selected = line;
+    centreOn(line);
+    viewport()->update();
+}
+
+void ProgramListing::resizeEvent(QResizeEvent *event)
+{
+    QAbstractScrollArea::resizeEvent(event);
+    updateScrollBars();
+}
+
+void ProgramListing::paintEvent(QPaintEvent *)
+{
+    QPainter p(viewport());
+    if (!m_text)
+        return;
+    const int h = lineHeight();
+    const int first = verticalScrollBar()->value();
+    const int last = std::min(lineCount(), first + visibleLines() + 1);
+    const int digits = int(QString::number(lineCount()).size());
+    const int gutter = fontMetrics().horizontalAdvance(QLatin1Char('0')) * (digits + 1);
+    const int dx = horizontalScrollBar()->value();
+    const QPalette &pal = palette();
+    for (int i = first; i < last; ++i) {
+        const int line = i + 1;
+        const QRect row(0, (i - first) * h, viewport()->width(), h);
+        QColor text = pal.color(QPalette::Text);
+        if (line == m_current) {
+            p.fillRect(row, QColor(255, 220, 80));
+            text = Qt::black;
+        } else if (m_errors.count(line)) {
+            p.fillRect(row, QColor(255, 150, 150));
+            text = Qt::black;
+        } else if (line == m_selected) {
+            p.fillRect(row, pal.color(QPalette::Highlight));
+            text = pal.color(QPalette::HighlightedText);
+        }
+        p.setPen(QColor(130, 130, 130));
+        p.drawText(QRect(0, row.top(), gutter - 4, h), Qt::AlignRight | Qt::AlignVCenter,
+                   QString::number(line));
+        p.setPen(text);
+        p.setClipRect(QRect(gutter, row.top(), viewport()->width() - gutter, h));
+        p.drawText(QRect(gutter + 4 - dx, row.top(), 100000, h), Qt::AlignLeft | Qt::AlignVCenter,
+                   m_text->line(i));
+        p.setClipping(false);
+    }
+}
+
+void ProgramListing::mousePressEvent(QMouseEvent *event)
+{
+    const int line = verticalScrollBar()->value() + 1 + int(event->position().y()) / lineHeight();
+    if (line >= 1 && line <= lineCount()) {
+        m_selected = line;
+        viewport()->update();
+        emit lineClicked(line);
+    }
+}
+
+void ProgramListing::keyPressEvent(QKeyEvent *event)
+{
+    switch (event->key()) {
+    case Qt::Key_Home:
+        verticalScrollBar()->setValue(0);
+        break;
+    case Qt::Key_End:
+        verticalScrollBar()->setValue(verticalScrollBar()->maximum());
+        break;
+    default:
+        QAbstractScrollArea::keyPressEvent(event);
     }
 }
 

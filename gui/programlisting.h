@@ -1,52 +1,54 @@
 #pragma once
-// ProgramListing: the program text with line numbers, the line being cut highlighted and
-// error lines marked. A uniform-height list view over ProgramText, so it scrolls millions of
-// lines without laying them out.
+// ProgramListing: the program text with line numbers, the line being cut highlighted and error
+// lines marked. It paints only the visible lines straight from ProgramText and keeps nothing
+// per line (item views keep per-row layout or header data), so a file of millions of lines
+// opens and scrolls at once.
 
 #include "programtext.h"
 
-#include <QAbstractListModel>
-#include <QListView>
+#include <QAbstractScrollArea>
 
 #include <memory>
 #include <set>
 
 namespace frezka::gui {
 
-class ProgramListModel : public QAbstractListModel
-{
-    Q_OBJECT
-
-public:
-    using QAbstractListModel::QAbstractListModel;
-    void setText(std::shared_ptr<const ProgramText> text);
-    // 1-based source line currently executing (0 = none).
-    void setCurrentLine(int line);
-    int currentLine() const { return m_current; }
-    void setErrorLines(std::set<int> lines);
-
-    int rowCount(const QModelIndex &parent = {}) const override;
-    QVariant data(const QModelIndex &index, int role) const override;
-
-private:
-    std::shared_ptr<const ProgramText> m_text;
-    int m_current = 0;
-    std::set<int> m_errors;
-};
-
-class ProgramListing : public QListView
+class ProgramListing : public QAbstractScrollArea
 {
     Q_OBJECT
 
 public:
     explicit ProgramListing(QWidget *parent = nullptr);
-    ProgramListModel *listModel() const { return m_model; }
-    // Highlights and scrolls to a 1-based line (unless the user scrolled away recently).
+    void setText(std::shared_ptr<const ProgramText> text);
+    int lineCount() const { return m_text ? m_text->lineCount() : 0; }
+    // 1-based line executing now (0 = none): highlighted and kept in view.
     void showCurrentLine(int line);
+    int currentLine() const { return m_current; }
+    void setErrorLines(std::set<int> lines);
+    // Scrolls to and selects a 1-based line (an error).
     void showErrorLine(int line);
+    int selectedLine() const { return m_selected; }
+    int firstVisibleLine() const; // 1-based
+
+signals:
+    void lineClicked(int line);
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
 
 private:
-    ProgramListModel *m_model;
+    int lineHeight() const;
+    int visibleLines() const;
+    void updateScrollBars();
+    void centreOn(int line);
+
+    std::shared_ptr<const ProgramText> m_text;
+    int m_current = 0;
+    int m_selected = 0;
+    std::set<int> m_errors;
 };
 
 } // namespace frezka::gui

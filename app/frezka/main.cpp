@@ -28,6 +28,12 @@ int main(int argc, char **argv)
         QStringLiteral("software-view"),
         QApplication::translate("main", "Draw the toolpath without OpenGL."));
     parser.addOption(software);
+    QCommandLineOption language(QStringLiteral("language"),
+                                QApplication::translate("main", "User interface language: cs or en "
+                                                                "(default: the settings, else the "
+                                                                "system language)."),
+                                QStringLiteral("code"));
+    parser.addOption(language);
     QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
         QApplication::translate("main", "Save the window as PNG once the program has loaded, "
@@ -37,6 +43,9 @@ int main(int argc, char **argv)
     parser.addPositionalArgument(QStringLiteral("program"),
                                  QApplication::translate("main", "G-code program to open."));
     parser.process(app);
+    frezka::gui::applyLanguage(frezka::gui::effectiveLanguage(
+        parser.isSet(language) ? parser.value(language)
+                               : QSettings().value(QStringLiteral("language")).toString()));
 
     frezka::gui::MainWindowOptions options;
     if (parser.isSet(software))

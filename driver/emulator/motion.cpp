@@ -76,6 +76,8 @@ MotionEngine::Segment MotionEngine::currentSegment() const
     const double a = head.isHoming ? kHomingAccel : head.accelPulsesPerS2;
     const double remaining = std::max(0.0, length - m_s);
     const double v2 = sq(m_v);
+    if (length <= 0)
+        return {0, 0, m_v, false}; // a zero vector passes the speed through
     if (m_stopping) {
         const double stopDistance = v2 / (2 * a);
         if (stopDistance >= remaining)
@@ -84,7 +86,9 @@ MotionEngine::Segment MotionEngine::currentSegment() const
     }
     const double c = cruiseFor(head);
     const double e = std::min(exitTarget(), c);
-    const double tol = kRel * std::max(v2, sq(e)) + 1e-9;
+    // Rounding noise is judged against the scale of the whole vector, not the (possibly tiny)
+    // speed left near its end.
+    const double tol = 1e-9 * std::max({v2, sq(c), a * length}) + 1e-9;
     // Cannot brake in time: brake all the way and arrive too fast (a brake violation).
     if (v2 - 2 * a * remaining > sq(e) + tol)
         return {-a, length, std::sqrt(v2 - 2 * a * remaining), true};
@@ -152,6 +156,8 @@ double MotionEngine::nextWatchProgress() const
 
 double MotionEngine::dwellRemaining() const
 {
+    if (!m_queue.empty() && m_queue.front().isHoming)
+        return 0; // homing travel is one move: no T pause between its legs
     return std::max(0.0, m_restSince + m_pauseS - m_now);
 }
 
@@ -235,7 +241,8 @@ void MotionEngine::finishStop()
 void MotionEngine::completeHead()
 {
     const MotionVector head = m_queue.front();
-    const double allowed = m_stopping ? kNever : std::min(exitTarget(), cruiseFor(head));
+    const double allowed =
+        m_stopping || head.lengthSteps() <= 0 ? kNever : std::min(exitTarget(), cruiseFor(head));
     for (int i = 0; i < kMaxAxes; ++i)
         m_base[i] += head.steps[i];
     m_queue.pop_front();
@@ -306,6 +313,14 @@ void MotionEngine::reset()
 
 void MotionEngine::enqueue(const MotionVector &v)
 {
+    if (readings::kZeroVectorDoneAtOnce && m_queue.empty() && !m_held && v.lengthSteps() == 0) {
+        if (!v.isHoming)
+            ++m_stats.vectorsExecuted;
+        m_prevEndedDry = false;
+        if (onVectorDone)
+            onVectorDone(v);
+        return;
+    }
     m_queue.push_back(v);
 }
 

@@ -7,6 +7,7 @@
 // can adopt or change them. Each is used from exactly one place in the emulator; tests in
 // tests/driver/emulator/readings_test.cpp pin every one of them.
 
+#include "driver/protocol/lines.h"
 #include "driver/protocol/variant.h"
 
 #include <array>
@@ -69,15 +70,23 @@ inline constexpr bool kMpgSendsReports = false;
 // lines of a packet must follow each other within it.
 inline constexpr double kWatchdogSeconds = 0.1;
 
-// Longest command line accepted (bytes between '!' and CR); longer lines are answered code 4
-// once their CR arrives and do not advance the index.
-inline constexpr std::size_t kMaxLineLength = 96;
+// Longest command line accepted (bytes between '!' and CR), the codec's line limit; longer
+// lines are answered code 4 once their CR arrives and do not advance the index.
+inline constexpr std::size_t kMaxLineLength = protocol::kMaxLineLength;
+
+// Bytes that arrive while H or W is still to be answered wait in a receive buffer of this size
+// and are handled after the reply; more are lost.
+inline constexpr std::size_t kReceiveBufferBytes = 1024;
 
 // After J the unit is deaf for this long (manual: "about 2 s"); bytes received meanwhile are lost.
 inline constexpr double kResetSeconds = 2.0;
 
 // T (pause between non-continuous moves) after reset, ms; the manuals' reset list omits T.
 inline constexpr int kResetPauseMs = 10;
+
+// A zero vector (L0,0,0) given to an idle unit is done at once, without the T pause, so that
+// "L0,0,0 answered 0" really means "nothing queued" and N or W may follow immediately.
+inline constexpr bool kZeroVectorDoneAtOnce = true;
 
 // Y reply: the code and the echoed command as one value: "!0Y-" -> "0,Y-".
 ReplyParts mpgReply(int code, std::string_view echoedCommand);
@@ -114,8 +123,8 @@ inline bool inputActive(bool level, bool polarityActiveHigh)
 }
 
 // Brake-violation tolerance: an arrival faster than the allowed exit speed by more than this
-// (pulses/s, plus 1e-9 relative) counts as a violation.
-inline constexpr double kBrakeViolationTolerance = 1e-6;
+// (pulses/s, plus 1e-9 relative) counts as a violation; below it is floating-point noise.
+inline constexpr double kBrakeViolationTolerance = 0.01;
 
 // The index and the last reply are shared by addresses 0 and 7 (one processor).
 inline constexpr bool kIndexSharedByAddresses = true;

@@ -88,7 +88,9 @@ int LinkEngine::indexAfter() const
 {
     const int before = m_indexBefore.value_or(0);
     if (m_packet)
-        return (before + packetIndexAdvance(static_cast<int>(m_commands.size()))) % 256;
+        return (before + packetIndexAdvance(static_cast<int>(m_commands.size())) +
+                (m_options.doublePacketStart ? 1 : 0)) %
+               256;
     return advancesIndex(m_commands.front().op) ? (before + 1) % 256 : before;
 }
 
@@ -152,7 +154,10 @@ void LinkEngine::beginTransaction(double now)
 
 void LinkEngine::transmitMain(double now)
 {
+    m_doubtfulSeen = false;
     m_wire = m_packet ? encodePacket(m_commands, m_checksums) : encode(m_commands[0], m_checksums);
+    if (m_packet && m_options.doublePacketStart)
+        m_wire = encode(cmd::packetStart(), m_checksums) + m_wire;
     m_out += m_wire;
     m_stats.bytesOut += static_cast<std::int64_t>(m_wire.size());
     log(LinkLogKind::Sent, m_packet ? describe() : encodeBody(m_commands[0]));
@@ -241,8 +246,19 @@ void LinkEngine::onMainReply(const Line &line, double now)
     }
     // Possibly damaged on the way in (code 4 = bad checksum) or cut short (code 2): the index
     // tells whether the unit took it as a command.
-    const bool doubtful =
-        (reply->code == ReplyCode::Syntax && m_checksums) || reply->code == ReplyCode::Watchdog;
+    // A packet's "4,k" is definitive (a line was damaged: k ran, the rest did not); a plain "4"
+    // or "2" may belong to a damaged *E or to an earlier broken line.
+    const bool counted = m_packet && !reply->values.empty();
+    const bool doubtful = (reply->code == ReplyCode::Syntax && m_checksums && !counted) ||
+                          reply->code == ReplyCode::Watchdog;
+    if (doubtful && m_packet && !m_doubtfulSeen) {
+        // A plain "4" may answer a damaged first *S while the packet itself still runs and
+        // answers with its count: wait for that until the packet's deadline.
+        m_doubtfulSeen = true;
+        m_lastRaw = line.text;
+        log(LinkLogKind::Recovery, describe() + ": reply '" + line.text + "', waiting for more");
+        return;
+    }
     if (doubtful && !m_syncing && (m_indexBefore || !exact())) {
         m_lastRaw = line.text;
         recover("reply '" + line.text + "' (" + std::string(replyCodeText(reply->code)) + ")", now);

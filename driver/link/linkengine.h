@@ -49,6 +49,11 @@ struct LinkOptions
     double homeTimeoutS = 600;  // W replies only when homing has finished
     double settleS = 0.01;      // quiet time after a garbled line before asking '@'
     int maxAttempts = 10;       // recovery steps per transaction before it fails
+    // Open packets with *S twice. A lost *S would make the unit run the packet's lines as
+    // single commands, where a damaged line leaves a hole that no later check can place; a
+    // second *S inside an open packet merely restarts it. The connect sequence tests that the
+    // unit accepts it and switches it off otherwise.
+    bool doublePacketStart = true;
     friend bool operator==(const LinkOptions &, const LinkOptions &) = default;
 };
 
@@ -115,6 +120,7 @@ public:
     // Sets the framing after the unit's checksum state is known (the engine also follows
     // successful %+ / %- by itself).
     void setChecksums(bool on) { m_checksums = on; }
+    void setDoublePacketStart(bool on) { m_options.doublePacketStart = on; }
     std::optional<int> unitIndex() const { return m_index; }
     const LinkStats &stats() const { return m_stats; }
     const LinkOptions &options() const { return m_options; }
@@ -167,6 +173,7 @@ private:
     std::uint64_t m_tag = 0;
     std::string m_wire; // its bytes, as sent
     int m_attempts = 0;
+    bool m_doubtfulSeen = false; // a packet got a plain 4 / 2: its counted reply may follow
     int m_resent = 0;
     int m_recovered = 0;
     std::string m_lastRaw;

@@ -87,7 +87,7 @@ void LinkWorker::connectTo(const ConnectionSettings &settings)
         m_transport = nullptr;
     }
     QString error;
-    m_transport = m_factory(settings, this, &error);
+    m_transport = m_factory(settings, m_config, this, &error);
     if (!m_transport) {
         MachineError e;
         e.message = error.toStdString();
@@ -190,6 +190,10 @@ void LinkWorker::overrideUp()
 void LinkWorker::overrideDown()
 {
     apply(core().overrideStep(false, now()));
+}
+void LinkWorker::writeEeprom()
+{
+    apply(core().writeEeprom(now()));
 }
 void LinkWorker::sendRaw(const QString &text)
 {

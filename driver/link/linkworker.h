@@ -32,9 +32,12 @@ public:
     // Creates the transport for a connection (serial port or in-process emulator). Replaceable
     // for tests; the default knows both kinds.
     using TransportFactory =
-        std::function<Transport *(const ConnectionSettings &, QObject *parent, QString *error)>;
+        std::function<Transport *(const ConnectionSettings &, const machine::MachineConfig &,
+                                  QObject *parent, QString *error)>;
     void setTransportFactory(TransportFactory factory) { m_factory = std::move(factory); }
     void setCoreOptions(const CoreOptions &options) { m_options = options; }
+    // The figures of the last job. Call from the worker's thread (or when it has none).
+    JobReport jobReport() const { return m_core ? m_core->jobReport() : JobReport{}; }
 
 public slots:
     void setMachineConfig(const frezka::machine::MachineConfig &config);
@@ -57,6 +60,7 @@ public slots:
     void overrideUp();
     void overrideDown();
     void sendRaw(const QString &text);
+    void writeEeprom();
 
 signals:
     void stateChanged(const frezka::driver::MachineState &state);
@@ -81,8 +85,9 @@ private:
     TransportFactory m_factory;
 };
 
-// The default transport factory: SerialTransport, or EmulatorTransport when the emulator is
-// built in. Returns nullptr and sets *error when the kind is not available.
-Transport *createTransport(const ConnectionSettings &settings, QObject *parent, QString *error);
+// The default transport factory: SerialTransport, or EmulatorTransport (the variant and home
+// switches from the profile). Returns nullptr and sets *error when it cannot.
+Transport *createTransport(const ConnectionSettings &settings, const machine::MachineConfig &config,
+                           QObject *parent, QString *error);
 
 } // namespace frezka::driver

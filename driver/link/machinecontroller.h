@@ -7,11 +7,18 @@
 // log lines, errors). Nothing here blocks and nothing here holds machine state besides the
 // last snapshot for convenience.
 //
-// Status of the operations (updated as they land; the rest is listed in the report):
-//   connectTo (serial port or pty path, built-in emulator), disconnectFromUnit, run, pause,
-//   resume, abort, setOverride, overrideUp/Down, setSpindleRpm, setOutputs, sendRaw,
-//   toolLift / toolLower, home, jogStep, jogContinuous / jogStop, setMpg:
-//   see the "Implemented" column of docs/driver.md.
+// Status of the operations (what the link thread does with each, tests in tests/driver/link):
+//   implemented and tested on the emulator: connectTo (serial port / pty path, built-in
+//     emulator), disconnectFromUnit, run, pause, resume, abort, toolLift / toolLower (KEEP /
+//     RESTORE, optional spindle stop, optional new speed V + XA), home, jogStep, jogContinuous /
+//     jogStop (clipped to the soft limits), setSpindleRpm, setOutputs, setOverride; the STOP
+//     input and other enabled interrupts hold the job (state.hold == Interrupt); link loss keeps
+//     the job and re-establishes its progress from the counters after reconnecting.
+//   implemented, no dedicated test yet: setMpg, overrideUp / overrideDown, sendRaw.
+//   G38.2-.5 probe moves in a job (IN15 armed as an interrupt; trip point in state.probeSteps;
+//     when the probe stops short and motion follows, the job ends: the planner planned the rest
+//     from the probe's end point).
+//   writeEeprom: writes the profile's EEPROM settings when asked (connect only compares them).
 
 #include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
@@ -34,7 +41,7 @@ struct ConnectionSettings
 {
     enum class Kind : std::uint8_t {
         SerialPort, // a real port or a pty path ("/dev/ttyUSB0", "/dev/pts/5")
-        Emulator,   // the built-in in-process emulator, real time
+        Emulator,   // the built-in in-process emulator, real time (variant from the profile)
     };
     Kind kind = Kind::Emulator;
     QString portName;     // SerialPort
@@ -90,6 +97,9 @@ public slots:
     // A raw command for the console, e.g. "!0PF" or "PF" (address 0 assumed). Validated
     // against the variant; the reply comes as a logLine.
     void sendRaw(const QString &text);
+    // Writes the profile's EEPROM settings to the unit (only when asked; on connect they are
+    // only compared: state.eepromDifferences). Idle only.
+    void writeEeprom();
 
 signals:
     void stateChanged(const frezka::driver::MachineState &state);

@@ -138,6 +138,18 @@ void MachineCore::onOutcome(const Outcome &o)
     m_inFlight = nullptr;
     if (then)
         then(o);
+    // Every reply carries INTA: an input interrupt is seen at the next reply, whatever it was.
+    if (o.status == OutcomeStatus::Ok && o.reply.inta && !m_haltPending && !m_haltExpected &&
+        m_state.mode == MachineMode::Running && !m_state.inta) {
+        m_state.inta = true;
+        interrupted();
+    }
+}
+
+bool MachineCore::streaming() const
+{
+    return m_job && m_state.mode == MachineMode::Running && !m_streamBlocked &&
+           m_now >= m_waitUntil && m_next < m_program.commands.size();
 }
 
 double MachineCore::deadline() const
@@ -207,14 +219,14 @@ double MachineCore::nextPollTime() const
     default:
         break;
     }
-    const bool streaming = m_job && m_state.mode == MachineMode::Running && !m_streamBlocked &&
-                           m_now >= m_waitUntil && m_next < m_program.commands.size();
-    if (!streaming || m_queueFullSeen)
+    if (!streaming() || m_queueFullSeen)
         return m_lastPoll + m_options.pollIntervalS;
-    // Wire-bound streaming: a poll costs a round trip the queue may not have.
-    const std::int64_t queued = m_vectorsAcked - m_vectorPrefix[std::min(m_exec, m_next)];
-    if (queued >= m_options.pollMinQueued)
-        return m_lastPoll + m_options.pollIntervalS;
+    // A poll costs a round trip: take it only while the unit has motion queued to cover it
+    // several times over; when the wire is the bottleneck, poll at least every maxPollGapS.
+    // Wire-bound: polls may take at most kPollShare of the link's time.
+    constexpr double kPollShare = 0.04;
+    if (bufferedS() >= 3 * m_rttS + 0.02)
+        return m_lastPoll + std::max(m_options.pollIntervalS, m_rttS / kPollShare);
     return m_lastPoll + m_options.maxPollGapS;
 }
 
@@ -233,7 +245,13 @@ void MachineCore::startPoll(double now)
     if (m_job)
         ++m_report.polls;
     const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
-    const bool inputs = now - m_lastInputsPoll >= m_options.inputsPollIntervalS;
+    // While streaming, every reply carries INTA (interrupts) and packet replies carry queue
+    // full: F and the inputs are read less often there, to leave the wire to the job.
+    const bool stream = streaming();
+    const bool flags = !stream || m_pollCount % 4 == 0;
+    ++m_pollCount;
+    const bool inputs = now - m_lastInputsPoll >= (stream ? 4 * m_options.inputsPollIntervalS
+                                                          : m_options.inputsPollIntervalS);
     if (inputs)
         m_lastInputsPoll = now;
     // Position now, F right after it, inputs after that: one poll, ahead of other steps.
@@ -249,14 +267,18 @@ void MachineCore::startPoll(double now)
         sendFront(cmd::input2(), byte(m_state.inputs2));
     if (inputs)
         sendFront(cmd::input1(), byte(m_state.inputs1));
-    sendFront(cmd::flag(), [this](const Outcome &o) {
-        if (o.status != OutcomeStatus::Ok || !o.reply.ok())
-            return (void)unitError(o, "status poll", MachineMode::Alarm);
-        applyFlags(*o.reply.hexValue(), m_now);
-    });
+    if (flags) {
+        sendFront(cmd::flag(), [this](const Outcome &o) {
+            if (o.status != OutcomeStatus::Ok || !o.reply.ok())
+                return (void)unitError(o, "status poll", MachineMode::Alarm);
+            applyFlags(*o.reply.hexValue(), m_now);
+        });
+    }
+    m_pollSentAt = now;
     m_inFlight = [this](const Outcome &o) {
         if (o.status != OutcomeStatus::Ok || !o.reply.ok())
             return (void)unitError(o, "position poll", MachineMode::Alarm);
+        m_rttS = 0.8 * m_rttS + 0.2 * (m_now - m_pollSentAt);
         applyPosition(o.reply);
     };
     m_engine.start(pos, now);
@@ -272,8 +294,10 @@ void MachineCore::applyPosition(const Reply &r)
         m_state.positionMm[i] = mmFromSteps(static_cast<int>(i), (*v)[i]);
     }
     m_dirty = true;
-    if (m_job)
+    if (m_job) {
         locateExecuting();
+        m_execAt = m_now;
+    }
 }
 
 void MachineCore::applyFlags(std::uint8_t flags, double now)
@@ -285,7 +309,7 @@ void MachineCore::applyFlags(std::uint8_t flags, double now)
     m_state.inta = (flags & 0x80) != 0;
     m_state.queueFull = (flags & 0x20) != 0;
     m_dirty = true;
-    if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running)
+    if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running && !m_haltExpected)
         interrupted();
     if (m_state.inta && !wasInta &&
         (m_state.mode == MachineMode::Jogging || m_state.mode == MachineMode::Idle))
@@ -303,14 +327,41 @@ void MachineCore::afterIdle(std::function<void()> then)
     });
 }
 
+void MachineCore::afterJobIdle(std::function<void()> then)
+{
+    m_jobIdleWaiters.push_back(std::move(then));
+    afterIdle(nullptr);
+}
+
+void MachineCore::afterStopOrInterrupt(std::function<void()> then)
+{
+    m_stopWaiters.push_back(std::move(then));
+    afterIdle(nullptr);
+}
+
 void MachineCore::checkIdleWaiters()
 {
-    if (m_state.run || m_idleWaiters.empty())
+    if ((m_state.inta || !m_state.run) && !m_stopWaiters.empty()) {
+        auto stop = std::move(m_stopWaiters);
+        m_stopWaiters.clear();
+        for (auto &w : stop)
+            w();
+    }
+    if (m_state.run)
         return;
     auto waiters = std::move(m_idleWaiters);
     m_idleWaiters.clear();
-    for (auto &w : waiters)
-        w();
+    // The job's own waits (WaitIdle, M0, ProgramEnd, ...) count only while it runs: a queue
+    // kept by K or a pause is not the job's end.
+    if (m_state.mode == MachineMode::Running && !m_kept) {
+        for (auto &w : m_jobIdleWaiters)
+            waiters.push_back(std::move(w));
+        m_jobIdleWaiters.clear();
+    }
+    for (auto &w : waiters) {
+        if (w)
+            w();
+    }
 }
 
 // ---- transport events --------------------------------------------------------------------
@@ -324,6 +375,10 @@ void MachineCore::linkOpened(double now)
     m_idleWaiters.clear();
     m_inFlight = nullptr;
     m_haltPending = false;
+    m_jobIdleWaiters.clear();
+    m_stopWaiters.clear();
+    if (m_job)
+        m_streamBlocked = false; // a wait in progress is taken up again from the program
     setMode(MachineMode::Connecting);
     connectSequence();
     pump(now);

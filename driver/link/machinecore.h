@@ -58,9 +58,12 @@ struct JobReport
     std::int64_t linkBytes = 0; // both directions during the job
     std::int64_t resent = 0;
     std::int64_t recovered = 0;
-    std::int64_t verified = 0; // times progress was re-established from the counters
-    std::int64_t polls = 0;    // position polls during the job
-    bool finished = false;     // reached ProgramEnd / the end of the program
+    std::int64_t verified = 0;   // times progress was re-established from the counters
+    std::int64_t packets = 0;    // packets sent (first attempts and resends)
+    std::int64_t polls = 0;      // position polls during the job
+    double firstVectorAckS = -1; // when the unit accepted the first / last motion command
+    double lastVectorAckS = -1;
+    bool finished = false; // reached ProgramEnd / the end of the program
     friend bool operator==(const JobReport &, const JobReport &) = default;
 };
 
@@ -95,6 +98,8 @@ public:
     Result setOverride(int percent, double now);
     Result overrideStep(bool up, double now);
     Result sendRaw(const std::string &text, double now);
+    // Writes the profile's EEPROM settings (§12) to the unit, then compares again.
+    Result writeEeprom(double now);
     void setConfig(machine::MachineConfig config) { m_config = std::move(config); }
 
     const MachineState &state() const { return m_state; }
@@ -131,27 +136,43 @@ private:
     bool unitError(const Outcome &o, const std::string &what, MachineMode mode);
     void log(const std::string &text);
     void afterIdle(std::function<void()> then);
+    void afterJobIdle(std::function<void()> then);
+    // Runs `then` when F shows RUN = 0 or INTA = 1 (an interrupt braking a move).
+    void afterStopOrInterrupt(std::function<void()> then);
+    void whenStill(std::function<void()> then);
     void checkIdleWaiters();
 
     // connect sequence (machinecore_connect.cpp)
     void connectSequence();
     void setupUnit();
     void compareEeprom();
+    void probeDoublePacketStart();
     void connected();
 
     // job streaming (machinecore_job.cpp)
     void streamStep(double now);
+    void estimateDurations();
     void sendPacket(double now);
     void onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, double now);
     void acceptUpTo(std::size_t end);
     void matchProgress();
+    void readStillPosition();
     void onJobCommandOutcome(const Outcome &o, std::size_t index, double now);
     void handlePcOp(const machine::UnitCommand &c, double now);
     void finishJob(bool ok);
+    void finishWithPosition();
+    void startProbe(std::size_t index);
+    void endProbe(std::size_t index, bool mustTrip);
     void verifyProgress(const std::string &why);
     void resendModals(std::function<void()> then);
     void locateExecuting();
     int freeQueueEstimate() const;
+    int maxPacket() const;
+    double bufferedS() const;
+    void calibrateFull();
+    std::int64_t queuedAfter(double aheadS) const; // estimated motion time queued in the unit
+    std::size_t execEstimate() const; // estimated executing command, from time since the poll
+    bool streaming() const;
     protocol::Command toCommand(const machine::UnitCommand &c) const;
 
     // operations helpers (machinecore_ops.cpp)
@@ -169,6 +190,8 @@ private:
     std::deque<Step> m_steps;                         // operation steps, before polls and the job
     Then m_inFlight;                                  // continuation of the transaction in flight
     std::vector<std::function<void()>> m_idleWaiters; // run when F shows RUN = 0
+    std::vector<std::function<void()>> m_jobIdleWaiters; // the same, only while the job runs
+    std::vector<std::function<void()>> m_stopWaiters;    // RUN = 0 or INTA = 1
     double m_waitUntil = -1; // a dwell or back-off: nothing from the job before this time
     bool m_open = false;
 
@@ -192,11 +215,18 @@ private:
     std::int64_t m_bytesAtStart = 0;
     bool m_needVerify = false; // progress must be re-established from the counters
     bool m_jogContinuous = false;
-    int m_packetLimit = 1;                    // adaptive packet size (commands)
+    int m_packetLimit = 1;            // adaptive packet size (commands)
+    std::vector<double> m_timePrefix; // estimated motion seconds before each program index
+    double m_execAt = 0;              // when m_exec was read from the unit
+    double m_rttS = 0.01;             // round trip of a poll, smoothed
+    double m_pollSentAt = 0;
+    std::int64_t m_pollCount = 0;
     std::vector<std::int64_t> m_vectorPrefix; // motion commands before each program index
     std::int64_t m_resentAtStart = 0;
     std::int64_t m_recoveredAtStart = 0;
-    bool m_holdNeedsGo = false; // the unit holds (INTA): resume with G
+    bool m_holdNeedsGo = false;
+    bool m_haltExpected = false; // an interrupt is part of the operation (probe), not a hold // the
+                                 // unit holds (INTA): resume with G
     // tool lift
     std::int64_t m_liftSteps = 0;
     bool m_spindleStopped = false;

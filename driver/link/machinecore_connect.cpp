@@ -12,6 +12,7 @@
 
 #include "machinecore.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace frezka::driver {
@@ -83,7 +84,32 @@ void MachineCore::setupUnit()
     }
     if (m_options.compareEeprom && ee.sync)
         compareEeprom();
+    probeDoublePacketStart();
     connected();
+}
+
+// A one-command packet opened with *S twice: "0,1" means the unit restarts an open packet on a
+// second *S, and every packet is sent that way (see LinkOptions::doublePacketStart).
+void MachineCore::probeDoublePacketStart()
+{
+    if (!m_options.packets || !m_options.link.doublePacketStart)
+        return;
+    m_steps.push_back({cmd::flag(), [this](const Outcome &) {
+                           m_engine.setDoublePacketStart(true);
+                           m_inFlight = [this](const Outcome &o) {
+                               const bool ok =
+                                   o.status == OutcomeStatus::Ok && o.reply.ok() && o.accepted == 1;
+                               m_engine.setDoublePacketStart(ok);
+                               log(ok ? "packets open with *S *S"
+                                      : "the unit refuses *S *S: packets open with one *S");
+                               if (o.status != OutcomeStatus::Ok)
+                                   unitError(o, "testing packets", MachineMode::Alarm);
+                           };
+                           const int b =
+                               std::min(variantInfo(m_config.unit.variant).resetBrakeSpeed,
+                                        m_config.unit.maxPulseRate);
+                           m_engine.startPacket({cmd::brake(b)}, m_now);
+                       }});
 }
 
 void MachineCore::compareEeprom()
@@ -154,6 +180,43 @@ void MachineCore::connected()
         }
         setMode(MachineMode::Idle);
     });
+}
+
+} // namespace frezka::driver
+
+namespace frezka::driver {
+
+MachineCore::Result MachineCore::writeEeprom(double now)
+{
+    if (m_state.mode != MachineMode::Idle)
+        return MachineError{std::string("Writing the EEPROM is not possible now (the machine is ") +
+                                machineModeName(m_state.mode) + ")",
+                            {},
+                            {},
+                            -1};
+    const bool wide = variantInfo(m_config.unit.variant).hasEepromFloat;
+    for (const machine::EepromEntry &e : machine::eepromEntries(m_config)) {
+        Command c;
+        switch (e.kind) {
+        case machine::EepromKind::Byte:
+            c = cmd::eepromWriteByte(e.address, static_cast<int>(std::lround(e.value)));
+            break;
+        case machine::EepromKind::Float:
+            c = cmd::eepromWriteFloat(e.address, e.value);
+            break;
+        case machine::EepromKind::Uint32:
+            c = cmd::eepromWriteUint(e.address, std::llround(e.value));
+            break;
+        }
+        if (!wide && e.kind != machine::EepromKind::Byte)
+            continue;
+        send(c, [this, what = e.what](const Outcome &o) {
+            unitError(o, "writing the EEPROM (" + what + ")", MachineMode::Alarm);
+        });
+    }
+    compareEeprom();
+    pump(now);
+    return std::nullopt;
 }
 
 } // namespace frezka::driver

@@ -111,11 +111,13 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
     m_vectorsAcked = 0;
     m_streamBlocked = m_queueFullSeen = m_needVerify = false;
     m_waitUntil = -1;
-    m_packetLimit =
-        m_options.maxPacketCommands > 0 ? m_options.maxPacketCommands : info.queueCapacity - 1;
+    m_packetLimit = maxPacket();
     m_vectorPrefix.assign(m_program.commands.size() + 1, 0);
     for (std::size_t i = 0; i < m_program.commands.size(); ++i)
         m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(m_program.commands[i].op) ? 1 : 0);
+    estimateDurations();
+    m_execAt = now;
+    m_pollCount = 0;
     m_report = {};
     m_report.startS = now;
     m_bytesAtStart = m_engine.stats().bytesIn + m_engine.stats().bytesOut;
@@ -131,11 +133,99 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
     return std::nullopt;
 }
 
+// The unit just reported a full queue: it holds `capacity` vectors ending at m_next.
+void MachineCore::calibrateFull()
+{
+    const std::int64_t capacity = variantInfo(m_config.unit.variant).queueCapacity;
+    std::size_t k = m_next;
+    while (k > m_exec && m_vectorPrefix[m_next] - m_vectorPrefix[k - 1] <= capacity)
+        --k;
+    m_exec = std::max(m_exec, k);
+    m_execAt = m_now;
+}
+
+std::size_t MachineCore::execEstimate() const
+{
+    double elapsed = m_now - m_execAt;
+    std::size_t i = std::min(m_exec, m_next);
+    while (i < m_next && elapsed >= m_timePrefix[i + 1] - m_timePrefix[i]) {
+        elapsed -= m_timePrefix[i + 1] - m_timePrefix[i];
+        ++i;
+    }
+    return i;
+}
+
+double MachineCore::bufferedS() const
+{
+    if (!m_job)
+        return 0;
+    const std::size_t from = std::min(m_exec, m_next);
+    return std::max(0.0, m_timePrefix[m_next] - m_timePrefix[from] - (m_now - m_execAt));
+}
+
+// The largest packet: the unit's queue less one.
+int MachineCore::maxPacket() const
+{
+    const int queue = variantInfo(m_config.unit.variant).queueCapacity - 1;
+    const int wanted = m_options.maxPacketCommands > 0 ? m_options.maxPacketCommands : queue;
+    return std::clamp(wanted, 1, queue);
+}
+
 int MachineCore::freeQueueEstimate() const
 {
     const int capacity = variantInfo(m_config.unit.variant).queueCapacity;
-    const std::int64_t queued = m_vectorsAcked - m_vectorPrefix[std::min(m_exec, m_next)];
+    const std::int64_t queued = m_vectorsAcked - m_vectorPrefix[execEstimate()];
     return static_cast<int>(std::max<std::int64_t>(0, capacity - 1 - queued));
+}
+
+// Rough motion time per command (cruise at V, or min(V, B) for short vectors; acceleration
+// ignored): used only to judge how much motion the unit holds, never for the motion itself.
+void MachineCore::estimateDurations()
+{
+    double v = 1000, b = variantInfo(m_config.unit.variant).resetBrakeSpeed;
+    std::int64_t shortSteps = 512;
+    bool vk = false;
+    m_timePrefix.assign(m_program.commands.size() + 1, 0.0);
+    for (std::size_t i = 0; i < m_program.commands.size(); ++i) {
+        const machine::UnitCommand &c = m_program.commands[i];
+        double t = 0;
+        switch (c.op) {
+        case UnitOp::Speed:
+            v = static_cast<double>(std::max<std::int64_t>(10, c.value));
+            break;
+        case UnitOp::Brake:
+            b = static_cast<double>(std::max<std::int64_t>(10, c.value));
+            break;
+        case UnitOp::ShortThreshold:
+            shortSteps = c.value;
+            break;
+        case UnitOp::SpeedModeVk:
+            vk = true;
+            break;
+        case UnitOp::SpeedModeVn:
+            vk = false;
+            break;
+        case UnitOp::Line:
+        case UnitOp::Vector: {
+            std::int64_t major = 0;
+            double sq = 0;
+            for (int a = 0; a < 4; ++a) {
+                major = std::max<std::int64_t>(major, std::abs(c.d[a]));
+                sq += a < 3 ? static_cast<double>(c.d[a]) * c.d[a] : 0.0;
+            }
+            const double length = vk ? std::sqrt(sq) : static_cast<double>(major);
+            const double rate = major < shortSteps ? std::min(v, b) : v;
+            t = length / rate;
+            break;
+        }
+        case UnitOp::Dwell:
+            t = static_cast<double>(c.value) / 1000.0;
+            break;
+        default:
+            break;
+        }
+        m_timePrefix[i + 1] = m_timePrefix[i] + t;
+    }
 }
 
 void MachineCore::streamStep(double now)
@@ -144,7 +234,7 @@ void MachineCore::streamStep(double now)
         return;
     if (m_next >= m_program.commands.size()) {
         m_streamBlocked = true;
-        afterIdle([this] { finishJob(true); });
+        afterJobIdle([this] { finishWithPosition(); });
         return;
     }
     const machine::UnitCommand &c = m_program.commands[m_next];
@@ -165,29 +255,59 @@ void MachineCore::streamStep(double now)
     m_engine.start(wire, now);
 }
 
+// Vectors still queued in the unit `ahead` seconds from now, by the duration estimates.
+std::int64_t MachineCore::queuedAfter(double ahead) const
+{
+    const std::size_t from = std::min(m_exec, m_next);
+    const double at =
+        std::min(m_timePrefix[from] + (m_now - m_execAt) + ahead, m_timePrefix[m_next]);
+    // The command executing at program time `at`: the last k with m_timePrefix[k] <= at.
+    auto it = std::upper_bound(m_timePrefix.begin() + static_cast<std::ptrdiff_t>(from),
+                               m_timePrefix.begin() + static_cast<std::ptrdiff_t>(m_next) + 1, at);
+    const auto k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+        static_cast<std::ptrdiff_t>(from), (it - m_timePrefix.begin()) - 1));
+    return m_vectorPrefix[m_next] - m_vectorPrefix[std::min(k, m_next)];
+}
+
 void MachineCore::sendPacket(double now)
 {
+    // As many C/B commands as fit: the unit takes a packet at its *E, by when it has run part of
+    // its queue for as long as the packet takes on the wire.
     const auto &cmds = m_program.commands;
-    const int room = std::min(freeQueueEstimate(), static_cast<int>(m_packetLimit));
+    const std::int64_t capacity = variantInfo(m_config.unit.variant).queueCapacity - 1;
     std::vector<Command> packet;
-    int vectors = 0;
+    std::int64_t vectors = 0;
+    std::size_t bytes = 24; // *S *S *E
     std::size_t end = m_next;
     while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
         const UnitOp op = cmds[end].op;
         if (op != UnitOp::Vector && op != UnitOp::Brake)
             break;
-        if (op == UnitOp::Vector && vectors >= room)
+        Command c = toCommand(cmds[end]);
+        const std::size_t size = encode(c, m_engine.checksums()).size();
+        if (op == UnitOp::Vector &&
+            queuedAfter(m_engine.wireTime(bytes + size)) + vectors + 1 > capacity)
             break;
+        bytes += size;
         vectors += op == UnitOp::Vector ? 1 : 0;
-        packet.push_back(toCommand(cmds[end]));
+        packet.push_back(std::move(c));
         ++end;
     }
     if (packet.empty() ||
         (vectors == 0 && cmds[end < cmds.size() ? end : end - 1].op == UnitOp::Vector)) {
-        // No room in the unit's queue by our estimate: wait for the next poll to tell.
-        m_waitUntil = std::max(now, m_lastPoll) + m_options.pollIntervalS;
+        // No room in the unit's queue by our estimate: wait until about 16 vectors have run.
+        const std::size_t at = execEstimate();
+        const std::size_t later = std::min(at + 16, m_next);
+        m_waitUntil = now + std::clamp(m_timePrefix[later] - m_timePrefix[at], 0.002,
+                                       m_options.pollIntervalS);
         m_queueFullSeen = true;
         return;
+    }
+    // The command index (mod 256) must tell a packet that arrived from one that did not: all its
+    // lines (*S *S, the commands, *E) must not advance it by a multiple of 256.
+    if ((packet.size() + 3) % 256 == 0) {
+        packet.pop_back();
+        --end;
     }
     const std::size_t first = m_next;
     m_inflightEnd = end;
@@ -198,6 +318,7 @@ void MachineCore::sendPacket(double now)
     }
     const std::size_t n = packet.size();
     m_inFlight = [this, first, n](const Outcome &o) { onPacketOutcome(o, first, n, m_now); };
+    ++m_report.packets;
     m_engine.startPacket(std::move(packet), now);
 }
 
@@ -207,6 +328,9 @@ void MachineCore::acceptUpTo(std::size_t end)
         if (isMotion(m_program.commands[m_next].op)) {
             ++m_vectorsAcked;
             ++m_report.vectors;
+            if (m_report.firstVectorAckS < 0)
+                m_report.firstVectorAckS = m_now;
+            m_report.lastVectorAckS = m_now;
         }
         ++m_report.commands;
     }
@@ -229,14 +353,15 @@ void MachineCore::onPacketOutcome(const Outcome &o, std::size_t first, std::size
     switch (o.reply.code) {
     case ReplyCode::Ok:
         m_queueFullSeen = false;
-        m_packetLimit = std::min(m_options.maxPacketCommands > 0
-                                     ? m_options.maxPacketCommands
-                                     : variantInfo(m_config.unit.variant).queueCapacity - 1,
-                                 m_packetLimit + m_packetLimit / 2 + 1);
+        m_packetLimit = std::min(maxPacket(), m_packetLimit + m_packetLimit / 2 + 1);
         return;
     case ReplyCode::QueueFull:
+        // The queue is full right now: that calibrates the estimate of where the unit is.
         m_queueFullSeen = true;
-        m_waitUntil = now + m_options.pollIntervalS;
+        calibrateFull();
+        // Bytes beyond the free space are wasted wire time: start smaller next time.
+        m_packetLimit = std::max(16, static_cast<int>(accepted));
+        (void)now;
         return;
     case ReplyCode::Syntax:   // a line damaged on the way (bad checksum) or lost
     case ReplyCode::Watchdog: // the packet came in too slowly: none of the rest ran
@@ -291,7 +416,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
     m_streamBlocked = true;
     switch (c.op) {
     case UnitOp::WaitIdle:
-        afterIdle([this, index] {
+        afterJobIdle([this, index] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
@@ -299,7 +424,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
         });
         return;
     case UnitOp::Dwell:
-        afterIdle([this, index, ms = c.value] {
+        afterJobIdle([this, index, ms = c.value] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
@@ -318,7 +443,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
                                ? "M6: change to tool " + std::to_string(c.aux)
                            : kind == gcode::EventKind::OptionalPause ? "M1: optional stop"
                                                                      : "M0: program stop";
-        afterIdle([this, index, text] {
+        afterJobIdle([this, index, text] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
@@ -331,20 +456,151 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
         return;
     }
     case UnitOp::ProgramEnd:
-        afterIdle([this, index] {
+        afterJobIdle([this, index] {
             if (m_next != index)
                 return;
             acceptUpTo(index + 1);
-            finishJob(true);
+            finishWithPosition();
         });
         return;
     case UnitOp::Probe:
+        afterJobIdle([this, index] {
+            if (m_next == index)
+                startProbe(index);
+        });
+        return;
     default:
         m_streamBlocked = false;
-        fail(lineText(c) + ": G38 probing is not implemented in the driver yet", nullptr,
-             MachineMode::Alarm);
+        fail(lineText(c) + ": unknown unit program operation", nullptr, MachineMode::Alarm);
         return;
     }
+}
+
+// The job ran to its end: read the counters once more so that the report and the last state
+// show where the machine really is.
+void MachineCore::finishWithPosition()
+{
+    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+    send(pos, [this](const Outcome &o) {
+        if (unitError(o, "reading the final position", MachineMode::LinkLost))
+            return;
+        applyPosition(o.reply);
+        finishJob(true);
+    });
+}
+
+// G38.x: the tool sensor probe (IN15) as an interrupt, armed for contact (G38.2/.3) or for its
+// loss (G38.4/.5), then the probe move as an L. The unit brakes when the input fires; the
+// counters give the trip point. The planner planned the rest of the program from the probe's
+// end point, so when the probe stops short and motion follows, the job ends there (to be planned
+// again from the trip point) rather than run displaced.
+// Two position reads that agree: the machine stands (after RUN = 0 or an interrupt's brake).
+void MachineCore::whenStill(std::function<void()> then)
+{
+    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+    send(pos, [this, pos, then](const Outcome &first) {
+        if (unitError(first, "reading the position", MachineMode::Alarm))
+            return;
+        send(pos, [this, then, a = first.reply.values](const Outcome &second) {
+            if (unitError(second, "reading the position", MachineMode::Alarm))
+                return;
+            applyPosition(second.reply);
+            if (second.reply.values == a)
+                then();
+            else
+                whenStill(then);
+        });
+    });
+}
+
+void MachineCore::startProbe(std::size_t index)
+{
+    const machine::UnitCommand c = m_program.commands[index];
+    const auto kind = static_cast<gcode::ProbeKind>(c.aux);
+    const bool toward =
+        kind == gcode::ProbeKind::TowardErrorIfNoContact || kind == gcode::ProbeKind::Toward;
+    const bool mustTrip = kind == gcode::ProbeKind::TowardErrorIfNoContact ||
+                          kind == gcode::ProbeKind::AwayErrorIfNoLoss;
+    const machine::EepromConfig &ee = m_config.eeprom;
+    const std::uint8_t contactHigh = ee.polarityHigh & 0x80; // IN15 level that means contact
+    const auto armPolarity = static_cast<std::uint8_t>(
+        (ee.polarityHigh & 0x7F) | (toward ? contactHigh : (contactHigh ^ 0x80)));
+    send(cmd::input2(), [this, index, armPolarity](const Outcome &o) {
+        if (unitError(o, "reading the probe input", MachineMode::Alarm))
+            return;
+        if ((*o.reply.hexValue() & 0x80) == (armPolarity & 0x80)) {
+            m_steps.clear();
+            finishJob(false);
+            fail(lineText(m_program.commands[index]) +
+                     ": the probe input is already in the state the probe move waits for",
+                 &o, MachineMode::Alarm);
+        }
+    });
+    send(cmd::statusWrite(1, ee.interruptEnableHigh | 0x80),
+         [this](const Outcome &o) { unitError(o, "arming the probe input", MachineMode::Alarm); });
+    send(cmd::statusWrite(3, armPolarity),
+         [this](const Outcome &o) { unitError(o, "arming the probe input", MachineMode::Alarm); });
+    send(toCommand({machine::UnitOp::Line, c.d}), [this, index, mustTrip](const Outcome &o) {
+        if (unitError(o, "probe move", MachineMode::Alarm))
+            return;
+        m_haltExpected = true;
+        afterStopOrInterrupt([this, index, mustTrip] {
+            whenStill([this, index, mustTrip] { endProbe(index, mustTrip); });
+        });
+    });
+}
+
+void MachineCore::endProbe(std::size_t index, bool mustTrip)
+{
+    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+    send(cmd::statusRead(5), [this](const Outcome &o) {
+        if (!unitError(o, "reading the probe result", MachineMode::Alarm))
+            m_state.probeTripped = (*o.reply.hexValue() & 0x80) != 0;
+    });
+    send(pos, [this](const Outcome &o) {
+        if (!unitError(o, "reading the probe position", MachineMode::Alarm)) {
+            applyPosition(o.reply);
+            m_state.probeSteps = m_state.positionSteps;
+        }
+    });
+    // D drops what is left of the probe move and clears INTA and the cause bits.
+    send(cmd::deleteQueue(), [this](const Outcome &o) { unitError(o, "D", MachineMode::Alarm); });
+    const machine::EepromConfig &ee = m_config.eeprom;
+    send(cmd::statusWrite(1, ee.interruptEnableHigh), [](const Outcome &) {});
+    send(cmd::statusWrite(3, ee.polarityHigh), [this, index, mustTrip](const Outcome &o) {
+        m_haltExpected = false;
+        if (unitError(o, "disarming the probe input", MachineMode::Alarm))
+            return;
+        m_state.inta = false;
+        const machine::UnitCommand &c = m_program.commands[index];
+        bool atEnd = true;
+        for (int a = 0; a < m_program.axisCount; ++a)
+            atEnd = atEnd && m_state.positionSteps[a] == c.endSteps[a];
+        if (!m_state.probeTripped && mustTrip) {
+            m_state.hold = HoldReason::ProbeFailed;
+            finishJob(false);
+            fail(lineText(c) + ": the probe move ended without the probe tripping", nullptr,
+                 MachineMode::Alarm);
+            return;
+        }
+        const bool motionFollows = std::any_of(
+            m_program.commands.begin() + static_cast<std::ptrdiff_t>(index) + 1,
+            m_program.commands.end(), [](const machine::UnitCommand &u) {
+                return u.op == UnitOp::Vector || u.op == UnitOp::Line || u.op == UnitOp::Probe;
+            });
+        if (!atEnd && motionFollows) {
+            finishJob(false);
+            fail(lineText(c) + ": the probe tripped at " + std::to_string(m_state.probeSteps[0]) +
+                     ", " + std::to_string(m_state.probeSteps[1]) + ", " +
+                     std::to_string(m_state.probeSteps[2]) +
+                     " steps; the rest of the program was planned from the probe's end point: "
+                     "plan it again from here",
+                 nullptr, MachineMode::Alarm);
+            return;
+        }
+        acceptUpTo(index + 1);
+        m_streamBlocked = false;
+    });
 }
 
 void MachineCore::finishJob(bool ok)
@@ -365,6 +621,7 @@ void MachineCore::finishJob(bool ok)
     if (m_state.mode == MachineMode::Running)
         setMode(MachineMode::Idle);
     log(ok ? "job finished" : "job ended");
+    publish(); // the final state before the news that the job ended
     if (onJobFinished)
         onJobFinished(ok);
 }
@@ -408,13 +665,28 @@ void MachineCore::verifyProgress(const std::string &why)
     ++m_report.verified;
     m_needVerify = true;
     m_streamBlocked = true;
+    readStillPosition();
+}
+
+// Waits for RUN = 0, then reads the counters twice: the machine stands only when both reads
+// agree (a late reply on a noisy line must not pass for the final position).
+void MachineCore::readStillPosition()
+{
     afterIdle([this] {
         const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
-        send(pos, [this](const Outcome &o) {
-            if (unitError(o, "reading the position", MachineMode::LinkLost))
+        send(pos, [this, pos](const Outcome &first) {
+            if (unitError(first, "reading the position", MachineMode::LinkLost))
                 return;
-            applyPosition(o.reply);
-            matchProgress();
+            send(pos, [this, a = first.reply.values](const Outcome &second) {
+                if (unitError(second, "reading the position", MachineMode::LinkLost))
+                    return;
+                if (second.reply.values != a) {
+                    readStillPosition(); // still moving: wait again
+                    return;
+                }
+                applyPosition(second.reply);
+                matchProgress();
+            });
         });
     });
 }

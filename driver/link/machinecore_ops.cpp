@@ -109,6 +109,7 @@ MachineCore::Result MachineCore::abort(double now)
         return refusal("lower the tool first: the job's queue is kept in the unit (K)");
     m_steps.clear();
     m_idleWaiters.clear();
+    m_jobIdleWaiters.clear();
     const bool wasJob = m_job;
     m_job = false;
     m_state.jobActive = false;
@@ -126,6 +127,7 @@ MachineCore::Result MachineCore::abort(double now)
         setMode(MachineMode::Idle);
         if (wasJob) {
             m_report.endS = m_now;
+            publish();
             if (onJobFinished)
                 onJobFinished(false);
         }

@@ -99,6 +99,10 @@ struct MachineState
     LinkStats link;
     double pollHz = 0; // achieved position/status poll rate over the last second
 
+    // last G38 probe move: whether the probe tripped, and the counters where the move ended
+    bool probeTripped = false;
+    std::array<std::int64_t, 4> probeSteps{};
+
     std::optional<MachineError> lastError;
     friend bool operator==(const MachineState &, const MachineState &) = default;
 };

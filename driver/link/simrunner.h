@@ -33,7 +33,10 @@ public:
 class SimRunner
 {
 public:
-    SimRunner(MachineCore &core, VirtualPort &port) : m_core(core), m_port(port) {}
+    SimRunner(MachineCore &core, VirtualPort &port)
+        : m_core(core)
+        , m_port(port)
+    {}
 
     // Opens the link (the core starts its connect sequence).
     void open();

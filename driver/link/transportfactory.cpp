@@ -1,5 +1,6 @@
 // The default transport factory.
 
+#include "driver/link/emulatortransport.h"
 #include "driver/link/linkworker.h"
 #include "driver/link/serialtransport.h"
 
@@ -7,7 +8,8 @@
 
 namespace frezka::driver {
 
-Transport *createTransport(const ConnectionSettings &settings, QObject *parent, QString *error)
+Transport *createTransport(const ConnectionSettings &settings, const machine::MachineConfig &config,
+                           QObject *parent, QString *error)
 {
     switch (settings.kind) {
     case ConnectionSettings::Kind::SerialPort:
@@ -16,11 +18,17 @@ Transport *createTransport(const ConnectionSettings &settings, QObject *parent, 
             return nullptr;
         }
         return new SerialTransport(settings.portName, settings.baud, parent);
-    case ConnectionSettings::Kind::Emulator:
-        break;
+    case ConnectionSettings::Kind::Emulator: {
+        WireOptions wire;
+        wire.baud = settings.baud;
+        wire.latencyS = settings.latencyMs / 1000.0;
+        wire.byteErrorRate = settings.faultRate;
+        wire.replyLossRate = settings.faultRate;
+        wire.seed = settings.seed;
+        return new EmulatorTransport(unitOptionsFor(config), wire, parent);
     }
-    *error =
-        QCoreApplication::translate("LinkWorker", "the built-in emulator is not available yet");
+    }
+    *error = QCoreApplication::translate("LinkWorker", "unknown connection kind");
     return nullptr;
 }
 

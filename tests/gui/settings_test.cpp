@@ -1,5 +1,6 @@
 // Machine profile editing: every key has an editor, validation shows errors in words and
 // refuses to save, edit -> save -> reload gives the edited profile.
+#include "gui/language.h"
 #include "gui/profileeditor.h"
 #include "gui/settingsdialog.h"
 
@@ -9,6 +10,7 @@
 #include <QListWidget>
 #include <QSettings>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -121,6 +123,26 @@ private slots:
         QVERIFY(!ed.loadFile(path, &error));
         QVERIFY(error.contains(QStringLiteral("stepsPerMn")));
         QCOMPARE(ed.config(), before);
+    }
+
+    void everyWidgetFollowsTheLanguage()
+    {
+        SettingsDialog dlg(machine::defaultMachineConfig(protocol::Variant::Gve64), QString());
+        ProfileEditor *ed = dlg.editor();
+        auto *tabs = ed->findChild<QTabWidget *>(QStringLiteral("profileTabs"));
+        QCOMPARE(tabs->tabText(0), QStringLiteral("General"));
+        dlg.chooseLanguage(QStringLiteral("cs"));
+        QCOMPARE(currentLanguage(), QStringLiteral("cs"));
+        QTRY_COMPARE(tabs->tabText(0), QStringLiteral("Obecné"));
+        QCOMPARE(dlg.windowTitle(), QStringLiteral("Nastavení"));
+        // Error texts of the profile follow too.
+        qobject_cast<QDoubleSpinBox *>(ed->editorFor("axes.x.rapidMmPerMin"))->setValue(99999);
+        QVERIFY(ed->findChild<QListWidget *>(QStringLiteral("profileErrors"))
+                    ->item(0)
+                    ->text()
+                    .contains(QStringLiteral("Rychloposuv")));
+        dlg.chooseLanguage(QStringLiteral("en"));
+        QTRY_COMPARE(tabs->tabText(0), QStringLiteral("General"));
     }
 
 private:

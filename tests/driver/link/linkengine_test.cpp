@@ -147,17 +147,26 @@ TEST(LinkEngine, PacketAndPartialFailure)
     h.sync(0);
     std::vector<Command> p{cmd::brake(500), cmd::vector(1, 0, 0), cmd::vector(2, 0, 0)};
     h.engine.startPacket(p, 0);
-    EXPECT_EQ(h.engine.takeOutput(), encodePacket(p, true));
+    // Opened with *S twice (LinkOptions::doublePacketStart).
+    EXPECT_EQ(h.engine.takeOutput(), "!0*S,FA\r" + encodePacket(p, true));
     h.engine.receive(reply("0,3"), 0);
     ASSERT_EQ(h.outcomes.size(), 1u);
     EXPECT_EQ(h.outcomes[0].accepted, 3);
-    EXPECT_EQ(h.engine.unitIndex(), 5); // *S, 3 commands, *E
+    EXPECT_EQ(h.engine.unitIndex(), 6); // *S, *S, 3 commands, *E
+    h.engine.setDoublePacketStart(false);
+    h.outcomes.clear();
+    h.engine.startPacket(p, 0);
+    EXPECT_EQ(h.engine.takeOutput(), encodePacket(p, true));
+    h.engine.receive(reply("0,3"), 0);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.engine.unitIndex(), 11); // *S, 3 commands, *E
+    h.outcomes.clear();
     h.engine.startPacket(p, 0);
     h.engine.takeOutput();
     h.engine.receive(reply("1,2"), 0);
-    ASSERT_EQ(h.outcomes.size(), 2u);
-    EXPECT_EQ(h.outcomes[1].accepted, 2);
-    EXPECT_EQ(h.outcomes[1].reply.code, ReplyCode::QueueFull);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].accepted, 2);
+    EXPECT_EQ(h.outcomes[0].reply.code, ReplyCode::QueueFull);
     EXPECT_FALSE(h.engine.unitIndex()); // unknown after a failed packet: learnt next time
 }
 

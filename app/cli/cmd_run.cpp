@@ -1,0 +1,426 @@
+// frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N]
+//                     [--faults RATE --seed N] [--clock virtual|real] [--home]
+//
+// Interprets and plans FILE for the machine profile, connects (a serial port / pty, or the
+// in-process emulator), optionally homes, runs the job with a progress bar on a terminal
+// (line, %, ETA) and ends with one JSON line of figures on stdout. Exit code 0 when the job ran
+// to its end, 1 on any error (on stderr), 2 on bad usage.
+//
+// --port sim (default) uses the in-process emulator of the profile's variant; with
+// --clock virtual (default for sim) it runs on a virtual clock as fast as the computer allows,
+// with --clock real in real time. --faults RATE injects byte errors (corrupted, dropped,
+// duplicated) and lost replies at RATE each (sim only), seeded by --seed.
+#include "cli.h"
+
+#include "driver/link/emulatorport.h"
+#include "driver/link/emulatortransport.h"
+#include "driver/link/linkworker.h"
+#include "driver/link/simrunner.h"
+#include "gcode/interpreter.h"
+#include "machine/planner.h"
+
+#include <QCoreApplication>
+#include <QEventLoop>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTimer>
+
+#include <cmath>
+#include <optional>
+#include <unistd.h>
+
+namespace {
+
+using namespace frezka;
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("frezka::cli::run", text);
+}
+
+struct RunArgs
+{
+    QString file;
+    QString machine;
+    QString port = QStringLiteral("sim");
+    int baud = 0; // 0 = the profile's
+    double latencyMs = 0;
+    double faults = 0;
+    quint32 seed = 1;
+    bool virtualClock = true;
+    bool clockGiven = false;
+    bool home = false;
+};
+
+int usage()
+{
+    cli::err(tr("usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] "
+                "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home]\n"));
+    return 2;
+}
+
+std::optional<RunArgs> parseArgs(const QStringList &args)
+{
+    RunArgs a;
+    for (int i = 0; i < args.size(); ++i) {
+        const QString &k = args[i];
+        const bool hasValue = i + 1 < args.size();
+        bool ok = true;
+        if (k == QLatin1String("--machine") && hasValue) {
+            a.machine = args[++i];
+        } else if (k == QLatin1String("--port") && hasValue) {
+            a.port = args[++i];
+        } else if (k == QLatin1String("--baud") && hasValue) {
+            a.baud = args[++i].toInt(&ok);
+            ok = ok && a.baud > 0;
+        } else if (k == QLatin1String("--latency-ms") && hasValue) {
+            a.latencyMs = args[++i].toDouble(&ok);
+            ok = ok && a.latencyMs >= 0 && a.latencyMs <= 1000;
+        } else if (k == QLatin1String("--faults") && hasValue) {
+            a.faults = args[++i].toDouble(&ok);
+            ok = ok && a.faults >= 0 && a.faults < 0.5;
+        } else if (k == QLatin1String("--seed") && hasValue) {
+            a.seed = args[++i].toUInt(&ok);
+        } else if (k == QLatin1String("--clock") && hasValue) {
+            const QString c = args[++i];
+            ok = c == QLatin1String("virtual") || c == QLatin1String("real");
+            a.virtualClock = c == QLatin1String("virtual");
+            a.clockGiven = true;
+        } else if (k == QLatin1String("--home")) {
+            a.home = true;
+        } else if (a.file.isEmpty() && !k.startsWith(QLatin1String("--"))) {
+            a.file = k;
+        } else {
+            ok = false;
+        }
+        if (!ok)
+            return std::nullopt;
+    }
+    if (a.file.isEmpty())
+        return std::nullopt;
+    const bool sim = a.port == QLatin1String("sim");
+    if (!sim && !a.clockGiven)
+        a.virtualClock = false;
+    if (!sim && (a.virtualClock || a.faults > 0 || a.latencyMs > 0))
+        return std::nullopt; // a real port runs in real time, with its own faults and latency
+    return a;
+}
+
+// Profile, G-code, plan. Prints every error; nullopt on failure.
+std::optional<std::pair<machine::MachineConfig, machine::PlanResult>> prepare(const RunArgs &a)
+{
+    machine::MachineConfig config = machine::defaultMachineConfig(protocol::Variant::Gve64);
+    if (!a.machine.isEmpty()) {
+        const machine::ConfigResult r = machine::loadMachineConfig(a.machine.toStdString());
+        if (!r.config) {
+            for (const machine::ConfigError &e : r.errors)
+                cli::err(QStringLiteral("%1: %2%3\n")
+                             .arg(a.machine,
+                                  e.key.empty() ? QString() : QString::fromStdString(e.key) + ": ",
+                                  QString::fromStdString(e.message)));
+            return std::nullopt;
+        }
+        config = *r.config;
+    }
+    const gcode::Result g = gcode::interpretFile(a.file.toStdString());
+    if (!g.ok()) {
+        for (const gcode::Error &e : g.errors)
+            cli::err(gcode::formatError(a.file, e) + QLatin1Char('\n'));
+        return std::nullopt;
+    }
+    machine::PlanResult p = machine::plan(g.toolpath, config);
+    for (const machine::PlanError &w : p.warnings)
+        cli::err(tr("%1:%2: warning: %3\n")
+                     .arg(a.file)
+                     .arg(w.line)
+                     .arg(QString::fromStdString(w.message)));
+    if (!p.ok()) {
+        for (const machine::PlanError &e : p.errors)
+            cli::err(
+                tr("%1:%2: %3\n").arg(a.file).arg(e.line).arg(QString::fromStdString(e.message)));
+        return std::nullopt;
+    }
+    return std::make_pair(config, std::move(p));
+}
+
+// Progress bar on a terminal (stderr), at most every 0.2 s of wall time.
+class Progress
+{
+public:
+    Progress()
+        : m_tty(isatty(2) != 0)
+    {
+        m_wall.start();
+    }
+    void show(const driver::MachineState &s, bool force = false)
+    {
+        if (!m_tty || (!force && m_wall.elapsed() < 200))
+            return;
+        m_wall.restart();
+        const int width = 30;
+        const int filled = static_cast<int>(std::lround(s.progress * width));
+        QString bar = QString(filled, QLatin1Char('#')) + QString(width - filled, QLatin1Char('.'));
+        QString eta = s.etaS < 0 ? QStringLiteral("--:--")
+                                 : QStringLiteral("%1:%2")
+                                       .arg(static_cast<int>(s.etaS) / 60)
+                                       .arg(static_cast<int>(s.etaS) % 60, 2, 10, QLatin1Char('0'));
+        cli::err(tr("\r[%1] %2% line %3 ETA %4 ")
+                     .arg(bar)
+                     .arg(s.progress * 100, 5, 'f', 1)
+                     .arg(s.sourceLine)
+                     .arg(eta));
+    }
+    void done()
+    {
+        if (m_tty)
+            cli::err(QStringLiteral("\n"));
+    }
+
+private:
+    bool m_tty;
+    QElapsedTimer m_wall;
+};
+
+struct Outcome
+{
+    bool ok = false;
+    driver::JobReport report;
+    std::array<std::int64_t, 4> finalSteps{};
+    std::optional<emulator::Stats> unitStats;
+    QString error;
+};
+
+QString errorText(const driver::MachineError &e)
+{
+    QString t = QString::fromStdString(e.message);
+    if (!e.command.empty())
+        t += tr(" [command %1]").arg(QString::fromStdString(e.command));
+    if (!e.reply.empty())
+        t += tr(" [reply '%1']").arg(QString::fromStdString(e.reply));
+    return t;
+}
+
+// The in-process emulator on a virtual clock, driven by SimRunner.
+Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
+                   const machine::UnitProgram &program)
+{
+    Outcome out;
+    driver::WireOptions wire;
+    wire.baud = a.baud > 0 ? a.baud : config.link.baud;
+    wire.latencyS = a.latencyMs / 1000.0;
+    wire.byteErrorRate = a.faults;
+    wire.replyLossRate = a.faults;
+    wire.seed = a.seed;
+    driver::EmulatorPort port(driver::unitOptionsFor(config), wire);
+    driver::CoreOptions options;
+    options.link.baud = wire.baud;
+    driver::MachineCore core(config, options);
+    driver::SimRunner runner(core, port);
+    std::optional<bool> finished;
+    core.onError = [&](const driver::MachineError &e) { out.error = errorText(e); };
+    core.onJobFinished = [&](bool ok) { finished = ok; };
+    Progress progress;
+    auto mode = [&] { return core.state().mode; };
+    auto failed = [&] {
+        return mode() == driver::MachineMode::Alarm || mode() == driver::MachineMode::LinkLost;
+    };
+    runner.open();
+    runner.runUntil([&] { return mode() != driver::MachineMode::Connecting; }, 120);
+    if (mode() != driver::MachineMode::Idle)
+        return out.error.isEmpty() ? (out.error = tr("could not connect to the emulator"), out)
+                                   : out;
+    if (a.home) {
+        if (auto e = core.home(runner.now()))
+            return out.error = errorText(*e), out;
+        runner.runUntil([&] { return core.state().homed || failed(); }, 3600);
+        if (!core.state().homed)
+            return out;
+    }
+    if (auto e = core.run(program, runner.now()))
+        return out.error = errorText(*e), out;
+    while (!finished && !failed() && mode() != driver::MachineMode::Paused) {
+        runner.runFor(0.25);
+        progress.show(core.state());
+    }
+    progress.show(core.state(), true);
+    progress.done();
+    if (mode() == driver::MachineMode::Paused && !finished)
+        out.error = tr("the job stopped: %1").arg(QString::fromStdString(core.state().holdText));
+    out.ok = finished.value_or(false);
+    out.report = core.jobReport();
+    out.finalSteps = core.state().positionSteps;
+    out.unitStats = port.unit().stats();
+    return out;
+}
+
+// A serial port / pty, or the emulator in real time: the link worker on this thread's event
+// loop, exactly as the GUI drives it (without the extra thread).
+Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
+                const machine::UnitProgram &program)
+{
+    Outcome out;
+    driver::LinkWorker worker;
+    driver::CoreOptions options;
+    options.link.baud = a.baud > 0 ? a.baud : config.link.baud;
+    worker.setCoreOptions(options);
+    worker.setMachineConfig(config);
+    driver::EmulatorTransport *emulated = nullptr;
+    worker.setTransportFactory([&](const driver::ConnectionSettings &s,
+                                   const machine::MachineConfig &c, QObject *parent,
+                                   QString *error) -> driver::Transport * {
+        driver::Transport *t = driver::createTransport(s, c, parent, error);
+        emulated = qobject_cast<driver::EmulatorTransport *>(t);
+        return t;
+    });
+    driver::MachineState state;
+    std::optional<bool> finished;
+    QEventLoop loop;
+    Progress progress;
+    enum class Phase { Connecting, Homing, Running } phase = Phase::Connecting;
+    auto start = [&] {
+        phase = Phase::Running;
+        worker.run(program);
+    };
+    QObject::connect(&worker, &driver::LinkWorker::errorOccurred, &loop,
+                     [&](const driver::MachineError &e) {
+                         out.error = errorText(e);
+                         loop.quit();
+                     });
+    QObject::connect(&worker, &driver::LinkWorker::jobFinished, &loop, [&](bool ok) {
+        finished = ok;
+        loop.quit();
+    });
+    QObject::connect(
+        &worker, &driver::LinkWorker::stateChanged, &loop, [&](const driver::MachineState &s) {
+            state = s;
+            if (phase == Phase::Running)
+                progress.show(s);
+            if (s.mode == driver::MachineMode::Paused && phase == Phase::Running) {
+                out.error = tr("the job stopped: %1").arg(QString::fromStdString(s.holdText));
+                loop.quit();
+            }
+            if (s.mode != driver::MachineMode::Idle)
+                return;
+            if (phase == Phase::Connecting && a.home) {
+                phase = Phase::Homing;
+                worker.home();
+            } else if (phase == Phase::Connecting || (phase == Phase::Homing && s.homed)) {
+                start();
+            }
+        });
+    driver::ConnectionSettings settings;
+    const bool sim = a.port == QLatin1String("sim");
+    settings.kind = sim ? driver::ConnectionSettings::Kind::Emulator
+                        : driver::ConnectionSettings::Kind::SerialPort;
+    settings.portName = a.port;
+    settings.baud = options.link.baud;
+    settings.latencyMs = a.latencyMs;
+    settings.faultRate = a.faults;
+    settings.seed = a.seed;
+    QTimer::singleShot(0, &worker, [&] { worker.connectTo(settings); });
+    loop.exec();
+    progress.show(state, true);
+    progress.done();
+    out.ok = finished.value_or(false);
+    out.report = worker.jobReport();
+    out.finalSteps = state.positionSteps;
+    if (emulated)
+        out.unitStats = emulated->unit().stats();
+    worker.disconnectFromUnit();
+    return out;
+}
+
+double bytesPerVector(const machine::UnitProgram &program, bool checksums)
+{
+    double bytes = 0;
+    int n = 0;
+    for (const machine::UnitCommand &c : program.commands) {
+        if (c.op != machine::UnitOp::Vector)
+            continue;
+        const auto cmd = program.axisCount == 4
+                             ? protocol::cmd::vector(c.d[0], c.d[1], c.d[2], c.d[3])
+                             : protocol::cmd::vector(c.d[0], c.d[1], c.d[2]);
+        bytes += static_cast<double>(protocol::encode(cmd, checksums).size());
+        ++n;
+    }
+    return n ? bytes / n : 0;
+}
+
+QJsonArray steps(const std::array<std::int64_t, 4> &s, int axes)
+{
+    QJsonArray a;
+    for (int i = 0; i < axes; ++i)
+        a.append(static_cast<qint64>(s[static_cast<std::size_t>(i)]));
+    return a;
+}
+
+void printReport(const Outcome &o, const machine::UnitProgram &program, int baud)
+{
+    const int axes = program.axisCount;
+    const machine::Steps4 expected =
+        program.commands.empty() ? program.startSteps : program.commands.back().endSteps;
+    const driver::JobReport &r = o.report;
+    const double streamS = r.lastVectorAckS - r.startS;
+    const double bpv = bytesPerVector(program, true);
+    QJsonObject j;
+    j[QStringLiteral("vectors")] = static_cast<qint64>(r.vectors);
+    j[QStringLiteral("final_steps")] = steps(o.finalSteps, axes);
+    j[QStringLiteral("expected_steps")] = steps(expected, axes);
+    j[QStringLiteral("job_s")] = r.endS - r.startS;
+    j[QStringLiteral("link_bytes")] = static_cast<qint64>(r.linkBytes);
+    j[QStringLiteral("wire_limit_vectors_per_s")] = bpv > 0 ? baud / 10.0 / bpv : 0.0;
+    j[QStringLiteral("vectors_per_s")] = streamS > 0 ? r.vectors / streamS : 0.0;
+    if (o.unitStats) {
+        j[QStringLiteral("starvation_stops")] =
+            static_cast<qint64>(o.unitStats->motion.starvationStops);
+        j[QStringLiteral("brake_violations")] =
+            static_cast<qint64>(o.unitStats->motion.brakeViolations);
+    } else { // a real unit does not count them
+        j[QStringLiteral("starvation_stops")] = QJsonValue::Null;
+        j[QStringLiteral("brake_violations")] = QJsonValue::Null;
+    }
+    j[QStringLiteral("resent")] = static_cast<qint64>(r.resent);
+    j[QStringLiteral("recovered")] = static_cast<qint64>(r.recovered);
+    cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
+             QLatin1Char('\n'));
+}
+
+int runRun(const QStringList &args)
+{
+    const auto a = parseArgs(args);
+    if (!a)
+        return usage();
+    auto prepared = prepare(*a);
+    if (!prepared)
+        return 1;
+    const auto &[config, plan] = *prepared;
+    const Outcome o =
+        a->virtualClock ? runVirtual(*a, config, plan.program) : runReal(*a, config, plan.program);
+    const int baud = a->baud > 0 ? a->baud : config.link.baud;
+    if (!o.ok) {
+        cli::err(tr("%1: %2\n")
+                     .arg(a->file, o.error.isEmpty() ? tr("the job did not finish") : o.error));
+        return 1;
+    }
+    printReport(o, plan.program, baud);
+    const machine::Steps4 expected = plan.program.commands.empty()
+                                         ? plan.program.startSteps
+                                         : plan.program.commands.back().endSteps;
+    for (int i = 0; i < plan.program.axisCount; ++i) {
+        if (o.finalSteps[static_cast<std::size_t>(i)] != expected[static_cast<std::size_t>(i)]) {
+            cli::err(
+                tr("%1: the unit's counters differ from the planned end position\n").arg(a->file));
+            return 1;
+        }
+    }
+    return 0;
+}
+
+} // namespace
+
+FREZKA_CLI_COMMAND(
+    run,
+    "run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] "
+    "[--faults RATE --seed N] [--clock virtual|real] [--home]",
+    "Run a G-code job on a GVE unit or the emulator, with progress and a JSON report", runRun);

@@ -1,0 +1,156 @@
+#include "holdbanner.h"
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace frezka::gui {
+
+HoldBanner::HoldBanner(QWidget *parent)
+    : QFrame(parent)
+{
+    setObjectName(QStringLiteral("holdBanner"));
+    setFrameShape(QFrame::StyledPanel);
+    setStyleSheet(QStringLiteral("#holdBanner { background: #fff3c4; color: black; }"
+                                 "#holdBanner QLabel { color: black; }"));
+    m_title = new QLabel(this);
+    QFont f = m_title->font();
+    f.setBold(true);
+    f.setPointSizeF(f.pointSizeF() * 1.2);
+    m_title->setFont(f);
+    m_text = new QLabel(this);
+    m_text->setObjectName(QStringLiteral("holdText"));
+    m_text->setWordWrap(true);
+    m_stopSpindle = new QCheckBox(this);
+    m_stopSpindle->setChecked(true);
+    m_feedLabel = new QLabel(this);
+    m_feed = new QDoubleSpinBox(this);
+    m_feed->setObjectName(QStringLiteral("holdNewFeed"));
+    m_feed->setRange(0, 100000);
+    m_feed->setDecimals(0);
+    m_feed->setSuffix(QStringLiteral(" mm/min"));
+    auto button = [this](const char *name) {
+        auto *b = new QPushButton(this);
+        b->setObjectName(QLatin1String(name));
+        return b;
+    };
+    m_continue = button("holdContinue");
+    m_lift = button("holdLift");
+    m_lowerContinue = button("holdLowerContinue");
+    m_lowerOnly = button("holdLowerOnly");
+    m_abort = button("holdAbort");
+    connect(m_continue, &QPushButton::clicked, this, &HoldBanner::continueRequested);
+    connect(m_lift, &QPushButton::clicked, this,
+            [this] { emit liftRequested(m_stopSpindle->isChecked()); });
+    connect(m_lowerContinue, &QPushButton::clicked, this,
+            [this] { emit lowerRequested(m_feed->value(), true); });
+    connect(m_lowerOnly, &QPushButton::clicked, this,
+            [this] { emit lowerRequested(m_feed->value(), false); });
+    connect(m_abort, &QPushButton::clicked, this, &HoldBanner::abortRequested);
+
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_stopSpindle);
+    buttons->addWidget(m_feedLabel);
+    buttons->addWidget(m_feed);
+    buttons->addStretch();
+    for (auto *b : {m_continue, m_lift, m_lowerContinue, m_lowerOnly, m_abort})
+        buttons->addWidget(b);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(8, 6, 8, 6);
+    layout->addWidget(m_title);
+    layout->addWidget(m_text);
+    layout->addLayout(buttons);
+    showHold(Kind::None, 0, QString());
+}
+
+void HoldBanner::showHold(Kind kind, int line, const QString &detail)
+{
+    m_kind = kind;
+    m_line = line;
+    m_detail = detail;
+    setVisible(kind != Kind::None);
+    const bool lifted = kind == Kind::ToolLifted;
+    const bool held = kind != Kind::None && !lifted;
+    m_continue->setVisible(held);
+    m_lift->setVisible(held);
+    m_stopSpindle->setVisible(held);
+    m_lowerContinue->setVisible(lifted);
+    m_lowerOnly->setVisible(lifted);
+    m_feedLabel->setVisible(lifted);
+    m_feed->setVisible(lifted);
+    retranslate();
+}
+
+QString HoldBanner::text() const
+{
+    return m_title->text() + QLatin1Char('\n') + m_text->text();
+}
+
+bool HoldBanner::stopSpindleOnLift() const
+{
+    return m_stopSpindle->isChecked();
+}
+
+double HoldBanner::newFeedMmPerMin() const
+{
+    return m_feed->value();
+}
+
+void HoldBanner::setNewFeedMmPerMin(double feed)
+{
+    m_feed->setValue(feed);
+}
+
+void HoldBanner::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QFrame::changeEvent(event);
+}
+
+void HoldBanner::retranslate()
+{
+    const QString where = m_line > 0 ? tr("at line %1").arg(m_line) : QString();
+    switch (m_kind) {
+    case Kind::None:
+        break;
+    case Kind::Paused:
+        m_title->setText(tr("Paused %1").arg(where));
+        m_text->setText(tr("The machine has stopped along its ramp and keeps the rest of the job. "
+                           "Continue, or lift the tool to change or clean it."));
+        break;
+    case Kind::OperatorStop:
+        m_title->setText(tr("Program stop %1").arg(where));
+        m_text->setText(tr("%1\nDo what the program asks, then press Continue.").arg(m_detail));
+        break;
+    case Kind::Interrupt:
+        m_title->setText(tr("Stopped by an input %1").arg(where));
+        m_text->setText(
+            tr("%1\nCheck the machine; when it is safe, Continue or Abort.").arg(m_detail));
+        break;
+    case Kind::ProbeFailed:
+        m_title->setText(tr("Probe failed %1").arg(where));
+        m_text->setText(tr("%1\nThe probe did not touch as expected. Abort the job or Continue.")
+                            .arg(m_detail));
+        break;
+    case Kind::ToolLifted:
+        m_title->setText(tr("Tool lifted %1").arg(where));
+        m_text->setText(tr("Change or clean the tool. Then lower it: the spindle starts again if "
+                           "it was stopped, the tool goes back down to where it was, and the job "
+                           "continues — at a new feed if you enter one."));
+        break;
+    }
+    m_stopSpindle->setText(tr("Stop the spindle"));
+    m_feedLabel->setText(tr("New feed (0 = unchanged):"));
+    m_continue->setText(tr("Continue"));
+    m_lift->setText(tr("Lift tool"));
+    m_lowerContinue->setText(tr("Lower and continue"));
+    m_lowerOnly->setText(tr("Lower, stay paused"));
+    m_abort->setText(tr("Abort job"));
+}
+
+} // namespace frezka::gui

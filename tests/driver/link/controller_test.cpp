@@ -1,0 +1,131 @@
+// MachineController (GUI facade, link thread) in real time: on the built-in emulator, and
+// through gve-emu on a pseudo-terminal with QSerialPort, including faults and a lost unit.
+
+#include "driver/link/machinecontroller.h"
+#include "simfixture.h"
+
+#include <QProcess>
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace frezka;
+using namespace frezka::driver;
+
+class ControllerTest : public QObject
+{
+    Q_OBJECT
+
+private:
+    static bool at(const MachineState &s, const machine::UnitProgram &p)
+    {
+        for (int a = 0; a < 3; ++a) {
+            if (s.positionSteps[a] != p.commands.back().endSteps[a])
+                return false;
+        }
+        return true;
+    }
+
+    // Starts gve-emu with extra options; returns the pty path (empty on failure).
+    QString startEmulator(QProcess &emu, const QStringList &extra)
+    {
+        emu.start(QStringLiteral(GVE_EMU),
+                  QStringList{QStringLiteral("--variant"), QStringLiteral("gve64")} + extra);
+        if (!emu.waitForStarted(5000))
+            return {};
+        // The first line of stdout is the terminal's path.
+        for (int i = 0; i < 50 && !emu.canReadLine(); ++i)
+            emu.waitForReadyRead(100);
+        return QString::fromUtf8(emu.readLine()).trimmed();
+    }
+
+    void runJob(MachineController &c, const machine::UnitProgram &p)
+    {
+        QSignalSpy finished(&c, &MachineController::jobFinished);
+        c.run(p);
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(finished.first().first().toBool(), true);
+        QTRY_VERIFY_WITH_TIMEOUT(at(c.state(), p), 5000);
+    }
+
+private slots:
+    void builtInEmulator()
+    {
+        MachineController c;
+        c.setMachineConfig(machine::defaultMachineConfig(protocol::Variant::Gve64));
+        ConnectionSettings s;
+        s.kind = ConnectionSettings::Kind::Emulator;
+        s.latencyMs = 2;
+        c.connectTo(s);
+        QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::Idle, 10000);
+        QVERIFY(c.state().checksums);
+        runJob(c, test::denseProgram(300));
+        QCOMPARE(c.state().mode, MachineMode::Idle);
+    }
+
+    void gveEmuOnAPty()
+    {
+        QProcess emu;
+        const QString path = startEmulator(emu, {QStringLiteral("--latency"), QStringLiteral("1")});
+        QVERIFY(path.startsWith(QLatin1String("/dev/")));
+        MachineController c;
+        c.setMachineConfig(machine::defaultMachineConfig(protocol::Variant::Gve64));
+        ConnectionSettings s;
+        s.kind = ConnectionSettings::Kind::SerialPort;
+        s.portName = path;
+        c.connectTo(s);
+        QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::Idle, 10000);
+        QCOMPARE(QString::fromStdString(c.state().firmware),
+                 QStringLiteral("IP64MPG v19 10.9.2010"));
+        runJob(c, test::denseProgram(400));
+        c.disconnectFromUnit();
+        emu.terminate();
+        QVERIFY(emu.waitForFinished(5000));
+    }
+
+    void gveEmuWithFaults()
+    {
+        QProcess emu;
+        const QString path = startEmulator(
+            emu, {QStringLiteral("--corrupt"), QStringLiteral("0.0004"), QStringLiteral("--drop"),
+                  QStringLiteral("0.0003"), QStringLiteral("--duplicate"), QStringLiteral("0.0003"),
+                  QStringLiteral("--lose-reply"), QStringLiteral("0.001"), QStringLiteral("--seed"),
+                  QStringLiteral("7")});
+        QVERIFY(!path.isEmpty());
+        MachineController c;
+        c.setMachineConfig(machine::defaultMachineConfig(protocol::Variant::Gve64));
+        ConnectionSettings s;
+        s.kind = ConnectionSettings::Kind::SerialPort;
+        s.portName = path;
+        c.connectTo(s);
+        QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::Idle, 20000);
+        runJob(c, test::denseProgram(1500));
+        emu.terminate();
+        QVERIFY(emu.waitForFinished(5000));
+    }
+
+    void unitGoneMidJob()
+    {
+        QProcess emu;
+        const QString path = startEmulator(emu, {});
+        MachineController c;
+        c.setMachineConfig(machine::defaultMachineConfig(protocol::Variant::Gve64));
+        QSignalSpy errors(&c, &MachineController::errorOccurred);
+        ConnectionSettings s;
+        s.kind = ConnectionSettings::Kind::SerialPort;
+        s.portName = path;
+        c.connectTo(s);
+        QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::Idle, 10000);
+        c.run(test::denseProgram(3000, 3, 4000, 4000, 400)); // minutes of motion
+        QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::Running, 5000);
+        QTest::qWait(300);
+        emu.kill();
+        emu.waitForFinished(5000);
+        QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::LinkLost, 20000);
+        QVERIFY(!errors.isEmpty());
+        QVERIFY(c.state().jobActive); // progress kept for resuming
+        QVERIFY(c.state().commandsAcked > 0);
+    }
+};
+
+QTEST_MAIN(ControllerTest)
+#include "controller_test.moc"

@@ -1,0 +1,442 @@
+// MachineCore on the in-process emulator (virtual clock): connect, stream, operations.
+
+#include "simfixture.h"
+
+#include "gcode/toolpath.h"
+
+#include <gtest/gtest.h>
+
+using namespace frezka;
+using namespace frezka::driver;
+using namespace frezka::driver::test;
+using protocol::Variant;
+
+TEST(MachineCore, ConnectSequence)
+{
+    for (Variant v : {Variant::Gve84, Variant::Gve64, Variant::Gve64Phantom, Variant::Gve114}) {
+        Sim sim(v);
+        ASSERT_TRUE(sim.connect()) << sim.lastLog();
+        const MachineState &s = sim.core.state();
+        EXPECT_TRUE(s.checksums);
+        EXPECT_TRUE(sim.port.unit().checksumsOn());
+        EXPECT_EQ(s.firmware, std::string(protocol::variantInfo(v).firmware));
+        EXPECT_EQ(s.unitId, std::string(protocol::variantInfo(v).defaultId));
+        EXPECT_FALSE(s.run) << "MPG must be off after connecting";
+        EXPECT_TRUE(sim.errors.empty()) << sim.errors.front().message;
+    }
+}
+
+TEST(MachineCore, StreamsADenseJobExactly)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    const auto program = denseProgram(3000);
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 600)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front());
+    const auto pos = sim.port.unit().position();
+    for (int a = 0; a < 3; ++a)
+        EXPECT_EQ(pos[a], program.commands.back().endSteps[a]) << "axis " << a;
+    EXPECT_EQ(sim.core.jobReport().vectors, 3000);
+    EXPECT_EQ(sim.port.unit().stats().motion.vectorsExecuted, 3000);
+    EXPECT_EQ(sim.core.state().mode, MachineMode::Idle);
+}
+
+// 1 byte error per 1000 bytes (corrupted, dropped or duplicated) plus lost replies: every run
+// must end at exactly the expected counters with every vector executed exactly once.
+TEST(MachineCore, FaultSoakEndsExact)
+{
+    for (std::uint32_t seed = 1; seed <= 12; ++seed) {
+        WireOptions wire;
+        wire.latencyS = 0.004;
+        wire.byteErrorRate = 1e-3;
+        wire.replyLossRate = 1e-3;
+        wire.seed = seed;
+        Sim sim(Variant::Gve64, wire);
+        ASSERT_TRUE(sim.connect(120)) << "seed " << seed << "\n" << sim.lastLog();
+        const auto program = denseProgram(1500);
+        ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+        ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 900))
+            << "seed " << seed << "\n"
+            << sim.lastLog();
+        EXPECT_TRUE(sim.finished.front()) << "seed " << seed;
+        const auto pos = sim.port.unit().position();
+        for (int a = 0; a < 3; ++a)
+            EXPECT_EQ(pos[a], program.commands.back().endSteps[a]) << "seed " << seed;
+        EXPECT_EQ(sim.port.unit().stats().motion.vectorsExecuted, 1500) << "seed " << seed;
+        EXPECT_GT(sim.port.wireStats().corrupted + sim.port.wireStats().dropped, 0);
+    }
+}
+
+namespace {
+
+// A slow job (long vectors) so that there is time to pause it.
+machine::UnitProgram slowProgram(int n)
+{
+    auto p = denseProgram(n, 3, 4000, 4000, 400);
+    // Start below Z = 0 (the default profile's Z runs -120..0) so that the tool can be lifted.
+    for (auto &c : p.commands) {
+        if (c.op == machine::UnitOp::Vector)
+            c.d[2] = -1;
+    }
+    machine::Steps4 at = p.startSteps;
+    for (auto &c : p.commands) {
+        for (int a = 0; a < 4; ++a)
+            at[a] += c.d[a];
+        c.endSteps = at;
+    }
+    return p;
+}
+
+machine::Steps4 endOf(const machine::UnitProgram &p)
+{
+    return p.commands.back().endSteps;
+}
+
+void expectAt(Sim &sim, const machine::Steps4 &want)
+{
+    const auto pos = sim.port.unit().position();
+    for (int a = 0; a < 3; ++a)
+        EXPECT_EQ(pos[a], want[a]) << "axis " << a << "\n" << sim.lastLog();
+}
+
+} // namespace
+
+TEST(MachineCore, PauseResumeEndsExact)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    const auto program = slowProgram(300);
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    sim.runner.runFor(2.0);
+    ASSERT_FALSE(sim.core.pause(sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Paused)) << sim.lastLog();
+    EXPECT_EQ(sim.core.state().hold, HoldReason::User);
+    const auto stopped = sim.port.unit().position();
+    sim.runner.runFor(1.0);
+    EXPECT_EQ(sim.port.unit().position(), stopped) << "the machine must stand while paused";
+    ASSERT_FALSE(sim.core.resume(sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 600)) << sim.lastLog();
+    expectAt(sim, endOf(program));
+}
+
+TEST(MachineCore, ToolLiftKeepRestoreEndsExact)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    const auto program = slowProgram(300);
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    sim.runner.runFor(3.0);
+    ASSERT_FALSE(sim.core.pause(sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Paused));
+    const auto before = sim.port.unit().position();
+    ASSERT_FALSE(sim.core.toolLift(false, sim.runner.now())) << sim.lastLog();
+    ASSERT_TRUE(sim.until(MachineMode::ToolLifted)) << sim.lastLog();
+    const auto lifted = sim.port.unit().position();
+    EXPECT_EQ(lifted[0], before[0]);
+    EXPECT_GT(lifted[2], before[2]);
+    EXPECT_LE(lifted[2], 0) << "never beyond the upper soft limit of Z";
+    ASSERT_FALSE(sim.core.toolLower(0, sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Paused)) << sim.lastLog();
+    EXPECT_EQ(sim.port.unit().position(), before);
+    ASSERT_FALSE(sim.core.resume(sim.runner.now())) << sim.lastLog();
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 600)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front());
+    expectAt(sim, endOf(program));
+    EXPECT_EQ(sim.port.unit().stats().motion.vectorsExecuted, 300 + 2); // + lift and lower
+}
+
+TEST(MachineCore, AbortStopsAndDropsTheQueue)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.run(slowProgram(300), sim.runner.now()));
+    sim.runner.runFor(1.0);
+    ASSERT_FALSE(sim.core.abort(sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Idle)) << sim.lastLog();
+    ASSERT_EQ(sim.finished.size(), 1u);
+    EXPECT_FALSE(sim.finished.front());
+    const auto stopped = sim.port.unit().position();
+    sim.runner.runFor(2.0);
+    EXPECT_EQ(sim.port.unit().position(), stopped);
+    EXPECT_EQ(sim.port.unit().queueLength(), 0u);
+}
+
+TEST(MachineCore, StopButtonHoldsTheJobAndResumes)
+{
+    Sim sim;
+    sim.config.eeprom.interruptEnable = 0x80; // IN7 = STOP
+    sim.config.eeprom.polarity = 0x80;        // active high (pressed reads 1 in the emulator)
+    sim.core.setConfig(sim.config);
+    ASSERT_TRUE(sim.connect());
+    const auto program = slowProgram(200);
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    sim.runner.runFor(1.5);
+    sim.port.unit().setStopButton(true);
+    ASSERT_TRUE(sim.until(MachineMode::Paused, 5)) << sim.lastLog();
+    EXPECT_EQ(sim.core.state().hold, HoldReason::Interrupt);
+    sim.runner.runFor(0.5);
+    EXPECT_NE(sim.core.state().holdText.find("IN7"), std::string::npos)
+        << sim.core.state().holdText;
+    sim.port.unit().setStopButton(false);
+    ASSERT_FALSE(sim.core.resume(sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 600)) << sim.lastLog();
+    expectAt(sim, endOf(program));
+}
+
+TEST(MachineCore, LinkLostMidJobResumesExactlyAfterReconnecting)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    const auto program = slowProgram(900); // more than the unit's queue holds
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    sim.runner.runFor(2.0);
+    sim.runner.unplug("converter unplugged");
+    EXPECT_EQ(sim.core.state().mode, MachineMode::LinkLost);
+    ASSERT_FALSE(sim.errors.empty());
+    sim.runner.runFor(5.0); // the unit runs on what it has
+    sim.runner.open();      // plugged in again
+    ASSERT_TRUE(sim.until(MachineMode::Paused, 120)) << sim.lastLog();
+    // Resume is refused while the progress is being checked against the counters.
+    bool resumed = false;
+    ASSERT_TRUE(sim.runner.runUntil(
+        [&] { return resumed || (resumed = !sim.core.resume(sim.runner.now()).has_value()); }, 60))
+        << sim.lastLog();
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 600)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.back());
+    expectAt(sim, endOf(program));
+    EXPECT_EQ(sim.port.unit().stats().motion.vectorsExecuted, 900);
+    EXPECT_GE(sim.core.jobReport().verified, 1);
+}
+
+TEST(MachineCore, HomingThenJogWithinSoftLimits)
+{
+    Sim sim;
+    sim.port.unit().setSwitches(unitOptionsFor(sim.config).switches);
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.home(sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return sim.core.state().homed; }, 600)) << sim.lastLog();
+    EXPECT_EQ(sim.core.state().mode, MachineMode::Idle);
+    for (int a = 0; a < 3; ++a)
+        EXPECT_EQ(sim.port.unit().position()[a], 0);
+    // X: 0..400 mm. A step of 10 mm, then a continuous jog toward -X that must stop at 0.
+    ASSERT_FALSE(sim.core.jogStep(0, 10, 3000, sim.runner.now()));
+    ASSERT_TRUE(
+        sim.runner.runUntil([&] { return sim.core.state().mode == MachineMode::Idle; }, 60));
+    EXPECT_EQ(sim.port.unit().position()[0], std::llround(10 * sim.config.axes[0].stepsPerMm));
+    ASSERT_FALSE(sim.core.jogContinuous(0, -1, 3000, sim.runner.now()));
+    sim.runner.runFor(30);
+    EXPECT_EQ(sim.port.unit().position()[0], 0) << "continuous jog ends at the soft limit";
+    // Beyond the limit: refused.
+    sim.runner.runUntil([&] { return sim.core.state().mode == MachineMode::Idle; }, 10);
+    EXPECT_TRUE(sim.core.jogStep(0, -5, 3000, sim.runner.now()).has_value());
+}
+
+TEST(MachineCore, SpindleOutputsOverride)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.setSpindleRpm(sim.config.spindle.maxRpm * 0.3, sim.runner.now()));
+    ASSERT_FALSE(sim.core.setOutputs(0x04, 0x04, sim.runner.now())); // coolant (OUT1) on
+    ASSERT_FALSE(sim.core.setOverride(150, sim.runner.now()));
+    sim.runner.runFor(0.5);
+    EXPECT_EQ(sim.port.unit().spindlePermille(), 300);
+    EXPECT_EQ(sim.port.unit().outputs(), 0xFB);
+    EXPECT_EQ(sim.core.state().overridePercent, 150);
+    EXPECT_TRUE(sim.core.setOverride(0, sim.runner.now()).has_value());
+    EXPECT_TRUE(sim.core.setSpindleRpm(-1, sim.runner.now()).has_value());
+    EXPECT_TRUE(sim.errors.empty());
+}
+
+TEST(MachineCore, UnitErrorNamesCommandAndReply)
+{
+    // No home switches on this emulated unit: W ends with code 5 (adopted reading §6).
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.home(sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Alarm, 3600)) << sim.lastLog();
+    ASSERT_EQ(sim.errors.size(), 1u);
+    const MachineError &e = sim.errors.front();
+    EXPECT_EQ(e.command.rfind("!0W", 0), 0u) << e.command;
+    EXPECT_EQ(e.unitCode, 5);
+    EXPECT_NE(e.message.find("switch was not found"), std::string::npos) << e.message;
+    EXPECT_FALSE(e.reply.empty());
+    EXPECT_FALSE(sim.core.state().homed);
+
+    // A program the variant refuses before anything is sent: 4 axes on a 3-axis GVE84.
+    Sim sim84(protocol::Variant::Gve84);
+    ASSERT_TRUE(sim84.connect());
+    const auto refused = sim84.core.run(denseProgram(5, 4), sim84.runner.now());
+    ASSERT_TRUE(refused.has_value());
+    EXPECT_NE(refused->message.find("GVE84"), std::string::npos) << refused->message;
+    EXPECT_EQ(sim84.core.state().mode, MachineMode::Idle);
+}
+
+TEST(MachineCore, OperatorStopsAndDwellWaitForTheMachine)
+{
+    using machine::UnitOp;
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    auto p = slowProgram(20);
+    const auto end = p.commands.back(); // ProgramEnd
+    p.commands.pop_back();
+    const auto mid = p.commands.back().endSteps;
+    machine::UnitCommand m6;
+    m6.op = UnitOp::OperatorStop;
+    m6.value = static_cast<std::int64_t>(gcode::EventKind::ToolChange);
+    m6.aux = 3;
+    m6.sourceLine = 77;
+    m6.endSteps = mid;
+    machine::UnitCommand dwell;
+    dwell.op = UnitOp::Dwell;
+    dwell.value = 1500; // ms
+    dwell.endSteps = mid;
+    p.commands.push_back(m6);
+    p.commands.push_back(dwell);
+    p.commands.push_back(end);
+    ASSERT_FALSE(sim.core.run(p, sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Paused, 120)) << sim.lastLog();
+    EXPECT_EQ(sim.core.state().hold, HoldReason::OperatorStop);
+    EXPECT_NE(sim.core.state().holdText.find("tool 3"), std::string::npos);
+    EXPECT_NE(sim.core.state().holdText.find("line 77"), std::string::npos);
+    expectAt(sim, mid); // all motion before M6 ran, the machine stands
+    const double resumed = sim.runner.now();
+    ASSERT_FALSE(sim.core.resume(resumed));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 60)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front());
+    EXPECT_GE(sim.runner.now() - resumed, 1.5); // the dwell
+}
+
+TEST(MachineCore, MpgRawCommandAndOverrideSteps)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.setMpg(true, sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_TRUE(sim.core.state().mpgOn);
+    EXPECT_TRUE(sim.core.state().run); // Y& counts as running (§13)
+    ASSERT_FALSE(sim.core.setMpg(false, sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_FALSE(sim.core.state().mpgOn);
+    EXPECT_FALSE(sim.core.state().run);
+
+    ASSERT_FALSE(sim.core.sendRaw("SW0,80", sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_EQ(sim.port.unit().status(0), 0x80);
+    EXPECT_TRUE(sim.core.sendRaw("!0Z", sim.runner.now()).has_value());    // unknown
+    EXPECT_TRUE(sim.core.sendRaw("!0T99", sim.runner.now()).has_value());  // out of range
+    EXPECT_TRUE(sim.core.sendRaw("!0L1,2", sim.runner.now()).has_value()); // syntax
+
+    ASSERT_FALSE(sim.core.overrideStep(true, sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_EQ(sim.core.state().overridePercent, 106);
+    EXPECT_TRUE(sim.errors.empty());
+}
+
+namespace {
+
+machine::UnitProgram probeProgram(gcode::ProbeKind kind, std::int32_t dz, bool moveAfter)
+{
+    using machine::UnitOp;
+    machine::UnitProgram p;
+    p.axisCount = 3;
+    auto add = [&p](UnitOp op, std::int64_t value, std::array<std::int32_t, 4> d,
+                    std::int32_t aux) {
+        machine::UnitCommand c;
+        c.op = op;
+        c.value = value;
+        c.d = d;
+        c.aux = aux;
+        c.sourceLine = static_cast<std::uint32_t>(p.commands.size() + 1);
+        c.endSteps = p.commands.empty() ? p.startSteps : p.commands.back().endSteps;
+        for (int a = 0; a < 4; ++a)
+            c.endSteps[a] += d[a];
+        p.commands.push_back(c);
+    };
+    add(UnitOp::Accel, 50, {}, 0);
+    add(UnitOp::Speed, 2000, {}, 0);
+    add(UnitOp::Probe, 0, {0, 0, dz, 0}, static_cast<std::int32_t>(kind));
+    if (moveAfter)
+        add(UnitOp::Line, 0, {100, 0, 0, 0}, 0);
+    add(UnitOp::ProgramEnd, 0, {}, 0);
+    return p;
+}
+
+} // namespace
+
+TEST(MachineCore, ProbeStopsAtContact)
+{
+    Sim sim;
+    sim.config.eeprom.polarityHigh = 0x80; // IN15 contact reads 1 in the emulator
+    sim.core.setConfig(sim.config);
+    // The probe touches when Z reaches -1000 steps.
+    sim.port.unit().setSwitches({{15, 2, -1000, -1}});
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.run(probeProgram(gcode::ProbeKind::TowardErrorIfNoContact, -3000, false),
+                              sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 120)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front()) << sim.lastLog();
+    EXPECT_TRUE(sim.core.state().probeTripped);
+    const auto z = sim.core.state().probeSteps[2];
+    EXPECT_LE(z, -1000);
+    EXPECT_GT(z, -3000);
+    EXPECT_EQ(sim.port.unit().position()[2], z);
+}
+
+TEST(MachineCore, ProbeWithoutContactIsAnErrorForG38_2)
+{
+    Sim sim;
+    sim.config.eeprom.polarityHigh = 0x80;
+    sim.core.setConfig(sim.config);
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.run(probeProgram(gcode::ProbeKind::TowardErrorIfNoContact, -500, true),
+                              sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 120)) << sim.lastLog();
+    EXPECT_FALSE(sim.finished.front());
+    EXPECT_EQ(sim.core.state().mode, MachineMode::Alarm);
+    ASSERT_FALSE(sim.errors.empty());
+    EXPECT_NE(sim.errors.back().message.find("without the probe tripping"), std::string::npos);
+    // G38.3: no contact is fine and the program goes on from the planned end point.
+    Sim sim3;
+    sim3.config.eeprom.polarityHigh = 0x80;
+    sim3.core.setConfig(sim3.config);
+    ASSERT_TRUE(sim3.connect());
+    const auto p = probeProgram(gcode::ProbeKind::Toward, -500, true);
+    ASSERT_FALSE(sim3.core.run(p, sim3.runner.now()));
+    ASSERT_TRUE(sim3.runner.runUntil([&] { return !sim3.finished.empty(); }, 120))
+        << sim3.lastLog();
+    EXPECT_TRUE(sim3.finished.front()) << sim3.lastLog();
+    expectAt(sim3, endOf(p));
+}
+
+TEST(MachineCore, ProbeTrippedWithMotionAfterEndsTheJob)
+{
+    Sim sim;
+    sim.config.eeprom.polarityHigh = 0x80;
+    sim.core.setConfig(sim.config);
+    sim.port.unit().setSwitches({{15, 2, -1000, -1}});
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(
+        sim.core.run(probeProgram(gcode::ProbeKind::Toward, -3000, true), sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 120)) << sim.lastLog();
+    EXPECT_FALSE(sim.finished.front());
+    ASSERT_FALSE(sim.errors.empty());
+    EXPECT_NE(sim.errors.back().message.find("plan it again"), std::string::npos);
+    EXPECT_EQ(sim.port.unit().position()[0], 0) << "nothing after the probe ran";
+}
+
+TEST(MachineCore, EepromComparedOnConnectWrittenOnlyWhenAsked)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    const auto differences = sim.core.state().eepromDifferences;
+    ASSERT_FALSE(differences.empty()) << "the emulator's defaults differ from the profile";
+    const auto before = sim.port.unit().eepromByte(0x01);
+    sim.runner.runFor(1.0);
+    EXPECT_EQ(sim.port.unit().eepromByte(0x01), before) << "connecting never writes";
+    ASSERT_FALSE(sim.core.writeEeprom(sim.runner.now()));
+    sim.runner.runFor(2.0);
+    EXPECT_TRUE(sim.core.state().eepromDifferences.empty())
+        << sim.core.state().eepromDifferences.front();
+    EXPECT_TRUE(sim.errors.empty()) << sim.errors.front().message;
+}

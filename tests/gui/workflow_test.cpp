@@ -1,0 +1,359 @@
+// The operator's workflows of issue 6 on the whole main window against the emulated unit in real
+// time (offscreen, software view): the built-in (in-process) emulator, or with
+// FREZKA_WORKFLOW_UNIT=pty gve-emu on a pty connected through the profile's port as a typed path,
+// exactly like hardware. One window for the whole run, like an operator's day:
+// connect -> open -> check -> home -> run; pause -> tool lift -> resume; jog and soft-limit
+// refusal; spindle/coolant; feed override; a program with an error; EEPROM write/read back.
+// Never sleeps: every wait is QTRY_* / QSignalSpy::wait on the machine's own signals.
+#include "gui/consolewidget.h"
+#include "gui/drowidget.h"
+#include "gui/holdbanner.h"
+#include "gui/iopanel.h"
+#include "gui/mainwindow.h"
+#include "gui/outputspanel.h"
+#include "gui/programsession.h"
+#include "gui/runpanel.h"
+#include "gui/settingsdialog.h"
+#include "gui/unitconfigdialog.h"
+
+#include "driver/link/machinecontroller.h"
+
+#include <QDir>
+#include <QProcess>
+#include <QPushButton>
+#include <QSettings>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace frezka;
+using namespace frezka::gui;
+using driver::MachineMode;
+
+namespace {
+constexpr int kMachineTimeoutMs = 60000;
+}
+
+class WorkflowTest : public QObject
+{
+    Q_OBJECT
+
+private:
+    const driver::MachineState &state() const { return m_window->controller()->state(); }
+    QString describe() const
+    {
+        const auto &s = state();
+        return QStringLiteral("mode %1 pos %2 %3 %4 line %5 error: %6 | gui: %7")
+            .arg(driver::machineModeName(s.mode))
+            .arg(s.positionMm[0])
+            .arg(s.positionMm[1])
+            .arg(s.positionMm[2])
+            .arg(s.sourceLine)
+            .arg(s.lastError ? QString::fromStdString(s.lastError->message) : QString())
+            .arg(m_window->lastError());
+    }
+
+    QString writeProgram(const QString &name, const QByteArray &text)
+    {
+        const QString path = m_dir.filePath(name);
+        QFile f(path);
+        if (!f.open(QIODevice::WriteOnly))
+            return {};
+        f.write(text);
+        return path;
+    }
+
+    bool load(const QString &path)
+    {
+        QSignalSpy loaded(m_window->program(), &ProgramSession::loaded);
+        m_window->openProgram(path);
+        return loaded.wait(20000);
+    }
+
+    QPushButton *button(QWidget *parent, const char *name)
+    {
+        return parent->findChild<QPushButton *>(QLatin1String(name));
+    }
+
+    bool waitIdle()
+    {
+        QTest::qWaitFor([&] { return state().mode == MachineMode::Idle; }, kMachineTimeoutMs);
+        if (state().mode != MachineMode::Idle)
+            qWarning("not idle: %s", qPrintable(describe()));
+        return state().mode == MachineMode::Idle;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY(m_dir.isValid());
+        QSettings::setDefaultFormat(QSettings::IniFormat);
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
+        QCoreApplication::setOrganizationName(QStringLiteral("FrezkaWorkflowTest"));
+        machine::MachineConfig profile = machine::defaultMachineConfig(protocol::Variant::Gve64);
+        if (qgetenv("FREZKA_WORKFLOW_UNIT") == "pty") {
+            // gve-emu with home switches where a GVE64 mill has them, on a pty opened by its
+            // path like hardware.
+            m_emu.setProgram(QStringLiteral(FREZKA_GVE_EMU));
+            m_emu.setArguments({QStringLiteral("--variant"), QStringLiteral("gve64"),
+                                QStringLiteral("--home"), QStringLiteral("X=0"),
+                                QStringLiteral("--home"), QStringLiteral("Y=0"),
+                                QStringLiteral("--home"), QStringLiteral("Z=0,+")});
+            m_emu.start();
+            QVERIFY(m_emu.waitForStarted());
+            QTRY_VERIFY_WITH_TIMEOUT(m_emu.canReadLine(), 10000);
+            const QString pty = QString::fromLocal8Bit(m_emu.readLine()).trimmed();
+            QVERIFY2(pty.startsWith(QLatin1Char('/')), qPrintable(pty));
+            profile.link.port = pty.toStdString();
+        } else {
+            profile.link.port = "emulator"; // the built-in emulator, in real time
+        }
+        const QString profilePath = m_dir.filePath(QStringLiteral("machine.json"));
+        QVERIFY(!machine::saveMachineConfig(profile, profilePath.toStdString()));
+        QSettings().setValue(QStringLiteral("lastProfile"), profilePath);
+        MainWindowOptions options;
+        options.view = MainWindowOptions::View::Software;
+        options.restoreLayout = false;
+        m_window = std::make_unique<MainWindow>(options);
+        m_window->show();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Idle, 20000);
+        QVERIFY(!state().firmware.empty());
+    }
+
+    void openCheckHomeRunToTheEnd()
+    {
+        const QString path = writeProgram(QStringLiteral("square.nc"), R"(G21 G90
+G0 X10 Y10
+G1 Z-2 F600
+G1 X30 F2400
+G1 Y25
+G1 X10
+G1 Y10
+G0 Z-1
+G0 X22.5 Y17.25
+M30
+)");
+        QVERIFY(load(path));
+        QVERIFY2(m_window->program()->program().runnable(), qPrintable(m_window->lastError()));
+        QSignalSpy checked(m_window.get(), &MainWindow::programChecked);
+        m_window->checkProgram();
+        QVERIFY(checked.wait(20000));
+        QCOMPARE(checked.at(0).at(0).toBool(), true);
+        // Home (all axes, profile order).
+        button(m_window.get(), "homeAll")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().homed && state().mode == MachineMode::Idle,
+                                 kMachineTimeoutMs);
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QVERIFY(waitIdle());
+        // The DRO ends at the program's end point (work = machine with G54 = 0 here).
+        QTRY_COMPARE(m_window->dro()->workText(0), QStringLiteral("22.500"));
+        QTRY_COMPARE(m_window->dro()->workText(1), QStringLiteral("17.250"));
+        QTRY_COMPARE(m_window->dro()->workText(2), QStringLiteral("-1.000"));
+    }
+
+    void pauseToolLiftResumeEndsAtTheSamePoint()
+    {
+        const QString path = writeProgram(QStringLiteral("long.nc"), R"(G21 G90
+G0 X5 Y5
+G1 Z-20 F600
+G1 X60 F1200
+G1 Y40
+G1 X5
+G1 Y5
+G0 Z-15.5
+G0 X40 Y30
+M30
+)");
+        QVERIFY(load(path));
+        QVERIFY(m_window->program()->program().runnable());
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running &&
+                                     state().positionMm[2] < -19.9 && state().positionMm[0] > 20,
+                                 kMachineTimeoutMs);
+        button(m_window->runPanel(), "pause")->click();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Paused, kMachineTimeoutMs);
+        QTRY_COMPARE(m_window->holdBanner()->kind(), HoldBanner::Kind::Paused);
+        const double zBefore = state().positionMm[2];
+        button(m_window->holdBanner(), "holdLift")->click();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::ToolLifted, kMachineTimeoutMs);
+        QTRY_COMPARE(m_window->holdBanner()->kind(), HoldBanner::Kind::ToolLifted);
+        QTRY_VERIFY2(std::abs(state().positionMm[2] - zBefore -
+                              m_window->profile().motion.toolLiftMm) < 1e-6,
+                     qPrintable(describe() + QStringLiteral(" z before %1").arg(zBefore)));
+        button(m_window->holdBanner(), "holdLowerContinue")->click();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QVERIFY(waitIdle());
+        QTRY_COMPARE(m_window->dro()->workText(0), QStringLiteral("40.000"));
+        QTRY_COMPARE(m_window->dro()->workText(1), QStringLiteral("30.000"));
+        QTRY_COMPARE(m_window->dro()->workText(2), QStringLiteral("-15.500"));
+        QVERIFY(m_window->holdBanner()->isHidden());
+    }
+
+    void jogAndSoftLimitRefusal()
+    {
+        QVERIFY(waitIdle());
+        const double x0 = state().positionMm[0];
+        m_window->jogStep(0, 1.0, 1200);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(state().positionMm[0] - (x0 + 1.0)) < 1e-6,
+                                 kMachineTimeoutMs);
+        QVERIFY(waitIdle());
+        const double beyond = m_window->profile().axes[0].softMaxMm - state().positionMm[0] + 5;
+        m_window->jogStep(0, beyond, 1200);
+        QVERIFY(m_window->lastError().contains(QStringLiteral("soft limits")));
+        QTest::qWait(0);
+        QCOMPARE(state().mode, MachineMode::Idle);
+        QCOMPARE(state().positionMm[0], x0 + 1.0);
+    }
+
+    void spindleAndCoolantReachTheUnit()
+    {
+        QVERIFY(waitIdle());
+        auto *spindle = button(m_window->outputsPanel(), "spindle");
+        spindle->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().spindlePermille > 0, 10000);
+        QTRY_VERIFY(m_window->ioPanel()->outputLed(0));
+        button(m_window->outputsPanel(), "coolant")->click();
+        const std::uint8_t bit =
+            machine::outputBit(m_window->profile(), machine::OutputFunction::Coolant);
+        QVERIFY(bit != 0);
+        QTRY_VERIFY_WITH_TIMEOUT((state().outputs & bit) == 0, 10000); // active low: on
+        spindle->click();
+        QTRY_COMPARE_WITH_TIMEOUT(state().spindlePermille, 0, 10000);
+        button(m_window->outputsPanel(), "coolant")->click();
+        QTRY_VERIFY_WITH_TIMEOUT((state().outputs & bit) != 0, 10000);
+    }
+
+    void feedOverrideReachesTheUnit()
+    {
+        auto *slider =
+            m_window->outputsPanel()->findChild<QSlider *>(QStringLiteral("feedOverride"));
+        slider->setValue(150);
+        emit slider->sliderReleased();
+        QTRY_COMPARE_WITH_TIMEOUT(state().overridePercent, 150, 10000);
+        button(m_window->outputsPanel(), "feedDown")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().overridePercent < 150, 10000);
+        button(m_window->outputsPanel(), "feedReset")->click();
+        QTRY_COMPARE_WITH_TIMEOUT(state().overridePercent, 100, 10000);
+    }
+
+    void programWithAnErrorShowsItAndRunsNothing()
+    {
+        QVERIFY(waitIdle());
+        const QString path =
+            writeProgram(QStringLiteral("bad.nc"), "G21 G90\nG0 X10\nG1 X20 Q\nM30\n");
+        QSignalSpy errors(m_window.get(), &MainWindow::errorShown);
+        QVERIFY(load(path));
+        QVERIFY(!m_window->program()->program().ok());
+        QVERIFY(errors.count() >= 1);
+        QVERIFY2(m_window->lastError().contains(QStringLiteral("bad.nc:3:")),
+                 qPrintable(m_window->lastError()));
+        QVERIFY(!button(m_window->runPanel(), "run")->isEnabled());
+        const auto before = state().positionSteps;
+        m_window->runProgram();
+        QVERIFY(m_window->lastError().contains(QStringLiteral("bad.nc:3:")));
+        QTest::qWait(0);
+        QCOMPARE(state().mode, MachineMode::Idle);
+        QCOMPARE(state().positionSteps, before);
+    }
+
+    void eepromWriteAndReadBack()
+    {
+        QVERIFY(waitIdle());
+        UnitConfigDialog *dlg = m_window->openUnitConfig();
+        QSignalSpy finished(dlg, &UnitConfigDialog::finished);
+        dlg->readUnit();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(dlg->statusText()));
+        for (const auto &r : dlg->rows())
+            QVERIFY(r.unit.has_value());
+        machine::MachineConfig changed = m_window->profile();
+        changed.eeprom.polarity = 0x5A;
+        changed.axes[1].stepsPerMm = 250;
+        dlg->setProfile(changed);
+        dlg->readUnit();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY(dlg->differences() >= 2);
+        dlg->writeUnit(false);
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY2(finished.last().at(0).toBool(), qPrintable(dlg->statusText()));
+        QCOMPARE(dlg->differences(), 0);
+        dlg->readUnit(); // a fresh read agrees
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QCOMPARE(dlg->differences(), 0);
+        dlg->close();
+    }
+
+    // Every shipped sample program checks clean against the default profile; the short one runs
+    // to completion from the GUI.
+    void samplePrograms()
+    {
+        QVERIFY(waitIdle());
+        const QDir dir(QStringLiteral(FREZKA_SOURCE_DIR "/resources/programs"));
+        const QStringList files = dir.entryList({QStringLiteral("*.nc")}, QDir::Files);
+        QVERIFY(files.size() >= 2);
+        for (const QString &f : files) {
+            QVERIFY(load(dir.filePath(f)));
+            const LoadedProgram &p = m_window->program()->program();
+            QVERIFY2(p.runnable(), qPrintable(f + QStringLiteral(": ") + m_window->lastError()));
+            QVERIFY(p.estimatedS > 0);
+            qInfo("%s: %d lines, estimated %.1f s", qPrintable(f), p.text->lineCount(),
+                  p.estimatedS);
+        }
+        if (qgetenv("FREZKA_WORKFLOW_UNIT") == "pty")
+            QSKIP("The sample run is covered by the built-in emulator run.");
+        QVERIFY(load(dir.filePath(QStringLiteral("engraving-star.nc"))));
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QVERIFY(waitIdle());
+        // Ends at X0 Y0 Z3 of its own G54 (X100 Y100 Z-60 in machine coordinates).
+        QTRY_COMPARE(m_window->dro()->machineText(0), QStringLiteral("100.000"));
+        QTRY_COMPARE(m_window->dro()->machineText(1), QStringLiteral("100.000"));
+        QTRY_COMPARE(m_window->dro()->machineText(2), QStringLiteral("-57.000"));
+    }
+
+    void languageSwitch()
+    {
+        auto *run = button(m_window->runPanel(), "run");
+        QCOMPARE(run->text(), QStringLiteral("Run"));
+        SettingsDialog *settings = m_window->openSettings();
+        settings->chooseLanguage(QStringLiteral("cs"));
+        QTRY_COMPARE(run->text(), QStringLiteral("Spustit"));
+        QCOMPARE(QSettings().value(QStringLiteral("language")).toString(), QStringLiteral("cs"));
+        settings->chooseLanguage(QStringLiteral("en"));
+        QTRY_COMPARE(run->text(), QStringLiteral("Run"));
+        settings->close();
+    }
+
+    // A failed step must not leave the machine held for the next one.
+    void cleanup()
+    {
+        if (state().mode != MachineMode::Idle) {
+            m_window->controller()->abort();
+            waitIdle();
+        }
+    }
+
+    void cleanupTestCase()
+    {
+        m_window.reset();
+        m_emu.terminate();
+        m_emu.waitForFinished(5000);
+    }
+
+private:
+    QTemporaryDir m_dir;
+    QProcess m_emu;
+    std::unique_ptr<MainWindow> m_window;
+};
+
+QTEST_MAIN(WorkflowTest)
+#include "workflow_test.moc"

@@ -1,0 +1,2781 @@
+<?xml version='1.0' encoding='utf-8'?>
+<!DOCTYPE TS>
+<TS version="2.1" language="cs_CZ">
+<context>
+    <name>LinkWorker</name>
+    <message>
+        <source>connected: %1</source>
+        <translation>připojeno: %1</translation>
+    </message>
+    <message>
+        <source>no serial port given</source>
+        <translation>není zadán sériový port</translation>
+    </message>
+    <message>
+        <source>the built-in emulator is not available yet</source>
+        <translation>vestavěný emulátor zatím není k dispozici</translation>
+    </message>
+</context>
+<context>
+    <name>SerialTransport</name>
+    <message>
+        <source>%1 at %2 Bd</source>
+        <translation>%1 při %2 Bd</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>%1 nelze otevřít: %2</translation>
+    </message>
+    <message>
+        <source>cannot configure %1: %2</source>
+        <translation>%1 nelze nastavit: %2</translation>
+    </message>
+    <message>
+        <source>write to %1: port not open</source>
+        <translation>zápis do %1: port není otevřen</translation>
+    </message>
+    <message>
+        <source>short write to %1: %2 of %3 bytes (%4)</source>
+        <translation>neúplný zápis do %1: %2 z %3 bajtů (%4)</translation>
+    </message>
+    <message>
+        <source>%1: %2 (ignored)</source>
+        <translation>%1: %2 (přeskočeno)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gcode</name>
+    <message>
+        <source>Cannot read the file %1</source>
+        <translation>Soubor %1 nelze přečíst</translation>
+    </message>
+    <message>
+        <source>Check that the file exists and is readable.</source>
+        <translation>Zkontrolujte, že soubor existuje a lze jej číst.</translation>
+    </message>
+    <message>
+        <source>Unexpected character '%1'</source>
+        <translation>Neočekávaný znak '%1'</translation>
+    </message>
+    <message>
+        <source>Remove it or put it inside a comment ( ).</source>
+        <translation>Odstraňte jej nebo jej vložte do komentáře ( ).</translation>
+    </message>
+    <message>
+        <source>Comment is not closed</source>
+        <translation>Komentář není uzavřen</translation>
+    </message>
+    <message>
+        <source>Add ')' at the end of the comment.</source>
+        <translation>Doplňte ')' na konec komentáře.</translation>
+    </message>
+    <message>
+        <source>Comment inside a comment</source>
+        <translation>Komentář uvnitř komentáře</translation>
+    </message>
+    <message>
+        <source>Close the first comment before opening another one.</source>
+        <translation>Uzavřete první komentář dříve, než otevřete další.</translation>
+    </message>
+    <message>
+        <source>A number is expected after %1</source>
+        <translation>Za %1 se očekává číslo</translation>
+    </message>
+    <message>
+        <source>Write a number, a #parameter or an [expression] after the letter.</source>
+        <translation>Za písmeno napište číslo, #parametr nebo [výraz].</translation>
+    </message>
+    <message>
+        <source>%1 needs a whole number</source>
+        <translation>%1 vyžaduje celé číslo</translation>
+    </message>
+    <message>
+        <source>Use an integer value here.</source>
+        <translation>Zde použijte celočíselnou hodnotu.</translation>
+    </message>
+    <message>
+        <source>Word %1 appears twice in one block</source>
+        <translation>Slovo %1 je v jednom bloku dvakrát</translation>
+    </message>
+    <message>
+        <source>Keep one of them or split the block into two lines.</source>
+        <translation>Ponechte jen jedno, nebo blok rozdělte na dva řádky.</translation>
+    </message>
+    <message>
+        <source>Word %1 is not supported</source>
+        <translation>Slovo %1 není podporováno</translation>
+    </message>
+    <message>
+        <source>Remove the word; Frezka does not use it.</source>
+        <translation>Slovo odstraňte, Frezka jej nepoužívá.</translation>
+    </message>
+    <message>
+        <source>Axis %1 is not supported</source>
+        <translation>Osa %1 není podporována</translation>
+    </message>
+    <message>
+        <source>Frezka machines have the axes X, Y, Z and A.</source>
+        <translation>Stroje Frezka mají osy X, Y, Z a A.</translation>
+    </message>
+    <message>
+        <source>The file ended without M2, M30 or %</source>
+        <translation>Soubor skončil bez M2, M30 nebo %</translation>
+    </message>
+    <message>
+        <source>End the program with M2 or M30 (or enclose it in % lines).</source>
+        <translation>Ukončete program pomocí M2 nebo M30 (nebo jej uzavřete mezi řádky %).</translation>
+    </message>
+    <message>
+        <source>The program starts with % but has no closing %</source>
+        <translation>Program začíná znakem %, ale chybí uzavírací %</translation>
+    </message>
+    <message>
+        <source>Add a line with % at the end of the program.</source>
+        <translation>Na konec programu doplňte řádek s %.</translation>
+    </message>
+    <message>
+        <source>Line is too long (%1 characters)</source>
+        <translation>Řádek je příliš dlouhý (%1 znaků)</translation>
+    </message>
+    <message>
+        <source>Split the line; at most 65535 characters are allowed.</source>
+        <translation>Rozdělte řádek; povoleno je nejvýše 65535 znaků.</translation>
+    </message>
+    <message>
+        <source>Unknown G code %1</source>
+        <translation>Neznámý G kód %1</translation>
+    </message>
+    <message>
+        <source>Check the number; see the list of supported codes.</source>
+        <translation>Zkontrolujte číslo; viz seznam podporovaných kódů.</translation>
+    </message>
+    <message>
+        <source>%1 is not supported</source>
+        <translation>%1 není podporováno</translation>
+    </message>
+    <message>
+        <source>Remove it or post-process the program without it (see the supported codes).</source>
+        <translation>Odstraňte jej, nebo program vygenerujte postprocesorem bez něj (viz podporované kódy).</translation>
+    </message>
+    <message>
+        <source>Unknown M code %1</source>
+        <translation>Neznámý M kód %1</translation>
+    </message>
+    <message>
+        <source>%1 conflicts with another code of the same group in this block</source>
+        <translation>%1 je v tomto bloku v rozporu s jiným kódem téže skupiny</translation>
+    </message>
+    <message>
+        <source>Use one code of each modal group per block.</source>
+        <translation>V jednom bloku použijte z každé modální skupiny jen jeden kód.</translation>
+    </message>
+    <message>
+        <source>Too many M codes in one block</source>
+        <translation>Příliš mnoho M kódů v jednom bloku</translation>
+    </message>
+    <message>
+        <source>Use at most four M codes per block.</source>
+        <translation>V jednom bloku použijte nejvýše čtyři M kódy.</translation>
+    </message>
+    <message>
+        <source>Word %1 is not used by any code in this block</source>
+        <translation>Slovo %1 nepoužívá žádný kód v tomto bloku</translation>
+    </message>
+    <message>
+        <source>Remove the word or add the code that uses it.</source>
+        <translation>Odstraňte slovo, nebo doplňte kód, který jej používá.</translation>
+    </message>
+    <message>
+        <source>Axis words are given with G80</source>
+        <translation>Souřadnice os jsou zadány spolu s G80</translation>
+    </message>
+    <message>
+        <source>G80 cancels the motion mode; give the axis words with G0 or G1.</source>
+        <translation>G80 ruší režim pohybu; souřadnice os zadejte s G0 nebo G1.</translation>
+    </message>
+    <message>
+        <source>Axis words are given but no motion mode is active</source>
+        <translation>Souřadnice os jsou zadány, ale není aktivní žádný režim pohybu</translation>
+    </message>
+    <message>
+        <source>Add G0, G1, G2 or G3 to the block.</source>
+        <translation>Doplňte do bloku G0, G1, G2 nebo G3.</translation>
+    </message>
+    <message>
+        <source>%1 and a motion code both use the axis words</source>
+        <translation>%1 i kód pohybu používají souřadnice os</translation>
+    </message>
+    <message>
+        <source>Put them on separate lines.</source>
+        <translation>Dejte je na samostatné řádky.</translation>
+    </message>
+    <message>
+        <source>%1 needs at least one axis word</source>
+        <translation>%1 vyžaduje alespoň jednu souřadnici osy</translation>
+    </message>
+    <message>
+        <source>Add the axis words (X, Y, Z or A).</source>
+        <translation>Doplňte souřadnice os (X, Y, Z nebo A).</translation>
+    </message>
+    <message>
+        <source>%1 must not be negative</source>
+        <translation>%1 nesmí být záporné</translation>
+    </message>
+    <message>
+        <source>Use zero or a positive value.</source>
+        <translation>Použijte nulu nebo kladnou hodnotu.</translation>
+    </message>
+    <message>
+        <source>G53 needs G0 or G1</source>
+        <translation>G53 vyžaduje G0 nebo G1</translation>
+    </message>
+    <message>
+        <source>Write G53 together with G0 or G1 on the same line.</source>
+        <translation>Napište G53 spolu s G0 nebo G1 na stejný řádek.</translation>
+    </message>
+    <message>
+        <source>G53 cannot be used in G91 mode</source>
+        <translation>G53 nelze použít v režimu G91</translation>
+    </message>
+    <message>
+        <source>Switch to G90 before moving in machine coordinates.</source>
+        <translation>Před pohybem ve strojních souřadnicích přepněte na G90.</translation>
+    </message>
+    <message>
+        <source>G4 needs the dwell time P</source>
+        <translation>G4 vyžaduje dobu prodlevy P</translation>
+    </message>
+    <message>
+        <source>Add P with the dwell time in seconds.</source>
+        <translation>Doplňte P s dobou prodlevy v sekundách.</translation>
+    </message>
+    <message>
+        <source>G10 %1 is not supported</source>
+        <translation>G10 %1 není podporováno</translation>
+    </message>
+    <message>
+        <source>Use G10 L2 or G10 L20 to set a work offset.</source>
+        <translation>Posunutí nulového bodu obrobku nastavte pomocí G10 L2 nebo G10 L20.</translation>
+    </message>
+    <message>
+        <source>G10 needs P0 to P9 (got %1)</source>
+        <translation>G10 vyžaduje P0 až P9 (zadáno %1)</translation>
+    </message>
+    <message>
+        <source>P0 is the active coordinate system, P1 to P9 are G54 to G59.3.</source>
+        <translation>P0 je aktivní souřadný systém, P1 až P9 jsou G54 až G59.3.</translation>
+    </message>
+    <message>
+        <source>Coordinate system rotation (G10 R) is not supported</source>
+        <translation>Natočení souřadného systému (G10 R) není podporováno</translation>
+    </message>
+    <message>
+        <source>Remove the R word.</source>
+        <translation>Odstraňte slovo R.</translation>
+    </message>
+    <message>
+        <source>%1 with zero feed rate</source>
+        <translation>%1 s nulovým posuvem</translation>
+    </message>
+    <message>
+        <source>Set a feed rate with F before the first feed move.</source>
+        <translation>Před prvním pracovním pohybem nastavte posuv pomocí F.</translation>
+    </message>
+    <message>
+        <source>%1 in inverse time mode (G93) needs an F word</source>
+        <translation>%1 v režimu inverzního času (G93) vyžaduje slovo F</translation>
+    </message>
+    <message>
+        <source>Give F on every feed move in G93, or switch to G94.</source>
+        <translation>V G93 zadejte F u každého pracovního pohybu, nebo přepněte na G94.</translation>
+    </message>
+    <message>
+        <source>Arc without I, J, K or R</source>
+        <translation>Oblouk bez I, J, K nebo R</translation>
+    </message>
+    <message>
+        <source>Give the centre with I/J/K or the radius with R.</source>
+        <translation>Zadejte střed pomocí I/J/K nebo poloměr pomocí R.</translation>
+    </message>
+    <message>
+        <source>Arc with both R and I/J/K</source>
+        <translation>Oblouk zároveň s R i I/J/K</translation>
+    </message>
+    <message>
+        <source>Use either the centre (I/J/K) or the radius (R).</source>
+        <translation>Použijte buď střed (I/J/K), nebo poloměr (R).</translation>
+    </message>
+    <message>
+        <source>%1 is not in the arc's plane</source>
+        <translation>%1 neleží v rovině oblouku</translation>
+    </message>
+    <message>
+        <source>G17 uses I and J, G18 uses I and K, G19 uses J and K.</source>
+        <translation>G17 používá I a J, G18 I a K, G19 J a K.</translation>
+    </message>
+    <message>
+        <source>%1 is missing for an arc with absolute centre (G90.1)</source>
+        <translation>U oblouku s absolutním středem (G90.1) chybí %1</translation>
+    </message>
+    <message>
+        <source>Give both centre coordinates in G90.1 mode.</source>
+        <translation>V režimu G90.1 zadejte obě souřadnice středu.</translation>
+    </message>
+    <message>
+        <source>Arc with zero radius %1</source>
+        <translation>Oblouk s nulovým poloměrem %1</translation>
+    </message>
+    <message>
+        <source>Check the centre offsets I/J/K.</source>
+        <translation>Zkontrolujte vzdálenosti středu I/J/K.</translation>
+    </message>
+    <message>
+        <source>Arc end point is not on the circle: %1</source>
+        <translation>Koncový bod oblouku neleží na kružnici: %1</translation>
+    </message>
+    <message>
+        <source>Check the end point and the centre; the radii to start and end must match.</source>
+        <translation>Zkontrolujte koncový bod a střed; poloměry k začátku a konci se musí shodovat.</translation>
+    </message>
+    <message>
+        <source>Arc radius is too small to reach the end point %1</source>
+        <translation>Poloměr oblouku je příliš malý na dosažení koncového bodu %1</translation>
+    </message>
+    <message>
+        <source>Use a radius of at least half the distance between start and end.</source>
+        <translation>Použijte poloměr alespoň poloviny vzdálenosti mezi začátkem a koncem.</translation>
+    </message>
+    <message>
+        <source>Arc given by R ends where it starts</source>
+        <translation>Oblouk zadaný pomocí R končí tam, kde začíná</translation>
+    </message>
+    <message>
+        <source>Use I/J/K to program a full circle.</source>
+        <translation>Celou kružnici programujte pomocí I/J/K.</translation>
+    </message>
+    <message>
+        <source>Arc given by R has no end point in its plane</source>
+        <translation>Oblouk zadaný pomocí R nemá koncový bod ve své rovině</translation>
+    </message>
+    <message>
+        <source>Give the end point, or use I/J/K for a full circle.</source>
+        <translation>Zadejte koncový bod, nebo pro celou kružnici použijte I/J/K.</translation>
+    </message>
+    <message>
+        <source>Arc turns P must be a positive integer (got %1)</source>
+        <translation>Počet otáček oblouku P musí být kladné celé číslo (zadáno %1)</translation>
+    </message>
+    <message>
+        <source>Use P1 or more, or leave P out.</source>
+        <translation>Použijte P1 nebo více, nebo P vynechte.</translation>
+    </message>
+    <message>
+        <source>Probe move does not move</source>
+        <translation>Pohyb sondy nikam nevede</translation>
+    </message>
+    <message>
+        <source>Give an end point different from the current position.</source>
+        <translation>Zadejte koncový bod odlišný od současné polohy.</translation>
+    </message>
+    <message>
+        <source>Probe move in inverse time mode (G93)</source>
+        <translation>Pohyb sondy v režimu inverzního času (G93)</translation>
+    </message>
+    <message>
+        <source>Switch to G94 before probing.</source>
+        <translation>Před měřením sondou přepněte na G94.</translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs R</source>
+        <translation>Pevný cyklus %1 vyžaduje R</translation>
+    </message>
+    <message>
+        <source>Give the retract plane R on the first block of the cycle.</source>
+        <translation>V prvním bloku cyklu zadejte rovinu návratu R.</translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs its depth</source>
+        <translation>Pevný cyklus %1 vyžaduje hloubku</translation>
+    </message>
+    <message>
+        <source>Give the hole depth (Z in G17) on the first block of the cycle.</source>
+        <translation>V prvním bloku cyklu zadejte hloubku díry (Z v G17).</translation>
+    </message>
+    <message>
+        <source>Canned cycle retract plane R is below the hole depth</source>
+        <translation>Rovina návratu R pevného cyklu je pod dnem díry</translation>
+    </message>
+    <message>
+        <source>R must be above the bottom of the hole.</source>
+        <translation>R musí být nad dnem díry.</translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs the dwell P</source>
+        <translation>Pevný cyklus %1 vyžaduje prodlevu P</translation>
+    </message>
+    <message>
+        <source>Give P (seconds) on the first block of the cycle.</source>
+        <translation>V prvním bloku cyklu zadejte P (sekundy).</translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs the peck Q</source>
+        <translation>Pevný cyklus %1 vyžaduje přírůstek Q</translation>
+    </message>
+    <message>
+        <source>Give Q (peck depth) on the first block of the cycle.</source>
+        <translation>V prvním bloku cyklu zadejte Q (hloubku přírůstku).</translation>
+    </message>
+    <message>
+        <source>Peck depth Q must be positive</source>
+        <translation>Hloubka přírůstku Q musí být kladná</translation>
+    </message>
+    <message>
+        <source>Use a positive Q.</source>
+        <translation>Použijte kladné Q.</translation>
+    </message>
+    <message>
+        <source>Canned cycle repeat L must be a positive integer</source>
+        <translation>Počet opakování L pevného cyklu musí být kladné celé číslo</translation>
+    </message>
+    <message>
+        <source>Use L1 or more, or leave L out.</source>
+        <translation>Použijte L1 nebo více, nebo L vynechte.</translation>
+    </message>
+    <message>
+        <source>Canned cycle in inverse time mode (G93)</source>
+        <translation>Pevný cyklus v režimu inverzního času (G93)</translation>
+    </message>
+    <message>
+        <source>Switch to G94 before a canned cycle.</source>
+        <translation>Před pevným cyklem přepněte na G94.</translation>
+    </message>
+    <message>
+        <source>Expression is not closed</source>
+        <translation>Výraz není uzavřen</translation>
+    </message>
+    <message>
+        <source>Add the missing ']'.</source>
+        <translation>Doplňte chybějící ']'.</translation>
+    </message>
+    <message>
+        <source>Unknown operator %1</source>
+        <translation>Neznámý operátor %1</translation>
+    </message>
+    <message>
+        <source>Use + - * / ** MOD AND OR XOR EQ NE GT GE LT LE.</source>
+        <translation>Použijte + - * / ** MOD AND OR XOR EQ NE GT GE LT LE.</translation>
+    </message>
+    <message>
+        <source>Unknown function %1</source>
+        <translation>Neznámá funkce %1</translation>
+    </message>
+    <message>
+        <source>See the list of functions (ABS, ACOS, ASIN, ATAN, COS, EXP, FIX, FUP, LN, ROUND, SIN, SQRT, TAN, EXISTS).</source>
+        <translation>Viz seznam funkcí (ABS, ACOS, ASIN, ATAN, COS, EXP, FIX, FUP, LN, ROUND, SIN, SQRT, TAN, EXISTS).</translation>
+    </message>
+    <message>
+        <source>Division by zero</source>
+        <translation>Dělení nulou</translation>
+    </message>
+    <message>
+        <source>Check the divisor.</source>
+        <translation>Zkontrolujte dělitele.</translation>
+    </message>
+    <message>
+        <source>%1 of a value outside its domain</source>
+        <translation>%1 z hodnoty mimo definiční obor</translation>
+    </message>
+    <message>
+        <source>Check the argument (e.g. SQRT of a negative number).</source>
+        <translation>Zkontrolujte argument (např. SQRT ze záporného čísla).</translation>
+    </message>
+    <message>
+        <source>Negative number raised to a non-integer power</source>
+        <translation>Záporné číslo umocněné na neceločíselný exponent</translation>
+    </message>
+    <message>
+        <source>Check the operands of **.</source>
+        <translation>Zkontrolujte operandy **.</translation>
+    </message>
+    <message>
+        <source>Parameter number %1 is out of range</source>
+        <translation>Číslo parametru %1 je mimo rozsah</translation>
+    </message>
+    <message>
+        <source>Use parameters #1 to #5601.</source>
+        <translation>Použijte parametry #1 až #5601.</translation>
+    </message>
+    <message>
+        <source>Parameter %1 is not defined</source>
+        <translation>Parametr %1 není definován</translation>
+    </message>
+    <message>
+        <source>Assign it a value before reading it.</source>
+        <translation>Před čtením mu přiřaďte hodnotu.</translation>
+    </message>
+    <message>
+        <source>Parameter %1 is read-only</source>
+        <translation>Parametr %1 je jen pro čtení</translation>
+    </message>
+    <message>
+        <source>System parameters are set by codes (e.g. G10 L2, G92), not by assignment.</source>
+        <translation>Systémové parametry se nastavují kódy (např. G10 L2, G92), ne přiřazením.</translation>
+    </message>
+    <message>
+        <source>Bad parameter name %1</source>
+        <translation>Chybný název parametru %1</translation>
+    </message>
+    <message>
+        <source>Write named parameters as #&lt;name&gt;.</source>
+        <translation>Pojmenované parametry pište jako #&lt;název&gt;.</translation>
+    </message>
+    <message>
+        <source>An expression is expected %1</source>
+        <translation>Očekává se výraz %1</translation>
+    </message>
+    <message>
+        <source>Write the value in brackets, e.g. [#1 + 2].</source>
+        <translation>Napište hodnotu do hranatých závorek, např. [#1 + 2].</translation>
+    </message>
+    <message>
+        <source>Malformed O word %1</source>
+        <translation>Chybně zapsané slovo O %1</translation>
+    </message>
+    <message>
+        <source>Write O-words as o100 if [...] or o&lt;name&gt; sub.</source>
+        <translation>Slova O pište jako o100 if [...] nebo o&lt;název&gt; sub.</translation>
+    </message>
+    <message>
+        <source>Unknown O-word keyword %1</source>
+        <translation>Neznámé klíčové slovo O %1</translation>
+    </message>
+    <message>
+        <source>Use sub, endsub, call, return, if, elseif, else, endif, while, endwhile, do, repeat, endrepeat, break or continue.</source>
+        <translation>Použijte sub, endsub, call, return, if, elseif, else, endif, while, endwhile, do, repeat, endrepeat, break nebo continue.</translation>
+    </message>
+    <message>
+        <source>An O-word line has other words</source>
+        <translation>Řádek se slovem O obsahuje další slova</translation>
+    </message>
+    <message>
+        <source>Put the other words on their own line.</source>
+        <translation>Ostatní slova dejte na samostatný řádek.</translation>
+    </message>
+    <message>
+        <source>%1 without its opening O-word</source>
+        <translation>%1 bez úvodního slova O</translation>
+    </message>
+    <message>
+        <source>Check the O numbers; they must match the opening line.</source>
+        <translation>Zkontrolujte čísla O; musí odpovídat úvodnímu řádku.</translation>
+    </message>
+    <message>
+        <source>%1 is never closed</source>
+        <translation>%1 není nikde uzavřeno</translation>
+    </message>
+    <message>
+        <source>Add the matching end line (endsub, endif, endwhile, endrepeat or while).</source>
+        <translation>Doplňte odpovídající koncový řádek (endsub, endif, endwhile, endrepeat nebo while).</translation>
+    </message>
+    <message>
+        <source>Subroutine %1 is not defined</source>
+        <translation>Podprogram %1 není definován</translation>
+    </message>
+    <message>
+        <source>Define the subroutine before calling it.</source>
+        <translation>Podprogram definujte před jeho voláním.</translation>
+    </message>
+    <message>
+        <source>Subroutine calls nested too deeply</source>
+        <translation>Volání podprogramů jsou vnořena příliš hluboko</translation>
+    </message>
+    <message>
+        <source>Check for unbounded recursion.</source>
+        <translation>Zkontrolujte, zda nejde o nekonečnou rekurzi.</translation>
+    </message>
+    <message>
+        <source>%1 outside a loop with this O number</source>
+        <translation>%1 mimo cyklus s tímto číslem O</translation>
+    </message>
+    <message>
+        <source>Use break and continue only inside their own loop.</source>
+        <translation>Break a continue používejte jen uvnitř jejich cyklu.</translation>
+    </message>
+    <message>
+        <source>%1 outside a subroutine</source>
+        <translation>%1 mimo podprogram</translation>
+    </message>
+    <message>
+        <source>Use return and endsub only inside a subroutine.</source>
+        <translation>Return a endsub používejte jen uvnitř podprogramu.</translation>
+    </message>
+    <message>
+        <source>The program executes more than %1 blocks</source>
+        <translation>Program vykoná více než %1 bloků</translation>
+    </message>
+    <message>
+        <source>Check the loops; one of them may never end.</source>
+        <translation>Zkontrolujte cykly; některý z nich možná nikdy neskončí.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::grinder::EmulatorTransport</name>
+    <message>
+        <source>The emulator is not open</source>
+        <translation>Emulátor není otevřen</translation>
+    </message>
+    <message>
+        <source>emulator</source>
+        <translation>emulátor</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::grinder::SerialTransport</name>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 nelze otevřít: %2</translation>
+    </message>
+    <message>
+        <source>Cannot set %1 to %2 Bd: %3</source>
+        <translation>%1 nelze nastavit na %2 Bd: %3</translation>
+    </message>
+    <message>
+        <source>%1 is not open</source>
+        <translation>%1 není otevřen</translation>
+    </message>
+    <message>
+        <source>Short write on %1: %2 of %3 bytes queued (%4)</source>
+        <translation>Neúplný zápis na %1: zařazeno %2 z %3 bajtů (%4)</translation>
+    </message>
+    <message>
+        <source>Serial port %1: %2</source>
+        <translation>Sériový port %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::grinder::TransferSession</name>
+    <message>
+        <source>The port %1 is not open.</source>
+        <translation>Port %1 není otevřen.</translation>
+    </message>
+    <message>
+        <source>The file is empty; there is nothing to send.</source>
+        <translation>Soubor je prázdný, není co odeslat.</translation>
+    </message>
+    <message>
+        <source>The data are too long for one message: %1 bytes, at most %2.</source>
+        <translation>Data jsou na jednu zprávu příliš dlouhá: %1 bajtů, nejvýše %2.</translation>
+    </message>
+    <message>
+        <source>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506); the file has %1. Choose a file saved from an ANC control.</source>
+        <translation>Data programů ANC mají 21760 nebo 21766 bajtů (0x5500 nebo 0x5506), soubor má %1. Vyberte soubor uložený z řídicího systému ANC.</translation>
+    </message>
+    <message>
+        <source>HEDIT data have 46 bytes (0x2E); the file has %1. Choose a file saved with HEDIT.</source>
+        <translation>Data HEDIT mají 46 bajtů (0x2E), soubor má %1. Vyberte soubor uložený pomocí HEDIT.</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Zrušeno.</translation>
+    </message>
+    <message>
+        <source>&lt;- noise, %1 bytes skipped: %2</source>
+        <translation>&lt;- šum, přeskočeno %1 bajtů: %2</translation>
+    </message>
+    <message>
+        <source>Unexpected reply %1 to %2.</source>
+        <translation>Neočekávaná odpověď %1 na %2.</translation>
+    </message>
+    <message>
+        <source>The controller answered NAK to ENQ.</source>
+        <translation>Řídicí systém odpověděl na ENQ zápornou odpovědí NAK.</translation>
+    </message>
+    <message>
+        <source>The controller answered NAK to %1: is it set to program transfer (KONFIG6) with the selector in PGN?</source>
+        <translation>Řídicí systém odpověděl na %1 zápornou odpovědí NAK: je nastaven na přenos programů (KONFIG6) a přepínač v poloze PGN?</translation>
+    </message>
+    <message>
+        <source>The controller answered NAK to %1 (%2 times): it did not accept the data.</source>
+        <translation>Řídicí systém odpověděl na %1 zápornou odpovědí NAK (%2krát): data nepřijal.</translation>
+    </message>
+    <message>
+        <source>&lt;- %1 ignored: no reply expected now</source>
+        <translation>&lt;- %1 přeskočeno: žádná odpověď se teď nečeká</translation>
+    </message>
+    <message>
+        <source>Bad checksum in %1 from the controller: received %2, computed %3.</source>
+        <translation>Chybný kontrolní součet v %1 od řídicího systému: přijato %2, vypočteno %3.</translation>
+    </message>
+    <message>
+        <source>%1 Given up after %2 repeats.</source>
+        <translation>%1 Vzdáno po %2 opakováních.</translation>
+    </message>
+    <message>
+        <source>Repeat %1 of %2: %3</source>
+        <translation>Opakování %1 z %2: %3</translation>
+    </message>
+    <message>
+        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd) and that the controller is set to transfer (KONFIG6).</source>
+        <translation>Na ENQ nepřišla do %1 s odpověď. Zkontrolujte kabel, nastavení linky (%2 Bd) a zda je řídicí systém nastaven na přenos (KONFIG6).</translation>
+    </message>
+    <message>
+        <source>The data message stopped after %1 of %2 bytes (no byte for %3 s).</source>
+        <translation>Datová zpráva se zastavila po %1 z %2 bajtů (%3 s nepřišel žádný bajt).</translation>
+    </message>
+    <message>
+        <source>No data from the controller within %1 s after %2.</source>
+        <translation>Řídicí systém neposlal do %1 s po %2 žádná data.</translation>
+    </message>
+    <message>
+        <source>No ACK to %1 within %2 s after its last byte.</source>
+        <translation>Na %1 nepřišlo do %2 s po posledním bajtu potvrzení ACK.</translation>
+    </message>
+    <message>
+        <source>The final ACK could not be sent within %1 s.</source>
+        <translation>Závěrečné potvrzení ACK se nepodařilo odeslat do %1 s.</translation>
+    </message>
+    <message>
+        <source>Connected.</source>
+        <translation>Připojeno.</translation>
+    </message>
+    <message>
+        <source>Received %1 bytes, header "%2".</source>
+        <translation>Přijato %1 bajtů, hlavička „%2“.</translation>
+    </message>
+    <message>
+        <source>Sent %1 bytes; the controller stored them.</source>
+        <translation>Odesláno %1 bajtů, řídicí systém je uložil.</translation>
+    </message>
+    <message>
+        <source>no inner blocks (%1 bytes)</source>
+        <translation>žádné vnitřní bloky (%1 bajtů)</translation>
+    </message>
+    <message>
+        <source>%1 blocks, all valid</source>
+        <translation>%1 bloků, všechny v pořádku</translation>
+    </message>
+    <message>
+        <source>%1 (no AA)</source>
+        <translation>%1 (chybí AA)</translation>
+    </message>
+    <message>
+        <source>%1 (wrong block id)</source>
+        <translation>%1 (chybné číslo bloku)</translation>
+    </message>
+    <message>
+        <source>%1 (checksum)</source>
+        <translation>%1 (kontrolní součet)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 blocks invalid: %3 (the data are kept unchanged)</source>
+        <translation>%1 z %2 bloků je chybných: %3 (data zůstávají beze změny)</translation>
+    </message>
+    <message>
+        <source>Warning: inner blocks: %1</source>
+        <translation>Upozornění: vnitřní bloky: %1</translation>
+    </message>
+    <message>
+        <source>&lt;- ACK ignored: a late answer to an earlier message</source>
+        <translation>&lt;- ACK přeskočeno: opožděná odpověď na dřívější zprávu</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::grinder::ZLinkSession</name>
+    <message>
+        <source>No answer to "%1" within %2 s. Is the controller set to Z-position transfer (KONFIG6 = 1) with the selector in PGN?</source>
+        <translation>Na „%1“ nepřišla do %2 s odpověď. Je řídicí systém nastaven na přenos polohy Z (KONFIG6 = 1) a přepínač v poloze PGN?</translation>
+    </message>
+    <message>
+        <source>The controller rejected a character of "%1" (%2).</source>
+        <translation>Řídicí systém odmítl znak z „%1“ (%2).</translation>
+    </message>
+    <message>
+        <source>Unreadable reply "%1".</source>
+        <translation>Nečitelná odpověď „%1“.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui</name>
+    <message>
+        <source>none</source>
+        <translation>žádné</translation>
+    </message>
+    <message>
+        <source>spindle</source>
+        <translation>vřeteno</translation>
+    </message>
+    <message>
+        <source>unused</source>
+        <translation>nepoužito</translation>
+    </message>
+    <message>
+        <source>laser</source>
+        <translation>laser</translation>
+    </message>
+    <message>
+        <source>coolant</source>
+        <translation>chlazení</translation>
+    </message>
+    <message>
+        <source>air blow</source>
+        <translation>ofuk</translation>
+    </message>
+    <message>
+        <source>machine cover lock</source>
+        <translation>zámek krytu stroje</translation>
+    </message>
+    <message>
+        <source>tool release</source>
+        <translation>uvolnění nástroje</translation>
+    </message>
+    <message>
+        <source>tool cover open</source>
+        <translation>otevření krytu nástrojů</translation>
+    </message>
+    <message>
+        <source>brake</source>
+        <translation>brzda</translation>
+    </message>
+    <message>
+        <source>interrupt signal</source>
+        <translation>signalizace přerušení</translation>
+    </message>
+    <message>
+        <source>Lower limit %1</source>
+        <translation>Spodní limit %1</translation>
+    </message>
+    <message>
+        <source>Upper limit %1</source>
+        <translation>Horní limit %1</translation>
+    </message>
+    <message>
+        <source>Steps per mm %1</source>
+        <translation>Kroků na mm %1</translation>
+    </message>
+    <message>
+        <source>Homing speed %1</source>
+        <translation>Rychlost najetí do reference %1</translation>
+    </message>
+    <message>
+        <source>Relay function</source>
+        <translation>Funkce relé</translation>
+    </message>
+    <message>
+        <source>OUT1 function</source>
+        <translation>Funkce OUT1</translation>
+    </message>
+    <message>
+        <source>OUT2 function</source>
+        <translation>Funkce OUT2</translation>
+    </message>
+    <message>
+        <source>OUT3 function</source>
+        <translation>Funkce OUT3</translation>
+    </message>
+    <message>
+        <source>PWM mode</source>
+        <translation>Režim PWM</translation>
+    </message>
+    <message>
+        <source>STEP/DIR polarity</source>
+        <translation>Polarita STEP/DIR</translation>
+    </message>
+    <message>
+        <source>Handwheel (MPG)</source>
+        <translation>Ruční kolečko (MPG)</translation>
+    </message>
+    <message>
+        <source>Input that starts homing</source>
+        <translation>Vstup spouštějící najetí do reference</translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN0-7</source>
+        <translation>Povolení přerušení IN0-7</translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN14/IN15</source>
+        <translation>Povolení přerušení IN14/IN15</translation>
+    </message>
+    <message>
+        <source>Input polarity IN0-7</source>
+        <translation>Polarita vstupů IN0-7</translation>
+    </message>
+    <message>
+        <source>Input polarity IN14/IN15</source>
+        <translation>Polarita vstupů IN14/IN15</translation>
+    </message>
+    <message>
+        <source>A axis coupling</source>
+        <translation>Sdružení osy A</translation>
+    </message>
+    <message>
+        <source>Baud range</source>
+        <translation>Rozsah přenosových rychlostí</translation>
+    </message>
+    <message>
+        <source>Handwheel acceleration</source>
+        <translation>Zrychlení ručního kolečka</translation>
+    </message>
+    <message>
+        <source>Handwheel maximum speed</source>
+        <translation>Maximální rychlost ručního kolečka</translation>
+    </message>
+    <message>
+        <source>Handwheel brake delay</source>
+        <translation>Prodleva brzdění ručního kolečka</translation>
+    </message>
+    <message>
+        <source>Default spindle speed</source>
+        <translation>Výchozí otáčky vřetene</translation>
+    </message>
+    <message>
+        <source>Handwheel step multiplier</source>
+        <translation>Násobitel kroku ručního kolečka</translation>
+    </message>
+    <message>
+        <source>Brake release delay</source>
+        <translation>Zpoždění odbrždění brzdy</translation>
+    </message>
+    <message>
+        <source>Address 0x%1</source>
+        <translation>Adresa 0x%1</translation>
+    </message>
+    <message>
+        <source>%1 steps/mm</source>
+        <translation>%1 kroků/mm</translation>
+    </message>
+    <message>
+        <source>homing off</source>
+        <translation>reference vypnuta</translation>
+    </message>
+    <message>
+        <source>standard PWM</source>
+        <translation>standardní PWM</translation>
+    </message>
+    <message>
+        <source>breakout-board signal (jumper ANA/PWM)</source>
+        <translation>signál pro oddělovací desky (propojka ANA/PWM)</translation>
+    </message>
+    <message>
+        <source>unknown (0x%1)</source>
+        <translation>neznámé (0x%1)</translation>
+    </message>
+    <message>
+        <source>STEP inverted: %1; DIR inverted: %2</source>
+        <translation>STEP obrácen: %1; DIR obrácen: %2</translation>
+    </message>
+    <message>
+        <source>DIR inverted: %1; STEP on %2 edge</source>
+        <translation>DIR obrácen: %1; STEP na %2 hraně</translation>
+    </message>
+    <message>
+        <source>falling</source>
+        <translation>sestupné</translation>
+    </message>
+    <message>
+        <source>rising</source>
+        <translation>náběžné</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>zapnuto</translation>
+    </message>
+    <message>
+        <source>on, within the limits</source>
+        <translation>zapnuto, v mezích limit</translation>
+    </message>
+    <message>
+        <source>on, 4th position drives rotary A</source>
+        <translation>zapnuto, 4. poloha ovládá otočnou osu A</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>vypnuto</translation>
+    </message>
+    <message>
+        <source>on with limits, 4th position drives rotary A</source>
+        <translation>zapnuto s limity, 4. poloha ovládá otočnou osu A</translation>
+    </message>
+    <message>
+        <source>IN%1 held &gt; 1 s starts homing</source>
+        <translation>IN%1 sepnutý &gt; 1 s spustí najetí do reference</translation>
+    </message>
+    <message>
+        <source>enabled: %1</source>
+        <translation>povoleno: %1</translation>
+    </message>
+    <message>
+        <source>active high: %1</source>
+        <translation>aktivní v log. 1: %1</translation>
+    </message>
+    <message>
+        <source>slaved to X</source>
+        <translation>sdružena s X</translation>
+    </message>
+    <message>
+        <source>slaved to Y</source>
+        <translation>sdružena s Y</translation>
+    </message>
+    <message>
+        <source>slaved to Z</source>
+        <translation>sdružena se Z</translation>
+    </message>
+    <message>
+        <source>independent</source>
+        <translation>samostatná</translation>
+    </message>
+    <message>
+        <source>921 600 / 460 800 / 230 400 / 115 200 Bd</source>
+        <translation>921 600 / 460 800 / 230 400 / 115 200 Bd</translation>
+    </message>
+    <message>
+        <source>19 200 / 38 400 / 57 600 / 115 200 Bd</source>
+        <translation>19 200 / 38 400 / 57 600 / 115 200 Bd</translation>
+    </message>
+    <message>
+        <source>×%1 (x1 = %2 mm)</source>
+        <translation>×%1 (x1 = %2 mm)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ConsoleWidget</name>
+    <message>
+        <source>Save log</source>
+        <translation>Uložit záznam</translation>
+    </message>
+    <message>
+        <source>Text files (*.txt *.log)</source>
+        <translation>Textové soubory (*.txt *.log)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Do %1 nelze zapisovat: %2</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>Save log…</source>
+        <translation>Uložit záznam…</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazat</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Odeslat</translation>
+    </message>
+    <message>
+        <source>G-code (e.g. G0 X10) or a raw unit command (e.g. !0PF), Enter sends</source>
+        <translation>G-kód (např. G0 X10) nebo přímý příkaz jednotce (např. !0PF), Enter odešle</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::DroWidget</name>
+    <message>
+        <source>Work</source>
+        <translation>Obrobek</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Stroj</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>Nula</translation>
+    </message>
+    <message>
+        <source>Set the work zero of %1 at the current position</source>
+        <translation>Nastavit nulový bod obrobku osy %1 do současné polohy</translation>
+    </message>
+    <message>
+        <source>Zero all</source>
+        <translation>Vynulovat vše</translation>
+    </message>
+    <message>
+        <source>Set the work zero of every axis at the current position</source>
+        <translation>Nastavit nulový bod obrobku všech os do současné polohy</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>Posunutí</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::GrinderWindow</name>
+    <message>
+        <source>Connect</source>
+        <translation>Připojit</translation>
+    </message>
+    <message>
+        <source>Grinder transfer</source>
+        <translation>Přenos pro brusky</translation>
+    </message>
+    <message>
+        <source>K51 programs (K51LOAD/K51SAVE, KCOMM)</source>
+        <translation>Programy K51 (K51LOAD/K51SAVE, KCOMM)</translation>
+    </message>
+    <message>
+        <source>ANC programs (ANCLOAD/ANCSAVE)</source>
+        <translation>Programy ANC (ANCLOAD/ANCSAVE)</translation>
+    </message>
+    <message>
+        <source>ANC hard-chrome data (HEDIT)</source>
+        <translation>Data tvrdého chromu ANC (HEDIT)</translation>
+    </message>
+    <message>
+        <source>Program transfer</source>
+        <translation>Přenos programů</translation>
+    </message>
+    <message>
+        <source>Z position, FORM=1 (ASCII)</source>
+        <translation>Poloha Z, FORM=1 (ASCII)</translation>
+    </message>
+    <message>
+        <source>Z position, FORM=2 (binary)</source>
+        <translation>Poloha Z, FORM=2 (binárně)</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Připojení</translation>
+    </message>
+    <message>
+        <source>Control:</source>
+        <translation>Řídicí systém:</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Režim:</translation>
+    </message>
+    <message>
+        <source>Z position</source>
+        <translation>Poloha Z</translation>
+    </message>
+    <message>
+        <source>Serial monitor</source>
+        <translation>Monitor sériové linky</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>Nepřipojeno.</translation>
+    </message>
+    <message>
+        <source>Cannot connect: %1</source>
+        <translation>Nelze se připojit: %1</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Odpojit</translation>
+    </message>
+    <message>
+        <source>Open: %1 at %2 Bd.</source>
+        <translation>Otevřeno: %1 při %2 Bd.</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>Připojeno</translation>
+    </message>
+    <message>
+        <source>No connection</source>
+        <translation>Bez spojení</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <source>%1 — %2: %3</source>
+        <translation>%1 — %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::HoldBanner</name>
+    <message>
+        <source>at line %1</source>
+        <translation>na řádku %1</translation>
+    </message>
+    <message>
+        <source>Paused %1</source>
+        <translation>Pozastaveno %1</translation>
+    </message>
+    <message>
+        <source>The machine has stopped along its ramp and keeps the rest of the job. Continue, or lift the tool to change or clean it.</source>
+        <translation>Stroj zabrzdil po rampě a zbytek úlohy si drží. Pokračujte, nebo zvedněte nástroj k výměně či očištění.</translation>
+    </message>
+    <message>
+        <source>Program stop %1</source>
+        <translation>Zastavení programu %1</translation>
+    </message>
+    <message>
+        <source>%1
+Do what the program asks, then press Continue.</source>
+        <translation>%1
+Udělejte, co program žádá, a stiskněte Pokračovat.</translation>
+    </message>
+    <message>
+        <source>Stopped by an input %1</source>
+        <translation>Zastaveno vstupem %1</translation>
+    </message>
+    <message>
+        <source>%1
+Check the machine; when it is safe, Continue or Abort.</source>
+        <translation>%1
+Zkontrolujte stroj; až to bude bezpečné, pokračujte nebo úlohu přerušte.</translation>
+    </message>
+    <message>
+        <source>Probe failed %1</source>
+        <translation>Měření sondou selhalo %1</translation>
+    </message>
+    <message>
+        <source>%1
+The probe did not touch as expected. Abort the job or Continue.</source>
+        <translation>%1
+Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</translation>
+    </message>
+    <message>
+        <source>Tool lifted %1</source>
+        <translation>Nástroj zvednut %1</translation>
+    </message>
+    <message>
+        <source>Change or clean the tool. Then lower it: the spindle starts again if it was stopped, the tool goes back down to where it was, and the job continues — at a new feed if you enter one.</source>
+        <translation>Vyměňte nebo očistěte nástroj. Pak jej spusťte: vřeteno se znovu roztočí, pokud bylo zastaveno, nástroj sjede zpět tam, kde byl, a úloha pokračuje — s novým posuvem, pokud jej zadáte.</translation>
+    </message>
+    <message>
+        <source>Stop the spindle</source>
+        <translation>Zastavit vřeteno</translation>
+    </message>
+    <message>
+        <source>New feed (0 = unchanged):</source>
+        <translation>Nový posuv (0 = beze změny):</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Pokračovat</translation>
+    </message>
+    <message>
+        <source>Lift tool</source>
+        <translation>Zvednout nástroj</translation>
+    </message>
+    <message>
+        <source>Lower and continue</source>
+        <translation>Spustit a pokračovat</translation>
+    </message>
+    <message>
+        <source>Lower, stay paused</source>
+        <translation>Spustit, zůstat pozastaveno</translation>
+    </message>
+    <message>
+        <source>Abort job</source>
+        <translation>Přerušit úlohu</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::JogPanel</name>
+    <message>
+        <source>Home %1</source>
+        <translation>Reference %1</translation>
+    </message>
+    <message>
+        <source>Find the home switch of %1</source>
+        <translation>Najet do reference osy %1 (referenční spínač)</translation>
+    </message>
+    <message>
+        <source>Home all</source>
+        <translation>Reference všech os</translation>
+    </message>
+    <message>
+        <source>Home every axis in the order of the machine profile</source>
+        <translation>Najet do reference všemi osami v pořadí podle profilu stroje</translation>
+    </message>
+    <message>
+        <source>Step (mm):</source>
+        <translation>Krok (mm):</translation>
+    </message>
+    <message>
+        <source>Continuous</source>
+        <translation>Plynule</translation>
+    </message>
+    <message>
+        <source>Move while the button or key is held</source>
+        <translation>Pohyb, dokud je tlačítko nebo klávesa stisknuta</translation>
+    </message>
+    <message>
+        <source>Jog feed:</source>
+        <translation>Posuv ručního pohybu:</translation>
+    </message>
+    <message>
+        <source>Handwheel (MPG)</source>
+        <translation>Ruční kolečko (MPG)</translation>
+    </message>
+    <message>
+        <source>Keyboard: arrows jog X/Y, Page Up/Page Down jog Z</source>
+        <translation>Klávesnice: šipky posouvají X/Y, Page Up/Page Down posouvá Z</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::MainWindow</name>
+    <message>
+        <source>About Frezka</source>
+        <translation>O aplikaci Frezka</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Frezka %1&lt;/b&gt;&lt;br&gt;Runs CNC mills through GVE interpolators.</source>
+        <translation>&lt;b&gt;Frezka %1&lt;/b&gt;&lt;br&gt;Řídí CNC frézky přes interpolátory GVE.</translation>
+    </message>
+    <message>
+        <source>Frezka</source>
+        <translation>Frezka</translation>
+    </message>
+    <message>
+        <source>Frezka — %1</source>
+        <translation>Frezka — %1</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Poloha</translation>
+    </message>
+    <message>
+        <source>Program run</source>
+        <translation>Běh programu</translation>
+    </message>
+    <message>
+        <source>Jog and homing</source>
+        <translation>Ruční pohyb a reference</translation>
+    </message>
+    <message>
+        <source>Spindle and outputs</source>
+        <translation>Vřeteno a výstupy</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Konzole</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Rychlost</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Soubor</translation>
+    </message>
+    <message>
+        <source>&amp;Open program…</source>
+        <translation>&amp;Otevřít program…</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>Otevřít &amp;nedávné</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Konec</translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation>&amp;Stroj</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Připojit</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Odpojit</translation>
+    </message>
+    <message>
+        <source>&amp;Settings…</source>
+        <translation>&amp;Nastavení…</translation>
+    </message>
+    <message>
+        <source>&amp;Unit configuration (EEPROM)…</source>
+        <translation>&amp;Konfigurace jednotky (EEPROM)…</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Zobrazení</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Výchozí rozvržení</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Nástroje</translation>
+    </message>
+    <message>
+        <source>&amp;Grinder transfer (ANC/K51)…</source>
+        <translation>Přenos pro &amp;brusky (ANC/K51)…</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>Nápo&amp;věda</translation>
+    </message>
+    <message>
+        <source>&amp;About Frezka</source>
+        <translation>&amp;O aplikaci Frezka</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>Žádný program</translation>
+    </message>
+    <message>
+        <source>Open program</source>
+        <translation>Otevřít program</translation>
+    </message>
+    <message>
+        <source>G-code (*.nc *.ngc *.gcode *.tap *.txt);;All files (*)</source>
+        <translation>G-kód (*.nc *.ngc *.gcode *.tap *.txt);;Všechny soubory (*)</translation>
+    </message>
+    <message>
+        <source>Loading %1…</source>
+        <translation>Načítám %1…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 — %n line(s)</source>
+        <translation>
+            <numerusform>%1 — %n řádek</numerusform>
+            <numerusform>%1 — %n řádky</numerusform>
+            <numerusform>%1 — %n řádků</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The program has %n error(s); nothing will run until they are fixed.
+%1</source>
+        <translation>
+            <numerusform>Program má %n chybu; nic se nespustí, dokud nebude opravena.
+%1</numerusform>
+            <numerusform>Program má %n chyby; nic se nespustí, dokud nebudou opraveny.
+%1</numerusform>
+            <numerusform>Program má %n chyb; nic se nespustí, dokud nebudou opraveny.
+%1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Laser</source>
+        <translation>Laser</translation>
+    </message>
+    <message>
+        <source>Cover lock</source>
+        <translation>Zámek krytu</translation>
+    </message>
+    <message>
+        <source>Tool release</source>
+        <translation>Uvolnění nástroje</translation>
+    </message>
+    <message>
+        <source>Tool cover</source>
+        <translation>Kryt nástrojů</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Nepřipojeno</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>Připojuji…</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Připraveno</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Najíždění do reference</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Ruční pohyb</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Obrábění</translation>
+    </message>
+    <message>
+        <source>Stopping</source>
+        <translation>Zastavuji</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Pozastaveno</translation>
+    </message>
+    <message>
+        <source>Tool lifted</source>
+        <translation>Nástroj zvednut</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Spojení ztraceno</translation>
+    </message>
+    <message>
+        <source>Program finished in %1.</source>
+        <translation>Program dokončen za %1.</translation>
+    </message>
+    <message>
+        <source>Program finished.</source>
+        <translation>Program dokončen.</translation>
+    </message>
+    <message>
+        <source>Homing runs for all axes in the profile's order (the unit driver homes the whole machine).</source>
+        <translation>Najetí do reference proběhne pro všechny osy v pořadí podle profilu (ovladač jednotky referuje celý stroj).</translation>
+    </message>
+    <message>
+        <source>No output of this machine is set up for that function; assign one in Settings › Machine profile › Outputs.</source>
+        <translation>Žádný výstup tohoto stroje nemá tuto funkci; přiřaďte ji v Nastavení › Profil stroje › Výstupy.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Check passed: %n move(s), estimated time %1, within the soft limits.</source>
+        <translation>
+            <numerusform>Kontrola v pořádku: %n pohyb, odhadovaný čas %1, v softwarových limitech.</numerusform>
+            <numerusform>Kontrola v pořádku: %n pohyby, odhadovaný čas %1, v softwarových limitech.</numerusform>
+            <numerusform>Kontrola v pořádku: %n pohybů, odhadovaný čas %1, v softwarových limitech.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Check passed.</source>
+        <translation>Kontrola v pořádku.</translation>
+    </message>
+    <message>
+        <source>Connecting to %1 at %2 Bd…</source>
+        <translation>Připojuji se k %1 rychlostí %2 Bd…</translation>
+    </message>
+    <message>
+        <source>the built-in emulator</source>
+        <translation>vestavěnému emulátoru</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Řádek %1</translation>
+    </message>
+    <message>
+        <source>The link to the unit was lost. The job position is kept: reconnect, then Resume.</source>
+        <translation>Spojení s jednotkou bylo ztraceno. Poloha v úloze je uchována: připojte se znovu a pak stiskněte Pokračovat.</translation>
+    </message>
+    <message>
+        <source>Unit EEPROM differs from the profile: %1</source>
+        <translation>EEPROM jednotky se liší od profilu: %1</translation>
+    </message>
+    <message>
+        <source>The unit reported a problem: %1</source>
+        <translation>Jednotka hlásí problém: %1</translation>
+    </message>
+    <message>
+        <source>Command: %1</source>
+        <translation>Příkaz: %1</translation>
+    </message>
+    <message>
+        <source>Reply: %1</source>
+        <translation>Odpověď: %1</translation>
+    </message>
+    <message>
+        <source>Program line: %1</source>
+        <translation>Řádek programu: %1</translation>
+    </message>
+    <message>
+        <source>Open a program first.</source>
+        <translation>Nejprve otevřete program.</translation>
+    </message>
+    <message>
+        <source>The program has errors and cannot run:
+%1</source>
+        <translation>Program obsahuje chyby a nelze jej spustit:
+%1</translation>
+    </message>
+    <message>
+        <source>The machine is not ready (%1); wait until it is, then Run.</source>
+        <translation>Stroj není připraven (%1); počkejte a pak stiskněte Spustit.</translation>
+    </message>
+    <message>
+        <source>Planning from the current position…</source>
+        <translation>Plánuji od současné polohy…</translation>
+    </message>
+    <message>
+        <source>Running %1.</source>
+        <translation>Obrábím %1.</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1 would go to %2 mm, outside the soft limits %3 … %4 mm.</source>
+        <translation>Ruční pohyb odmítnut: %1 by jela na %2 mm, mimo softwarové limity %3 … %4 mm.</translation>
+    </message>
+    <message>
+        <source>Set the work zero while the machine is ready and still.</source>
+        <translation>Nulový bod obrobku nastavujte, když je stroj připraven a stojí.</translation>
+    </message>
+    <message>
+        <source>Manual G-code runs only while the machine is ready.</source>
+        <translation>Ruční G-kód lze spustit jen tehdy, když je stroj připraven.</translation>
+    </message>
+    <message>
+        <source>manual line</source>
+        <translation>ruční řádek</translation>
+    </message>
+    <message>
+        <source>Manual: %1</source>
+        <translation>Ručně: %1</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::OutputsPanel</name>
+    <message>
+        <source>Spindle</source>
+        <translation>Vřeteno</translation>
+    </message>
+    <message>
+        <source>Switch the spindle on or off at the speed on the right</source>
+        <translation>Zapnout nebo vypnout vřeteno s otáčkami vpravo</translation>
+    </message>
+    <message>
+        <source>Speed:</source>
+        <translation>Otáčky:</translation>
+    </message>
+    <message>
+        <source>Coolant</source>
+        <translation>Chlazení</translation>
+    </message>
+    <message>
+        <source>Air blow</source>
+        <translation>Ofuk</translation>
+    </message>
+    <message>
+        <source>Feed:</source>
+        <translation>Posuv:</translation>
+    </message>
+    <message>
+        <source>Feed override in percent of the programmed feed (XM)</source>
+        <translation>Korekce posuvu v procentech programovaného posuvu (XM)</translation>
+    </message>
+    <message>
+        <source>Raise every queued speed by 6.25 % (XU)</source>
+        <translation>Zvýšit všechny rychlosti ve frontě o 6,25 % (XU)</translation>
+    </message>
+    <message>
+        <source>Lower every queued speed by 6.25 % (XD)</source>
+        <translation>Snížit všechny rychlosti ve frontě o 6,25 % (XD)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::Plan</name>
+    <message>
+        <source>the move leaves the machine's travel (soft limits); check the work zero and the program</source>
+        <translation>pohyb opouští pracovní rozsah stroje (softwarové limity); zkontrolujte nulový bod obrobku a program</translation>
+    </message>
+    <message>
+        <source>the program moves an axis this machine does not have</source>
+        <translation>program pohybuje osou, kterou tento stroj nemá</translation>
+    </message>
+    <message>
+        <source>the position is beyond the unit's step counters</source>
+        <translation>poloha je mimo rozsah čítačů kroků jednotky</translation>
+    </message>
+    <message>
+        <source>a feed move has no feed rate (F)</source>
+        <translation>pracovní pohyb nemá posuv (F)</translation>
+    </message>
+    <message>
+        <source>the spindle speed (S) is above the machine's maximum</source>
+        <translation>otáčky vřetene (S) jsou nad maximem stroje</translation>
+    </message>
+    <message>
+        <source>the unit cannot do this</source>
+        <translation>jednotka toto neumí</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3 (%4)</source>
+        <translation>%1:%2: %3 (%4)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::PortSettingsRow</name>
+    <message>
+        <source>Serial port; a path such as /dev/pts/3 may be typed.</source>
+        <translation>Sériový port; lze zapsat i cestu, např. /dev/pts/3.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>žádné</translation>
+    </message>
+    <message>
+        <source>even</source>
+        <translation>sudá</translation>
+    </message>
+    <message>
+        <source>odd</source>
+        <translation>lichá</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <source>Baud:</source>
+        <translation>Rychlost (Bd):</translation>
+    </message>
+    <message>
+        <source>Data bits:</source>
+        <translation>Datové bity:</translation>
+    </message>
+    <message>
+        <source>Parity:</source>
+        <translation>Parita:</translation>
+    </message>
+    <message>
+        <source>Stop bits:</source>
+        <translation>Stop bity:</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::Profile</name>
+    <message>
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>the file cannot be read or written</source>
+        <translation>soubor nelze číst ani zapisovat</translation>
+    </message>
+    <message>
+        <source>the file is not valid JSON</source>
+        <translation>soubor není platný JSON</translation>
+    </message>
+    <message>
+        <source>the value has the wrong type</source>
+        <translation>hodnota má chybný typ</translation>
+    </message>
+    <message>
+        <source>unknown key (a typo?)</source>
+        <translation>neznámý klíč (překlep?)</translation>
+    </message>
+    <message>
+        <source>the value is outside its range</source>
+        <translation>hodnota je mimo povolený rozsah</translation>
+    </message>
+    <message>
+        <source>the value is none of the allowed ones</source>
+        <translation>hodnota není žádná z povolených</translation>
+    </message>
+    <message>
+        <source>the value contradicts another setting or the unit type</source>
+        <translation>hodnota odporuje jinému nastavení nebo typu jednotky</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>The machine profile %1 cannot be used; the built-in GVE64 defaults are active until it is fixed:
+%2</source>
+        <translation>Profil stroje %1 nelze použít; do jeho opravy platí vestavěné výchozí hodnoty GVE64:
+%2</translation>
+    </message>
+    <message>
+        <source>Profile name</source>
+        <translation>Název profilu</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Jednotka</translation>
+    </message>
+    <message>
+        <source>Unit type</source>
+        <translation>Typ jednotky</translation>
+    </message>
+    <message>
+        <source>Maximum pulse rate</source>
+        <translation>Maximální kmitočet kroků</translation>
+    </message>
+    <message>
+        <source>Firmware version</source>
+        <translation>Verze firmwaru</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Připojení</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Přenosová rychlost</translation>
+    </message>
+    <message>
+        <source>Checksums</source>
+        <translation>Kontrolní součty</translation>
+    </message>
+    <message>
+        <source>Packets</source>
+        <translation>Pakety</translation>
+    </message>
+    <message>
+        <source>Commands per packet</source>
+        <translation>Příkazů v paketu</translation>
+    </message>
+    <message>
+        <source>Axes</source>
+        <translation>Osy</translation>
+    </message>
+    <message>
+        <source>X axis</source>
+        <translation>Osa X</translation>
+    </message>
+    <message>
+        <source>Y axis</source>
+        <translation>Osa Y</translation>
+    </message>
+    <message>
+        <source>Z axis</source>
+        <translation>Osa Z</translation>
+    </message>
+    <message>
+        <source>A axis</source>
+        <translation>Osa A</translation>
+    </message>
+    <message>
+        <source>Present</source>
+        <translation>Osa je osazena</translation>
+    </message>
+    <message>
+        <source>Steps per mm</source>
+        <translation>Kroků na mm</translation>
+    </message>
+    <message>
+        <source>Invert direction</source>
+        <translation>Obrátit směr</translation>
+    </message>
+    <message>
+        <source>Soft limit min</source>
+        <translation>Softwarový limit min</translation>
+    </message>
+    <message>
+        <source>Soft limit max</source>
+        <translation>Softwarový limit max</translation>
+    </message>
+    <message>
+        <source>Maximum speed</source>
+        <translation>Maximální rychlost</translation>
+    </message>
+    <message>
+        <source>Rapid speed</source>
+        <translation>Rychloposuv</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>Zrychlení</translation>
+    </message>
+    <message>
+        <source>Maximum speed jump at a corner</source>
+        <translation>Maximální skok rychlosti v rohu</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Najíždění do reference</translation>
+    </message>
+    <message>
+        <source>Order (0 = not homed)</source>
+        <translation>Pořadí (0 = bez reference)</translation>
+    </message>
+    <message>
+        <source>Direction to the switch (-1/+1)</source>
+        <translation>Směr ke spínači (-1/+1)</translation>
+    </message>
+    <message>
+        <source>Maximum search travel</source>
+        <translation>Maximální dráha hledání</translation>
+    </message>
+    <message>
+        <source>Speed toward the switch</source>
+        <translation>Rychlost ke spínači</translation>
+    </message>
+    <message>
+        <source>Speed off the switch</source>
+        <translation>Rychlost od spínače</translation>
+    </message>
+    <message>
+        <source>Maximum back-off travel</source>
+        <translation>Maximální dráha odjetí</translation>
+    </message>
+    <message>
+        <source>Position after homing</source>
+        <translation>Poloha po najetí do reference</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>Pohyb</translation>
+    </message>
+    <message>
+        <source>Corner deviation</source>
+        <translation>Odchylka v rohu</translation>
+    </message>
+    <message>
+        <source>Arc chord tolerance</source>
+        <translation>Tolerance tětivy oblouku</translation>
+    </message>
+    <message>
+        <source>Pause between stand-alone moves</source>
+        <translation>Prodleva mezi samostatnými pohyby</translation>
+    </message>
+    <message>
+        <source>Speed mode</source>
+        <translation>Režim rychlosti</translation>
+    </message>
+    <message>
+        <source>Tool lift</source>
+        <translation>Zvednutí nástroje</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Vřeteno</translation>
+    </message>
+    <message>
+        <source>Spin-up wait</source>
+        <translation>Čekání na roztočení</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Výstupy</translation>
+    </message>
+    <message>
+        <source>OUT1 function</source>
+        <translation>Funkce OUT1</translation>
+    </message>
+    <message>
+        <source>OUT2 function</source>
+        <translation>Funkce OUT2</translation>
+    </message>
+    <message>
+        <source>OUT3 function</source>
+        <translation>Funkce OUT3</translation>
+    </message>
+    <message>
+        <source>Output switched by M7</source>
+        <translation>Výstup spínaný M7</translation>
+    </message>
+    <message>
+        <source>Unit EEPROM</source>
+        <translation>EEPROM jednotky</translation>
+    </message>
+    <message>
+        <source>Compare with the unit on connect</source>
+        <translation>Při připojení porovnat s jednotkou</translation>
+    </message>
+    <message>
+        <source>Handwheel (MPG)</source>
+        <translation>Ruční kolečko (MPG)</translation>
+    </message>
+    <message>
+        <source>Handwheel acceleration</source>
+        <translation>Zrychlení ručního kolečka</translation>
+    </message>
+    <message>
+        <source>Handwheel maximum speed</source>
+        <translation>Maximální rychlost ručního kolečka</translation>
+    </message>
+    <message>
+        <source>Handwheel brake delay</source>
+        <translation>Prodleva brzdění ručního kolečka</translation>
+    </message>
+    <message>
+        <source>Handwheel step multiplier</source>
+        <translation>Násobitel kroku ručního kolečka</translation>
+    </message>
+    <message>
+        <source>Input that starts homing (0 = off)</source>
+        <translation>Vstup spouštějící najetí do reference (0 = vypnuto)</translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN0-7</source>
+        <translation>Povolení přerušení IN0-7</translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN14/IN15</source>
+        <translation>Povolení přerušení IN14/IN15</translation>
+    </message>
+    <message>
+        <source>Polarity IN0-7</source>
+        <translation>Polarita IN0-7</translation>
+    </message>
+    <message>
+        <source>Polarity IN14/IN15</source>
+        <translation>Polarita IN14/IN15</translation>
+    </message>
+    <message>
+        <source>A axis slaved to (0 none, 1 X, 2 Y, 3 Z)</source>
+        <translation>Osa A sdružena s (0 žádná, 1 X, 2 Y, 3 Z)</translation>
+    </message>
+    <message>
+        <source>PWM for breakout boards</source>
+        <translation>PWM pro oddělovací desky</translation>
+    </message>
+    <message>
+        <source>Invert STEP polarity</source>
+        <translation>Obrátit polaritu STEP</translation>
+    </message>
+    <message>
+        <source>Default spindle speed</source>
+        <translation>Výchozí otáčky vřetene</translation>
+    </message>
+    <message>
+        <source>Brake release delay</source>
+        <translation>Zpoždění odbrždění brzdy</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automaticky</translation>
+    </message>
+    <message>
+        <source>Path speed (VK)</source>
+        <translation>Rychlost po dráze (VK)</translation>
+    </message>
+    <message>
+        <source>Major axis speed (VN)</source>
+        <translation>Rychlost hlavní osy (VN)</translation>
+    </message>
+    <message>
+        <source>Unused</source>
+        <translation>Nepoužito</translation>
+    </message>
+    <message>
+        <source>Laser</source>
+        <translation>Laser</translation>
+    </message>
+    <message>
+        <source>Coolant</source>
+        <translation>Chlazení</translation>
+    </message>
+    <message>
+        <source>Air blow</source>
+        <translation>Ofuk</translation>
+    </message>
+    <message>
+        <source>Machine cover lock</source>
+        <translation>Zámek krytu stroje</translation>
+    </message>
+    <message>
+        <source>Tool release</source>
+        <translation>Uvolnění nástroje</translation>
+    </message>
+    <message>
+        <source>Tool cover open</source>
+        <translation>Otevření krytu nástrojů</translation>
+    </message>
+    <message>
+        <source>Brake</source>
+        <translation>Brzda</translation>
+    </message>
+    <message>
+        <source>Interrupt signal</source>
+        <translation>Signalizace přerušení</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Vypnuto</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>Zapnuto</translation>
+    </message>
+    <message>
+        <source>On, within the limits</source>
+        <translation>Zapnuto, v mezích limit</translation>
+    </message>
+    <message>
+        <source>On, 4th position drives rotary A</source>
+        <translation>Zapnuto, 4. poloha ovládá otočnou osu A</translation>
+    </message>
+    <message>
+        <source>On with limits, 4th position drives rotary A</source>
+        <translation>Zapnuto s limity, 4. poloha ovládá otočnou osu A</translation>
+    </message>
+    <message>
+        <source>GVE84</source>
+        <translation>GVE84</translation>
+    </message>
+    <message>
+        <source>GVE64</source>
+        <translation>GVE64</translation>
+    </message>
+    <message>
+        <source>GVE64 PHANTOM</source>
+        <translation>GVE64 PHANTOM</translation>
+    </message>
+    <message>
+        <source>GVE114</source>
+        <translation>GVE114</translation>
+    </message>
+    <message>
+        <source>Maximum spindle speed</source>
+        <translation>Maximální otáčky vřetene</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProfileEditor</name>
+    <message>
+        <source>"emulator" = the built-in unit emulator; or a serial port such as /dev/ttyUSB0; or a typed path such as the pty printed by gve-emu</source>
+        <translation>„emulator“ = vestavěný emulátor jednotky; nebo sériový port, např. /dev/ttyUSB0; nebo zapsaná cesta, např. pty vypsaný programem gve-emu</translation>
+    </message>
+    <message>
+        <source>General</source>
+        <translation>Obecné</translation>
+    </message>
+    <message>
+        <source>The profile is valid.</source>
+        <translation>Profil je v pořádku.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n problem(s) — the profile cannot be saved yet.</source>
+        <translation>
+            <numerusform>%n problém — profil zatím nelze uložit.</numerusform>
+            <numerusform>%n problémy — profil zatím nelze uložit.</numerusform>
+            <numerusform>%n problémů — profil zatím nelze uložit.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cannot load the profile %1:
+%2</source>
+        <translation>Profil %1 nelze načíst:
+%2</translation>
+    </message>
+    <message>
+        <source>The profile has problems; fix them first:
+%1</source>
+        <translation>Profil obsahuje problémy; nejprve je opravte:
+%1</translation>
+    </message>
+    <message>
+        <source>Cannot save the profile %1: %2</source>
+        <translation>Profil %1 nelze uložit: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProgramSession</name>
+    <message>
+        <source>Reading</source>
+        <translation>Čtení</translation>
+    </message>
+    <message>
+        <source>Indexing lines</source>
+        <translation>Indexování řádků</translation>
+    </message>
+    <message>
+        <source>Interpreting</source>
+        <translation>Interpretace</translation>
+    </message>
+    <message>
+        <source>Preparing the view</source>
+        <translation>Příprava zobrazení</translation>
+    </message>
+    <message>
+        <source>Planning</source>
+        <translation>Plánování</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 nelze otevřít: %2</translation>
+    </message>
+    <message>
+        <source>This build has no G-code interpreter; the program cannot be checked.</source>
+        <translation>Toto sestavení nemá interpret G-kódu; program nelze zkontrolovat.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::RunPanel</name>
+    <message>
+        <source>Elapsed %1</source>
+        <translation>Uplynulo %1</translation>
+    </message>
+    <message>
+        <source>Remaining %1</source>
+        <translation>Zbývá %1</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>Kontrola</translation>
+    </message>
+    <message>
+        <source>Check the program against the machine profile without moving</source>
+        <translation>Zkontrolovat program proti profilu stroje bez pohybu</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Spustit</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastavit</translation>
+    </message>
+    <message>
+        <source>Brake along the ramp and hold; Resume continues</source>
+        <translation>Zabrzdit po rampě a držet; Pokračovat pokračuje</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Pokračovat</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>Stop the program; the position stays known</source>
+        <translation>Zastavit program; poloha zůstává známá</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Přerušit</translation>
+    </message>
+    <message>
+        <source>Stop at once and drop every queued move</source>
+        <translation>Okamžitě zastavit a zahodit všechny pohyby ve frontě</translation>
+    </message>
+    <message>
+        <source>Tool lift…</source>
+        <translation>Zvednutí nástroje…</translation>
+    </message>
+    <message>
+        <source>Lift the tool, switch the spindle off, change or clean it, continue</source>
+        <translation>Zvednout nástroj, vypnout vřeteno, vyměnit nebo očistit nástroj, pokračovat</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::SerialMonitor</name>
+    <message>
+        <source>Hex view</source>
+        <translation>Šestnáctkově</translation>
+    </message>
+    <message>
+        <source>Hex bytes</source>
+        <translation>Šestnáctkové bajty</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Otevřít</translation>
+    </message>
+    <message>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <source>to port %1</source>
+        <translation>na port %1</translation>
+    </message>
+    <message>
+        <source>Stored message, e.g. AA 05 00 00 FF 51 (K51 ENQ) or Z? as text</source>
+        <translation>Uložená zpráva, např. AA 05 00 00 FF 51 (K51 ENQ) nebo Z? jako text</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Vymazat</translation>
+    </message>
+    <message>
+        <source>Capture to file…</source>
+        <translation>Zaznamenat do souboru…</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Odeslat</translation>
+    </message>
+    <message>
+        <source>Message:</source>
+        <translation>Zpráva:</translation>
+    </message>
+    <message>
+        <source>Port %1: cannot open %2: %3</source>
+        <translation>Port %1: %2 nelze otevřít: %3</translation>
+    </message>
+    <message>
+        <source>Port %1: %2</source>
+        <translation>Port %1: %2</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavřít</translation>
+    </message>
+    <message>
+        <source>Port %1: watching %2 at %3 Bd.</source>
+        <translation>Port %1: sleduji %2 při %3 Bd.</translation>
+    </message>
+    <message>
+        <source>%1 older bytes left the view; capture to a file to keep everything.</source>
+        <translation>%1 starších bajtů už není zobrazeno; pro uchování všeho je zaznamenávejte do souboru.</translation>
+    </message>
+    <message>
+        <source>The message "%1" is not hex bytes (e.g. AA 05 00 00 FF 51).</source>
+        <translation>Zpráva „%1“ nejsou šestnáctkové bajty (např. AA 05 00 00 FF 51).</translation>
+    </message>
+    <message>
+        <source>Port %1 is not open.</source>
+        <translation>Port %1 není otevřen.</translation>
+    </message>
+    <message>
+        <source>The message is empty.</source>
+        <translation>Zpráva je prázdná.</translation>
+    </message>
+    <message>
+        <source>Port %1: the message could not be sent: %2</source>
+        <translation>Port %1: zprávu nelze odeslat: %2</translation>
+    </message>
+    <message>
+        <source>Capture to file</source>
+        <translation>Záznam do souboru</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Do %1 nelze zapisovat: %2</translation>
+    </message>
+    <message>
+        <source>Captured %1 lines to %2.</source>
+        <translation>Zaznamenáno %1 řádků do %2.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::SettingsDialog</name>
+    <message>
+        <source>Export profile</source>
+        <translation>Exportovat profil</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Profily strojů (*.json)</translation>
+    </message>
+    <message>
+        <source>Load profile</source>
+        <translation>Načíst profil</translation>
+    </message>
+    <message>
+        <source>Defaults of the unit type loaded; Apply or Save to use them.</source>
+        <translation>Načteny výchozí hodnoty typu jednotky; použijte je tlačítkem Použít nebo Uložit.</translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>Uloženo do %1.</translation>
+    </message>
+    <message>
+        <source>Loaded %1; Apply to use it.</source>
+        <translation>Načteno %1; použijte tlačítkem Použít.</translation>
+    </message>
+    <message>
+        <source>The profile has problems; fix the fields marked red first.</source>
+        <translation>Profil obsahuje problémy; nejprve opravte pole označená červeně.</translation>
+    </message>
+    <message>
+        <source>Applied (not yet saved).</source>
+        <translation>Použito (zatím neuloženo).</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Nastavení</translation>
+    </message>
+    <message>
+        <source>Machine profile</source>
+        <translation>Profil stroje</translation>
+    </message>
+    <message>
+        <source>Application</source>
+        <translation>Aplikace</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Načíst…</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Uložit</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportovat…</translation>
+    </message>
+    <message>
+        <source>Defaults</source>
+        <translation>Výchozí</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Použít</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Jazyk</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>Jazyk systému</translation>
+    </message>
+    <message>
+        <source>Reconnect automatically after a lost link</source>
+        <translation>Po ztrátě spojení se automaticky znovu připojit</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::SpeedPlot</name>
+    <message>
+        <source>mm/min along the path (%1 mm)</source>
+        <translation>mm/min podél dráhy (%1 mm)</translation>
+    </message>
+    <message>
+        <source>%1 mm/min at %2 mm, line %3</source>
+        <translation>%1 mm/min na %2 mm, řádek %3</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ToolpathView</name>
+    <message>
+        <source>Top</source>
+        <translation>Shora</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Zepředu</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Zboku</translation>
+    </message>
+    <message>
+        <source>Iso</source>
+        <translation>Izometrie</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Celý</translation>
+    </message>
+    <message>
+        <source>Show the whole program</source>
+        <translation>Zobrazit celý program</translation>
+    </message>
+    <message>
+        <source>Left drag: orbit · right/middle drag or Shift+left: pan · wheel: zoom</source>
+        <translation>Levé tlačítko: otáčení · pravé/prostřední nebo Shift+levé: posun · kolečko: přiblížení</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::TransferPanel</name>
+    <message>
+        <source>Controller → PC</source>
+        <translation>Řídicí systém → PC</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Uložit…</translation>
+    </message>
+    <message>
+        <source>Choose file…</source>
+        <translation>Vybrat soubor…</translation>
+    </message>
+    <message>
+        <source>PC → Controller</source>
+        <translation>PC → řídicí systém</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>Ask the controller for its programs (DEJ) and receive them.</source>
+        <translation>Vyžádat si programy z řídicího systému (DEJ) a přijmout je.</translation>
+    </message>
+    <message>
+        <source>Send the chosen file to the controller unchanged.</source>
+        <translation>Odeslat vybraný soubor beze změny do řídicího systému.</translation>
+    </message>
+    <message>
+        <source>16 characters shown on the controller</source>
+        <translation>16 znaků zobrazených na řídicím systému</translation>
+    </message>
+    <message>
+        <source>No file chosen</source>
+        <translation>Není vybrán soubor</translation>
+    </message>
+    <message>
+        <source>Header:</source>
+        <translation>Hlavička:</translation>
+    </message>
+    <message>
+        <source>Length:</source>
+        <translation>Délka:</translation>
+    </message>
+    <message>
+        <source>Inner blocks:</source>
+        <translation>Vnitřní bloky:</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Soubor:</translation>
+    </message>
+    <message>
+        <source>Messages:</source>
+        <translation>Zprávy:</translation>
+    </message>
+    <message>
+        <source>Receiving from the controller…</source>
+        <translation>Přijímám z řídicího systému…</translation>
+    </message>
+    <message>
+        <source>Sending %1 to the controller…</source>
+        <translation>Odesílám %1 do řídicího systému…</translation>
+    </message>
+    <message>
+        <source>%1 of %2 bytes, %3 left</source>
+        <translation>%1 z %2 bajtů, zbývá %3</translation>
+    </message>
+    <message>
+        <source>%1 bytes in %2</source>
+        <translation>%1 bajtů za %2</translation>
+    </message>
+    <message>
+        <source>%1 bytes (0x%2)</source>
+        <translation>%1 bajtů (0x%2)</translation>
+    </message>
+    <message>
+        <source>Received. Press Save to store the data in a file.</source>
+        <translation>Přijato. Tlačítkem Uložit data uložíte do souboru.</translation>
+    </message>
+    <message>
+        <source>Sent; the controller confirmed the transfer.</source>
+        <translation>Odesláno, řídicí systém přenos potvrdil.</translation>
+    </message>
+    <message>
+        <source>On the controller, TCHIN programs show "no prg set" once after a transfer: set up the X axis first — select the TCHIN program in AUT and hold RES.</source>
+        <translation>Programy TCHIN ukážou na řídicím systému po přenosu jednou „no prg set“: nejprve seřiďte osu X — zvolte program TCHIN v AUT a podržte RES.</translation>
+    </message>
+    <message>
+        <source>Transfer failed: %1</source>
+        <translation>Přenos selhal: %1</translation>
+    </message>
+    <message>
+        <source>Save the controller's data</source>
+        <translation>Uložit data z řídicího systému</translation>
+    </message>
+    <message>
+        <source>Choose the file to send</source>
+        <translation>Vyberte soubor k odeslání</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2. The received data are kept; choose another file.</source>
+        <translation>Do %1 nelze zapisovat: %2. Přijatá data zůstávají zachována, vyberte jiný soubor.</translation>
+    </message>
+    <message>
+        <source>Saved %1 bytes to %2.</source>
+        <translation>Uloženo %1 bajtů do %2.</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>%1 nelze přečíst: %2</translation>
+    </message>
+    <message>
+        <source>%1 bytes; inner blocks: %2</source>
+        <translation>%1 bajtů; vnitřní bloky: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::UnitConfigDialog</name>
+    <message>
+        <source>No reply to %1 within 5 s.</source>
+        <translation>Na %1 nepřišla do 5 s odpověď.</translation>
+    </message>
+    <message>
+        <source>Reading the unit's EEPROM…</source>
+        <translation>Čtu EEPROM jednotky…</translation>
+    </message>
+    <message>
+        <source>The unit already matches the profile.</source>
+        <translation>Jednotka již odpovídá profilu.</translation>
+    </message>
+    <message>
+        <source>Read the unit first.</source>
+        <translation>Nejprve načtěte jednotku.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Writing %n setting(s) and reading them back…</source>
+        <translation>
+            <numerusform>Zapisuji %n nastavení a čtu je zpět…</numerusform>
+            <numerusform>Zapisuji %n nastavení a čtu je zpět…</numerusform>
+            <numerusform>Zapisuji %n nastavení a čtu je zpět…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The unit refused %1 (reply %2).</source>
+        <translation>Jednotka odmítla %1 (odpověď %2).</translation>
+    </message>
+    <message>
+        <source>Cannot read the value in the reply to %1: %2</source>
+        <translation>V odpovědi na %1 nelze přečíst hodnotu: %2</translation>
+    </message>
+    <message>
+        <source>Read-back of %1 gives %2, not the %3 written.</source>
+        <translation>Zpětné čtení %1 vrací %2, ne zapsanou hodnotu %3.</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 selhalo: %2</translation>
+    </message>
+    <message>
+        <source>Not read yet.</source>
+        <translation>Zatím nenačteno.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The unit matches the profile (%n setting(s) compared).</source>
+        <translation>
+            <numerusform>Jednotka odpovídá profilu (porovnáno %n nastavení).</numerusform>
+            <numerusform>Jednotka odpovídá profilu (porovnána %n nastavení).</numerusform>
+            <numerusform>Jednotka odpovídá profilu (porovnáno %n nastavení).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ from the profile.</source>
+        <translation>
+            <numerusform>%n nastavení se liší od profilu.</numerusform>
+            <numerusform>%n nastavení se liší od profilu.</numerusform>
+            <numerusform>%n nastavení se liší od profilu.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Unit configuration (EEPROM)</source>
+        <translation>Konfigurace jednotky (EEPROM)</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresa</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>Nastavení</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Jednotka</translation>
+    </message>
+    <message>
+        <source>Meaning (unit value)</source>
+        <translation>Význam (hodnota v jednotce)</translation>
+    </message>
+    <message>
+        <source>Read from unit</source>
+        <translation>Načíst z jednotky</translation>
+    </message>
+    <message>
+        <source>Write differences</source>
+        <translation>Zapsat rozdíly</translation>
+    </message>
+    <message>
+        <source>Write all</source>
+        <translation>Zapsat vše</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavřít</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ZPositionPanel</name>
+    <message>
+        <source>Read position (Z?)</source>
+        <translation>Načíst polohu (Z?)</translation>
+    </message>
+    <message>
+        <source>GO</source>
+        <translation>JEĎ (GO)</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Move the table to this Z position (selector in PGN).</source>
+        <translation>Přejet stolem do této polohy Z (přepínač v PGN).</translation>
+    </message>
+    <message>
+        <source>Protocol:</source>
+        <translation>Protokol:</translation>
+    </message>
+    <message>
+        <source>Z position:</source>
+        <translation>Poloha Z:</translation>
+    </message>
+    <message>
+        <source>Go to:</source>
+        <translation>Jet na:</translation>
+    </message>
+    <message>
+        <source>not connected in a Z-position mode</source>
+        <translation>není připojeno v režimu polohy Z</translation>
+    </message>
+    <message>
+        <source>FORM=1: ASCII both ways (Z?, GO)</source>
+        <translation>FORM=1: ASCII oběma směry (Z?, GO)</translation>
+    </message>
+    <message>
+        <source>FORM=2: binary frames sent by the controller</source>
+        <translation>FORM=2: binární rámce posílané řídicím systémem</translation>
+    </message>
+    <message>
+        <source>%1 bytes skipped to find the frame start.</source>
+        <translation>Přeskočeno %1 bajtů při hledání začátku rámce.</translation>
+    </message>
+    <message>
+        <source>Asking for the position…</source>
+        <translation>Zjišťuji polohu…</translation>
+    </message>
+    <message>
+        <source>Moving to %1 mm…</source>
+        <translation>Přejíždím na %1 mm…</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>%1 frames received.</source>
+        <translation>Přijato %1 rámců.</translation>
+    </message>
+    <message>
+        <source>Position received at %1.</source>
+        <translation>Poloha přijata v %1.</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Frezka: runs CNC mills through GVE interpolators.</source>
+        <translation>Frezka: řídí CNC frézky přes interpolátory GVE.</translation>
+    </message>
+    <message>
+        <source>Draw the toolpath without OpenGL.</source>
+        <translation>Kreslit dráhu nástroje bez OpenGL.</translation>
+    </message>
+    <message>
+        <source>Save the window as PNG once the program has loaded, then quit (README screenshots).</source>
+        <translation>Po načtení programu uložit okno jako PNG a skončit (snímky pro README).</translation>
+    </message>
+    <message>
+        <source>G-code program to open.</source>
+        <translation>Program v G-kódu k otevření.</translation>
+    </message>
+    <message>
+        <source>User interface language: cs or en (default: the settings, else the system language).</source>
+        <translation>Jazyk uživatelského rozhraní: cs nebo en (výchozí: podle nastavení, jinak jazyk systému).</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,2752 @@
+<?xml version='1.0' encoding='utf-8'?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en_US">
+<context>
+    <name>LinkWorker</name>
+    <message>
+        <source>connected: %1</source>
+        <translation>connected: %1</translation>
+    </message>
+    <message>
+        <source>no serial port given</source>
+        <translation>no serial port given</translation>
+    </message>
+    <message>
+        <source>the built-in emulator is not available yet</source>
+        <translation>the built-in emulator is not available yet</translation>
+    </message>
+</context>
+<context>
+    <name>SerialTransport</name>
+    <message>
+        <source>%1 at %2 Bd</source>
+        <translation>%1 at %2 Bd</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>cannot open %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot configure %1: %2</source>
+        <translation>cannot configure %1: %2</translation>
+    </message>
+    <message>
+        <source>write to %1: port not open</source>
+        <translation>write to %1: port not open</translation>
+    </message>
+    <message>
+        <source>short write to %1: %2 of %3 bytes (%4)</source>
+        <translation>short write to %1: %2 of %3 bytes (%4)</translation>
+    </message>
+    <message>
+        <source>%1: %2 (ignored)</source>
+        <translation>%1: %2 (ignored)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gcode</name>
+    <message>
+        <source>Cannot read the file %1</source>
+        <translation>Cannot read the file %1</translation>
+    </message>
+    <message>
+        <source>Check that the file exists and is readable.</source>
+        <translation>Check that the file exists and is readable.</translation>
+    </message>
+    <message>
+        <source>Unexpected character '%1'</source>
+        <translation>Unexpected character '%1'</translation>
+    </message>
+    <message>
+        <source>Remove it or put it inside a comment ( ).</source>
+        <translation>Remove it or put it inside a comment ( ).</translation>
+    </message>
+    <message>
+        <source>Comment is not closed</source>
+        <translation>Comment is not closed</translation>
+    </message>
+    <message>
+        <source>Add ')' at the end of the comment.</source>
+        <translation>Add ')' at the end of the comment.</translation>
+    </message>
+    <message>
+        <source>Comment inside a comment</source>
+        <translation>Comment inside a comment</translation>
+    </message>
+    <message>
+        <source>Close the first comment before opening another one.</source>
+        <translation>Close the first comment before opening another one.</translation>
+    </message>
+    <message>
+        <source>A number is expected after %1</source>
+        <translation>A number is expected after %1</translation>
+    </message>
+    <message>
+        <source>Write a number, a #parameter or an [expression] after the letter.</source>
+        <translation>Write a number, a #parameter or an [expression] after the letter.</translation>
+    </message>
+    <message>
+        <source>%1 needs a whole number</source>
+        <translation>%1 needs a whole number</translation>
+    </message>
+    <message>
+        <source>Use an integer value here.</source>
+        <translation>Use an integer value here.</translation>
+    </message>
+    <message>
+        <source>Word %1 appears twice in one block</source>
+        <translation>Word %1 appears twice in one block</translation>
+    </message>
+    <message>
+        <source>Keep one of them or split the block into two lines.</source>
+        <translation>Keep one of them or split the block into two lines.</translation>
+    </message>
+    <message>
+        <source>Word %1 is not supported</source>
+        <translation>Word %1 is not supported</translation>
+    </message>
+    <message>
+        <source>Remove the word; Frezka does not use it.</source>
+        <translation>Remove the word; Frezka does not use it.</translation>
+    </message>
+    <message>
+        <source>Axis %1 is not supported</source>
+        <translation>Axis %1 is not supported</translation>
+    </message>
+    <message>
+        <source>Frezka machines have the axes X, Y, Z and A.</source>
+        <translation>Frezka machines have the axes X, Y, Z and A.</translation>
+    </message>
+    <message>
+        <source>The file ended without M2, M30 or %</source>
+        <translation>The file ended without M2, M30 or %</translation>
+    </message>
+    <message>
+        <source>End the program with M2 or M30 (or enclose it in % lines).</source>
+        <translation>End the program with M2 or M30 (or enclose it in % lines).</translation>
+    </message>
+    <message>
+        <source>The program starts with % but has no closing %</source>
+        <translation>The program starts with % but has no closing %</translation>
+    </message>
+    <message>
+        <source>Add a line with % at the end of the program.</source>
+        <translation>Add a line with % at the end of the program.</translation>
+    </message>
+    <message>
+        <source>Line is too long (%1 characters)</source>
+        <translation>Line is too long (%1 characters)</translation>
+    </message>
+    <message>
+        <source>Split the line; at most 65535 characters are allowed.</source>
+        <translation>Split the line; at most 65535 characters are allowed.</translation>
+    </message>
+    <message>
+        <source>Unknown G code %1</source>
+        <translation>Unknown G code %1</translation>
+    </message>
+    <message>
+        <source>Check the number; see the list of supported codes.</source>
+        <translation>Check the number; see the list of supported codes.</translation>
+    </message>
+    <message>
+        <source>%1 is not supported</source>
+        <translation>%1 is not supported</translation>
+    </message>
+    <message>
+        <source>Remove it or post-process the program without it (see the supported codes).</source>
+        <translation>Remove it or post-process the program without it (see the supported codes).</translation>
+    </message>
+    <message>
+        <source>Unknown M code %1</source>
+        <translation>Unknown M code %1</translation>
+    </message>
+    <message>
+        <source>%1 conflicts with another code of the same group in this block</source>
+        <translation>%1 conflicts with another code of the same group in this block</translation>
+    </message>
+    <message>
+        <source>Use one code of each modal group per block.</source>
+        <translation>Use one code of each modal group per block.</translation>
+    </message>
+    <message>
+        <source>Too many M codes in one block</source>
+        <translation>Too many M codes in one block</translation>
+    </message>
+    <message>
+        <source>Use at most four M codes per block.</source>
+        <translation>Use at most four M codes per block.</translation>
+    </message>
+    <message>
+        <source>Word %1 is not used by any code in this block</source>
+        <translation>Word %1 is not used by any code in this block</translation>
+    </message>
+    <message>
+        <source>Remove the word or add the code that uses it.</source>
+        <translation>Remove the word or add the code that uses it.</translation>
+    </message>
+    <message>
+        <source>Axis words are given with G80</source>
+        <translation>Axis words are given with G80</translation>
+    </message>
+    <message>
+        <source>G80 cancels the motion mode; give the axis words with G0 or G1.</source>
+        <translation>G80 cancels the motion mode; give the axis words with G0 or G1.</translation>
+    </message>
+    <message>
+        <source>Axis words are given but no motion mode is active</source>
+        <translation>Axis words are given but no motion mode is active</translation>
+    </message>
+    <message>
+        <source>Add G0, G1, G2 or G3 to the block.</source>
+        <translation>Add G0, G1, G2 or G3 to the block.</translation>
+    </message>
+    <message>
+        <source>%1 and a motion code both use the axis words</source>
+        <translation>%1 and a motion code both use the axis words</translation>
+    </message>
+    <message>
+        <source>Put them on separate lines.</source>
+        <translation>Put them on separate lines.</translation>
+    </message>
+    <message>
+        <source>%1 needs at least one axis word</source>
+        <translation>%1 needs at least one axis word</translation>
+    </message>
+    <message>
+        <source>Add the axis words (X, Y, Z or A).</source>
+        <translation>Add the axis words (X, Y, Z or A).</translation>
+    </message>
+    <message>
+        <source>%1 must not be negative</source>
+        <translation>%1 must not be negative</translation>
+    </message>
+    <message>
+        <source>Use zero or a positive value.</source>
+        <translation>Use zero or a positive value.</translation>
+    </message>
+    <message>
+        <source>G53 needs G0 or G1</source>
+        <translation>G53 needs G0 or G1</translation>
+    </message>
+    <message>
+        <source>Write G53 together with G0 or G1 on the same line.</source>
+        <translation>Write G53 together with G0 or G1 on the same line.</translation>
+    </message>
+    <message>
+        <source>G53 cannot be used in G91 mode</source>
+        <translation>G53 cannot be used in G91 mode</translation>
+    </message>
+    <message>
+        <source>Switch to G90 before moving in machine coordinates.</source>
+        <translation>Switch to G90 before moving in machine coordinates.</translation>
+    </message>
+    <message>
+        <source>G4 needs the dwell time P</source>
+        <translation>G4 needs the dwell time P</translation>
+    </message>
+    <message>
+        <source>Add P with the dwell time in seconds.</source>
+        <translation>Add P with the dwell time in seconds.</translation>
+    </message>
+    <message>
+        <source>G10 %1 is not supported</source>
+        <translation>G10 %1 is not supported</translation>
+    </message>
+    <message>
+        <source>Use G10 L2 or G10 L20 to set a work offset.</source>
+        <translation>Use G10 L2 or G10 L20 to set a work offset.</translation>
+    </message>
+    <message>
+        <source>G10 needs P0 to P9 (got %1)</source>
+        <translation>G10 needs P0 to P9 (got %1)</translation>
+    </message>
+    <message>
+        <source>P0 is the active coordinate system, P1 to P9 are G54 to G59.3.</source>
+        <translation>P0 is the active coordinate system, P1 to P9 are G54 to G59.3.</translation>
+    </message>
+    <message>
+        <source>Coordinate system rotation (G10 R) is not supported</source>
+        <translation>Coordinate system rotation (G10 R) is not supported</translation>
+    </message>
+    <message>
+        <source>Remove the R word.</source>
+        <translation>Remove the R word.</translation>
+    </message>
+    <message>
+        <source>%1 with zero feed rate</source>
+        <translation>%1 with zero feed rate</translation>
+    </message>
+    <message>
+        <source>Set a feed rate with F before the first feed move.</source>
+        <translation>Set a feed rate with F before the first feed move.</translation>
+    </message>
+    <message>
+        <source>%1 in inverse time mode (G93) needs an F word</source>
+        <translation>%1 in inverse time mode (G93) needs an F word</translation>
+    </message>
+    <message>
+        <source>Give F on every feed move in G93, or switch to G94.</source>
+        <translation>Give F on every feed move in G93, or switch to G94.</translation>
+    </message>
+    <message>
+        <source>Arc without I, J, K or R</source>
+        <translation>Arc without I, J, K or R</translation>
+    </message>
+    <message>
+        <source>Give the centre with I/J/K or the radius with R.</source>
+        <translation>Give the centre with I/J/K or the radius with R.</translation>
+    </message>
+    <message>
+        <source>Arc with both R and I/J/K</source>
+        <translation>Arc with both R and I/J/K</translation>
+    </message>
+    <message>
+        <source>Use either the centre (I/J/K) or the radius (R).</source>
+        <translation>Use either the centre (I/J/K) or the radius (R).</translation>
+    </message>
+    <message>
+        <source>%1 is not in the arc's plane</source>
+        <translation>%1 is not in the arc's plane</translation>
+    </message>
+    <message>
+        <source>G17 uses I and J, G18 uses I and K, G19 uses J and K.</source>
+        <translation>G17 uses I and J, G18 uses I and K, G19 uses J and K.</translation>
+    </message>
+    <message>
+        <source>%1 is missing for an arc with absolute centre (G90.1)</source>
+        <translation>%1 is missing for an arc with absolute centre (G90.1)</translation>
+    </message>
+    <message>
+        <source>Give both centre coordinates in G90.1 mode.</source>
+        <translation>Give both centre coordinates in G90.1 mode.</translation>
+    </message>
+    <message>
+        <source>Arc with zero radius %1</source>
+        <translation>Arc with zero radius %1</translation>
+    </message>
+    <message>
+        <source>Check the centre offsets I/J/K.</source>
+        <translation>Check the centre offsets I/J/K.</translation>
+    </message>
+    <message>
+        <source>Arc end point is not on the circle: %1</source>
+        <translation>Arc end point is not on the circle: %1</translation>
+    </message>
+    <message>
+        <source>Check the end point and the centre; the radii to start and end must match.</source>
+        <translation>Check the end point and the centre; the radii to start and end must match.</translation>
+    </message>
+    <message>
+        <source>Arc radius is too small to reach the end point %1</source>
+        <translation>Arc radius is too small to reach the end point %1</translation>
+    </message>
+    <message>
+        <source>Use a radius of at least half the distance between start and end.</source>
+        <translation>Use a radius of at least half the distance between start and end.</translation>
+    </message>
+    <message>
+        <source>Arc given by R ends where it starts</source>
+        <translation>Arc given by R ends where it starts</translation>
+    </message>
+    <message>
+        <source>Use I/J/K to program a full circle.</source>
+        <translation>Use I/J/K to program a full circle.</translation>
+    </message>
+    <message>
+        <source>Arc given by R has no end point in its plane</source>
+        <translation>Arc given by R has no end point in its plane</translation>
+    </message>
+    <message>
+        <source>Give the end point, or use I/J/K for a full circle.</source>
+        <translation>Give the end point, or use I/J/K for a full circle.</translation>
+    </message>
+    <message>
+        <source>Arc turns P must be a positive integer (got %1)</source>
+        <translation>Arc turns P must be a positive integer (got %1)</translation>
+    </message>
+    <message>
+        <source>Use P1 or more, or leave P out.</source>
+        <translation>Use P1 or more, or leave P out.</translation>
+    </message>
+    <message>
+        <source>Probe move does not move</source>
+        <translation>Probe move does not move</translation>
+    </message>
+    <message>
+        <source>Give an end point different from the current position.</source>
+        <translation>Give an end point different from the current position.</translation>
+    </message>
+    <message>
+        <source>Probe move in inverse time mode (G93)</source>
+        <translation>Probe move in inverse time mode (G93)</translation>
+    </message>
+    <message>
+        <source>Switch to G94 before probing.</source>
+        <translation>Switch to G94 before probing.</translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs R</source>
+        <translation>Canned cycle %1 needs R</translation>
+    </message>
+    <message>
+        <source>Give the retract plane R on the first block of the cycle.</source>
+        <translation>Give the retract plane R on the first block of the cycle.</translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs its depth</source>
+        <translation>Canned cycle %1 needs its depth</translation>
+    </message>
+    <message>
+        <source>Give the hole depth (Z in G17) on the first block of the cycle.</source>
+        <translation>Give the hole depth (Z in G17) on the first block of the cycle.</translation>
+    </message>
+    <message>
+        <source>Canned cycle retract plane R is below the hole depth</source>
+        <translation>Canned cycle retract plane R is below the hole depth</translation>
+    </message>
+    <message>
+        <source>R must be above the bottom of the hole.</source>
+        <translation>R must be above the bottom of the hole.</translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs the dwell P</source>
+        <translation>Canned cycle %1 needs the dwell P</translation>
+    </message>
+    <message>
+        <source>Give P (seconds) on the first block of the cycle.</source>
+        <translation>Give P (seconds) on the first block of the cycle.</translation>
+    </message>
+    <message>
+        <source>Canned cycle %1 needs the peck Q</source>
+        <translation>Canned cycle %1 needs the peck Q</translation>
+    </message>
+    <message>
+        <source>Give Q (peck depth) on the first block of the cycle.</source>
+        <translation>Give Q (peck depth) on the first block of the cycle.</translation>
+    </message>
+    <message>
+        <source>Peck depth Q must be positive</source>
+        <translation>Peck depth Q must be positive</translation>
+    </message>
+    <message>
+        <source>Use a positive Q.</source>
+        <translation>Use a positive Q.</translation>
+    </message>
+    <message>
+        <source>Canned cycle repeat L must be a positive integer</source>
+        <translation>Canned cycle repeat L must be a positive integer</translation>
+    </message>
+    <message>
+        <source>Use L1 or more, or leave L out.</source>
+        <translation>Use L1 or more, or leave L out.</translation>
+    </message>
+    <message>
+        <source>Canned cycle in inverse time mode (G93)</source>
+        <translation>Canned cycle in inverse time mode (G93)</translation>
+    </message>
+    <message>
+        <source>Switch to G94 before a canned cycle.</source>
+        <translation>Switch to G94 before a canned cycle.</translation>
+    </message>
+    <message>
+        <source>Expression is not closed</source>
+        <translation>Expression is not closed</translation>
+    </message>
+    <message>
+        <source>Add the missing ']'.</source>
+        <translation>Add the missing ']'.</translation>
+    </message>
+    <message>
+        <source>Unknown operator %1</source>
+        <translation>Unknown operator %1</translation>
+    </message>
+    <message>
+        <source>Use + - * / ** MOD AND OR XOR EQ NE GT GE LT LE.</source>
+        <translation>Use + - * / ** MOD AND OR XOR EQ NE GT GE LT LE.</translation>
+    </message>
+    <message>
+        <source>Unknown function %1</source>
+        <translation>Unknown function %1</translation>
+    </message>
+    <message>
+        <source>See the list of functions (ABS, ACOS, ASIN, ATAN, COS, EXP, FIX, FUP, LN, ROUND, SIN, SQRT, TAN, EXISTS).</source>
+        <translation>See the list of functions (ABS, ACOS, ASIN, ATAN, COS, EXP, FIX, FUP, LN, ROUND, SIN, SQRT, TAN, EXISTS).</translation>
+    </message>
+    <message>
+        <source>Division by zero</source>
+        <translation>Division by zero</translation>
+    </message>
+    <message>
+        <source>Check the divisor.</source>
+        <translation>Check the divisor.</translation>
+    </message>
+    <message>
+        <source>%1 of a value outside its domain</source>
+        <translation>%1 of a value outside its domain</translation>
+    </message>
+    <message>
+        <source>Check the argument (e.g. SQRT of a negative number).</source>
+        <translation>Check the argument (e.g. SQRT of a negative number).</translation>
+    </message>
+    <message>
+        <source>Negative number raised to a non-integer power</source>
+        <translation>Negative number raised to a non-integer power</translation>
+    </message>
+    <message>
+        <source>Check the operands of **.</source>
+        <translation>Check the operands of **.</translation>
+    </message>
+    <message>
+        <source>Parameter number %1 is out of range</source>
+        <translation>Parameter number %1 is out of range</translation>
+    </message>
+    <message>
+        <source>Use parameters #1 to #5601.</source>
+        <translation>Use parameters #1 to #5601.</translation>
+    </message>
+    <message>
+        <source>Parameter %1 is not defined</source>
+        <translation>Parameter %1 is not defined</translation>
+    </message>
+    <message>
+        <source>Assign it a value before reading it.</source>
+        <translation>Assign it a value before reading it.</translation>
+    </message>
+    <message>
+        <source>Parameter %1 is read-only</source>
+        <translation>Parameter %1 is read-only</translation>
+    </message>
+    <message>
+        <source>System parameters are set by codes (e.g. G10 L2, G92), not by assignment.</source>
+        <translation>System parameters are set by codes (e.g. G10 L2, G92), not by assignment.</translation>
+    </message>
+    <message>
+        <source>Bad parameter name %1</source>
+        <translation>Bad parameter name %1</translation>
+    </message>
+    <message>
+        <source>Write named parameters as #&lt;name&gt;.</source>
+        <translation>Write named parameters as #&lt;name&gt;.</translation>
+    </message>
+    <message>
+        <source>An expression is expected %1</source>
+        <translation>An expression is expected %1</translation>
+    </message>
+    <message>
+        <source>Write the value in brackets, e.g. [#1 + 2].</source>
+        <translation>Write the value in brackets, e.g. [#1 + 2].</translation>
+    </message>
+    <message>
+        <source>Malformed O word %1</source>
+        <translation>Malformed O word %1</translation>
+    </message>
+    <message>
+        <source>Write O-words as o100 if [...] or o&lt;name&gt; sub.</source>
+        <translation>Write O-words as o100 if [...] or o&lt;name&gt; sub.</translation>
+    </message>
+    <message>
+        <source>Unknown O-word keyword %1</source>
+        <translation>Unknown O-word keyword %1</translation>
+    </message>
+    <message>
+        <source>Use sub, endsub, call, return, if, elseif, else, endif, while, endwhile, do, repeat, endrepeat, break or continue.</source>
+        <translation>Use sub, endsub, call, return, if, elseif, else, endif, while, endwhile, do, repeat, endrepeat, break or continue.</translation>
+    </message>
+    <message>
+        <source>An O-word line has other words</source>
+        <translation>An O-word line has other words</translation>
+    </message>
+    <message>
+        <source>Put the other words on their own line.</source>
+        <translation>Put the other words on their own line.</translation>
+    </message>
+    <message>
+        <source>%1 without its opening O-word</source>
+        <translation>%1 without its opening O-word</translation>
+    </message>
+    <message>
+        <source>Check the O numbers; they must match the opening line.</source>
+        <translation>Check the O numbers; they must match the opening line.</translation>
+    </message>
+    <message>
+        <source>%1 is never closed</source>
+        <translation>%1 is never closed</translation>
+    </message>
+    <message>
+        <source>Add the matching end line (endsub, endif, endwhile, endrepeat or while).</source>
+        <translation>Add the matching end line (endsub, endif, endwhile, endrepeat or while).</translation>
+    </message>
+    <message>
+        <source>Subroutine %1 is not defined</source>
+        <translation>Subroutine %1 is not defined</translation>
+    </message>
+    <message>
+        <source>Define the subroutine before calling it.</source>
+        <translation>Define the subroutine before calling it.</translation>
+    </message>
+    <message>
+        <source>Subroutine calls nested too deeply</source>
+        <translation>Subroutine calls nested too deeply</translation>
+    </message>
+    <message>
+        <source>Check for unbounded recursion.</source>
+        <translation>Check for unbounded recursion.</translation>
+    </message>
+    <message>
+        <source>%1 outside a loop with this O number</source>
+        <translation>%1 outside a loop with this O number</translation>
+    </message>
+    <message>
+        <source>Use break and continue only inside their own loop.</source>
+        <translation>Use break and continue only inside their own loop.</translation>
+    </message>
+    <message>
+        <source>%1 outside a subroutine</source>
+        <translation>%1 outside a subroutine</translation>
+    </message>
+    <message>
+        <source>Use return and endsub only inside a subroutine.</source>
+        <translation>Use return and endsub only inside a subroutine.</translation>
+    </message>
+    <message>
+        <source>The program executes more than %1 blocks</source>
+        <translation>The program executes more than %1 blocks</translation>
+    </message>
+    <message>
+        <source>Check the loops; one of them may never end.</source>
+        <translation>Check the loops; one of them may never end.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::grinder::EmulatorTransport</name>
+    <message>
+        <source>The emulator is not open</source>
+        <translation>The emulator is not open</translation>
+    </message>
+    <message>
+        <source>emulator</source>
+        <translation>emulator</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::grinder::SerialTransport</name>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>Cannot open %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot set %1 to %2 Bd: %3</source>
+        <translation>Cannot set %1 to %2 Bd: %3</translation>
+    </message>
+    <message>
+        <source>%1 is not open</source>
+        <translation>%1 is not open</translation>
+    </message>
+    <message>
+        <source>Short write on %1: %2 of %3 bytes queued (%4)</source>
+        <translation>Short write on %1: %2 of %3 bytes queued (%4)</translation>
+    </message>
+    <message>
+        <source>Serial port %1: %2</source>
+        <translation>Serial port %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::grinder::TransferSession</name>
+    <message>
+        <source>The port %1 is not open.</source>
+        <translation>The port %1 is not open.</translation>
+    </message>
+    <message>
+        <source>The file is empty; there is nothing to send.</source>
+        <translation>The file is empty; there is nothing to send.</translation>
+    </message>
+    <message>
+        <source>The data are too long for one message: %1 bytes, at most %2.</source>
+        <translation>The data are too long for one message: %1 bytes, at most %2.</translation>
+    </message>
+    <message>
+        <source>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506); the file has %1. Choose a file saved from an ANC control.</source>
+        <translation>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506); the file has %1. Choose a file saved from an ANC control.</translation>
+    </message>
+    <message>
+        <source>HEDIT data have 46 bytes (0x2E); the file has %1. Choose a file saved with HEDIT.</source>
+        <translation>HEDIT data have 46 bytes (0x2E); the file has %1. Choose a file saved with HEDIT.</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Cancelled.</translation>
+    </message>
+    <message>
+        <source>&lt;- noise, %1 bytes skipped: %2</source>
+        <translation>&lt;- noise, %1 bytes skipped: %2</translation>
+    </message>
+    <message>
+        <source>Unexpected reply %1 to %2.</source>
+        <translation>Unexpected reply %1 to %2.</translation>
+    </message>
+    <message>
+        <source>The controller answered NAK to ENQ.</source>
+        <translation>The controller answered NAK to ENQ.</translation>
+    </message>
+    <message>
+        <source>The controller answered NAK to %1: is it set to program transfer (KONFIG6) with the selector in PGN?</source>
+        <translation>The controller answered NAK to %1: is it set to program transfer (KONFIG6) with the selector in PGN?</translation>
+    </message>
+    <message>
+        <source>The controller answered NAK to %1 (%2 times): it did not accept the data.</source>
+        <translation>The controller answered NAK to %1 (%2 times): it did not accept the data.</translation>
+    </message>
+    <message>
+        <source>&lt;- %1 ignored: no reply expected now</source>
+        <translation>&lt;- %1 ignored: no reply expected now</translation>
+    </message>
+    <message>
+        <source>Bad checksum in %1 from the controller: received %2, computed %3.</source>
+        <translation>Bad checksum in %1 from the controller: received %2, computed %3.</translation>
+    </message>
+    <message>
+        <source>%1 Given up after %2 repeats.</source>
+        <translation>%1 Given up after %2 repeats.</translation>
+    </message>
+    <message>
+        <source>Repeat %1 of %2: %3</source>
+        <translation>Repeat %1 of %2: %3</translation>
+    </message>
+    <message>
+        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd) and that the controller is set to transfer (KONFIG6).</source>
+        <translation>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd) and that the controller is set to transfer (KONFIG6).</translation>
+    </message>
+    <message>
+        <source>The data message stopped after %1 of %2 bytes (no byte for %3 s).</source>
+        <translation>The data message stopped after %1 of %2 bytes (no byte for %3 s).</translation>
+    </message>
+    <message>
+        <source>No data from the controller within %1 s after %2.</source>
+        <translation>No data from the controller within %1 s after %2.</translation>
+    </message>
+    <message>
+        <source>No ACK to %1 within %2 s after its last byte.</source>
+        <translation>No ACK to %1 within %2 s after its last byte.</translation>
+    </message>
+    <message>
+        <source>The final ACK could not be sent within %1 s.</source>
+        <translation>The final ACK could not be sent within %1 s.</translation>
+    </message>
+    <message>
+        <source>Connected.</source>
+        <translation>Connected.</translation>
+    </message>
+    <message>
+        <source>Received %1 bytes, header "%2".</source>
+        <translation>Received %1 bytes, header "%2".</translation>
+    </message>
+    <message>
+        <source>Sent %1 bytes; the controller stored them.</source>
+        <translation>Sent %1 bytes; the controller stored them.</translation>
+    </message>
+    <message>
+        <source>no inner blocks (%1 bytes)</source>
+        <translation>no inner blocks (%1 bytes)</translation>
+    </message>
+    <message>
+        <source>%1 blocks, all valid</source>
+        <translation>%1 blocks, all valid</translation>
+    </message>
+    <message>
+        <source>%1 (no AA)</source>
+        <translation>%1 (no AA)</translation>
+    </message>
+    <message>
+        <source>%1 (wrong block id)</source>
+        <translation>%1 (wrong block id)</translation>
+    </message>
+    <message>
+        <source>%1 (checksum)</source>
+        <translation>%1 (checksum)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 blocks invalid: %3 (the data are kept unchanged)</source>
+        <translation>%1 of %2 blocks invalid: %3 (the data are kept unchanged)</translation>
+    </message>
+    <message>
+        <source>Warning: inner blocks: %1</source>
+        <translation>Warning: inner blocks: %1</translation>
+    </message>
+    <message>
+        <source>&lt;- ACK ignored: a late answer to an earlier message</source>
+        <translation>&lt;- ACK ignored: a late answer to an earlier message</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::grinder::ZLinkSession</name>
+    <message>
+        <source>No answer to "%1" within %2 s. Is the controller set to Z-position transfer (KONFIG6 = 1) with the selector in PGN?</source>
+        <translation>No answer to "%1" within %2 s. Is the controller set to Z-position transfer (KONFIG6 = 1) with the selector in PGN?</translation>
+    </message>
+    <message>
+        <source>The controller rejected a character of "%1" (%2).</source>
+        <translation>The controller rejected a character of "%1" (%2).</translation>
+    </message>
+    <message>
+        <source>Unreadable reply "%1".</source>
+        <translation>Unreadable reply "%1".</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui</name>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>spindle</source>
+        <translation>spindle</translation>
+    </message>
+    <message>
+        <source>unused</source>
+        <translation>unused</translation>
+    </message>
+    <message>
+        <source>laser</source>
+        <translation>laser</translation>
+    </message>
+    <message>
+        <source>coolant</source>
+        <translation>coolant</translation>
+    </message>
+    <message>
+        <source>air blow</source>
+        <translation>air blow</translation>
+    </message>
+    <message>
+        <source>machine cover lock</source>
+        <translation>machine cover lock</translation>
+    </message>
+    <message>
+        <source>tool release</source>
+        <translation>tool release</translation>
+    </message>
+    <message>
+        <source>tool cover open</source>
+        <translation>tool cover open</translation>
+    </message>
+    <message>
+        <source>brake</source>
+        <translation>brake</translation>
+    </message>
+    <message>
+        <source>interrupt signal</source>
+        <translation>interrupt signal</translation>
+    </message>
+    <message>
+        <source>Lower limit %1</source>
+        <translation>Lower limit %1</translation>
+    </message>
+    <message>
+        <source>Upper limit %1</source>
+        <translation>Upper limit %1</translation>
+    </message>
+    <message>
+        <source>Steps per mm %1</source>
+        <translation>Steps per mm %1</translation>
+    </message>
+    <message>
+        <source>Homing speed %1</source>
+        <translation>Homing speed %1</translation>
+    </message>
+    <message>
+        <source>Relay function</source>
+        <translation>Relay function</translation>
+    </message>
+    <message>
+        <source>OUT1 function</source>
+        <translation>OUT1 function</translation>
+    </message>
+    <message>
+        <source>OUT2 function</source>
+        <translation>OUT2 function</translation>
+    </message>
+    <message>
+        <source>OUT3 function</source>
+        <translation>OUT3 function</translation>
+    </message>
+    <message>
+        <source>PWM mode</source>
+        <translation>PWM mode</translation>
+    </message>
+    <message>
+        <source>STEP/DIR polarity</source>
+        <translation>STEP/DIR polarity</translation>
+    </message>
+    <message>
+        <source>Handwheel (MPG)</source>
+        <translation>Handwheel (MPG)</translation>
+    </message>
+    <message>
+        <source>Input that starts homing</source>
+        <translation>Input that starts homing</translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN0-7</source>
+        <translation>Interrupt enable IN0-7</translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN14/IN15</source>
+        <translation>Interrupt enable IN14/IN15</translation>
+    </message>
+    <message>
+        <source>Input polarity IN0-7</source>
+        <translation>Input polarity IN0-7</translation>
+    </message>
+    <message>
+        <source>Input polarity IN14/IN15</source>
+        <translation>Input polarity IN14/IN15</translation>
+    </message>
+    <message>
+        <source>A axis coupling</source>
+        <translation>A axis coupling</translation>
+    </message>
+    <message>
+        <source>Baud range</source>
+        <translation>Baud range</translation>
+    </message>
+    <message>
+        <source>Handwheel acceleration</source>
+        <translation>Handwheel acceleration</translation>
+    </message>
+    <message>
+        <source>Handwheel maximum speed</source>
+        <translation>Handwheel maximum speed</translation>
+    </message>
+    <message>
+        <source>Handwheel brake delay</source>
+        <translation>Handwheel brake delay</translation>
+    </message>
+    <message>
+        <source>Default spindle speed</source>
+        <translation>Default spindle speed</translation>
+    </message>
+    <message>
+        <source>Handwheel step multiplier</source>
+        <translation>Handwheel step multiplier</translation>
+    </message>
+    <message>
+        <source>Brake release delay</source>
+        <translation>Brake release delay</translation>
+    </message>
+    <message>
+        <source>Address 0x%1</source>
+        <translation>Address 0x%1</translation>
+    </message>
+    <message>
+        <source>%1 steps/mm</source>
+        <translation>%1 steps/mm</translation>
+    </message>
+    <message>
+        <source>homing off</source>
+        <translation>homing off</translation>
+    </message>
+    <message>
+        <source>standard PWM</source>
+        <translation>standard PWM</translation>
+    </message>
+    <message>
+        <source>breakout-board signal (jumper ANA/PWM)</source>
+        <translation>breakout-board signal (jumper ANA/PWM)</translation>
+    </message>
+    <message>
+        <source>unknown (0x%1)</source>
+        <translation>unknown (0x%1)</translation>
+    </message>
+    <message>
+        <source>STEP inverted: %1; DIR inverted: %2</source>
+        <translation>STEP inverted: %1; DIR inverted: %2</translation>
+    </message>
+    <message>
+        <source>DIR inverted: %1; STEP on %2 edge</source>
+        <translation>DIR inverted: %1; STEP on %2 edge</translation>
+    </message>
+    <message>
+        <source>falling</source>
+        <translation>falling</translation>
+    </message>
+    <message>
+        <source>rising</source>
+        <translation>rising</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>on</translation>
+    </message>
+    <message>
+        <source>on, within the limits</source>
+        <translation>on, within the limits</translation>
+    </message>
+    <message>
+        <source>on, 4th position drives rotary A</source>
+        <translation>on, 4th position drives rotary A</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>off</translation>
+    </message>
+    <message>
+        <source>on with limits, 4th position drives rotary A</source>
+        <translation>on with limits, 4th position drives rotary A</translation>
+    </message>
+    <message>
+        <source>IN%1 held &gt; 1 s starts homing</source>
+        <translation>IN%1 held &gt; 1 s starts homing</translation>
+    </message>
+    <message>
+        <source>enabled: %1</source>
+        <translation>enabled: %1</translation>
+    </message>
+    <message>
+        <source>active high: %1</source>
+        <translation>active high: %1</translation>
+    </message>
+    <message>
+        <source>slaved to X</source>
+        <translation>slaved to X</translation>
+    </message>
+    <message>
+        <source>slaved to Y</source>
+        <translation>slaved to Y</translation>
+    </message>
+    <message>
+        <source>slaved to Z</source>
+        <translation>slaved to Z</translation>
+    </message>
+    <message>
+        <source>independent</source>
+        <translation>independent</translation>
+    </message>
+    <message>
+        <source>921 600 / 460 800 / 230 400 / 115 200 Bd</source>
+        <translation>921 600 / 460 800 / 230 400 / 115 200 Bd</translation>
+    </message>
+    <message>
+        <source>19 200 / 38 400 / 57 600 / 115 200 Bd</source>
+        <translation>19 200 / 38 400 / 57 600 / 115 200 Bd</translation>
+    </message>
+    <message>
+        <source>×%1 (x1 = %2 mm)</source>
+        <translation>×%1 (x1 = %2 mm)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ConsoleWidget</name>
+    <message>
+        <source>Save log</source>
+        <translation>Save log</translation>
+    </message>
+    <message>
+        <source>Text files (*.txt *.log)</source>
+        <translation>Text files (*.txt *.log)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>Save log…</source>
+        <translation>Save log…</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Clear</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Send</translation>
+    </message>
+    <message>
+        <source>G-code (e.g. G0 X10) or a raw unit command (e.g. !0PF), Enter sends</source>
+        <translation>G-code (e.g. G0 X10) or a raw unit command (e.g. !0PF), Enter sends</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::DroWidget</name>
+    <message>
+        <source>Work</source>
+        <translation>Work</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>Zero</translation>
+    </message>
+    <message>
+        <source>Set the work zero of %1 at the current position</source>
+        <translation>Set the work zero of %1 at the current position</translation>
+    </message>
+    <message>
+        <source>Zero all</source>
+        <translation>Zero all</translation>
+    </message>
+    <message>
+        <source>Set the work zero of every axis at the current position</source>
+        <translation>Set the work zero of every axis at the current position</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>Offset</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::GrinderWindow</name>
+    <message>
+        <source>Connect</source>
+        <translation>Connect</translation>
+    </message>
+    <message>
+        <source>Grinder transfer</source>
+        <translation>Grinder transfer</translation>
+    </message>
+    <message>
+        <source>K51 programs (K51LOAD/K51SAVE, KCOMM)</source>
+        <translation>K51 programs (K51LOAD/K51SAVE, KCOMM)</translation>
+    </message>
+    <message>
+        <source>ANC programs (ANCLOAD/ANCSAVE)</source>
+        <translation>ANC programs (ANCLOAD/ANCSAVE)</translation>
+    </message>
+    <message>
+        <source>ANC hard-chrome data (HEDIT)</source>
+        <translation>ANC hard-chrome data (HEDIT)</translation>
+    </message>
+    <message>
+        <source>Program transfer</source>
+        <translation>Program transfer</translation>
+    </message>
+    <message>
+        <source>Z position, FORM=1 (ASCII)</source>
+        <translation>Z position, FORM=1 (ASCII)</translation>
+    </message>
+    <message>
+        <source>Z position, FORM=2 (binary)</source>
+        <translation>Z position, FORM=2 (binary)</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Connection</translation>
+    </message>
+    <message>
+        <source>Control:</source>
+        <translation>Control:</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Mode:</translation>
+    </message>
+    <message>
+        <source>Z position</source>
+        <translation>Z position</translation>
+    </message>
+    <message>
+        <source>Serial monitor</source>
+        <translation>Serial monitor</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>Not connected.</translation>
+    </message>
+    <message>
+        <source>Cannot connect: %1</source>
+        <translation>Cannot connect: %1</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Disconnect</translation>
+    </message>
+    <message>
+        <source>Open: %1 at %2 Bd.</source>
+        <translation>Open: %1 at %2 Bd.</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>Connected</translation>
+    </message>
+    <message>
+        <source>No connection</source>
+        <translation>No connection</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <source>%1 — %2: %3</source>
+        <translation>%1 — %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::HoldBanner</name>
+    <message>
+        <source>at line %1</source>
+        <translation>at line %1</translation>
+    </message>
+    <message>
+        <source>Paused %1</source>
+        <translation>Paused %1</translation>
+    </message>
+    <message>
+        <source>The machine has stopped along its ramp and keeps the rest of the job. Continue, or lift the tool to change or clean it.</source>
+        <translation>The machine has stopped along its ramp and keeps the rest of the job. Continue, or lift the tool to change or clean it.</translation>
+    </message>
+    <message>
+        <source>Program stop %1</source>
+        <translation>Program stop %1</translation>
+    </message>
+    <message>
+        <source>%1
+Do what the program asks, then press Continue.</source>
+        <translation>%1
+Do what the program asks, then press Continue.</translation>
+    </message>
+    <message>
+        <source>Stopped by an input %1</source>
+        <translation>Stopped by an input %1</translation>
+    </message>
+    <message>
+        <source>%1
+Check the machine; when it is safe, Continue or Abort.</source>
+        <translation>%1
+Check the machine; when it is safe, Continue or Abort.</translation>
+    </message>
+    <message>
+        <source>Probe failed %1</source>
+        <translation>Probe failed %1</translation>
+    </message>
+    <message>
+        <source>%1
+The probe did not touch as expected. Abort the job or Continue.</source>
+        <translation>%1
+The probe did not touch as expected. Abort the job or Continue.</translation>
+    </message>
+    <message>
+        <source>Tool lifted %1</source>
+        <translation>Tool lifted %1</translation>
+    </message>
+    <message>
+        <source>Change or clean the tool. Then lower it: the spindle starts again if it was stopped, the tool goes back down to where it was, and the job continues — at a new feed if you enter one.</source>
+        <translation>Change or clean the tool. Then lower it: the spindle starts again if it was stopped, the tool goes back down to where it was, and the job continues — at a new feed if you enter one.</translation>
+    </message>
+    <message>
+        <source>Stop the spindle</source>
+        <translation>Stop the spindle</translation>
+    </message>
+    <message>
+        <source>New feed (0 = unchanged):</source>
+        <translation>New feed (0 = unchanged):</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Continue</translation>
+    </message>
+    <message>
+        <source>Lift tool</source>
+        <translation>Lift tool</translation>
+    </message>
+    <message>
+        <source>Lower and continue</source>
+        <translation>Lower and continue</translation>
+    </message>
+    <message>
+        <source>Lower, stay paused</source>
+        <translation>Lower, stay paused</translation>
+    </message>
+    <message>
+        <source>Abort job</source>
+        <translation>Abort job</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::JogPanel</name>
+    <message>
+        <source>Home %1</source>
+        <translation>Home %1</translation>
+    </message>
+    <message>
+        <source>Find the home switch of %1</source>
+        <translation>Find the home switch of %1</translation>
+    </message>
+    <message>
+        <source>Home all</source>
+        <translation>Home all</translation>
+    </message>
+    <message>
+        <source>Home every axis in the order of the machine profile</source>
+        <translation>Home every axis in the order of the machine profile</translation>
+    </message>
+    <message>
+        <source>Step (mm):</source>
+        <translation>Step (mm):</translation>
+    </message>
+    <message>
+        <source>Continuous</source>
+        <translation>Continuous</translation>
+    </message>
+    <message>
+        <source>Move while the button or key is held</source>
+        <translation>Move while the button or key is held</translation>
+    </message>
+    <message>
+        <source>Jog feed:</source>
+        <translation>Jog feed:</translation>
+    </message>
+    <message>
+        <source>Handwheel (MPG)</source>
+        <translation>Handwheel (MPG)</translation>
+    </message>
+    <message>
+        <source>Keyboard: arrows jog X/Y, Page Up/Page Down jog Z</source>
+        <translation>Keyboard: arrows jog X/Y, Page Up/Page Down jog Z</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::MainWindow</name>
+    <message>
+        <source>About Frezka</source>
+        <translation>About Frezka</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Frezka %1&lt;/b&gt;&lt;br&gt;Runs CNC mills through GVE interpolators.</source>
+        <translation>&lt;b&gt;Frezka %1&lt;/b&gt;&lt;br&gt;Runs CNC mills through GVE interpolators.</translation>
+    </message>
+    <message>
+        <source>Frezka</source>
+        <translation>Frezka</translation>
+    </message>
+    <message>
+        <source>Frezka — %1</source>
+        <translation>Frezka — %1</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <source>Program run</source>
+        <translation>Program run</translation>
+    </message>
+    <message>
+        <source>Jog and homing</source>
+        <translation>Jog and homing</translation>
+    </message>
+    <message>
+        <source>Spindle and outputs</source>
+        <translation>Spindle and outputs</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Console</source>
+        <translation>Console</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Speed</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <source>&amp;Open program…</source>
+        <translation>&amp;Open program…</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>Open &amp;recent</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quit</translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation>&amp;Machine</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Connect</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Disconnect</translation>
+    </message>
+    <message>
+        <source>&amp;Settings…</source>
+        <translation>&amp;Settings…</translation>
+    </message>
+    <message>
+        <source>&amp;Unit configuration (EEPROM)…</source>
+        <translation>&amp;Unit configuration (EEPROM)…</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;View</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Reset layout</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Tools</translation>
+    </message>
+    <message>
+        <source>&amp;Grinder transfer (ANC/K51)…</source>
+        <translation>&amp;Grinder transfer (ANC/K51)…</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Help</translation>
+    </message>
+    <message>
+        <source>&amp;About Frezka</source>
+        <translation>&amp;About Frezka</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>No program</translation>
+    </message>
+    <message>
+        <source>Open program</source>
+        <translation>Open program</translation>
+    </message>
+    <message>
+        <source>G-code (*.nc *.ngc *.gcode *.tap *.txt);;All files (*)</source>
+        <translation>G-code (*.nc *.ngc *.gcode *.tap *.txt);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Loading %1…</source>
+        <translation>Loading %1…</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 — %n line(s)</source>
+        <translation><numerusform>%1 — %n line</numerusform><numerusform>%1 — %n lines</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>The program has %n error(s); nothing will run until they are fixed.
+%1</source>
+        <translation><numerusform>The program has %n error; nothing will run until they are fixed.
+%1</numerusform><numerusform>The program has %n errors; nothing will run until they are fixed.
+%1</numerusform></translation>
+    </message>
+    <message>
+        <source>Laser</source>
+        <translation>Laser</translation>
+    </message>
+    <message>
+        <source>Cover lock</source>
+        <translation>Cover lock</translation>
+    </message>
+    <message>
+        <source>Tool release</source>
+        <translation>Tool release</translation>
+    </message>
+    <message>
+        <source>Tool cover</source>
+        <translation>Tool cover</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Not connected</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>Connecting…</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Ready</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Homing</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Jogging</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Running</translation>
+    </message>
+    <message>
+        <source>Stopping</source>
+        <translation>Stopping</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Paused</translation>
+    </message>
+    <message>
+        <source>Tool lifted</source>
+        <translation>Tool lifted</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Link lost</translation>
+    </message>
+    <message>
+        <source>Program finished in %1.</source>
+        <translation>Program finished in %1.</translation>
+    </message>
+    <message>
+        <source>Program finished.</source>
+        <translation>Program finished.</translation>
+    </message>
+    <message>
+        <source>Homing runs for all axes in the profile's order (the unit driver homes the whole machine).</source>
+        <translation>Homing runs for all axes in the profile's order (the unit driver homes the whole machine).</translation>
+    </message>
+    <message>
+        <source>No output of this machine is set up for that function; assign one in Settings › Machine profile › Outputs.</source>
+        <translation>No output of this machine is set up for that function; assign one in Settings › Machine profile › Outputs.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Check passed: %n move(s), estimated time %1, within the soft limits.</source>
+        <translation><numerusform>Check passed: %n move, estimated time %1, within the soft limits.</numerusform><numerusform>Check passed: %n moves, estimated time %1, within the soft limits.</numerusform></translation>
+    </message>
+    <message>
+        <source>Check passed.</source>
+        <translation>Check passed.</translation>
+    </message>
+    <message>
+        <source>Connecting to %1 at %2 Bd…</source>
+        <translation>Connecting to %1 at %2 Bd…</translation>
+    </message>
+    <message>
+        <source>the built-in emulator</source>
+        <translation>the built-in emulator</translation>
+    </message>
+    <message>
+        <source>Line %1</source>
+        <translation>Line %1</translation>
+    </message>
+    <message>
+        <source>The link to the unit was lost. The job position is kept: reconnect, then Resume.</source>
+        <translation>The link to the unit was lost. The job position is kept: reconnect, then Resume.</translation>
+    </message>
+    <message>
+        <source>Unit EEPROM differs from the profile: %1</source>
+        <translation>Unit EEPROM differs from the profile: %1</translation>
+    </message>
+    <message>
+        <source>The unit reported a problem: %1</source>
+        <translation>The unit reported a problem: %1</translation>
+    </message>
+    <message>
+        <source>Command: %1</source>
+        <translation>Command: %1</translation>
+    </message>
+    <message>
+        <source>Reply: %1</source>
+        <translation>Reply: %1</translation>
+    </message>
+    <message>
+        <source>Program line: %1</source>
+        <translation>Program line: %1</translation>
+    </message>
+    <message>
+        <source>Open a program first.</source>
+        <translation>Open a program first.</translation>
+    </message>
+    <message>
+        <source>The program has errors and cannot run:
+%1</source>
+        <translation>The program has errors and cannot run:
+%1</translation>
+    </message>
+    <message>
+        <source>The machine is not ready (%1); wait until it is, then Run.</source>
+        <translation>The machine is not ready (%1); wait until it is, then Run.</translation>
+    </message>
+    <message>
+        <source>Planning from the current position…</source>
+        <translation>Planning from the current position…</translation>
+    </message>
+    <message>
+        <source>Running %1.</source>
+        <translation>Running %1.</translation>
+    </message>
+    <message>
+        <source>Jog refused: %1 would go to %2 mm, outside the soft limits %3 … %4 mm.</source>
+        <translation>Jog refused: %1 would go to %2 mm, outside the soft limits %3 … %4 mm.</translation>
+    </message>
+    <message>
+        <source>Set the work zero while the machine is ready and still.</source>
+        <translation>Set the work zero while the machine is ready and still.</translation>
+    </message>
+    <message>
+        <source>Manual G-code runs only while the machine is ready.</source>
+        <translation>Manual G-code runs only while the machine is ready.</translation>
+    </message>
+    <message>
+        <source>manual line</source>
+        <translation>manual line</translation>
+    </message>
+    <message>
+        <source>Manual: %1</source>
+        <translation>Manual: %1</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::OutputsPanel</name>
+    <message>
+        <source>Spindle</source>
+        <translation>Spindle</translation>
+    </message>
+    <message>
+        <source>Switch the spindle on or off at the speed on the right</source>
+        <translation>Switch the spindle on or off at the speed on the right</translation>
+    </message>
+    <message>
+        <source>Speed:</source>
+        <translation>Speed:</translation>
+    </message>
+    <message>
+        <source>Coolant</source>
+        <translation>Coolant</translation>
+    </message>
+    <message>
+        <source>Air blow</source>
+        <translation>Air blow</translation>
+    </message>
+    <message>
+        <source>Feed:</source>
+        <translation>Feed:</translation>
+    </message>
+    <message>
+        <source>Feed override in percent of the programmed feed (XM)</source>
+        <translation>Feed override in percent of the programmed feed (XM)</translation>
+    </message>
+    <message>
+        <source>Raise every queued speed by 6.25 % (XU)</source>
+        <translation>Raise every queued speed by 6.25 % (XU)</translation>
+    </message>
+    <message>
+        <source>Lower every queued speed by 6.25 % (XD)</source>
+        <translation>Lower every queued speed by 6.25 % (XD)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::Plan</name>
+    <message>
+        <source>the move leaves the machine's travel (soft limits); check the work zero and the program</source>
+        <translation>the move leaves the machine's travel (soft limits); check the work zero and the program</translation>
+    </message>
+    <message>
+        <source>the program moves an axis this machine does not have</source>
+        <translation>the program moves an axis this machine does not have</translation>
+    </message>
+    <message>
+        <source>the position is beyond the unit's step counters</source>
+        <translation>the position is beyond the unit's step counters</translation>
+    </message>
+    <message>
+        <source>a feed move has no feed rate (F)</source>
+        <translation>a feed move has no feed rate (F)</translation>
+    </message>
+    <message>
+        <source>the spindle speed (S) is above the machine's maximum</source>
+        <translation>the spindle speed (S) is above the machine's maximum</translation>
+    </message>
+    <message>
+        <source>the unit cannot do this</source>
+        <translation>the unit cannot do this</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3 (%4)</source>
+        <translation>%1:%2: %3 (%4)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::PortSettingsRow</name>
+    <message>
+        <source>Serial port; a path such as /dev/pts/3 may be typed.</source>
+        <translation>Serial port; a path such as /dev/pts/3 may be typed.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>even</source>
+        <translation>even</translation>
+    </message>
+    <message>
+        <source>odd</source>
+        <translation>odd</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <source>Baud:</source>
+        <translation>Baud:</translation>
+    </message>
+    <message>
+        <source>Data bits:</source>
+        <translation>Data bits:</translation>
+    </message>
+    <message>
+        <source>Parity:</source>
+        <translation>Parity:</translation>
+    </message>
+    <message>
+        <source>Stop bits:</source>
+        <translation>Stop bits:</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::Profile</name>
+    <message>
+        <source>Profile</source>
+        <translation>Profile</translation>
+    </message>
+    <message>
+        <source>the file cannot be read or written</source>
+        <translation>the file cannot be read or written</translation>
+    </message>
+    <message>
+        <source>the file is not valid JSON</source>
+        <translation>the file is not valid JSON</translation>
+    </message>
+    <message>
+        <source>the value has the wrong type</source>
+        <translation>the value has the wrong type</translation>
+    </message>
+    <message>
+        <source>unknown key (a typo?)</source>
+        <translation>unknown key (a typo?)</translation>
+    </message>
+    <message>
+        <source>the value is outside its range</source>
+        <translation>the value is outside its range</translation>
+    </message>
+    <message>
+        <source>the value is none of the allowed ones</source>
+        <translation>the value is none of the allowed ones</translation>
+    </message>
+    <message>
+        <source>the value contradicts another setting or the unit type</source>
+        <translation>the value contradicts another setting or the unit type</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>The machine profile %1 cannot be used; the built-in GVE64 defaults are active until it is fixed:
+%2</source>
+        <translation>The machine profile %1 cannot be used; the built-in GVE64 defaults are active until it is fixed:
+%2</translation>
+    </message>
+    <message>
+        <source>Profile name</source>
+        <translation>Profile name</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Unit type</source>
+        <translation>Unit type</translation>
+    </message>
+    <message>
+        <source>Maximum pulse rate</source>
+        <translation>Maximum pulse rate</translation>
+    </message>
+    <message>
+        <source>Firmware version</source>
+        <translation>Firmware version</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Connection</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Baud rate</translation>
+    </message>
+    <message>
+        <source>Checksums</source>
+        <translation>Checksums</translation>
+    </message>
+    <message>
+        <source>Packets</source>
+        <translation>Packets</translation>
+    </message>
+    <message>
+        <source>Commands per packet</source>
+        <translation>Commands per packet</translation>
+    </message>
+    <message>
+        <source>Axes</source>
+        <translation>Axes</translation>
+    </message>
+    <message>
+        <source>X axis</source>
+        <translation>X axis</translation>
+    </message>
+    <message>
+        <source>Y axis</source>
+        <translation>Y axis</translation>
+    </message>
+    <message>
+        <source>Z axis</source>
+        <translation>Z axis</translation>
+    </message>
+    <message>
+        <source>A axis</source>
+        <translation>A axis</translation>
+    </message>
+    <message>
+        <source>Present</source>
+        <translation>Present</translation>
+    </message>
+    <message>
+        <source>Steps per mm</source>
+        <translation>Steps per mm</translation>
+    </message>
+    <message>
+        <source>Invert direction</source>
+        <translation>Invert direction</translation>
+    </message>
+    <message>
+        <source>Soft limit min</source>
+        <translation>Soft limit min</translation>
+    </message>
+    <message>
+        <source>Soft limit max</source>
+        <translation>Soft limit max</translation>
+    </message>
+    <message>
+        <source>Maximum speed</source>
+        <translation>Maximum speed</translation>
+    </message>
+    <message>
+        <source>Rapid speed</source>
+        <translation>Rapid speed</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>Acceleration</translation>
+    </message>
+    <message>
+        <source>Maximum speed jump at a corner</source>
+        <translation>Maximum speed jump at a corner</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Homing</translation>
+    </message>
+    <message>
+        <source>Order (0 = not homed)</source>
+        <translation>Order (0 = not homed)</translation>
+    </message>
+    <message>
+        <source>Direction to the switch (-1/+1)</source>
+        <translation>Direction to the switch (-1/+1)</translation>
+    </message>
+    <message>
+        <source>Maximum search travel</source>
+        <translation>Maximum search travel</translation>
+    </message>
+    <message>
+        <source>Speed toward the switch</source>
+        <translation>Speed toward the switch</translation>
+    </message>
+    <message>
+        <source>Speed off the switch</source>
+        <translation>Speed off the switch</translation>
+    </message>
+    <message>
+        <source>Maximum back-off travel</source>
+        <translation>Maximum back-off travel</translation>
+    </message>
+    <message>
+        <source>Position after homing</source>
+        <translation>Position after homing</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>Motion</translation>
+    </message>
+    <message>
+        <source>Corner deviation</source>
+        <translation>Corner deviation</translation>
+    </message>
+    <message>
+        <source>Arc chord tolerance</source>
+        <translation>Arc chord tolerance</translation>
+    </message>
+    <message>
+        <source>Pause between stand-alone moves</source>
+        <translation>Pause between stand-alone moves</translation>
+    </message>
+    <message>
+        <source>Speed mode</source>
+        <translation>Speed mode</translation>
+    </message>
+    <message>
+        <source>Tool lift</source>
+        <translation>Tool lift</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Spindle</translation>
+    </message>
+    <message>
+        <source>Spin-up wait</source>
+        <translation>Spin-up wait</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Outputs</translation>
+    </message>
+    <message>
+        <source>OUT1 function</source>
+        <translation>OUT1 function</translation>
+    </message>
+    <message>
+        <source>OUT2 function</source>
+        <translation>OUT2 function</translation>
+    </message>
+    <message>
+        <source>OUT3 function</source>
+        <translation>OUT3 function</translation>
+    </message>
+    <message>
+        <source>Output switched by M7</source>
+        <translation>Output switched by M7</translation>
+    </message>
+    <message>
+        <source>Unit EEPROM</source>
+        <translation>Unit EEPROM</translation>
+    </message>
+    <message>
+        <source>Compare with the unit on connect</source>
+        <translation>Compare with the unit on connect</translation>
+    </message>
+    <message>
+        <source>Handwheel (MPG)</source>
+        <translation>Handwheel (MPG)</translation>
+    </message>
+    <message>
+        <source>Handwheel acceleration</source>
+        <translation>Handwheel acceleration</translation>
+    </message>
+    <message>
+        <source>Handwheel maximum speed</source>
+        <translation>Handwheel maximum speed</translation>
+    </message>
+    <message>
+        <source>Handwheel brake delay</source>
+        <translation>Handwheel brake delay</translation>
+    </message>
+    <message>
+        <source>Handwheel step multiplier</source>
+        <translation>Handwheel step multiplier</translation>
+    </message>
+    <message>
+        <source>Input that starts homing (0 = off)</source>
+        <translation>Input that starts homing (0 = off)</translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN0-7</source>
+        <translation>Interrupt enable IN0-7</translation>
+    </message>
+    <message>
+        <source>Interrupt enable IN14/IN15</source>
+        <translation>Interrupt enable IN14/IN15</translation>
+    </message>
+    <message>
+        <source>Polarity IN0-7</source>
+        <translation>Polarity IN0-7</translation>
+    </message>
+    <message>
+        <source>Polarity IN14/IN15</source>
+        <translation>Polarity IN14/IN15</translation>
+    </message>
+    <message>
+        <source>A axis slaved to (0 none, 1 X, 2 Y, 3 Z)</source>
+        <translation>A axis slaved to (0 none, 1 X, 2 Y, 3 Z)</translation>
+    </message>
+    <message>
+        <source>PWM for breakout boards</source>
+        <translation>PWM for breakout boards</translation>
+    </message>
+    <message>
+        <source>Invert STEP polarity</source>
+        <translation>Invert STEP polarity</translation>
+    </message>
+    <message>
+        <source>Default spindle speed</source>
+        <translation>Default spindle speed</translation>
+    </message>
+    <message>
+        <source>Brake release delay</source>
+        <translation>Brake release delay</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatic</translation>
+    </message>
+    <message>
+        <source>Path speed (VK)</source>
+        <translation>Path speed (VK)</translation>
+    </message>
+    <message>
+        <source>Major axis speed (VN)</source>
+        <translation>Major axis speed (VN)</translation>
+    </message>
+    <message>
+        <source>Unused</source>
+        <translation>Unused</translation>
+    </message>
+    <message>
+        <source>Laser</source>
+        <translation>Laser</translation>
+    </message>
+    <message>
+        <source>Coolant</source>
+        <translation>Coolant</translation>
+    </message>
+    <message>
+        <source>Air blow</source>
+        <translation>Air blow</translation>
+    </message>
+    <message>
+        <source>Machine cover lock</source>
+        <translation>Machine cover lock</translation>
+    </message>
+    <message>
+        <source>Tool release</source>
+        <translation>Tool release</translation>
+    </message>
+    <message>
+        <source>Tool cover open</source>
+        <translation>Tool cover open</translation>
+    </message>
+    <message>
+        <source>Brake</source>
+        <translation>Brake</translation>
+    </message>
+    <message>
+        <source>Interrupt signal</source>
+        <translation>Interrupt signal</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Off</translation>
+    </message>
+    <message>
+        <source>On</source>
+        <translation>On</translation>
+    </message>
+    <message>
+        <source>On, within the limits</source>
+        <translation>On, within the limits</translation>
+    </message>
+    <message>
+        <source>On, 4th position drives rotary A</source>
+        <translation>On, 4th position drives rotary A</translation>
+    </message>
+    <message>
+        <source>On with limits, 4th position drives rotary A</source>
+        <translation>On with limits, 4th position drives rotary A</translation>
+    </message>
+    <message>
+        <source>GVE84</source>
+        <translation>GVE84</translation>
+    </message>
+    <message>
+        <source>GVE64</source>
+        <translation>GVE64</translation>
+    </message>
+    <message>
+        <source>GVE64 PHANTOM</source>
+        <translation>GVE64 PHANTOM</translation>
+    </message>
+    <message>
+        <source>GVE114</source>
+        <translation>GVE114</translation>
+    </message>
+    <message>
+        <source>Maximum spindle speed</source>
+        <translation>Maximum spindle speed</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProfileEditor</name>
+    <message>
+        <source>"emulator" = the built-in unit emulator; or a serial port such as /dev/ttyUSB0; or a typed path such as the pty printed by gve-emu</source>
+        <translation>"emulator" = the built-in unit emulator; or a serial port such as /dev/ttyUSB0; or a typed path such as the pty printed by gve-emu</translation>
+    </message>
+    <message>
+        <source>General</source>
+        <translation>General</translation>
+    </message>
+    <message>
+        <source>The profile is valid.</source>
+        <translation>The profile is valid.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n problem(s) — the profile cannot be saved yet.</source>
+        <translation><numerusform>%n problem — the profile cannot be saved yet.</numerusform><numerusform>%n problems — the profile cannot be saved yet.</numerusform></translation>
+    </message>
+    <message>
+        <source>Cannot load the profile %1:
+%2</source>
+        <translation>Cannot load the profile %1:
+%2</translation>
+    </message>
+    <message>
+        <source>The profile has problems; fix them first:
+%1</source>
+        <translation>The profile has problems; fix them first:
+%1</translation>
+    </message>
+    <message>
+        <source>Cannot save the profile %1: %2</source>
+        <translation>Cannot save the profile %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProgramSession</name>
+    <message>
+        <source>Reading</source>
+        <translation>Reading</translation>
+    </message>
+    <message>
+        <source>Indexing lines</source>
+        <translation>Indexing lines</translation>
+    </message>
+    <message>
+        <source>Interpreting</source>
+        <translation>Interpreting</translation>
+    </message>
+    <message>
+        <source>Preparing the view</source>
+        <translation>Preparing the view</translation>
+    </message>
+    <message>
+        <source>Planning</source>
+        <translation>Planning</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>Cannot open %1: %2</translation>
+    </message>
+    <message>
+        <source>This build has no G-code interpreter; the program cannot be checked.</source>
+        <translation>This build has no G-code interpreter; the program cannot be checked.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::RunPanel</name>
+    <message>
+        <source>Elapsed %1</source>
+        <translation>Elapsed %1</translation>
+    </message>
+    <message>
+        <source>Remaining %1</source>
+        <translation>Remaining %1</translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation>Check</translation>
+    </message>
+    <message>
+        <source>Check the program against the machine profile without moving</source>
+        <translation>Check the program against the machine profile without moving</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Run</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Brake along the ramp and hold; Resume continues</source>
+        <translation>Brake along the ramp and hold; Resume continues</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Resume</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>Stop the program; the position stays known</source>
+        <translation>Stop the program; the position stays known</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Abort</translation>
+    </message>
+    <message>
+        <source>Stop at once and drop every queued move</source>
+        <translation>Stop at once and drop every queued move</translation>
+    </message>
+    <message>
+        <source>Tool lift…</source>
+        <translation>Tool lift…</translation>
+    </message>
+    <message>
+        <source>Lift the tool, switch the spindle off, change or clean it, continue</source>
+        <translation>Lift the tool, switch the spindle off, change or clean it, continue</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::SerialMonitor</name>
+    <message>
+        <source>Hex view</source>
+        <translation>Hex view</translation>
+    </message>
+    <message>
+        <source>Hex bytes</source>
+        <translation>Hex bytes</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Open</translation>
+    </message>
+    <message>
+        <source>Port %1</source>
+        <translation>Port %1</translation>
+    </message>
+    <message>
+        <source>to port %1</source>
+        <translation>to port %1</translation>
+    </message>
+    <message>
+        <source>Stored message, e.g. AA 05 00 00 FF 51 (K51 ENQ) or Z? as text</source>
+        <translation>Stored message, e.g. AA 05 00 00 FF 51 (K51 ENQ) or Z? as text</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Clear</translation>
+    </message>
+    <message>
+        <source>Capture to file…</source>
+        <translation>Capture to file…</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Send</translation>
+    </message>
+    <message>
+        <source>Message:</source>
+        <translation>Message:</translation>
+    </message>
+    <message>
+        <source>Port %1: cannot open %2: %3</source>
+        <translation>Port %1: cannot open %2: %3</translation>
+    </message>
+    <message>
+        <source>Port %1: %2</source>
+        <translation>Port %1: %2</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+    <message>
+        <source>Port %1: watching %2 at %3 Bd.</source>
+        <translation>Port %1: watching %2 at %3 Bd.</translation>
+    </message>
+    <message>
+        <source>%1 older bytes left the view; capture to a file to keep everything.</source>
+        <translation>%1 older bytes left the view; capture to a file to keep everything.</translation>
+    </message>
+    <message>
+        <source>The message "%1" is not hex bytes (e.g. AA 05 00 00 FF 51).</source>
+        <translation>The message "%1" is not hex bytes (e.g. AA 05 00 00 FF 51).</translation>
+    </message>
+    <message>
+        <source>Port %1 is not open.</source>
+        <translation>Port %1 is not open.</translation>
+    </message>
+    <message>
+        <source>The message is empty.</source>
+        <translation>The message is empty.</translation>
+    </message>
+    <message>
+        <source>Port %1: the message could not be sent: %2</source>
+        <translation>Port %1: the message could not be sent: %2</translation>
+    </message>
+    <message>
+        <source>Capture to file</source>
+        <translation>Capture to file</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>Captured %1 lines to %2.</source>
+        <translation>Captured %1 lines to %2.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::SettingsDialog</name>
+    <message>
+        <source>Export profile</source>
+        <translation>Export profile</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Machine profiles (*.json)</translation>
+    </message>
+    <message>
+        <source>Load profile</source>
+        <translation>Load profile</translation>
+    </message>
+    <message>
+        <source>Defaults of the unit type loaded; Apply or Save to use them.</source>
+        <translation>Defaults of the unit type loaded; Apply or Save to use them.</translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>Saved to %1.</translation>
+    </message>
+    <message>
+        <source>Loaded %1; Apply to use it.</source>
+        <translation>Loaded %1; Apply to use it.</translation>
+    </message>
+    <message>
+        <source>The profile has problems; fix the fields marked red first.</source>
+        <translation>The profile has problems; fix the fields marked red first.</translation>
+    </message>
+    <message>
+        <source>Applied (not yet saved).</source>
+        <translation>Applied (not yet saved).</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Settings</translation>
+    </message>
+    <message>
+        <source>Machine profile</source>
+        <translation>Machine profile</translation>
+    </message>
+    <message>
+        <source>Application</source>
+        <translation>Application</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Load…</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Save</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Export…</translation>
+    </message>
+    <message>
+        <source>Defaults</source>
+        <translation>Defaults</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Apply</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Language</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>System language</translation>
+    </message>
+    <message>
+        <source>Reconnect automatically after a lost link</source>
+        <translation>Reconnect automatically after a lost link</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::SpeedPlot</name>
+    <message>
+        <source>mm/min along the path (%1 mm)</source>
+        <translation>mm/min along the path (%1 mm)</translation>
+    </message>
+    <message>
+        <source>%1 mm/min at %2 mm, line %3</source>
+        <translation>%1 mm/min at %2 mm, line %3</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ToolpathView</name>
+    <message>
+        <source>Top</source>
+        <translation>Top</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Front</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Side</translation>
+    </message>
+    <message>
+        <source>Iso</source>
+        <translation>Iso</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Fit</translation>
+    </message>
+    <message>
+        <source>Show the whole program</source>
+        <translation>Show the whole program</translation>
+    </message>
+    <message>
+        <source>Left drag: orbit · right/middle drag or Shift+left: pan · wheel: zoom</source>
+        <translation>Left drag: orbit · right/middle drag or Shift+left: pan · wheel: zoom</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::TransferPanel</name>
+    <message>
+        <source>Controller → PC</source>
+        <translation>Controller → PC</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Save…</translation>
+    </message>
+    <message>
+        <source>Choose file…</source>
+        <translation>Choose file…</translation>
+    </message>
+    <message>
+        <source>PC → Controller</source>
+        <translation>PC → Controller</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Ask the controller for its programs (DEJ) and receive them.</source>
+        <translation>Ask the controller for its programs (DEJ) and receive them.</translation>
+    </message>
+    <message>
+        <source>Send the chosen file to the controller unchanged.</source>
+        <translation>Send the chosen file to the controller unchanged.</translation>
+    </message>
+    <message>
+        <source>16 characters shown on the controller</source>
+        <translation>16 characters shown on the controller</translation>
+    </message>
+    <message>
+        <source>No file chosen</source>
+        <translation>No file chosen</translation>
+    </message>
+    <message>
+        <source>Header:</source>
+        <translation>Header:</translation>
+    </message>
+    <message>
+        <source>Length:</source>
+        <translation>Length:</translation>
+    </message>
+    <message>
+        <source>Inner blocks:</source>
+        <translation>Inner blocks:</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>File:</translation>
+    </message>
+    <message>
+        <source>Messages:</source>
+        <translation>Messages:</translation>
+    </message>
+    <message>
+        <source>Receiving from the controller…</source>
+        <translation>Receiving from the controller…</translation>
+    </message>
+    <message>
+        <source>Sending %1 to the controller…</source>
+        <translation>Sending %1 to the controller…</translation>
+    </message>
+    <message>
+        <source>%1 of %2 bytes, %3 left</source>
+        <translation>%1 of %2 bytes, %3 left</translation>
+    </message>
+    <message>
+        <source>%1 bytes in %2</source>
+        <translation>%1 bytes in %2</translation>
+    </message>
+    <message>
+        <source>%1 bytes (0x%2)</source>
+        <translation>%1 bytes (0x%2)</translation>
+    </message>
+    <message>
+        <source>Received. Press Save to store the data in a file.</source>
+        <translation>Received. Press Save to store the data in a file.</translation>
+    </message>
+    <message>
+        <source>Sent; the controller confirmed the transfer.</source>
+        <translation>Sent; the controller confirmed the transfer.</translation>
+    </message>
+    <message>
+        <source>On the controller, TCHIN programs show "no prg set" once after a transfer: set up the X axis first — select the TCHIN program in AUT and hold RES.</source>
+        <translation>On the controller, TCHIN programs show "no prg set" once after a transfer: set up the X axis first — select the TCHIN program in AUT and hold RES.</translation>
+    </message>
+    <message>
+        <source>Transfer failed: %1</source>
+        <translation>Transfer failed: %1</translation>
+    </message>
+    <message>
+        <source>Save the controller's data</source>
+        <translation>Save the controller's data</translation>
+    </message>
+    <message>
+        <source>Choose the file to send</source>
+        <translation>Choose the file to send</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2. The received data are kept; choose another file.</source>
+        <translation>Cannot write %1: %2. The received data are kept; choose another file.</translation>
+    </message>
+    <message>
+        <source>Saved %1 bytes to %2.</source>
+        <translation>Saved %1 bytes to %2.</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Cannot read %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 bytes; inner blocks: %2</source>
+        <translation>%1 bytes; inner blocks: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::UnitConfigDialog</name>
+    <message>
+        <source>No reply to %1 within 5 s.</source>
+        <translation>No reply to %1 within 5 s.</translation>
+    </message>
+    <message>
+        <source>Reading the unit's EEPROM…</source>
+        <translation>Reading the unit's EEPROM…</translation>
+    </message>
+    <message>
+        <source>The unit already matches the profile.</source>
+        <translation>The unit already matches the profile.</translation>
+    </message>
+    <message>
+        <source>Read the unit first.</source>
+        <translation>Read the unit first.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Writing %n setting(s) and reading them back…</source>
+        <translation><numerusform>Writing %n setting and reading them back…</numerusform><numerusform>Writing %n settings and reading them back…</numerusform></translation>
+    </message>
+    <message>
+        <source>The unit refused %1 (reply %2).</source>
+        <translation>The unit refused %1 (reply %2).</translation>
+    </message>
+    <message>
+        <source>Cannot read the value in the reply to %1: %2</source>
+        <translation>Cannot read the value in the reply to %1: %2</translation>
+    </message>
+    <message>
+        <source>Read-back of %1 gives %2, not the %3 written.</source>
+        <translation>Read-back of %1 gives %2, not the %3 written.</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 failed: %2</translation>
+    </message>
+    <message>
+        <source>Not read yet.</source>
+        <translation>Not read yet.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The unit matches the profile (%n setting(s) compared).</source>
+        <translation><numerusform>The unit matches the profile (%n setting compared).</numerusform><numerusform>The unit matches the profile (%n settings compared).</numerusform></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ from the profile.</source>
+        <translation><numerusform>%n setting differ from the profile.</numerusform><numerusform>%n settings differ from the profile.</numerusform></translation>
+    </message>
+    <message>
+        <source>Unit configuration (EEPROM)</source>
+        <translation>Unit configuration (EEPROM)</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <source>Setting</source>
+        <translation>Setting</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profile</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Meaning (unit value)</source>
+        <translation>Meaning (unit value)</translation>
+    </message>
+    <message>
+        <source>Read from unit</source>
+        <translation>Read from unit</translation>
+    </message>
+    <message>
+        <source>Write differences</source>
+        <translation>Write differences</translation>
+    </message>
+    <message>
+        <source>Write all</source>
+        <translation>Write all</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ZPositionPanel</name>
+    <message>
+        <source>Read position (Z?)</source>
+        <translation>Read position (Z?)</translation>
+    </message>
+    <message>
+        <source>GO</source>
+        <translation>GO</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Move the table to this Z position (selector in PGN).</source>
+        <translation>Move the table to this Z position (selector in PGN).</translation>
+    </message>
+    <message>
+        <source>Protocol:</source>
+        <translation>Protocol:</translation>
+    </message>
+    <message>
+        <source>Z position:</source>
+        <translation>Z position:</translation>
+    </message>
+    <message>
+        <source>Go to:</source>
+        <translation>Go to:</translation>
+    </message>
+    <message>
+        <source>not connected in a Z-position mode</source>
+        <translation>not connected in a Z-position mode</translation>
+    </message>
+    <message>
+        <source>FORM=1: ASCII both ways (Z?, GO)</source>
+        <translation>FORM=1: ASCII both ways (Z?, GO)</translation>
+    </message>
+    <message>
+        <source>FORM=2: binary frames sent by the controller</source>
+        <translation>FORM=2: binary frames sent by the controller</translation>
+    </message>
+    <message>
+        <source>%1 bytes skipped to find the frame start.</source>
+        <translation>%1 bytes skipped to find the frame start.</translation>
+    </message>
+    <message>
+        <source>Asking for the position…</source>
+        <translation>Asking for the position…</translation>
+    </message>
+    <message>
+        <source>Moving to %1 mm…</source>
+        <translation>Moving to %1 mm…</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>%1 frames received.</source>
+        <translation>%1 frames received.</translation>
+    </message>
+    <message>
+        <source>Position received at %1.</source>
+        <translation>Position received at %1.</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Frezka: runs CNC mills through GVE interpolators.</source>
+        <translation>Frezka: runs CNC mills through GVE interpolators.</translation>
+    </message>
+    <message>
+        <source>Draw the toolpath without OpenGL.</source>
+        <translation>Draw the toolpath without OpenGL.</translation>
+    </message>
+    <message>
+        <source>Save the window as PNG once the program has loaded, then quit (README screenshots).</source>
+        <translation>Save the window as PNG once the program has loaded, then quit (README screenshots).</translation>
+    </message>
+    <message>
+        <source>G-code program to open.</source>
+        <translation>G-code program to open.</translation>
+    </message>
+    <message>
+        <source>User interface language: cs or en (default: the settings, else the system language).</source>
+        <translation>User interface language: cs or en (default: the settings, else the system language).</translation>
+    </message>
+</context>
+</TS>
