@@ -122,6 +122,11 @@ inline bool inputActive(bool level, bool polarityActiveHigh)
     return level == polarityActiveHigh;
 }
 
+// A (thousands of pulses/s^2) and XM (percent): the manuals give no range, so any positive
+// 32-bit number is accepted (0 would mean no motion: 5). The pulse rate and VL cap the result.
+inline constexpr std::int64_t kAccelMaxK = 2147483647;
+inline constexpr std::int64_t kMultiplierMaxPercent = 2147483647;
+
 // Brake-violation tolerance: an arrival faster than the allowed exit speed by more than this
 // (pulses/s, plus 1e-9 relative) counts as a violation; below it is floating-point noise.
 // Rounding cannot reach it. The last brake is planned from v^2 - 2A*remaining vs e^2, with a
