@@ -51,13 +51,11 @@ public:
     void wait(double seconds) { m_unit.advance(seconds); }
 
 private:
-    // To the next event. Unit::advance(dt) computes (now + dt) - now, which can fall one ulp
-    // short of the event and leave a braking vector a hair above its exit speed (counted as a
-    // brake violation); 1 ns past the event makes the engine take the event exactly.
+    // To the next event: advancing by exactly nextEventIn() always takes the event.
     void step()
     {
         const double dt = m_unit.nextEventIn();
-        m_unit.advance(std::isfinite(dt) ? dt + 1e-9 : 1e-3);
+        m_unit.advance(std::isfinite(dt) ? dt : 1e-3);
     }
 
     emulator::Unit m_unit;

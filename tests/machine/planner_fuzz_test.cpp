@@ -100,11 +100,7 @@ void checkSeeds(bool equalScales)
         const EmulatorRun run = runOnEmulator(r.program, c);
         ASSERT_TRUE(run.error.empty()) << "seed " << seed << ": " << run.error;
         EXPECT_EQ(r.stats.brakeViolations, 0u) << "seed " << seed; // the planner's own model
-        // The emulator core can count a floating-point residue as a violation: at the switch
-        // from cruising to braking it recomputes the remaining distance, and one ulp of a long
-        // vector (x 2A) exceeds its 1e-9 tolerance on v² (seed 9: 2.6e-4 pulses/s on a vector
-        // 5348 steps long that needs 0.14 to brake). Reported; anything real is far larger.
-        EXPECT_TRUE(run.brakeViolations == 0 || run.worstBrakeExcess < 1e-3)
+        EXPECT_EQ(run.brakeViolations, 0u)
             << "seed " << seed << " excess " << run.worstBrakeExcess;
         EXPECT_EQ(run.starvationStops, run.plannedStops) << "seed " << seed;
         EXPECT_EQ(run.jumpOverLimit, 0u) << "seed " << seed << " ratio " << run.maxJumpRatio;
