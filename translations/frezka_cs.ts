@@ -2,6 +2,13 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
 <context>
+    <name>EmulatorTransport</name>
+    <message>
+        <source>built-in %1 emulator</source>
+        <translation type="unfinished" />
+    </message>
+</context>
+<context>
     <name>LinkWorker</name>
     <message>
         <source>connected: %1</source>
@@ -12,8 +19,8 @@
         <translation>není zadán sériový port</translation>
     </message>
     <message>
-        <source>the built-in emulator is not available yet</source>
-        <translation>vestavěný emulátor zatím není k dispozici</translation>
+        <source>unknown connection kind</source>
+        <translation type="unfinished" />
     </message>
 </context>
 <context>
@@ -1074,6 +1081,14 @@
     <message>
         <source>G-code (e.g. G0 X10) or a raw unit command (e.g. !0PF), Enter sends</source>
         <translation>G-kód (např. G0 X10) nebo přímý příkaz jednotce (např. !0PF), Enter odešle</translation>
+    </message>
+    <message>
+        <source>Polls</source>
+        <translation>Dotazy</translation>
+    </message>
+    <message>
+        <source>Also show the periodic position and status polls</source>
+        <translation>Zobrazit i pravidelné dotazy na polohu a stav</translation>
     </message>
 </context>
 <context>

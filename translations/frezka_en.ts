@@ -2,6 +2,13 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>EmulatorTransport</name>
+    <message>
+        <source>built-in %1 emulator</source>
+        <translation>built-in %1 emulator</translation>
+    </message>
+</context>
+<context>
     <name>LinkWorker</name>
     <message>
         <source>connected: %1</source>
@@ -12,8 +19,8 @@
         <translation>no serial port given</translation>
     </message>
     <message>
-        <source>the built-in emulator is not available yet</source>
-        <translation>the built-in emulator is not available yet</translation>
+        <source>unknown connection kind</source>
+        <translation>unknown connection kind</translation>
     </message>
 </context>
 <context>
@@ -1074,6 +1081,14 @@
     <message>
         <source>G-code (e.g. G0 X10) or a raw unit command (e.g. !0PF), Enter sends</source>
         <translation>G-code (e.g. G0 X10) or a raw unit command (e.g. !0PF), Enter sends</translation>
+    </message>
+    <message>
+        <source>Polls</source>
+        <translation>Polls</translation>
+    </message>
+    <message>
+        <source>Also show the periodic position and status polls</source>
+        <translation>Also show the periodic position and status polls</translation>
     </message>
 </context>
 <context>
