@@ -5,7 +5,7 @@
     <name>EmulatorTransport</name>
     <message>
         <source>built-in %1 emulator</source>
-        <translation type="unfinished" />
+        <translation>vestavěný emulátor %1</translation>
     </message>
 </context>
 <context>
@@ -20,7 +20,7 @@
     </message>
     <message>
         <source>unknown connection kind</source>
-        <translation type="unfinished" />
+        <translation>neznámý druh připojení</translation>
     </message>
 </context>
 <context>
