@@ -44,6 +44,7 @@ enum class ErrorCode : std::uint16_t {
     G10BadL = 215,
     G10BadP = 216,
     UnsupportedRotation = 217,
+    ValueOutOfRange = 218,
     // Motion (3xx)
     ZeroFeedRate = 300,
     InverseTimeFeedMissing = 301,
@@ -112,7 +113,7 @@ const char *errorHint(ErrorCode code);
 std::string englishMessage(const Error &error);
 // The same in the user's language (QCoreApplication::translate, context "frezka::gcode").
 QString translatedMessage(const Error &error);
-// "FILE:LINE:COL: message" in the user's language.
+// "FILE:LINE:COL: message" in the user's language ("FILE: message" without a line).
 QString formatError(const QString &file, const Error &error);
 
 } // namespace frezka::gcode

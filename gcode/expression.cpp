@@ -17,6 +17,9 @@ constexpr int kPrecedence[] = {6, 5, 5, 5, 4, 4, 2, 2, 2, 3, 3, 3, 3, 3, 3};
 constexpr double kToleranceEqual = 0.0001; // LinuxCNC's TOLERANCE_EQUAL for EQ/NE
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
+constexpr double kPow10[] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                             1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+
 bool isDigit(char c)
 {
     return c >= '0' && c <= '9';
@@ -36,25 +39,35 @@ bool Parser::readNumber(double *value, Error *error)
         ++p;
     }
     const std::size_t body = p;
-    bool digits = false;
+    // Up to 15 significant digits the value is mantissa / 10^k, a single correctly rounded
+    // division of two exact doubles (Clinger's fast path): the same result as strtod.
+    std::uint64_t mantissa = 0;
+    int digits = 0;
+    int fraction = 0;
     while (p < n && isDigit(s[p])) {
+        mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[p] - '0');
+        ++digits;
         ++p;
-        digits = true;
     }
     if (p < n && s[p] == '.') {
         ++p;
         while (p < n && isDigit(s[p])) {
+            mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[p] - '0');
+            ++digits;
+            ++fraction;
             ++p;
-            digits = true;
         }
     }
-    if (!digits)
+    if (digits == 0)
         return fail(ErrorCode::NumberExpected, start, {}, error);
     double v = 0;
-    // "5." is valid G-code; from_chars accepts it as well.
-    const auto result = std::from_chars(s + body, s + p, v, std::chars_format::fixed);
-    if (result.ec != std::errc() || result.ptr != s + p)
-        return fail(ErrorCode::NumberExpected, start, {}, error);
+    if (digits <= 15) {
+        v = static_cast<double>(mantissa) / kPow10[fraction];
+    } else {
+        const auto result = std::from_chars(s + body, s + p, v, std::chars_format::fixed);
+        if (result.ec != std::errc() || result.ptr != s + p)
+            return fail(ErrorCode::NumberExpected, start, {}, error);
+    }
     *value = negative ? -v : v;
     m_pos = p;
     return true;
@@ -308,7 +321,10 @@ bool Parser::readUnary(double *value, Error *error)
             return domain();
         *value = std::log(a);
     } else if (name == "round") {
-        *value = static_cast<double>(static_cast<long long>(a + (a < 0 ? -0.5 : 0.5)));
+        // LinuxCNC: (int)(a +- 0.5); beyond 2^53 every double is already whole.
+        *value = std::fabs(a) < 4.5e15
+                     ? static_cast<double>(static_cast<long long>(a + (a < 0 ? -0.5 : 0.5)))
+                     : a;
     } else if (name == "sin") {
         *value = std::sin(a * kDegToRad);
     } else if (name == "sqrt") {
@@ -348,8 +364,7 @@ bool Parser::readParameterRef(int *index, std::string_view *name, Error *error)
         return false;
     }
     if (v < 1 || v >= Parameters::kCount)
-        return fail(ErrorCode::ParameterOutOfRange, start, std::to_string(static_cast<long>(v)),
-                    error);
+        return fail(ErrorCode::ParameterOutOfRange, start, std::to_string(v), error);
     *index = static_cast<int>(v);
     return true;
 }

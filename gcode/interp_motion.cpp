@@ -12,8 +12,6 @@ namespace frezka::gcode {
 
 namespace {
 
-constexpr char kAxisLetters[4] = {'x', 'y', 'z', 'a'};
-
 // LinuxCNC's tolerances (interp_internal.hh), converted to mm.
 constexpr double kRadiusToleranceMm = 0.00005 * 25.4;
 constexpr double kSpiralAbsToleranceMetricMm = 2 * 0.01 * std::numbers::sqrt2;
@@ -21,6 +19,8 @@ constexpr double kSpiralAbsToleranceInchMm = 2 * 0.001 * std::numbers::sqrt2 * 2
 constexpr double kSpiralRelTolerance = 0.001;
 constexpr double kTiny = 1e-12;
 constexpr double kG83RapidDeltaMm = 0.010 * 25.4;
+constexpr double kMaxTurns = 1e6; // P of an arc, L of a cycle: bounds against absurd output
+constexpr double kMaxRepeats = 1e6;
 
 struct PlaneAxes
 {
@@ -64,22 +64,29 @@ std::string fmt4(double v)
 
 } // namespace
 
-Point4 Interpreter::targetOf(bool machineCoords) const
+Interpreter::Target Interpreter::targetOf(bool machineCoords) const
 {
-    Point4 end = m_pos;
+    Target t{m_pos, m_prog};
     for (int i = 0; i < 4; ++i) {
         const char c = kAxisLetters[i];
         if (!m_block.has(c))
             continue;
         const double v = i < 3 ? lengthWord(c) : m_block.get(c);
-        if (machineCoords)
-            axisRef(end, i) = v;
-        else if (m_absolute)
-            axisRef(end, i) = v + offset(i);
-        else
-            axisRef(end, i) = axisOf(m_pos, i) + v;
+        if (machineCoords) {
+            axisRef(t.machine, i) = v;
+            axisRef(t.prog, i) = v - offset(i);
+        } else {
+            axisRef(t.prog, i) = m_absolute ? v : axisOf(m_prog, i) + v;
+            axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
+        }
     }
-    return end;
+    return t;
+}
+
+void Interpreter::moveTo(const Target &target)
+{
+    m_pos = target.machine;
+    m_prog = target.prog;
 }
 
 double Interpreter::feedFor(double lengthMm) const
@@ -106,12 +113,13 @@ bool Interpreter::executeMotion(int motion, Error *error)
     return ok;
 }
 
-bool Interpreter::straight(int motion, const Point4 &end, Error *error)
+bool Interpreter::straight(int motion, const Target &target, Error *error)
 {
-    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 1;
+    const Point4 &end = target.machine;
+    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
     if (motion == 0) {
         m_toolpath.appendRapid(end, m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
-        m_pos = end;
+        moveTo(target);
         return true;
     }
     if (m_inverseTime && !m_block.has('f'))
@@ -122,15 +130,61 @@ bool Interpreter::straight(int motion, const Point4 &end, Error *error)
         std::sqrt((end.x - m_pos.x) * (end.x - m_pos.x) + (end.y - m_pos.y) * (end.y - m_pos.y) +
                   (end.z - m_pos.z) * (end.z - m_pos.z));
     m_toolpath.appendFeed(end, feedFor(length), m_line);
-    m_pos = end;
+    moveTo(target);
     return true;
 }
 
-bool Interpreter::arc(int motion, const Point4 &end, Error *error)
+// Centre from I/J/K (incremental or G90.1 absolute) with LinuxCNC 2.9's end-radius check.
+bool Interpreter::arcCentreIjk(double su, double sv, double eu, double ev, std::uint32_t col,
+                               double *cu, double *cv, Error *error) const
 {
+    const PlaneAxes ax = planeAxes(m_plane);
+    const double ou = m_block.has(ax.ou) ? lengthWord(ax.ou) : 0.0;
+    const double ov = m_block.has(ax.ov) ? lengthWord(ax.ov) : 0.0;
+    *cu = m_arcAbsolute ? ou : su + ou;
+    *cv = m_arcAbsolute ? ov : sv + ov;
+    const double r1 = std::hypot(*cu - su, *cv - sv);
+    const double r2 = std::hypot(*cu - eu, *cv - ev);
+    auto radii = [&] { return "r1=" + fmt4(r1 / unit()) + " r2=" + fmt4(r2 / unit()); };
+    if (r1 < kRadiusToleranceMm || r2 < kRadiusToleranceMm)
+        return failAt(ErrorCode::ArcZeroRadius, col, radii(), error);
+    const double spiralAbs = m_metric ? kSpiralAbsToleranceMetricMm : kSpiralAbsToleranceInchMm;
+    const double absErr = std::fabs(r1 - r2);
+    const double relErr = absErr / std::max(r1, r2);
+    if (absErr > spiralAbs * 100.0 || (relErr > kSpiralRelTolerance && absErr > spiralAbs))
+        return failAt(ErrorCode::ArcRadiusMismatch, col, radii(), error);
+    return true;
+}
+
+// Centre from R (rs274ngc's arc_data_r): negative R takes the arc longer than a half circle.
+bool Interpreter::arcCentreR(int motion, double su, double sv, double eu, double ev, double *cu,
+                             double *cv, Error *error) const
+{
+    if (eu == su && ev == sv)
+        return fail(ErrorCode::ArcEndEqualsStart, 'r', {}, error);
+    const double radius = lengthWord('r');
+    const double absRadius = std::fabs(radius);
+    const double mu = (eu + su) / 2.0, mv = (ev + sv) / 2.0;
+    double half = std::hypot(mu - eu, mv - ev);
+    if (half - absRadius > kRadiusToleranceMm)
+        return fail(ErrorCode::ArcRadiusTooSmall, 'r', "R" + fmt4(radius / unit()), error);
+    if (half / absRadius > 1 - kTiny)
+        half = absRadius;
+    const double chord = std::atan2(ev - sv, eu - su);
+    const bool minus = (motion == 20 && radius > 0) || (motion == 30 && radius < 0);
+    const double theta = chord + (minus ? -std::numbers::pi / 2 : std::numbers::pi / 2);
+    const double dist = absRadius * std::cos(std::asin(half / absRadius));
+    *cu = mu + dist * std::cos(theta);
+    *cv = mv + dist * std::sin(theta);
+    return true;
+}
+
+bool Interpreter::arc(int motion, const Target &target, Error *error)
+{
+    const Point4 &end = target.machine;
     const Block &b = m_block;
-    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 1;
-    const std::string name = motion == 20 ? "G2" : "G3";
+    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 0;
+    const char *name = motion == 20 ? "G2" : "G3";
     const bool ijk = b.has('i') || b.has('j') || b.has('k');
     const bool rForm = b.has('r');
     const PlaneAxes ax = planeAxes(m_plane);
@@ -157,50 +211,19 @@ bool Interpreter::arc(int motion, const Point4 &end, Error *error)
     if (b.has('p')) {
         const double p = b.get('p');
         const double rounded = std::round(p);
-        if (rounded < 1 || std::fabs(p - rounded) > 0.0001)
+        if (rounded < 1 || rounded > kMaxTurns || std::fabs(p - rounded) > 0.0001)
             return fail(ErrorCode::ArcBadTurns, 'p', fmt4(p), error);
         turns = static_cast<int>(rounded);
     }
 
     // Program coordinates in the plane.
-    const double su = axisOf(m_pos, ax.u) - offset(ax.u);
-    const double sv = axisOf(m_pos, ax.v) - offset(ax.v);
-    const double eu = axisOf(end, ax.u) - offset(ax.u);
-    const double ev = axisOf(end, ax.v) - offset(ax.v);
+    const double su = axisOf(m_prog, ax.u), sv = axisOf(m_prog, ax.v);
+    const double eu = axisOf(target.prog, ax.u), ev = axisOf(target.prog, ax.v);
     double cu = 0, cv = 0;
-    if (ijk) {
-        const double ou = b.has(ax.ou) ? lengthWord(ax.ou) : 0.0;
-        const double ov = b.has(ax.ov) ? lengthWord(ax.ov) : 0.0;
-        cu = m_arcAbsolute ? ou : su + ou;
-        cv = m_arcAbsolute ? ov : sv + ov;
-        const double r1 = std::hypot(cu - su, cv - sv);
-        const double r2 = std::hypot(cu - eu, cv - ev);
-        const std::string radii = "r1=" + fmt4(r1 / unit()) + " r2=" + fmt4(r2 / unit());
-        if (r1 < kRadiusToleranceMm || r2 < kRadiusToleranceMm)
-            return failAt(ErrorCode::ArcZeroRadius, col, radii, error);
-        const double spiralAbs = m_metric ? kSpiralAbsToleranceMetricMm : kSpiralAbsToleranceInchMm;
-        const double absErr = std::fabs(r1 - r2);
-        const double relErr = absErr / std::max(r1, r2);
-        if (absErr > spiralAbs * 100.0 || (relErr > kSpiralRelTolerance && absErr > spiralAbs))
-            return failAt(ErrorCode::ArcRadiusMismatch, col, radii, error);
-    } else {
-        if (eu == su && ev == sv)
-            return fail(ErrorCode::ArcEndEqualsStart, 'r', {}, error);
-        const double radius = lengthWord('r');
-        const double absRadius = std::fabs(radius);
-        const double mu = (eu + su) / 2.0, mv = (ev + sv) / 2.0;
-        double half = std::hypot(mu - eu, mv - ev);
-        if (half - absRadius > kRadiusToleranceMm)
-            return fail(ErrorCode::ArcRadiusTooSmall, 'r', "R" + fmt4(radius / unit()), error);
-        if (half / absRadius > 1 - kTiny)
-            half = absRadius;
-        const double chord = std::atan2(ev - sv, eu - su);
-        const bool minus = (motion == 20 && radius > 0) || (motion == 30 && radius < 0);
-        const double theta = chord + (minus ? -std::numbers::pi / 2 : std::numbers::pi / 2);
-        const double dist = absRadius * std::cos(std::asin(half / absRadius));
-        cu = mu + dist * std::cos(theta);
-        cv = mv + dist * std::sin(theta);
-    }
+    const bool ok = ijk ? arcCentreIjk(su, sv, eu, ev, col, &cu, &cv, error)
+                        : arcCentreR(motion, su, sv, eu, ev, &cu, &cv, error);
+    if (!ok)
+        return false;
     ArcInfo info;
     info.plane = toPlane(m_plane);
     info.turns = motion == 20 ? -turns : turns;
@@ -220,13 +243,14 @@ bool Interpreter::arc(int motion, const Point4 &end, Error *error)
         feed = feedFor(std::hypot(r * sweep, dw));
     }
     m_toolpath.appendArc(end, info, feed, m_line);
-    m_pos = end;
+    moveTo(target);
     return true;
 }
 
-bool Interpreter::probe(int motion, const Point4 &end, Error *error)
+bool Interpreter::probe(int motion, const Target &target, Error *error)
 {
-    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 1;
+    const Point4 &end = target.machine;
+    const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
     if (m_inverseTime)
         return failAt(ErrorCode::ProbeInverseTime, col, {}, error);
     if (m_feed == 0)
@@ -234,8 +258,8 @@ bool Interpreter::probe(int motion, const Point4 &end, Error *error)
     if (end == m_pos)
         return failAt(ErrorCode::ProbeNoMotion, col, {}, error);
     m_toolpath.appendProbe(end, static_cast<ProbeKind>(motion - 382), m_feed * unit(), m_line);
-    m_pos = end;
-    m_probe = programPosition();
+    moveTo(target);
+    m_probe = m_prog;
     m_probed = true;
     return true;
 }
@@ -243,23 +267,27 @@ bool Interpreter::probe(int motion, const Point4 &end, Error *error)
 void Interpreter::cycleTraverse(int plane, double aa, double bb, double cc)
 {
     const PlaneAxes ax = planeAxes(plane);
-    Point4 p = m_pos;
-    axisRef(p, ax.u) = aa + offset(ax.u);
-    axisRef(p, ax.v) = bb + offset(ax.v);
-    axisRef(p, ax.w) = cc + offset(ax.w);
-    m_toolpath.appendRapid(p, m_feed * unit(), m_line);
-    m_pos = p;
+    Target t{m_pos, m_prog};
+    axisRef(t.prog, ax.u) = aa;
+    axisRef(t.prog, ax.v) = bb;
+    axisRef(t.prog, ax.w) = cc;
+    for (int i : {ax.u, ax.v, ax.w})
+        axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
+    m_toolpath.appendRapid(t.machine, m_feed * unit(), m_line);
+    moveTo(t);
 }
 
 void Interpreter::cycleFeed(int plane, double aa, double bb, double cc)
 {
     const PlaneAxes ax = planeAxes(plane);
-    Point4 p = m_pos;
-    axisRef(p, ax.u) = aa + offset(ax.u);
-    axisRef(p, ax.v) = bb + offset(ax.v);
-    axisRef(p, ax.w) = cc + offset(ax.w);
-    m_toolpath.appendFeed(p, m_feed * unit(), m_line);
-    m_pos = p;
+    Target t{m_pos, m_prog};
+    axisRef(t.prog, ax.u) = aa;
+    axisRef(t.prog, ax.v) = bb;
+    axisRef(t.prog, ax.w) = cc;
+    for (int i : {ax.u, ax.v, ax.w})
+        axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
+    m_toolpath.appendFeed(t.machine, m_feed * unit(), m_line);
+    moveTo(t);
 }
 
 void Interpreter::cycleBody(int motion, double aa, double bb, double r, double clear, double cc,
@@ -301,48 +329,64 @@ void Interpreter::cycleBody(int motion, double aa, double bb, double r, double c
     }
 }
 
-bool Interpreter::cycle(int motion, Error *error)
+// The words of a cycle block, with the sticky values of the previous cycle block (same cycle)
+// where a word is left out, as rs274ngc's convert_cycle does.
+bool Interpreter::cycleWords(int motion, CycleWords *w, Error *error) const
 {
     const Block &b = m_block;
-    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 1;
+    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 0;
     const std::string name = gName(motion);
-    const PlaneAxes ax = planeAxes(m_plane);
-    const char uc = kAxisLetters[ax.u], vc = kAxisLetters[ax.v], wc = kAxisLetters[ax.w];
+    const char wc = kAxisLetters[planeAxes(m_plane).w];
     if (m_inverseTime)
         return failAt(ErrorCode::CycleInverseTime, col, {}, error);
     if (m_feed == 0)
         return failAt(ErrorCode::ZeroFeedRate, col, name, error);
     const bool same = m_motion == motion;
-    double rWord = m_cycleR;
+    w->r = m_cycleR;
     if (b.has('r'))
-        rWord = lengthWord('r');
+        w->r = lengthWord('r');
     else if (!same)
         return failAt(ErrorCode::CycleMissingR, col, name, error);
-    int repeats = 1;
+    w->repeats = 1;
     if (b.has('l')) {
         const double l = b.get('l');
-        if (l < 1 || l != std::floor(l))
+        if (l < 1 || l > kMaxRepeats || l != std::floor(l))
             return fail(ErrorCode::CycleBadL, 'l', {}, error);
-        repeats = static_cast<int>(l);
+        w->repeats = static_cast<int>(l);
     }
     if (!same && !b.has(wc))
         return failAt(ErrorCode::CycleMissingDepth, col, name, error);
-    const double ccWord = b.has(wc) ? lengthWord(wc) : m_cycleCC;
-    double p = m_cycleP, q = m_cycleQ;
+    w->depth = b.has(wc) ? lengthWord(wc) : m_cycleCC;
+    w->dwell = m_cycleP;
+    w->peck = m_cycleQ;
     if (motion == 820 || motion == 890) {
         if (!same && !b.has('p'))
             return failAt(ErrorCode::CycleMissingP, col, name, error);
         if (b.has('p'))
-            p = b.get('p');
+            w->dwell = b.get('p');
     }
     if (motion == 730 || motion == 830) {
         if (!same && !b.has('q'))
             return failAt(ErrorCode::CycleMissingQ, col, name, error);
         if (b.has('q'))
-            q = lengthWord('q');
-        if (q <= 0)
+            w->peck = lengthWord('q');
+        if (w->peck <= 0)
             return fail(ErrorCode::CycleBadQ, b.has('q') ? 'q' : 0, {}, error);
     }
+    return true;
+}
+
+bool Interpreter::cycle(int motion, Error *error)
+{
+    const Block &b = m_block;
+    const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 0;
+    const PlaneAxes ax = planeAxes(m_plane);
+    const char uc = kAxisLetters[ax.u], vc = kAxisLetters[ax.v];
+    CycleWords words;
+    if (!cycleWords(motion, &words, error))
+        return false;
+    const double rWord = words.r, ccWord = words.depth, p = words.dwell, q = words.peck;
+    const int repeats = words.repeats;
 
     const Point4 prog = programPosition();
     // LinuxCNC 2.9: the initial level is remembered over consecutive cycle blocks.

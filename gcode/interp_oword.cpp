@@ -4,6 +4,7 @@
 // expression is evaluated while skipping); loops and calls jump back by byte offset.
 #include "interpreter.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace frezka::gcode {
@@ -72,10 +73,15 @@ bool Interpreter::executeOword(Error *error)
         return !m_frames.empty() && m_frames.back().kind == k && m_frames.back().label == label;
     };
     OKind found = OKind::None;
+    const bool takesArguments = kind == OKind::If || kind == OKind::ElseIf ||
+                                kind == OKind::While || kind == OKind::Repeat ||
+                                kind == OKind::Call || kind == OKind::Return ||
+                                kind == OKind::EndSub;
+    if (!takesArguments && m_block.oArgsPos != m_parser.text().size())
+        return failAt(ErrorCode::OwordWithOtherWords, static_cast<std::uint32_t>(m_block.oArgsPos),
+                      {}, error);
     switch (kind) {
     case OKind::Sub:
-        if (m_block.oArgsPos != m_parser.text().size())
-            return failAt(ErrorCode::OwordWithOtherWords, col, {}, error);
         m_subs[label] = {m_next, m_line};
         return skipTo(label, {OKind::EndSub}, &found, error);
     case OKind::Call:
@@ -83,23 +89,8 @@ bool Interpreter::executeOword(Error *error)
     case OKind::EndSub:
     case OKind::Return:
         return returnFromSub(error);
-    case OKind::If: {
-        double c = 0;
-        if (!owordCondition(&c, error))
-            return false;
-        while (c == 0.0) {
-            if (!skipTo(label, {OKind::ElseIf, OKind::Else, OKind::EndIf}, &found, error))
-                return false;
-            if (found == OKind::EndIf)
-                return true;
-            if (found == OKind::Else)
-                break;
-            if (!owordCondition(&c, error))
-                return false;
-        }
-        m_frames.push_back({FrameKind::If, label, 0, m_line, 0});
-        return true;
-    }
+    case OKind::If:
+        return owordIf(label, error);
     case OKind::ElseIf:
     case OKind::Else:
         if (!topIs(FrameKind::If))
@@ -114,27 +105,8 @@ bool Interpreter::executeOword(Error *error)
     case OKind::Do:
         m_frames.push_back({FrameKind::Do, label, m_next, m_line, 0});
         return true;
-    case OKind::While: {
-        double c = 0;
-        if (!owordCondition(&c, error))
-            return false;
-        if (topIs(FrameKind::Do)) { // the tail of do ... while
-            if (c != 0.0)
-                jump(m_frames.back().offset, m_frames.back().line);
-            else
-                m_frames.pop_back();
-            return true;
-        }
-        const bool again = topIs(FrameKind::While) && m_frames.back().offset == m_lineStart;
-        if (c == 0.0) {
-            if (again)
-                m_frames.pop_back();
-            return skipTo(label, {OKind::EndWhile}, &found, error);
-        }
-        if (!again)
-            m_frames.push_back({FrameKind::While, label, m_lineStart, m_line - 1, 0});
-        return true;
-    }
+    case OKind::While:
+        return owordWhile(label, error);
     case OKind::EndWhile:
         if (!topIs(FrameKind::While))
             return failAt(ErrorCode::OwordUnmatched, col, what, error);
@@ -144,7 +116,7 @@ bool Interpreter::executeOword(Error *error)
         double c = 0;
         if (!owordCondition(&c, error))
             return false;
-        const auto count = static_cast<std::int64_t>(std::floor(c + 0.5));
+        const auto count = static_cast<std::int64_t>(std::floor(std::min(c, 1e15) + 0.5));
         if (count <= 0)
             return skipTo(label, {OKind::EndRepeat}, &found, error);
         m_frames.push_back({FrameKind::Repeat, label, m_next, m_line, count});
@@ -167,19 +139,84 @@ bool Interpreter::executeOword(Error *error)
     return true;
 }
 
+bool Interpreter::owordIf(const std::string &label, Error *error)
+{
+    double c = 0;
+    if (!owordCondition(&c, error))
+        return false;
+    OKind found = OKind::None;
+    while (c == 0.0) {
+        if (!skipTo(label, {OKind::ElseIf, OKind::Else, OKind::EndIf}, &found, error))
+            return false;
+        if (found == OKind::EndIf)
+            return true;
+        if (found == OKind::Else)
+            break;
+        if (!owordCondition(&c, error))
+            return false;
+    }
+    m_frames.push_back({FrameKind::If, label, 0, m_line, 0});
+    return true;
+}
+
+// A while line opens a loop, re-tests it when endwhile jumps back, or closes a do loop.
+bool Interpreter::owordWhile(const std::string &label, Error *error)
+{
+    double c = 0;
+    if (!owordCondition(&c, error))
+        return false;
+    auto topIs = [&](FrameKind k) {
+        return !m_frames.empty() && m_frames.back().kind == k && m_frames.back().label == label;
+    };
+    if (topIs(FrameKind::Do)) {
+        if (c != 0.0)
+            jump(m_frames.back().offset, m_frames.back().line);
+        else
+            m_frames.pop_back();
+        return true;
+    }
+    const bool again = topIs(FrameKind::While) && m_frames.back().offset == m_lineStart;
+    if (c == 0.0) {
+        if (again)
+            m_frames.pop_back();
+        OKind found = OKind::None;
+        return skipTo(label, {OKind::EndWhile}, &found, error);
+    }
+    if (!again)
+        m_frames.push_back({FrameKind::While, label, m_lineStart, m_line - 1, 0});
+    return true;
+}
+
 bool Interpreter::callSub(Error *error)
 {
     const std::string label = m_block.oLabel;
     if (!m_parser.owordArgs(m_block, &m_args, error))
         return false;
-    const auto it = m_subs.find(label);
-    if (it == m_subs.end())
-        return failAt(ErrorCode::SubroutineUndefined, m_block.oColumn, labelText(label), error);
+    const std::uint32_t col = m_block.oColumn;
+    auto it = m_subs.find(label);
+    if (it == m_subs.end()) {
+        // Like rs274ngc, look for the definition further down the file (subroutines are often
+        // written after M2) without executing anything on the way.
+        const std::size_t next = m_next, start = m_lineStart;
+        const std::uint32_t line = m_line;
+        OKind found = OKind::None;
+        Error ignored;
+        const bool defined = skipTo(label, {OKind::Sub}, &found, &ignored);
+        if (defined)
+            it = m_subs.emplace(label, SubDef{m_next, m_line}).first;
+        m_next = next;
+        m_lineStart = start;
+        m_line = line;
+        if (!defined) {
+            m_parser.normalize(m_text.substr(start, next - start), line, &ignored);
+            return failAt(ErrorCode::SubroutineUndefined, col, labelText(label), error);
+        }
+    }
     std::size_t calls = 0;
     for (const Frame &f : m_frames)
         calls += f.kind == FrameKind::Call;
     if (calls >= kMaxCallDepth)
-        return failAt(ErrorCode::CallTooDeep, m_block.oColumn, {}, error);
+        return failAt(ErrorCode::CallTooDeep, col, {}, error);
     m_params.pushScope();
     for (int i = 0; i < Parameters::kArgCount; ++i)
         m_params.setNumbered(i + 1, i < static_cast<int>(m_args.size()) ? m_args[i] : 0.0);

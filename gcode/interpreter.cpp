@@ -7,13 +7,13 @@
 #include <cstring>
 #include <memory>
 
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
 namespace frezka::gcode {
 
 namespace {
-
-constexpr std::uint32_t kAxisBits =
-    (1u << ('x' - 'a')) | (1u << ('y' - 'a')) | (1u << ('z' - 'a')) | (1u << ('a' - 'a'));
-constexpr char kAxisLetters[4] = {'x', 'y', 'z', 'a'};
 
 bool isCycle(int motion)
 {
@@ -35,19 +35,19 @@ Interpreter::Interpreter(Options options)
     m_origin = m_options.workOffsetsMm;
     m_coord = std::clamp(m_options.coordinateSystem, 0, 8);
     m_pos = m_options.startMm;
+    m_prog = {m_pos.x - offset(0), m_pos.y - offset(1), m_pos.z - offset(2), m_pos.a - offset(3)};
 }
 
 Interpreter::~Interpreter() = default;
 
 bool Interpreter::fail(ErrorCode code, char word, std::string detail, Error *error) const
 {
-    return failAt(code, word ? m_block.col(word) : 1, std::move(detail), error);
+    return failAt(code, word ? m_block.col(word) : 0, std::move(detail), error);
 }
 
-bool Interpreter::failAt(ErrorCode code, std::uint32_t column, std::string detail,
-                         Error *error) const
+bool Interpreter::failAt(ErrorCode code, std::uint32_t pos, std::string detail, Error *error) const
 {
-    *error = {code, m_line, column, std::move(detail)};
+    *error = {code, m_line, m_parser.columnAt(pos), std::move(detail)};
     return false;
 }
 
@@ -56,9 +56,17 @@ double Interpreter::offset(int axis) const
     return m_origin[m_coord][axis] + m_g92[axis] + (axis == 2 ? m_toolZ : 0.0);
 }
 
-Point4 Interpreter::programPosition() const
+std::array<double, 4> Interpreter::offsets() const
 {
-    return {m_pos.x - offset(0), m_pos.y - offset(1), m_pos.z - offset(2), m_pos.a - offset(3)};
+    return {offset(0), offset(1), offset(2), offset(3)};
+}
+
+void Interpreter::shiftProgram(const std::array<double, 4> &oldOffsets)
+{
+    m_prog.x += oldOffsets[0] - offset(0);
+    m_prog.y += oldOffsets[1] - offset(1);
+    m_prog.z += oldOffsets[2] - offset(2);
+    m_prog.a += oldOffsets[3] - offset(3);
 }
 
 // ---- reading -------------------------------------------------------------------------------
@@ -84,8 +92,10 @@ void Interpreter::jump(std::size_t offset, std::uint32_t lineBefore)
     m_line = lineBefore;
 }
 
-Result Interpreter::run(std::string_view text)
+Result Interpreter::run(std::string_view text, const std::function<void(std::size_t)> &consumed)
 {
+    constexpr std::size_t kReleaseStep = 1u << 20;
+    std::size_t releaseMark = kReleaseStep;
     m_text = text;
     m_next = 0;
     m_line = 0;
@@ -102,6 +112,10 @@ Result Interpreter::run(std::string_view text)
     std::string_view raw;
     Error error;
     while (!m_ended && nextLine(&raw)) {
+        if (m_next >= releaseMark && consumed) {
+            consumed(releaseMark - kReleaseStep);
+            releaseMark += kReleaseStep;
+        }
         if (m_options.progress && (m_line & 0xFFFF) == 0)
             m_options.progress(m_next, text.size());
         if (++m_executed > m_options.maxBlocks) {
@@ -123,9 +137,10 @@ Result Interpreter::run(std::string_view text)
             result.errors.push_back(
                 {ErrorCode::OwordNotClosed, f.line + 1, 1, std::string(what) + " " + f.label});
         } else if (m_percentStarted) {
-            result.errors.push_back({ErrorCode::FileEndedWithoutPercent, m_line, 1, {}});
+            result.errors.push_back(
+                {ErrorCode::FileEndedWithoutPercent, std::max(m_line, 1u), 1, {}});
         } else {
-            result.errors.push_back({ErrorCode::FileEndedWithoutEnd, m_line, 1, {}});
+            result.errors.push_back({ErrorCode::FileEndedWithoutEnd, std::max(m_line, 1u), 1, {}});
         }
     }
     result.linesRead = m_line;
@@ -147,8 +162,7 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
         } else if (m_percentStarted) {
             m_ended = true;
         } else {
-            return failAt(ErrorCode::BadCharacter, static_cast<std::uint32_t>(raw.find('%') + 1),
-                          "%", error);
+            return failAt(ErrorCode::BadCharacter, 0, "%", error);
         }
         return true;
     }
@@ -281,332 +295,6 @@ bool Interpreter::executeBlock(Error *error)
     return executeStops();
 }
 
-void Interpreter::event(EventKind kind, double value, double p, double q)
-{
-    m_toolpath.appendEvent({kind, value, p, q}, m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
-}
-
-bool Interpreter::executeModes(Error *error)
-{
-    const Block &b = m_block;
-    if (b.hasG(kGFeedMode))
-        m_inverseTime = b.g[kGFeedMode] == 930;
-    if (b.has('f')) {
-        if (b.get('f') < 0)
-            return fail(ErrorCode::NegativeValue, 'f', "F", error);
-        m_feed = b.get('f');
-    }
-    if (b.has('s')) {
-        if (b.get('s') < 0)
-            return fail(ErrorCode::NegativeValue, 's', "S", error);
-        const bool changed = b.get('s') != m_speed;
-        m_speed = b.get('s');
-        const bool startsSpindle = b.hasM(kMSpindle) && b.m[kMSpindle] != 5;
-        if (changed && m_spindle != 0 && !startsSpindle)
-            event(EventKind::SpindleSpeed, m_speed);
-    }
-    if (b.has('t')) {
-        const double t = b.get('t');
-        if (t < 0)
-            return fail(ErrorCode::NegativeValue, 't', "T", error);
-        if (t != std::floor(t))
-            return fail(ErrorCode::NonIntegerValue, 't', "T", error);
-        m_selectedTool = static_cast<int>(t);
-    }
-    if (b.hasM(kMToolChange)) {
-        m_tool = m_selectedTool;
-        event(EventKind::ToolChange, m_tool);
-    }
-    if (b.hasM(kMSpindle)) {
-        const int m = b.m[kMSpindle];
-        m_spindle = m == 3 ? 1 : m == 4 ? -1 : 0;
-        event(m == 3   ? EventKind::SpindleCw
-              : m == 4 ? EventKind::SpindleCcw
-                       : EventKind::SpindleOff,
-              m == 5 ? 0 : m_speed);
-    }
-    if (b.hasM(kMCoolant)) {
-        const int m = b.m[kMCoolant];
-        if (m == 7)
-            m_mist = true;
-        else if (m == 8)
-            m_flood = true;
-        else
-            m_mist = m_flood = false;
-        event(m == 7   ? EventKind::CoolantMist
-              : m == 8 ? EventKind::CoolantFlood
-                       : EventKind::CoolantOff);
-    }
-    if (b.hasG(kGNonModal) && b.g[kGNonModal] == 40) {
-        if (b.get('p') < 0)
-            return fail(ErrorCode::NegativeValue, 'p', "P", error);
-        m_toolpath.appendEvent({EventKind::Dwell, b.get('p'), 0, 0},
-                               m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
-    }
-    if (b.hasG(kGPlane))
-        m_plane = b.g[kGPlane];
-    if (b.hasG(kGUnits))
-        m_metric = b.g[kGUnits] == 210;
-    if (b.hasG(kGToolLength)) {
-        if (b.g[kGToolLength] == 490) {
-            m_toolZ = 0;
-        } else {
-            int tool = m_tool;
-            if (b.has('h')) {
-                const double h = b.get('h');
-                if (h < 0 || h != std::floor(h))
-                    return fail(ErrorCode::NonIntegerValue, 'h', "H", error);
-                tool = static_cast<int>(h);
-            }
-            const auto it = m_options.toolLengthMm.find(tool);
-            m_toolZ = it == m_options.toolLengthMm.end() ? 0.0 : it->second;
-        }
-    }
-    if (b.hasG(kGCoordSystem)) {
-        const int g = b.g[kGCoordSystem];
-        m_coord = g < 590 ? (g - 540) / 10 : 5 + (g - 590);
-    }
-    if (b.hasG(kGPathControl)) {
-        const int g = b.g[kGPathControl];
-        m_pathMode = g == 610 ? 0 : g == 611 ? 1 : 2;
-        m_pathP = g == 640 && b.has('p') ? lengthWord('p') : 0;
-        m_pathQ = g == 640 && b.has('q') ? lengthWord('q') : 0;
-        event(EventKind::PathMode, m_pathMode, m_pathP, m_pathQ);
-    }
-    if (b.hasG(kGDistance))
-        m_absolute = b.g[kGDistance] == 900;
-    if (b.hasG(kGArcDistance))
-        m_arcAbsolute = b.g[kGArcDistance] == 901;
-    if (b.hasG(kGRetract))
-        m_retractToR = b.g[kGRetract] == 990;
-    return true;
-}
-
-bool Interpreter::executeNonModal(Error *error)
-{
-    if (!m_block.hasG(kGNonModal))
-        return true;
-    const int g = m_block.g[kGNonModal];
-    switch (g) {
-    case 100:
-        return setOffsets(error);
-    case 280:
-    case 300:
-        return homeMove(g == 300, error);
-    case 281:
-        m_g28 = {m_pos.x, m_pos.y, m_pos.z, m_pos.a};
-        return true;
-    case 301:
-        m_g30 = {m_pos.x, m_pos.y, m_pos.z, m_pos.a};
-        return true;
-    case 920: {
-        double *p = &m_pos.x;
-        for (int i = 0; i < 4; ++i) {
-            const char c = kAxisLetters[i];
-            if (!m_block.has(c))
-                continue;
-            const double v = i < 3 ? lengthWord(c) : m_block.get(c);
-            m_g92[i] = p[i] - m_origin[m_coord][i] - (i == 2 ? m_toolZ : 0.0) - v;
-        }
-        m_g92Saved = m_g92;
-        m_g92Enabled = true;
-        return true;
-    }
-    case 921:
-        m_g92 = {};
-        m_g92Saved = {};
-        m_g92Enabled = false;
-        return true;
-    case 922:
-        m_g92 = {};
-        m_g92Enabled = false;
-        return true;
-    case 923:
-        m_g92 = m_g92Saved;
-        m_g92Enabled = true;
-        return true;
-    default: // G4 (executed with the modes), G53 (with the motion)
-        return true;
-    }
-}
-
-bool Interpreter::setOffsets(Error *error)
-{
-    const Block &b = m_block;
-    const std::uint32_t col = b.gColumn[kGNonModal];
-    if (!b.has('l'))
-        return failAt(ErrorCode::G10BadL, col, "without L", error);
-    const double l = b.get('l');
-    if (l != 2 && l != 20)
-        return fail(ErrorCode::G10BadL, 'l', "L" + std::to_string(static_cast<int>(l)), error);
-    if (!b.has('p'))
-        return failAt(ErrorCode::G10BadP, col, "none", error);
-    const double p = b.get('p');
-    if (p < 0 || p > 9 || p != std::floor(p))
-        return fail(ErrorCode::G10BadP, 'p', std::to_string(p), error);
-    const int system = p == 0 ? m_coord : static_cast<int>(p) - 1;
-    const double *pos = &m_pos.x;
-    for (int i = 0; i < 4; ++i) {
-        const char c = kAxisLetters[i];
-        if (!b.has(c))
-            continue;
-        const double v = i < 3 ? lengthWord(c) : b.get(c);
-        if (l == 2)
-            m_origin[system][i] = v;
-        else
-            m_origin[system][i] = pos[i] - m_g92[i] - (i == 2 ? m_toolZ : 0.0) - v;
-    }
-    return true;
-}
-
-bool Interpreter::homeMove(bool g30, Error *error)
-{
-    (void)error;
-    // Rapid to the intermediate point (program coordinates, G90/G91 honoured), then to the
-    // stored position: all axes when none is given, else only the given ones.
-    const Point4 mid = targetOf(false);
-    m_toolpath.appendRapid(mid, m_feed * unit(), m_line);
-    m_pos = mid;
-    const std::array<double, 4> &home = g30 ? m_g30 : m_g28;
-    const bool all = !(m_block.letters & kAxisBits);
-    double *p = &m_pos.x;
-    for (int i = 0; i < 4; ++i) {
-        if (all || m_block.has(kAxisLetters[i]))
-            p[i] = home[i];
-    }
-    m_toolpath.appendRapid(m_pos, m_feed * unit(), m_line);
-    return true;
-}
-
-bool Interpreter::executeStops()
-{
-    if (!m_block.hasM(kMStop))
-        return true;
-    const int m = m_block.m[kMStop];
-    if (m == 0) {
-        event(EventKind::Pause);
-    } else if (m == 1) {
-        event(EventKind::OptionalPause);
-    } else {
-        event(EventKind::ProgramEnd);
-        m_ended = true;
-    }
-    return true;
-}
-
-// ---- system parameters ---------------------------------------------------------------------
-
-bool Interpreter::systemNumbered(int index, double *value) const
-{
-    const double u = unit();
-    auto length = [&](double mm, int axis) { return axis < 3 ? mm / u : mm; };
-    auto axisOf = [](int i) { return i; }; // 0..3 = x y z a; b c u v w read as 0
-    const Point4 prog = programPosition();
-    const double progv[4] = {prog.x, prog.y, prog.z, prog.a};
-    const double probe[4] = {m_probe.x, m_probe.y, m_probe.z, m_probe.a};
-    if (index >= 5061 && index <= 5069) {
-        const int i = index - 5061;
-        *value = i < 4 ? length(probe[i], i) : 0;
-        return true;
-    }
-    if (index == 5070) {
-        *value = m_probed ? 1 : 0;
-        return true;
-    }
-    if ((index >= 5161 && index <= 5169) || (index >= 5181 && index <= 5189)) {
-        const int i = axisOf(index >= 5181 ? index - 5181 : index - 5161);
-        const auto &home = index >= 5181 ? m_g30 : m_g28;
-        *value = i < 4 ? length(home[i], i) : 0;
-        return true;
-    }
-    if (index == 5210) {
-        *value = m_g92Enabled ? 1 : 0;
-        return true;
-    }
-    if (index >= 5211 && index <= 5219) {
-        const int i = index - 5211;
-        *value = i < 4 ? length(m_g92Saved[i], i) : 0;
-        return true;
-    }
-    if (index == 5220) {
-        *value = m_coord + 1;
-        return true;
-    }
-    if (index >= 5221 && index <= 5390) {
-        const int system = (index - 5221) / 20;
-        const int i = (index - 5221) % 20;
-        *value = i < 4 ? length(m_origin[system][i], i) : 0;
-        return true;
-    }
-    if (index == 5400) {
-        *value = m_tool;
-        return true;
-    }
-    if (index >= 5401 && index <= 5409) {
-        *value = index == 5403 ? m_toolZ / u : 0;
-        return true;
-    }
-    if (index >= 5420 && index <= 5428) {
-        const int i = index - 5420;
-        *value = i < 4 ? length(progv[i], i) : 0;
-        return true;
-    }
-    return false;
-}
-
-bool Interpreter::systemNamed(std::string_view name, double *value) const
-{
-    const double u = unit();
-    const Point4 prog = programPosition();
-    struct Entry
-    {
-        const char *name;
-        double value;
-    };
-    const Entry entries[] = {
-        {"_x", prog.x / u},
-        {"_y", prog.y / u},
-        {"_z", prog.z / u},
-        {"_a", prog.a},
-        {"_b", 0},
-        {"_c", 0},
-        {"_u", 0},
-        {"_v", 0},
-        {"_w", 0},
-        {"_line", static_cast<double>(m_line)},
-        {"_motion_mode", m_motion / 10.0},
-        {"_plane", static_cast<double>(m_plane)},
-        {"_metric", m_metric ? 1.0 : 0.0},
-        {"_imperial", m_metric ? 0.0 : 1.0},
-        {"_absolute", m_absolute ? 1.0 : 0.0},
-        {"_incremental", m_absolute ? 0.0 : 1.0},
-        {"_ijk_absolute_mode", m_arcAbsolute ? 1.0 : 0.0},
-        {"_inverse_time", m_inverseTime ? 1.0 : 0.0},
-        {"_units_per_minute", m_inverseTime ? 0.0 : 1.0},
-        {"_feed", m_feed},
-        {"_rpm", m_speed},
-        {"_current_tool", static_cast<double>(m_tool)},
-        {"_selected_tool", static_cast<double>(m_selectedTool)},
-        {"_coord_system", m_coord < 6 ? 540.0 + 10 * m_coord : 590.0 + (m_coord - 5)},
-        {"_spindle_on", m_spindle != 0 ? 1.0 : 0.0},
-        {"_spindle_cw", m_spindle == 1 ? 1.0 : 0.0},
-        {"_mist", m_mist ? 1.0 : 0.0},
-        {"_flood", m_flood ? 1.0 : 0.0},
-        {"_retract_r_plane", m_retractToR ? 1.0 : 0.0},
-        {"_retract_old_z", m_retractToR ? 0.0 : 1.0},
-        {"_value", m_value},
-        {"_value_returned", m_valueReturned ? 1.0 : 0.0},
-        {"_task", 0.0},
-    };
-    for (const Entry &e : entries) {
-        if (name == e.name) {
-            *value = e.value;
-            return true;
-        }
-    }
-    return false;
-}
-
 // ---- entry points --------------------------------------------------------------------------
 
 Result interpretText(std::string_view text, const Options &options)
@@ -627,8 +315,21 @@ Result interpretFile(const std::string &path, const Options &options)
     if (size == 0)
         return interpretText({}, options);
     if (uchar *data = file.map(0, size)) {
-        Result r = interpretText(
-            {reinterpret_cast<const char *>(data), static_cast<std::size_t>(size)}, options);
+        Interpreter interpreter(options);
+        // Pages already read are dropped from this process's memory as the interpreter moves
+        // on (they stay in the page cache; a loop jumping back faults them in again).
+        const auto release = [data](std::size_t upTo) {
+#ifdef __linux__
+            const std::size_t page = 4096;
+            if (upTo >= page)
+                ::madvise(data, upTo / page * page, MADV_DONTNEED);
+#else
+            (void)data;
+            (void)upTo;
+#endif
+        };
+        Result r = interpreter.run(
+            {reinterpret_cast<const char *>(data), static_cast<std::size_t>(size)}, release);
         file.unmap(data);
         return r;
     }

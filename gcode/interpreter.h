@@ -28,6 +28,10 @@
 
 namespace frezka::gcode {
 
+inline constexpr char kAxisLetters[4] = {'x', 'y', 'z', 'a'}; // Block letters of the axes
+inline constexpr std::uint32_t kAxisBits =
+    (1u << ('x' - 'a')) | (1u << ('y' - 'a')) | (1u << ('z' - 'a')) | (1u << ('a' - 'a'));
+
 struct Options
 {
     bool collectAllErrors = false; // check mode: report every bad block and go on
@@ -59,8 +63,10 @@ public:
     explicit Interpreter(Options options = {});
     ~Interpreter() override;
 
-    // Interprets a whole program. The text must outlive the call only.
-    Result run(std::string_view text);
+    // Interprets a whole program. The text must outlive the call only. consumed, when set, is
+    // called now and then with an offset below which the text has been read (loops may still
+    // jump back there): a memory-mapped file can drop those pages from memory.
+    Result run(std::string_view text, const std::function<void(std::size_t)> &consumed = {});
 
 private:
     enum class FrameKind : std::uint8_t { Call, If, While, Do, Repeat };
@@ -88,7 +94,8 @@ private:
     bool executeBlock(Error *error);
     bool checkWords(int motion, Error *error);
     int motionToBe(Error *error);
-    bool executeModes(Error *error);
+    bool executeModes(Error *error);       // G93/G94 F S T M6 M3-M5 M7-M9 G4
+    bool executeModalGroups(Error *error); // plane .. retract mode
     bool executeNonModal(Error *error);
     bool executeStops();
     bool setOffsets(Error *error);
@@ -96,10 +103,26 @@ private:
 
     // Motion (interp_motion.cpp).
     bool executeMotion(int motion, Error *error);
-    Point4 targetOf(bool machineCoords) const;
-    bool straight(int motion, const Point4 &end, Error *error);
-    bool arc(int motion, const Point4 &end, Error *error);
-    bool probe(int motion, const Point4 &end, Error *error);
+    struct Target
+    {
+        Point4 machine; // mm, every offset applied
+        Point4 prog;    // program coordinates, mm
+    };
+    Target targetOf(bool machineCoords) const;
+    void moveTo(const Target &target);
+    bool straight(int motion, const Target &end, Error *error);
+    bool arc(int motion, const Target &end, Error *error);
+    bool arcCentreIjk(double su, double sv, double eu, double ev, std::uint32_t col, double *cu,
+                      double *cv, Error *error) const;
+    bool arcCentreR(int motion, double su, double sv, double eu, double ev, double *cu, double *cv,
+                    Error *error) const;
+    bool probe(int motion, const Target &end, Error *error);
+    struct CycleWords
+    {
+        double r = 0, depth = 0, dwell = 0, peck = 0; // mm (depth: the normal axis word), s
+        int repeats = 1;
+    };
+    bool cycleWords(int motion, CycleWords *words, Error *error) const;
     bool cycle(int motion, Error *error);
     void cycleTraverse(int plane, double aa, double bb, double cc);
     void cycleFeed(int plane, double aa, double bb, double cc);
@@ -113,17 +136,24 @@ private:
     bool skipTo(const std::string &label, std::initializer_list<OKind> kinds, OKind *found,
                 Error *error);
     bool owordCondition(double *value, Error *error);
+    bool owordIf(const std::string &label, Error *error);
+    bool owordWhile(const std::string &label, Error *error);
     bool callSub(Error *error);
     bool returnFromSub(Error *error);
     bool loopJump(bool isBreak, Error *error);
 
     // Coordinates.
     double offset(int axis) const;
-    Point4 programPosition() const;
+    Point4 programPosition() const { return m_prog; }
+    std::array<double, 4> offsets() const;
+    // After an offset changed: the program position moves by the change (rs274ngc's
+    // current = current + old offset - new offset), the machine position stays.
+    void shiftProgram(const std::array<double, 4> &oldOffsets);
     double unit() const { return m_metric ? 1.0 : 25.4; }
     double lengthWord(char c) const { return m_block.get(c) * unit(); }
     bool fail(ErrorCode code, char word, std::string detail, Error *error) const;
-    bool failAt(ErrorCode code, std::uint32_t column, std::string detail, Error *error) const;
+    // pos: offset into the normalized line (Block's word positions), 0 for the block start.
+    bool failAt(ErrorCode code, std::uint32_t pos, std::string detail, Error *error) const;
 
     // SystemParameters
     bool systemNumbered(int index, double *value) const override;
@@ -154,7 +184,10 @@ private:
     bool m_valueReturned = false;
 
     // Modal state (LinuxCNC defaults: G17 G21 G40 G49 G54 G64 G80 G90 G94 G99 G91.1).
-    Point4 m_pos;                                    // machine position, mm
+    Point4 m_pos; // machine position, mm
+    // Program position, kept like rs274ngc's current_x.. (not recomputed from m_pos, so values
+    // the program compares, e.g. a cycle's clearance height, stay exactly as programmed).
+    Point4 m_prog;
     std::array<std::array<double, 4>, 9> m_origin{}; // G54..G59.3 offsets, mm
     std::array<double, 4> m_g92{};                   // active G92 offset, mm
     std::array<double, 4> m_g92Saved{};              // #5211.. (kept by G92.2, restored by G92.3)

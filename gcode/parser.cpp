@@ -216,14 +216,33 @@ Parser::Parser(Parameters &params)
     : m_params(params)
 {
     m_text.reserve(256);
-    m_columns.reserve(256);
 }
 
 std::uint32_t Parser::columnAt(std::size_t pos) const
 {
-    if (pos < m_columns.size())
-        return m_columns[pos];
-    return m_columns.empty() ? 1 : m_columns.back() + 1;
+    // Walk the source line with normalize()'s rules until the pos-th kept character.
+    const std::size_t target = pos + (m_blockDelete ? 1 : 0);
+    std::size_t kept = 0;
+    std::size_t last = 0;
+    const char *s = m_raw.data();
+    const std::size_t n = m_raw.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const char c = s[i];
+        if (c == ' ' || c == '\t' || c == '\r')
+            continue;
+        if (c == ';')
+            break;
+        if (c == '(') {
+            while (i < n && s[i] != ')')
+                ++i;
+            continue;
+        }
+        if (kept == target)
+            return static_cast<std::uint32_t>(i + 1);
+        ++kept;
+        last = i + 1;
+    }
+    return static_cast<std::uint32_t>(last + 1);
 }
 
 bool Parser::fail(ErrorCode code, std::size_t pos, std::string detail, Error *error) const
@@ -238,15 +257,18 @@ bool Parser::fail(ErrorCode code, std::size_t pos, std::string detail, Error *er
 bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error)
 {
     m_line = line;
-    m_text.clear();
-    m_columns.clear();
+    m_raw = raw;
     m_blockDelete = false;
     if (raw.size() > 65535) {
+        m_text.clear();
         *error = {ErrorCode::LineTooLong, line, 1, std::to_string(raw.size())};
         return false;
     }
     const char *s = raw.data();
     const std::size_t n = raw.size();
+    m_text.resize(n);
+    char *out = m_text.data();
+    char *const begin = out;
     for (std::size_t i = 0; i < n; ++i) {
         const char c = s[i];
         if (c == ' ' || c == '\t' || c == '\r')
@@ -257,25 +279,26 @@ bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error)
             const std::size_t open = i;
             for (++i; i < n && s[i] != ')'; ++i) {
                 if (s[i] == '(') {
+                    m_text.clear();
                     *error = {
                         ErrorCode::NestedComment, line, static_cast<std::uint32_t>(i + 1), {}};
                     return false;
                 }
             }
             if (i >= n) {
+                m_text.clear();
                 *error = {
                     ErrorCode::UnclosedComment, line, static_cast<std::uint32_t>(open + 1), {}};
                 return false;
             }
             continue;
         }
-        m_text.push_back((c >= 'A' && c <= 'Z') ? static_cast<char>(c + 32) : c);
-        m_columns.push_back(static_cast<std::uint32_t>(i + 1));
+        *out++ = (c >= 'A' && c <= 'Z') ? static_cast<char>(c + 32) : c;
     }
+    m_text.resize(static_cast<std::size_t>(out - begin));
     if (!m_text.empty() && m_text[0] == '/') {
         m_blockDelete = true;
         m_text.erase(0, 1);
-        m_columns.erase(m_columns.begin());
     }
     return true;
 }
@@ -339,9 +362,11 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
                 }
                 return false;
             }
+            if (!(std::fabs(v) < 1e12))
+                return fail(ErrorCode::ValueOutOfRange, at, std::string(1, c - 32), error);
             block.letters |= bit;
             block.value[c - 'a'] = v;
-            block.column[c - 'a'] = columnAt(at);
+            block.column[c - 'a'] = static_cast<std::uint32_t>(at);
         } else {
             return fail(ErrorCode::BadCharacter, m_pos, std::string(1, c), error);
         }
@@ -360,6 +385,8 @@ bool Parser::readGCode(Block &block, Error *error)
         return false;
     }
     const double scaled = v * 10.0;
+    if (!(scaled > -0.5 && scaled < 9999.5))
+        return fail(ErrorCode::UnknownGCode, at, "G" + std::to_string(v), error);
     int code = static_cast<int>(std::floor(scaled));
     if (scaled - code > 0.999)
         code = static_cast<int>(std::ceil(scaled));
@@ -378,7 +405,7 @@ bool Parser::readGCode(Block &block, Error *error)
         return fail(ErrorCode::ModalGroupConflict, at, gName(code), error);
     block.gMask |= 1u << group;
     block.g[group] = static_cast<std::int16_t>(code);
-    block.gColumn[group] = columnAt(at);
+    block.gColumn[group] = static_cast<std::uint32_t>(at);
     return true;
 }
 
@@ -392,6 +419,8 @@ bool Parser::readMCode(Block &block, Error *error)
             error->detail = "M";
         return false;
     }
+    if (!(v >= 0 && v <= 99999))
+        return fail(ErrorCode::UnknownMCode, at, "M" + std::to_string(v), error);
     const int code = static_cast<int>(v);
     const std::string name = "M" + std::to_string(code);
     if (code < 0)
@@ -407,7 +436,7 @@ bool Parser::readMCode(Block &block, Error *error)
         return fail(ErrorCode::ModalGroupConflict, at, name, error);
     block.mMask |= 1u << group;
     block.m[group] = static_cast<std::int16_t>(code);
-    block.mColumn[group] = columnAt(at);
+    block.mColumn[group] = static_cast<std::uint32_t>(at);
     return true;
 }
 
@@ -437,7 +466,7 @@ bool Parser::readOwordHead(std::size_t *pos, OKind *kind, std::string *label, st
                            Error *error)
 {
     const std::size_t at = *pos;
-    *col = columnAt(at);
+    *col = static_cast<std::uint32_t>(at);
     std::size_t p = at + 1;
     label->clear();
     if (p < m_text.size() && m_text[p] == '<') {
@@ -458,18 +487,27 @@ bool Parser::readOwordHead(std::size_t *pos, OKind *kind, std::string *label, st
             ++first;
         label->assign(m_text, first, p - first);
     }
-    std::size_t word = p;
-    while (p < m_text.size() && m_text[p] >= 'a' && m_text[p] <= 'z')
-        ++p;
-    const std::string_view keyword(m_text.data() + word, p - word);
+    // The longest keyword the text starts with: spaces are gone, so "o1endifg0x1" must read
+    // as endif followed by other words (an error reported by the caller).
+    const std::size_t word = p;
+    const std::string_view rest = std::string_view(m_text).substr(p);
     *kind = OKind::None;
+    std::size_t best = 0;
     for (int k = 1; k < static_cast<int>(std::size(kOkindNames)); ++k) {
-        if (keyword == kOkindNames[k])
+        const std::string_view name = kOkindNames[k];
+        if (name.size() > best && rest.substr(0, name.size()) == name) {
             *kind = static_cast<OKind>(k);
+            best = name.size();
+        }
     }
-    if (*kind == OKind::None)
+    if (*kind == OKind::None) {
+        std::size_t end = p;
+        while (end < m_text.size() && m_text[end] >= 'a' && m_text[end] <= 'z')
+            ++end;
         return fail(ErrorCode::OwordUnknownKeyword, word,
-                    keyword.empty() ? std::string("(none)") : std::string(keyword), error);
+                    end == p ? std::string("(none)") : std::string(m_text, p, end - p), error);
+    }
+    p += best;
     *pos = p;
     return true;
 }

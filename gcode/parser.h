@@ -76,7 +76,9 @@ struct Assignment
 
 struct Block
 {
-    // Letter words other than G, M, N, O: bit (c - 'a') set when present.
+    // Letter words other than G, M, N, O: bit (c - 'a') set when present. Word positions
+    // (column[], gColumn[], mColumn[], oColumn) are offsets into the normalized line;
+    // Parser::columnAt() turns them into source columns when an error is reported.
     std::uint32_t letters = 0;
     double value[26];
     std::uint32_t column[26];
@@ -125,10 +127,11 @@ public:
     bool owordArgs(const Block &block, std::vector<double> *args, Error *error);
 
     std::string_view text() const { return m_text; }
+    // 1-based source column of an offset into the normalized line (computed only for errors).
+    std::uint32_t columnAt(std::size_t pos) const;
 
 private:
     bool fail(ErrorCode code, std::size_t pos, std::string detail, Error *error) const;
-    std::uint32_t columnAt(std::size_t pos) const;
 
     bool readOword(Block &block, Error *error);
     bool readOwordHead(std::size_t *pos, OKind *kind, std::string *label, std::uint32_t *col,
@@ -154,7 +157,7 @@ private:
 
     Parameters &m_params;
     std::string m_text;
-    std::vector<std::uint32_t> m_columns;
+    std::string_view m_raw; // the source line of m_text
     std::uint32_t m_line = 0;
     std::size_t m_pos = 0;
     bool m_blockDelete = false;

@@ -49,7 +49,18 @@ void Toolpath::appendFeed(const Point4 &end, double feedMmPerMin, std::uint32_t 
 void Toolpath::appendArc(const Point4 &end, const ArcInfo &arc, double feedMmPerMin,
                          std::uint32_t line)
 {
-    m_arcs.push_back(arc);
+    const Point4 &c = arc.centre;
+    switch (arc.plane) {
+    case Plane::XY:
+        m_arcs.push_back({c.x, c.y, arc.turns, arc.plane});
+        break;
+    case Plane::XZ:
+        m_arcs.push_back({c.z, c.x, arc.turns, arc.plane});
+        break;
+    case Plane::YZ:
+        m_arcs.push_back({c.y, c.z, arc.turns, arc.plane});
+        break;
+    }
     push(MotionKind::Arc, end, feedMmPerMin, line, static_cast<std::uint32_t>(m_arcs.size() - 1));
 }
 
@@ -72,7 +83,31 @@ std::size_t Toolpath::memoryBytes() const
            (m_x.capacity() + m_y.capacity() + m_z.capacity() + m_a.capacity() + m_feed.capacity()) *
                sizeof(double) +
            (m_line.capacity() + m_aux.capacity()) * sizeof(std::uint32_t) +
-           m_arcs.capacity() * sizeof(ArcInfo) + m_events.capacity() * sizeof(Event);
+           m_arcs.capacity() * sizeof(StoredArc) + m_events.capacity() * sizeof(Event);
+}
+
+ArcInfo Toolpath::arc(std::size_t i) const
+{
+    const StoredArc &s = m_arcs[m_aux[i]];
+    ArcInfo arc;
+    arc.centre = start(i);
+    arc.plane = s.plane;
+    arc.turns = s.turns;
+    switch (s.plane) {
+    case Plane::XY:
+        arc.centre.x = s.u;
+        arc.centre.y = s.v;
+        break;
+    case Plane::XZ:
+        arc.centre.z = s.u;
+        arc.centre.x = s.v;
+        break;
+    case Plane::YZ:
+        arc.centre.y = s.u;
+        arc.centre.z = s.v;
+        break;
+    }
+    return arc;
 }
 
 namespace {
@@ -130,10 +165,13 @@ std::vector<Point4> chordArc(const Point4 &start, const Point4 &end, const ArcIn
     sweep += kTwoPi * (std::abs(arc.turns) - 1);
 
     // Largest chord angle whose sagitta r(1 - cos(theta/2)) stays within the tolerance.
+    // At most kMaxPoints points: an arc needing more (a radius of kilometres) is not real.
+    constexpr double kMaxPoints = 1e7;
     std::size_t n = 1;
-    if (radius > toleranceMm && toleranceMm > 0) {
+    if (radius > toleranceMm && toleranceMm > 0 && std::isfinite(sweep)) {
         const double maxStep = 2 * std::acos(1 - toleranceMm / radius);
-        n = static_cast<std::size_t>(std::max(1.0, std::ceil(sweep / maxStep)));
+        const double count = maxStep > 0 ? std::ceil(sweep / maxStep) : kMaxPoints;
+        n = static_cast<std::size_t>(std::clamp(count, 1.0, kMaxPoints));
     }
     // The end radius may differ slightly from the start radius (within the interpreter's check):
     // blend the radius so the last point lands exactly on the programmed end.

@@ -92,8 +92,9 @@ public:
     std::uint32_t line(std::size_t i) const { return m_line[i]; }
     bool isMotion(std::size_t i) const { return m_kind[i] <= MotionKind::Probe; }
 
-    // Only for kind(i) == Arc / Probe / Dwell or Event.
-    const ArcInfo &arc(std::size_t i) const { return m_arcs[m_aux[i]]; }
+    // Only for kind(i) == Arc / Probe / Dwell or Event. The arc's centre is rebuilt from the
+    // stored in-plane coordinates; its normal coordinate and A are the start point's.
+    ArcInfo arc(std::size_t i) const;
     ProbeKind probe(std::size_t i) const { return static_cast<ProbeKind>(m_aux[i]); }
     const Event &event(std::size_t i) const { return m_events[m_aux[i]]; }
 
@@ -121,7 +122,14 @@ private:
     std::vector<double> m_feed;
     std::vector<std::uint32_t> m_line;
     std::vector<std::uint32_t> m_aux;
-    std::vector<ArcInfo> m_arcs;
+    struct StoredArc // 24 bytes instead of ArcInfo's 40
+    {
+        double u = 0, v = 0; // centre in the plane's (u, v) coordinates
+        std::int32_t turns = 1;
+        Plane plane = Plane::XY;
+        friend bool operator==(const StoredArc &, const StoredArc &) = default;
+    };
+    std::vector<StoredArc> m_arcs;
     std::vector<Event> m_events;
 };
 

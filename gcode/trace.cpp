@@ -4,59 +4,76 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <vector>
 
 namespace frezka::gcode {
 
-void appendFixed4(std::string &out, double value)
-{
-    const double scaled = std::round(value * 10000.0);
-    if (!(std::fabs(scaled) < 9.0e15)) { // NaN, inf or huge: printf handles them
-        char buf[64];
-        const int n = std::snprintf(buf, sizeof buf, "%.4f", value);
-        out.append(buf, static_cast<std::size_t>(n));
-        return;
-    }
-    auto n = static_cast<long long>(scaled);
-    char buf[32];
-    char *end = buf + sizeof buf;
-    char *p = end;
-    const bool negative = n < 0;
-    unsigned long long u =
-        negative ? static_cast<unsigned long long>(-n) : static_cast<unsigned long long>(n);
-    for (int i = 0; i < 4; ++i) {
-        *--p = static_cast<char>('0' + u % 10);
-        u /= 10;
-    }
-    *--p = '.';
-    do {
-        *--p = static_cast<char>('0' + u % 10);
-        u /= 10;
-    } while (u);
-    if (negative)
-        *--p = '-';
-    out.append(p, static_cast<std::size_t>(end - p));
-}
-
 namespace {
 
-void appendUInt(std::string &out, std::uint64_t v)
+constexpr std::size_t kMaxEntryChars = 512; // bound of one JSON object (11 numbers at most)
+
+// Writes v with 4 decimals (half away from zero) at p; JSON has no NaN/inf: null.
+char *writeFixed4(char *p, double value)
 {
-    char buf[24];
-    char *end = buf + sizeof buf;
-    char *p = end;
+    const double scaled = std::round(value * 10000.0);
+    if (!(std::fabs(scaled) < 9.0e15)) {
+        if (std::isnan(value) || std::isinf(value)) {
+            std::memcpy(p, "null", 4);
+            return p + 4;
+        }
+        return p + std::snprintf(p, 32, "%.4e", value);
+    }
+    auto n = static_cast<long long>(scaled);
+    if (n < 0) {
+        *p++ = '-';
+        n = -n;
+    }
+    auto u = static_cast<unsigned long long>(n);
+    // Digits before the point (at least one), written right to left in place.
+    unsigned long long whole = u / 10000;
+    int len = 1;
+    for (unsigned long long t = whole; t >= 10; t /= 10)
+        ++len;
+    char *end = p + len + 5;
+    char *d = end;
+    unsigned frac = static_cast<unsigned>(u % 10000);
+    for (int i = 0; i < 4; ++i) {
+        *--d = static_cast<char>('0' + frac % 10);
+        frac /= 10;
+    }
+    *--d = '.';
     do {
-        *--p = static_cast<char>('0' + v % 10);
-        v /= 10;
-    } while (v);
-    out.append(p, static_cast<std::size_t>(end - p));
+        *--d = static_cast<char>('0' + whole % 10);
+        whole /= 10;
+    } while (whole);
+    return end;
 }
 
-void appendField(std::string &out, const char *name, double v)
+char *writeUInt(char *p, std::uint64_t v)
 {
-    out += ",\"";
-    out += name;
-    out += "\":";
-    appendFixed4(out, v);
+    char digits[24];
+    char *d = digits + sizeof digits;
+    do {
+        *--d = static_cast<char>('0' + v % 10);
+        v /= 10;
+    } while (v);
+    const std::size_t len = static_cast<std::size_t>(digits + sizeof digits - d);
+    std::memcpy(p, d, len);
+    return p + len;
+}
+
+template<std::size_t N>
+char *writeLiteral(char *p, const char (&text)[N])
+{
+    std::memcpy(p, text, N - 1);
+    return p + N - 1;
+}
+
+char *writeText(char *p, const char *text)
+{
+    const std::size_t len = std::strlen(text);
+    std::memcpy(p, text, len);
+    return p + len;
 }
 
 const char *eventName(EventKind k)
@@ -92,75 +109,109 @@ const char *eventName(EventKind k)
     return "event";
 }
 
-} // namespace
-
-bool appendJsonLine(std::string &out, const Toolpath &tp, std::size_t i, bool withEvents)
+// Writes entry i at p (at most kMaxEntryChars); returns p unchanged for a skipped event.
+char *writeEntry(char *p, const Toolpath &tp, std::size_t i, bool withEvents)
 {
     static constexpr const char *kTypes[] = {"rapid", "feed", "arc", "probe", "dwell", "event"};
     const MotionKind kind = tp.kind(i);
     if (kind == MotionKind::Event && !withEvents)
-        return false;
-    out += "{\"line\":";
-    appendUInt(out, tp.line(i));
-    out += ",\"type\":\"";
-    out += kTypes[static_cast<int>(kind)];
-    out += '"';
+        return p;
+    p = writeLiteral(p, "{\"line\":");
+    p = writeUInt(p, tp.line(i));
+    p = writeLiteral(p, ",\"type\":\"");
+    p = writeText(p, kTypes[static_cast<int>(kind)]);
+    *p++ = '"';
     if (kind == MotionKind::Event) {
         const Event &e = tp.event(i);
-        out += ",\"event\":\"";
-        out += eventName(e.kind);
-        out += '"';
-        appendField(out, "value", e.value);
+        p = writeLiteral(p, ",\"event\":\"");
+        p = writeText(p, eventName(e.kind));
+        p = writeLiteral(p, "\",\"value\":");
+        p = writeFixed4(p, e.value);
         if (e.kind == EventKind::PathMode) {
-            appendField(out, "p", e.p);
-            appendField(out, "q", e.q);
+            p = writeLiteral(p, ",\"p\":");
+            p = writeFixed4(p, e.p);
+            p = writeLiteral(p, ",\"q\":");
+            p = writeFixed4(p, e.q);
         }
-        out += '}';
-        return true;
+        *p++ = '}';
+        return p;
     }
-    const Point4 p = tp.end(i);
-    appendField(out, "x", p.x);
-    appendField(out, "y", p.y);
-    appendField(out, "z", p.z);
-    appendField(out, "a", p.a);
-    appendField(out, "f", tp.feedMmPerMin(i));
+    const Point4 e = tp.end(i);
+    p = writeLiteral(p, ",\"x\":");
+    p = writeFixed4(p, e.x);
+    p = writeLiteral(p, ",\"y\":");
+    p = writeFixed4(p, e.y);
+    p = writeLiteral(p, ",\"z\":");
+    p = writeFixed4(p, e.z);
+    p = writeLiteral(p, ",\"a\":");
+    p = writeFixed4(p, e.a);
+    p = writeLiteral(p, ",\"f\":");
+    p = writeFixed4(p, tp.feedMmPerMin(i));
     if (kind == MotionKind::Arc) {
-        const ArcInfo &arc = tp.arc(i);
-        appendField(out, "cx", arc.centre.x);
-        appendField(out, "cy", arc.centre.y);
-        appendField(out, "cz", arc.centre.z);
-        out += arc.plane == Plane::XY   ? ",\"plane\":\"XY\""
-               : arc.plane == Plane::XZ ? ",\"plane\":\"XZ\""
-                                        : ",\"plane\":\"YZ\"";
-        out += ",\"turns\":";
+        const ArcInfo arc = tp.arc(i);
+        p = writeLiteral(p, ",\"cx\":");
+        p = writeFixed4(p, arc.centre.x);
+        p = writeLiteral(p, ",\"cy\":");
+        p = writeFixed4(p, arc.centre.y);
+        p = writeLiteral(p, ",\"cz\":");
+        p = writeFixed4(p, arc.centre.z);
+        p = writeLiteral(p, ",\"plane\":\"");
+        p = writeText(p, arc.plane == Plane::XY ? "XY" : arc.plane == Plane::XZ ? "XZ" : "YZ");
+        p = writeLiteral(p, "\",\"turns\":");
         if (arc.turns < 0)
-            out += '-';
-        appendUInt(out, static_cast<std::uint64_t>(std::abs(arc.turns)));
+            *p++ = '-';
+        p = writeUInt(p, static_cast<std::uint64_t>(std::abs(arc.turns)));
     } else if (kind == MotionKind::Dwell) {
-        appendField(out, "seconds", tp.event(i).value);
+        p = writeLiteral(p, ",\"seconds\":");
+        p = writeFixed4(p, tp.event(i).value);
     } else if (kind == MotionKind::Probe) {
-        out += ",\"probe\":\"G38.";
-        appendUInt(out, static_cast<std::uint64_t>(tp.probe(i)) + 2);
-        out += '"';
+        p = writeLiteral(p, ",\"probe\":\"G38.");
+        p = writeUInt(p, static_cast<std::uint64_t>(tp.probe(i)) + 2);
+        *p++ = '"';
     }
-    out += '}';
+    *p++ = '}';
+    return p;
+}
+
+} // namespace
+
+void appendFixed4(std::string &out, double value)
+{
+    char buf[64];
+    out.append(buf, static_cast<std::size_t>(writeFixed4(buf, value) - buf));
+}
+
+bool appendJsonLine(std::string &out, const Toolpath &toolpath, std::size_t i, bool withEvents)
+{
+    char buf[kMaxEntryChars];
+    char *end = writeEntry(buf, toolpath, i, withEvents);
+    if (end == buf)
+        return false;
+    out.append(buf, static_cast<std::size_t>(end - buf));
     return true;
 }
 
 bool writeJsonLines(const Toolpath &toolpath, std::FILE *out, bool withEvents)
 {
-    std::string buffer;
-    buffer.reserve(1 << 20);
+    constexpr std::size_t kChunk = 1 << 20;
+    std::vector<char> buffer(kChunk + kMaxEntryChars + 1);
+    char *const begin = buffer.data();
+    char *p = begin;
     for (std::size_t i = 0; i < toolpath.size(); ++i) {
-        if (appendJsonLine(buffer, toolpath, i, withEvents))
-            buffer += '\n';
-        if (buffer.size() > (1 << 20) - 512) {
-            if (std::fwrite(buffer.data(), 1, buffer.size(), out) != buffer.size())
+        char *end = writeEntry(p, toolpath, i, withEvents);
+        if (end != p) {
+            *end++ = '\n';
+            p = end;
+        }
+        if (static_cast<std::size_t>(p - begin) >= kChunk) {
+            const auto len = static_cast<std::size_t>(p - begin);
+            if (std::fwrite(begin, 1, len, out) != len)
                 return false;
-            buffer.clear();
+            p = begin;
         }
     }
-    if (std::fwrite(buffer.data(), 1, buffer.size(), out) != buffer.size())
+    const auto len = static_cast<std::size_t>(p - begin);
+    if (len && std::fwrite(begin, 1, len, out) != len)
         return false;
     return std::fflush(out) == 0;
 }

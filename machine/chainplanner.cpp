@@ -13,6 +13,9 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::int64_t kMinSpeed = 10; // smallest V / B the unit takes, pulses/s
+// Largest A sent, thousands of pulses/s²: the manuals give no bound; the emulator accepts up to
+// this (readings of driver/emulator), and a lower A is always safe.
+constexpr std::int64_t kMaxAccel = 100000;
 
 using Vec4 = std::array<double, 4>;
 
@@ -128,17 +131,30 @@ private:
     void chooseAccels()
     {
         const std::size_t n = m_d.size();
-        const std::size_t w = static_cast<std::size_t>(std::max(0, m_options.accelWindow));
+        const double w = std::max(0.0, m_options.accelWindowSteps);
         std::int64_t last = 0;
         for (std::size_t k = 0; k < n; ++k) {
             Derived &r = m_d[k];
             double a = r.aMm; // r.aMm stays the limit itself: the bound uses it
-            for (std::size_t j = k > w ? k - w : 0; j < std::min(n, k + w + 1); ++j)
+            // Only a short vector's direction jitters with the step rounding: it takes the
+            // smallest cap of the neighbours within w speed units; a long one keeps its own.
+            double reach = r.units < w ? 0 : w;
+            for (std::size_t j = k; j > 0 && reach < w; --j) {
+                a = std::min(a, m_d[j - 1].aMm);
+                reach += m_d[j - 1].units;
+            }
+            reach = r.units < w ? 0 : w;
+            for (std::size_t j = k + 1; j < n && reach < w; ++j) {
                 a = std::min(a, m_d[j].aMm);
-            const auto cap =
-                std::max<std::int64_t>(1, static_cast<std::int64_t>(floorUnits(a * r.f / 1000)));
+                reach += m_d[j].units;
+            }
+            const auto cap = std::clamp<std::int64_t>(
+                static_cast<std::int64_t>(floorUnits(a * r.f / 1000)), 1, kMaxAccel);
+            // Only a vector that passes quickly keeps a lower A: on a long one the acceleration
+            // matters and one A command costs the link nothing in comparison.
+            const bool quick = r.units < m_options.accelKeepS * static_cast<double>(r.speed);
             const bool keep =
-                last > 0 && last <= cap && last >= cap * (1 - m_options.accelTolerance);
+                quick && last > 0 && last <= cap && last >= cap * (1 - m_options.accelTolerance);
             r.accel = keep ? last : cap;
             last = r.accel;
             const double whole = std::floor(r.units + 1e-9);
@@ -175,6 +191,11 @@ private:
         r.aMm = a;
         r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(v * r.f)),
                                            kMinSpeed, m_config.unit.maxPulseRate);
+        if (v * r.f < kMinSpeed) { // the unit cannot go slower: the move runs faster than asked
+            r.vMm = kMinSpeed / r.f;
+            if (m_out.slowLines.empty() || m_out.slowLines.back() != m.line)
+                m_out.slowLines.push_back(m.line);
+        }
         std::int64_t major = 0;
         for (std::int32_t c : m.d)
             major = std::max<std::int64_t>(major, std::abs(c));
@@ -228,18 +249,22 @@ private:
         const double fMin = std::min(a.f, b.f);
         double units = static_cast<double>(std::min(a.speed, b.speed));
         double jd = 0, curv = 0;
-        if (m_options.strategy == PlanStrategy::GrblJunction) {
+        // grbl's own caps, unless the baseline is asked to keep every limit of the full plan
+        // (then it differs from the full plan only by its short lookahead).
+        const bool grbl =
+            m_options.strategy == PlanStrategy::GrblJunction && !m_options.grblKeepsAllLimits;
+        if (grbl) {
             pathCaps(k, a.uStep, b.uStep, jd, curv); // grbl: geometry of the steps, no curvature
             units = std::min(units, jd * fMin);
         } else {
             pathCaps(k, a.uPath, b.uPath, jd, curv);
             units = std::min({units, jd * fMin, curv * fMin});
-            for (int i = 0; i < 4; ++i) {
-                const double per = jumpPerUnit(k, i);
-                if (per > 1e-15)
-                    units = std::min(
-                        units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
-            }
+        }
+        for (int i = 0; i < 4 && !grbl; ++i) {
+            const double per = jumpPerUnit(k, i);
+            if (per > 1e-15)
+                units =
+                    std::min(units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
         }
         m_capUnits[k] = static_cast<std::int64_t>(floorUnits(units));
     }
@@ -274,8 +299,7 @@ private:
             fullPasses(first, b);
         for (std::size_t k = first; k <= last; ++k) {
             const Derived &r = m_d[k];
-            PlannedVector v{m_moves[k].d, m_moves[k].endSteps, r.speed,         r.accel,
-                            b[k - first], k == last,           m_moves[k].line, false};
+            PlannedVector v{r.speed, r.accel, b[k - first], k == last, false};
             if (k == last) // nothing follows: the unit brakes to 0; a short vector cruises at B
                 v.brake = r.isShort ? r.speed : kMinSpeed;
             v.line = m_options.strategy == PlanStrategy::ExactStop;
@@ -364,7 +388,27 @@ private:
                 over = over || ratio > 1 + 1e-9;
             }
             m_out.jumpOverLimit += over ? 1 : 0;
+            curveStats(k, static_cast<double>(v.brake));
         }
+    }
+
+    // The axes' acceleration through the turn at the vertex after move k, as the intended path
+    // turns: each axis's speed changes by v·Δu_i over the time between the two segments'
+    // middles, (L_k + L_k+1) / 2v. On a chorded arc that is v²/r per unit of turn direction.
+    void curveStats(std::size_t k, double brake)
+    {
+        const Derived &a = m_d[k];
+        const Derived &b = m_d[k + 1];
+        const double v = brake / std::min(a.f, b.f); // the faster side of the vertex, mm/s
+        const double span = 0.5 * (a.pathLengthMm + b.pathLengthMm);
+        bool over = false;
+        for (int i = 0; i < 4; ++i) {
+            const double accel = v * v * std::abs(b.uPath[i] - a.uPath[i]) / span;
+            const double ratio = accel / m_config.axes[static_cast<std::size_t>(i)].accelMmPerS2;
+            m_out.maxCurveAccelRatio = std::max(m_out.maxCurveAccelRatio, ratio);
+            over = over || ratio > 1 + 1e-6;
+        }
+        m_out.curveAccelOverLimit += over ? 1 : 0;
     }
 
     const std::vector<Move> &m_moves;

@@ -25,27 +25,27 @@ struct Move
     std::uint32_t line = 0;
 };
 
-// A vector as it goes to the unit.
+// The speeds of moves[k] as it goes to the unit (its steps and line stay in the Move).
 struct PlannedVector
 {
-    std::array<std::int32_t, 4> d{};
-    Steps4 endSteps{};
     std::int64_t speed = 0; // V, pulses/s in the mode's units
     std::int64_t accel = 0; // A, thousands of pulses/s²
     std::int64_t brake = 0; // B, pulses/s; the chain's last vector: see chainEnd
     bool chainEnd = false;  // the unit must stop after this vector (queue drains)
-    std::uint32_t sourceLine = 0;
-    bool line = false; // send as L (stand-alone, from and to rest), not C
+    bool line = false;      // send as L (stand-alone, from and to rest), not C
 };
 
 struct RunOutcome
 {
-    std::vector<PlannedVector> vectors;
+    std::vector<PlannedVector> vectors;   // one per move, in order
+    std::vector<std::uint32_t> slowLines; // lines whose feed is below the unit's 10 pulses/s
     std::size_t chains = 0;
-    double boundS = 0;             // time-optimal bound of these moves
-    double maxJumpMmPerS = 0;      // largest per-axis speed step at a vertex of the plan
-    double maxJumpRatio = 0;       // largest speed step / axis limit
-    std::size_t jumpOverLimit = 0; // vertices with a step over an axis limit
+    double boundS = 0;                   // time-optimal bound of these moves
+    double maxJumpMmPerS = 0;            // largest per-axis speed step at a vertex of the plan
+    double maxJumpRatio = 0;             // largest speed step / axis limit
+    std::size_t jumpOverLimit = 0;       // vertices with a step over an axis limit
+    double maxCurveAccelRatio = 0;       // largest axis acceleration through a turn / limit
+    std::size_t curveAccelOverLimit = 0; // vertices turning faster than the axes accelerate
 };
 
 // Plans moves that start and end at rest. vk: speeds are VK path speeds (else VN major axis).

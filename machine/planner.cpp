@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 
 namespace frezka::machine {
 
@@ -69,7 +70,11 @@ public:
     }
 
 private:
-    // VK when it is exact: every present linear axis has the same scale and A never moves.
+    // VK unless the rotary axis moves (VK's path length leaves A out) or the firmware lacks it.
+    // With VK the unit's speed is the length of the step vector per second, so its ratio to the
+    // path speed in mm changes smoothly with the direction even when the axis scales differ;
+    // with VN it follows the major axis, whose ratio has kinks: measured, VK keeps the path
+    // speed closer to the program's (docs/planner.md §6).
     bool chooseVk() const
     {
         const SpeedModeChoice mode = m_config.motion.speedMode;
@@ -79,15 +84,6 @@ private:
         const bool is64 = m_config.unit.variant == protocol::Variant::Gve64;
         if (!info.hasVlVkXmNa || (is64 && m_config.unit.firmwareVersion < 19))
             return false;
-        double scale = 0;
-        for (int i = 0; i < 3; ++i) {
-            const AxisConfig &a = m_config.axes[static_cast<std::size_t>(i)];
-            if (!a.present)
-                continue;
-            if (scale != 0 && a.stepsPerMm != scale)
-                return false;
-            scale = a.stepsPerMm;
-        }
         const double a0 = m_path.origin().a;
         for (std::size_t i = 0; i < m_path.size(); ++i) {
             if (m_path.isMotion(i) && m_path.end(i).a != a0)
@@ -185,6 +181,12 @@ private:
         detail::Move m;
         bool any = false;
         for (int k = 0; k < 4; ++k) {
+            if (std::llabs(target[k] - m_steps[k]) > kMaxCounter) {
+                error(PlanErrorCode::CounterOverflow, line,
+                      std::string("the move on ") + kAxisLetters[static_cast<std::size_t>(k)] +
+                          " is longer than one unit vector can be (2147483647 steps)");
+                return;
+            }
             m.d[k] = static_cast<std::int32_t>(target[k] - m_steps[k]);
             any = any || m.d[k] != 0;
         }
@@ -211,8 +213,17 @@ private:
         flush();
         const Steps4 target = stepsOf(p, m_config);
         detail::Move m;
-        for (int k = 0; k < 4; ++k)
+        bool any = false;
+        for (int k = 0; k < 4; ++k) {
             m.d[k] = static_cast<std::int32_t>(target[k] - m_steps[k]);
+            any = any || m.d[k] != 0;
+        }
+        if (!any) {
+            error(PlanErrorCode::Unsupported, line,
+                  "the probe move has no length (not a single step); program a probe target "
+                  "away from the current position");
+            return;
+        }
         m.endSteps = target;
         m.pathDelta = {p.x - m_posMm.x, p.y - m_posMm.y, p.z - m_posMm.z, p.a - m_posMm.a};
         m.feedMmPerS = feed;
@@ -249,29 +260,36 @@ private:
         if (m_moves.empty())
             return;
         const detail::RunOutcome run = detail::planRun(m_moves, m_config, m_options, m_vk);
-        for (const detail::PlannedVector &v : run.vectors) {
-            setModal(UnitOp::Accel, m_accel, v.accel, v.sourceLine);
-            setModal(UnitOp::Speed, m_speed, v.speed, v.sourceLine);
+        for (std::size_t k = 0; k < run.vectors.size(); ++k) {
+            const detail::PlannedVector &v = run.vectors[k];
+            const detail::Move &m = m_moves[k];
+            setModal(UnitOp::Accel, m_accel, v.accel, m.line);
+            setModal(UnitOp::Speed, m_speed, v.speed, m.line);
             if (!v.line)
-                setModal(UnitOp::Brake, m_brake, v.brake, v.sourceLine);
+                setModal(UnitOp::Brake, m_brake, v.brake, m.line);
             UnitCommand c;
             c.op = v.line ? UnitOp::Line : UnitOp::Vector;
-            c.d = v.d;
-            c.sourceLine = v.sourceLine;
-            c.endSteps = v.endSteps;
+            c.d = m.d;
+            c.sourceLine = m.line;
+            c.endSteps = m.endSteps;
             m_result.program.commands.push_back(c);
-            m_emitted = v.endSteps;
+            m_emitted = m.endSteps;
             if (v.chainEnd && !v.line)
-                emit(UnitOp::WaitIdle, 0, v.sourceLine);
+                emit(UnitOp::WaitIdle, 0, m.line);
         }
         if (!run.vectors.empty() && run.vectors.back().line)
-            emit(UnitOp::WaitIdle, 0, run.vectors.back().sourceLine);
+            emit(UnitOp::WaitIdle, 0, m_moves.back().line);
         m_bound += run.boundS;
+        for (std::uint32_t line : run.slowLines)
+            warning(line, "the feed is below the unit's slowest speed (10 pulses/s) for this "
+                          "move; it runs at that speed instead");
         PlanStats &s = m_result.stats;
         s.chains += run.chains;
         s.maxVertexJumpMmPerS = std::max(s.maxVertexJumpMmPerS, run.maxJumpMmPerS);
         s.maxJumpRatio = std::max(s.maxJumpRatio, run.maxJumpRatio);
         s.jumpOverLimit += run.jumpOverLimit;
+        s.maxCurveAccelRatio = std::max(s.maxCurveAccelRatio, run.maxCurveAccelRatio);
+        s.curveAccelOverLimit += run.curveAccelOverLimit;
         m_moves.clear();
     }
 

@@ -30,10 +30,12 @@ struct PlanOptions
 {
     PlanStrategy strategy = PlanStrategy::Full;
     int grblLookahead = 16;          // GrblJunction: blocks in the planner buffer (grbl: 16)
+    bool grblKeepsAllLimits = false; // GrblJunction: the full plan's caps, grbl's lookahead
     std::int64_t shortThreshold = 1; // $: vectors shorter than this run "short" (§4)
     double brakeMarginSteps = 0.25;  // distance kept in reserve when braking, steps (>= 0)
-    double accelTolerance = 0.05;    // keep the last A while within this fraction below the cap
-    int accelWindow = 4;             // A: smallest cap over this many neighbours each side
+    double accelTolerance = 0.3;     // keep the last A while within this fraction below the cap
+    double accelWindowSteps = 12;    // A: smallest cap of the neighbours within this distance
+    double accelKeepS = 0.05;        // ... but only on vectors shorter than this at their V, s
     double feedOverride = 1.0;       // multiplies programmed feeds (not rapids), 0.01..10
 };
 
@@ -56,16 +58,18 @@ struct PlanError
 
 struct PlanStats
 {
-    std::size_t vectors = 0;         // C commands
-    std::size_t chains = 0;          // runs of C vectors that start and end at rest
-    double estimatedS = 0;           // job time under the unit's motion model (§4.2)
-    double boundS = 0;               // time-optimal bound for the same path and limits
-    double waitS = 0;                // dwells and spin-up waits (PC side), in both figures
-    double maxVertexJumpMmPerS = 0;  // largest per-axis speed step at a vertex, mm/s
-    double maxJumpRatio = 0;         // largest (speed step / axis limit) at a vertex
-    std::size_t jumpOverLimit = 0;   // vertices whose speed step exceeds an axis limit
-    std::size_t brakeViolations = 0; // vectors the model cannot brake in time (must be 0)
-    bool speedModeVk = false;        // VK (path speeds) or VN (major-axis speeds)
+    std::size_t vectors = 0;             // C commands
+    std::size_t chains = 0;              // runs of C vectors that start and end at rest
+    double estimatedS = 0;               // job time under the unit's motion model (§4.2)
+    double boundS = 0;                   // time-optimal bound for the same path and limits
+    double waitS = 0;                    // dwells and spin-up waits (PC side), in both figures
+    double maxVertexJumpMmPerS = 0;      // largest per-axis speed step at a vertex, mm/s
+    double maxJumpRatio = 0;             // largest (speed step / axis limit) at a vertex
+    std::size_t jumpOverLimit = 0;       // vertices whose speed step exceeds an axis limit
+    double maxCurveAccelRatio = 0;       // largest axis acceleration through a turn / limit
+    std::size_t curveAccelOverLimit = 0; // vertices turning faster than the axes accelerate
+    std::size_t brakeViolations = 0;     // vectors the model cannot brake in time (must be 0)
+    bool speedModeVk = false;            // VK (path speeds) or VN (major-axis speeds)
     friend bool operator==(const PlanStats &, const PlanStats &) = default;
 };
 

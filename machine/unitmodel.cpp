@@ -61,6 +61,7 @@ VectorRun runVector(double e, double c, double x, double a, double n)
         const double cruise = std::max(0.0, n - d1 - d3);
         r.exit = x;
         r.timeS = (peak - e) / a + (peak > 0 ? cruise / peak : 0) + (peak - x) / a;
+        r.peak = peak;
         return r;
     }
     // e > c: slow down to the cruise target first.
@@ -171,7 +172,7 @@ private:
             const VectorRun r = runVector(e, cruise, exit, p.a, p.n);
             m_result.motionS += r.timeS;
             m_result.brakeViolations += r.violation ? 1 : 0;
-            m_result.peakSpeed = std::max({m_result.peakSpeed, e, r.exit});
+            m_result.peakSpeed = std::max({m_result.peakSpeed, e, r.exit, r.peak});
             m_result.vertexSpeeds.push_back(r.exit);
             ++m_result.vectors;
             e = r.exit;

@@ -21,6 +21,7 @@ struct VectorRun
 {
     double timeS = 0;
     double exit = 0;
+    double peak = 0;        // highest speed inside the vector (0: never above entry and exit)
     bool violation = false; // could not slow from e to x within n
 };
 VectorRun runVector(double e, double c, double x, double a, double n);

@@ -8,6 +8,19 @@
 //
 // Speed semantics follow docs/gve-protocol.md §4: V, B in pulses/s (per the mode set by
 // SpeedMode), A in thousands of pulses/s², T in ms, $ in steps.
+//
+// What the planner emits (docs/planner.md), and what a driver may rely on:
+// - The program opens with SpeedModeVk or SpeedModeVn, ShortThreshold and Pause (line 0).
+// - A, V and B are sent only when they change; each C captures the values current when it is
+//   queued. The program never relies on the unit's reset values.
+// - A run of C vectors is planned to flow: the driver must keep the queue filled. Where the
+//   motion must rest (before I/O, a dwell, an operator stop, a probe, the end), a WaitIdle comes
+//   first; the last C before it brakes to 0 because nothing follows it in the queue.
+// - Output, Spindle, Dwell, OperatorStop, Probe and ProgramEnd always follow a WaitIdle (or
+//   come before any motion), so they act at the programmed place.
+// - Line is used only by the exact-stop baseline plan (each L from and to rest).
+// - endSteps of a non-motion command is the position after the motion before it.
+// - L/C may leave the A component out on the wire when it is 0 (machine/unitwire.h).
 
 #include <array>
 #include <cstdint>
@@ -31,10 +44,13 @@ enum class UnitOp : std::uint8_t {
     Output,         // !0O0,hh  output port 0 (active low), value = byte
     Spindle,        // !7V n    spindle ‰ (0 = off)
     WaitIdle,       // PC side: wait until the queue has drained (L0,0,0 accepted)
-    Dwell,          // PC side: wait idle, then value milliseconds
-    OperatorStop,   // PC side: M0 / M1 / M6, value = EventKind-like reason, tool in aux
-    Probe,          // PC side: G38.x probe move, delta in d, probe kind in aux
-    ProgramEnd,     // PC side: end of program
+    Dwell,          // PC side: wait idle, then value milliseconds (G4, spindle spin-up)
+    OperatorStop,   // PC side: M0 / M1 / M6, value = StopReason, tool number in aux
+    Probe,          // PC side: G38.x probe move, delta in d, gcode::ProbeKind in aux; A and V
+                    // for it are set just before. The commands after it were planned from its
+                    // programmed end: after a probe that stopped elsewhere the driver must not
+                    // send them as they are (re-plan the rest from the measured position).
+    ProgramEnd,     // PC side: end of program (M2/M30); spindle and coolant are off before it
 };
 
 // UnitOp::OperatorStop reasons (UnitCommand::value); the tool number rides in aux.

@@ -17,7 +17,9 @@ QString mm(double v)
 
 int usage()
 {
-    frezka::cli::err(QStringLiteral("usage: frezka-cli check FILE [--rapid MM_PER_MIN]\n"));
+    frezka::cli::err(QCoreApplication::translate(
+                         "frezka::gcode", "usage: frezka-cli check FILE [--rapid MM_PER_MIN]") +
+                     QLatin1Char('\n'));
     return 2;
 }
 
@@ -53,10 +55,12 @@ int runCheck(const QStringList &args)
         return 1;
     }
     const gcode::Summary s = gcode::summarize(result.toolpath, rapid);
-    auto tr = [](const char *text) { return QCoreApplication::translate("frezka::gcode", text); };
     QString text;
-    text += tr("%1: OK, %2 lines\n").arg(file).arg(result.linesRead);
-    text += tr("moves: %1 (rapid %2, feed %3, arc %4, probe %5), dwells: %6\n")
+    text += QCoreApplication::translate("frezka::gcode", "%1: OK, %2 lines\n")
+                .arg(file)
+                .arg(result.linesRead);
+    text += QCoreApplication::translate(
+                "frezka::gcode", "moves: %1 (rapid %2, feed %3, arc %4, probe %5), dwells: %6\n")
                 .arg(s.moves())
                 .arg(s.rapids)
                 .arg(s.feeds)
@@ -64,13 +68,17 @@ int runCheck(const QStringList &args)
                 .arg(s.probes)
                 .arg(s.dwells);
     if (s.hasMotion) {
-        text += tr("bounds (machine, mm): X %1 .. %2, Y %3 .. %4, Z %5 .. %6, A %7 .. %8\n")
+        text += QCoreApplication::translate(
+                    "frezka::gcode",
+                    "bounds (machine, mm): X %1 .. %2, Y %3 .. %4, Z %5 .. %6, A %7 .. %8\n")
                     .arg(mm(s.min.x), mm(s.max.x), mm(s.min.y), mm(s.max.y), mm(s.min.z),
                          mm(s.max.z), mm(s.min.a), mm(s.max.a));
     }
-    text += tr("length: rapid %1 mm, feed %2 mm\n").arg(mm(s.rapidLengthMm), mm(s.feedLengthMm));
+    text += QCoreApplication::translate("frezka::gcode", "length: rapid %1 mm, feed %2 mm\n")
+                .arg(mm(s.rapidLengthMm), mm(s.feedLengthMm));
     const auto seconds = static_cast<long long>(std::llround(s.timeSeconds));
-    text += tr("naive time: %1:%2:%3 (rapid %4 mm/min, no acceleration)\n")
+    text += QCoreApplication::translate("frezka::gcode",
+                                        "naive time: %1:%2:%3 (rapid %4 mm/min, no acceleration)\n")
                 .arg(seconds / 3600)
                 .arg((seconds / 60) % 60, 2, 10, QLatin1Char('0'))
                 .arg(seconds % 60, 2, 10, QLatin1Char('0'))

@@ -6,9 +6,19 @@
 #include "gcode/interpreter.h"
 #include "gcode/trace.h"
 
+#include <QCoreApplication>
+
 #include <cstdio>
 
 namespace {
+
+int usage()
+{
+    frezka::cli::err(
+        QCoreApplication::translate("frezka::gcode", "usage: frezka-cli toolpath FILE [--events]") +
+        QLatin1Char('\n'));
+    return 2;
+}
 
 int runToolpath(const QStringList &args)
 {
@@ -21,13 +31,11 @@ int runToolpath(const QStringList &args)
         else if (file.isEmpty() && !a.startsWith(QLatin1String("--")))
             file = a;
         else {
-            cli::err(QStringLiteral("usage: frezka-cli toolpath FILE [--events]\n"));
-            return 2;
+            return usage();
         }
     }
     if (file.isEmpty()) {
-        cli::err(QStringLiteral("usage: frezka-cli toolpath FILE [--events]\n"));
-        return 2;
+        return usage();
     }
     const gcode::Result result = gcode::interpretFile(file.toStdString());
     if (!result.ok()) {
@@ -36,7 +44,9 @@ int runToolpath(const QStringList &args)
         return 1;
     }
     if (!gcode::writeJsonLines(result.toolpath, stdout, events)) {
-        cli::err(QStringLiteral("frezka-cli: cannot write the toolpath\n"));
+        cli::err(
+            QCoreApplication::translate("frezka::gcode", "frezka-cli: cannot write the toolpath") +
+            QLatin1Char('\n'));
         return 1;
     }
     return 0;

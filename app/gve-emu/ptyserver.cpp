@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -94,9 +95,12 @@ void PtyServer::pump()
         m_out += out;
         flushOut();
     }
+    // Wake up at the next event (a byte, a reply, a vector end...). A far event is re-checked
+    // hourly: that keeps the interval inside an int and costs nothing.
     const double next = m_sim.nextEventIn();
+    constexpr double kLongestWaitMs = 3600.0 * 1000.0;
     if (std::isfinite(next))
-        m_timer.start(static_cast<int>(std::ceil(next * 1000.0)));
+        m_timer.start(static_cast<int>(std::ceil(std::min(next * 1000.0, kLongestWaitMs))));
     else
         m_timer.stop();
 }

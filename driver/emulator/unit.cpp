@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace frezka::emulator {
@@ -156,7 +157,8 @@ void Unit::Impl::handleLine(int address, std::string_view body)
             packetOpen = false;
             int declared = -1;
             std::string_view n = body.substr(2);
-            if (!n.empty() && n.size() <= 4 && std::all_of(n.begin(), n.end(), ::isdigit))
+            const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+            if (!n.empty() && n.size() <= 4 && std::all_of(n.begin(), n.end(), digit))
                 declared = std::stoi(std::string(n));
             const Reply r = executePacket(declared);
             packet.clear();
@@ -235,6 +237,16 @@ void Unit::Impl::processBacklog()
 
 // ---- clock -----------------------------------------------------------------------------------
 
+namespace {
+
+// Rounding of the clock: a few ulps of the time t (never less than those of one second).
+double clockSlack(double t)
+{
+    return 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t));
+}
+
+} // namespace
+
 double Unit::Impl::nextEventIn() const
 {
     const double now = engine.now();
@@ -246,13 +258,19 @@ double Unit::Impl::nextEventIn() const
     return next;
 }
 
-void Unit::Impl::advanceTo(double target)
+void Unit::Impl::advanceBy(double seconds)
 {
+    // What is left is kept as a duration, never as a clock reading: (now + dt) - now is dt
+    // rounded to the clock's ulp and can fall short of an event exactly dt ahead. An event
+    // within a few ulps of the clock beyond what is left counts as reached, so that
+    // advance(nextEventIn()) always takes its event, even hours into a job.
+    double left = std::max(0.0, seconds);
     for (;;) {
-        const double remaining = std::max(0.0, target - engine.now());
         const double event = nextEventIn();
-        const double dt = std::min(event, remaining);
+        const bool reached = event <= left + clockSlack(engine.now());
+        const double dt = reached ? event : left;
         engine.step(dt);
+        left = std::max(0.0, left - dt);
         checkInterrupts();
         checkHoming();
         if (deferred == Deferred::None && watchdogAt() <= engine.now())
@@ -263,7 +281,7 @@ void Unit::Impl::advanceTo(double target)
         }
         if (deferred == Deferred::None && !backlog.empty() && deafUntil < 0)
             processBacklog();
-        if (event > remaining)
+        if (!reached)
             return;
     }
 }
@@ -389,157 +407,6 @@ std::uint8_t Unit::Impl::st6() const
     return static_cast<std::uint8_t>((stopBit ? 0x01 : 0) | (freeBit ? 0x02 : 0) |
                                      (intcom ? 0x10 : 0) | (runBit() ? 0x40 : 0) |
                                      (inta ? 0x80 : 0));
-}
-
-// ---- public API ------------------------------------------------------------------------------
-
-Unit::Unit(UnitOptions options)
-    : m_impl(std::make_unique<Impl>(std::move(options)))
-{}
-Unit::~Unit() = default;
-Unit::Unit(Unit &&) noexcept = default;
-Unit &Unit::operator=(Unit &&) noexcept = default;
-
-void Unit::receive(std::string_view bytes)
-{
-    Impl &d = *m_impl;
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
-        if (d.deafUntil > d.engine.now()) {
-            d.stats.discardedBytes += 1;
-            continue;
-        }
-        if (d.deferred != Impl::Deferred::None) {
-            const std::string_view rest = bytes.substr(i);
-            const std::size_t room = readings::kReceiveBufferBytes -
-                                     std::min(d.backlog.size(), readings::kReceiveBufferBytes);
-            d.backlog.append(rest.substr(0, room));
-            d.stats.discardedBytes +=
-                static_cast<std::int64_t>(rest.size() - std::min(room, rest.size()));
-            return;
-        }
-        d.feed(bytes[i]);
-    }
-}
-
-std::string Unit::takeTransmit()
-{
-    return std::exchange(m_impl->tx, {});
-}
-
-void Unit::advance(double seconds)
-{
-    m_impl->advanceTo(m_impl->engine.now() + std::max(0.0, seconds));
-}
-
-double Unit::now() const
-{
-    return m_impl->engine.now();
-}
-
-double Unit::nextEventIn() const
-{
-    return m_impl->nextEventIn();
-}
-
-Stats Unit::stats() const
-{
-    Stats s = m_impl->stats;
-    s.motion = m_impl->engine.stats();
-    return s;
-}
-
-std::array<std::int64_t, 4> Unit::position() const
-{
-    return m_impl->engine.position();
-}
-
-double Unit::pathSpeed() const
-{
-    return m_impl->engine.pathSpeed();
-}
-
-std::size_t Unit::queueLength() const
-{
-    return m_impl->engine.queueLength();
-}
-
-bool Unit::isMoving() const
-{
-    return m_impl->engine.isMoving();
-}
-
-const std::vector<TracePoint> &Unit::trace() const
-{
-    return m_impl->engine.trace();
-}
-
-void Unit::clearTrace()
-{
-    m_impl->engine.clearTrace();
-}
-
-void Unit::setInput(int input, bool level)
-{
-    if (input < 0 || input > 15)
-        return;
-    const auto bit = static_cast<std::uint16_t>(1u << input);
-    m_impl->manualInputs = level ? (m_impl->manualInputs | bit) : (m_impl->manualInputs & ~bit);
-    m_impl->checkInterrupts();
-    m_impl->checkHoming();
-}
-
-bool Unit::input(int input) const
-{
-    return input >= 0 && input < 16 && ((m_impl->inputLevels() >> input) & 1);
-}
-
-void Unit::setSwitches(std::vector<PositionSwitch> switches)
-{
-    m_impl->switches = std::move(switches);
-    m_impl->updateWatches();
-    m_impl->checkInterrupts();
-}
-
-std::uint8_t Unit::outputs() const
-{
-    return m_impl->outputs;
-}
-
-int Unit::spindlePermille() const
-{
-    return m_impl->spindle;
-}
-
-std::uint8_t Unit::status(int n) const
-{
-    if (n == 6)
-        return m_impl->st6();
-    return (n >= 0 && n < 6) ? m_impl->st[n] : 0;
-}
-
-std::uint8_t Unit::eepromByte(int address) const
-{
-    return m_impl->eeprom.byte(address);
-}
-
-bool Unit::checksumsOn() const
-{
-    return m_impl->checksums;
-}
-
-const UnitOptions &Unit::options() const
-{
-    return m_impl->options;
-}
-
-const protocol::VariantInfo &Unit::variantInfo() const
-{
-    return *m_impl->info;
-}
-
-std::string Unit::eepromError() const
-{
-    return m_impl->eepromError;
 }
 
 } // namespace frezka::emulator

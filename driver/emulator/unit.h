@@ -69,7 +69,9 @@ public:
     void receive(std::string_view bytesFromPc);
     // Bytes the unit has sent since the last call.
     std::string takeTransmit();
-    // Moves the virtual clock by `seconds` (>= 0), event by event.
+    // Moves the virtual clock by `seconds` (>= 0), event by event. An event at most a few
+    // ulps of the clock beyond `seconds` is taken too: advance(nextEventIn()) always takes the
+    // event, whatever the rounding of now + seconds.
     void advance(double seconds);
     double now() const;
     // Seconds until the unit's state next changes by itself (motion event, deferred reply,

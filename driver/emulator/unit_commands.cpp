@@ -1,6 +1,7 @@
 // The command set of the emulated unit (docs/gve-protocol.md §4-§13): each handler validates
 // all parameters first (syntax -> 4, range -> 5), then changes state.
 
+#include "driver/emulator/commandargs.h"
 #include "driver/emulator/unit_impl.h"
 
 #include <charconv>
@@ -8,103 +9,43 @@
 #include <limits>
 
 namespace frezka::emulator {
+
+using namespace args;
+
 namespace {
 
 constexpr std::int64_t kMaxSteps = 2147483647;
 constexpr Reply kDeferred{-1, {}};
 
-enum class Num { Ok, Syntax, Range };
-
-struct Parsed
-{
-    Num status = Num::Syntax;
-    std::int64_t value = 0;
-};
-
-// Decimal integer with optional sign; more digits than int64 holds is a range error.
-Parsed parseDec(std::string_view s)
-{
-    if (!s.empty() && s.front() == '+')
-        s.remove_prefix(1);
-    if (s.empty())
-        return {};
-    bool neg = false;
-    std::string_view digits = s;
-    if (digits.front() == '-') {
-        neg = true;
-        digits.remove_prefix(1);
-    }
-    if (digits.empty())
-        return {};
-    for (char c : digits) {
-        if (c < '0' || c > '9')
-            return {};
-    }
-    std::int64_t v = 0;
-    const auto res = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-    if (res.ec == std::errc::result_out_of_range)
-        return {Num::Range, 0};
-    return {Num::Ok, neg ? -v : v};
-}
-
-// Hex number of 1..8 digits.
-Parsed parseHex(std::string_view s)
-{
-    if (s.empty() || s.size() > 8)
-        return {s.empty() ? Num::Syntax : Num::Range, 0};
-    std::uint64_t v = 0;
-    const auto res = std::from_chars(s.data(), s.data() + s.size(), v, 16);
-    if (res.ec != std::errc() || res.ptr != s.data() + s.size())
-        return {};
-    return {Num::Ok, static_cast<std::int64_t>(v)};
-}
-
-std::vector<std::string_view> split(std::string_view s)
-{
-    std::vector<std::string_view> parts;
-    std::size_t start = 0;
-    for (;;) {
-        const auto comma = s.find(',', start);
-        parts.push_back(s.substr(start, comma - start));
-        if (comma == std::string_view::npos)
-            return parts;
-        start = comma + 1;
-    }
-}
-
-// Parses every value, then checks ranges: a syntax error anywhere wins over a range error.
-int parseAll(const std::vector<std::string_view> &parts, std::int64_t lo, std::int64_t hi,
-             std::vector<std::int64_t> &out, bool hex = false)
-{
-    int code = 0;
-    out.clear();
-    for (auto p : parts) {
-        const Parsed v = hex ? parseHex(p) : parseDec(p);
-        if (v.status == Num::Syntax)
-            return 4;
-        if (v.status == Num::Range || v.value < lo || v.value > hi)
-            code = 5;
-        out.push_back(v.value);
-    }
-    return code;
-}
-
-std::string hex2(int v)
-{
-    static constexpr char kHex[] = "0123456789ABCDEF";
-    return {kHex[(v >> 4) & 0xF], kHex[v & 0xF]};
-}
-
-int axisIndex(char c, int axisCount)
-{
-    static constexpr std::string_view kAxes = "XYZA";
-    const auto i = kAxes.find(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
-    if (i == std::string_view::npos || static_cast<int>(i) >= axisCount)
-        return -1;
-    return static_cast<int>(i);
-}
-
 } // namespace
+
+// Identification and link commands, the same on addresses 0 and 7; nullopt for the others.
+std::optional<Reply> Unit::Impl::executeLink(std::string_view body)
+{
+    if (body == "?")
+        return Reply{0, std::string(info->firmware)};
+    if (body == "Q")
+        return Reply{0, std::string(info->defaultId)};
+    if (body == "@")
+        return Reply{0, std::to_string(index)};
+    if (body == ">") {
+        if (lastReply.empty())
+            return Reply{0, {}};
+        tx += lastReply; // the same bytes again, not executed again
+        return kDeferred;
+    }
+    if (body == "J") {
+        sendReply({0, {}}); // answered before the reset
+        resetState(false);
+        deafUntil = engine.now() + readings::kResetSeconds;
+        return kDeferred;
+    }
+    if (body == "%+" || body == "%-") {
+        checksums = body == "%+";
+        return Reply{0, {}};
+    }
+    return std::nullopt;
+}
 
 Reply Unit::Impl::execute(int address, std::string_view body)
 {
@@ -112,33 +53,13 @@ Reply Unit::Impl::execute(int address, std::string_view body)
         return executeSpindle(body);
     if (body.empty())
         return {3, {}};
-    if (body == "?")
-        return {0, std::string(info->firmware)};
-    if (body == "Q")
-        return {0, std::string(info->defaultId)};
-    if (body == "@")
-        return {0, std::to_string(index)};
-    if (body == ">") {
-        if (lastReply.empty())
-            return {0, {}};
-        tx += lastReply;
-        return kDeferred;
-    }
-    if (body == "J") {
-        sendReply({0, {}});
-        resetState(false);
-        deafUntil = engine.now() + readings::kResetSeconds;
-        return kDeferred;
-    }
-    if (body == "%+" || body == "%-") {
-        checksums = body == "%+";
-        return {0, {}};
-    }
+    if (auto link = executeLink(body))
+        return *link;
     if (body == "*S") {
         packetOpen = true;
         packet.clear();
         packetLastLine = engine.now();
-        return kDeferred;
+        return kDeferred; // a packet is answered once, at its end
     }
     if (body.starts_with("*E"))
         return {4, {}}; // end of a packet that was never started
@@ -188,9 +109,10 @@ Reply Unit::Impl::execute(int address, std::string_view body)
 // docs/gve-protocol.md §9: address 7 of GVE64/114 (spindle) plus the shared commands.
 Reply Unit::Impl::executeSpindle(std::string_view body)
 {
-    if (body == "?" || body == "Q" || body == "@" || body == ">" || body == "J" || body == "%+" ||
-        body == "%-" || body.starts_with("E"))
-        return execute(options.address, body);
+    if (auto link = executeLink(body))
+        return *link;
+    if (body.starts_with("E"))
+        return cmdEeprom(body.substr(1));
     if (!body.starts_with("V") || body.starts_with("VL") || body.starts_with("VK") ||
         body.starts_with("VN"))
         return {3, {}};
@@ -484,152 +406,6 @@ Reply Unit::Impl::cmdQueue(char c)
             engine.requestStop(); // held again until G
         return {0, {}};
     }
-}
-
-// §12: ER/EW on every variant, EFR/EUR/EFW/EUW on GVE64/114.
-Reply Unit::Impl::cmdEeprom(std::string_view rest)
-{
-    std::string_view op;
-    for (std::string_view candidate : {"FR", "UR", "FW", "UW", "R", "W"}) {
-        if (rest.starts_with(candidate)) {
-            op = candidate;
-            break;
-        }
-    }
-    if (op.empty() || (op.size() == 2 && !info->hasEepromFloat))
-        return {3, {}};
-    const auto parts = split(rest.substr(op.size()));
-    const bool write = op.back() == 'W';
-    if (parts.size() != (write ? 2u : 1u))
-        return {4, {}};
-    const Parsed addr = parseHex(parts[0]);
-    if (addr.status == Num::Syntax)
-        return {4, {}};
-    const bool wide = op.size() == 2;
-    if (addr.status == Num::Range || addr.value > (wide ? 0xFC : 0xFF))
-        return {5, {}};
-    const int a = static_cast<int>(addr.value);
-    if (!write) {
-        if (op == "R")
-            return {0, hex2(eeprom.byte(a))};
-        if (op == "FR")
-            return {0, readings::formatEepromFloat(eeprom.readFloat(a))};
-        return {0, std::to_string(eeprom.readUint32(a))};
-    }
-    if (op == "W") {
-        const Parsed value = parseHex(parts[1]);
-        if (value.status == Num::Syntax)
-            return {4, {}};
-        if (value.status == Num::Range || value.value > 0xFF)
-            return {5, {}};
-        eeprom.setByte(a, static_cast<std::uint8_t>(value.value));
-    } else if (op == "FW") {
-        float f = 0;
-        const auto text = parts[1];
-        const auto res = std::from_chars(text.data(), text.data() + text.size(), f);
-        if (res.ec == std::errc::invalid_argument || res.ptr != text.data() + text.size())
-            return {4, {}};
-        if (res.ec == std::errc::result_out_of_range || !std::isfinite(f))
-            return {5, {}};
-        eeprom.writeFloat(a, f);
-    } else {
-        const Parsed value = parseDec(parts[1]);
-        if (value.status == Num::Syntax)
-            return {4, {}};
-        if (value.status == Num::Range || value.value < 0 || value.value > 0xFFFFFFFFLL)
-            return {5, {}};
-        eeprom.writeUint32(a, static_cast<std::uint32_t>(value.value));
-    }
-    if (!options.eepromFile.empty())
-        eepromError = eeprom.save(options.eepromFile);
-    return {0, {}};
-}
-
-// §10: SRn, SWn,hh, F.
-Reply Unit::Impl::cmdStatus(std::string_view body)
-{
-    if (body == "F")
-        return {0, hex2(st6() | (engine.queueLength() >= std::size_t(info->queueCapacity) ||
-                                         (kept && !engine.isIdle())
-                                     ? 0x20
-                                     : 0))};
-    if (body.size() < 3 || (body[1] != 'R' && body[1] != 'W'))
-        return {3, {}};
-    const auto parts = split(body.substr(2));
-    const bool write = body[1] == 'W';
-    if (parts.size() != (write ? 2u : 1u))
-        return {4, {}};
-    const Parsed n = parseDec(parts[0]);
-    if (n.status == Num::Syntax)
-        return {4, {}};
-    std::int64_t value = 0;
-    if (write) {
-        const Parsed v = parseHex(parts[1]);
-        if (v.status == Num::Syntax)
-            return {4, {}};
-        if (v.status == Num::Range || v.value > 0xFF)
-            return {5, {}};
-        value = v.value;
-    }
-    if (n.status == Num::Range || n.value < 0 || n.value > 6)
-        return {5, {}};
-    const int idx = static_cast<int>(n.value);
-    if (!write)
-        return {0, hex2(idx == 6 ? st6() : st[idx])};
-    if (idx < 6) {
-        st[idx] = static_cast<std::uint8_t>(value);
-        checkInterrupts();
-        return {0, {}};
-    }
-    // SW6: STOP, FREE, INTCOM and INTA are writable; RUN follows the queue.
-    stopBit = value & 0x01;
-    freeBit = value & 0x02;
-    intcom = value & 0x10;
-    const bool newInta = value & 0x80;
-    if (newInta && !inta)
-        engine.requestStop();
-    else if (!newInta && inta)
-        engine.release();
-    inta = newInta;
-    return {0, {}};
-}
-
-// §10: O0,hh; I1; I2.
-Reply Unit::Impl::cmdIo(std::string_view body)
-{
-    const std::uint16_t levels = inputLevels();
-    if (body == "I1")
-        return {0, hex2(levels & 0xFF)};
-    if (body == "I2" && options.variant != protocol::Variant::Gve84)
-        return {0, hex2(levels >> 8)};
-    if (body.front() == 'I')
-        return {3, {}};
-    const auto parts = split(body.substr(1));
-    if (parts.size() != 2)
-        return {4, {}};
-    const Parsed port = parseHex(parts[0]);
-    const Parsed value = parseHex(parts[1]);
-    if (port.status == Num::Syntax || value.status == Num::Syntax)
-        return {4, {}};
-    if (port.status == Num::Range || port.value != 0 || value.status == Num::Range ||
-        value.value > 0xFF)
-        return {5, {}};
-    outputs = static_cast<std::uint8_t>(value.value);
-    return {0, {}};
-}
-
-// §13: Y+, Y&, Y-.
-Reply Unit::Impl::cmdMpg(std::string_view rest)
-{
-    if (!info->hasMpg)
-        return {3, {}};
-    if (rest != "+" && rest != "&" && rest != "-")
-        return {4, {}};
-    const std::string echo = "Y" + std::string(rest);
-    if (rest != "-" && (!engine.isIdle() || homing))
-        return readings::mpgReply(7, echo);
-    mpg = rest == "+" ? Mpg::Reporting : rest == "&" ? Mpg::Silent : Mpg::Off;
-    return readings::mpgReply(0, echo);
 }
 
 } // namespace frezka::emulator

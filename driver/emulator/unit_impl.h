@@ -92,7 +92,7 @@ struct Unit::Impl
     void handleLine(int address, std::string_view body);
     void sendReply(const Reply &r);
     std::string formatReply(const Reply &r) const;
-    void advanceTo(double target);
+    void advanceBy(double seconds);
     double nextEventIn() const;
     double watchdogAt() const;
     void fireWatchdog();
@@ -109,6 +109,7 @@ struct Unit::Impl
 
     // ---- unit_commands.cpp
     Reply execute(int address, std::string_view body);
+    std::optional<Reply> executeLink(std::string_view body);
     Reply executeSpindle(std::string_view body);
     Reply executePacket(int declaredCount);
     Reply cmdVector(char kind, std::string_view args);

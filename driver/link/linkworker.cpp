@@ -191,6 +191,10 @@ void LinkWorker::overrideDown()
 {
     apply(core().overrideStep(false, now()));
 }
+void LinkWorker::writeEeprom()
+{
+    apply(core().writeEeprom(now()));
+}
 void LinkWorker::sendRaw(const QString &text)
 {
     apply(core().sendRaw(text.toStdString(), now()));

@@ -60,6 +60,7 @@ public slots:
     void overrideUp();
     void overrideDown();
     void sendRaw(const QString &text);
+    void writeEeprom();
 
 signals:
     void stateChanged(const frezka::driver::MachineState &state);

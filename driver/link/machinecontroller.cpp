@@ -120,6 +120,10 @@ void MachineController::overrideDown()
 {
     QMetaObject::invokeMethod(m_worker, &LinkWorker::overrideDown);
 }
+void MachineController::writeEeprom()
+{
+    QMetaObject::invokeMethod(m_worker, &LinkWorker::writeEeprom);
+}
 void MachineController::sendRaw(const QString &text)
 {
     QMetaObject::invokeMethod(m_worker, [w = m_worker, text] { w->sendRaw(text); });

@@ -18,8 +18,7 @@
 //   G38.2-.5 probe moves in a job (IN15 armed as an interrupt; trip point in state.probeSteps;
 //     when the probe stops short and motion follows, the job ends: the planner planned the rest
 //     from the probe's end point).
-//   not implemented: writing the profile's EEPROM values to the unit (differences are only
-//     reported in state.eepromDifferences).
+//   writeEeprom: writes the profile's EEPROM settings when asked (connect only compares them).
 
 #include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
@@ -98,6 +97,9 @@ public slots:
     // A raw command for the console, e.g. "!0PF" or "PF" (address 0 assumed). Validated
     // against the variant; the reply comes as a logLine.
     void sendRaw(const QString &text);
+    // Writes the profile's EEPROM settings to the unit (only when asked; on connect they are
+    // only compared: state.eepromDifferences). Idle only.
+    void writeEeprom();
 
 signals:
     void stateChanged(const frezka::driver::MachineState &state);

@@ -98,6 +98,8 @@ public:
     Result setOverride(int percent, double now);
     Result overrideStep(bool up, double now);
     Result sendRaw(const std::string &text, double now);
+    // Writes the profile's EEPROM settings (§12) to the unit, then compares again.
+    Result writeEeprom(double now);
     void setConfig(machine::MachineConfig config) { m_config = std::move(config); }
 
     const MachineState &state() const { return m_state; }

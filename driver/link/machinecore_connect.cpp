@@ -183,3 +183,40 @@ void MachineCore::connected()
 }
 
 } // namespace frezka::driver
+
+namespace frezka::driver {
+
+MachineCore::Result MachineCore::writeEeprom(double now)
+{
+    if (m_state.mode != MachineMode::Idle)
+        return MachineError{std::string("Writing the EEPROM is not possible now (the machine is ") +
+                                machineModeName(m_state.mode) + ")",
+                            {},
+                            {},
+                            -1};
+    const bool wide = variantInfo(m_config.unit.variant).hasEepromFloat;
+    for (const machine::EepromEntry &e : machine::eepromEntries(m_config)) {
+        Command c;
+        switch (e.kind) {
+        case machine::EepromKind::Byte:
+            c = cmd::eepromWriteByte(e.address, static_cast<int>(std::lround(e.value)));
+            break;
+        case machine::EepromKind::Float:
+            c = cmd::eepromWriteFloat(e.address, e.value);
+            break;
+        case machine::EepromKind::Uint32:
+            c = cmd::eepromWriteUint(e.address, std::llround(e.value));
+            break;
+        }
+        if (!wide && e.kind != machine::EepromKind::Byte)
+            continue;
+        send(c, [this, what = e.what](const Outcome &o) {
+            unitError(o, "writing the EEPROM (" + what + ")", MachineMode::Alarm);
+        });
+    }
+    compareEeprom();
+    pump(now);
+    return std::nullopt;
+}
+
+} // namespace frezka::driver

@@ -45,3 +45,133 @@ TEST(Interpreter, InchesAreConvertedToMillimetres)
     EXPECT_EQ(r.toolpath.end(0), (Point4{25.4, -12.7, 0, 0}));
     EXPECT_DOUBLE_EQ(r.toolpath.feedMmPerMin(1), 254);
 }
+
+TEST(Interpreter, CheckModeCollectsEveryError)
+{
+    Options options;
+    options.collectAllErrors = true;
+    const Result r = interpretText("G21 F100\nG1 X1 Q2\nG0 X1\nG2 X5 Y0 R1\nG0 G41 X1\n", options);
+    ASSERT_EQ(r.errors.size(), 4u); // three bad blocks and the missing program end
+    EXPECT_EQ(r.errors[0].code, ErrorCode::WordNotUsed);
+    EXPECT_EQ(r.errors[1].code, ErrorCode::ArcRadiusTooSmall);
+    EXPECT_EQ(r.errors[2].code, ErrorCode::UnsupportedGCode);
+    EXPECT_EQ(r.errors[3].code, ErrorCode::FileEndedWithoutEnd);
+    EXPECT_EQ(r.errors[2].line, 5u);
+}
+
+TEST(Interpreter, EndlessLoopEndsWithTooManyBlocks)
+{
+    Options options;
+    options.maxBlocks = 1000;
+    const Result r = interpretText("o1 while [1]\nG0 X1\no1 endwhile\nM2\n", options);
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].code, ErrorCode::TooManyBlocks);
+}
+
+TEST(Interpreter, SystemParametersFollowTheState)
+{
+    const Result r = interpretText("G10 L2 P2 X5 Y6\nG55 G0 X1 Y2\n"
+                                   "G0 X#5220 Y#5241\n"       // 2 and G55 X offset 5
+                                   "G0 X[#5420 + 1] Y#<_y>\n" // current program position
+                                   "G20\nG0 X#5241\n"         // offsets read in inches
+                                   "M2\n");
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    EXPECT_EQ(r.toolpath.end(1), (Point4{2 + 5, 5 + 6, 0, 0}));
+    EXPECT_EQ(r.toolpath.end(2), (Point4{3 + 5, 5 + 6, 0, 0}));
+    EXPECT_NEAR(r.toolpath.end(3).x, 5 + 5.0, 1e-12); // 5 mm offset = 5/25.4 in, back to mm
+}
+
+TEST(Interpreter, NamedParametersAreLocalToSubroutinesUnlessGlobal)
+{
+    const Result r = interpretText("#<a> = 1\n#<_g> = 2\no<s> sub\n#<_g> = [#<_g> + 1]\n"
+                                   "G0 X#<a>\no<s> endsub\no<s> call\nM2\n");
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].code, ErrorCode::NamedParameterUndefined);
+    EXPECT_EQ(r.errors[0].line, 5u);
+    EXPECT_EQ(r.errors[0].column, 5u);
+}
+
+TEST(Interpreter, BlockDeleteIsAnOption)
+{
+    const std::string text = "/G0 X5\nG0 Y1\nM2\n";
+    EXPECT_EQ(interpretText(text).toolpath.end(0).x, 5); // LinuxCNC's default: switch off
+    Options options;
+    options.blockDelete = true;
+    const Result r = interpretText(text, options);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.toolpath.end(0), (Point4{0, 1, 0, 0}));
+}
+
+TEST(Interpreter, InverseTimeFeedBecomesMillimetresPerMinute)
+{
+    const Result r = interpretText("G93 G1 X10 F2\nG94 F100\nM2\n");
+    ASSERT_TRUE(r.ok());
+    EXPECT_DOUBLE_EQ(r.toolpath.feedMmPerMin(0), 20); // 10 mm in 1/2 minute
+}
+
+TEST(Interpreter, PathModeEventCarriesToleranceInMillimetres)
+{
+    const Result r = interpretText("G20 G64 P0.01 Q0.001\nM2\n");
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.toolpath.kind(0), MotionKind::Event);
+    const Event &e = r.toolpath.event(0);
+    EXPECT_EQ(e.kind, EventKind::PathMode);
+    EXPECT_EQ(e.value, 2);
+    EXPECT_NEAR(e.p, 0.254, 1e-12);
+    EXPECT_NEAR(e.q, 0.0254, 1e-12);
+}
+
+TEST(Interpreter, ArcsKeepTheirCentreCompactly)
+{
+    const Result r = interpretText("G0 X10 Y0 Z3 A7\nG18 G2 X0 Z13 I-10 K0 F100\nM2\n");
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    const ArcInfo arc = r.toolpath.arc(1);
+    EXPECT_EQ(arc.plane, Plane::XZ);
+    EXPECT_EQ(arc.turns, -1);
+    EXPECT_EQ(arc.centre, (Point4{0, 0, 3, 7})); // normal coordinate and A from the start
+}
+
+TEST(Errors, EveryCodeHasNameTextAndHint)
+{
+    for (int c = 100; c < 600; ++c) {
+        const auto code = static_cast<ErrorCode>(c);
+        const std::string name = errorName(code);
+        if (name == "Unknown")
+            continue;
+        ErrorCode back{};
+        EXPECT_TRUE(errorCodeFromName(name, &back));
+        EXPECT_EQ(back, code);
+        EXPECT_GT(std::string(errorHint(code)).size(), 5u) << name;
+    }
+    const Error e{ErrorCode::UnknownGCode, 12, 7, "G12.3"};
+    EXPECT_EQ(englishMessage(e),
+              "Unknown G code G12.3. Check the number; see the list of supported codes.");
+    EXPECT_EQ(formatError(QStringLiteral("a.nc"), e).toStdString(),
+              "a.nc:12:7: Unknown G code G12.3. Check the number; see the list of supported "
+              "codes.");
+}
+
+TEST(Trace, JsonLinesUseFourDecimalsAndTheDocumentedKeys)
+{
+    const Result r = interpretText("G0 X1.23456 Y-0.00004\nG3 X0 Y1.23456 I-1.23456 F60\nM2\n");
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    EXPECT_EQ(jsonLines(r.toolpath, false),
+              "{\"line\":1,\"type\":\"rapid\",\"x\":1.2346,\"y\":0.0000,\"z\":0.0000,"
+              "\"a\":0.0000,\"f\":0.0000}\n"
+              "{\"line\":2,\"type\":\"arc\",\"x\":0.0000,\"y\":1.2346,\"z\":0.0000,"
+              "\"a\":0.0000,\"f\":60.0000,\"cx\":0.0000,\"cy\":0.0000,\"cz\":0.0000,"
+              "\"plane\":\"XY\",\"turns\":1}\n");
+}
+
+TEST(Interpreter, StartsFromTheGivenMachineStateOptions)
+{
+    Options options;
+    options.workOffsetsMm[1] = {100, 200, -50, 0}; // G55
+    options.coordinateSystem = 1;
+    options.startMm = {1, 2, 3, 0};
+    const Result r = interpretText("G0 X0\nG54 G0 X0\nM2\n", options);
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r.toolpath.origin(), (Point4{1, 2, 3, 0}));
+    EXPECT_EQ(r.toolpath.end(0), (Point4{100, 2, 3, 0}));
+    EXPECT_EQ(r.toolpath.end(1), (Point4{0, 2, 3, 0}));
+}

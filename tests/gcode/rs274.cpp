@@ -1,5 +1,8 @@
 #include "rs274.h"
 
+#include "gcode/interpreter.h"
+#include "gcode/trace.h"
+
 #include <QDir>
 #include <QLockFile>
 #include <QProcess>
@@ -8,8 +11,10 @@
 #include <QTemporaryDir>
 #include <QTemporaryFile>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -169,6 +174,71 @@ Rs274Run runRs274(const std::string &file)
         }
     }
     return run;
+}
+
+namespace {
+
+bool near(const Point4 &p, const Point4 &q, double tol)
+{
+    return std::fabs(p.x - q.x) <= tol && std::fabs(p.y - q.y) <= tol &&
+           std::fabs(p.z - q.z) <= tol && std::fabs(p.a - q.a) <= 1e-4;
+}
+
+} // namespace
+
+testing::AssertionResult matchesRs274(const std::string &file)
+{
+    const Rs274Run ref = runRs274(file);
+    if (!ref.error.empty())
+        return testing::AssertionFailure() << "rs274: " << ref.error << " at: " << ref.errorLine;
+    const Result r = interpretFile(file);
+    if (!r.ok())
+        return testing::AssertionFailure()
+               << "frezka: " << r.errors[0].line << ":" << r.errors[0].column << ": "
+               << englishMessage(r.errors[0]);
+    const Toolpath &tp = r.toolpath;
+    std::vector<std::size_t> ours;
+    for (std::size_t i = 0; i < tp.size(); ++i) {
+        if (tp.kind(i) != MotionKind::Event)
+            ours.push_back(i);
+    }
+    const std::size_t n = std::min(ours.size(), ref.moves.size());
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = ours[k];
+        const CanonMove &m = ref.moves[k];
+        std::string entry;
+        appendJsonLine(entry, tp, i, true);
+        auto failure = [&](const char *what) {
+            return testing::AssertionFailure() << what << " differs at motion " << k
+                                               << "\n  frezka " << entry << "\n  rs274  " << m.call;
+        };
+        if (tp.kind(i) != m.kind)
+            return failure("kind");
+        if (m.kind == MotionKind::Dwell)
+            continue;
+        const double tol = 1e-4 * m.unitMm + 1e-9; // 4 decimals in program units
+        if (!near(tp.end(i), m.end, tol))
+            return failure("end point");
+        if (m.kind != MotionKind::Arc)
+            continue;
+        const ArcInfo arc = tp.arc(i);
+        if (arc.plane != m.plane || arc.turns != m.turns)
+            return failure("plane or turns");
+        Point4 c = arc.centre, mc = m.centre; // only the in-plane coordinates are defined
+        if (arc.plane == Plane::XY)
+            c.z = mc.z = 0;
+        else if (arc.plane == Plane::XZ)
+            c.y = mc.y = 0;
+        else
+            c.x = mc.x = 0;
+        c.a = mc.a = 0;
+        if (!near(c, mc, tol))
+            return failure("arc centre");
+    }
+    if (ours.size() != ref.moves.size())
+        return testing::AssertionFailure()
+               << "frezka has " << ours.size() << " motions and dwells, rs274 " << ref.moves.size();
+    return testing::AssertionSuccess();
 }
 
 } // namespace frezka::gcode::test

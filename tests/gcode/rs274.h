@@ -6,6 +6,8 @@
 
 #include "gcode/toolpath.h"
 
+#include <gtest/gtest.h>
+
 #include <string>
 #include <vector>
 
@@ -32,5 +34,9 @@ struct Rs274Run
 
 std::string rs274Path(); // empty when not installed
 Rs274Run runRs274(const std::string &file);
+
+// Runs the file through both interpreters: same motion and dwell sequence, kinds, end points and
+// arc centres within 1e-4 program units (rs274 prints 4 decimals), same arc planes and turns.
+testing::AssertionResult matchesRs274(const std::string &file);
 
 } // namespace frezka::gcode::test

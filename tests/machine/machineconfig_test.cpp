@@ -1,5 +1,7 @@
 #include "machine/machineconfig.h"
 
+#include "machine/homing.h"
+
 #include <gtest/gtest.h>
 
 #include <QTemporaryDir>
@@ -196,4 +198,23 @@ TEST(MachineConfig, EepromImageCarriesAxisSettings)
     EXPECT_EQ(eepromEntries(g114).back().address, 0xFD);
     const auto e84 = eepromEntries(defaultMachineConfig(protocol::Variant::Gve84));
     EXPECT_EQ(e84.size(), 3u);
+}
+
+TEST(MachineConfig, HomingSequenceInStepsAndPulses)
+{
+    MachineConfig c = defaultMachineConfig(protocol::Variant::Gve64);
+    c.axes[1].homing.homePositionMm = 300;
+    c.axes[1].homing.direction = 1;
+    const auto seq = homingSequence(c);
+    ASSERT_EQ(seq.size(), 3u); // Z first, then X and Y together; A absent
+    EXPECT_EQ(seq[0].axis, Axis::Z);
+    EXPECT_EQ(seq[0].travelSteps, 140 * 200);
+    EXPECT_EQ(seq[1].axis, Axis::X);
+    EXPECT_EQ(seq[1].travelSteps, -420 * 200);
+    EXPECT_EQ(seq[1].towardPulsesPerS, 2000); // 10 mm/s
+    EXPECT_EQ(seq[1].offPulsesPerS, 200);     // 1 mm/s
+    EXPECT_EQ(seq[1].backOffSteps, 2000);     // 10 mm
+    EXPECT_EQ(seq[2].axis, Axis::Y);
+    EXPECT_EQ(seq[2].order, 2);
+    EXPECT_EQ(seq[2].homeSteps, 60000);
 }

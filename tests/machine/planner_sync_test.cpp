@@ -87,8 +87,9 @@ TEST(Sync, ChangedSpindleSpeedCoolantAndEndAreSyncPoints)
     // Active low: coolant (OUT1, bit2) on with the spindle (bit0) running, then coolant off.
     EXPECT_EQ(ports, (std::vector<std::int64_t>{0xFA, 0xFE}));
     for (const UnitCommand &c : r.program.commands) {
-        if (c.op == UnitOp::Output)
+        if (c.op == UnitOp::Output) {
             EXPECT_GT(c.sourceLine, 0u);
+        }
     }
 }
 
@@ -203,4 +204,50 @@ TEST(Sync, Gve84SwitchesItsRelayAndWarnsAboutCoolant)
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_EQ(r.warnings[0].line, 2u);
     EXPECT_TRUE(r.stats.speedModeVk); // the GVE84 has VK
+}
+
+TEST(Sync, AFeedBelowTheUnitsSlowestSpeedIsAWarning)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    tp.appendFeed({11, 10, -1, 0}, 1, 4); // 1 mm/min = 3.3 pulses/s at 200 steps/mm
+    const PlanResult r = plan(tp, gve64());
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_EQ(r.warnings[0].line, 4u);
+    const auto vs = replay(r.program);
+    ASSERT_EQ(vs.size(), 1u);
+    EXPECT_EQ(vs[0].v, 10);
+    EXPECT_LE(r.stats.estimatedS, 1.02 * r.stats.boundS); // the bound runs at 10 pulses/s too
+}
+
+TEST(Sync, ProbeIsAPcSideMoveAfterTheQueueDrains)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    tp.appendFeed({20, 10, -1, 0}, 1000, 1);
+    tp.appendProbe({20, 10, -11, 0}, gcode::ProbeKind::TowardErrorIfNoContact, 100, 2);
+    tp.appendFeed({30, 10, -11, 0}, 1000, 3);
+    tp.appendProbe({30, 10, -11, 0}, gcode::ProbeKind::Toward, 100, 4); // no length
+    const PlanResult r = plan(tp, gve64());
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].line, 4u);
+    gcode::Toolpath ok;
+    ok.setOrigin({10, 10, -1, 0});
+    ok.appendFeed({20, 10, -1, 0}, 1000, 1);
+    ok.appendProbe({20, 10, -11, 0}, gcode::ProbeKind::TowardErrorIfNoContact, 120, 2);
+    const PlanResult p = plan(ok, gve64());
+    ASSERT_TRUE(p.ok());
+    const auto &cs = p.program.commands;
+    ASSERT_GE(cs.size(), 3u);
+    const UnitCommand &probe = cs.back();
+    EXPECT_EQ(probe.op, UnitOp::Probe);
+    EXPECT_EQ(probe.d, (std::array<std::int32_t, 4>{0, 0, -2000, 0}));
+    EXPECT_EQ(probe.aux, static_cast<std::int32_t>(gcode::ProbeKind::TowardErrorIfNoContact));
+    EXPECT_EQ(cs[cs.size() - 2].op, UnitOp::Speed);
+    EXPECT_EQ(cs[cs.size() - 2].value, 400); // 2 mm/s at 200 steps/mm
+    bool drained = false;
+    for (std::size_t i = 0; i + 1 < cs.size(); ++i)
+        drained = drained || cs[i].op == UnitOp::WaitIdle;
+    EXPECT_TRUE(drained);
 }

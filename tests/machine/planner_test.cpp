@@ -71,6 +71,7 @@ void expectValid(const PlanResult &r)
     expectFeasible(vs, vk);
     EXPECT_EQ(r.stats.brakeViolations, 0u);
     EXPECT_EQ(r.stats.jumpOverLimit, 0u);
+    EXPECT_EQ(r.stats.curveAccelOverLimit, 0u);
 }
 
 } // namespace
@@ -275,32 +276,36 @@ TEST(Speeds, AxisSpeedLimitCapsTheFeed)
 
 TEST(Speeds, PathSpeedIsTheFeedWhateverTheAxisScales)
 {
-    MachineConfig c = gve64();
-    c.axes[0].stepsPerMm = 200;
-    c.axes[1].stepsPerMm = 320;
-    c.axes[2].stepsPerMm = 800;
-    gcode::Toolpath tp;
-    tp.setOrigin({10, 10, -1, 0});
-    tp.appendFeed({40, 50, -1, 0}, 1200, 1); // 20 mm/s
-    tp.appendFeed({40, 50, -3, 0}, 1200, 2);
-    gcode::ArcInfo arc;
-    arc.centre = {40, 40, -3, 0};
-    tp.appendArc({40, 50, -3, 0}, arc, 1200, 3);
-    const PlanResult r = planOk(tp, c);
-    EXPECT_FALSE(r.stats.speedModeVk); // unequal scales: VN, speeds per vector
-    bool vk = true;
-    const auto vs = replay(r.program, &vk);
-    EXPECT_FALSE(vk);
-    for (const Captured &v : vs) {
-        const double dx = v.d[0] / 200.0, dy = v.d[1] / 320.0, dz = v.d[2] / 800.0;
-        const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
-        const double major = speedUnitsLength(v.d, false);
-        const double pathSpeed = v.v * length / major; // mm/s the unit runs at V
-        EXPECT_LE(pathSpeed, 20.0 + 1e-9);
-        EXPECT_GT(pathSpeed, 20.0 - length / major * 1.0001); // within one pulse/s
+    for (SpeedModeChoice mode : {SpeedModeChoice::Auto, SpeedModeChoice::Vn}) {
+        MachineConfig c = gve64();
+        c.axes[0].stepsPerMm = 200;
+        c.axes[1].stepsPerMm = 320;
+        c.axes[2].stepsPerMm = 800;
+        c.motion.speedMode = mode;
+        gcode::Toolpath tp;
+        tp.setOrigin({10, 10, -1, 0});
+        tp.appendFeed({40, 50, -1, 0}, 1200, 1); // 20 mm/s
+        tp.appendFeed({40, 50, -3, 0}, 1200, 2);
+        gcode::ArcInfo arc;
+        arc.centre = {40, 40, -3, 0};
+        tp.appendArc({40, 50, -3, 0}, arc, 1200, 3);
+        const PlanResult r = planOk(tp, c);
+        // Auto takes VK (A does not move); V is then the step vector's length per second.
+        EXPECT_EQ(r.stats.speedModeVk, mode == SpeedModeChoice::Auto);
+        bool vk = !r.stats.speedModeVk;
+        const auto vs = replay(r.program, &vk);
+        EXPECT_EQ(vk, r.stats.speedModeVk);
+        for (const Captured &v : vs) {
+            const double dx = v.d[0] / 200.0, dy = v.d[1] / 320.0, dz = v.d[2] / 800.0;
+            const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+            const double units = speedUnitsLength(v.d, vk);
+            const double pathSpeed = v.v * length / units; // mm/s the unit runs at V
+            EXPECT_LE(pathSpeed, 20.0 + 1e-9);
+            EXPECT_GT(pathSpeed, 20.0 - length / units * 1.0001); // within one pulse/s
+        }
+        expectValid(r);
+        EXPECT_LE(r.stats.estimatedS, 1.02 * r.stats.boundS);
     }
-    expectValid(r);
-    EXPECT_LE(r.stats.estimatedS, 1.02 * r.stats.boundS);
 }
 
 TEST(Passes, BackwardAndForwardFitEveryVectorInIntegers)
@@ -357,6 +362,35 @@ TEST(Strategies, BaselinesPlanTheSamePath)
     EXPECT_EQ(ops(stop, UnitOp::Line).size(), ops(full, UnitOp::Vector).size());
     EXPECT_GT(stop.stats.estimatedS, 2 * full.stats.estimatedS);
     EXPECT_DOUBLE_EQ(stop.stats.boundS, full.stats.boundS);
+    // grbl's junction deviation (0.01 mm) on a 5 mm circle chorded to 0.002 mm: faster than the
+    // axes can accelerate round it, which the full plan's curvature cap prevents.
+    EXPECT_GT(g.stats.curveAccelOverLimit, 0u);
+    EXPECT_EQ(full.stats.curveAccelOverLimit, 0u);
     expectFeasible(replay(g.program), g.stats.speedModeVk);
     EXPECT_EQ(g.stats.brakeViolations, 0u);
+}
+
+TEST(Accel, ShortVectorsKeepALowerAButALongMoveGetsItsOwn)
+{
+    gcode::Toolpath tp;
+    tp.setOrigin({25, 20, -1, 0});
+    gcode::ArcInfo arc;
+    arc.centre = {20, 20, -1, 0};
+    tp.appendArc({25, 20, -1, 0}, arc, 3000, 1); // chords in every direction
+    tp.appendFeed({125, 120, -1, 0}, 3000, 2);   // a long diagonal
+    const PlanResult r = planOk(tp, gve64());
+    const auto vs = replay(r.program);
+    std::size_t changes = 0;
+    for (std::size_t k = 1; k + 1 < vs.size(); ++k)
+        changes += vs[k].a != vs[k - 1].a ? 1 : 0;
+    EXPECT_LE(changes, 4u); // the circle's chords share one A or two
+    // The diagonal may accelerate at 400 mm/s² on both axes: 400·sqrt2 mm/s² of path.
+    EXPECT_EQ(vs.back().a,
+              static_cast<std::int64_t>(std::floor(400 * std::sqrt(2.0) * 200 / 1000)));
+    for (const Captured &v : vs) { // no vector accelerates an axis beyond its limit
+        const double len = std::sqrt(double(v.d[0]) * v.d[0] + double(v.d[1]) * v.d[1]);
+        for (int i = 0; i < 2; ++i)
+            EXPECT_LE(v.a * 1000.0 * std::abs(v.d[i]) / len / 200.0, 400.0 * 1.000001);
+    }
+    expectValid(r);
 }

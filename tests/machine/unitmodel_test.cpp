@@ -10,6 +10,7 @@ TEST(UnitModel, TriangleFromRestToRest)
 {
     const VectorRun r = runVector(0, 1e9, 0, 1000, 100);
     EXPECT_NEAR(r.timeS, 2 * std::sqrt(100.0 / 1000), 1e-12);
+    EXPECT_NEAR(r.peak, std::sqrt(100.0 * 1000), 1e-9);
     EXPECT_FALSE(r.violation);
     EXPECT_DOUBLE_EQ(r.exit, 0);
 }

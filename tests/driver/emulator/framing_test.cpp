@@ -105,6 +105,10 @@ TEST(Framing, PacketAcceptsOnlyCAndB)
     ask(unit, "!0C10,0,0\r");
     EXPECT_EQ(ask(unit, "!0*E4\r"), "4,2\r");
     EXPECT_EQ(ask(unit, "!0*E4\r"), "4\r"); // no packet open
+    for (const char *badEnd : {"!0*Ex\r", "!0*E\xFF\r", "!0*E99999\r", "!0*E\r", "!0*E-1\r"}) {
+        ask(unit, "!0*S\r!0C1,0,0\r");
+        EXPECT_EQ(ask(unit, badEnd), "4,0\r") << badEnd; // count unreadable: nothing runs
+    }
     // '@' inside an unfinished packet abandons it and is answered.
     ask(unit, "!0*S\r");
     ask(unit, "!0C10,0,0\r");

@@ -424,3 +424,19 @@ TEST(MachineCore, ProbeTrippedWithMotionAfterEndsTheJob)
     EXPECT_NE(sim.errors.back().message.find("plan it again"), std::string::npos);
     EXPECT_EQ(sim.port.unit().position()[0], 0) << "nothing after the probe ran";
 }
+
+TEST(MachineCore, EepromComparedOnConnectWrittenOnlyWhenAsked)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    const auto differences = sim.core.state().eepromDifferences;
+    ASSERT_FALSE(differences.empty()) << "the emulator's defaults differ from the profile";
+    const auto before = sim.port.unit().eepromByte(0x01);
+    sim.runner.runFor(1.0);
+    EXPECT_EQ(sim.port.unit().eepromByte(0x01), before) << "connecting never writes";
+    ASSERT_FALSE(sim.core.writeEeprom(sim.runner.now()));
+    sim.runner.runFor(2.0);
+    EXPECT_TRUE(sim.core.state().eepromDifferences.empty())
+        << sim.core.state().eepromDifferences.front();
+    EXPECT_TRUE(sim.errors.empty()) << sim.errors.front().message;
+}

@@ -71,13 +71,13 @@ def contour():
 
 
 def surface():
-    """3D finishing raster over a wavy surface: dense XZ segments of 0.1 mm (CAM style)."""
-    out = header("surface: 3D raster, 0.1 mm segments")
-    out += ["G0 X30 Y30", "G1 Z-5 F300", "F2000"]
+    """3D finishing raster over a wavy surface: dense XZ segments of 0.04 mm (CAM style)."""
+    out = header("surface: 3D finishing raster, 0.04 mm segments, F3500")
+    out += ["G0 X30 Y30", "G1 Z-5 F300", "F3500"]
     forward = True
     for row in range(12):
         y = 30 + row * 1.0
-        xs = [30 + 0.1 * i for i in range(801)]
+        xs = [30 + 0.04 * i for i in range(2001)]
         if not forward:
             xs.reverse()
         for x in xs:
@@ -90,13 +90,13 @@ def surface():
 def engrave():
     """Engraving-style spiral and lettering curves from tiny segments (0.02-0.05 mm)."""
     out = header("engrave: spiral and curves, 0.02-0.05 mm segments", 18000)
-    out += ["G0 X200 Y150", "G1 Z-0.5 F200", "F1200"]
+    out += ["G0 X200 Y150", "G1 Z-0.5 F200", "F1500"]
     t = 0.0
     while t < 16 * math.pi:
         r = 0.4 * t
         out.append("G1 X%s Y%s" % (fmt(200 + r * math.cos(t)), fmt(150 + r * math.sin(t))))
         t += 0.04 / max(r, 0.4)
-    out += ["G0 Z-1", "G0 X60 Y250", "G1 Z-0.5 F200", "F1200"]
+    out += ["G0 Z-1", "G0 X60 Y250", "G1 Z-0.5 F200", "F1500"]
     s = 0.0
     while s < 240:
         x = 60 + s

@@ -1,0 +1,241 @@
+// Executing a block's non-motion codes in LinuxCNC's order: feed mode, F, S, T, M6,
+// M3/M4/M5, M7/M8/M9, G4, then the modal groups (plane, units, G40, tool length, work offset,
+// path control, distance modes, retract mode), the non-modal G10/G28/G30/G92 family and finally
+// (after the motion) M0/M1/M2/M30.
+#include "interpreter.h"
+
+#include <cmath>
+
+namespace frezka::gcode {
+
+void Interpreter::event(EventKind kind, double value, double p, double q)
+{
+    m_toolpath.appendEvent({kind, value, p, q}, m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
+}
+
+bool Interpreter::executeModes(Error *error)
+{
+    const Block &b = m_block;
+    if (b.hasG(kGFeedMode)) {
+        // rs274ngc: any G93/G94 word resets the feed rate (an F on the same line sets it again).
+        m_inverseTime = b.g[kGFeedMode] == 930;
+        m_feed = 0;
+    }
+    if (b.has('f')) {
+        if (b.get('f') < 0)
+            return fail(ErrorCode::NegativeValue, 'f', "F", error);
+        m_feed = b.get('f');
+    }
+    if (b.has('s')) {
+        if (b.get('s') < 0)
+            return fail(ErrorCode::NegativeValue, 's', "S", error);
+        const bool changed = b.get('s') != m_speed;
+        m_speed = b.get('s');
+        const bool startsSpindle = b.hasM(kMSpindle) && b.m[kMSpindle] != 5;
+        if (changed && m_spindle != 0 && !startsSpindle)
+            event(EventKind::SpindleSpeed, m_speed);
+    }
+    if (b.has('t')) {
+        const double t = b.get('t');
+        if (t < 0)
+            return fail(ErrorCode::NegativeValue, 't', "T", error);
+        if (t != std::floor(t) || t > 1e9)
+            return fail(ErrorCode::NonIntegerValue, 't', "T", error);
+        m_selectedTool = static_cast<int>(t);
+    }
+    if (b.hasM(kMToolChange)) {
+        m_tool = m_selectedTool;
+        event(EventKind::ToolChange, m_tool);
+    }
+    if (b.hasM(kMSpindle)) {
+        const int m = b.m[kMSpindle];
+        m_spindle = m == 3 ? 1 : m == 4 ? -1 : 0;
+        event(m == 3   ? EventKind::SpindleCw
+              : m == 4 ? EventKind::SpindleCcw
+                       : EventKind::SpindleOff,
+              m == 5 ? 0 : m_speed);
+    }
+    if (b.hasM(kMCoolant)) {
+        const int m = b.m[kMCoolant];
+        if (m == 7)
+            m_mist = true;
+        else if (m == 8)
+            m_flood = true;
+        else
+            m_mist = m_flood = false;
+        event(m == 7   ? EventKind::CoolantMist
+              : m == 8 ? EventKind::CoolantFlood
+                       : EventKind::CoolantOff);
+    }
+    if (b.hasG(kGNonModal) && b.g[kGNonModal] == 40) {
+        if (b.get('p') < 0)
+            return fail(ErrorCode::NegativeValue, 'p', "P", error);
+        m_toolpath.appendEvent({EventKind::Dwell, b.get('p'), 0, 0},
+                               m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
+    }
+    return executeModalGroups(error);
+}
+
+bool Interpreter::executeModalGroups(Error *error)
+{
+    const Block &b = m_block;
+    if (b.hasG(kGPlane))
+        m_plane = b.g[kGPlane];
+    if (b.hasG(kGUnits))
+        m_metric = b.g[kGUnits] == 210;
+    if (b.hasG(kGToolLength)) {
+        const auto before = offsets();
+        if (b.g[kGToolLength] == 490) {
+            m_toolZ = 0;
+        } else {
+            int tool = m_tool;
+            if (b.has('h')) {
+                const double h = b.get('h');
+                if (h < 0 || h > 1e9 || h != std::floor(h))
+                    return fail(ErrorCode::NonIntegerValue, 'h', "H", error);
+                tool = static_cast<int>(h);
+            }
+            const auto it = m_options.toolLengthMm.find(tool);
+            m_toolZ = it == m_options.toolLengthMm.end() ? 0.0 : it->second;
+        }
+        shiftProgram(before);
+    }
+    if (b.hasG(kGCoordSystem)) {
+        const int g = b.g[kGCoordSystem];
+        const auto before = offsets();
+        m_coord = g < 590 ? (g - 540) / 10 : 5 + (g - 590);
+        shiftProgram(before);
+    }
+    if (b.hasG(kGPathControl)) {
+        const int g = b.g[kGPathControl];
+        m_pathMode = g == 610 ? 0 : g == 611 ? 1 : 2;
+        m_pathP = g == 640 && b.has('p') ? lengthWord('p') : 0;
+        m_pathQ = g == 640 && b.has('q') ? lengthWord('q') : 0;
+        event(EventKind::PathMode, m_pathMode, m_pathP, m_pathQ);
+    }
+    if (b.hasG(kGDistance))
+        m_absolute = b.g[kGDistance] == 900;
+    if (b.hasG(kGArcDistance))
+        m_arcAbsolute = b.g[kGArcDistance] == 901;
+    if (b.hasG(kGRetract))
+        m_retractToR = b.g[kGRetract] == 990;
+    return true;
+}
+
+bool Interpreter::executeNonModal(Error *error)
+{
+    if (!m_block.hasG(kGNonModal))
+        return true;
+    const int g = m_block.g[kGNonModal];
+    switch (g) {
+    case 100:
+        return setOffsets(error);
+    case 280:
+    case 300:
+        return homeMove(g == 300, error);
+    case 281:
+        m_g28 = {m_pos.x, m_pos.y, m_pos.z, m_pos.a};
+        return true;
+    case 301:
+        m_g30 = {m_pos.x, m_pos.y, m_pos.z, m_pos.a};
+        return true;
+    case 920: {
+        // rs274ngc: offset = current + offset - value, and the current position becomes value.
+        double *prog = &m_prog.x;
+        for (int i = 0; i < 4; ++i) {
+            const char c = kAxisLetters[i];
+            if (!m_block.has(c))
+                continue;
+            const double v = i < 3 ? lengthWord(c) : m_block.get(c);
+            m_g92[i] = prog[i] + m_g92[i] - v;
+            prog[i] = v;
+        }
+        m_g92Saved = m_g92;
+        m_g92Enabled = true;
+        return true;
+    }
+    case 921:
+    case 922:
+    case 923: {
+        const auto before = offsets();
+        m_g92 = g == 923 ? m_g92Saved : std::array<double, 4>{};
+        if (g == 921)
+            m_g92Saved = {};
+        m_g92Enabled = g == 923;
+        shiftProgram(before);
+        return true;
+    }
+    default: // G4 (executed with the modes), G53 (with the motion)
+        return true;
+    }
+}
+
+bool Interpreter::setOffsets(Error *error)
+{
+    const Block &b = m_block;
+    const std::uint32_t col = b.gColumn[kGNonModal];
+    if (!b.has('l'))
+        return failAt(ErrorCode::G10BadL, col, "without L", error);
+    const double l = b.get('l');
+    if (l != 2 && l != 20)
+        return fail(ErrorCode::G10BadL, 'l', "L" + std::to_string(l), error);
+    if (!b.has('p'))
+        return failAt(ErrorCode::G10BadP, col, "none", error);
+    const double p = b.get('p');
+    if (p < 0 || p > 9 || p != std::floor(p))
+        return fail(ErrorCode::G10BadP, 'p', std::to_string(p), error);
+    const int system = p == 0 ? m_coord : static_cast<int>(p) - 1;
+    const auto before = offsets();
+    const auto active = m_origin[m_coord];
+    const double *prog = &m_prog.x;
+    for (int i = 0; i < 4; ++i) {
+        const char c = kAxisLetters[i];
+        if (!b.has(c))
+            continue;
+        const double v = i < 3 ? lengthWord(c) : b.get(c);
+        // L20: the offset that makes the current position read v.
+        m_origin[system][i] = l == 2 ? v : prog[i] + active[i] - v;
+    }
+    shiftProgram(before); // no change unless the active system was set
+    return true;
+}
+
+bool Interpreter::homeMove(bool g30, Error *error)
+{
+    (void)error;
+    // Rapid to the intermediate point (program coordinates, G90/G91 honoured), then to the
+    // stored position: all axes when none is given, else only the given ones.
+    const Target mid = targetOf(false);
+    m_toolpath.appendRapid(mid.machine, m_feed * unit(), m_line);
+    moveTo(mid);
+    const std::array<double, 4> &home = g30 ? m_g30 : m_g28;
+    const bool all = !(m_block.letters & kAxisBits);
+    double *p = &m_pos.x;
+    double *prog = &m_prog.x;
+    for (int i = 0; i < 4; ++i) {
+        if (all || m_block.has(kAxisLetters[i])) {
+            p[i] = home[i];
+            prog[i] = home[i] - offset(i);
+        }
+    }
+    m_toolpath.appendRapid(m_pos, m_feed * unit(), m_line);
+    return true;
+}
+
+bool Interpreter::executeStops()
+{
+    if (!m_block.hasM(kMStop))
+        return true;
+    const int m = m_block.m[kMStop];
+    if (m == 0) {
+        event(EventKind::Pause);
+    } else if (m == 1) {
+        event(EventKind::OptionalPause);
+    } else {
+        event(EventKind::ProgramEnd);
+        m_ended = true;
+    }
+    return true;
+}
+
+} // namespace frezka::gcode
