@@ -31,6 +31,7 @@ class ConsoleWidget;
 class DroWidget;
 class IoPanel;
 class JogPanel;
+class LoadProgress;
 class OutputsPanel;
 class ProgramListing;
 class ProgramSession;
@@ -143,7 +144,7 @@ private:
     SpeedPlot *m_plot;
     IoPanel *m_io;
     QLabel *m_connection, *m_unit, *m_state, *m_file;
-    QProgressBar *m_loadProgress;
+    LoadProgress *m_loadProgress;
     QDockWidget *m_droDock, *m_runDock, *m_jogDock, *m_outputsDock, *m_programDock, *m_consoleDock,
         *m_plotDock;
     QMenu *m_fileMenu, *m_recentMenu, *m_machineMenu, *m_viewMenu, *m_toolsMenu, *m_helpMenu;

@@ -89,6 +89,7 @@ public:
     void setInterpreter(InterpretFn fn) { m_interpret = std::move(fn); }
     void setAnalyser(AnalyseFn fn) { m_analyse = std::move(fn); }
     void setMaxSceneSegments(std::size_t n) { m_maxSegments = n; }
+    void setSceneGlVertices(bool on) { m_glVertices = on; }
     void setWorkOffsets(const WorkOffsets &offsets, int active);
     // Machine position the next interpretation starts from (mm X Y Z A).
     void setStartPosition(const std::array<double, 4> &mm) { m_startMm = mm; }
@@ -116,6 +117,7 @@ private:
     InterpretFn m_interpret;
     AnalyseFn m_analyse;
     std::size_t m_maxSegments = 1'500'000;
+    bool m_glVertices = false;
     WorkOffsets m_offsets{};
     int m_activeOffset = 0;
     std::array<double, 4> m_startMm{};
