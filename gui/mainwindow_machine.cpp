@@ -134,12 +134,10 @@ void MainWindow::connectMachine()
             &driver::MachineController::jogContinuous);
     connect(m_jog, &JogPanel::jogContinuousStopped, m_controller,
             &driver::MachineController::jogStop);
-    connect(m_jog, &JogPanel::homeRequested, this, [this](int axis) {
-        if (axis >= 0)
-            m_console->appendInfo(tr("Homing runs for all axes in the profile's order (the unit "
-                                     "driver homes the whole machine)."));
-        m_controller->home();
-    });
+    // The driver homes the whole machine in the profile's order; per-axis homing is not offered
+    // until it can home one axis.
+    m_jog->setPerAxisHoming(false);
+    connect(m_jog, &JogPanel::homeRequested, m_controller, [this](int) { m_controller->home(); });
     connect(m_jog, &JogPanel::mpgToggled, m_controller, &driver::MachineController::setMpg);
 
     connect(m_outputs, &OutputsPanel::spindleRequested, this,
