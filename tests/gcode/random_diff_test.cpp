@@ -55,7 +55,7 @@ private:
 
     void block()
     {
-        switch (pick(17)) {
+        switch (pick(20)) {
         case 0:
         case 1:
         case 2:
@@ -106,6 +106,16 @@ private:
                   << "\no" << branch << " endif\n";
             break;
         }
+        case 16: // absolute arc centre computed from the current position
+            m_out << "G90.1 G91 G3 X" << num(6) << " Y" << num(6) << " I[#<_x> + " << num(3)
+                  << "] J[#<_y> + " << num(3) << "]\nG90 G91.1\n";
+            break;
+        case 17:
+            m_out << "G53 G0 X" << pos() << " Z" << num(real(-5, 5)) << "\n";
+            break;
+        case 18:
+            m_out << "G0 X[#5420 + " << num(1) << "] Y[#<_y> - " << num(1) << "]\n";
+            break;
         default:
             m_out << "G91 G1 X" << num(real(-5, 5)) << " Y" << num(real(-5, 5)) << "\nG90\n";
             break;

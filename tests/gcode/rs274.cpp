@@ -118,18 +118,26 @@ Rs274Run runRs274(const std::string &file)
         const auto open = call.find('(');
         const std::string name = call.substr(0, open);
         const std::vector<double> v = numbersIn(open == std::string::npos ? "" : call.substr(open));
+        // Offsets are kept in mm as printed (rs274 does not print them again when the units
+        // change); positions are in the units in force when printed. A is in degrees.
         auto machine = [&](double x, double y, double z, double a) {
-            return Point4{(x + g5x[0] + g92[0]) * unit, (y + g5x[1] + g92[1]) * unit,
-                          (z + g5x[2] + g92[2] + toolZ) * unit, a + g5x[3] + g92[3]};
+            return Point4{x * unit + g5x[0] + g92[0], y * unit + g5x[1] + g92[1],
+                          z * unit + g5x[2] + g92[2] + toolZ, a + g5x[3] + g92[3]};
+        };
+        auto toMm = [&](std::array<double, 6> &o) {
+            for (int i = 0; i < 3; ++i)
+                o[i] *= unit;
         };
         if (name == "USE_LENGTH_UNITS") {
             unit = call.find("INCHES") != std::string::npos ? 25.4 : 1.0;
         } else if (name == "SET_G5X_OFFSET" && v.size() >= 7) {
             std::copy(v.begin() + 1, v.begin() + 7, g5x.begin());
+            toMm(g5x);
         } else if (name == "SET_G92_OFFSET" && v.size() >= 6) {
             std::copy(v.begin(), v.begin() + 6, g92.begin());
+            toMm(g92);
         } else if (name == "USE_TOOL_LENGTH_OFFSET" && v.size() >= 3) {
-            toolZ = v[2];
+            toolZ = v[2] * unit;
         } else if (name == "SELECT_PLANE") {
             plane = call.find("XZ") != std::string::npos   ? Plane::XZ
                     : call.find("YZ") != std::string::npos ? Plane::YZ
