@@ -69,9 +69,13 @@ std::string LinkEngine::describe() const
            encodeBody(m_commands.front()) + "'";
 }
 
-double LinkEngine::timeoutFor(const Command &c, std::size_t bytes) const
+// Time from now until a reply to `c` is overdue. Counted from when our bytes have left (they may
+// queue behind earlier ones), plus the longest reply, plus the class's allowance.
+double LinkEngine::timeoutFor(const Command &c, std::size_t bytes, double now)
 {
-    const double wire = wireTime(bytes + kLongestReplyBytes);
+    const double start = std::max(now, m_txDoneAt);
+    m_txDoneAt = start + wireTime(bytes);
+    const double wire = (m_txDoneAt - now) + wireTime(kLongestReplyBytes);
     switch (c.op) {
     case Op::Halt:
         return wire + m_options.haltTimeoutS;
@@ -162,7 +166,7 @@ void LinkEngine::transmitMain(double now)
     m_stats.bytesOut += static_cast<std::int64_t>(m_wire.size());
     log(LinkLogKind::Sent, m_packet ? describe() : encodeBody(m_commands[0]));
     m_state = State::AwaitReply;
-    m_deadline = now + timeoutFor(mainCommand(), m_wire.size());
+    m_deadline = now + timeoutFor(mainCommand(), m_wire.size(), now);
 }
 
 void LinkEngine::sendAux(const Command &c, State next, double now)
@@ -172,7 +176,7 @@ void LinkEngine::sendAux(const Command &c, State next, double now)
     m_stats.bytesOut += static_cast<std::int64_t>(bytes.size());
     log(LinkLogKind::Recovery, encodeBody(c));
     m_state = next;
-    m_deadline = now + timeoutFor(c, bytes.size());
+    m_deadline = now + timeoutFor(c, bytes.size(), now);
 }
 
 void LinkEngine::receive(std::string_view bytes, double now)
@@ -241,6 +245,12 @@ void LinkEngine::onMainReply(const Line &line, double now)
     if (!reply) {
         ++m_stats.garbledLines;
         m_lastRaw = line.text;
+        if (m_packet && now < m_deadline) {
+            // Noise while a packet is on its way: its own reply may still come.
+            m_doubtfulSeen = true;
+            log(LinkLogKind::Recovery, describe() + ": garbled line '" + line.text + "', waiting");
+            return;
+        }
         recover("garbled reply '" + line.text + "'" + (err.empty() ? "" : ": " + err), now);
         return;
     }
@@ -251,7 +261,7 @@ void LinkEngine::onMainReply(const Line &line, double now)
     const bool counted = m_packet && !reply->values.empty();
     const bool doubtful = (reply->code == ReplyCode::Syntax && m_checksums && !counted) ||
                           reply->code == ReplyCode::Watchdog;
-    if (doubtful && m_packet && !m_doubtfulSeen) {
+    if (doubtful && m_packet && now < m_deadline) {
         // A plain "4" may answer a damaged first *S while the packet itself still runs and
         // answers with its count: wait for that until the packet's deadline.
         m_doubtfulSeen = true;
@@ -332,7 +342,9 @@ void LinkEngine::recover(const std::string &why, double now)
         return;
     }
     m_state = State::Settle;
-    m_deadline = now + m_options.settleS;
+    // Our own bytes may still be on the wire (a long packet): a query sent now would queue behind
+    // them and its reply come late, to be mistaken for another one. Settle after they are out.
+    m_deadline = std::max(now, m_txDoneAt) + m_options.settleS;
 }
 
 void LinkEngine::retryAux(const std::string &why, double now)
@@ -345,7 +357,9 @@ void LinkEngine::retryAux(const std::string &why, double now)
     }
     // Both '@' and '>' are harmless to repeat; after a settle pause to drop broken bytes.
     m_state = State::Settle;
-    m_deadline = now + m_options.settleS;
+    // Our own bytes may still be on the wire (a long packet): a query sent now would queue behind
+    // them and its reply come late, to be mistaken for another one. Settle after they are out.
+    m_deadline = std::max(now, m_txDoneAt) + m_options.settleS;
 }
 
 void LinkEngine::onTime(double now)
@@ -446,6 +460,7 @@ void LinkEngine::finish()
 
 void LinkEngine::reset()
 {
+    m_txDoneAt = 0;
     finish();
     m_decoder.clear();
     m_out.clear();

@@ -154,7 +154,7 @@ private:
     void log(LinkLogKind kind, const std::string &text);
     int indexAfter() const; // the unit's index once this transaction has arrived
     bool exact() const;     // the transaction must arrive exactly once (see mustArriveOnce)
-    double timeoutFor(const protocol::Command &c, std::size_t bytes) const;
+    double timeoutFor(const protocol::Command &c, std::size_t bytes, double now);
     const protocol::Command &mainCommand() const;
     std::string describe() const;
 
@@ -173,6 +173,7 @@ private:
     std::uint64_t m_tag = 0;
     std::string m_wire; // its bytes, as sent
     int m_attempts = 0;
+    double m_txDoneAt = 0;       // when the bytes written so far have left on the wire
     bool m_doubtfulSeen = false; // a packet got a plain 4 / 2: its counted reply may follow
     int m_resent = 0;
     int m_recovered = 0;

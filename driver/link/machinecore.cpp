@@ -223,9 +223,13 @@ double MachineCore::nextPollTime() const
         return m_lastPoll + m_options.pollIntervalS;
     // A poll costs a round trip: take it only while the unit has motion queued to cover it
     // several times over; when the wire is the bottleneck, poll at least every maxPollGapS.
-    // Wire-bound: polls may take at most kPollShare of the link's time.
+    // Plenty of motion queued: full rate. Little: polls may take at most kPollShare of the
+    // link's time (the wire is what limits the job). Almost none: only every maxPollGapS.
     constexpr double kPollShare = 0.04;
-    if (bufferedS() >= 3 * m_rttS + 0.02)
+    const double buffered = bufferedS();
+    if (buffered >= std::max(0.25, 10 * m_rttS))
+        return m_lastPoll + m_options.pollIntervalS;
+    if (buffered >= 3 * m_rttS + 0.02)
         return m_lastPoll + std::max(m_options.pollIntervalS, m_rttS / kPollShare);
     return m_lastPoll + m_options.maxPollGapS;
 }
@@ -387,6 +391,7 @@ void MachineCore::linkOpened(double now)
 void MachineCore::linkClosed(const std::string &why, double now)
 {
     m_now = now;
+    const bool wasOpen = m_open;
     m_open = false;
     m_engine.reset();
     m_steps.clear();
@@ -397,9 +402,13 @@ void MachineCore::linkClosed(const std::string &why, double now)
         m_needVerify = true;
         fail("link lost: " + why + "; the job is kept and can resume after reconnecting", nullptr,
              MachineMode::LinkLost);
+    } else if (why.empty()) {
+        log("link closed");
+        setMode(MachineMode::Disconnected);
     } else {
-        log("link closed: " + why);
-        setMode(why.empty() ? MachineMode::Disconnected : MachineMode::LinkLost);
+        // A port that failed to open or went away: the user must see why.
+        fail((wasOpen ? "link lost: " : "cannot connect: ") + why, nullptr,
+             wasOpen ? MachineMode::LinkLost : MachineMode::Disconnected);
     }
     publish();
 }

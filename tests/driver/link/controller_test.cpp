@@ -117,7 +117,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::Idle, 10000);
         c.run(test::denseProgram(3000, 3, 4000, 4000, 400)); // minutes of motion
         QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::Running, 5000);
-        QTest::qWait(300);
+        QTRY_VERIFY_WITH_TIMEOUT(c.state().commandsAcked > 10, 10000);
         emu.kill();
         emu.waitForFinished(5000);
         QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::LinkLost, 20000);

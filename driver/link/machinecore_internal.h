@@ -1,0 +1,39 @@
+#pragma once
+// Helpers shared by the MachineCore job files (not part of the driver's API).
+
+#include "machine/unitprogram.h"
+
+#include <string>
+
+namespace frezka::driver::detail {
+
+inline bool isMotion(machine::UnitOp op)
+{
+    return op == machine::UnitOp::Vector || op == machine::UnitOp::Line;
+}
+
+// Commands whose value stays in force for the following vectors (re-sent when resuming).
+inline bool isModal(machine::UnitOp op)
+{
+    using machine::UnitOp;
+    switch (op) {
+    case UnitOp::Brake:
+    case UnitOp::Speed:
+    case UnitOp::Accel:
+    case UnitOp::Pause:
+    case UnitOp::ShortThreshold:
+    case UnitOp::SpeedModeVk:
+    case UnitOp::SpeedModeVn:
+        return true;
+    default:
+        return false;
+    }
+}
+
+// "line 12" or "setup", for messages.
+inline std::string lineText(const machine::UnitCommand &c)
+{
+    return c.sourceLine ? "line " + std::to_string(c.sourceLine) : "setup";
+}
+
+} // namespace frezka::driver::detail
