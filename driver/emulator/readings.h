@@ -122,8 +122,21 @@ inline bool inputActive(bool level, bool polarityActiveHigh)
     return level == polarityActiveHigh;
 }
 
+// A (thousands of pulses/s^2) and XM (percent): the manuals give no range, so any positive
+// 32-bit number is accepted (0 would mean no motion: 5). The pulse rate and VL cap the result.
+inline constexpr std::int64_t kAccelMaxK = 2147483647;
+inline constexpr std::int64_t kMultiplierMaxPercent = 2147483647;
+
 // Brake-violation tolerance: an arrival faster than the allowed exit speed by more than this
 // (pulses/s, plus 1e-9 relative) counts as a violation; below it is floating-point noise.
+// Rounding cannot reach it. The last brake is planned from v^2 - 2A*remaining vs e^2, with a
+// slack of 1e-9 * max(v^2, cruise^2, A*length) (motion.cpp): a vector short by less than
+// 5e-10 of its length - under one step for any 32-bit vector - brakes onto e exactly, while
+// the rounding of the path position is a few ulps of the length (1e-16 relative), a million
+// times below that slack. A vector one step too short arrives faster by sqrt(e^2 + 2A) - e:
+// 200 pulses/s braking to a stop at the smallest A (A20), never less than A/e = 0.04 pulses/s
+// (A20 into e = 500 000). So 0.01 pulses/s (one step per 100 s) counts every violation of a
+// step or more and no rounding. Pinned by Rounding.* and Motion.BrakeViolation*.
 inline constexpr double kBrakeViolationTolerance = 0.01;
 
 // The index and the last reply are shared by addresses 0 and 7 (one processor).

@@ -212,10 +212,17 @@ Reply Unit::Impl::cmdSpeeds(std::string_view mnemonic, std::string_view args)
     if (parts.size() != 1)
         return {4, {}};
     const char m = mnemonic.front();
-    const std::int64_t shortMax =
-        options.variant == protocol::Variant::Gve84 ? kMaxSteps : 4294967295LL;
+    // Ranges as the manuals give them (docs/emulator.md "Parameter ranges"): T 1..24 ms; $ up
+    // to 2^32 - 1 on the GVE64 (its manual), 2^31 - 1 on the GVE84 and GVE114; V and B 10..the
+    // unit's pulse rate; A has no documented bound (readings::kAccelMaxK).
+    const bool wideShort = options.variant == protocol::Variant::Gve64 ||
+                           options.variant == protocol::Variant::Gve64Phantom;
+    const std::int64_t shortMax = wideShort ? 4294967295LL : kMaxSteps;
     const std::int64_t lo = m == 'T' || m == 'A' || m == '$' ? 1 : 10;
-    const std::int64_t hi = m == 'T' ? 24 : m == 'A' ? 100000 : m == '$' ? shortMax : maxRate;
+    const std::int64_t hi = m == 'T'   ? 24
+                            : m == 'A' ? readings::kAccelMaxK
+                            : m == '$' ? shortMax
+                                       : maxRate;
     if (const int code = parseAll(parts, lo, hi, v))
         return {code, {}};
     switch (m) {
@@ -247,7 +254,7 @@ Reply Unit::Impl::cmdExchange(std::string_view args)
         const auto parts = split(args.substr(1));
         if (parts.size() != 1)
             return {4, {}};
-        if (const int code = parseAll(parts, 1, 1000, v))
+        if (const int code = parseAll(parts, 1, readings::kMultiplierMaxPercent, v))
             return {code, {}};
         limits.xmPercent = static_cast<int>(v[0]);
         engine.setLimits(limits);

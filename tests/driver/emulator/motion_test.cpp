@@ -259,6 +259,32 @@ TEST(Motion, SpeedRangeFollowsTheUnitsPulseRate)
     EXPECT_NEAR(peak(unit), 15000, 1e-6); // XM cannot exceed the interpolator
 }
 
+// The manuals' ranges (docs/emulator.md "Parameter ranges"): A and XM have no documented bound
+// (any positive 32-bit number), T is 1..24, $ reaches 2^32 - 1 only on the GVE64, V/B/VL stop
+// at the unit's pulse rate.
+TEST(Motion, ParameterRangesFollowTheManuals)
+{
+    for (Variant v : {Variant::Gve84, Variant::Gve64, Variant::Gve64Phantom, Variant::Gve114}) {
+        Unit unit = readyUnit(v);
+        const bool gve64 = v == Variant::Gve64 || v == Variant::Gve64Phantom;
+        const bool gve84 = v == Variant::Gve84;
+        const std::string rate = std::to_string(unit.variantInfo().defaultMaxPulseRate);
+        EXPECT_EQ(ask(unit, "!0A1\r!0A100001\r!0A2147483647\r"), "0\r0\r0\r");
+        EXPECT_EQ(ask(unit, "!0A0\r!0A2147483648\r"), "5\r5\r");
+        EXPECT_EQ(ask(unit, "!0XM1\r!0XM1001\r!0XM2147483647\r"), "0\r0\r0\r");
+        EXPECT_EQ(ask(unit, "!0XM0\r!0XM2147483648\r"), "5\r5\r");
+        EXPECT_EQ(ask(unit, "!0T1\r!0T24\r!0T0\r!0T25\r"), "0\r0\r5\r5\r");
+        EXPECT_EQ(ask(unit, "!0$1\r!0$2147483647\r!0$0\r"), "0\r0\r5\r");
+        EXPECT_EQ(ask(unit, "!0$4294967295\r"), gve64 ? "0\r" : "5\r");
+        EXPECT_EQ(ask(unit, "!0$4294967296\r"), "5\r");
+        EXPECT_EQ(ask(unit, "!0V10\r!0B10\r!0V" + rate + "\r!0B" + rate + "\r"), "0\r0\r0\r0\r");
+        EXPECT_EQ(ask(unit, "!0V9\r!0B9\r"), "5\r5\r");
+        const std::string vl = gve84 ? "," : ",10,";
+        EXPECT_EQ(ask(unit, "!0VL" + rate + ",10" + vl + rate + "\r"), "0\r");
+        EXPECT_EQ(ask(unit, "!0VL9,10,10\r"), "5\r");
+    }
+}
+
 // Counters are exact integers at every vector end: the sum of the steps sent.
 TEST(Motion, ManyVectorsEndExactly)
 {
