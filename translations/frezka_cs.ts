@@ -593,10 +593,6 @@
         <translation>Podprogram %1 není definován</translation>
     </message>
     <message>
-        <source>Define the subroutine before calling it.</source>
-        <translation>Podprogram definujte před jeho voláním.</translation>
-    </message>
-    <message>
         <source>Subroutine calls nested too deeply</source>
         <translation>Volání podprogramů jsou vnořena příliš hluboko</translation>
     </message>
@@ -627,6 +623,18 @@
     <message>
         <source>Check the loops; one of them may never end.</source>
         <translation>Zkontrolujte cykly; některý z nich možná nikdy neskončí.</translation>
+    </message>
+    <message>
+        <source>Value of %1 is out of range</source>
+        <translation>Hodnota %1 je mimo rozsah</translation>
+    </message>
+    <message>
+        <source>Values must be finite and below 1e12 in size; check the expression.</source>
+        <translation>Hodnoty musí být konečné a v absolutní hodnotě menší než 1e12; zkontrolujte výraz.</translation>
+    </message>
+    <message>
+        <source>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</source>
+        <translation>Definujte jej v tomto souboru pomocí o&lt;název&gt; sub ... o&lt;název&gt; endsub.</translation>
     </message>
 </context>
 <context>
@@ -1542,10 +1550,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Program finished.</source>
         <translation>Program dokončen.</translation>
-    </message>
-    <message>
-        <source>Homing runs for all axes in the profile's order (the unit driver homes the whole machine).</source>
-        <translation>Najetí do reference proběhne pro všechny osy v pořadí podle profilu (ovladač jednotky referuje celý stroj).</translation>
     </message>
     <message>
         <source>No output of this machine is set up for that function; assign one in Settings › Machine profile › Outputs.</source>

@@ -593,10 +593,6 @@
         <translation>Subroutine %1 is not defined</translation>
     </message>
     <message>
-        <source>Define the subroutine before calling it.</source>
-        <translation>Define the subroutine before calling it.</translation>
-    </message>
-    <message>
         <source>Subroutine calls nested too deeply</source>
         <translation>Subroutine calls nested too deeply</translation>
     </message>
@@ -627,6 +623,18 @@
     <message>
         <source>Check the loops; one of them may never end.</source>
         <translation>Check the loops; one of them may never end.</translation>
+    </message>
+    <message>
+        <source>Value of %1 is out of range</source>
+        <translation>Value of %1 is out of range</translation>
+    </message>
+    <message>
+        <source>Values must be finite and below 1e12 in size; check the expression.</source>
+        <translation>Values must be finite and below 1e12 in size; check the expression.</translation>
+    </message>
+    <message>
+        <source>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</source>
+        <translation>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</translation>
     </message>
 </context>
 <context>
@@ -1533,10 +1541,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Program finished.</source>
         <translation>Program finished.</translation>
-    </message>
-    <message>
-        <source>Homing runs for all axes in the profile's order (the unit driver homes the whole machine).</source>
-        <translation>Homing runs for all axes in the profile's order (the unit driver homes the whole machine).</translation>
     </message>
     <message>
         <source>No output of this machine is set up for that function; assign one in Settings › Machine profile › Outputs.</source>
