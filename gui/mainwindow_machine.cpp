@@ -296,7 +296,13 @@ void MainWindow::updateProgress(const driver::MachineState &state)
     if (!m_jobClock.isValid())
         m_jobClock.start();
     const double elapsed = m_jobClock.elapsed() / 1000.0;
-    m_run->setProgress(state.progress, elapsed, state.etaS);
+    // ETA from the planner's model at the line being cut; the driver's own figure otherwise.
+    const LoadedProgram &p = m_program->program();
+    const double planned = p.remainingS(state.sourceLine);
+    if (planned >= 0 && p.estimatedS > 0)
+        m_run->setProgress(1.0 - planned / p.estimatedS, elapsed, planned);
+    else
+        m_run->setProgress(state.progress, elapsed, state.etaS);
     // Actual speed from the live position (mm/min along the travelled path).
     const qint64 now = m_jobClock.elapsed();
     if (m_lastPosMs >= 0 && now > m_lastPosMs) {

@@ -46,6 +46,14 @@ std::uint32_t LoadedProgram::entryOfLine(std::uint32_t line) const
     return lineToEntry[line];
 }
 
+double LoadedProgram::remainingS(std::uint32_t line) const
+{
+    if (estimatedS < 0 || lineEndS.empty())
+        return -1;
+    const std::size_t i = std::min<std::size_t>(line, lineEndS.size() - 1);
+    return std::max(0.0, estimatedS - double(lineEndS[i]));
+}
+
 ProgramSession::ProgramSession(QObject *parent)
     : QObject(parent)
 {

@@ -54,6 +54,10 @@ struct LoadedProgram
     // Toolpath entry of the last motion on a source line (for the cut colouring), or kNone.
     std::uint32_t entryOfLine(std::uint32_t line) const;
     std::vector<std::uint32_t> lineToEntry; // index = source line
+    // Planned seconds from the start to the end of each source line (index = line), scaled to the
+    // planner's estimate; empty when not planned. remainingS() reads it for the ETA.
+    std::vector<float> lineEndS;
+    double remainingS(std::uint32_t line) const;
 };
 
 struct InterpretRequest

@@ -2796,5 +2796,9 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>User interface language: cs or en (default: the settings, else the system language).</source>
         <translation>Jazyk uživatelského rozhraní: cs nebo en (výchozí: podle nastavení, jinak jazyk systému).</translation>
     </message>
+    <message>
+        <source>With --screenshot: home, run the program and take the screenshot after this many seconds of running.</source>
+        <translation>S --screenshot: najet do reference, spustit program a pořídit snímek po tolika sekundách běhu.</translation>
+    </message>
 </context>
 </TS>

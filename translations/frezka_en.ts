@@ -2767,5 +2767,9 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>User interface language: cs or en (default: the settings, else the system language).</source>
         <translation>User interface language: cs or en (default: the settings, else the system language).</translation>
     </message>
+    <message>
+        <source>With --screenshot: home, run the program and take the screenshot after this many seconds of running.</source>
+        <translation>With --screenshot: home, run the program and take the screenshot after this many seconds of running.</translation>
+    </message>
 </context>
 </TS>
