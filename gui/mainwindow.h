@@ -115,6 +115,7 @@ private:
     void retranslate();
     void connectProgram();
     void connectMachine();
+    void connectControls();
     void showError(const QString &message);
     void updateRecentMenu();
     void addRecent(const QString &path);
@@ -175,5 +176,8 @@ private:
     QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };
+
+// The state of the machine in the user's words ("Ready", "Tool lifted").
+QString machineModeText(driver::MachineMode mode);
 
 } // namespace frezka::gui
