@@ -14,6 +14,7 @@
 #include "gui/programsession.h"
 #include "gui/runpanel.h"
 #include "gui/settingsdialog.h"
+#include "gui/toolpathview.h"
 #include "gui/unitconfigdialog.h"
 
 #include "driver/link/machinecontroller.h"
@@ -261,6 +262,19 @@ M30
         QTest::qWait(0);
         QCOMPARE(state().mode, MachineMode::Idle);
         QCOMPARE(state().positionSteps, before);
+    }
+
+    void programOutsideTheSoftLimitsIsRedAndRefused()
+    {
+        const QString path =
+            writeProgram(QStringLiteral("far.nc"), "G21 G90\nG0 X10 Y10\nG1 X450 F1000\nM30\n");
+        QVERIFY(load(path));
+        const LoadedProgram &p = m_window->program()->program();
+        QVERIFY(!p.runnable());
+        QVERIFY(m_window->toolpathView()->model()->boundsOutsideLimits());
+        QVERIFY2(m_window->lastError().contains(QStringLiteral("far.nc:3:")),
+                 qPrintable(m_window->lastError()));
+        QVERIFY(!button(m_window->runPanel(), "run")->isEnabled());
     }
 
     void eepromWriteAndReadBack()
