@@ -10,6 +10,7 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QVBoxLayout>
 
 namespace frezka::gui {
@@ -26,6 +27,9 @@ ConsoleWidget::ConsoleWidget(QWidget *parent)
     m_hexBox = new QCheckBox(this);
     m_hexBox->setObjectName(QStringLiteral("consoleHex"));
     connect(m_hexBox, &QCheckBox::toggled, this, &ConsoleWidget::setHex);
+    m_pollBox = new QCheckBox(this);
+    m_pollBox->setObjectName(QStringLiteral("consolePolls"));
+    connect(m_pollBox, &QCheckBox::toggled, this, &ConsoleWidget::setShowPolls);
     m_save = new QPushButton(this);
     connect(m_save, &QPushButton::clicked, this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Save log"), QString(),
@@ -55,6 +59,7 @@ ConsoleWidget::ConsoleWidget(QWidget *parent)
 
     auto *tools = new QHBoxLayout;
     tools->addWidget(m_hexBox);
+    tools->addWidget(m_pollBox);
     tools->addStretch();
     tools->addWidget(m_clear);
     tools->addWidget(m_save);
@@ -75,7 +80,18 @@ ConsoleWidget::ConsoleWidget(QWidget *parent)
 
 void ConsoleWidget::append(LogDirection direction, const QByteArray &bytes)
 {
-    m_entries.push_back({QDateTime::currentDateTime(), direction, bytes});
+    // Polls: position (P, PF, P4), flags (F), inputs (I1, I2), status (SR6), and the reply that
+    // follows one (the link is half duplex, so the next received line answers it).
+    static const QRegularExpression kPoll(
+        QStringLiteral("^!?[0-7]?(P|PF|P4|F|I1|I2|SR6)(,[0-9A-F]{2})?\\r?$"));
+    bool poll = false;
+    if (direction == LogDirection::Sent) {
+        poll = kPoll.match(QString::fromLatin1(bytes).trimmed()).hasMatch();
+        m_lastSentWasPoll = poll;
+    } else if (direction == LogDirection::Received) {
+        poll = std::exchange(m_lastSentWasPoll, false);
+    }
+    m_entries.push_back({QDateTime::currentDateTime(), direction, bytes, poll});
     if (m_entries.size() > kKeep)
         m_entries.pop_front();
     m_pending = std::min(m_pending + 1, m_entries.size());
@@ -105,8 +121,14 @@ void ConsoleWidget::flush()
     QStringList lines;
     const std::size_t from = m_entries.size() - m_pending;
     const std::size_t shown = std::min<std::size_t>(m_pending, 20000);
-    for (std::size_t i = m_entries.size() - shown; i < m_entries.size(); ++i)
-        lines << formatEntry(m_entries[i]);
+    for (std::size_t i = m_entries.size() - shown; i < m_entries.size(); ++i) {
+        if (m_showPolls || !m_entries[i].poll)
+            lines << formatEntry(m_entries[i]);
+    }
+    if (lines.isEmpty()) {
+        m_pending = 0;
+        return;
+    }
     Q_UNUSED(from);
     m_pending = 0;
     m_view->appendPlainText(lines.join(QLatin1Char('\n')));
@@ -118,6 +140,15 @@ void ConsoleWidget::setHex(bool hex)
         return;
     m_hex = hex;
     m_hexBox->setChecked(hex);
+    rebuildView();
+}
+
+void ConsoleWidget::setShowPolls(bool show)
+{
+    if (show == m_showPolls)
+        return;
+    m_showPolls = show;
+    m_pollBox->setChecked(show);
     rebuildView();
 }
 
@@ -156,6 +187,8 @@ void ConsoleWidget::changeEvent(QEvent *event)
 void ConsoleWidget::retranslate()
 {
     m_hexBox->setText(tr("Hex"));
+    m_pollBox->setText(tr("Polls"));
+    m_pollBox->setToolTip(tr("Also show the periodic position and status polls"));
     m_save->setText(tr("Save log…"));
     m_clear->setText(tr("Clear"));
     m_send->setText(tr("Send"));

@@ -24,6 +24,7 @@ struct LogEntry
     QDateTime time;
     LogDirection direction = LogDirection::Info;
     QByteArray bytes;
+    bool poll = false; // a status/position poll or its reply (hidden unless "Polls" is on)
 };
 
 class ConsoleWidget : public QWidget
@@ -39,6 +40,8 @@ public:
     void appendError(const QString &text) { append(LogDirection::Error, text.toUtf8()); }
     void setHex(bool hex);
     bool isHex() const { return m_hex; }
+    // Shows the periodic position/status polls and their replies too (off by default).
+    void setShowPolls(bool show);
     // Writes the kept log as text (in the current view mode); false and a message on failure.
     bool saveTo(const QString &path, QString *error = nullptr) const;
     const std::deque<LogEntry> &entries() const { return m_entries; }
@@ -59,9 +62,11 @@ private:
     std::deque<LogEntry> m_entries;
     std::size_t m_pending = 0; // entries not yet shown
     bool m_hex = false;
+    bool m_showPolls = false;
+    bool m_lastSentWasPoll = false;
     QTimer m_flushTimer;
     QPlainTextEdit *m_view;
-    QCheckBox *m_hexBox;
+    QCheckBox *m_hexBox, *m_pollBox;
     QPushButton *m_save, *m_clear, *m_send;
     QLineEdit *m_line;
 };

@@ -96,8 +96,14 @@ void JogPanel::setAxisCount(int count)
     for (int axis = 0; axis < 4; ++axis) {
         m_jog[std::size_t(axis * 2)]->setVisible(axis < count);
         m_jog[std::size_t(axis * 2 + 1)]->setVisible(axis < count);
-        m_home[std::size_t(axis)]->setVisible(axis < count);
+        m_home[std::size_t(axis)]->setVisible(axis < count && m_perAxisHoming);
     }
+}
+
+void JogPanel::setPerAxisHoming(bool available)
+{
+    m_perAxisHoming = available;
+    setAxisCount(m_axisCount);
 }
 
 double JogPanel::stepMm() const

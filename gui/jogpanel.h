@@ -28,6 +28,8 @@ public:
     void setStepMm(double stepMm);
     double feedMmPerMin() const;
     void setMpgAvailable(bool available);
+    // Per-axis homing buttons (hidden while the driver homes only the whole machine).
+    void setPerAxisHoming(bool available);
     void setMpgOn(bool on);
     // Jog as if the button of axis (0..3) in direction (+1/-1) was clicked (keyboard).
     void jogKey(int axis, int direction, bool pressed);
@@ -54,6 +56,7 @@ private:
     QLabel *m_feedLabel, *m_stepLabel;
     QCheckBox *m_mpg;
     int m_axisCount = 4;
+    bool m_perAxisHoming = true;
 };
 
 } // namespace frezka::gui

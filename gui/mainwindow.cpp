@@ -6,6 +6,7 @@
 #include "iopanel.h"
 #include "jogpanel.h"
 #include "language.h"
+#include "loadprogress.h"
 #include "outputspanel.h"
 #include "planneradapter.h"
 #include "profilestore.h"
@@ -56,6 +57,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     buildCentral();
     m_program = new ProgramSession(this);
     m_program->setMaxSceneSegments(m_view->preferredMaxSegments());
+    m_program->setSceneGlVertices(m_view->usesOpenGl());
     m_program->setInterpreter(gcodeInterpreter());
 
     buildDocks();
@@ -67,11 +69,10 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     m_state = new QLabel(this);
     m_state->setObjectName(QStringLiteral("machineStatus"));
     m_file = new QLabel(this);
+    m_file->setMinimumWidth(260); // file name changes should not relayout the window
     m_io = new IoPanel(this);
-    m_loadProgress = new QProgressBar(this);
+    m_loadProgress = new LoadProgress(this);
     m_loadProgress->setObjectName(QStringLiteral("loadProgress"));
-    m_loadProgress->setRange(0, 1000);
-    m_loadProgress->setMaximumWidth(200);
     m_loadProgress->setVisible(false);
     sb->addWidget(m_connection);
     sb->addWidget(m_unit);
@@ -263,6 +264,8 @@ void MainWindow::openDialog()
 
 void MainWindow::openProgram(const QString &path)
 {
+    // The renderer may only now know what it runs on (GL initialises on first show).
+    m_program->setMaxSceneSegments(m_view->preferredMaxSegments());
     m_program->load(path);
 }
 
@@ -290,14 +293,12 @@ void MainWindow::updateRecentMenu()
 void MainWindow::connectProgram()
 {
     connect(m_program, &ProgramSession::loadStarted, this, [this](const QString &path) {
-        m_loadProgress->setValue(0);
+        m_loadProgress->setProgress(0, QString());
         m_loadProgress->setVisible(true);
         m_file->setText(tr("Loading %1…").arg(QFileInfo(path).fileName()));
     });
-    connect(m_program, &ProgramSession::loadProgress, this, [this](double f, const QString &stage) {
-        m_loadProgress->setValue(int(f * 1000));
-        m_loadProgress->setFormat(stage + QStringLiteral(" %p%"));
-    });
+    connect(m_program, &ProgramSession::loadProgress, this,
+            [this](double f, const QString &stage) { m_loadProgress->setProgress(f, stage); });
     connect(m_program, &ProgramSession::loadFailed, this, [this](const QString &why) {
         m_loadProgress->setVisible(false);
         m_file->setText(tr("No program"));

@@ -31,6 +31,7 @@ class ConsoleWidget;
 class DroWidget;
 class IoPanel;
 class JogPanel;
+class LoadProgress;
 class OutputsPanel;
 class ProgramListing;
 class ProgramSession;
@@ -114,6 +115,7 @@ private:
     void retranslate();
     void connectProgram();
     void connectMachine();
+    void connectControls();
     void showError(const QString &message);
     void updateRecentMenu();
     void addRecent(const QString &path);
@@ -143,7 +145,7 @@ private:
     SpeedPlot *m_plot;
     IoPanel *m_io;
     QLabel *m_connection, *m_unit, *m_state, *m_file;
-    QProgressBar *m_loadProgress;
+    LoadProgress *m_loadProgress;
     QDockWidget *m_droDock, *m_runDock, *m_jogDock, *m_outputsDock, *m_programDock, *m_consoleDock,
         *m_plotDock;
     QMenu *m_fileMenu, *m_recentMenu, *m_machineMenu, *m_viewMenu, *m_toolsMenu, *m_helpMenu;
@@ -174,5 +176,8 @@ private:
     QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };
+
+// The state of the machine in the user's words ("Ready", "Tool lifted").
+QString machineModeText(driver::MachineMode mode);
 
 } // namespace frezka::gui

@@ -29,7 +29,23 @@ namespace {
 
 using driver::MachineMode;
 
-QString modeText(MachineMode mode)
+// Output n (OUT0..OUT3) is on in port 0 (active low; bit0 OUT0, bit1 OUT3, bit2 OUT1, bit3 OUT2).
+std::uint8_t logicalOutputs(std::uint8_t port)
+{
+    const std::uint8_t on = std::uint8_t(~port);
+    return std::uint8_t((on & 0x01) | ((on & 0x04) ? 0x02 : 0) | ((on & 0x08) ? 0x04 : 0) |
+                        ((on & 0x02) ? 0x08 : 0));
+}
+
+bool isConnected(MachineMode m)
+{
+    return m != MachineMode::Disconnected && m != MachineMode::Connecting &&
+           m != MachineMode::LinkLost;
+}
+
+} // namespace
+
+QString machineModeText(MachineMode mode)
 {
     switch (mode) {
     case MachineMode::Disconnected:
@@ -57,22 +73,6 @@ QString modeText(MachineMode mode)
     }
     return {};
 }
-
-// Output n (OUT0..OUT3) is on in port 0 (active low; bit0 OUT0, bit1 OUT3, bit2 OUT1, bit3 OUT2).
-std::uint8_t logicalOutputs(std::uint8_t port)
-{
-    const std::uint8_t on = std::uint8_t(~port);
-    return std::uint8_t((on & 0x01) | ((on & 0x04) ? 0x02 : 0) | ((on & 0x08) ? 0x04 : 0) |
-                        ((on & 0x02) ? 0x08 : 0));
-}
-
-bool isConnected(MachineMode m)
-{
-    return m != MachineMode::Disconnected && m != MachineMode::Connecting &&
-           m != MachineMode::LinkLost;
-}
-
-} // namespace
 
 void MainWindow::buildCentral()
 {
@@ -109,6 +109,40 @@ void MainWindow::connectMachine()
         updateRunPhase();
     });
 
+    connectControls();
+
+    // Run or report once a (re-)load triggered by Run / Check has finished.
+    connect(m_program, &ProgramSession::loaded, this, [this] {
+        const bool run = std::exchange(m_runAfterLoad, false);
+        const bool check = std::exchange(m_checkAfterLoad, false);
+        const LoadedProgram &p = m_program->program();
+        if (check && p.runnable()) {
+            m_console->appendInfo(
+                tr("Check passed: %n move(s), estimated time %1, within the soft limits.", nullptr,
+                   int(p.planStats.vectors))
+                    .arg(RunPanel::formatDuration(p.estimatedS)));
+            statusBar()->showMessage(tr("Check passed."), 10000);
+        }
+        if (check)
+            emit programChecked(p.runnable());
+        if (run && p.runnable())
+            startPlannedRun();
+    });
+
+    m_reconnectTimer.setSingleShot(true);
+    m_reconnectTimer.setInterval(2000);
+    connect(&m_reconnectTimer, &QTimer::timeout, this, [this] {
+        if (!m_userDisconnected && m_controller->state().mode == MachineMode::LinkLost)
+            connectToUnit();
+    });
+    loadWorkOffsets();
+    // The built-in emulator (or the profile's port) is connected as soon as the loop runs.
+    QMetaObject::invokeMethod(
+        this, [this] { connectToUnit(); }, Qt::QueuedConnection);
+}
+
+void MainWindow::connectControls()
+{
     // Operator controls.
     connect(m_run, &RunPanel::runRequested, this, &MainWindow::runProgram);
     connect(m_run, &RunPanel::checkRequested, this, &MainWindow::checkProgram);
@@ -134,12 +168,10 @@ void MainWindow::connectMachine()
             &driver::MachineController::jogContinuous);
     connect(m_jog, &JogPanel::jogContinuousStopped, m_controller,
             &driver::MachineController::jogStop);
-    connect(m_jog, &JogPanel::homeRequested, this, [this](int axis) {
-        if (axis >= 0)
-            m_console->appendInfo(tr("Homing runs for all axes in the profile's order (the unit "
-                                     "driver homes the whole machine)."));
-        m_controller->home();
-    });
+    // The driver homes the whole machine in the profile's order; per-axis homing is not offered
+    // until it can home one axis.
+    m_jog->setPerAxisHoming(false);
+    connect(m_jog, &JogPanel::homeRequested, m_controller, [this](int) { m_controller->home(); });
     connect(m_jog, &JogPanel::mpgToggled, m_controller, &driver::MachineController::setMpg);
 
     connect(m_outputs, &OutputsPanel::spindleRequested, this,
@@ -172,35 +204,6 @@ void MainWindow::connectMachine()
     connect(m_dro, &DroWidget::zeroAllRequested, this, [this] { setWorkZero(-1); });
     connect(m_dro, &DroWidget::offsetSelected, this, &MainWindow::selectWorkOffset);
     connect(m_console, &ConsoleWidget::manualLineEntered, this, &MainWindow::executeManualLine);
-
-    // Run or report once a (re-)load triggered by Run / Check has finished.
-    connect(m_program, &ProgramSession::loaded, this, [this] {
-        const bool run = std::exchange(m_runAfterLoad, false);
-        const bool check = std::exchange(m_checkAfterLoad, false);
-        const LoadedProgram &p = m_program->program();
-        if (check && p.runnable()) {
-            m_console->appendInfo(
-                tr("Check passed: %n move(s), estimated time %1, within the soft limits.", nullptr,
-                   int(p.planStats.vectors))
-                    .arg(RunPanel::formatDuration(p.estimatedS)));
-            statusBar()->showMessage(tr("Check passed."), 10000);
-        }
-        if (check)
-            emit programChecked(p.runnable());
-        if (run && p.runnable())
-            startPlannedRun();
-    });
-
-    m_reconnectTimer.setSingleShot(true);
-    m_reconnectTimer.setInterval(2000);
-    connect(&m_reconnectTimer, &QTimer::timeout, this, [this] {
-        if (!m_userDisconnected && m_controller->state().mode == MachineMode::LinkLost)
-            connectToUnit();
-    });
-    loadWorkOffsets();
-    // The built-in emulator (or the profile's port) is connected as soon as the loop runs.
-    QMetaObject::invokeMethod(
-        this, [this] { connectToUnit(); }, Qt::QueuedConnection);
 }
 
 void MainWindow::connectToUnit()
@@ -258,7 +261,7 @@ void MainWindow::onState(const driver::MachineState &state)
                          on(machine::OutputFunction::AirBlow), std::uint8_t(~state.outputs));
     m_outputs->showFeedOverride(state.overridePercent);
     m_jog->setMpgOn(state.mpgOn);
-    m_connection->setText(modeText(state.mode));
+    m_connection->setText(machineModeText(state.mode));
     m_connection->setStyleSheet(isConnected(state.mode) ? QString()
                                                         : QStringLiteral("color: #c00;"));
     const auto &info = protocol::variantInfo(state.variant);
@@ -298,7 +301,13 @@ void MainWindow::updateProgress(const driver::MachineState &state)
     if (!m_jobClock.isValid())
         m_jobClock.start();
     const double elapsed = m_jobClock.elapsed() / 1000.0;
-    m_run->setProgress(state.progress, elapsed, state.etaS);
+    // ETA from the planner's model at the line being cut; the driver's own figure otherwise.
+    const LoadedProgram &p = m_program->program();
+    const double planned = p.remainingS(state.sourceLine);
+    if (planned >= 0 && p.estimatedS > 0)
+        m_run->setProgress(1.0 - planned / p.estimatedS, elapsed, planned);
+    else
+        m_run->setProgress(state.progress, elapsed, state.etaS);
     // Actual speed from the live position (mm/min along the travelled path).
     const qint64 now = m_jobClock.elapsed();
     if (m_lastPosMs >= 0 && now > m_lastPosMs) {
@@ -415,159 +424,6 @@ void MainWindow::updateRunPhase()
     m_dro->setEnabled(true);
     m_connectAction->setEnabled(!connected);
     m_disconnectAction->setEnabled(st.mode != MachineMode::Disconnected);
-}
-
-// ---- operator actions ----
-
-void MainWindow::runProgram()
-{
-    const LoadedProgram &p = m_program->program();
-    if (!p.runnable()) {
-        showError(
-            p.errors.empty()
-                ? tr("Open a program first.")
-                : tr("The program has errors and cannot run:\n%1").arg(p.errors.front().text));
-        return;
-    }
-    const auto &st = m_controller->state();
-    if (st.mode != MachineMode::Idle) {
-        showError(tr("The machine is not ready (%1); wait until it is, then Run.")
-                      .arg(modeText(st.mode)));
-        return;
-    }
-    // The plan is relative to where it starts: re-plan from the machine's actual position.
-    const gcode::Point4 o = p.toolpath->origin();
-    const std::array<double, 4> start{o.x, o.y, o.z, o.a};
-    if (start != st.positionMm || p.unitProgram->startSteps != st.positionSteps) {
-        m_program->setStartPosition(st.positionMm);
-        m_runAfterLoad = true;
-        m_console->appendInfo(tr("Planning from the current position…"));
-        m_program->reload();
-        return;
-    }
-    startPlannedRun();
-}
-
-void MainWindow::startPlannedRun()
-{
-    const LoadedProgram &p = m_program->program();
-    m_view->model()->setCutEntry(ToolpathViewModel::kNoneCut);
-    m_plot->clearActual();
-    m_actualDistanceMm = 0;
-    m_lastPosMs = -1;
-    m_jobClock.start();
-    m_console->appendInfo(tr("Running %1.").arg(QFileInfo(p.path).fileName()));
-    m_controller->run(*p.unitProgram);
-}
-
-void MainWindow::checkProgram()
-{
-    if (m_program->program().path.isEmpty()) {
-        showError(tr("Open a program first."));
-        return;
-    }
-    m_program->setStartPosition(m_controller->state().positionMm);
-    m_checkAfterLoad = true;
-    m_program->reload();
-}
-
-void MainWindow::jogStep(int axis, double deltaMm, double feedMmPerMin)
-{
-    const auto &st = m_controller->state();
-    const auto &a = m_profile.axes[std::size_t(axis)];
-    const double target = st.positionMm[std::size_t(axis)] + deltaMm;
-    static const char kAxes[] = "XYZA";
-    if (target < a.softMinMm - 1e-9 || target > a.softMaxMm + 1e-9) {
-        showError(tr("Jog refused: %1 would go to %2 mm, outside the soft limits %3 … %4 mm.")
-                      .arg(QLatin1Char(kAxes[axis]))
-                      .arg(target, 0, 'f', 3)
-                      .arg(a.softMinMm, 0, 'f', 3)
-                      .arg(a.softMaxMm, 0, 'f', 3));
-        return;
-    }
-    m_controller->jogStep(axis, deltaMm, feedMmPerMin);
-}
-
-void MainWindow::loadWorkOffsets()
-{
-    QSettings s;
-    const QVariantList list = s.value(QStringLiteral("workOffsets")).toList();
-    for (int i = 0; i < 24 && i < list.size(); ++i)
-        m_offsets[std::size_t(i / 4)][std::size_t(i % 4)] = list[i].toDouble();
-    m_activeOffset = std::clamp(s.value(QStringLiteral("activeOffset"), 0).toInt(), 0, 5);
-    m_dro->setActiveOffset(m_activeOffset);
-    m_program->setWorkOffsets(m_offsets, m_activeOffset);
-}
-
-void MainWindow::saveWorkOffsets()
-{
-    QVariantList list;
-    for (const auto &o : m_offsets)
-        for (double v : o)
-            list << v;
-    QSettings s;
-    s.setValue(QStringLiteral("workOffsets"), list);
-    s.setValue(QStringLiteral("activeOffset"), m_activeOffset);
-}
-
-void MainWindow::setWorkZero(int axis)
-{
-    const auto &st = m_controller->state();
-    if (st.mode != MachineMode::Idle) {
-        showError(tr("Set the work zero while the machine is ready and still."));
-        return;
-    }
-    for (int i = 0; i < 4; ++i) {
-        if (axis < 0 || axis == i)
-            m_offsets[std::size_t(m_activeOffset)][std::size_t(i)] = st.positionMm[std::size_t(i)];
-    }
-    saveWorkOffsets();
-    m_program->setWorkOffsets(m_offsets, m_activeOffset);
-    m_dro->setPositions(st.positionMm, workPosition(st.positionMm));
-    m_program->setStartPosition(st.positionMm);
-    m_program->reload(); // offsets apply by re-interpreting the program
-}
-
-void MainWindow::selectWorkOffset(int index)
-{
-    m_activeOffset = std::clamp(index, 0, 5);
-    saveWorkOffsets();
-    m_program->setWorkOffsets(m_offsets, m_activeOffset);
-    const auto &st = m_controller->state();
-    m_dro->setPositions(st.positionMm, workPosition(st.positionMm));
-    m_program->reload();
-}
-
-void MainWindow::executeManualLine(const QString &line)
-{
-    if (line.startsWith(QLatin1Char('!'))) {
-        m_controller->sendRaw(line);
-        return;
-    }
-    const auto &st = m_controller->state();
-    if (st.mode != MachineMode::Idle) {
-        showError(tr("Manual G-code runs only while the machine is ready."));
-        return;
-    }
-    gcode::Options options;
-    for (std::size_t i = 0; i < m_offsets.size(); ++i)
-        options.workOffsetsMm[i] = m_offsets[i];
-    options.coordinateSystem = m_activeOffset;
-    options.startMm = {st.positionMm[0], st.positionMm[1], st.positionMm[2], st.positionMm[3]};
-    gcode::Interpreter interpreter(options);
-    const std::string text = line.toStdString() + "\nM2\n";
-    gcode::Result result = interpreter.run(text);
-    if (!result.ok()) {
-        showError(gcode::formatError(tr("manual line"), result.errors.front()));
-        return;
-    }
-    const machine::PlanResult plan = machine::plan(result.toolpath, m_profile);
-    if (!plan.ok()) {
-        showError(planErrorText(tr("manual line"), plan.errors.front()));
-        return;
-    }
-    m_console->appendInfo(tr("Manual: %1").arg(line));
-    m_controller->run(plan.program);
 }
 
 } // namespace frezka::gui

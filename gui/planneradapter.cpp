@@ -84,6 +84,44 @@ std::vector<SpeedSample> plannedSpeed(const machine::UnitProgram &program,
     return out;
 }
 
+std::vector<float> plannedLineTimes(const machine::UnitProgram &program,
+                                    const machine::MachineConfig &config, bool speedModeVk,
+                                    double totalS)
+{
+    std::uint32_t maxLine = 0;
+    for (const auto &c : program.commands)
+        maxLine = std::max(maxLine, c.sourceLine);
+    std::vector<double> atLine(std::size_t(maxLine) + 1, -1.0);
+    double t = 0, v = 0;
+    for (const auto &c : program.commands) {
+        using Op = machine::UnitOp;
+        if (c.op == Op::Speed) {
+            v = double(c.value);
+        } else if (c.op == Op::Dwell) {
+            t += double(c.value) / 1000.0;
+        } else if ((c.op == Op::Vector || c.op == Op::Line) && v > 0) {
+            double steps2 = 0, major = 0;
+            for (int i = 0; i < 3; ++i) {
+                const double d = c.d[std::size_t(i)];
+                steps2 += d * d;
+                major = std::max(major, std::abs(d));
+            }
+            t += (speedModeVk ? std::sqrt(steps2) : major) / v;
+        }
+        atLine[c.sourceLine] = t;
+    }
+    std::vector<float> out(atLine.size(), 0.f);
+    const double scale = t > 0 ? totalS / t : 0.0;
+    double last = 0;
+    for (std::size_t i = 0; i < atLine.size(); ++i) {
+        if (atLine[i] >= 0)
+            last = atLine[i] * scale;
+        out[i] = float(last);
+    }
+    Q_UNUSED(config);
+    return out;
+}
+
 AnalyseFn plannerAnalyser(const machine::MachineConfig &config, double feedOverride)
 {
     return [config, feedOverride](LoadedProgram &program, const std::atomic_bool *) {
@@ -101,6 +139,8 @@ AnalyseFn plannerAnalyser(const machine::MachineConfig &config, double feedOverr
         // Decimated here, off the GUI thread (min and max of each bucket survive).
         program.speed =
             decimateSpeed(plannedSpeed(result.program, config, result.stats.speedModeVk), 4000);
+        program.lineEndS = plannedLineTimes(result.program, config, result.stats.speedModeVk,
+                                            result.stats.estimatedS);
         program.unitProgram = std::make_shared<machine::UnitProgram>(result.program);
         program.planStats = result.stats;
     };

@@ -18,6 +18,12 @@ AnalyseFn plannerAnalyser(const machine::MachineConfig &config, double feedOverr
 std::vector<SpeedSample> plannedSpeed(const machine::UnitProgram &program,
                                       const machine::MachineConfig &config, bool speedModeVk);
 
+// Planned seconds to the end of each source line (index = line), from the vectors' lengths and
+// speeds, scaled so that the last equals totalS (the planner's estimate with its waits).
+std::vector<float> plannedLineTimes(const machine::UnitProgram &program,
+                                    const machine::MachineConfig &config, bool speedModeVk,
+                                    double totalS);
+
 // Translated one-line text of a plan error.
 QString planErrorText(const QString &fileName, const machine::PlanError &error);
 

@@ -46,10 +46,18 @@ std::uint32_t LoadedProgram::entryOfLine(std::uint32_t line) const
     return lineToEntry[line];
 }
 
+double LoadedProgram::remainingS(std::uint32_t line) const
+{
+    if (estimatedS < 0 || lineEndS.empty())
+        return -1;
+    const std::size_t i = std::min<std::size_t>(line, lineEndS.size() - 1);
+    return std::max(0.0, estimatedS - double(lineEndS[i]));
+}
+
 ProgramSession::ProgramSession(QObject *parent)
     : QObject(parent)
 {
-    m_poll.setInterval(50);
+    m_poll.setInterval(100);
     connect(&m_poll, &QTimer::timeout, this, [this] {
         if (m_progress && m_stage)
             emit loadProgress(double(m_progress->load()) / 1000.0, stageName(m_stage->load()));
@@ -101,6 +109,7 @@ void ProgramSession::load(const QString &path)
     const int active = m_activeOffset;
     const std::array<double, 4> startMm = m_startMm;
     const std::size_t maxSegments = m_maxSegments;
+    const bool glVertices = m_glVertices;
     emit loadStarted(path);
 
     m_thread = QThread::create([=, this] {
@@ -154,6 +163,7 @@ void ProgramSession::load(const QString &path)
             progress->store(0);
             SceneOptions options;
             options.maxSegments = maxSegments;
+            options.glVertices = glVertices;
             auto scene = std::make_shared<ToolpathScene>(buildScene(
                 *outcome.toolpath, options,
                 [&](std::size_t d, std::size_t t) {

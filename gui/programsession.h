@@ -54,6 +54,10 @@ struct LoadedProgram
     // Toolpath entry of the last motion on a source line (for the cut colouring), or kNone.
     std::uint32_t entryOfLine(std::uint32_t line) const;
     std::vector<std::uint32_t> lineToEntry; // index = source line
+    // Planned seconds from the start to the end of each source line (index = line), scaled to the
+    // planner's estimate; empty when not planned. remainingS() reads it for the ETA.
+    std::vector<float> lineEndS;
+    double remainingS(std::uint32_t line) const;
 };
 
 struct InterpretRequest
@@ -89,6 +93,7 @@ public:
     void setInterpreter(InterpretFn fn) { m_interpret = std::move(fn); }
     void setAnalyser(AnalyseFn fn) { m_analyse = std::move(fn); }
     void setMaxSceneSegments(std::size_t n) { m_maxSegments = n; }
+    void setSceneGlVertices(bool on) { m_glVertices = on; }
     void setWorkOffsets(const WorkOffsets &offsets, int active);
     // Machine position the next interpretation starts from (mm X Y Z A).
     void setStartPosition(const std::array<double, 4> &mm) { m_startMm = mm; }
@@ -116,6 +121,7 @@ private:
     InterpretFn m_interpret;
     AnalyseFn m_analyse;
     std::size_t m_maxSegments = 1'500'000;
+    bool m_glVertices = false;
     WorkOffsets m_offsets{};
     int m_activeOffset = 0;
     std::array<double, 4> m_startMm{};

@@ -183,6 +183,9 @@ GlToolpathRenderer::~GlToolpathRenderer()
 void GlToolpathRenderer::initializeGL()
 {
     initializeOpenGLFunctions();
+    const QByteArray renderer = reinterpret_cast<const char *>(glGetString(GL_RENDERER));
+    m_softwareRasterizer = renderer.contains("llvmpipe") || renderer.contains("softpipe") ||
+                           renderer.contains("Software");
     m_ready = m_program.addShaderFromSourceCode(QOpenGLShader::Vertex, kVertexShader) &&
               m_program.addShaderFromSourceCode(QOpenGLShader::Fragment, kFragmentShader);
     m_program.bindAttributeLocation("a_pos", 0);
@@ -197,17 +200,20 @@ void GlToolpathRenderer::uploadScene()
     m_sceneDirty = false;
     const auto &scene = m_model->scene();
     m_segmentCount = scene ? scene->segments.size() : 0;
-    std::vector<float> data;
-    data.reserve(m_segmentCount * 8);
-    if (scene) {
+    std::vector<float> built;
+    const std::vector<float> *data = scene ? &scene->glVertices : &built;
+    if (scene && scene->glVertices.size() != m_segmentCount * 8) {
+        // Not prepared by the loader (e.g. a scene built by hand): build it here.
+        built.reserve(m_segmentCount * 8);
         for (const auto &s : scene->segments) {
             const float c = float(s.cls);
-            data.insert(data.end(),
-                        {s.from.x(), s.from.y(), s.from.z(), c, s.to.x(), s.to.y(), s.to.z(), c});
+            built.insert(built.end(),
+                         {s.from.x(), s.from.y(), s.from.z(), c, s.to.x(), s.to.y(), s.to.z(), c});
         }
+        data = &built;
     }
     m_vbo.bind();
-    m_vbo.allocate(data.data(), int(data.size() * sizeof(float)));
+    m_vbo.allocate(data->data(), int(data->size() * sizeof(float)));
     m_vbo.release();
 }
 

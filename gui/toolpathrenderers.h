@@ -51,6 +51,9 @@ public:
     ~GlToolpathRenderer() override;
     // True once initializeGL ran and the shaders linked.
     bool isReady() const { return m_ready; }
+    // True when the GL implementation rasterizes on the CPU (llvmpipe, softpipe): the view
+    // then keeps its scene as small as the QPainter view does.
+    bool isSoftwareRasterizer() const { return m_softwareRasterizer; }
 
 protected:
     void initializeGL() override;
@@ -69,6 +72,7 @@ private:
     std::size_t m_segmentCount = 0;
     bool m_sceneDirty = true;
     bool m_ready = false;
+    bool m_softwareRasterizer = false;
 };
 
 // True when a QOpenGLWidget can be shown here (not offscreen/minimal, and a context can be

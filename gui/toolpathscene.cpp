@@ -137,6 +137,15 @@ ToolpathScene buildScene(const gcode::Toolpath &path, const SceneOptions &option
     double merge = std::max(1e-6, double(scene.bounds.diagonal()) * options.mergeFraction);
     while (!buildPass(path, merge, options.maxSegments, scene, progress, cancel))
         merge *= 4;
+    if (options.glVertices) {
+        scene.glVertices.reserve(scene.segments.size() * 8);
+        for (const auto &seg : scene.segments) {
+            const float c = float(seg.cls);
+            scene.glVertices.insert(scene.glVertices.end(),
+                                    {seg.from.x(), seg.from.y(), seg.from.z(), c, seg.to.x(),
+                                     seg.to.y(), seg.to.z(), c});
+        }
+    }
     if (progress)
         progress(path.size(), path.size());
     return scene;

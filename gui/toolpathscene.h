@@ -44,6 +44,9 @@ struct ToolpathScene
 {
     std::vector<SceneSegment> segments; // in program order (entry non-decreasing)
     SceneBounds bounds;                 // of the motion (all points, before decimation)
+    // The segments as OpenGL line vertices (x, y, z, class; two per segment), built off the GUI
+    // thread when SceneOptions::glVertices is set, so the upload is a single copy.
+    std::vector<float> glVertices;
     std::size_t sourceEntries = 0;
     bool isEmpty() const { return segments.empty(); }
     // Index of the first segment whose entry is > entry (segments before it are cut).
@@ -56,6 +59,7 @@ struct SceneOptions
     // of the same class while the direction stays within ~3 degrees.
     double mergeFraction = 1.0 / 4000.0;
     std::size_t maxSegments = 1'500'000; // hard cap: decimation coarsens until below
+    bool glVertices = false;             // also fill ToolpathScene::glVertices
 };
 
 // Builds the display scene. progress(done, total) is called now and then from the calling

@@ -54,7 +54,9 @@ ToolpathView::ToolpathView(QWidget *parent, Backend backend)
 
 std::size_t ToolpathView::preferredMaxSegments() const
 {
-    return m_gl ? 1'500'000 : 250'000;
+    if (m_gl && !static_cast<GlToolpathRenderer *>(m_renderer)->isSoftwareRasterizer())
+        return 600'000;
+    return 100'000; // QPainter, or GL rasterized on the CPU: keep every frame well below 100 ms
 }
 
 QImage ToolpathView::grabFrame()

@@ -12,11 +12,15 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 export XDG_CONFIG_HOME="$tmp/config" XDG_RUNTIME_DIR="$tmp/run"
 mkdir -p "$XDG_RUNTIME_DIR" && chmod 700 "$XDG_RUNTIME_DIR"
-shot() { # language png
+shot() { # language png [extra options]
+    local lang=$1 png=$2
+    shift 2
     xvfb-run -a -s "-screen 0 1366x768x24" \
-        "$build/app/frezka" --language "$1" --screenshot "$out/$2" \
+        "$build/app/frezka" --language "$lang" --screenshot "$out/$png" "$@" \
         resources/programs/frezka-demo.nc
-    echo "wrote $out/$2"
+    echo "wrote $out/$png"
 }
 shot en main-window.png
 shot cs main-window-cs.png
+# Half-way through the demo on the built-in emulator: cut part, tool, DRO, progress, speed.
+shot en running.png --screenshot-running 40

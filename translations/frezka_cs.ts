@@ -2,6 +2,13 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
 <context>
+    <name>EmulatorTransport</name>
+    <message>
+        <source>built-in %1 emulator</source>
+        <translation>vestavěný emulátor %1</translation>
+    </message>
+</context>
+<context>
     <name>LinkWorker</name>
     <message>
         <source>connected: %1</source>
@@ -12,8 +19,8 @@
         <translation>není zadán sériový port</translation>
     </message>
     <message>
-        <source>the built-in emulator is not available yet</source>
-        <translation>vestavěný emulátor zatím není k dispozici</translation>
+        <source>unknown connection kind</source>
+        <translation>neznámý druh připojení</translation>
     </message>
 </context>
 <context>
@@ -586,10 +593,6 @@
         <translation>Podprogram %1 není definován</translation>
     </message>
     <message>
-        <source>Define the subroutine before calling it.</source>
-        <translation>Podprogram definujte před jeho voláním.</translation>
-    </message>
-    <message>
         <source>Subroutine calls nested too deeply</source>
         <translation>Volání podprogramů jsou vnořena příliš hluboko</translation>
     </message>
@@ -620,6 +623,18 @@
     <message>
         <source>Check the loops; one of them may never end.</source>
         <translation>Zkontrolujte cykly; některý z nich možná nikdy neskončí.</translation>
+    </message>
+    <message>
+        <source>Value of %1 is out of range</source>
+        <translation>Hodnota %1 je mimo rozsah</translation>
+    </message>
+    <message>
+        <source>Values must be finite and below 1e12 in size; check the expression.</source>
+        <translation>Hodnoty musí být konečné a v absolutní hodnotě menší než 1e12; zkontrolujte výraz.</translation>
+    </message>
+    <message>
+        <source>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</source>
+        <translation>Definujte jej v tomto souboru pomocí o&lt;název&gt; sub ... o&lt;název&gt; endsub.</translation>
     </message>
 </context>
 <context>
@@ -1075,6 +1090,14 @@
         <source>G-code (e.g. G0 X10) or a raw unit command (e.g. !0PF), Enter sends</source>
         <translation>G-kód (např. G0 X10) nebo přímý příkaz jednotce (např. !0PF), Enter odešle</translation>
     </message>
+    <message>
+        <source>Polls</source>
+        <translation>Dotazy</translation>
+    </message>
+    <message>
+        <source>Also show the periodic position and status polls</source>
+        <translation>Zobrazit i pravidelné dotazy na polohu a stav</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::DroWidget</name>
@@ -1527,10 +1550,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Program finished.</source>
         <translation>Program dokončen.</translation>
-    </message>
-    <message>
-        <source>Homing runs for all axes in the profile's order (the unit driver homes the whole machine).</source>
-        <translation>Najetí do reference proběhne pro všechny osy v pořadí podle profilu (ovladač jednotky referuje celý stroj).</translation>
     </message>
     <message>
         <source>No output of this machine is set up for that function; assign one in Settings › Machine profile › Outputs.</source>
@@ -2776,6 +2795,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>User interface language: cs or en (default: the settings, else the system language).</source>
         <translation>Jazyk uživatelského rozhraní: cs nebo en (výchozí: podle nastavení, jinak jazyk systému).</translation>
+    </message>
+    <message>
+        <source>With --screenshot: home, run the program and take the screenshot after this many seconds of running.</source>
+        <translation>S --screenshot: najet do reference, spustit program a pořídit snímek po tolika sekundách běhu.</translation>
     </message>
 </context>
 </TS>

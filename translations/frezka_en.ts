@@ -2,6 +2,13 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>EmulatorTransport</name>
+    <message>
+        <source>built-in %1 emulator</source>
+        <translation>built-in %1 emulator</translation>
+    </message>
+</context>
+<context>
     <name>LinkWorker</name>
     <message>
         <source>connected: %1</source>
@@ -12,8 +19,8 @@
         <translation>no serial port given</translation>
     </message>
     <message>
-        <source>the built-in emulator is not available yet</source>
-        <translation>the built-in emulator is not available yet</translation>
+        <source>unknown connection kind</source>
+        <translation>unknown connection kind</translation>
     </message>
 </context>
 <context>
@@ -586,10 +593,6 @@
         <translation>Subroutine %1 is not defined</translation>
     </message>
     <message>
-        <source>Define the subroutine before calling it.</source>
-        <translation>Define the subroutine before calling it.</translation>
-    </message>
-    <message>
         <source>Subroutine calls nested too deeply</source>
         <translation>Subroutine calls nested too deeply</translation>
     </message>
@@ -620,6 +623,18 @@
     <message>
         <source>Check the loops; one of them may never end.</source>
         <translation>Check the loops; one of them may never end.</translation>
+    </message>
+    <message>
+        <source>Value of %1 is out of range</source>
+        <translation>Value of %1 is out of range</translation>
+    </message>
+    <message>
+        <source>Values must be finite and below 1e12 in size; check the expression.</source>
+        <translation>Values must be finite and below 1e12 in size; check the expression.</translation>
+    </message>
+    <message>
+        <source>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</source>
+        <translation>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</translation>
     </message>
 </context>
 <context>
@@ -1075,6 +1090,14 @@
         <source>G-code (e.g. G0 X10) or a raw unit command (e.g. !0PF), Enter sends</source>
         <translation>G-code (e.g. G0 X10) or a raw unit command (e.g. !0PF), Enter sends</translation>
     </message>
+    <message>
+        <source>Polls</source>
+        <translation>Polls</translation>
+    </message>
+    <message>
+        <source>Also show the periodic position and status polls</source>
+        <translation>Also show the periodic position and status polls</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::DroWidget</name>
@@ -1518,10 +1541,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Program finished.</source>
         <translation>Program finished.</translation>
-    </message>
-    <message>
-        <source>Homing runs for all axes in the profile's order (the unit driver homes the whole machine).</source>
-        <translation>Homing runs for all axes in the profile's order (the unit driver homes the whole machine).</translation>
     </message>
     <message>
         <source>No output of this machine is set up for that function; assign one in Settings › Machine profile › Outputs.</source>
@@ -2747,6 +2766,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>User interface language: cs or en (default: the settings, else the system language).</source>
         <translation>User interface language: cs or en (default: the settings, else the system language).</translation>
+    </message>
+    <message>
+        <source>With --screenshot: home, run the program and take the screenshot after this many seconds of running.</source>
+        <translation>With --screenshot: home, run the program and take the screenshot after this many seconds of running.</translation>
     </message>
 </context>
 </TS>

@@ -5,10 +5,42 @@
 #include "gui/mainwindow.h"
 #include "gui/programsession.h"
 
+#include "driver/link/machinecontroller.h"
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QSettings>
 #include <QTimer>
+
+#include <functional>
+#include <memory>
+
+namespace {
+
+// Screenshot of a running job: home once the unit is ready, run, shoot after ms of running.
+void runForScreenshot(frezka::gui::MainWindow &window, int ms, const std::function<void()> &shoot)
+{
+    using frezka::driver::MachineMode;
+    auto *timer = new QTimer(&window);
+    auto step = std::make_shared<int>(0);
+    QObject::connect(timer, &QTimer::timeout, &window, [&window, timer, step, ms, shoot] {
+        const auto &st = window.controller()->state();
+        if (*step == 0 && st.mode == MachineMode::Idle) {
+            window.controller()->home();
+            *step = 1;
+        } else if (*step == 1 && st.mode == MachineMode::Idle && st.homed) {
+            window.runProgram();
+            *step = 2;
+        } else if (*step == 2 && st.mode == MachineMode::Running) {
+            *step = 3;
+            timer->stop();
+            QTimer::singleShot(ms, &window, shoot);
+        }
+    });
+    timer->start(100);
+}
+
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -40,6 +72,12 @@ int main(int argc, char **argv)
                                         "then quit (README screenshots)."),
         QStringLiteral("png"));
     parser.addOption(screenshot);
+    QCommandLineOption screenshotRun(
+        QStringLiteral("screenshot-running"),
+        QApplication::translate("main", "With --screenshot: home, run the program and take the "
+                                        "screenshot after this many seconds of running."),
+        QStringLiteral("seconds"));
+    parser.addOption(screenshotRun);
     parser.addPositionalArgument(QStringLiteral("program"),
                                  QApplication::translate("main", "G-code program to open."));
     parser.process(app);
@@ -61,11 +99,18 @@ int main(int argc, char **argv)
                 QCoreApplication::exit(ok ? 0 : 1);
             });
         };
-        if (parser.positionalArguments().isEmpty())
+        if (parser.positionalArguments().isEmpty()) {
             shoot();
-        else
+        } else if (parser.isSet(screenshotRun)) {
+            const int ms = int(parser.value(screenshotRun).toDouble() * 1000);
+            QObject::connect(
+                window.program(), &frezka::gui::ProgramSession::loaded, &window,
+                [&window, ms, shoot] { runForScreenshot(window, ms, shoot); },
+                Qt::SingleShotConnection);
+        } else {
             QObject::connect(window.program(), &frezka::gui::ProgramSession::loaded, &window,
                              shoot);
+        }
     }
     if (!parser.positionalArguments().isEmpty())
         window.openProgram(parser.positionalArguments().constFirst());

@@ -1,24 +1,22 @@
 (Frezka sample: five-pointed star, 20 mm across, engraved 0.3 mm deep in two passes)
-(Work zero: star centre, 60 mm below Z home, so it runs on a freshly homed GVE64 profile)
+(Machine coordinates of the default GVE64 profile: star centre at X100 Y100, surface at Z-60)
 G21 G90 G17 G94
-G10 L2 P1 X100 Y100 Z-60
-G54
 M3 S18000
-G0 Z3
-G0 X10 Y0
-G1 Z-0.15 F200
-G1 X-8.090 Y5.878 F1200
-G1 X3.090 Y-9.511
-G1 X3.090 Y9.511
-G1 X-8.090 Y-5.878
-G1 X10 Y0
-G1 Z-0.3 F200
-G1 X-8.090 Y5.878 F1200
-G1 X3.090 Y-9.511
-G1 X3.090 Y9.511
-G1 X-8.090 Y-5.878
-G1 X10 Y0
-G0 Z3
-G0 X0 Y0
+G0 Z-57
+G0 X110 Y100
+G1 Z-60.15 F200
+G1 X91.91 Y105.878 F1200
+G1 X103.09 Y90.489
+G1 X103.09 Y109.511
+G1 X91.91 Y94.122
+G1 X110 Y100
+G1 Z-60.3 F200
+G1 X91.91 Y105.878 F1200
+G1 X103.09 Y90.489
+G1 X103.09 Y109.511
+G1 X91.91 Y94.122
+G1 X110 Y100
+G0 Z-57
+G0 X100 Y100
 M5
 M30

@@ -1,43 +1,41 @@
 (Frezka demo: contour, circle pocket ring and a helix, 3 passes of 1 mm)
-(Work zero: part corner, 60 mm below Z home, so it runs on a freshly homed GVE64 profile)
+(Machine coordinates of the default GVE64 profile: part corner at X50 Y50, part top at Z-60)
 G21 G90 G17 G94
-G10 L2 P1 X50 Y50 Z-60
-G54
 M3 S12000
 M8
-G0 Z5
-G0 X0 Y0
+G0 Z-55
+G0 X50 Y50
 (contour 80 x 50)
-G1 Z-1 F300
-G1 X80 F900
+G1 Z-61 F300
+G1 X130 F900
+G1 Y100
+G1 X50
 G1 Y50
-G1 X0
-G1 Y0
-G1 Z-2 F300
-G1 X80 F900
+G1 Z-62 F300
+G1 X130 F900
+G1 Y100
+G1 X50
 G1 Y50
-G1 X0
-G1 Y0
-G1 Z-3 F300
-G1 X80 F900
+G1 Z-63 F300
+G1 X130 F900
+G1 Y100
+G1 X50
 G1 Y50
-G1 X0
-G1 Y0
-G0 Z5
-(circle R15 around 40,25)
-G0 X55 Y25
-G1 Z-1 F300
-G3 X55 Y25 I-15 J0 F700
-G1 Z-2 F300
-G3 X55 Y25 I-15 J0 F700
-G0 Z5
+G0 Z-55
+(circle R15 around X90 Y75)
+G0 X105 Y75
+G1 Z-61 F300
+G3 X105 Y75 I-15 J0 F700
+G1 Z-62 F300
+G3 X105 Y75 I-15 J0 F700
+G0 Z-55
 (helix R5 down 3 mm)
-G0 X45 Y25
-G1 Z0 F300
-G2 X45 Y25 Z-1.5 I-5 J0 F500
-G2 X45 Y25 Z-3 I-5 J0
-G0 Z5
-G0 X0 Y0
+G0 X95 Y75
+G1 Z-60 F300
+G2 X95 Y75 Z-61.5 I-5 J0 F500
+G2 X95 Y75 Z-63 I-5 J0
+G0 Z-55
+G0 X50 Y50
 M9
 M5
 M30

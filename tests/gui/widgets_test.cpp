@@ -8,6 +8,7 @@
 #include "gui/speedplot.h"
 
 #include <QLineEdit>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -50,6 +51,23 @@ private slots:
         QString error;
         QVERIFY(!c.saveTo(dir.filePath(QStringLiteral("no/such/dir/log.txt")), &error));
         QVERIFY(!error.isEmpty());
+    }
+
+    void consoleHidesPollsUnlessAsked()
+    {
+        ConsoleWidget c;
+        c.append(LogDirection::Sent, QByteArray("!0PF,A1"));
+        c.append(LogDirection::Received, QByteArray("0,1,2,3,5C"));
+        c.append(LogDirection::Sent, QByteArray("!0C10,0,0"));
+        c.append(LogDirection::Received, QByteArray("0"));
+        QVERIFY(c.entries()[0].poll && c.entries()[1].poll);
+        QVERIFY(!c.entries()[2].poll && !c.entries()[3].poll);
+        c.flush();
+        auto *view = c.findChild<QPlainTextEdit *>(QStringLiteral("consoleLog"));
+        QVERIFY(!view->toPlainText().contains(QStringLiteral("PF")));
+        QVERIFY(view->toPlainText().contains(QStringLiteral("!0C10,0,0")));
+        c.setShowPolls(true);
+        QVERIFY(view->toPlainText().contains(QStringLiteral("!0PF")));
     }
 
     void consoleManualLine()

@@ -14,6 +14,7 @@
 #include "gui/programsession.h"
 #include "gui/runpanel.h"
 #include "gui/settingsdialog.h"
+#include "gui/toolpathview.h"
 #include "gui/unitconfigdialog.h"
 
 #include "driver/link/machinecontroller.h"
@@ -263,6 +264,19 @@ M30
         QCOMPARE(state().positionSteps, before);
     }
 
+    void programOutsideTheSoftLimitsIsRedAndRefused()
+    {
+        const QString path =
+            writeProgram(QStringLiteral("far.nc"), "G21 G90\nG0 X10 Y10\nG1 X450 F1000\nM30\n");
+        QVERIFY(load(path));
+        const LoadedProgram &p = m_window->program()->program();
+        QVERIFY(!p.runnable());
+        QVERIFY(m_window->toolpathView()->model()->boundsOutsideLimits());
+        QVERIFY2(m_window->lastError().contains(QStringLiteral("far.nc:3:")),
+                 qPrintable(m_window->lastError()));
+        QVERIFY(!button(m_window->runPanel(), "run")->isEnabled());
+    }
+
     void eepromWriteAndReadBack()
     {
         QVERIFY(waitIdle());
@@ -318,6 +332,28 @@ M30
         QTRY_COMPARE(m_window->dro()->machineText(0), QStringLiteral("100.000"));
         QTRY_COMPARE(m_window->dro()->machineText(1), QStringLiteral("100.000"));
         QTRY_COMPARE(m_window->dro()->machineText(2), QStringLiteral("-57.000"));
+    }
+
+    // Work zero per axis and for all, persisted, per offset G54..G59.
+    void workZero()
+    {
+        QVERIFY(waitIdle());
+        const auto pos = state().positionMm;
+        button(m_window->dro(), "zeroX")->click();
+        QCOMPARE(m_window->dro()->workText(0), QStringLiteral("0.000"));
+        QCOMPARE(m_window->workOffsets()[0][0], pos[0]);
+        QCOMPARE(m_window->dro()->workText(1), QString::number(pos[1], 'f', 3));
+        button(m_window->dro(), "zeroAll")->click();
+        QCOMPARE(m_window->dro()->workText(1), QStringLiteral("0.000"));
+        QCOMPARE(m_window->dro()->workText(2), QStringLiteral("0.000"));
+        const QVariantList saved = QSettings().value(QStringLiteral("workOffsets")).toList();
+        QCOMPARE(saved.size(), 24);
+        QCOMPARE(saved[2].toDouble(), pos[2]);
+        m_window->selectWorkOffset(1); // G55 is still zero: work = machine
+        QCOMPARE(m_window->dro()->workText(0), QString::number(pos[0], 'f', 3));
+        QCOMPARE(QSettings().value(QStringLiteral("activeOffset")).toInt(), 1);
+        m_window->selectWorkOffset(0);
+        QCOMPARE(m_window->dro()->workText(0), QStringLiteral("0.000"));
     }
 
     void languageSwitch()

@@ -89,7 +89,7 @@ TEST(EmulatorJudge, DenseHelixInVnMode)
 {
     // VN: the unit's speed is the major axis's step rate, whose ratio to the path speed has
     // kinks on a curve; the plan keeps every limit but gives away a few per cent (measured
-    // 3.1 %, docs/planner.md §6).
+    // 3.3 %, docs/planner.md §6).
     MachineConfig c = unequalScales();
     c.motion.speedMode = SpeedModeChoice::Vn;
     const PlanResult r = plan(helix(), c);

@@ -113,9 +113,12 @@ int main(int argc, char **argv)
             QCoreApplication::quit();
         });
     });
-    clock.start();
-    sinceTick.start();
-    ticker.start();
-    window.openProgram(path);
+    // Start once the window is up and idle, so start-up (GL initialisation) is not counted.
+    QTimer::singleShot(1000, [&] {
+        clock.start();
+        sinceTick.start();
+        ticker.start();
+        window.openProgram(path);
+    });
     return app.exec();
 }
