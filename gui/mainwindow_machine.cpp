@@ -168,10 +168,9 @@ void MainWindow::connectControls()
             &driver::MachineController::jogContinuous);
     connect(m_jog, &JogPanel::jogContinuousStopped, m_controller,
             &driver::MachineController::jogStop);
-    // The driver homes the whole machine in the profile's order; per-axis homing is not offered
-    // until it can home one axis.
-    m_jog->setPerAxisHoming(false);
-    connect(m_jog, &JogPanel::homeRequested, m_controller, [this](int) { m_controller->home(); });
+    // axis -1: every axis the profile homes, in its order; otherwise that axis alone.
+    connect(m_jog, &JogPanel::homeRequested, m_controller,
+            [this](int axis) { m_controller->home(axis < 0 ? 0xFu : 1u << axis); });
     connect(m_jog, &JogPanel::mpgToggled, m_controller, &driver::MachineController::setMpg);
 
     connect(m_outputs, &OutputsPanel::spindleRequested, this,
@@ -245,7 +244,8 @@ std::array<double, 4> MainWindow::workPosition(const std::array<double, 4> &mach
 void MainWindow::onState(const driver::MachineState &state)
 {
     m_dro->setPositions(state.positionMm, workPosition(state.positionMm));
-    m_dro->setHomed({state.homed, state.homed, state.homed, state.homed});
+    const auto homed = [&state](int axis) { return ((state.homedAxes >> axis) & 1) != 0; };
+    m_dro->setHomed({homed(0), homed(1), homed(2), homed(3)});
     m_view->model()->setToolPosition(QVector3D(
         float(state.positionMm[0]), float(state.positionMm[1]), float(state.positionMm[2])));
     const std::uint16_t inputs = std::uint16_t(state.inputs1 | ((state.inputs2 & 0xC0) << 8));

@@ -151,9 +151,9 @@ void LinkWorker::toolLower(int speed)
 {
     apply(core().toolLower(speed, now()));
 }
-void LinkWorker::home()
+void LinkWorker::home(unsigned axisMask)
 {
-    apply(core().home(now()));
+    apply(core().home(now(), axisMask));
 }
 void LinkWorker::jogStep(int axis, double distanceMm, double speedMmPerMin)
 {

@@ -49,7 +49,7 @@ public slots:
     void abort();
     void toolLift(bool stopSpindle);
     void toolLower(int speedPulsesPerS);
-    void home();
+    void home(unsigned axisMask = 0xF);
     void jogStep(int axis, double distanceMm, double speedMmPerMin);
     void jogContinuous(int axis, int direction, double speedMmPerMin);
     void jogStop();

@@ -77,9 +77,9 @@ void MachineController::toolLower(int speedPulsesPerS)
     QMetaObject::invokeMethod(m_worker,
                               [w = m_worker, speedPulsesPerS] { w->toolLower(speedPulsesPerS); });
 }
-void MachineController::home()
+void MachineController::home(unsigned axisMask)
 {
-    QMetaObject::invokeMethod(m_worker, &LinkWorker::home);
+    QMetaObject::invokeMethod(m_worker, [w = m_worker, axisMask] { w->home(axisMask); });
 }
 void MachineController::jogStep(int axis, double distanceMm, double speedMmPerMin)
 {

@@ -81,7 +81,8 @@ public slots:
     void toolLift(bool stopSpindle);
     void toolLower(int speedPulsesPerS);
 
-    void home(); // W per axis in the configured order, then set the counters
+    // W per axis in the configured order, then set the counters; axisMask: bit a = axis a.
+    void home(unsigned axisMask = 0xF);
     // Incremental jog: distance in mm (A: degrees), clipped to the soft limits.
     void jogStep(int axis, double distanceMm, double speedMmPerMin);
     // Continuous jog toward the soft limit until jogStop().

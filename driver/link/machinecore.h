@@ -88,7 +88,9 @@ public:
     Result abort(double now);
     Result toolLift(bool stopSpindle, double now);
     Result toolLower(int speedPulsesPerS, double now);
-    Result home(double now);
+    // Homes the axes in axisMask (bit a = axis a; default all) that the profile homes, in the
+    // profile's order: W per axis, then the counter set to the home position.
+    Result home(double now, unsigned axisMask = 0xF);
     Result jogStep(int axis, double distanceMm, double speedMmPerMin, double now);
     Result jogContinuous(int axis, int direction, double speedMmPerMin, double now);
     Result jogStop(double now);

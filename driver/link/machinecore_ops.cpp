@@ -3,6 +3,8 @@
 
 #include "machinecore.h"
 
+#include "machine/homing.h"
+
 #include "driver/protocol/commandparser.h"
 
 #include <algorithm>
@@ -269,33 +271,36 @@ void MachineCore::interrupted()
 
 // ---- homing --------------------------------------------------------------------------------
 
-MachineCore::Result MachineCore::home(double now)
+MachineCore::Result MachineCore::home(double now, unsigned axisMask)
 {
     if (m_state.mode != MachineMode::Idle && m_state.mode != MachineMode::Alarm)
         return notNow("Homing", m_state.mode);
-    std::vector<int> order;
-    for (int a = 0; a < m_state.axisCount; ++a) {
-        const auto &ax = m_config.axes[static_cast<std::size_t>(a)];
-        if (ax.present && ax.homing.order > 0)
-            order.push_back(a);
+    const std::vector<machine::HomingMove> all = machine::homingSequence(m_config);
+    std::vector<machine::HomingMove> moves;
+    unsigned homedByProfile = 0;
+    for (const auto &m : all) {
+        const int a = static_cast<int>(m.axis);
+        if (a >= m_state.axisCount)
+            continue;
+        homedByProfile |= 1u << a;
+        if (axisMask & (1u << a))
+            moves.push_back(m);
     }
-    if (order.empty())
-        return refusal("the machine profile homes no axis (axes.*.homing.order)");
-    std::stable_sort(order.begin(), order.end(), [this](int a, int b) {
-        return m_config.axes[static_cast<std::size_t>(a)].homing.order <
-               m_config.axes[static_cast<std::size_t>(b)].homing.order;
-    });
+    if (moves.empty()) {
+        return refusal(all.empty() ? "the machine profile homes no axis (axes.*.homing.order)"
+                                   : "the machine profile does not home that axis "
+                                     "(axes.*.homing.order is 0)");
+    }
+    unsigned homing = 0;
+    for (const auto &m : moves)
+        homing |= 1u << static_cast<int>(m.axis);
+    m_state.homedAxes = static_cast<std::uint8_t>(m_state.homedAxes & ~homing);
     m_state.homed = false;
     setMode(MachineMode::Homing);
-    for (int a : order) {
-        const auto &ax = m_config.axes[static_cast<std::size_t>(a)];
-        const auto &h = ax.homing;
-        const auto axis = static_cast<Axis>(a);
+    for (const auto &m : moves) {
+        const auto axis = static_cast<Axis>(m.axis);
         const Command w =
-            cmd::home(axis, h.direction * stepsFromMm(a, h.travelMm),
-                      std::max<std::int64_t>(10, std::llround(h.towardMmPerS * ax.stepsPerMm)),
-                      stepsFromMm(a, h.backOffMm),
-                      std::max<std::int64_t>(10, std::llround(h.offMmPerS * ax.stepsPerMm)));
+            cmd::home(axis, m.travelSteps, m.towardPulsesPerS, m.backOffSteps, m.offPulsesPerS);
         if (auto bad = validate(w, m_config.unit.variant, m_config.unit.maxPulseRate)) {
             m_steps.clear();
             fail("homing axis " + std::string(1, axisLetter(axis)) + ": " + bad.message, nullptr,
@@ -313,18 +318,21 @@ MachineCore::Result MachineCore::home(double now)
             if (unitError(o, std::string("homing axis ") + axisLetter(axis), MachineMode::Alarm))
                 m_steps.clear();
         });
-        send(cmd::setCounter(axis, stepsFromMm(a, h.homePositionMm)),
-             [this, axis](const Outcome &o) {
-                 if (unitError(o, std::string("setting the counter of ") + axisLetter(axis),
-                               MachineMode::Alarm))
-                     m_steps.clear();
-             });
+        send(cmd::setCounter(axis, m.homeSteps), [this, axis](const Outcome &o) {
+            if (unitError(o, std::string("setting the counter of ") + axisLetter(axis),
+                          MachineMode::Alarm)) {
+                m_steps.clear();
+                return;
+            }
+            m_state.homedAxes =
+                static_cast<std::uint8_t>(m_state.homedAxes | (1u << static_cast<int>(axis)));
+        });
     }
     connected(); // position + status -> Idle
-    send(cmd::flag(), [this](const Outcome &o) {
+    send(cmd::flag(), [this, homedByProfile](const Outcome &o) {
         if (unitError(o, "status", MachineMode::Alarm))
             return;
-        m_state.homed = true;
+        m_state.homed = (m_state.homedAxes & homedByProfile) == homedByProfile;
         setMode(MachineMode::Idle);
     });
     pump(now);

@@ -70,7 +70,8 @@ struct MachineState
     // position (instantaneous counters, polled)
     std::array<std::int64_t, 4> positionSteps{};
     std::array<double, 4> positionMm{};
-    bool homed = false;
+    bool homed = false;         // every axis the profile homes has been homed
+    std::uint8_t homedAxes = 0; // bit a: axis a (X=0 .. A=3) homed since connecting
 
     // status (F / ST6): RUN, INTA, queue full
     std::uint8_t flags = 0;

@@ -142,7 +142,11 @@ M30
         m_window->checkProgram();
         QVERIFY(checked.wait(20000));
         QCOMPARE(checked.at(0).at(0).toBool(), true);
-        // Home (all axes, profile order).
+        // Home Z alone (its own button), then all axes in the profile's order.
+        button(m_window.get(), "homeZ")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().homedAxes == 0b100 && state().mode == MachineMode::Idle,
+                                 kMachineTimeoutMs);
+        QVERIFY(!state().homed);
         button(m_window.get(), "homeAll")->click();
         QTRY_VERIFY_WITH_TIMEOUT(state().homed && state().mode == MachineMode::Idle,
                                  kMachineTimeoutMs);

@@ -232,6 +232,38 @@ TEST(MachineCore, HomingThenJogWithinSoftLimits)
     EXPECT_TRUE(sim.core.jogStep(0, -5, 3000, sim.runner.now()).has_value());
 }
 
+TEST(MachineCore, HomingOneAxisLeavesTheOthers)
+{
+    Sim sim;
+    sim.port.unit().setSwitches(unitOptionsFor(sim.config).switches);
+    ASSERT_TRUE(sim.connect());
+    // X 10 mm away from where it was; then Z alone is homed: X's counter must not change.
+    ASSERT_FALSE(sim.core.jogStep(0, 10, 3000, sim.runner.now()));
+    ASSERT_TRUE(
+        sim.runner.runUntil([&] { return sim.core.state().mode == MachineMode::Idle; }, 60));
+    const std::int64_t x = sim.port.unit().position()[0];
+    ASSERT_EQ(x, std::llround(10 * sim.config.axes[0].stepsPerMm));
+    ASSERT_FALSE(sim.core.home(sim.runner.now(), 1u << 2));
+    ASSERT_TRUE(sim.runner.runUntil(
+        [&] {
+            return sim.core.state().homedAxes == 0b100 &&
+                   sim.core.state().mode == MachineMode::Idle;
+        },
+        600))
+        << sim.lastLog();
+    EXPECT_FALSE(sim.core.state().homed) << "X and Y are not homed yet";
+    EXPECT_EQ(sim.port.unit().position()[0], x);
+    EXPECT_EQ(sim.port.unit().position()[2], 0);
+    // An axis the profile does not home (A: order 0) is refused, nothing is sent.
+    EXPECT_TRUE(sim.core.home(sim.runner.now(), 1u << 3).has_value());
+    // Then X and Y: every homed axis of the profile is homed.
+    ASSERT_FALSE(sim.core.home(sim.runner.now(), 0b011));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return sim.core.state().homed; }, 600)) << sim.lastLog();
+    EXPECT_EQ(sim.core.state().homedAxes, 0b111);
+    EXPECT_EQ(sim.port.unit().position()[0], 0);
+    EXPECT_TRUE(sim.errors.empty());
+}
+
 TEST(MachineCore, SpindleOutputsOverride)
 {
     Sim sim;
