@@ -91,6 +91,12 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
     for (std::size_t i = 0; i < m_program.commands.size(); ++i)
         m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(m_program.commands[i].op) ? 1 : 0);
     estimateDurations();
+    m_bytePrefix.assign(m_program.commands.size() + 1, 0);
+    for (std::size_t i = 0; i < m_program.commands.size(); ++i) {
+        const machine::UnitCommand &c = m_program.commands[i];
+        const std::size_t bytes = c.op > UnitOp::Spindle ? 0 : encode(toCommand(c), true).size();
+        m_bytePrefix[i + 1] = m_bytePrefix[i] + static_cast<std::int64_t>(bytes);
+    }
     m_execAt = now;
     m_pollCount = 0;
     m_report = {};
@@ -228,6 +234,21 @@ void MachineCore::streamStep(double now)
     m_inflightEnd = m_next + 1;
     m_inFlight = [this, index](const Outcome &o) { onJobCommandOutcome(o, index, m_now); };
     m_engine.start(wire, now);
+}
+
+// Whether the next queue-full of commands runs faster than it takes to send: then the wire sets
+// the pace and the unit will run dry whatever the driver does, so every round trip not spent on
+// the stream is lost.
+bool MachineCore::wireBoundAhead() const
+{
+    if (!m_job || m_next >= m_program.commands.size())
+        return false;
+    const std::size_t span = static_cast<std::size_t>(maxPacket());
+    const std::size_t end = std::min(m_program.commands.size(), m_next + span);
+    const double motion = m_timePrefix[end] - m_timePrefix[m_next];
+    const double wire =
+        m_engine.wireTime(static_cast<std::size_t>(m_bytePrefix[end] - m_bytePrefix[m_next]));
+    return motion < wire + m_rttS;
 }
 
 // Vectors still queued in the unit `ahead` seconds from now, by the duration estimates.
