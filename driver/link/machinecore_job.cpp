@@ -4,6 +4,7 @@
 
 #include "driver/link/machinecore_internal.h"
 #include "gcode/toolpath.h"
+#include "machine/unitwire.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,36 +18,10 @@ using detail::isModal;
 using detail::isMotion;
 using detail::lineText;
 
+// The one mapping of machine/unitwire.h (shared with the plan CLI). PC-side ops are never sent.
 Command MachineCore::toCommand(const machine::UnitCommand &c) const
 {
-    const bool four = m_program.axisCount == 4;
-    switch (c.op) {
-    case UnitOp::Line:
-        return four ? cmd::line(c.d[0], c.d[1], c.d[2], c.d[3]) : cmd::line(c.d[0], c.d[1], c.d[2]);
-    case UnitOp::Vector:
-        return four ? cmd::vector(c.d[0], c.d[1], c.d[2], c.d[3])
-                    : cmd::vector(c.d[0], c.d[1], c.d[2]);
-    case UnitOp::Brake:
-        return cmd::brake(c.value);
-    case UnitOp::Speed:
-        return cmd::speed(c.value);
-    case UnitOp::Accel:
-        return cmd::accel(c.value);
-    case UnitOp::Pause:
-        return cmd::pause(c.value);
-    case UnitOp::ShortThreshold:
-        return cmd::shortThreshold(c.value);
-    case UnitOp::SpeedModeVk:
-        return cmd::speedModeVk();
-    case UnitOp::SpeedModeVn:
-        return cmd::speedModeVn();
-    case UnitOp::Output:
-        return cmd::output(static_cast<int>(c.value));
-    case UnitOp::Spindle:
-        return cmd::spindle(c.value);
-    default:
-        return cmd::flag(); // PC-side ops are never sent
-    }
+    return machine::wireCommand(c, m_program.axisCount).value_or(cmd::flag());
 }
 
 MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
