@@ -150,6 +150,7 @@ private:
     void setupUnit();
     void compareEeprom();
     void probeDoublePacketStart();
+    void packetStartTest(int attempt);
     void connected();
 
     // job streaming (machinecore_job.cpp)

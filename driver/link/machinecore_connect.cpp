@@ -89,27 +89,38 @@ void MachineCore::setupUnit()
 }
 
 // A one-command packet opened with *S twice: "0,1" means the unit restarts an open packet on a
-// second *S, and every packet is sent that way (see LinkOptions::doublePacketStart).
+// second *S, and every packet is sent that way (see LinkOptions::doublePacketStart). Any other
+// reply may be a byte damaged on the way (code 4 for a bad checksum looks like a refusal): the
+// test is repeated, and only three refusals in a row switch the second *S off.
 void MachineCore::probeDoublePacketStart()
 {
     if (!m_options.packets || !m_options.link.doublePacketStart)
         return;
-    m_steps.push_back({cmd::flag(), [this](const Outcome &) {
-                           m_engine.setDoublePacketStart(true);
-                           m_inFlight = [this](const Outcome &o) {
-                               const bool ok =
-                                   o.status == OutcomeStatus::Ok && o.reply.ok() && o.accepted == 1;
-                               m_engine.setDoublePacketStart(ok);
-                               log(ok ? "packets open with *S *S"
-                                      : "the unit refuses *S *S: packets open with one *S");
-                               if (o.status != OutcomeStatus::Ok)
-                                   unitError(o, "testing packets", MachineMode::Alarm);
-                           };
-                           const int b =
-                               std::min(variantInfo(m_config.unit.variant).resetBrakeSpeed,
-                                        m_config.unit.maxPulseRate);
-                           m_engine.startPacket({cmd::brake(b)}, m_now);
-                       }});
+    m_steps.push_back({cmd::flag(), [this](const Outcome &) { packetStartTest(1); }});
+}
+
+void MachineCore::packetStartTest(int attempt)
+{
+    constexpr int kAttempts = 3;
+    m_engine.setDoublePacketStart(true);
+    m_inFlight = [this, attempt](const Outcome &o) {
+        const bool ok = o.status == OutcomeStatus::Ok && o.reply.ok() && o.accepted == 1;
+        if (o.status != OutcomeStatus::Ok) {
+            m_engine.setDoublePacketStart(false);
+            unitError(o, "testing packets", MachineMode::Alarm);
+            return;
+        }
+        if (!ok && attempt < kAttempts) {
+            log("packet test answered '" + o.raw + "': testing again");
+            packetStartTest(attempt + 1);
+            return;
+        }
+        m_engine.setDoublePacketStart(ok);
+        log(ok ? "packets open with *S *S" : "the unit refuses *S *S: packets open with one *S");
+    };
+    const int b =
+        std::min(variantInfo(m_config.unit.variant).resetBrakeSpeed, m_config.unit.maxPulseRate);
+    m_engine.startPacket({cmd::brake(b)}, m_now);
 }
 
 void MachineCore::compareEeprom()

@@ -189,7 +189,7 @@ int main(int argc, char **argv)
                 static_cast<long long>(sim.port.unit().stats().motion.vectorsExecuted),
                 sim.lastLog(12).c_str());
         }
-        const WireStats &w = sim.port.wireStats();
+        const WireStats w = sim.port.wireStats();
         corrupted += w.corrupted;
         dropped += w.dropped;
         duplicated += w.duplicated;
