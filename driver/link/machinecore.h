@@ -147,6 +147,7 @@ private:
 
     // connect sequence (machinecore_connect.cpp)
     void connectSequence();
+    void switchChecksums(int attempt);
     void setupUnit();
     void compareEeprom();
     void probeDoublePacketStart();

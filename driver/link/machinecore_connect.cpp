@@ -21,16 +21,30 @@ using namespace frezka::protocol;
 
 void MachineCore::connectSequence()
 {
-    const Command first = m_options.checksums ? cmd::checksumOn() : cmd::checksumOff();
     m_engine.setChecksums(false);
-    send(first, [this, first](const Outcome &o) {
-        if (o.status == OutcomeStatus::Ok && o.reply.code == ReplyCode::Syntax) {
-            // The unit's checksums were on and it refused the plain command: send it framed.
-            m_engine.setChecksums(true);
-            sendFront(first, [this](const Outcome &again) {
-                if (!unitError(again, "switching checksums", MachineMode::Alarm))
-                    setupUnit();
-            });
+    switchChecksums(1);
+}
+
+// %+ / %- first, framed plainly. A code 4 may mean the unit's checksums were on (it refused the
+// plain command): send it framed. Any other refusal may be a byte damaged on the way (a damaged
+// '%+' is an unknown command, 3): %+ and %- are harmless to repeat, so try again a few times.
+void MachineCore::switchChecksums(int attempt)
+{
+    constexpr int kAttempts = 4;
+    const Command first = m_options.checksums ? cmd::checksumOn() : cmd::checksumOff();
+    const auto front = [this, first](Then then) {
+        if (m_steps.empty())
+            send(first, std::move(then));
+        else
+            sendFront(first, std::move(then));
+    };
+    front([this, attempt](const Outcome &o) {
+        const bool refused = o.status == OutcomeStatus::Ok && !o.reply.ok();
+        if (refused && attempt < kAttempts) {
+            log("switching checksums answered '" + o.raw + "': trying again");
+            if (o.reply.code == ReplyCode::Syntax)
+                m_engine.setChecksums(!m_engine.checksums());
+            switchChecksums(attempt + 1);
             return;
         }
         if (!unitError(o, "switching checksums", MachineMode::Alarm))
