@@ -1,19 +1,19 @@
 #pragma once
 // EmulatorPort: the in-process emulator behind a modelled serial line, on a virtual clock.
 //
-// Wire model (issue 2 item 5): each byte occupies 10 bit times at the baud rate on its line
-// (one line each way, full duplex), then arrives `latencyS` later (USB-serial latency per
-// direction). A seeded fault injector hits each byte with probability byteErrorRate: corrupted
-// (a different random value), dropped, or duplicated, one third each; and loses a whole reply
-// line with probability replyLossRate. Deterministic for a given seed.
+// A thin VirtualPort over emulator::Simulation (driver/emulator/simulation.h), which owns the
+// unit and the wire model (driver/emulator/wire.h): each byte occupies 10 bit times at the baud
+// rate on its direction of the line, then arrives `latencyS` later (USB-serial latency per
+// direction). WireOptions here is the driver's short form of the emulator's fault options: each
+// byte, both ways, is hit with probability byteErrorRate — a flipped bit, a lost byte or a
+// doubled byte, one third each — and a whole reply line is lost with probability replyLossRate.
+// Deterministic for a given seed (the emulator's SplitMix64).
 
-#include "driver/emulator/unit.h"
+#include "driver/emulator/simulation.h"
 #include "driver/link/simrunner.h"
 #include "machine/machineconfig.h"
 
 #include <cstdint>
-#include <deque>
-#include <random>
 
 namespace frezka::driver {
 
@@ -41,41 +41,25 @@ struct WireStats
 // (IN0..IN3) for every homed axis, 5 mm from the counter's zero in the homing direction.
 emulator::UnitOptions unitOptionsFor(const machine::MachineConfig &config);
 
+// The emulator's wire options for the driver's short form.
+emulator::WireOptions emulatorWireOptions(const WireOptions &wire);
+
 class EmulatorPort : public VirtualPort
 {
 public:
     EmulatorPort(emulator::UnitOptions unit, WireOptions wire);
 
-    void write(std::string_view bytes) override;
-    std::string read() override;
-    double now() const override { return m_unit.now(); }
-    double nextEventIn() const override;
-    void advance(double seconds) override;
+    void write(std::string_view bytes) override { m_sim.pcWrite(bytes); }
+    std::string read() override { return m_sim.pcRead(); }
+    double now() const override { return m_sim.now(); }
+    double nextEventIn() const override { return m_sim.nextEventIn(); }
+    void advance(double seconds) override { m_sim.advance(seconds); }
 
-    emulator::Unit &unit() { return m_unit; }
-    const WireStats &wireStats() const { return m_stats; }
-    // Changes the fault rates from now on (e.g. a clean connect, then a noisy job).
-    void setFaults(double byteErrorRate, double replyLossRate);
+    emulator::Unit &unit() { return m_sim.unit(); }
+    WireStats wireStats() const;
 
 private:
-    struct Timed
-    {
-        double at;
-        char byte;
-    };
-    void enqueue(std::deque<Timed> &q, double &lineFreeAt, std::string_view bytes, bool toUnit);
-    void collectTransmit();
-    double nextArrival() const;
-
-    emulator::Unit m_unit;
-    WireOptions m_wire;
-    std::mt19937 m_rng;
-    std::deque<Timed> m_toUnit;
-    std::deque<Timed> m_toPc;
-    double m_pcLineFreeAt = 0;
-    double m_unitLineFreeAt = 0;
-    std::string m_replyLine; // the unit's reply line being assembled (for whole-line loss)
-    WireStats m_stats;
+    emulator::Simulation m_sim;
 };
 
 } // namespace frezka::driver

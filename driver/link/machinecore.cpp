@@ -221,17 +221,19 @@ double MachineCore::nextPollTime() const
     }
     if (!streaming() || m_queueFullSeen)
         return m_lastPoll + m_options.pollIntervalS;
-    // A poll costs a round trip: take it only while the unit has motion queued to cover it
-    // several times over; when the wire is the bottleneck, poll at least every maxPollGapS.
-    // Plenty of motion queued: full rate. Little: polls may take at most kPollShare of the
-    // link's time (the wire is what limits the job). Almost none: only every maxPollGapS.
-    constexpr double kPollShare = 0.04;
+    // A poll costs a round trip of the link. Plenty of motion queued and the motion ahead slower
+    // than the wire: the stream has time to spare, poll at the full rate. Otherwise every round
+    // trip spent on polls is missing from the stream: keep them to wireBoundPollShare of the
+    // link's time (the last poll's cost over that share), at least every maxPollGapS.
     const double buffered = bufferedS();
-    if (buffered >= std::max(0.25, 10 * m_rttS))
+    if (!wireBoundAhead() && buffered >= std::max(0.25, 10 * m_rttS))
         return m_lastPoll + m_options.pollIntervalS;
-    if (buffered >= 3 * m_rttS + 0.02)
-        return m_lastPoll + std::max(m_options.pollIntervalS, m_rttS / kPollShare);
-    return m_lastPoll + m_options.maxPollGapS;
+    const double cost = m_lastPollTransactions * m_rttS;
+    const double share = std::max(1e-3, m_options.wireBoundPollShare);
+    // A poll that also read F and the inputs delays the next one by its extra cost.
+    return m_lastPoll + std::clamp(cost / share, m_options.pollIntervalS,
+                                   std::max(m_options.pollIntervalS, m_options.maxPollGapS) *
+                                       m_lastPollTransactions);
 }
 
 bool MachineCore::pollDue(double now) const
@@ -251,13 +253,18 @@ void MachineCore::startPoll(double now)
     const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
     // While streaming, every reply carries INTA (interrupts) and packet replies carry queue
     // full: F and the inputs are read less often there, to leave the wire to the job.
+    // Where the stream is wire-bound, the position alone, F and the inputs every 8th time.
     const bool stream = streaming();
-    const bool flags = !stream || m_pollCount % 4 == 0;
+    const bool lean = stream && (wireBoundAhead() || bufferedS() < std::max(0.25, 10 * m_rttS));
+    const bool flags = !stream || m_pollCount % (lean ? 8 : 4) == (lean ? 7 : 0);
     ++m_pollCount;
-    const bool inputs = now - m_lastInputsPoll >= (stream ? 4 * m_options.inputsPollIntervalS
-                                                          : m_options.inputsPollIntervalS);
+    const bool inputs =
+        (!lean || flags) && now - m_lastInputsPoll >= (stream ? 4 * m_options.inputsPollIntervalS
+                                                              : m_options.inputsPollIntervalS);
     if (inputs)
         m_lastInputsPoll = now;
+    m_lastPollTransactions =
+        1 + (flags ? 1 : 0) + (inputs ? (m_config.unit.variant != Variant::Gve84 ? 2 : 1) : 0);
     // Position now, F right after it, inputs after that: one poll, ahead of other steps.
     auto byte = [this](std::uint8_t &field) {
         return [this, &field](const Outcome &o) {

@@ -7,9 +7,12 @@
 // time the link is free:
 //
 //   1. the next step of an operation (connect sequence, pause, tool lift, homing, jog, ...)
-//   2. a status poll when one is due (position PF/P4 + F at pollIntervalS; inputs less often);
-//      while a job streams, a poll is taken only when the unit holds enough queued vectors that
-//      the poll's round trip cannot starve it, and at least every maxPollGapS
+//   2. a status poll when one is due (position PF/P4 + F at pollIntervalS; inputs less often).
+//      While a job streams, every poll is a round trip the stream cannot use. Where the motion
+//      ahead is slower than the wire and the unit holds plenty of it, polls are free and run at
+//      the full rate. Where the wire is the bottleneck (the motion ahead runs faster than it can
+//      be sent) or the unit holds little, polls read the position only and take at most
+//      wireBoundPollShare of the link's time, yet come at least every maxPollGapS
 //   3. the job: the next packet of C/B commands (sized to the estimated free queue space),
 //      or the next single command; L waits for an empty queue, WaitIdle/Dwell/M0/M1/M6/ProgramEnd
 //      wait for the machine to stop (F: RUN = 0).
@@ -41,10 +44,10 @@ struct CoreOptions
     int maxPacketCommands = 0;         // 0 = up to the variant's queue capacity
     double pollIntervalS = 0.05;       // 20 Hz position + status while connected
     double inputsPollIntervalS = 0.25; // I1/I2
-    double maxPollGapS = 1.0;          // while streaming wire-bound, poll at least this often
-    int pollMinQueued = 24;    // streaming: poll only with at least this many vectors queued
-    bool compareEeprom = true; // read the unit's EEPROM on connect and report differences
-    bool optionalStops = true; // M1 pauses
+    double maxPollGapS = 4.0;          // while streaming wire-bound, poll at least this often
+    double wireBoundPollShare = 0.005; // ... and otherwise spend at most this share on polls
+    bool compareEeprom = true;         // read the unit's EEPROM on connect and report differences
+    bool optionalStops = true;         // M1 pauses
     friend bool operator==(const CoreOptions &, const CoreOptions &) = default;
 };
 
@@ -146,9 +149,11 @@ private:
 
     // connect sequence (machinecore_connect.cpp)
     void connectSequence();
+    void switchChecksums(int attempt);
     void setupUnit();
     void compareEeprom();
     void probeDoublePacketStart();
+    void packetStartTest(int attempt);
     void connected();
 
     // job streaming (machinecore_job.cpp)
@@ -175,6 +180,7 @@ private:
     std::int64_t queuedAfter(double aheadS) const; // estimated motion time queued in the unit
     std::size_t execEstimate() const; // estimated executing command, from time since the poll
     bool streaming() const;
+    bool wireBoundAhead() const; // the motion ahead runs faster than the wire can carry it
     protocol::Command toCommand(const machine::UnitCommand &c) const;
 
     // operations helpers (machinecore_ops.cpp)
@@ -217,10 +223,12 @@ private:
     std::int64_t m_bytesAtStart = 0;
     bool m_needVerify = false; // progress must be re-established from the counters
     bool m_jogContinuous = false;
-    int m_packetLimit = 1;            // adaptive packet size (commands)
-    std::vector<double> m_timePrefix; // estimated motion seconds before each program index
-    double m_execAt = 0;              // when m_exec was read from the unit
-    double m_rttS = 0.01;             // round trip of a poll, smoothed
+    int m_packetLimit = 1;                  // adaptive packet size (commands)
+    std::vector<double> m_timePrefix;       // estimated motion seconds before each program index
+    std::vector<std::int64_t> m_bytePrefix; // wire bytes of the program commands before each
+    double m_execAt = 0;                    // when m_exec was read from the unit
+    double m_rttS = 0.01;                   // round trip of a poll, smoothed
+    int m_lastPollTransactions = 1;         // transactions of the last poll (position, F, inputs)
     double m_pollSentAt = 0;
     std::int64_t m_pollCount = 0;
     std::vector<std::int64_t> m_vectorPrefix; // motion commands before each program index

@@ -21,16 +21,30 @@ using namespace frezka::protocol;
 
 void MachineCore::connectSequence()
 {
-    const Command first = m_options.checksums ? cmd::checksumOn() : cmd::checksumOff();
     m_engine.setChecksums(false);
-    send(first, [this, first](const Outcome &o) {
-        if (o.status == OutcomeStatus::Ok && o.reply.code == ReplyCode::Syntax) {
-            // The unit's checksums were on and it refused the plain command: send it framed.
-            m_engine.setChecksums(true);
-            sendFront(first, [this](const Outcome &again) {
-                if (!unitError(again, "switching checksums", MachineMode::Alarm))
-                    setupUnit();
-            });
+    switchChecksums(1);
+}
+
+// %+ / %- first, framed plainly. A code 4 may mean the unit's checksums were on (it refused the
+// plain command): send it framed. Any other refusal may be a byte damaged on the way (a damaged
+// '%+' is an unknown command, 3): %+ and %- are harmless to repeat, so try again a few times.
+void MachineCore::switchChecksums(int attempt)
+{
+    constexpr int kAttempts = 4;
+    const Command first = m_options.checksums ? cmd::checksumOn() : cmd::checksumOff();
+    const auto front = [this, first](Then then) {
+        if (m_steps.empty())
+            send(first, std::move(then));
+        else
+            sendFront(first, std::move(then));
+    };
+    front([this, attempt](const Outcome &o) {
+        const bool refused = o.status == OutcomeStatus::Ok && !o.reply.ok();
+        if (refused && attempt < kAttempts) {
+            log("switching checksums answered '" + o.raw + "': trying again");
+            if (o.reply.code == ReplyCode::Syntax)
+                m_engine.setChecksums(!m_engine.checksums());
+            switchChecksums(attempt + 1);
             return;
         }
         if (!unitError(o, "switching checksums", MachineMode::Alarm))
@@ -89,27 +103,41 @@ void MachineCore::setupUnit()
 }
 
 // A one-command packet opened with *S twice: "0,1" means the unit restarts an open packet on a
-// second *S, and every packet is sent that way (see LinkOptions::doublePacketStart).
+// second *S, and every packet is sent that way (see LinkOptions::doublePacketStart). Any other
+// reply may be a byte damaged on the way (code 4 for a bad checksum looks like a refusal): the
+// test is repeated, and only three refusals in a row switch the second *S off.
 void MachineCore::probeDoublePacketStart()
 {
     if (!m_options.packets || !m_options.link.doublePacketStart)
         return;
-    m_steps.push_back({cmd::flag(), [this](const Outcome &) {
-                           m_engine.setDoublePacketStart(true);
-                           m_inFlight = [this](const Outcome &o) {
-                               const bool ok =
-                                   o.status == OutcomeStatus::Ok && o.reply.ok() && o.accepted == 1;
-                               m_engine.setDoublePacketStart(ok);
-                               log(ok ? "packets open with *S *S"
-                                      : "the unit refuses *S *S: packets open with one *S");
-                               if (o.status != OutcomeStatus::Ok)
-                                   unitError(o, "testing packets", MachineMode::Alarm);
-                           };
-                           const int b =
-                               std::min(variantInfo(m_config.unit.variant).resetBrakeSpeed,
-                                        m_config.unit.maxPulseRate);
-                           m_engine.startPacket({cmd::brake(b)}, m_now);
-                       }});
+    m_steps.push_back({cmd::flag(), [this](const Outcome &) { packetStartTest(1); }});
+}
+
+void MachineCore::packetStartTest(int attempt)
+{
+    constexpr int kAttempts = 3;
+    m_engine.setDoublePacketStart(true);
+    m_inFlight = [this, attempt](const Outcome &o) {
+        const bool ok = o.status == OutcomeStatus::Ok && o.reply.ok() && o.accepted == 1;
+        // A damaged first *S leaves the index one short of where the packet leads, which the
+        // engine cannot tell from a lost line: it fails the transaction but learns the index.
+        // The test packet (one B) is harmless to repeat.
+        if (o.status != OutcomeStatus::Ok && (attempt >= kAttempts || !m_engine.unitIndex())) {
+            m_engine.setDoublePacketStart(false);
+            unitError(o, "testing packets", MachineMode::Alarm);
+            return;
+        }
+        if (!ok && attempt < kAttempts) {
+            log("packet test answered '" + o.raw + "': testing again");
+            packetStartTest(attempt + 1);
+            return;
+        }
+        m_engine.setDoublePacketStart(ok);
+        log(ok ? "packets open with *S *S" : "the unit refuses *S *S: packets open with one *S");
+    };
+    const int b =
+        std::min(variantInfo(m_config.unit.variant).resetBrakeSpeed, m_config.unit.maxPulseRate);
+    m_engine.startPacket({cmd::brake(b)}, m_now);
 }
 
 void MachineCore::compareEeprom()

@@ -4,6 +4,7 @@
 
 #include "driver/link/machinecore_internal.h"
 #include "gcode/toolpath.h"
+#include "machine/unitwire.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,36 +18,10 @@ using detail::isModal;
 using detail::isMotion;
 using detail::lineText;
 
+// The one mapping of machine/unitwire.h (shared with the plan CLI). PC-side ops are never sent.
 Command MachineCore::toCommand(const machine::UnitCommand &c) const
 {
-    const bool four = m_program.axisCount == 4;
-    switch (c.op) {
-    case UnitOp::Line:
-        return four ? cmd::line(c.d[0], c.d[1], c.d[2], c.d[3]) : cmd::line(c.d[0], c.d[1], c.d[2]);
-    case UnitOp::Vector:
-        return four ? cmd::vector(c.d[0], c.d[1], c.d[2], c.d[3])
-                    : cmd::vector(c.d[0], c.d[1], c.d[2]);
-    case UnitOp::Brake:
-        return cmd::brake(c.value);
-    case UnitOp::Speed:
-        return cmd::speed(c.value);
-    case UnitOp::Accel:
-        return cmd::accel(c.value);
-    case UnitOp::Pause:
-        return cmd::pause(c.value);
-    case UnitOp::ShortThreshold:
-        return cmd::shortThreshold(c.value);
-    case UnitOp::SpeedModeVk:
-        return cmd::speedModeVk();
-    case UnitOp::SpeedModeVn:
-        return cmd::speedModeVn();
-    case UnitOp::Output:
-        return cmd::output(static_cast<int>(c.value));
-    case UnitOp::Spindle:
-        return cmd::spindle(c.value);
-    default:
-        return cmd::flag(); // PC-side ops are never sent
-    }
+    return machine::wireCommand(c, m_program.axisCount).value_or(cmd::flag());
 }
 
 MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
@@ -91,6 +66,12 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
     for (std::size_t i = 0; i < m_program.commands.size(); ++i)
         m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(m_program.commands[i].op) ? 1 : 0);
     estimateDurations();
+    m_bytePrefix.assign(m_program.commands.size() + 1, 0);
+    for (std::size_t i = 0; i < m_program.commands.size(); ++i) {
+        const machine::UnitCommand &c = m_program.commands[i];
+        const std::size_t bytes = c.op > UnitOp::Spindle ? 0 : encode(toCommand(c), true).size();
+        m_bytePrefix[i + 1] = m_bytePrefix[i] + static_cast<std::int64_t>(bytes);
+    }
     m_execAt = now;
     m_pollCount = 0;
     m_report = {};
@@ -228,6 +209,21 @@ void MachineCore::streamStep(double now)
     m_inflightEnd = m_next + 1;
     m_inFlight = [this, index](const Outcome &o) { onJobCommandOutcome(o, index, m_now); };
     m_engine.start(wire, now);
+}
+
+// Whether the next queue-full of commands runs faster than it takes to send: then the wire sets
+// the pace and the unit will run dry whatever the driver does, so every round trip not spent on
+// the stream is lost.
+bool MachineCore::wireBoundAhead() const
+{
+    if (!m_job || m_next >= m_program.commands.size())
+        return false;
+    const std::size_t span = static_cast<std::size_t>(maxPacket());
+    const std::size_t end = std::min(m_program.commands.size(), m_next + span);
+    const double motion = m_timePrefix[end] - m_timePrefix[m_next];
+    const double wire =
+        m_engine.wireTime(static_cast<std::size_t>(m_bytePrefix[end] - m_bytePrefix[m_next]));
+    return motion < wire + m_rttS;
 }
 
 // Vectors still queued in the unit `ahead` seconds from now, by the duration estimates.

@@ -59,6 +59,15 @@ Result stream(const machine::UnitProgram &program, double latencyS, bool packets
     Result r;
     if (!sim.connect())
         return r;
+    if (const char *t = getenv("LINK_BENCH_TRACE");
+        t && std::atof(t) == latencyS * 1000 && packets && variant == protocol::Variant::Gve64 &&
+        program.commands.size() > 6000 &&
+        program.commands[5].d[0] ==
+            (getenv("LINK_BENCH_STEPS") ? std::atoi(getenv("LINK_BENCH_STEPS")) : 30)) {
+        sim.core.onLog = [&sim](const std::string &line) {
+            std::printf("%10.4f %s\n", sim.runner.now(), line.substr(0, 60).c_str());
+        };
+    }
     if (sim.core.run(program, sim.runner.now()))
         return r;
     int polls = 0;
@@ -155,6 +164,11 @@ int main(int argc, char **argv)
         wire.replyLossRate = 1e-3;
         wire.seed = static_cast<std::uint32_t>(1000 + run);
         Sim sim(protocol::Variant::Gve64, wire);
+        if (const char *t = getenv("LINK_BENCH_SOAK_TRACE"); t && std::atoi(t) == 1000 + run) {
+            sim.core.onLog = [&sim](const std::string &line) {
+                std::printf("%10.4f %s\n", sim.runner.now(), line.substr(0, 70).c_str());
+            };
+        }
         bool ok = sim.connect(300) && !sim.core.run(soak, sim.runner.now()) &&
                   sim.runner.runUntil([&] { return !sim.finished.empty(); }, 3600) &&
                   sim.finished.front();
@@ -164,9 +178,18 @@ int main(int argc, char **argv)
         ok = ok && sim.port.unit().stats().motion.vectorsExecuted == 1500;
         if (!ok) {
             ++bad;
-            std::printf("run %d (seed %d) FAILED:\n%s\n", run, 1000 + run, sim.lastLog(12).c_str());
+            std::printf(
+                "run %d (seed %d) FAILED: counters %lld %lld %lld, expected %lld %lld %lld, "
+                "%lld vectors executed\n%s\n",
+                run, 1000 + run, static_cast<long long>(pos[0]), static_cast<long long>(pos[1]),
+                static_cast<long long>(pos[2]),
+                static_cast<long long>(soak.commands.back().endSteps[0]),
+                static_cast<long long>(soak.commands.back().endSteps[1]),
+                static_cast<long long>(soak.commands.back().endSteps[2]),
+                static_cast<long long>(sim.port.unit().stats().motion.vectorsExecuted),
+                sim.lastLog(12).c_str());
         }
-        const WireStats &w = sim.port.wireStats();
+        const WireStats w = sim.port.wireStats();
         corrupted += w.corrupted;
         dropped += w.dropped;
         duplicated += w.duplicated;

@@ -4,6 +4,7 @@
 
 #include "gcode/toolpath.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 
 using namespace frezka;
