@@ -1,4 +1,4 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
 <context>
@@ -6,6 +6,169 @@
     <message>
         <source>built-in %1 emulator</source>
         <translation>vestavěný emulátor %1</translation>
+    </message>
+</context>
+<context>
+    <name>GrinderCli</name>
+    <message>
+        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
+                          [--baud N] [--header TEXT] [--retries N]
+                          [--reply-timeout-ms N] FILE
+       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N]
+  ping   link check (ENQ/ACK)
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
+         or, as K51LOAD 2.20 did, the file name
+  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
+         waits for a binary frame); --go MM moves the table and waits until reached
+  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
+  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
+                         the data after a request)
+Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
+</source>
+        <translation>použití: frezka-cli grinder ping|save|load --port CESTA [--family k51|anc|hedit]
+                          [--baud N] [--header TEXT] [--retries N]
+                          [--reply-timeout-ms N] SOUBOR
+         frezka-cli grinder z --port CESTA [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N]
+  ping   kontrola spojení (ENQ/ACK)
+  save   řídicí systém -&gt; PC: zapíše data řídicího systému do SOUBORU, bajt po bajtu
+  load   PC -&gt; řídicí systém: pošle SOUBOR beze změny; 16znakovou hlavičku dává --header,
+         jinak (jako K51LOAD 2.20) název souboru
+  z      přenos polohy Z: vypíše polohu stolu (FORM=1 se ptá Z?, FORM=2
+         čeká na binární rámec); --go MM přejede stolem a čeká na dosažení
+  --retries N            opakování po vypršení času, NAK nebo chybném součtu (výchozí 3)
+  --reply-timeout-ms N   povolené ticho před odpovědí (výchozí 3000; 10000 pro
+                         data po žádosti)
+Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné použití.
+</translation>
+    </message>
+    <message>
+        <source>--header: &apos;%1&apos; is longer than 16 characters</source>
+        <translation>--header: &apos;%1&apos; má víc než 16 znaků</translation>
+    </message>
+    <message>
+        <source>--header: &apos;%1&apos; holds &apos;%2&apos;; the controller shows plain ASCII only (no diacritics)</source>
+        <translation>--header: &apos;%1&apos; obsahuje &apos;%2&apos;; řídicí systém zobrazí jen čisté ASCII (bez diakritiky)</translation>
+    </message>
+    <message>
+        <source>--family: &apos;%1&apos; is not k51, anc or hedit</source>
+        <translation>--family: &apos;%1&apos; není k51, anc ani hedit</translation>
+    </message>
+    <message>
+        <source>--baud: &apos;%1&apos; is not a baud rate</source>
+        <translation>--baud: &apos;%1&apos; není přenosová rychlost</translation>
+    </message>
+    <message>
+        <source>--retries: &apos;%1&apos; is not 0 to 100</source>
+        <translation>--retries: &apos;%1&apos; není v rozsahu 0 až 100</translation>
+    </message>
+    <message>
+        <source>--reply-timeout-ms: &apos;%1&apos; is not 100 to 600000</source>
+        <translation>--reply-timeout-ms: &apos;%1&apos; není v rozsahu 100 až 600000</translation>
+    </message>
+    <message>
+        <source>--form: &apos;%1&apos; is not 1 or 2</source>
+        <translation>--form: &apos;%1&apos; není 1 ani 2</translation>
+    </message>
+    <message>
+        <source>--go: &apos;%1&apos; is not a position in mm (e.g. 12.5)</source>
+        <translation>--go: &apos;%1&apos; není poloha v mm (např. 12.5)</translation>
+    </message>
+    <message>
+        <source>unknown option &apos;%1&apos;</source>
+        <translation>neznámá volba &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: unknown action &apos;%1&apos;
+</source>
+        <translation>frezka-cli grinder: neznámá akce &apos;%1&apos;
+</translation>
+    </message>
+    <message>
+        <source>unexpected argument &apos;%1&apos;</source>
+        <translation>nečekaný argument &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1 needs a value</source>
+        <translation>%1 potřebuje hodnotu</translation>
+    </message>
+    <message>
+        <source>--port PATH is required</source>
+        <translation>je třeba zadat --port CESTA</translation>
+    </message>
+    <message>
+        <source>%1 needs a FILE</source>
+        <translation>%1 potřebuje SOUBOR</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>zbývá %1</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: %1 failed (%2): %3
+</source>
+        <translation>frezka-cli grinder: %1 selhalo (%2): %3
+</translation>
+    </message>
+    <message>
+        <source>Repeats: %1 (NAK %2, bad checksum %3), noise bytes skipped: %4
+</source>
+        <translation>Opakování: %1 (NAK %2, chybný kontrolní součet %3), přeskočené bajty šumu: %4
+</translation>
+    </message>
+    <message>
+        <source>Inner blocks: %1
+</source>
+        <translation>Vnitřní bloky: %1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: cannot write %1: %2 (the data were received but not saved)
+</source>
+        <translation>frezka-cli grinder: nelze zapsat %1: %2 (data byla přijata, ale neuložena)
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: cannot read %1: %2
+</source>
+        <translation>frezka-cli grinder: nelze číst %1: %2
+</translation>
+    </message>
+    <message>
+        <source>Note: TCHIN programs show &quot;no prg set&quot; once until the X axis is set up: select the program in AUT and hold RES.
+</source>
+        <translation>Poznámka: programy TCHIN ukážou jednou „no prg set“, dokud se nenastaví osa X: zvolte program v AUT a podržte RES.
+</translation>
+    </message>
+    <message>
+        <source>Z = %1 mm
+</source>
+        <translation>Z = %1 mm
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: --go needs FORM=1; FORM=2 only reports
+</source>
+        <translation>frezka-cli grinder: --go vyžaduje FORM=1; FORM=2 polohu jen hlásí
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: no FORM=2 position frame within %1 s
+</source>
+        <translation>frezka-cli grinder: během %1 s nepřišel žádný rámec polohy FORM=2
+</translation>
+    </message>
+    <message>
+        <source>Moving to %1 mm...
+</source>
+        <translation>Přejíždím na %1 mm...
+</translation>
     </message>
 </context>
 <context>
@@ -21,6 +184,13 @@
     <message>
         <source>unknown connection kind</source>
         <translation>neznámý druh připojení</translation>
+    </message>
+</context>
+<context>
+    <name>Progress</name>
+    <message>
+        <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
+        <translation><byte value="xd"/>[%1] %2% řádek %3 zbývá %4 </translation>
     </message>
 </context>
 <context>
@@ -65,8 +235,8 @@
         <translation>Zkontrolujte, že soubor existuje a lze jej číst.</translation>
     </message>
     <message>
-        <source>Unexpected character '%1'</source>
-        <translation>Neočekávaný znak '%1'</translation>
+        <source>Unexpected character &apos;%1&apos;</source>
+        <translation>Neočekávaný znak &apos;%1&apos;</translation>
     </message>
     <message>
         <source>Remove it or put it inside a comment ( ).</source>
@@ -77,8 +247,8 @@
         <translation>Komentář není uzavřen</translation>
     </message>
     <message>
-        <source>Add ')' at the end of the comment.</source>
-        <translation>Doplňte ')' na konec komentáře.</translation>
+        <source>Add &apos;)&apos; at the end of the comment.</source>
+        <translation>Doplňte &apos;)&apos; na konec komentáře.</translation>
     </message>
     <message>
         <source>Comment inside a comment</source>
@@ -317,7 +487,7 @@
         <translation>Použijte buď střed (I/J/K), nebo poloměr (R).</translation>
     </message>
     <message>
-        <source>%1 is not in the arc's plane</source>
+        <source>%1 is not in the arc&apos;s plane</source>
         <translation>%1 neleží v rovině oblouku</translation>
     </message>
     <message>
@@ -465,8 +635,8 @@
         <translation>Výraz není uzavřen</translation>
     </message>
     <message>
-        <source>Add the missing ']'.</source>
-        <translation>Doplňte chybějící ']'.</translation>
+        <source>Add the missing &apos;]&apos;.</source>
+        <translation>Doplňte chybějící &apos;]&apos;.</translation>
     </message>
     <message>
         <source>Unknown operator %1</source>
@@ -636,6 +806,46 @@
         <source>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</source>
         <translation>Definujte jej v tomto souboru pomocí o&lt;název&gt; sub ... o&lt;název&gt; endsub.</translation>
     </message>
+    <message>
+        <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN]</source>
+        <translation>použití: frezka-cli check SOUBOR [--rapid MM_ZA_MIN]</translation>
+    </message>
+    <message>
+        <source>%1: OK, %2 lines</source>
+        <translation>%1: v pořádku, %2 řádků</translation>
+    </message>
+    <message>
+        <source>moves: %1 (rapid %2, feed %3, arc %4, probe %5), dwells: %6</source>
+        <translation>pohyby: %1 (rychloposuv %2, posuv %3, oblouk %4, sonda %5), prodlevy: %6</translation>
+    </message>
+    <message>
+        <source>bounds (machine, mm): X %1 .. %2, Y %3 .. %4, Z %5 .. %6, A %7 .. %8</source>
+        <translation>rozsah (strojní souřadnice, mm): X %1 .. %2, Y %3 .. %4, Z %5 .. %6, A %7 .. %8</translation>
+    </message>
+    <message>
+        <source>length: rapid %1 mm, feed %2 mm</source>
+        <translation>dráha: rychloposuv %1 mm, posuv %2 mm</translation>
+    </message>
+    <message>
+        <source>naive time: %1:%2:%3 (rapid %4 mm/min, no acceleration)</source>
+        <translation>hrubý odhad času: %1:%2:%3 (rychloposuv %4 mm/min, bez zrychlení)</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli toolpath FILE [--events]</source>
+        <translation>použití: frezka-cli toolpath SOUBOR [--events]</translation>
+    </message>
+    <message>
+        <source>frezka-cli: cannot write the toolpath</source>
+        <translation>frezka-cli: dráhu nástroje nelze zapsat</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n error(s)</source>
+        <translation>
+            <numerusform>%1: %n chyba</numerusform>
+            <numerusform>%1: %n chyby</numerusform>
+            <numerusform>%1: %n chyb</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>
@@ -758,7 +968,7 @@
         <translation>Připojeno.</translation>
     </message>
     <message>
-        <source>Received %1 bytes, header "%2".</source>
+        <source>Received %1 bytes, header &quot;%2&quot;.</source>
         <translation>Přijato %1 bajtů, hlavička „%2“.</translation>
     </message>
     <message>
@@ -801,15 +1011,15 @@
 <context>
     <name>frezka::grinder::ZLinkSession</name>
     <message>
-        <source>No answer to "%1" within %2 s. Is the controller set to Z-position transfer (KONFIG6 = 1) with the selector in PGN?</source>
+        <source>No answer to &quot;%1&quot; within %2 s. Is the controller set to Z-position transfer (KONFIG6 = 1) with the selector in PGN?</source>
         <translation>Na „%1“ nepřišla do %2 s odpověď. Je řídicí systém nastaven na přenos polohy Z (KONFIG6 = 1) a přepínač v poloze PGN?</translation>
     </message>
     <message>
-        <source>The controller rejected a character of "%1" (%2).</source>
+        <source>The controller rejected a character of &quot;%1&quot; (%2).</source>
         <translation>Řídicí systém odmítl znak z „%1“ (%2).</translation>
     </message>
     <message>
-        <source>Unreadable reply "%1".</source>
+        <source>Unreadable reply &quot;%1&quot;.</source>
         <translation>Nečitelná odpověď „%1“.</translation>
     </message>
 </context>
@@ -1688,7 +1898,7 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
 <context>
     <name>frezka::gui::Plan</name>
     <message>
-        <source>the move leaves the machine's travel (soft limits); check the work zero and the program</source>
+        <source>the move leaves the machine&apos;s travel (soft limits); check the work zero and the program</source>
         <translation>pohyb opouští pracovní rozsah stroje (softwarové limity); zkontrolujte nulový bod obrobku a program</translation>
     </message>
     <message>
@@ -1696,7 +1906,7 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>program pohybuje osou, kterou tento stroj nemá</translation>
     </message>
     <message>
-        <source>the position is beyond the unit's step counters</source>
+        <source>the position is beyond the unit&apos;s step counters</source>
         <translation>poloha je mimo rozsah čítačů kroků jednotky</translation>
     </message>
     <message>
@@ -1704,7 +1914,7 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>pracovní pohyb nemá posuv (F)</translation>
     </message>
     <message>
-        <source>the spindle speed (S) is above the machine's maximum</source>
+        <source>the spindle speed (S) is above the machine&apos;s maximum</source>
         <translation>otáčky vřetene (S) jsou nad maximem stroje</translation>
     </message>
     <message>
@@ -2147,7 +2357,7 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
 <context>
     <name>frezka::gui::ProfileEditor</name>
     <message>
-        <source>"emulator" = the built-in unit emulator; or a serial port such as /dev/ttyUSB0; or a typed path such as the pty printed by gve-emu</source>
+        <source>&quot;emulator&quot; = the built-in unit emulator; or a serial port such as /dev/ttyUSB0; or a typed path such as the pty printed by gve-emu</source>
         <translation>„emulator“ = vestavěný emulátor jednotky; nebo sériový port, např. /dev/ttyUSB0; nebo zapsaná cesta, např. pty vypsaný programem gve-emu</translation>
     </message>
     <message>
@@ -2336,7 +2546,7 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>%1 starších bajtů už není zobrazeno; pro uchování všeho je zaznamenávejte do souboru.</translation>
     </message>
     <message>
-        <source>The message "%1" is not hex bytes (e.g. AA 05 00 00 FF 51).</source>
+        <source>The message &quot;%1&quot; is not hex bytes (e.g. AA 05 00 00 FF 51).</source>
         <translation>Zpráva „%1“ nejsou šestnáctkové bajty (např. AA 05 00 00 FF 51).</translation>
     </message>
     <message>
@@ -2572,7 +2782,7 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Odesláno, řídicí systém přenos potvrdil.</translation>
     </message>
     <message>
-        <source>On the controller, TCHIN programs show "no prg set" once after a transfer: set up the X axis first — select the TCHIN program in AUT and hold RES.</source>
+        <source>On the controller, TCHIN programs show &quot;no prg set&quot; once after a transfer: set up the X axis first — select the TCHIN program in AUT and hold RES.</source>
         <translation>Programy TCHIN ukážou na řídicím systému po přenosu jednou „no prg set“: nejprve seřiďte osu X — zvolte program TCHIN v AUT a podržte RES.</translation>
     </message>
     <message>
@@ -2580,7 +2790,7 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Přenos selhal: %1</translation>
     </message>
     <message>
-        <source>Save the controller's data</source>
+        <source>Save the controller&apos;s data</source>
         <translation>Uložit data z řídicího systému</translation>
     </message>
     <message>
@@ -2611,7 +2821,7 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Na %1 nepřišla do 5 s odpověď.</translation>
     </message>
     <message>
-        <source>Reading the unit's EEPROM…</source>
+        <source>Reading the unit&apos;s EEPROM…</source>
         <translation>Čtu EEPROM jednotky…</translation>
     </message>
     <message>
@@ -2772,6 +2982,104 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Position received at %1.</source>
         <translation>Poloha přijata v %1.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gveemu</name>
+    <message>
+        <source>Usage: gve-emu [options]
+Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
+The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
+Stop it with Ctrl+C (SIGINT) or SIGTERM.
+
+Options:
+  --variant ID        gve84 | gve64 | gve64-phantom | gve114 (default gve64)
+  --baud N            line speed, one of the variant&apos;s rates (default 115200)
+  --max-rate N        maximum pulse rate of the unit, pulses/s (one of the
+                      variant&apos;s orderable rates; default the variant&apos;s default)
+  --address N         unit address 0..6 (default 0)
+  --latency MS        added delay each way, milliseconds (default 0)
+  --latency-to-unit MS, --latency-to-pc MS   the same for one direction
+  --seed N            seed of the fault injector (default 1)
+  --corrupt P         probability per byte of a flipped bit, both ways (0..1)
+  --drop P            probability per byte that it is lost, both ways
+  --duplicate P       probability per byte that it arrives twice, both ways
+  --lose-reply P      probability that a whole reply is lost
+  --eeprom FILE       keep the EEPROM in FILE (read at start, written on EW/EFW/EUW)
+  --home AXIS=POS[,+|-]   home switch of AXIS (X, Y, Z, A on IN0..IN3): it is
+                      pressed at and below POS (-, default) or at and above (+)
+  --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
+                      --limit 6:X=200000,+ (GVE64 end switch X)
+  --link PATH         also create a symlink PATH to the terminal
+  --verbose           log every byte to stderr
+  --help              this text
+</source>
+        <translation>Použití: gve-emu [volby]
+Obsluhuje emulovaný interpolátor GVE na novém pseudoterminálu v reálném čase.
+První řádek na stdout je cesta k terminálu, který se má otevřít (např. /dev/pts/5).
+Ukončí se pomocí Ctrl+C (SIGINT) nebo SIGTERM.
+
+Volby:
+  --variant ID        gve84 | gve64 | gve64-phantom | gve114 (výchozí gve64)
+  --baud N            rychlost linky, jedna z rychlostí varianty (výchozí 115200)
+  --max-rate N        nejvyšší frekvence pulzů jednotky, pulzy/s (jedna z
+                      objednatelných frekvencí varianty; výchozí podle varianty)
+  --address N         adresa jednotky 0..6 (výchozí 0)
+  --latency MS        přidané zpoždění v každém směru, milisekundy (výchozí 0)
+  --latency-to-unit MS, --latency-to-pc MS   totéž pro jeden směr
+  --seed N            semínko generátoru poruch (výchozí 1)
+  --corrupt P         pravděpodobnost převráceného bitu na bajt, oba směry (0..1)
+  --drop P            pravděpodobnost ztráty bajtu, oba směry
+  --duplicate P       pravděpodobnost, že bajt dorazí dvakrát, oba směry
+  --lose-reply P      pravděpodobnost ztráty celé odpovědi
+  --eeprom SOUBOR     EEPROM uchovávat v SOUBORU (čte se při startu, zapisuje při EW/EFW/EUW)
+  --home OSA=POLOHA[,+|-]   referenční spínač OSY (X, Y, Z, A na IN0..IN3): je
+                      sepnut na POLOZE a pod ní (-, výchozí) nebo na ní a nad ní (+)
+  --limit IN:OSA=POLOHA[,+|-]  vstup IN (0..15) sepnutý OSOU za POLOHOU, např.
+                      --limit 6:X=200000,+ (koncový spínač X u GVE64)
+  --link CESTA        vytvořit také symbolický odkaz CESTA na terminál
+  --verbose           vypisovat každý bajt na stderr
+  --help              tento text
+</translation>
+    </message>
+    <message>
+        <source>%1 needs a value (see --help)</source>
+        <translation>%1 potřebuje hodnotu (viz --help)</translation>
+    </message>
+    <message>
+        <source>unknown option %1 (see --help)</source>
+        <translation>neznámá volba %1 (viz --help)</translation>
+    </message>
+    <message>
+        <source>invalid value &apos;%1&apos; for %2 (see --help)</source>
+        <translation>neplatná hodnota &apos;%1&apos; pro %2 (viz --help)</translation>
+    </message>
+    <message>
+        <source>%1 Bd is not a baud rate of the %2</source>
+        <translation>%1 Bd není přenosová rychlost jednotky %2</translation>
+    </message>
+    <message>
+        <source>%1 pulses/s is not an orderable rate of the %2</source>
+        <translation>%1 pulzů/s není objednatelná frekvence jednotky %2</translation>
+    </message>
+    <message>
+        <source>the %1 has no axis A</source>
+        <translation>%1 nemá osu A</translation>
+    </message>
+</context>
+<context>
+    <name>gve-emu</name>
+    <message>
+        <source>cannot create a pipe</source>
+        <translation>nelze vytvořit rouru</translation>
+    </message>
+    <message>
+        <source>cannot create the link %1</source>
+        <translation>nelze vytvořit odkaz %1</translation>
+    </message>
+    <message>
+        <source>cannot create the pseudo-terminal (%1): %2</source>
+        <translation>nelze vytvořit pseudoterminál (%1): %2</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,4 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
@@ -6,6 +6,169 @@
     <message>
         <source>built-in %1 emulator</source>
         <translation>built-in %1 emulator</translation>
+    </message>
+</context>
+<context>
+    <name>GrinderCli</name>
+    <message>
+        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
+                          [--baud N] [--header TEXT] [--retries N]
+                          [--reply-timeout-ms N] FILE
+       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N]
+  ping   link check (ENQ/ACK)
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
+         or, as K51LOAD 2.20 did, the file name
+  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
+         waits for a binary frame); --go MM moves the table and waits until reached
+  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
+  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
+                         the data after a request)
+Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
+</source>
+        <translation>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
+                          [--baud N] [--header TEXT] [--retries N]
+                          [--reply-timeout-ms N] FILE
+       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N]
+  ping   link check (ENQ/ACK)
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
+         or, as K51LOAD 2.20 did, the file name
+  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
+         waits for a binary frame); --go MM moves the table and waits until reached
+  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
+  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
+                         the data after a request)
+Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
+</translation>
+    </message>
+    <message>
+        <source>--header: &apos;%1&apos; is longer than 16 characters</source>
+        <translation>--header: &apos;%1&apos; is longer than 16 characters</translation>
+    </message>
+    <message>
+        <source>--header: &apos;%1&apos; holds &apos;%2&apos;; the controller shows plain ASCII only (no diacritics)</source>
+        <translation>--header: &apos;%1&apos; holds &apos;%2&apos;; the controller shows plain ASCII only (no diacritics)</translation>
+    </message>
+    <message>
+        <source>--family: &apos;%1&apos; is not k51, anc or hedit</source>
+        <translation>--family: &apos;%1&apos; is not k51, anc or hedit</translation>
+    </message>
+    <message>
+        <source>--baud: &apos;%1&apos; is not a baud rate</source>
+        <translation>--baud: &apos;%1&apos; is not a baud rate</translation>
+    </message>
+    <message>
+        <source>--retries: &apos;%1&apos; is not 0 to 100</source>
+        <translation>--retries: &apos;%1&apos; is not 0 to 100</translation>
+    </message>
+    <message>
+        <source>--reply-timeout-ms: &apos;%1&apos; is not 100 to 600000</source>
+        <translation>--reply-timeout-ms: &apos;%1&apos; is not 100 to 600000</translation>
+    </message>
+    <message>
+        <source>--form: &apos;%1&apos; is not 1 or 2</source>
+        <translation>--form: &apos;%1&apos; is not 1 or 2</translation>
+    </message>
+    <message>
+        <source>--go: &apos;%1&apos; is not a position in mm (e.g. 12.5)</source>
+        <translation>--go: &apos;%1&apos; is not a position in mm (e.g. 12.5)</translation>
+    </message>
+    <message>
+        <source>unknown option &apos;%1&apos;</source>
+        <translation>unknown option &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: unknown action &apos;%1&apos;
+</source>
+        <translation>frezka-cli grinder: unknown action &apos;%1&apos;
+</translation>
+    </message>
+    <message>
+        <source>unexpected argument &apos;%1&apos;</source>
+        <translation>unexpected argument &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>%1 needs a value</source>
+        <translation>%1 needs a value</translation>
+    </message>
+    <message>
+        <source>--port PATH is required</source>
+        <translation>--port PATH is required</translation>
+    </message>
+    <message>
+        <source>%1 needs a FILE</source>
+        <translation>%1 needs a FILE</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 left</source>
+        <translation>%1 left</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: %1 failed (%2): %3
+</source>
+        <translation>frezka-cli grinder: %1 failed (%2): %3
+</translation>
+    </message>
+    <message>
+        <source>Repeats: %1 (NAK %2, bad checksum %3), noise bytes skipped: %4
+</source>
+        <translation>Repeats: %1 (NAK %2, bad checksum %3), noise bytes skipped: %4
+</translation>
+    </message>
+    <message>
+        <source>Inner blocks: %1
+</source>
+        <translation>Inner blocks: %1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: cannot write %1: %2 (the data were received but not saved)
+</source>
+        <translation>frezka-cli grinder: cannot write %1: %2 (the data were received but not saved)
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: cannot read %1: %2
+</source>
+        <translation>frezka-cli grinder: cannot read %1: %2
+</translation>
+    </message>
+    <message>
+        <source>Note: TCHIN programs show &quot;no prg set&quot; once until the X axis is set up: select the program in AUT and hold RES.
+</source>
+        <translation>Note: TCHIN programs show &quot;no prg set&quot; once until the X axis is set up: select the program in AUT and hold RES.
+</translation>
+    </message>
+    <message>
+        <source>Z = %1 mm
+</source>
+        <translation>Z = %1 mm
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: --go needs FORM=1; FORM=2 only reports
+</source>
+        <translation>frezka-cli grinder: --go needs FORM=1; FORM=2 only reports
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: no FORM=2 position frame within %1 s
+</source>
+        <translation>frezka-cli grinder: no FORM=2 position frame within %1 s
+</translation>
+    </message>
+    <message>
+        <source>Moving to %1 mm...
+</source>
+        <translation>Moving to %1 mm...
+</translation>
     </message>
 </context>
 <context>
@@ -21,6 +184,13 @@
     <message>
         <source>unknown connection kind</source>
         <translation>unknown connection kind</translation>
+    </message>
+</context>
+<context>
+    <name>Progress</name>
+    <message>
+        <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
+        <translation><byte value="xd"/>[%1] %2% line %3 ETA %4 </translation>
     </message>
 </context>
 <context>
@@ -65,8 +235,8 @@
         <translation>Check that the file exists and is readable.</translation>
     </message>
     <message>
-        <source>Unexpected character '%1'</source>
-        <translation>Unexpected character '%1'</translation>
+        <source>Unexpected character &apos;%1&apos;</source>
+        <translation>Unexpected character &apos;%1&apos;</translation>
     </message>
     <message>
         <source>Remove it or put it inside a comment ( ).</source>
@@ -77,8 +247,8 @@
         <translation>Comment is not closed</translation>
     </message>
     <message>
-        <source>Add ')' at the end of the comment.</source>
-        <translation>Add ')' at the end of the comment.</translation>
+        <source>Add &apos;)&apos; at the end of the comment.</source>
+        <translation>Add &apos;)&apos; at the end of the comment.</translation>
     </message>
     <message>
         <source>Comment inside a comment</source>
@@ -317,8 +487,8 @@
         <translation>Use either the centre (I/J/K) or the radius (R).</translation>
     </message>
     <message>
-        <source>%1 is not in the arc's plane</source>
-        <translation>%1 is not in the arc's plane</translation>
+        <source>%1 is not in the arc&apos;s plane</source>
+        <translation>%1 is not in the arc&apos;s plane</translation>
     </message>
     <message>
         <source>G17 uses I and J, G18 uses I and K, G19 uses J and K.</source>
@@ -465,8 +635,8 @@
         <translation>Expression is not closed</translation>
     </message>
     <message>
-        <source>Add the missing ']'.</source>
-        <translation>Add the missing ']'.</translation>
+        <source>Add the missing &apos;]&apos;.</source>
+        <translation>Add the missing &apos;]&apos;.</translation>
     </message>
     <message>
         <source>Unknown operator %1</source>
@@ -636,6 +806,45 @@
         <source>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</source>
         <translation>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</translation>
     </message>
+    <message>
+        <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN]</source>
+        <translation>usage: frezka-cli check FILE [--rapid MM_PER_MIN]</translation>
+    </message>
+    <message>
+        <source>%1: OK, %2 lines</source>
+        <translation>%1: OK, %2 lines</translation>
+    </message>
+    <message>
+        <source>moves: %1 (rapid %2, feed %3, arc %4, probe %5), dwells: %6</source>
+        <translation>moves: %1 (rapid %2, feed %3, arc %4, probe %5), dwells: %6</translation>
+    </message>
+    <message>
+        <source>bounds (machine, mm): X %1 .. %2, Y %3 .. %4, Z %5 .. %6, A %7 .. %8</source>
+        <translation>bounds (machine, mm): X %1 .. %2, Y %3 .. %4, Z %5 .. %6, A %7 .. %8</translation>
+    </message>
+    <message>
+        <source>length: rapid %1 mm, feed %2 mm</source>
+        <translation>length: rapid %1 mm, feed %2 mm</translation>
+    </message>
+    <message>
+        <source>naive time: %1:%2:%3 (rapid %4 mm/min, no acceleration)</source>
+        <translation>naive time: %1:%2:%3 (rapid %4 mm/min, no acceleration)</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli toolpath FILE [--events]</source>
+        <translation>usage: frezka-cli toolpath FILE [--events]</translation>
+    </message>
+    <message>
+        <source>frezka-cli: cannot write the toolpath</source>
+        <translation>frezka-cli: cannot write the toolpath</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n error(s)</source>
+        <translation>
+            <numerusform>%1: %n error</numerusform>
+            <numerusform>%1: %n errors</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>
@@ -758,8 +967,8 @@
         <translation>Connected.</translation>
     </message>
     <message>
-        <source>Received %1 bytes, header "%2".</source>
-        <translation>Received %1 bytes, header "%2".</translation>
+        <source>Received %1 bytes, header &quot;%2&quot;.</source>
+        <translation>Received %1 bytes, header &quot;%2&quot;.</translation>
     </message>
     <message>
         <source>Sent %1 bytes; the controller stored them.</source>
@@ -801,16 +1010,16 @@
 <context>
     <name>frezka::grinder::ZLinkSession</name>
     <message>
-        <source>No answer to "%1" within %2 s. Is the controller set to Z-position transfer (KONFIG6 = 1) with the selector in PGN?</source>
-        <translation>No answer to "%1" within %2 s. Is the controller set to Z-position transfer (KONFIG6 = 1) with the selector in PGN?</translation>
+        <source>No answer to &quot;%1&quot; within %2 s. Is the controller set to Z-position transfer (KONFIG6 = 1) with the selector in PGN?</source>
+        <translation>No answer to &quot;%1&quot; within %2 s. Is the controller set to Z-position transfer (KONFIG6 = 1) with the selector in PGN?</translation>
     </message>
     <message>
-        <source>The controller rejected a character of "%1" (%2).</source>
-        <translation>The controller rejected a character of "%1" (%2).</translation>
+        <source>The controller rejected a character of &quot;%1&quot; (%2).</source>
+        <translation>The controller rejected a character of &quot;%1&quot; (%2).</translation>
     </message>
     <message>
-        <source>Unreadable reply "%1".</source>
-        <translation>Unreadable reply "%1".</translation>
+        <source>Unreadable reply &quot;%1&quot;.</source>
+        <translation>Unreadable reply &quot;%1&quot;.</translation>
     </message>
 </context>
 <context>
@@ -1465,14 +1674,20 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
     <message numerus="yes">
         <source>%1 — %n line(s)</source>
-        <translation><numerusform>%1 — %n line</numerusform><numerusform>%1 — %n lines</numerusform></translation>
+        <translation>
+            <numerusform>%1 — %n line</numerusform>
+            <numerusform>%1 — %n lines</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <source>The program has %n error(s); nothing will run until they are fixed.
 %1</source>
-        <translation><numerusform>The program has %n error; nothing will run until they are fixed.
-%1</numerusform><numerusform>The program has %n errors; nothing will run until they are fixed.
-%1</numerusform></translation>
+        <translation>
+            <numerusform>The program has %n error; nothing will run until they are fixed.
+%1</numerusform>
+            <numerusform>The program has %n errors; nothing will run until they are fixed.
+%1</numerusform>
+        </translation>
     </message>
     <message>
         <source>Laser</source>
@@ -1548,7 +1763,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
     <message numerus="yes">
         <source>Check passed: %n move(s), estimated time %1, within the soft limits.</source>
-        <translation><numerusform>Check passed: %n move, estimated time %1, within the soft limits.</numerusform><numerusform>Check passed: %n moves, estimated time %1, within the soft limits.</numerusform></translation>
+        <translation>
+            <numerusform>Check passed: %n move, estimated time %1, within the soft limits.</numerusform>
+            <numerusform>Check passed: %n moves, estimated time %1, within the soft limits.</numerusform>
+        </translation>
     </message>
     <message>
         <source>Check passed.</source>
@@ -1675,24 +1893,24 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
 <context>
     <name>frezka::gui::Plan</name>
     <message>
-        <source>the move leaves the machine's travel (soft limits); check the work zero and the program</source>
-        <translation>the move leaves the machine's travel (soft limits); check the work zero and the program</translation>
+        <source>the move leaves the machine&apos;s travel (soft limits); check the work zero and the program</source>
+        <translation>the move leaves the machine&apos;s travel (soft limits); check the work zero and the program</translation>
     </message>
     <message>
         <source>the program moves an axis this machine does not have</source>
         <translation>the program moves an axis this machine does not have</translation>
     </message>
     <message>
-        <source>the position is beyond the unit's step counters</source>
-        <translation>the position is beyond the unit's step counters</translation>
+        <source>the position is beyond the unit&apos;s step counters</source>
+        <translation>the position is beyond the unit&apos;s step counters</translation>
     </message>
     <message>
         <source>a feed move has no feed rate (F)</source>
         <translation>a feed move has no feed rate (F)</translation>
     </message>
     <message>
-        <source>the spindle speed (S) is above the machine's maximum</source>
-        <translation>the spindle speed (S) is above the machine's maximum</translation>
+        <source>the spindle speed (S) is above the machine&apos;s maximum</source>
+        <translation>the spindle speed (S) is above the machine&apos;s maximum</translation>
     </message>
     <message>
         <source>the unit cannot do this</source>
@@ -2134,8 +2352,8 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
 <context>
     <name>frezka::gui::ProfileEditor</name>
     <message>
-        <source>"emulator" = the built-in unit emulator; or a serial port such as /dev/ttyUSB0; or a typed path such as the pty printed by gve-emu</source>
-        <translation>"emulator" = the built-in unit emulator; or a serial port such as /dev/ttyUSB0; or a typed path such as the pty printed by gve-emu</translation>
+        <source>&quot;emulator&quot; = the built-in unit emulator; or a serial port such as /dev/ttyUSB0; or a typed path such as the pty printed by gve-emu</source>
+        <translation>&quot;emulator&quot; = the built-in unit emulator; or a serial port such as /dev/ttyUSB0; or a typed path such as the pty printed by gve-emu</translation>
     </message>
     <message>
         <source>General</source>
@@ -2147,7 +2365,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
     <message numerus="yes">
         <source>%n problem(s) — the profile cannot be saved yet.</source>
-        <translation><numerusform>%n problem — the profile cannot be saved yet.</numerusform><numerusform>%n problems — the profile cannot be saved yet.</numerusform></translation>
+        <translation>
+            <numerusform>%n problem — the profile cannot be saved yet.</numerusform>
+            <numerusform>%n problems — the profile cannot be saved yet.</numerusform>
+        </translation>
     </message>
     <message>
         <source>Cannot load the profile %1:
@@ -2319,8 +2540,8 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>%1 older bytes left the view; capture to a file to keep everything.</translation>
     </message>
     <message>
-        <source>The message "%1" is not hex bytes (e.g. AA 05 00 00 FF 51).</source>
-        <translation>The message "%1" is not hex bytes (e.g. AA 05 00 00 FF 51).</translation>
+        <source>The message &quot;%1&quot; is not hex bytes (e.g. AA 05 00 00 FF 51).</source>
+        <translation>The message &quot;%1&quot; is not hex bytes (e.g. AA 05 00 00 FF 51).</translation>
     </message>
     <message>
         <source>Port %1 is not open.</source>
@@ -2555,16 +2776,16 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>Sent; the controller confirmed the transfer.</translation>
     </message>
     <message>
-        <source>On the controller, TCHIN programs show "no prg set" once after a transfer: set up the X axis first — select the TCHIN program in AUT and hold RES.</source>
-        <translation>On the controller, TCHIN programs show "no prg set" once after a transfer: set up the X axis first — select the TCHIN program in AUT and hold RES.</translation>
+        <source>On the controller, TCHIN programs show &quot;no prg set&quot; once after a transfer: set up the X axis first — select the TCHIN program in AUT and hold RES.</source>
+        <translation>On the controller, TCHIN programs show &quot;no prg set&quot; once after a transfer: set up the X axis first — select the TCHIN program in AUT and hold RES.</translation>
     </message>
     <message>
         <source>Transfer failed: %1</source>
         <translation>Transfer failed: %1</translation>
     </message>
     <message>
-        <source>Save the controller's data</source>
-        <translation>Save the controller's data</translation>
+        <source>Save the controller&apos;s data</source>
+        <translation>Save the controller&apos;s data</translation>
     </message>
     <message>
         <source>Choose the file to send</source>
@@ -2594,8 +2815,8 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>No reply to %1 within 5 s.</translation>
     </message>
     <message>
-        <source>Reading the unit's EEPROM…</source>
-        <translation>Reading the unit's EEPROM…</translation>
+        <source>Reading the unit&apos;s EEPROM…</source>
+        <translation>Reading the unit&apos;s EEPROM…</translation>
     </message>
     <message>
         <source>The unit already matches the profile.</source>
@@ -2607,7 +2828,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
     <message numerus="yes">
         <source>Writing %n setting(s) and reading them back…</source>
-        <translation><numerusform>Writing %n setting and reading them back…</numerusform><numerusform>Writing %n settings and reading them back…</numerusform></translation>
+        <translation>
+            <numerusform>Writing %n setting and reading them back…</numerusform>
+            <numerusform>Writing %n settings and reading them back…</numerusform>
+        </translation>
     </message>
     <message>
         <source>The unit refused %1 (reply %2).</source>
@@ -2631,11 +2855,17 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
     <message numerus="yes">
         <source>The unit matches the profile (%n setting(s) compared).</source>
-        <translation><numerusform>The unit matches the profile (%n setting compared).</numerusform><numerusform>The unit matches the profile (%n settings compared).</numerusform></translation>
+        <translation>
+            <numerusform>The unit matches the profile (%n setting compared).</numerusform>
+            <numerusform>The unit matches the profile (%n settings compared).</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <source>%n setting(s) differ from the profile.</source>
-        <translation><numerusform>%n setting differ from the profile.</numerusform><numerusform>%n settings differ from the profile.</numerusform></translation>
+        <translation>
+            <numerusform>%n setting differ from the profile.</numerusform>
+            <numerusform>%n settings differ from the profile.</numerusform>
+        </translation>
     </message>
     <message>
         <source>Unit configuration (EEPROM)</source>
@@ -2743,6 +2973,104 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Position received at %1.</source>
         <translation>Position received at %1.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gveemu</name>
+    <message>
+        <source>Usage: gve-emu [options]
+Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
+The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
+Stop it with Ctrl+C (SIGINT) or SIGTERM.
+
+Options:
+  --variant ID        gve84 | gve64 | gve64-phantom | gve114 (default gve64)
+  --baud N            line speed, one of the variant&apos;s rates (default 115200)
+  --max-rate N        maximum pulse rate of the unit, pulses/s (one of the
+                      variant&apos;s orderable rates; default the variant&apos;s default)
+  --address N         unit address 0..6 (default 0)
+  --latency MS        added delay each way, milliseconds (default 0)
+  --latency-to-unit MS, --latency-to-pc MS   the same for one direction
+  --seed N            seed of the fault injector (default 1)
+  --corrupt P         probability per byte of a flipped bit, both ways (0..1)
+  --drop P            probability per byte that it is lost, both ways
+  --duplicate P       probability per byte that it arrives twice, both ways
+  --lose-reply P      probability that a whole reply is lost
+  --eeprom FILE       keep the EEPROM in FILE (read at start, written on EW/EFW/EUW)
+  --home AXIS=POS[,+|-]   home switch of AXIS (X, Y, Z, A on IN0..IN3): it is
+                      pressed at and below POS (-, default) or at and above (+)
+  --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
+                      --limit 6:X=200000,+ (GVE64 end switch X)
+  --link PATH         also create a symlink PATH to the terminal
+  --verbose           log every byte to stderr
+  --help              this text
+</source>
+        <translation>Usage: gve-emu [options]
+Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
+The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
+Stop it with Ctrl+C (SIGINT) or SIGTERM.
+
+Options:
+  --variant ID        gve84 | gve64 | gve64-phantom | gve114 (default gve64)
+  --baud N            line speed, one of the variant&apos;s rates (default 115200)
+  --max-rate N        maximum pulse rate of the unit, pulses/s (one of the
+                      variant&apos;s orderable rates; default the variant&apos;s default)
+  --address N         unit address 0..6 (default 0)
+  --latency MS        added delay each way, milliseconds (default 0)
+  --latency-to-unit MS, --latency-to-pc MS   the same for one direction
+  --seed N            seed of the fault injector (default 1)
+  --corrupt P         probability per byte of a flipped bit, both ways (0..1)
+  --drop P            probability per byte that it is lost, both ways
+  --duplicate P       probability per byte that it arrives twice, both ways
+  --lose-reply P      probability that a whole reply is lost
+  --eeprom FILE       keep the EEPROM in FILE (read at start, written on EW/EFW/EUW)
+  --home AXIS=POS[,+|-]   home switch of AXIS (X, Y, Z, A on IN0..IN3): it is
+                      pressed at and below POS (-, default) or at and above (+)
+  --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
+                      --limit 6:X=200000,+ (GVE64 end switch X)
+  --link PATH         also create a symlink PATH to the terminal
+  --verbose           log every byte to stderr
+  --help              this text
+</translation>
+    </message>
+    <message>
+        <source>%1 needs a value (see --help)</source>
+        <translation>%1 needs a value (see --help)</translation>
+    </message>
+    <message>
+        <source>unknown option %1 (see --help)</source>
+        <translation>unknown option %1 (see --help)</translation>
+    </message>
+    <message>
+        <source>invalid value &apos;%1&apos; for %2 (see --help)</source>
+        <translation>invalid value &apos;%1&apos; for %2 (see --help)</translation>
+    </message>
+    <message>
+        <source>%1 Bd is not a baud rate of the %2</source>
+        <translation>%1 Bd is not a baud rate of the %2</translation>
+    </message>
+    <message>
+        <source>%1 pulses/s is not an orderable rate of the %2</source>
+        <translation>%1 pulses/s is not an orderable rate of the %2</translation>
+    </message>
+    <message>
+        <source>the %1 has no axis A</source>
+        <translation>the %1 has no axis A</translation>
+    </message>
+</context>
+<context>
+    <name>gve-emu</name>
+    <message>
+        <source>cannot create a pipe</source>
+        <translation>cannot create a pipe</translation>
+    </message>
+    <message>
+        <source>cannot create the link %1</source>
+        <translation>cannot create the link %1</translation>
+    </message>
+    <message>
+        <source>cannot create the pseudo-terminal (%1): %2</source>
+        <translation>cannot create the pseudo-terminal (%1): %2</translation>
     </message>
 </context>
 <context>

@@ -48,8 +48,8 @@ int runCheck(const QStringList &args)
     if (!result.ok()) {
         for (const gcode::Error &e : result.errors)
             cli::err(gcode::formatError(file, e) + QLatin1Char('\n'));
-        cli::err(QCoreApplication::translate("frezka::gcode", "%1: %n error(s)", nullptr,
-                                             static_cast<int>(result.errors.size()))
+        const int count = static_cast<int>(result.errors.size());
+        cli::err(QCoreApplication::translate("frezka::gcode", "%1: %n error(s)", "", count)
                      .arg(file) +
                  QLatin1Char('\n'));
         return 1;

@@ -1,0 +1,22 @@
+# Fails when a shipped translation has an unfinished or empty entry, or when the two .ts files
+# do not hold the same number of messages (a string added to the code but not translated).
+foreach(ts ${TS_FILES})
+    file(READ ${ts} text)
+    string(REGEX MATCHALL "type=\"unfinished\"" unfinished "${text}")
+    string(REGEX MATCHALL "<translation></translation>" empty "${text}")
+    string(REGEX MATCHALL "<message[ >]" messages "${text}")
+    list(LENGTH unfinished n_unfinished)
+    list(LENGTH empty n_empty)
+    list(LENGTH messages n_messages)
+    message(STATUS "${ts}: ${n_messages} messages, ${n_unfinished} unfinished, ${n_empty} empty")
+    if(n_unfinished OR n_empty)
+        message(FATAL_ERROR "${ts} is not complete: translate the unfinished entries "
+                            "(cmake --build build --target update_translations, then Qt Linguist)")
+    endif()
+    list(APPEND counts ${n_messages})
+endforeach()
+list(REMOVE_DUPLICATES counts)
+list(LENGTH counts n_counts)
+if(NOT n_counts EQUAL 1)
+    message(FATAL_ERROR "the .ts files hold different numbers of messages: ${counts}")
+endif()
