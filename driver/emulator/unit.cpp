@@ -21,6 +21,19 @@ Unit::Impl::Impl(UnitOptions opts)
 {
     engine.onStopped = [this] { onStopped(); };
     engine.setTraceEnabled(options.trace);
+    for (const EepromPreset &p : options.eepromPreset) {
+        switch (p.kind) {
+        case EepromPreset::Kind::Byte:
+            eeprom.setByte(p.address, static_cast<std::uint8_t>(p.value));
+            break;
+        case EepromPreset::Kind::Float:
+            eeprom.writeFloat(p.address, static_cast<float>(p.value));
+            break;
+        case EepromPreset::Kind::Uint32:
+            eeprom.writeUint32(p.address, static_cast<std::uint32_t>(p.value));
+            break;
+        }
+    }
     if (!options.eepromFile.empty()) {
         const std::string err = eeprom.load(options.eepromFile);
         // A missing file starts from the factory contents and is created on the first write.

@@ -34,6 +34,16 @@ struct PositionSwitch
     bool operator==(const PositionSwitch &) const = default;
 };
 
+// An EEPROM value the unit holds from the start, as if a configuration tool had written it.
+struct EepromPreset
+{
+    enum class Kind { Byte, Float, Uint32 };
+    int address = 0;
+    Kind kind = Kind::Byte;
+    double value = 0;
+    bool operator==(const EepromPreset &) const = default;
+};
+
 struct UnitOptions
 {
     protocol::Variant variant = protocol::Variant::Gve64;
@@ -41,7 +51,8 @@ struct UnitOptions
     int maxPulseRate = 0; // pulses/s; 0 = the variant's default
     std::vector<PositionSwitch> switches{};
     std::string eepromFile{}; // "" = not persisted; else loaded at start, saved on write
-    bool trace = false;       // record TracePoints at every motion event
+    std::vector<EepromPreset> eepromPreset{}; // over the factory contents; a file overrides
+    bool trace = false;                       // record TracePoints at every motion event
     bool operator==(const UnitOptions &) const = default;
 };
 

@@ -16,6 +16,15 @@ emulator::UnitOptions unitOptionsFor(const machine::MachineConfig &config)
         const int d = ax.homing.direction < 0 ? -1 : 1;
         o.switches.push_back({a, a, d * std::llround(5.0 * ax.stepsPerMm), d});
     }
+    // The built-in unit was configured for this machine, as the vendor's tool would have done:
+    // its EEPROM holds the profile's settings, so connecting reports no differences.
+    for (const machine::EepromEntry &e : machine::eepromEntries(config)) {
+        using Kind = emulator::EepromPreset::Kind;
+        const Kind kind = e.kind == machine::EepromKind::Float    ? Kind::Float
+                          : e.kind == machine::EepromKind::Uint32 ? Kind::Uint32
+                                                                  : Kind::Byte;
+        o.eepromPreset.push_back({e.address, kind, e.value});
+    }
     return o;
 }
 

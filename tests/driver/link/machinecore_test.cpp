@@ -458,6 +458,16 @@ TEST(MachineCore, ProbeTrippedWithMotionAfterEndsTheJob)
     EXPECT_EQ(sim.port.unit().position()[0], 0) << "nothing after the probe ran";
 }
 
+TEST(MachineCore, BuiltInEmulatorHoldsTheProfilesEeprom)
+{
+    for (Variant v : {Variant::Gve64, Variant::Gve114}) {
+        Sim sim(v, {}, {}, true);
+        ASSERT_TRUE(sim.connect());
+        EXPECT_TRUE(sim.core.state().eepromDifferences.empty())
+            << sim.core.state().eepromDifferences.front();
+    }
+}
+
 TEST(MachineCore, EepromComparedOnConnectWrittenOnlyWhenAsked)
 {
     Sim sim;

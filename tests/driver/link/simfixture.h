@@ -14,10 +14,13 @@ namespace frezka::driver::test {
 
 struct Sim
 {
+    // unitFromProfile: the unit as the built-in emulator makes it (switches and EEPROM from the
+    // profile); otherwise a unit with the factory EEPROM and no switches.
     explicit Sim(protocol::Variant variant = protocol::Variant::Gve64, WireOptions wire = {},
-                 CoreOptions options = {})
+                 CoreOptions options = {}, bool unitFromProfile = false)
         : config(machine::defaultMachineConfig(variant))
-        , port(emulator::UnitOptions{.variant = variant}, wire)
+        , port(unitFromProfile ? unitOptionsFor(config) : emulator::UnitOptions{.variant = variant},
+               wire)
         , core(config, options)
         , runner(core, port)
     {
