@@ -43,6 +43,8 @@ run)
 test)
     install_missing
     configure_and_build
+    # Tests compare English messages: run them in the C locale whatever the user's language.
+    export LC_ALL=C.UTF-8 LANGUAGE=
     export XDG_RUNTIME_DIR="${XDG_RUNTIME_DIR:-$(mktemp -d)}"
     chmod 700 "$XDG_RUNTIME_DIR"
     cd "$build"

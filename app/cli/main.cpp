@@ -1,9 +1,9 @@
 // frezka-cli: the headless front end (check, toolpath, plan, run, grinder, ...).
 #include "cli.h"
 
+#include "app/common/translator.h"
+
 #include <QCoreApplication>
-#include <QLocale>
-#include <QTranslator>
 
 using namespace frezka::cli;
 
@@ -27,11 +27,7 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("frezka-cli"));
     QCoreApplication::setOrganizationName(QStringLiteral("Frezka"));
-    // Messages in the user's language (LANG/LC_*): Czech or English.
-    QTranslator translator;
-    const QString language = QLocale::system().name().section(QLatin1Char('_'), 0, 0);
-    if (translator.load(QStringLiteral(":/i18n/frezka_%1.qm").arg(language)))
-        QCoreApplication::installTranslator(&translator);
+    frezka::app::installTranslator();
     QStringList args = app.arguments().mid(1);
     if (args.isEmpty() || args.first() == QLatin1String("--help")
         || args.first() == QLatin1String("-h")) {

@@ -10,9 +10,10 @@
 namespace frezka::gveemu {
 namespace {
 
+// lupdate files these tr() calls under the enclosing namespace, so that is the context.
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("gve-emu", text);
+    return QCoreApplication::translate("frezka::gveemu", text);
 }
 
 int axisFromLetter(QChar c)

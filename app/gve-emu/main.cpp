@@ -3,6 +3,8 @@
 #include "emuoptions.h"
 #include "ptyserver.h"
 
+#include "app/common/translator.h"
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QSocketNotifier>
@@ -31,6 +33,7 @@ void printErr(const QString &text)
 int main(int argc, char **argv)
 {
     QCoreApplication app(argc, argv);
+    frezka::app::installTranslator();
     using namespace frezka::gveemu;
     EmuOptions options;
     QString error;
