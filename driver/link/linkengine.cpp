@@ -335,30 +335,27 @@ void LinkEngine::onRepeatReply(const Line &line, double now)
 
 void LinkEngine::recover(const std::string &why, double now)
 {
-    log(LinkLogKind::Recovery, describe() + ": " + why);
-    if (++m_attempts > m_options.maxAttempts) {
-        finishFailed(describe() + ": " + why + "; gave up after " +
-                     std::to_string(m_options.maxAttempts) + " attempts");
-        return;
-    }
-    m_state = State::Settle;
-    // Our own bytes may still be on the wire (a long packet): a query sent now would queue behind
-    // them and its reply come late, to be mistaken for another one. Settle after they are out.
-    m_deadline = std::max(now, m_txDoneAt) + m_options.settleS;
+    settleThenRetry(describe() + ": " + why, why, now);
 }
 
 void LinkEngine::retryAux(const std::string &why, double now)
 {
-    log(LinkLogKind::Recovery, why);
+    // Both '@' and '>' are harmless to repeat.
+    settleThenRetry(why, why, now);
+}
+
+void LinkEngine::settleThenRetry(const std::string &logText, const std::string &why, double now)
+{
+    log(LinkLogKind::Recovery, logText);
     if (++m_attempts > m_options.maxAttempts) {
         finishFailed(describe() + ": " + why + "; gave up after " +
                      std::to_string(m_options.maxAttempts) + " attempts");
         return;
     }
-    // Both '@' and '>' are harmless to repeat; after a settle pause to drop broken bytes.
+    // A settle pause drops broken bytes. Our own bytes may still be on the wire (a long packet):
+    // a query sent now would queue behind them and its reply come late, to be mistaken for
+    // another one. Settle after they are out.
     m_state = State::Settle;
-    // Our own bytes may still be on the wire (a long packet): a query sent now would queue behind
-    // them and its reply come late, to be mistaken for another one. Settle after they are out.
     m_deadline = std::max(now, m_txDoneAt) + m_options.settleS;
 }
 

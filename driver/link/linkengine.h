@@ -148,6 +148,8 @@ private:
                                              std::string &err);
     void recover(const std::string &why, double now);
     void retryAux(const std::string &why, double now);
+    // Counts an attempt (failing past maxAttempts), then settles before the next one.
+    void settleThenRetry(const std::string &logText, const std::string &why, double now);
     void finishOk(const protocol::Reply &r, const std::string &raw);
     void finishFailed(const std::string &why);
     void finish();
