@@ -14,6 +14,8 @@
 #include "machine/machineconfig.h"
 
 #include <cstdint>
+#include <functional>
+#include <string>
 
 namespace frezka::driver {
 
@@ -49,7 +51,13 @@ class EmulatorPort : public VirtualPort
 public:
     EmulatorPort(emulator::UnitOptions unit, WireOptions wire);
 
-    void write(std::string_view bytes) override { m_sim.pcWrite(bytes); }
+    void write(std::string_view bytes) override
+    {
+        if (tamper)
+            m_sim.pcWrite(tamper(bytes));
+        else
+            m_sim.pcWrite(bytes);
+    }
     std::string read() override { return m_sim.pcRead(); }
     double now() const override { return m_sim.now(); }
     double nextEventIn() const override { return m_sim.nextEventIn(); }
@@ -57,6 +65,10 @@ public:
 
     emulator::Unit &unit() { return m_sim.unit(); }
     WireStats wireStats() const;
+
+    // Test hook: rewrites what the PC writes before it enters the line, e.g. to damage a command
+    // in a way its checksum cannot show. Empty: the bytes go as written.
+    std::function<std::string(std::string_view)> tamper;
 
 private:
     emulator::Simulation m_sim;

@@ -291,6 +291,15 @@ void MachineCore::startPoll(double now)
             return (void)unitError(o, "position poll", MachineMode::Alarm);
         m_rttS = 0.8 * m_rttS + 0.2 * (m_now - m_pollSentAt);
         applyPosition(o.reply);
+        if (m_job && m_state.mode == MachineMode::Running && !m_pathFault && !m_needVerify &&
+            !m_kept && !m_pathGuardOff && !onPlannedPath()) {
+            std::string at;
+            for (int a = 0; a < m_program.axisCount; ++a)
+                at += (a ? ", " : "") + std::to_string(m_state.positionSteps[a]);
+            pathFault("the unit's counters read " + at +
+                      " steps, on no segment of the path "
+                      "sent to it");
+        }
     };
     m_engine.start(pos, now);
 }
@@ -407,6 +416,8 @@ void MachineCore::linkClosed(const std::string &why, double now)
     m_haltPending = false;
     if (m_job) {
         m_needVerify = true;
+        m_linkWasLost = true;
+        m_pathFault = false; // the check of the counters after reconnecting takes over
         fail("link lost: " + why + "; the job is kept and can resume after reconnecting", nullptr,
              MachineMode::LinkLost);
     } else if (why.empty()) {

@@ -48,6 +48,10 @@ struct CoreOptions
     double wireBoundPollShare = 0.005; // ... and otherwise spend at most this share on polls
     bool compareEeprom = true;         // read the unit's EEPROM on connect and report differences
     bool optionalStops = true;         // M1 pauses
+    // When the position leaves the planned path (see machinecore_pathguard.cpp): false = stop
+    // and hold the job for the operator (resume returns to the path); true = return to the
+    // path and run on without asking (headless runs, soak tests).
+    bool returnToPathAutomatically = false;
     friend bool operator==(const CoreOptions &, const CoreOptions &) = default;
 };
 
@@ -61,10 +65,13 @@ struct JobReport
     std::int64_t linkBytes = 0; // both directions during the job
     std::int64_t resent = 0;
     std::int64_t recovered = 0;
-    std::int64_t verified = 0;   // times progress was re-established from the counters
-    std::int64_t packets = 0;    // packets sent (first attempts and resends)
-    std::int64_t polls = 0;      // position polls during the job
-    double firstVectorAckS = -1; // when the unit accepted the first / last motion command
+    std::int64_t verified = 0;    // times progress was re-established from the counters
+    std::int64_t packets = 0;     // packets sent (first attempts and resends)
+    std::int64_t polls = 0;       // position polls during the job
+    std::int64_t pathFaults = 0;  // times the position left the planned path (path guard)
+    std::int64_t rerun = 0;       // vectors sent again after returning (queued ones too)
+    std::int64_t returnMoves = 0; // L moves that took the machine back to the path
+    double firstVectorAckS = -1;  // when the unit accepted the first / last motion command
     double lastVectorAckS = -1;
     bool finished = false; // reached ProgramEnd / the end of the program
     friend bool operator==(const JobReport &, const JobReport &) = default;
@@ -168,6 +175,7 @@ private:
     void handlePcOp(const machine::UnitCommand &c, double now);
     void finishJob(bool ok);
     void finishWithPosition();
+    void atRest(std::size_t index, std::function<void()> then);
     void startProbe(std::size_t index);
     void endProbe(std::size_t index, bool mustTrip);
     void verifyProgress(const std::string &why);
@@ -182,6 +190,15 @@ private:
     bool streaming() const;
     bool wireBoundAhead() const; // the motion ahead runs faster than the wire can carry it
     protocol::Command toCommand(const machine::UnitCommand &c) const;
+
+    // path guard (machinecore_pathguard.cpp)
+    bool onPlannedPath();
+    void checkAtRest(std::size_t index, std::function<void()> then);
+    void pathFault(const std::string &why);
+    void holdOrReturn();
+    void returnToPath(int attempt);
+    void returnStep(std::size_t k);
+    const machine::Steps4 &plannedBefore(std::size_t index) const;
 
     // operations helpers (machinecore_ops.cpp)
     void interrupted();
@@ -237,6 +254,16 @@ private:
     bool m_holdNeedsGo = false;
     bool m_haltExpected = false; // an interrupt is part of the operation (probe), not a hold // the
                                  // unit holds (INTA): resume with G
+    // path guard: commands before m_verified ran as planned (the unit was seen on the path at
+    // or after the start of command m_verified); m_pathFault while stopping and returning
+    std::size_t m_verified = 0;
+    bool m_pathFault = false;
+    bool m_pathGuardOff = false; // a probe stopped short: the rest was planned from elsewhere
+    std::string m_pathFaultText;
+    std::vector<machine::Steps4> m_returnMoves; // L moves back to the path, in order
+    int m_returnAttempt = 0;
+    bool m_linkWasLost = false; // counters matching nothing then mean a reset unit, not a fault
+
     // tool lift
     std::int64_t m_liftSteps = 0;
     bool m_spindleStopped = false;

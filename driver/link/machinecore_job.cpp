@@ -60,6 +60,8 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
     m_next = m_exec = m_inflightEnd = 0;
     m_vectorsAcked = 0;
     m_streamBlocked = m_queueFullSeen = m_needVerify = false;
+    m_verified = 0;
+    m_pathFault = m_pathGuardOff = m_linkWasLost = false;
     m_waitUntil = -1;
     m_packetLimit = maxPacket();
     m_vectorPrefix.assign(m_program.commands.size() + 1, 0);
@@ -312,8 +314,8 @@ void MachineCore::acceptUpTo(std::size_t end)
 
 void MachineCore::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, double now)
 {
-    if (m_next != first)
-        return; // superseded (abort, link loss)
+    if (m_next != first || m_pathFault)
+        return; // superseded (abort, link loss, the path guard dropped the queue)
     if (o.status == OutcomeStatus::Failed) {
         m_packetLimit = std::max(4, m_packetLimit / 2);
         verifyProgress("packet outcome unknown: " + o.error);
@@ -350,7 +352,7 @@ void MachineCore::onPacketOutcome(const Outcome &o, std::size_t first, std::size
 
 void MachineCore::onJobCommandOutcome(const Outcome &o, std::size_t index, double now)
 {
-    if (m_next != index)
+    if (m_next != index || m_pathFault)
         return;
     const machine::UnitCommand &c = m_program.commands[index];
     if (o.status == OutcomeStatus::Failed) {
@@ -380,6 +382,20 @@ void MachineCore::onJobCommandOutcome(const Outcome &o, std::size_t index, doubl
     }
 }
 
+// A wait of the job for the machine to stand before command `index`, then the path guard's
+// exact check of the counters there, then `then` (unless the job moved on meanwhile).
+void MachineCore::atRest(std::size_t index, std::function<void()> then)
+{
+    afterJobIdle([this, index, then = std::move(then)]() mutable {
+        if (m_next != index)
+            return;
+        checkAtRest(index, [this, index, then = std::move(then)] {
+            if (m_next == index)
+                then();
+        });
+    });
+}
+
 void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
 {
     (void)now;
@@ -387,17 +403,13 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
     m_streamBlocked = true;
     switch (c.op) {
     case UnitOp::WaitIdle:
-        afterJobIdle([this, index] {
-            if (m_next != index)
-                return;
+        atRest(index, [this, index] {
             acceptUpTo(index + 1);
             m_streamBlocked = false;
         });
         return;
     case UnitOp::Dwell:
-        afterJobIdle([this, index, ms = c.value] {
-            if (m_next != index)
-                return;
+        atRest(index, [this, index, ms = c.value] {
             acceptUpTo(index + 1);
             m_waitUntil = m_now + static_cast<double>(ms) / 1000.0;
             m_streamBlocked = false;
@@ -414,9 +426,7 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
                                ? "M6: change to tool " + std::to_string(c.aux)
                            : kind == gcode::EventKind::OptionalPause ? "M1: optional stop"
                                                                      : "M0: program stop";
-        afterJobIdle([this, index, text] {
-            if (m_next != index)
-                return;
+        atRest(index, [this, index, text] {
             acceptUpTo(index + 1);
             m_streamBlocked = false;
             m_holdNeedsGo = false;
@@ -427,18 +437,13 @@ void MachineCore::handlePcOp(const machine::UnitCommand &c, double now)
         return;
     }
     case UnitOp::ProgramEnd:
-        afterJobIdle([this, index] {
-            if (m_next != index)
-                return;
+        atRest(index, [this, index] {
             acceptUpTo(index + 1);
             finishWithPosition();
         });
         return;
     case UnitOp::Probe:
-        afterJobIdle([this, index] {
-            if (m_next == index)
-                startProbe(index);
-        });
+        atRest(index, [this, index] { startProbe(index); });
         return;
     default:
         m_streamBlocked = false;
@@ -456,6 +461,19 @@ void MachineCore::finishWithPosition()
         if (unitError(o, "reading the final position", MachineMode::LinkLost))
             return;
         applyPosition(o.reply);
+        const machine::Steps4 &end = plannedBefore(m_program.commands.size());
+        for (int a = 0; a < m_program.axisCount && !m_pathGuardOff; ++a) {
+            if (m_state.positionSteps[a] != end[a]) {
+                std::string at, want;
+                for (int b = 0; b < m_program.axisCount; ++b) {
+                    at += (b ? ", " : "") + std::to_string(m_state.positionSteps[b]);
+                    want += (b ? ", " : "") + std::to_string(end[b]);
+                }
+                pathFault("the job ended with the counters at " + at +
+                          " steps where the program ends at " + want);
+                return;
+            }
+        }
         finishJob(true);
     });
 }

@@ -65,6 +65,11 @@ MachineCore::Result MachineCore::resume(double now)
         return notNow("Resume", m_state.mode);
     if (m_needVerify)
         return refusal("the job's progress is still being checked against the unit's counters");
+    if (m_state.hold == HoldReason::PathFault && m_job) {
+        returnToPath(1);
+        pump(now);
+        return std::nullopt;
+    }
     auto running = [this] {
         m_state.hold = HoldReason::None;
         m_state.holdText.clear();
@@ -117,6 +122,7 @@ MachineCore::Result MachineCore::abort(double now)
     m_state.jobActive = false;
     m_streamBlocked = false;
     m_needVerify = false;
+    m_pathFault = false;
     setMode(MachineMode::Stopping);
     send(cmd::halt(),
          [this](const Outcome &o) { unitError(o, "stopping (H)", MachineMode::Alarm); });

@@ -107,6 +107,16 @@ void MachineCore::matchProgress()
     for (std::size_t k = 1; k < matches.size(); ++k)
         contiguous = contiguous && (matches[k] == matches[k - 1] + 1 ||
                                     m_vectorPrefix[matches[k]] == m_vectorPrefix[matches[0]]);
+    if (matches.empty() && !m_linkWasLost) {
+        // The link stayed up, so the unit's counters were not reset: the unit ran something
+        // other than what was sent.
+        pathFault("after an unsettled reply the counters read " +
+                  std::to_string(m_state.positionSteps[0]) + ", " +
+                  std::to_string(m_state.positionSteps[1]) + ", " +
+                  std::to_string(m_state.positionSteps[2]) +
+                  " steps, which no point of the job sent so far has");
+        return;
+    }
     if (!contiguous) {
         log("counters " + std::to_string(m_state.positionSteps[0]) + ", " +
             std::to_string(m_state.positionSteps[1]) + ", " +
@@ -122,6 +132,7 @@ void MachineCore::matchProgress()
         return;
     }
     const std::size_t j = matches.front();
+    m_linkWasLost = false;
     log("progress re-established at command " + std::to_string(j) + " of " +
         std::to_string(cmds.size()));
     acceptUpTo(j);
@@ -220,6 +231,11 @@ void MachineCore::startProbe(std::size_t index)
             return;
         m_haltExpected = true;
         afterStopOrInterrupt([this, index, mustTrip] {
+            // The unit brakes after the input fires; H answers only once it stands (two equal
+            // position reads alone can come from the last, slow steps of the ramp).
+            send(cmd::halt(), [this](const Outcome &h) {
+                unitError(h, "stopping the probe move (H)", MachineMode::Alarm);
+            });
             whenStill([this, index, mustTrip] { endProbe(index, mustTrip); });
         });
     });
@@ -263,6 +279,8 @@ void MachineCore::endProbe(std::size_t index, bool mustTrip)
             m_program.commands.end(), [](const machine::UnitCommand &u) {
                 return u.op == UnitOp::Vector || u.op == UnitOp::Line || u.op == UnitOp::Probe;
             });
+        if (!atEnd)
+            m_pathGuardOff = true; // the rest was planned from the probe's programmed end
         if (!atEnd && motionFollows) {
             finishJob(false);
             fail(lineText(c) + ": the probe tripped at " + std::to_string(m_state.probeSteps[0]) +

@@ -41,6 +41,9 @@ enum class HoldReason : std::uint8_t {
     Interrupt,    // an enabled input fired (STOP button, limit, ...): see interruptInputs
     OperatorStop, // M0 / M1 / M6 in the program: see holdText
     ProbeFailed,  // G38.2 / G38.4 ended without the expected contact change
+    PathFault,    // the unit's position left the planned path (a command damaged on the line
+                  // in a way its checksum cannot show): resume returns to the last verified
+                  // point of the path and runs on from there
 };
 
 // The last error, with the command and the unit's reply (or what came back instead).

@@ -71,24 +71,6 @@ TEST(MachineCore, FaultSoakEndsExact)
 
 namespace {
 
-// A slow job (long vectors) so that there is time to pause it.
-machine::UnitProgram slowProgram(int n)
-{
-    auto p = denseProgram(n, 3, 4000, 4000, 400);
-    // Start below Z = 0 (the default profile's Z runs -120..0) so that the tool can be lifted.
-    for (auto &c : p.commands) {
-        if (c.op == machine::UnitOp::Vector)
-            c.d[2] = -1;
-    }
-    machine::Steps4 at = p.startSteps;
-    for (auto &c : p.commands) {
-        for (int a = 0; a < 4; ++a)
-            at[a] += c.d[a];
-        c.endSteps = at;
-    }
-    return p;
-}
-
 machine::Steps4 endOf(const machine::UnitProgram &p)
 {
     return p.commands.back().endSteps;

@@ -113,4 +113,22 @@ inline machine::UnitProgram denseProgram(int n, int axisCount = 3, int speed = 2
     return p;
 }
 
+// A slow job (long vectors) so that there is time to pause it.
+inline machine::UnitProgram slowProgram(int n)
+{
+    auto p = denseProgram(n, 3, 4000, 4000, 400);
+    // Start below Z = 0 (the default profile's Z runs -120..0) so that the tool can be lifted.
+    for (auto &c : p.commands) {
+        if (c.op == machine::UnitOp::Vector)
+            c.d[2] = -1;
+    }
+    machine::Steps4 at = p.startSteps;
+    for (auto &c : p.commands) {
+        for (int a = 0; a < 4; ++a)
+            at[a] += c.d[a];
+        c.endSteps = at;
+    }
+    return p;
+}
+
 } // namespace frezka::driver::test
