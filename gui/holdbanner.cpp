@@ -76,8 +76,8 @@ void HoldBanner::showHold(Kind kind, int line, const QString &detail)
     const bool lifted = kind == Kind::ToolLifted;
     const bool held = kind != Kind::None && !lifted;
     m_continue->setVisible(held);
-    m_lift->setVisible(held);
-    m_stopSpindle->setVisible(held);
+    m_lift->setVisible(held && kind != Kind::PathFault); // Continue lifts the tool itself
+    m_stopSpindle->setVisible(held && kind != Kind::PathFault);
     m_lowerContinue->setVisible(lifted);
     m_lowerOnly->setVisible(lifted);
     m_feedLabel->setVisible(lifted);
@@ -136,6 +136,14 @@ void HoldBanner::retranslate()
         m_title->setText(tr("Probe failed %1").arg(where));
         m_text->setText(tr("%1\nThe probe did not touch as expected. Abort the job or Continue.")
                             .arg(m_detail));
+        break;
+    case Kind::PathFault:
+        m_title->setText(tr("Off the planned path %1").arg(where));
+        m_text->setText(
+            tr("The machine's position left the path that was sent: a command was damaged on the "
+               "serial line in a way its checksum cannot show, and the unit ran it. The machine "
+               "has stopped. Check the workpiece. Continue lifts the tool, returns to the last "
+               "point verified on the path and runs the job on from there; or Abort the job."));
         break;
     case Kind::ToolLifted:
         m_title->setText(tr("Tool lifted %1").arg(where));

@@ -18,7 +18,7 @@ class HoldBanner : public QFrame
     Q_OBJECT
 
 public:
-    enum class Kind { None, Paused, OperatorStop, Interrupt, ProbeFailed, ToolLifted };
+    enum class Kind { None, Paused, OperatorStop, Interrupt, ProbeFailed, PathFault, ToolLifted };
     explicit HoldBanner(QWidget *parent = nullptr);
     // Shows the step for kind (None hides it). line = source line, detail = unit's text.
     void showHold(Kind kind, int line, const QString &detail);

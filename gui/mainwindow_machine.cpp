@@ -341,6 +341,9 @@ void MainWindow::updateHold(const driver::MachineState &state)
         case driver::HoldReason::ProbeFailed:
             kind = K::ProbeFailed;
             break;
+        case driver::HoldReason::PathFault:
+            kind = K::PathFault;
+            break;
         default:
             kind = K::Paused;
         }

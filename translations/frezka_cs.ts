@@ -187,10 +187,60 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
-    <name>Progress</name>
+    <name>RunCli</name>
+    <message>
+        <source>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path]
+</source>
+        <translation>použití: frezka-cli run SOUBOR [--machine PROFIL] [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path]
+</translation>
+    </message>
+    <message>
+        <source>%1:%2: warning: %3
+</source>
+        <translation>%1:%2: varování: %3
+</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3
+</source>
+        <translation>%1:%2: %3
+</translation>
+    </message>
     <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
         <translation><byte value="xd"/>[%1] %2% řádek %3 zbývá %4 </translation>
+    </message>
+    <message>
+        <source> [command %1]</source>
+        <translation> [příkaz %1]</translation>
+    </message>
+    <message>
+        <source> [reply &apos;%1&apos;]</source>
+        <translation> [odpověď &apos;%1&apos;]</translation>
+    </message>
+    <message>
+        <source>could not connect to the emulator</source>
+        <translation>nelze se připojit k emulátoru</translation>
+    </message>
+    <message>
+        <source>the job stopped: %1</source>
+        <translation>úloha se zastavila: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2
+</source>
+        <translation>%1: %2
+</translation>
+    </message>
+    <message>
+        <source>the job did not finish</source>
+        <translation>úloha nedoběhla</translation>
+    </message>
+    <message>
+        <source>%1: the unit&apos;s counters differ from the planned end position
+</source>
+        <translation>%1: čítače jednotky se liší od plánované koncové polohy
+</translation>
     </message>
 </context>
 <context>
@@ -1506,6 +1556,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Abort job</source>
         <translation>Přerušit úlohu</translation>
+    </message>
+    <message>
+        <source>Off the planned path %1</source>
+        <translation>Mimo plánovanou dráhu %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position left the path that was sent: a command was damaged on the serial line in a way its checksum cannot show, and the unit ran it. The machine has stopped. Check the workpiece. Continue lifts the tool, returns to the last point verified on the path and runs the job on from there; or Abort the job.</source>
+        <translation>Poloha stroje opustila odeslanou dráhu: příkaz se na sériové lince poškodil tak, že to jeho kontrolní součet nepozná, a jednotka ho provedla. Stroj stojí. Zkontrolujte obrobek. Pokračovat zvedne nástroj, vrátí se do posledního ověřeného bodu dráhy a odtud úlohu dokončí; nebo úlohu přerušte.</translation>
     </message>
 </context>
 <context>

@@ -187,10 +187,60 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
-    <name>Progress</name>
+    <name>RunCli</name>
+    <message>
+        <source>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path]
+</source>
+        <translation>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path]
+</translation>
+    </message>
+    <message>
+        <source>%1:%2: warning: %3
+</source>
+        <translation>%1:%2: warning: %3
+</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3
+</source>
+        <translation>%1:%2: %3
+</translation>
+    </message>
     <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
         <translation><byte value="xd"/>[%1] %2% line %3 ETA %4 </translation>
+    </message>
+    <message>
+        <source> [command %1]</source>
+        <translation> [command %1]</translation>
+    </message>
+    <message>
+        <source> [reply &apos;%1&apos;]</source>
+        <translation> [reply &apos;%1&apos;]</translation>
+    </message>
+    <message>
+        <source>could not connect to the emulator</source>
+        <translation>could not connect to the emulator</translation>
+    </message>
+    <message>
+        <source>the job stopped: %1</source>
+        <translation>the job stopped: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2
+</source>
+        <translation>%1: %2
+</translation>
+    </message>
+    <message>
+        <source>the job did not finish</source>
+        <translation>the job did not finish</translation>
+    </message>
+    <message>
+        <source>%1: the unit&apos;s counters differ from the planned end position
+</source>
+        <translation>%1: the unit&apos;s counters differ from the planned end position
+</translation>
     </message>
 </context>
 <context>
@@ -1505,6 +1555,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Abort job</source>
         <translation>Abort job</translation>
+    </message>
+    <message>
+        <source>Off the planned path %1</source>
+        <translation>Off the planned path %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s position left the path that was sent: a command was damaged on the serial line in a way its checksum cannot show, and the unit ran it. The machine has stopped. Check the workpiece. Continue lifts the tool, returns to the last point verified on the path and runs the job on from there; or Abort the job.</source>
+        <translation>The machine&apos;s position left the path that was sent: a command was damaged on the serial line in a way its checksum cannot show, and the unit ran it. The machine has stopped. Check the workpiece. Continue lifts the tool, returns to the last point verified on the path and runs the job on from there; or Abort the job.</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,6 @@
 // frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N]
 //                     [--faults RATE --seed N] [--clock virtual|real] [--home]
+//                     [--return-to-path]
 //
 // Interprets and plans FILE for the machine profile, connects (a serial port / pty, or the
 // in-process emulator), optionally homes, runs the job with a progress bar on a terminal
@@ -10,6 +11,11 @@
 // --clock virtual (default for sim) it runs on a virtual clock as fast as the computer allows,
 // with --clock real in real time. --faults RATE injects byte errors (corrupted, dropped,
 // duplicated) and lost replies at RATE each (sim only), seeded by --seed.
+//
+// When the unit's position leaves the planned path (a command damaged on the line in a way its
+// checksum cannot show; see driver/link/machinecore_pathguard.cpp) the job stops and the run
+// ends with the error, unless --return-to-path lets the driver return to the last verified
+// point of the path and run on without an operator.
 #include "cli.h"
 
 #include "driver/link/emulatorport.h"
@@ -34,10 +40,11 @@ namespace {
 
 using namespace frezka;
 
-QString tr(const char *text)
+// The run command's messages (Czech and English in translations/).
+struct RunCli
 {
-    return QCoreApplication::translate("frezka::cli::run", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(RunCli)
+};
 
 struct RunArgs
 {
@@ -51,12 +58,15 @@ struct RunArgs
     bool virtualClock = true;
     bool clockGiven = false;
     bool home = false;
+    bool returnToPath = false;
 };
 
 int usage()
 {
-    cli::err(tr("usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] "
-                "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home]\n"));
+    cli::err(
+        RunCli::tr("usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] "
+                   "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] "
+                   "[--return-to-path]\n"));
     return 2;
 }
 
@@ -89,6 +99,8 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
             a.clockGiven = true;
         } else if (k == QLatin1String("--home")) {
             a.home = true;
+        } else if (k == QLatin1String("--return-to-path")) {
+            a.returnToPath = true;
         } else if (a.file.isEmpty() && !k.startsWith(QLatin1String("--"))) {
             a.file = k;
         } else {
@@ -131,14 +143,16 @@ std::optional<std::pair<machine::MachineConfig, machine::PlanResult>> prepare(co
     }
     machine::PlanResult p = machine::plan(g.toolpath, config);
     for (const machine::PlanError &w : p.warnings)
-        cli::err(tr("%1:%2: warning: %3\n")
+        cli::err(RunCli::tr("%1:%2: warning: %3\n")
                      .arg(a.file)
                      .arg(w.line)
                      .arg(QString::fromStdString(w.message)));
     if (!p.ok()) {
         for (const machine::PlanError &e : p.errors)
-            cli::err(
-                tr("%1:%2: %3\n").arg(a.file).arg(e.line).arg(QString::fromStdString(e.message)));
+            cli::err(RunCli::tr("%1:%2: %3\n")
+                         .arg(a.file)
+                         .arg(e.line)
+                         .arg(QString::fromStdString(e.message)));
         return std::nullopt;
     }
     return std::make_pair(config, std::move(p));
@@ -165,7 +179,7 @@ public:
                                  : QStringLiteral("%1:%2")
                                        .arg(static_cast<int>(s.etaS) / 60)
                                        .arg(static_cast<int>(s.etaS) % 60, 2, 10, QLatin1Char('0'));
-        cli::err(tr("\r[%1] %2% line %3 ETA %4 ")
+        cli::err(RunCli::tr("\r[%1] %2% line %3 ETA %4 ")
                      .arg(bar)
                      .arg(s.progress * 100, 5, 'f', 1)
                      .arg(s.sourceLine)
@@ -195,9 +209,9 @@ QString errorText(const driver::MachineError &e)
 {
     QString t = QString::fromStdString(e.message);
     if (!e.command.empty())
-        t += tr(" [command %1]").arg(QString::fromStdString(e.command));
+        t += RunCli::tr(" [command %1]").arg(QString::fromStdString(e.command));
     if (!e.reply.empty())
-        t += tr(" [reply '%1']").arg(QString::fromStdString(e.reply));
+        t += RunCli::tr(" [reply '%1']").arg(QString::fromStdString(e.reply));
     return t;
 }
 
@@ -214,6 +228,7 @@ Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     wire.seed = a.seed;
     driver::EmulatorPort port(driver::unitOptionsFor(config), wire);
     driver::CoreOptions options;
+    options.returnToPathAutomatically = a.returnToPath;
     options.link.baud = wire.baud;
     driver::MachineCore core(config, options);
     driver::SimRunner runner(core, port);
@@ -228,8 +243,9 @@ Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     runner.open();
     runner.runUntil([&] { return mode() != driver::MachineMode::Connecting; }, 120);
     if (mode() != driver::MachineMode::Idle)
-        return out.error.isEmpty() ? (out.error = tr("could not connect to the emulator"), out)
-                                   : out;
+        return out.error.isEmpty()
+                   ? (out.error = RunCli::tr("could not connect to the emulator"), out)
+                   : out;
     if (a.home) {
         if (auto e = core.home(runner.now()))
             return out.error = errorText(*e), out;
@@ -246,7 +262,8 @@ Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     progress.show(core.state(), true);
     progress.done();
     if (mode() == driver::MachineMode::Paused && !finished)
-        out.error = tr("the job stopped: %1").arg(QString::fromStdString(core.state().holdText));
+        out.error =
+            RunCli::tr("the job stopped: %1").arg(QString::fromStdString(core.state().holdText));
     out.ok = finished.value_or(false);
     out.report = core.jobReport();
     out.finalSteps = core.state().positionSteps;
@@ -262,6 +279,7 @@ Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
     Outcome out;
     driver::LinkWorker worker;
     driver::CoreOptions options;
+    options.returnToPathAutomatically = a.returnToPath;
     options.link.baud = a.baud > 0 ? a.baud : config.link.baud;
     worker.setCoreOptions(options);
     worker.setMachineConfig(config);
@@ -297,7 +315,8 @@ Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
             if (phase == Phase::Running)
                 progress.show(s);
             if (s.mode == driver::MachineMode::Paused && phase == Phase::Running) {
-                out.error = tr("the job stopped: %1").arg(QString::fromStdString(s.holdText));
+                out.error =
+                    RunCli::tr("the job stopped: %1").arg(QString::fromStdString(s.holdText));
                 loop.quit();
             }
             if (s.mode != driver::MachineMode::Idle)
@@ -382,6 +401,7 @@ void printReport(const Outcome &o, const machine::UnitProgram &program, int baud
     }
     j[QStringLiteral("resent")] = static_cast<qint64>(r.resent);
     j[QStringLiteral("recovered")] = static_cast<qint64>(r.recovered);
+    j[QStringLiteral("path_faults")] = static_cast<qint64>(r.pathFaults);
     cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
              QLatin1Char('\n'));
 }
@@ -399,8 +419,9 @@ int runRun(const QStringList &args)
         a->virtualClock ? runVirtual(*a, config, plan.program) : runReal(*a, config, plan.program);
     const int baud = a->baud > 0 ? a->baud : config.link.baud;
     if (!o.ok) {
-        cli::err(tr("%1: %2\n")
-                     .arg(a->file, o.error.isEmpty() ? tr("the job did not finish") : o.error));
+        cli::err(
+            RunCli::tr("%1: %2\n")
+                .arg(a->file, o.error.isEmpty() ? RunCli::tr("the job did not finish") : o.error));
         return 1;
     }
     printReport(o, plan.program, baud);
@@ -409,8 +430,8 @@ int runRun(const QStringList &args)
                                          : plan.program.commands.back().endSteps;
     for (int i = 0; i < plan.program.axisCount; ++i) {
         if (o.finalSteps[static_cast<std::size_t>(i)] != expected[static_cast<std::size_t>(i)]) {
-            cli::err(
-                tr("%1: the unit's counters differ from the planned end position\n").arg(a->file));
+            cli::err(RunCli::tr("%1: the unit's counters differ from the planned end position\n")
+                         .arg(a->file));
             return 1;
         }
     }

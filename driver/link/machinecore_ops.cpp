@@ -150,6 +150,9 @@ MachineCore::Result MachineCore::toolLift(bool stopSpindle, double now)
 {
     if (m_state.mode != MachineMode::Paused || !m_job)
         return notNow("Lifting the tool", m_state.mode);
+    if (m_state.hold == HoldReason::PathFault)
+        return refusal("off the planned path the unit holds no queue to keep: resume, which lifts "
+                       "the tool and returns to the path, or abort");
     const double liftMm = m_config.motion.toolLiftMm;
     if (liftMm <= 0)
         return refusal("the machine profile sets no tool lift height (motion.toolLiftMm)");
