@@ -146,6 +146,7 @@ void LinkEngine::syncIndex(double now, std::uint64_t tag)
 void LinkEngine::beginTransaction(double now)
 {
     ++m_stats.transactions;
+    m_lastRepeat.clear();
     m_indexBefore = m_index;
     if (m_index || !exact()) {
         transmitMain(now);
@@ -326,6 +327,18 @@ void LinkEngine::onRepeatReply(const Line &line, double now)
     if (!reply) {
         ++m_stats.garbledLines;
         retryAux("garbled repeated reply '" + line.text + "'", now);
+        return;
+    }
+    // '>' itself may arrive damaged: the unit then complains about it (4 = bad checksum, 2 = cut
+    // short), which is not the reply it was asked to repeat. A packet that arrived whole (the
+    // index said so) always answers with its count; a single command's doubtful answer counts
+    // only when '>' brings it twice.
+    const bool counted = m_packet && !reply->values.empty();
+    const bool doubtful = (reply->code == ReplyCode::Syntax && m_checksums && !counted) ||
+                          reply->code == ReplyCode::Watchdog;
+    if (doubtful && (m_packet || line.text != m_lastRepeat)) {
+        m_lastRepeat = line.text;
+        retryAux("doubtful repeated reply '" + line.text + "'", now);
         return;
     }
     ++m_recovered;

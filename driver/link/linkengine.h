@@ -176,6 +176,7 @@ private:
     std::string m_wire; // its bytes, as sent
     int m_attempts = 0;
     double m_txDoneAt = 0;       // when the bytes written so far have left on the wire
+    std::string m_lastRepeat;    // a doubtful answer to '>' (see onRepeatReply)
     bool m_doubtfulSeen = false; // a packet got a plain 4 / 2: its counted reply may follow
     int m_resent = 0;
     int m_recovered = 0;

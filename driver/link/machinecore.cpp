@@ -291,8 +291,10 @@ void MachineCore::startPoll(double now)
             return (void)unitError(o, "position poll", MachineMode::Alarm);
         m_rttS = 0.8 * m_rttS + 0.2 * (m_now - m_pollSentAt);
         applyPosition(o.reply);
-        if (m_job && m_state.mode == MachineMode::Running && !m_pathFault && !m_needVerify &&
-            !m_kept && !m_pathGuardOff && !onPlannedPath()) {
+        // While progress is re-established from the counters a position on the path still
+        // verifies it; one off the path is left to that check.
+        if (m_job && m_state.mode == MachineMode::Running && !m_pathFault && !m_kept &&
+            !m_pathGuardOff && !onPlannedPath() && !m_needVerify) {
             std::string at;
             for (int a = 0; a < m_program.axisCount; ++a)
                 at += (a ? ", " : "") + std::to_string(m_state.positionSteps[a]);

@@ -244,11 +244,13 @@ void MachineCore::returnStep(std::size_t k)
                 return;
             }
         }
-        const std::size_t old = std::max(m_next, g);
-        const std::int64_t again = m_vectorPrefix[old] - m_vectorPrefix[g];
-        m_report.rerun += again;
-        m_report.vectors -= again;
-        m_report.commands -= static_cast<std::int64_t>(old - g);
+        // Everything sent from g on goes again (accepted, or in flight when the job stopped);
+        // g may also lie beyond the accepted commands (the unit was seen running one in flight).
+        const std::size_t sent =
+            std::min(std::max({m_next, m_inflightEnd, g}), m_vectorPrefix.size() - 1);
+        m_report.rerun += m_vectorPrefix[sent] - m_vectorPrefix[g];
+        m_report.vectors += m_vectorPrefix[g] - m_vectorPrefix[m_next];
+        m_report.commands += static_cast<std::int64_t>(g) - static_cast<std::int64_t>(m_next);
         m_vectorsAcked = m_vectorPrefix[g];
         m_next = m_exec = m_inflightEnd = g;
         m_execAt = m_now;

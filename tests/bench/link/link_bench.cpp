@@ -7,7 +7,8 @@
 //     baseline. Polling (PF/P4 + F) stays on.
 //  2. Starvation: a program whose motion is slower than the wire, at 16 ms latency: starvation
 //     stops must be 0.
-//  3. Fault soak: many runs with 1 byte error per 1000 bytes (corrupted, dropped or duplicated)
+//  3. Fault soak (LINK_BENCH_SOAK_FROM=<run> starts at that run): many runs with 1 byte error per
+//  1000 bytes (corrupted, dropped or duplicated)
 //     and 1 lost reply per 1000; counts runs whose final counters differ from the expected steps
 //     or whose executed vector count differs from the program's.
 //
@@ -157,7 +158,9 @@ int main(int argc, char **argv)
     std::int64_t corrupted = 0, dropped = 0, duplicated = 0, lost = 0, recovered = 0, resent = 0,
                  verified = 0, again = 0;
     const auto soak = denseProgram(1500);
-    for (int run = 0; run < soakRuns; ++run) {
+    // LINK_BENCH_SOAK_FROM=<run>: start there (to look at one run again).
+    const char *from = getenv("LINK_BENCH_SOAK_FROM");
+    for (int run = from ? std::atoi(from) : 0; run < soakRuns; ++run) {
         WireOptions wire;
         wire.latencyS = 0.004;
         wire.byteErrorRate = 1e-3;
@@ -197,13 +200,16 @@ int main(int argc, char **argv)
             ++bad;
             std::printf(
                 "run %d (seed %d) FAILED: counters %lld %lld %lld, expected %lld %lld %lld, "
-                "%lld vectors executed\n%s\n",
+                "%lld vectors executed (job: %lld vectors, %lld path faults, %lld sent again, %lld "
+                "moves back)\n%s\n",
                 run, 1000 + run, static_cast<long long>(pos[0]), static_cast<long long>(pos[1]),
                 static_cast<long long>(pos[2]),
                 static_cast<long long>(soak.commands.back().endSteps[0]),
                 static_cast<long long>(soak.commands.back().endSteps[1]),
                 static_cast<long long>(soak.commands.back().endSteps[2]),
                 static_cast<long long>(sim.port.unit().stats().motion.vectorsExecuted),
+                static_cast<long long>(report.vectors), static_cast<long long>(report.pathFaults),
+                static_cast<long long>(report.rerun), static_cast<long long>(report.returnMoves),
                 sim.lastLog(12).c_str());
         }
         const WireStats w = sim.port.wireStats();

@@ -136,9 +136,42 @@ TEST(LinkEngine, BadChecksumReplyFromUnitMeansCheckIndex)
     h.engine.takeOutput();
     h.engine.receive(reply("0,7"), h.t);
     EXPECT_EQ(h.engine.takeOutput(), encode(cmd::repeat(), true));
+    // A "4" to '>' may be the unit's complaint about a damaged '>': asked again, and taken only
+    // when '>' brings it twice.
+    h.engine.receive(reply("4"), h.t);
+    EXPECT_TRUE(h.outcomes.empty());
+    h.timeout();
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true));
+    h.engine.receive(reply("0,7"), h.t);
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::repeat(), true));
     h.engine.receive(reply("4"), h.t);
     ASSERT_EQ(h.outcomes.size(), 1u);
     EXPECT_EQ(h.outcomes[0].reply.code, ReplyCode::Syntax);
+}
+
+// The repeat of a packet's reply that arrived whole always carries the count: a plain "4" is
+// the unit's complaint about a damaged '>' (taking it would send the whole packet again).
+TEST(LinkEngine, PacketRepeatAnsweredPlainFourIsAskedAgain)
+{
+    Harness h;
+    h.sync(0);
+    std::vector<Command> p{cmd::vector(1, 0, 0), cmd::vector(2, 0, 0)};
+    h.engine.startPacket(p, 0);
+    h.engine.takeOutput();
+    h.timeout(); // the packet's reply is lost: settle,
+    h.timeout(); // then ask where the unit is
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true));
+    h.engine.receive(reply("0,5"), h.t); // *S *S, two vectors, *E: it arrived
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::repeat(), true));
+    h.engine.receive(reply("4"), h.t); // '>' was damaged on the way in
+    EXPECT_TRUE(h.outcomes.empty());
+    h.timeout();
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true));
+    h.engine.receive(reply("0,5"), h.t);
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::repeat(), true));
+    h.engine.receive(reply("0,2"), h.t);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].accepted, 2);
 }
 
 TEST(LinkEngine, PacketAndPartialFailure)
