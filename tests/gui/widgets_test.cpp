@@ -2,6 +2,7 @@
 // speed-plot decimation, DRO axes.
 #include "gui/consolewidget.h"
 #include "gui/drowidget.h"
+#include "gui/holdbanner.h"
 #include "gui/jogpanel.h"
 #include "gui/programtext.h"
 #include "gui/runpanel.h"
@@ -145,6 +146,36 @@ private slots:
         QCOMPARE(dro.machineText(0), QStringLiteral("1.500"));
         QCOMPARE(dro.workText(2), QStringLiteral("0.250"));
         QVERIFY(dro.findChild<QWidget *>(QStringLiteral("droWorkA"))->isHidden());
+    }
+
+    // Off the planned path: the banner explains and offers Continue (which returns to the path)
+    // and Abort, but not the KEEP tool lift (the unit holds no queue then).
+    void holdBannerPathFault()
+    {
+        HoldBanner banner;
+        QSignalSpy cont(&banner, &HoldBanner::continueRequested);
+        banner.showHold(HoldBanner::Kind::PathFault, 42, QStringLiteral("driver text"));
+        QVERIFY(!banner.isHidden());
+        QVERIFY(banner.text().contains(QLatin1String("42")));
+        QVERIFY(banner.text().contains(QLatin1String("path")));
+        QStringList shown;
+        for (QPushButton *b : banner.findChildren<QPushButton *>()) {
+            if (!b->isHidden())
+                shown << b->text();
+        }
+        QCOMPARE(shown.size(), 2);
+        QVERIFY(shown.contains(QLatin1String("Continue")));
+        QVERIFY(shown.contains(QLatin1String("Abort job")));
+        for (QPushButton *b : banner.findChildren<QPushButton *>()) {
+            if (b->text() == QLatin1String("Continue"))
+                b->click();
+        }
+        QCOMPARE(cont.size(), 1);
+        banner.showHold(HoldBanner::Kind::Paused, 42, {});
+        int liftShown = 0;
+        for (QPushButton *b : banner.findChildren<QPushButton *>())
+            liftShown += !b->isHidden() && b->text() == QLatin1String("Lift tool") ? 1 : 0;
+        QCOMPARE(liftShown, 1);
     }
 };
 

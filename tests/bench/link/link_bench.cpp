@@ -222,7 +222,8 @@ int main(int argc, char **argv)
         verified += sim.core.jobReport().verified;
     }
     std::printf("runs with wrong final counters or vector count: %d of %d\n", bad, soakRuns);
-    std::printf("runs where the unit ran a damaged command the checksum passed (caught by the path "
+    std::printf("runs where the unit ran something other than what was sent (a damage the checksum "
+                "passed, or a packet run as loose lines with one missing; caught by the path "
                 "guard, returned to the path): %d, vectors run again there: %lld\n",
                 faulted, static_cast<long long>(again));
     std::printf("faults injected: %lld corrupted, %lld dropped, %lld duplicated bytes, %lld lost "
