@@ -366,7 +366,8 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
     const int axes = info.axisCount == 4 && config.axes[3].present ? 4 : 3;
     m_dro->setAxisCount(axes);
     m_jog->setAxisCount(axes);
-    m_jog->setMpgAvailable(info.hasMpg);
+    m_jog->setMpgAvailable(
+        protocol::featuresOf(config.unit.variant, config.unit.firmwareVersion).mpg);
     m_io->setRelayCount(info.relayOutputs);
     m_outputs->setMaxRpm(config.spindle.maxRpm);
     using F = machine::OutputFunction;

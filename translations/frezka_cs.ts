@@ -3045,6 +3045,30 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
 <context>
     <name>frezka::gveemu</name>
     <message>
+        <source>%1 needs a value (see --help)</source>
+        <translation>%1 potřebuje hodnotu (viz --help)</translation>
+    </message>
+    <message>
+        <source>unknown option %1 (see --help)</source>
+        <translation>neznámá volba %1 (viz --help)</translation>
+    </message>
+    <message>
+        <source>invalid value &apos;%1&apos; for %2 (see --help)</source>
+        <translation>neplatná hodnota &apos;%1&apos; pro %2 (viz --help)</translation>
+    </message>
+    <message>
+        <source>%1 Bd is not a baud rate of the %2</source>
+        <translation>%1 Bd není přenosová rychlost jednotky %2</translation>
+    </message>
+    <message>
+        <source>%1 pulses/s is not an orderable rate of the %2</source>
+        <translation>%1 pulzů/s není objednatelná frekvence jednotky %2</translation>
+    </message>
+    <message>
+        <source>the %1 has no axis A</source>
+        <translation>%1 nemá osu A</translation>
+    </message>
+    <message>
         <source>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
 The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
@@ -3055,6 +3079,9 @@ Options:
   --baud N            line speed, one of the variant&apos;s rates (default 115200)
   --max-rate N        maximum pulse rate of the unit, pulses/s (one of the
                       variant&apos;s orderable rates; default the variant&apos;s default)
+  --firmware TEXT     the reply to &apos;?&apos;, e.g. &quot;IP64MPG v17 1.2.2009&quot;: an older
+                      GVE64 firmware lacks MPG and EEPROM floats (v10), VK/VL/XM
+                      and N&lt;axis&gt; (v19) (default the variant&apos;s)
   --address N         unit address 0..6 (default 0)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
@@ -3082,6 +3109,9 @@ Volby:
   --baud N            rychlost linky, jedna z rychlostí varianty (výchozí 115200)
   --max-rate N        nejvyšší frekvence pulzů jednotky, pulzy/s (jedna z
                       objednatelných frekvencí varianty; výchozí podle varianty)
+  --firmware TEXT     odpověď na &apos;?&apos;, např. &quot;IP64MPG v17 1.2.2009&quot;: starší
+                      firmware GVE64 nemá MPG a EEPROM float (v10), VK/VL/XM
+                      a N&lt;osa&gt; (v19) (výchozí podle varianty)
   --address N         adresa jednotky 0..6 (výchozí 0)
   --latency MS        přidané zpoždění v každém směru, milisekundy (výchozí 0)
   --latency-to-unit MS, --latency-to-pc MS   totéž pro jeden směr
@@ -3101,28 +3131,8 @@ Volby:
 </translation>
     </message>
     <message>
-        <source>%1 needs a value (see --help)</source>
-        <translation>%1 potřebuje hodnotu (viz --help)</translation>
-    </message>
-    <message>
-        <source>unknown option %1 (see --help)</source>
-        <translation>neznámá volba %1 (viz --help)</translation>
-    </message>
-    <message>
-        <source>invalid value &apos;%1&apos; for %2 (see --help)</source>
-        <translation>neplatná hodnota &apos;%1&apos; pro %2 (viz --help)</translation>
-    </message>
-    <message>
-        <source>%1 Bd is not a baud rate of the %2</source>
-        <translation>%1 Bd není přenosová rychlost jednotky %2</translation>
-    </message>
-    <message>
-        <source>%1 pulses/s is not an orderable rate of the %2</source>
-        <translation>%1 pulzů/s není objednatelná frekvence jednotky %2</translation>
-    </message>
-    <message>
-        <source>the %1 has no axis A</source>
-        <translation>%1 nemá osu A</translation>
+        <source>&apos;%1&apos; is not a firmware string of the %2</source>
+        <translation>&apos;%1&apos; není řetězec firmwaru jednotky %2</translation>
     </message>
 </context>
 <context>

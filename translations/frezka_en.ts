@@ -3036,6 +3036,30 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
 <context>
     <name>frezka::gveemu</name>
     <message>
+        <source>%1 needs a value (see --help)</source>
+        <translation>%1 needs a value (see --help)</translation>
+    </message>
+    <message>
+        <source>unknown option %1 (see --help)</source>
+        <translation>unknown option %1 (see --help)</translation>
+    </message>
+    <message>
+        <source>invalid value &apos;%1&apos; for %2 (see --help)</source>
+        <translation>invalid value &apos;%1&apos; for %2 (see --help)</translation>
+    </message>
+    <message>
+        <source>%1 Bd is not a baud rate of the %2</source>
+        <translation>%1 Bd is not a baud rate of the %2</translation>
+    </message>
+    <message>
+        <source>%1 pulses/s is not an orderable rate of the %2</source>
+        <translation>%1 pulses/s is not an orderable rate of the %2</translation>
+    </message>
+    <message>
+        <source>the %1 has no axis A</source>
+        <translation>the %1 has no axis A</translation>
+    </message>
+    <message>
         <source>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
 The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
@@ -3046,6 +3070,9 @@ Options:
   --baud N            line speed, one of the variant&apos;s rates (default 115200)
   --max-rate N        maximum pulse rate of the unit, pulses/s (one of the
                       variant&apos;s orderable rates; default the variant&apos;s default)
+  --firmware TEXT     the reply to &apos;?&apos;, e.g. &quot;IP64MPG v17 1.2.2009&quot;: an older
+                      GVE64 firmware lacks MPG and EEPROM floats (v10), VK/VL/XM
+                      and N&lt;axis&gt; (v19) (default the variant&apos;s)
   --address N         unit address 0..6 (default 0)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
@@ -3073,6 +3100,9 @@ Options:
   --baud N            line speed, one of the variant&apos;s rates (default 115200)
   --max-rate N        maximum pulse rate of the unit, pulses/s (one of the
                       variant&apos;s orderable rates; default the variant&apos;s default)
+  --firmware TEXT     the reply to &apos;?&apos;, e.g. &quot;IP64MPG v17 1.2.2009&quot;: an older
+                      GVE64 firmware lacks MPG and EEPROM floats (v10), VK/VL/XM
+                      and N&lt;axis&gt; (v19) (default the variant&apos;s)
   --address N         unit address 0..6 (default 0)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
@@ -3092,28 +3122,8 @@ Options:
 </translation>
     </message>
     <message>
-        <source>%1 needs a value (see --help)</source>
-        <translation>%1 needs a value (see --help)</translation>
-    </message>
-    <message>
-        <source>unknown option %1 (see --help)</source>
-        <translation>unknown option %1 (see --help)</translation>
-    </message>
-    <message>
-        <source>invalid value &apos;%1&apos; for %2 (see --help)</source>
-        <translation>invalid value &apos;%1&apos; for %2 (see --help)</translation>
-    </message>
-    <message>
-        <source>%1 Bd is not a baud rate of the %2</source>
-        <translation>%1 Bd is not a baud rate of the %2</translation>
-    </message>
-    <message>
-        <source>%1 pulses/s is not an orderable rate of the %2</source>
-        <translation>%1 pulses/s is not an orderable rate of the %2</translation>
-    </message>
-    <message>
-        <source>the %1 has no axis A</source>
-        <translation>the %1 has no axis A</translation>
+        <source>&apos;%1&apos; is not a firmware string of the %2</source>
+        <translation>&apos;%1&apos; is not a firmware string of the %2</translation>
     </message>
 </context>
 <context>

@@ -69,6 +69,9 @@ QString emuHelpText()
         "  --baud N            line speed, one of the variant's rates (default 115200)\n"
         "  --max-rate N        maximum pulse rate of the unit, pulses/s (one of the\n"
         "                      variant's orderable rates; default the variant's default)\n"
+        "  --firmware TEXT     the reply to '?', e.g. \"IP64MPG v17 1.2.2009\": an older\n"
+        "                      GVE64 firmware lacks MPG and EEPROM floats (v10), VK/VL/XM\n"
+        "                      and N<axis> (v19) (default the variant's)\n"
         "  --address N         unit address 0..6 (default 0)\n"
         "  --latency MS        added delay each way, milliseconds (default 0)\n"
         "  --latency-to-unit MS, --latency-to-pc MS   the same for one direction\n"
@@ -118,6 +121,9 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
             baud = v.toInt(&ok);
         } else if (a == QLatin1String("--max-rate")) {
             unit.maxPulseRate = v.toInt(&ok);
+        } else if (a == QLatin1String("--firmware")) {
+            unit.firmware = v.toStdString();
+            ok = !unit.firmware.empty();
         } else if (a == QLatin1String("--address")) {
             unit.address = v.toInt(&ok);
             ok = ok && unit.address >= 0 && unit.address <= 6;
@@ -180,6 +186,14 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
                                             unit.maxPulseRate) == info.maxPulseRates.end()) {
         error = tr("%1 pulses/s is not an orderable rate of the %2")
                     .arg(unit.maxPulseRate)
+                    .arg(QString::fromUtf8(info.displayName.data(), int(info.displayName.size())));
+        return false;
+    }
+    const auto family =
+        unit.variant == protocol::Variant::Gve64Phantom ? protocol::Variant::Gve64 : unit.variant;
+    if (!unit.firmware.empty() && protocol::variantFromFirmware(unit.firmware) != family) {
+        error = tr("'%1' is not a firmware string of the %2")
+                    .arg(QString::fromStdString(unit.firmware))
                     .arg(QString::fromUtf8(info.displayName.data(), int(info.displayName.size())));
         return false;
     }

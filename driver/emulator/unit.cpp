@@ -15,6 +15,8 @@ namespace frezka::emulator {
 Unit::Impl::Impl(UnitOptions opts)
     : options(std::move(opts))
     , info(&protocol::variantInfo(options.variant))
+    , firmware(options.firmware.empty() ? std::string(info->firmware) : options.firmware)
+    , features(protocol::featuresOf(options.variant, protocol::firmwareVersion(firmware)))
     , maxRate(options.maxPulseRate > 0 ? options.maxPulseRate : info->defaultMaxPulseRate)
     , eeprom(options.variant)
     , switches(options.switches)
@@ -59,7 +61,7 @@ void Unit::Impl::resetState(bool powerOn)
     velocityCorrection = readings::kResetModeIsVk;
     std::fill(std::begin(st), std::end(st), 0);
     inta = intcom = stopBit = freeBit = false;
-    mpg = info->hasMpg ? Mpg::Silent : Mpg::Off;
+    mpg = features.mpg ? Mpg::Silent : Mpg::Off;
     outputs = 0xFF;
     spindle = 0;
     kept = false;

@@ -53,6 +53,10 @@ struct UnitOptions
     std::string eepromFile{}; // "" = not persisted; else loaded at start, saved on write
     std::vector<EepromPreset> eepromPreset{}; // over the factory contents; a file overrides
     bool trace = false;                       // record TracePoints at every motion event
+    // The '?' reply; "" = the variant's. Its version number gates what the unit understands
+    // (protocol::featuresOf): an older GVE64 answers 3 (unknown) to VL/VK/VN/XM/N<axis> below
+    // v19 and to Y and the EEPROM float/uint32 commands below v10.
+    std::string firmware{};
     bool operator==(const UnitOptions &) const = default;
 };
 

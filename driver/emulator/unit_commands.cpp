@@ -23,7 +23,7 @@ constexpr Reply kDeferred{-1, {}};
 std::optional<Reply> Unit::Impl::executeLink(std::string_view body)
 {
     if (body == "?")
-        return Reply{0, std::string(info->firmware)};
+        return Reply{0, firmware};
     if (body == "Q")
         return Reply{0, std::string(info->defaultId)};
     if (body == "@")
@@ -65,6 +65,12 @@ Reply Unit::Impl::execute(int address, std::string_view body)
         return {4, {}}; // end of a packet that was never started
     const char c = body.front();
     const std::string_view rest = body.substr(1);
+    // What an older firmware does not know yet (§1): unknown command.
+    const bool v19 = body.starts_with("VL") || body.starts_with("VK") || body.starts_with("VN") ||
+                     body.starts_with("XM") || (c == 'N' && !rest.empty());
+    const bool v10 = c == 'Y' || body.starts_with("EF") || body.starts_with("EU");
+    if ((v19 && !features.vlVkXmNa) || (v10 && !(c == 'Y' ? features.mpg : features.eepromFloat)))
+        return {3, {}};
     switch (c) {
     case 'L':
     case 'C':

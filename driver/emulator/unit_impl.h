@@ -22,6 +22,8 @@ struct Unit::Impl
     // ---- configuration
     UnitOptions options;
     const protocol::VariantInfo *info;
+    std::string firmware;        // the '?' reply
+    protocol::Features features; // what this firmware understands
     int maxRate;
 
     // ---- link

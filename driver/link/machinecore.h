@@ -112,7 +112,12 @@ public:
     Result sendRaw(const std::string &text, double now);
     // Writes the profile's EEPROM settings (§12) to the unit, then compares again.
     Result writeEeprom(double now);
-    void setConfig(machine::MachineConfig config) { m_config = std::move(config); }
+    void setConfig(machine::MachineConfig config)
+    {
+        m_config = std::move(config);
+        if (!m_job)
+            m_state.axisCount = machine::wireAxisCount(m_config);
+    }
 
     const MachineState &state() const { return m_state; }
     const JobReport &jobReport() const { return m_report; }
@@ -158,6 +163,7 @@ private:
     void connectSequence();
     void switchChecksums(int attempt);
     void setupUnit();
+    void setupAfterIdentify();
     void compareEeprom();
     void probeDoublePacketStart();
     void packetStartTest(int attempt);

@@ -72,27 +72,50 @@ void MachineCore::setupUnit()
             return;
         }
         m_state.variant = want.variant;
+        const auto version = firmwareVersion(m_state.firmware);
+        m_state.firmwareVersion = version.value_or(0);
+        m_state.features = featuresOf(want.variant, version);
+        // The plan was made for the profile's firmware: a unit that knows less must be said.
+        const Features promised = featuresOf(want.variant, m_config.unit.firmwareVersion);
+        const Features &have = m_state.features;
+        if ((promised.mpg && !have.mpg) || (promised.eepromFloat && !have.eepromFloat) ||
+            (promised.vlVkXmNa && !have.vlVkXmNa)) {
+            fail("the unit reports firmware v" + std::to_string(m_state.firmwareVersion) +
+                     " but the machine profile says v" +
+                     std::to_string(m_config.unit.firmwareVersion) +
+                     ", and plans for the profile's firmware may use what this one lacks (MPG "
+                     "and EEPROM floats need v10; VK, VL, XM and setting one axis's counter "
+                     "v19): set unit.firmwareVersion to " +
+                     std::to_string(m_state.firmwareVersion) + " in the profile",
+                 &o, MachineMode::Alarm);
+        }
         m_dirty = true;
+        setupAfterIdentify();
     });
     send(cmd::identify(), [this](const Outcome &o) {
         if (unitError(o, "identifying the unit ('Q')", MachineMode::Alarm))
             return;
         m_state.unitId = o.reply.values.empty() ? "" : o.reply.values[0];
     });
+}
+
+// The rest of the connect sequence, for what the unit's firmware understands.
+void MachineCore::setupAfterIdentify()
+{
     auto check = [this](const char *what) {
         return [this, what](const Outcome &o) { unitError(o, what, MachineMode::Alarm); };
     };
-    if (want.hasMpg) {
+    if (m_state.features.mpg) {
         send(cmd::mpgOff(), check("switching the MPG off"));
         m_state.mpgOn = false;
     }
     send(cmd::pause(std::clamp(m_config.motion.pauseMs, 1, 24)), check("setting T"));
-    if (want.hasVlVkXmNa)
+    if (m_state.features.vlVkXmNa)
         send(cmd::speedModeVn(), check("setting VN"));
     const machine::EepromConfig &ee = m_config.eeprom;
     send(cmd::statusWrite(0, ee.interruptEnable), check("setting the interrupt mask"));
     send(cmd::statusWrite(2, ee.polarity), check("setting the input polarity"));
-    if (want.variant != Variant::Gve84) {
+    if (m_config.unit.variant != Variant::Gve84) {
         send(cmd::statusWrite(1, ee.interruptEnableHigh), check("setting the interrupt mask"));
         send(cmd::statusWrite(3, ee.polarityHigh), check("setting the input polarity"));
     }
@@ -143,7 +166,7 @@ void MachineCore::packetStartTest(int attempt)
 void MachineCore::compareEeprom()
 {
     m_state.eepromDifferences.clear();
-    const bool wide = variantInfo(m_config.unit.variant).hasEepromFloat;
+    const bool wide = m_state.features.eepromFloat;
     for (const machine::EepromEntry &e : machine::eepromEntries(m_config)) {
         Command c;
         switch (e.kind) {
@@ -222,7 +245,7 @@ MachineCore::Result MachineCore::writeEeprom(double now)
                             {},
                             {},
                             -1};
-    const bool wide = variantInfo(m_config.unit.variant).hasEepromFloat;
+    const bool wide = m_state.features.eepromFloat;
     for (const machine::EepromEntry &e : machine::eepromEntries(m_config)) {
         Command c;
         switch (e.kind) {

@@ -43,6 +43,28 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
                           std::to_string(m_state.positionSteps[a]) + "; plan it again from here");
     }
     m_program = std::move(program);
+    if (!m_state.features.vlVkXmNa) {
+        // Before v19 a GVE64 knows no speed modes: it always runs as VN (no direction
+        // correction), and a plan in VK cannot run on it.
+        auto &cmds = m_program.commands;
+        const auto vk = std::find_if(cmds.begin(), cmds.end(), [](const machine::UnitCommand &c) {
+            return c.op == UnitOp::SpeedModeVk;
+        });
+        if (vk != cmds.end()) {
+            auto e = refuse(lineText(*vk) + ": the plan uses VK, which this unit's firmware (v" +
+                            std::to_string(m_state.firmwareVersion) +
+                            ") lacks (it needs v19); plan in VN (motion.speedMode \"vn\", or "
+                            "unit.firmwareVersion in the profile)");
+            m_program = {};
+            return e;
+        }
+        const auto before = cmds.size();
+        std::erase_if(cmds,
+                      [](const machine::UnitCommand &c) { return c.op == UnitOp::SpeedModeVn; });
+        if (cmds.size() != before)
+            log("VN not sent: firmware v" + std::to_string(m_state.firmwareVersion) +
+                " has no speed modes and always runs as VN");
+    }
     for (const machine::UnitCommand &c : m_program.commands) {
         if (c.op > UnitOp::Spindle)
             continue;

@@ -303,6 +303,22 @@ MachineCore::Result MachineCore::home(double now, unsigned axisMask)
     unsigned homing = 0;
     for (const auto &m : moves)
         homing |= 1u << static_cast<int>(m.axis);
+    // Before v19 a GVE64 cannot set one axis's counter (N<axis>): only N, which zeroes them all,
+    // and only when every axis is homed to 0 together.
+    const bool zeroAll = !m_state.features.vlVkXmNa;
+    if (zeroAll) {
+        unsigned every = 0; // the axes the machine has (an absent one's counter means nothing)
+        for (int a = 0; a < m_state.axisCount; ++a)
+            every |= m_config.axes[static_cast<std::size_t>(a)].present ? 1u << a : 0u;
+        const bool allZero =
+            std::all_of(moves.begin(), moves.end(),
+                        [](const machine::HomingMove &m) { return m.homeSteps == 0; });
+        if (homing != every || !allZero)
+            return refusal("this unit's firmware (v" + std::to_string(m_state.firmwareVersion) +
+                           ") cannot set one axis's counter (N<axis> needs v19), and N zeroes "
+                           "every counter: home all the machine's axes together, each with home "
+                           "position 0");
+    }
     m_state.homedAxes = static_cast<std::uint8_t>(m_state.homedAxes & ~homing);
     m_state.homed = false;
     setMode(MachineMode::Homing);
@@ -327,6 +343,8 @@ MachineCore::Result MachineCore::home(double now, unsigned axisMask)
             if (unitError(o, std::string("homing axis ") + axisLetter(axis), MachineMode::Alarm))
                 m_steps.clear();
         });
+        if (zeroAll)
+            continue; // N after the last axis
         send(cmd::setCounter(axis, m.homeSteps), [this, axis](const Outcome &o) {
             if (unitError(o, std::string("setting the counter of ") + axisLetter(axis),
                           MachineMode::Alarm)) {
@@ -335,6 +353,15 @@ MachineCore::Result MachineCore::home(double now, unsigned axisMask)
             }
             m_state.homedAxes =
                 static_cast<std::uint8_t>(m_state.homedAxes | (1u << static_cast<int>(axis)));
+        });
+    }
+    if (zeroAll) {
+        send(cmd::zeroAll(), [this, homing](const Outcome &o) {
+            if (unitError(o, "zeroing the counters (N)", MachineMode::Alarm)) {
+                m_steps.clear();
+                return;
+            }
+            m_state.homedAxes = static_cast<std::uint8_t>(m_state.homedAxes | homing);
         });
     }
     connected(); // position + status -> Idle
@@ -440,8 +467,11 @@ MachineCore::Result MachineCore::jogStop(double now)
 
 MachineCore::Result MachineCore::setMpg(bool on, double now)
 {
-    if (!variantInfo(m_config.unit.variant).hasMpg)
-        return refusal("this unit has no MPG handwheel");
+    if (!m_state.features.mpg)
+        return refusal(variantInfo(m_config.unit.variant).hasMpg
+                           ? "this unit's firmware (v" + std::to_string(m_state.firmwareVersion) +
+                                 ") has no MPG handwheel; it needs v10"
+                           : std::string("this unit has no MPG handwheel"));
     if (m_state.mode != MachineMode::Idle)
         return notNow("Switching the MPG", m_state.mode);
     send(on ? cmd::mpgSilent() : cmd::mpgOff(), [this, on](const Outcome &o) {
@@ -497,8 +527,11 @@ MachineCore::Result MachineCore::setOverride(int percent, double now)
 {
     if (auto bad = validate(cmd::multiplier(percent), m_config.unit.variant))
         return refusal(bad.message);
-    if (!variantInfo(m_config.unit.variant).hasVlVkXmNa)
-        return refusal("this unit has no XM");
+    if (!m_state.features.vlVkXmNa)
+        return refusal(variantInfo(m_config.unit.variant).hasVlVkXmNa
+                           ? "this unit's firmware (v" + std::to_string(m_state.firmwareVersion) +
+                                 ") has no XM feed override; it needs v19"
+                           : std::string("this unit has no XM feed override"));
     send(cmd::multiplier(percent), [this, percent](const Outcome &o) {
         if (unitError(o, "setting the feed override (XM)", MachineMode::Alarm))
             return;

@@ -64,8 +64,10 @@ struct MachineState
 
     // unit
     protocol::Variant variant = protocol::Variant::Gve64;
-    std::string firmware; // reply to '?'
-    std::string unitId;   // reply to 'Q'
+    std::string firmware;        // reply to '?'
+    int firmwareVersion = 0;     // its version number, 0 when it has none
+    protocol::Features features; // what the unit understands, by variant and firmware version
+    std::string unitId;          // reply to 'Q'
     bool checksums = false;
     int axisCount = 3;
     std::vector<std::string> eepromDifferences; // "steps per mm X: unit 200, profile 400"

@@ -57,4 +57,31 @@ std::optional<Variant> variantFromFirmware(std::string_view firmware)
     return std::nullopt;
 }
 
+std::optional<int> firmwareVersion(std::string_view firmware)
+{
+    const auto at = firmware.find(" v");
+    if (at == std::string_view::npos)
+        return std::nullopt;
+    int version = 0, digits = 0;
+    for (std::size_t i = at + 2; i < firmware.size() && digits < 4; ++i, ++digits) {
+        const char c = firmware[i];
+        if (c < '0' || c > '9')
+            break;
+        version = version * 10 + (c - '0');
+    }
+    return digits > 0 ? std::optional<int>(version) : std::nullopt;
+}
+
+Features featuresOf(Variant v, std::optional<int> version)
+{
+    const VariantInfo &info = variantInfo(v);
+    Features f{info.hasMpg, info.hasEepromFloat, info.hasVlVkXmNa};
+    if ((v == Variant::Gve64 || v == Variant::Gve64Phantom) && version) {
+        f.mpg = f.mpg && *version >= 10;
+        f.eepromFloat = f.eepromFloat && *version >= 10;
+        f.vlVkXmNa = f.vlVkXmNa && *version >= 19;
+    }
+    return f;
+}
+
 } // namespace frezka::protocol

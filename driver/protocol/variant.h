@@ -40,4 +40,20 @@ std::optional<Variant> variantFromId(std::string_view id);
 // Guess the variant from a '?' firmware string ("IP84 v3 ...", "IP64MPG v19 ...", "IP114/500 ...").
 std::optional<Variant> variantFromFirmware(std::string_view firmware);
 
+// The version number in a '?' firmware string: the digits after the first " v" ("IP64MPG v19
+// 10.9.2010" -> 19); nullopt when there is none (the GVE114 prints none).
+std::optional<int> firmwareVersion(std::string_view firmware);
+
+// What a unit can do, by its variant and firmware version (§1): the GVE64 (and PHANTOM, which
+// reports the GVE64 firmware) gained the MPG and the EEPROM float/uint32 commands in v10 and
+// VL, VK, XM and N<axis> in v19. An unknown version counts as the variant's full set.
+struct Features
+{
+    bool mpg = false;
+    bool eepromFloat = false;
+    bool vlVkXmNa = false;
+    friend bool operator==(const Features &, const Features &) = default;
+};
+Features featuresOf(Variant v, std::optional<int> version);
+
 } // namespace frezka::protocol

@@ -240,3 +240,27 @@ TEST(Unit, MpgRefusesVectorsUntilYMinus)
     EXPECT_EQ(unit.takeTransmit(), "");
     EXPECT_EQ(unit.stats().motion.vectorsExecuted, 0);
 }
+
+// An older GVE64 firmware (§1): below v19 no VL/VK/VN/XM/N<axis>, below v10 no MPG and no
+// EEPROM float/uint32 commands; the '?' reply is the given string.
+TEST(OlderFirmware, AnswersUnknownToWhatItLacks)
+{
+    UnitOptions o = optionsFor(Variant::Gve64);
+    o.firmware = "IP64MPG v17 1.2.2009";
+    Unit v17(o);
+    EXPECT_EQ(ask(v17, "!0?\r"), "0,IP64MPG v17 1.2.2009\r");
+    EXPECT_EQ(ask(v17, "!0Y-\r"), "0,Y-\r");
+    for (const char *c : {"!0VK\r", "!0VN\r", "!0VL1000,1000,1000\r", "!0XM120\r", "!0NX0\r"})
+        EXPECT_EQ(ask(v17, c), "3\r") << c;
+    EXPECT_EQ(ask(v17, "!0N\r"), "0\r");
+    EXPECT_EQ(ask(v17, "!0XA\r"), "0\r");
+    EXPECT_EQ(ask(v17, "!0EFR30\r").front(), '0');
+
+    o.firmware = "IP64 v9 1.2.2008";
+    Unit v9(o);
+    EXPECT_EQ(ask(v9, "!0Y-\r"), "3\r");
+    EXPECT_EQ(ask(v9, "!0EFR30\r"), "3\r");
+    EXPECT_EQ(ask(v9, "!0ER30\r").front(), '0');
+    // Without an MPG the reset state does not hold RUN: vectors are taken at once.
+    EXPECT_EQ(ask(v9, "!0C100,0,0\r"), "0\r");
+}

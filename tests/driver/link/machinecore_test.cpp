@@ -465,3 +465,78 @@ TEST(MachineCore, EepromComparedOnConnectWrittenOnlyWhenAsked)
         << sim.core.state().eepromDifferences.front();
     EXPECT_TRUE(sim.errors.empty()) << sim.errors.front().message;
 }
+
+// An older GVE64 firmware (v17: no VK/VL/XM/N<axis>): with a profile that says so, connecting
+// sends nothing the unit lacks, a plan in VN runs (its VN is not sent: the unit knows no modes),
+// a plan in VK and the XM override are refused with the reason, and homing zeroes all counters
+// with N. With a profile that promises v19 the connect ends in an Alarm that names the fix.
+TEST(MachineCore, OlderFirmwareGatesFeatures)
+{
+    const std::string firmware = "IP64MPG v17 1.2.2009";
+    Sim sim(Variant::Gve64, {}, {}, false, firmware);
+    sim.config.unit.firmwareVersion = 17;
+    sim.core.setConfig(sim.config);
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    EXPECT_TRUE(sim.errors.empty()) << sim.lastLog();
+    EXPECT_EQ(sim.core.state().firmwareVersion, 17);
+    EXPECT_FALSE(sim.core.state().features.vlVkXmNa);
+    EXPECT_TRUE(sim.core.state().features.mpg);
+
+    auto program = denseProgram(50);
+    machine::UnitCommand mode;
+    mode.op = machine::UnitOp::SpeedModeVk;
+    program.commands.insert(program.commands.begin(), mode);
+    auto refused = sim.core.run(program, sim.runner.now());
+    ASSERT_TRUE(refused);
+    EXPECT_NE(refused->message.find("VK"), std::string::npos) << refused->message;
+    program.commands.front().op = machine::UnitOp::SpeedModeVn;
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 60)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front()) << sim.lastLog();
+    EXPECT_EQ(sim.port.unit().position()[0], program.commands.back().endSteps[0]);
+    EXPECT_TRUE(sim.errors.empty()) << sim.lastLog();
+
+    auto xm = sim.core.setOverride(120, sim.runner.now());
+    ASSERT_TRUE(xm);
+    EXPECT_NE(xm->message.find("v19"), std::string::npos) << xm->message;
+}
+
+// Homing on v17: one axis alone is refused (its counter cannot be set by itself); all axes with
+// home position 0 end with N, every counter 0.
+TEST(MachineCore, OlderFirmwareHomesWithN)
+{
+    Sim sim(Variant::Gve64, {}, {}, true, "IP64MPG v17 1.2.2009");
+    sim.config.unit.firmwareVersion = 17;
+    for (auto &ax : sim.config.axes)
+        ax.homing.homePositionMm = 0;
+    sim.config.axes[3].present = false; // the profile homes X, Y and Z; N also zeroes A
+    sim.core.setConfig(sim.config);
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    auto one = sim.core.home(sim.runner.now(), 0x1);
+    ASSERT_TRUE(one);
+    EXPECT_NE(one->message.find("N<axis>"), std::string::npos) << one->message;
+    const auto homing = sim.core.home(sim.runner.now());
+    ASSERT_FALSE(homing) << homing->message;
+    ASSERT_TRUE(sim.runner.runUntil(
+        [&] { return sim.core.state().mode == MachineMode::Idle && sim.core.state().homed; }, 120))
+        << sim.lastLog();
+    EXPECT_TRUE(sim.errors.empty()) << sim.lastLog();
+    for (int a = 0; a < sim.core.state().axisCount; ++a)
+        EXPECT_EQ(sim.port.unit().position()[a], 0) << "axis " << a;
+    bool sawN = false;
+    for (const std::string &line : sim.log)
+        sawN = sawN || line.rfind("> !0N,", 0) == 0 || line == "> !0N";
+    EXPECT_TRUE(sawN) << sim.lastLog(60);
+}
+
+TEST(MachineCore, FirmwareOlderThanTheProfileIsAnAlarm)
+{
+    Sim sim(Variant::Gve64, {}, {}, false, "IP64MPG v17 1.2.2009"); // the profile says v19
+    sim.connect();
+    ASSERT_TRUE(sim.until(MachineMode::Alarm)) << sim.lastLog();
+    ASSERT_FALSE(sim.errors.empty());
+    EXPECT_NE(sim.errors.front().message.find("unit.firmwareVersion to 17"), std::string::npos)
+        << sim.errors.front().message;
+    for (const std::string &line : sim.log)
+        EXPECT_EQ(line.find("unknown command"), std::string::npos) << line;
+}

@@ -15,12 +15,12 @@ namespace frezka::driver::test {
 struct Sim
 {
     // unitFromProfile: the unit as the built-in emulator makes it (switches and EEPROM from the
-    // profile); otherwise a unit with the factory EEPROM and no switches.
+    // profile); otherwise a unit with the factory EEPROM and no switches. firmware: the unit's
+    // '?' string ("" = the variant's).
     explicit Sim(protocol::Variant variant = protocol::Variant::Gve64, WireOptions wire = {},
-                 CoreOptions options = {}, bool unitFromProfile = false)
+                 CoreOptions options = {}, bool unitFromProfile = false, std::string firmware = {})
         : config(machine::defaultMachineConfig(variant))
-        , port(unitFromProfile ? unitOptionsFor(config) : emulator::UnitOptions{.variant = variant},
-               wire)
+        , port(unitFor(config, unitFromProfile, firmware), wire)
         , core(config, options)
         , runner(core, port)
     {
@@ -46,6 +46,15 @@ struct Sim
         };
         core.onError = [this](const MachineError &e) { errors.push_back(e); };
         core.onJobFinished = [this](bool ok) { finished.push_back(ok); };
+    }
+    static emulator::UnitOptions unitFor(const machine::MachineConfig &config, bool fromProfile,
+                                         std::string firmware)
+    {
+        emulator::UnitOptions u = fromProfile
+                                      ? unitOptionsFor(config)
+                                      : emulator::UnitOptions{.variant = config.unit.variant};
+        u.firmware = std::move(firmware);
+        return u;
     }
     bool connect(double limitS = 30)
     {

@@ -32,3 +32,18 @@ TEST(Variant, TableLookups)
     EXPECT_EQ(variantFromFirmware("IP64MPG v19 10.9.2010"), Variant::Gve64);
     EXPECT_EQ(allVariants().size(), 4u);
 }
+
+TEST(Variant, FirmwareVersionAndFeatures)
+{
+    EXPECT_EQ(firmwareVersion("IP64MPG v19 10.9.2010"), 19);
+    EXPECT_EQ(firmwareVersion("IP84 v3 27.1.2010"), 3);
+    EXPECT_FALSE(firmwareVersion("IP114/500 x16 16.9.2018"));
+    EXPECT_FALSE(firmwareVersion("IP64 v"));
+    const Features all{true, true, true};
+    EXPECT_EQ(featuresOf(Variant::Gve64, 19), all);
+    EXPECT_EQ(featuresOf(Variant::Gve64, std::nullopt), all);
+    EXPECT_EQ(featuresOf(Variant::Gve64, 17), (Features{true, true, false}));
+    EXPECT_EQ(featuresOf(Variant::Gve64Phantom, 9), (Features{false, false, false}));
+    EXPECT_EQ(featuresOf(Variant::Gve114, 1), all); // the version gates the GVE64 only
+    EXPECT_EQ(featuresOf(Variant::Gve84, 3), (Features{false, false, true}));
+}
