@@ -243,13 +243,26 @@ bool MachineCore::pollDue(double now) const
 
 void MachineCore::startPoll(double now)
 {
-    m_lastPoll = now;
+    // Polls keep their schedule: one that had to wait for a packet's reply does not push the
+    // next one back, so the rate stays at pollIntervalS where the link has room for it.
+    const double due = nextPollTime();
+    m_lastPoll = due <= now && now - due < m_options.pollIntervalS ? due : now;
     m_pollTimes.push_back(now);
     while (!m_pollTimes.empty() && m_pollTimes.front() < now - 1.0)
         m_pollTimes.pop_front();
     m_state.pollHz = static_cast<double>(m_pollTimes.size());
-    if (m_job)
+    if (m_job) {
         ++m_report.polls;
+        if (m_next < m_program.commands.size() && m_vectorPrefix.back() > m_vectorPrefix[m_next]) {
+            ++m_report.streamPolls;
+            const double since =
+                m_report.streamPolls > 1 ? m_report.lastStreamPollS : m_report.startS;
+            m_report.maxStreamPollGapS = std::max(m_report.maxStreamPollGapS, now - since);
+            if (m_report.streamPolls == 1)
+                m_report.firstStreamPollS = now;
+            m_report.lastStreamPollS = now;
+        }
+    }
     const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
     // While streaming, every reply carries INTA (interrupts) and packet replies carry queue
     // full: F and the inputs are read less often there, to leave the wire to the job.

@@ -46,6 +46,7 @@ struct CoreOptions
     double inputsPollIntervalS = 0.25; // I1/I2
     double maxPollGapS = 4.0;          // while streaming wire-bound, poll at least this often
     double wireBoundPollShare = 0.005; // ... and otherwise spend at most this share on polls
+    double slowPacketWireS = 0.1;      // where the motion is slow, packets at most this long
     bool compareEeprom = true;         // read the unit's EEPROM on connect and report differences
     bool optionalStops = true;         // M1 pauses
     // When the position leaves the planned path (see machinecore_pathguard.cpp): false = stop
@@ -68,6 +69,10 @@ struct JobReport
     std::int64_t verified = 0;    // times progress was re-established from the counters
     std::int64_t packets = 0;     // packets sent (first attempts and resends)
     std::int64_t polls = 0;       // position polls during the job
+    std::int64_t streamPolls = 0; // ... of them while vectors were still to send
+    double maxStreamPollGapS = 0; // the longest time without one then (from the start)
+    double firstStreamPollS = -1; // when the first and last of them started
+    double lastStreamPollS = -1;
     std::int64_t pathFaults = 0;  // times the position left the planned path (path guard)
     std::int64_t rerun = 0;       // vectors sent again after returning (queued ones too)
     std::int64_t returnMoves = 0; // L moves that took the machine back to the path

@@ -274,9 +274,37 @@ void MachineCore::sendPacket(double now)
     std::int64_t vectors = 0;
     std::size_t bytes = 24; // *S *S *E
     std::size_t end = m_next;
+    // Strict request/reply lets no poll through while a packet is on the wire. Where the motion
+    // is slow, packets stay short so that the live position keeps its rate: best short enough
+    // for a packet and a poll to share one poll interval, else at most slowPacketWireS. A cap
+    // applies only where the short packet carries more than the time of the link cycle it
+    // costs, twice as much while the unit holds little (the packet, its reply, a poll, and on
+    // average the status and inputs reads), so the unit's queue still fills; where the wire is the
+    // bottleneck, packets fill the queue.
+    std::size_t shortEnd = m_next;
+    // With half a second queued a smaller margin will do: the queue drains only slowly, and the
+    // capacity limit below takes over where it is lower.
+    const double margin = bufferedS() >= std::max(0.5, 20 * m_rttS) ? 1.0 : 2.0;
+    for (const double wire : {m_options.pollIntervalS - 2 * m_rttS, m_options.slowPacketWireS}) {
+        if (wire < 0.005)
+            continue;
+        std::size_t e = m_next;
+        while (e < cmds.size() && m_engine.wireTime(static_cast<std::size_t>(
+                                      m_bytePrefix[e + 1] - m_bytePrefix[m_next])) <= wire)
+            ++e;
+        const double cycle = wire + 2.75 * m_rttS;
+        if (e > m_next && e < cmds.size() &&
+            m_timePrefix[e] - m_timePrefix[m_next] >= margin * cycle) {
+            shortEnd = e;
+            break;
+        }
+    }
+    const bool keepShort = shortEnd > m_next;
     while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
         const UnitOp op = cmds[end].op;
         if (op != UnitOp::Vector && op != UnitOp::Brake)
+            break;
+        if (keepShort && end >= shortEnd)
             break;
         Command c = toCommand(cmds[end]);
         const std::size_t size = encode(c, m_engine.checksums()).size();

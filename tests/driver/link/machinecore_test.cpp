@@ -540,3 +540,27 @@ TEST(MachineCore, FirmwareOlderThanTheProfileIsAnAlarm)
     for (const std::string &line : sim.log)
         EXPECT_EQ(line.find("unknown command"), std::string::npos) << line;
 }
+
+// Where the motion is slower than the wire, the live position keeps its rate while the job
+// streams: packets stay short enough for the polls between them (strict request/reply lets no
+// poll through a packet on the wire), and the unit still never runs dry. On the virtual clock,
+// 8 ms latency each way; before, the first packet held the position for 0.67 s.
+TEST(MachineCore, SlowMotionKeepsThePositionFresh)
+{
+    WireOptions wire;
+    wire.latencyS = 0.008;
+    Sim sim(Variant::Gve64, wire);
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    const auto program = denseProgram(1500, 3, 50000, 50000, 400); // 8 ms a vector
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 600)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front());
+    const JobReport &r = sim.core.jobReport();
+    EXPECT_LT(r.maxStreamPollGapS, 0.25);
+    const double hz =
+        static_cast<double>(r.streamPolls - 1) / (r.lastStreamPollS - r.firstStreamPollS);
+    EXPECT_GE(hz, 19.0);
+    EXPECT_EQ(sim.port.unit().stats().motion.starvationStops, 0);
+    for (int a = 0; a < 3; ++a)
+        EXPECT_EQ(sim.port.unit().position()[a], program.commands.back().endSteps[a]);
+}
