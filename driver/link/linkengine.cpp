@@ -430,8 +430,12 @@ void LinkEngine::finishOk(const Reply &r, const std::string &raw)
     } else if (m_packet) {
         o.accepted = r.ok() ? static_cast<int>(o.commands.size())
                             : static_cast<int>(r.decimal().value_or(0));
-        // The index after a failed packet depends on where it stopped: learn it next time.
-        m_index = r.ok() && m_indexBefore ? std::optional<int>(after) : std::nullopt;
+        // The index after a failed packet depends on where it stopped: learn it next time. So
+        // it does after a packet that drew a complaint or noise before its count: a damaged *S
+        // line answered 4 and did not count, or a damaged line may have been taken as some
+        // other command; guessing wrong would later make a sent vector look unsent.
+        m_index =
+            r.ok() && m_indexBefore && !m_doubtfulSeen ? std::optional<int>(after) : std::nullopt;
     } else if (m_indexBefore && advancesIndex(o.commands.front().op)) {
         m_index = after;
     }

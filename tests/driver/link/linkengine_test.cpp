@@ -298,3 +298,31 @@ TEST(LinkEngine, NoiseBetweenTransactionsIsCountedNotMatched)
     ASSERT_EQ(h.outcomes.size(), 1u);
     EXPECT_EQ(h.outcomes[0].reply.hexValue(), 0x40);
 }
+
+// A plain "4" before a packet's count: the first *S was damaged and did not count (or a damaged
+// line was taken as something else), so the index after the packet is not guessed. Guessed
+// (one too high), a later garbled reply to a vector that did arrive made it look unsent, and
+// the vector ran twice (soak seed 1008). The next exact command learns the index first.
+TEST(LinkEngine, PacketAfterAComplaintLeavesTheIndexToBeLearnt)
+{
+    Harness h;
+    h.sync(0);
+    std::vector<Command> p{cmd::vector(1, 0, 0), cmd::vector(2, 0, 0)};
+    h.engine.startPacket(p, 0);
+    h.engine.takeOutput();
+    h.engine.receive(reply("4"), h.t); // the first *S, damaged on the way in
+    EXPECT_TRUE(h.outcomes.empty());
+    h.engine.receive(reply("0,2"), h.t); // the packet itself (one *S counted: index 4)
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].accepted, 2);
+    EXPECT_FALSE(h.engine.unitIndex()) << "guessed " << *h.engine.unitIndex();
+    h.engine.start(cmd::vector(3, 0, 0), h.t);
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true)); // learn it first
+    h.engine.receive(reply("0,4"), h.t);
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::vector(3, 0, 0), true));
+    h.engine.receive("0,5\r", h.t); // its reply garbled (checksum lost)
+    h.timeout();
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true));
+    h.engine.receive(reply("0,5"), h.t); // it arrived: not sent again
+    EXPECT_NE(h.engine.takeOutput(), encode(cmd::vector(3, 0, 0), true));
+}
