@@ -174,6 +174,7 @@ private:
             m_result.brakeViolations += r.violation ? 1 : 0;
             m_result.peakSpeed = std::max({m_result.peakSpeed, e, r.exit, r.peak});
             m_result.vertexSpeeds.push_back(r.exit);
+            m_result.vectorTimes.push_back(r.timeS);
             ++m_result.vectors;
             e = r.exit;
         }

@@ -35,6 +35,7 @@ struct ModelResult
     std::size_t brakeViolations = 0;
     double peakSpeed = 0;             // highest speed reached, in the mode's units (pulses/s)
     std::vector<double> vertexSpeeds; // per C vector, the speed it ends at (its real exit)
+    std::vector<double> vectorTimes;  // per C/L vector, the time it runs, s
     double totalS() const { return motionS + waitS; }
 };
 

@@ -4,6 +4,7 @@
 
 #include "driver/link/machinecore_internal.h"
 #include "gcode/toolpath.h"
+#include "machine/unitmodel.h"
 #include "machine/unitwire.h"
 
 #include <algorithm>
@@ -17,6 +18,13 @@ using machine::UnitOp;
 using detail::isModal;
 using detail::isMotion;
 using detail::lineText;
+
+namespace {
+// Motion kept in the unit beyond the round trips when a packet is sized to what it holds, s.
+constexpr double kDryReserveS = 0.02;
+// Below this much wire time to spare the unit runs dry whatever the packet: send a full one.
+constexpr double kMinPacedWireS = 0.02;
+} // namespace
 
 // The one mapping of machine/unitwire.h (shared with the plan CLI). PC-side ops are never sent.
 Command MachineCore::toCommand(const machine::UnitCommand &c) const
@@ -158,52 +166,21 @@ int MachineCore::freeQueueEstimate() const
     return static_cast<int>(std::max<std::int64_t>(0, capacity - 1 - queued));
 }
 
-// Rough motion time per command (cruise at V, or min(V, B) for short vectors; acceleration
-// ignored): used only to judge how much motion the unit holds, never for the motion itself.
+// Motion time per command under the unit's model (machine/unitmodel.h, the planner's own, exact
+// for the unit when its queue does not run dry): used to judge how much motion the unit holds
+// and whether the stream keeps pace with it, never for the motion itself.
 void MachineCore::estimateDurations()
 {
-    double v = 1000, b = variantInfo(m_config.unit.variant).resetBrakeSpeed;
-    std::int64_t shortSteps = 512;
-    bool vk = false;
+    const machine::ModelResult model = machine::runUnitModel(m_program);
     m_timePrefix.assign(m_program.commands.size() + 1, 0.0);
+    std::size_t vector = 0;
     for (std::size_t i = 0; i < m_program.commands.size(); ++i) {
         const machine::UnitCommand &c = m_program.commands[i];
         double t = 0;
-        switch (c.op) {
-        case UnitOp::Speed:
-            v = static_cast<double>(std::max<std::int64_t>(10, c.value));
-            break;
-        case UnitOp::Brake:
-            b = static_cast<double>(std::max<std::int64_t>(10, c.value));
-            break;
-        case UnitOp::ShortThreshold:
-            shortSteps = c.value;
-            break;
-        case UnitOp::SpeedModeVk:
-            vk = true;
-            break;
-        case UnitOp::SpeedModeVn:
-            vk = false;
-            break;
-        case UnitOp::Line:
-        case UnitOp::Vector: {
-            std::int64_t major = 0;
-            double sq = 0;
-            for (int a = 0; a < 4; ++a) {
-                major = std::max<std::int64_t>(major, std::abs(c.d[a]));
-                sq += a < 3 ? static_cast<double>(c.d[a]) * c.d[a] : 0.0;
-            }
-            const double length = vk ? std::sqrt(sq) : static_cast<double>(major);
-            const double rate = major < shortSteps ? std::min(v, b) : v;
-            t = length / rate;
-            break;
-        }
-        case UnitOp::Dwell:
+        if (isMotion(c.op) && vector < model.vectorTimes.size())
+            t = model.vectorTimes[vector++];
+        else if (c.op == UnitOp::Dwell)
             t = static_cast<double>(c.value) / 1000.0;
-            break;
-        default:
-            break;
-        }
         m_timePrefix[i + 1] = m_timePrefix[i] + t;
     }
 }
@@ -300,6 +277,14 @@ void MachineCore::sendPacket(double now)
         }
     }
     const bool keepShort = shortEnd > m_next;
+    // The unit takes a packet at its *E: while the packet is on the wire it runs what it holds.
+    // Where the motion ahead keeps pace with the wire, a packet must not take longer than that
+    // (less a round trip for the reply and one for the next packet's start), or the unit runs
+    // dry mid-chain and stops without braking. Where the wire is the bottleneck the unit runs
+    // dry whatever the driver does, and a full packet loses least.
+    const double held = bufferedS();
+    const double reserve = 2 * m_rttS + kDryReserveS;
+    const bool paced = held > reserve + kMinPacedWireS && !wireBoundAhead();
     while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
         const UnitOp op = cmds[end].op;
         if (op != UnitOp::Vector && op != UnitOp::Brake)
@@ -308,6 +293,8 @@ void MachineCore::sendPacket(double now)
             break;
         Command c = toCommand(cmds[end]);
         const std::size_t size = encode(c, m_engine.checksums()).size();
+        if (paced && !packet.empty() && m_engine.wireTime(bytes + size) > held - reserve)
+            break;
         if (op == UnitOp::Vector &&
             queuedAfter(m_engine.wireTime(bytes + size)) + vectors + 1 > capacity)
             break;
