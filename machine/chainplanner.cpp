@@ -77,6 +77,8 @@ struct Derived
     std::int64_t accel = 0; // A (thousands)
     std::int64_t twoAU = 0; // 2 · A · usable distance, integer pulses²/s², floored
     bool isShort = false;
+    double wireBytes = 0;  // the C command on the serial line, bytes
+    double wireCap = kInf; // B cap at both its ends so that it keeps the link's pace, units
 };
 
 class RunPlanner
@@ -90,7 +92,49 @@ public:
         , m_vk(vk)
     {}
 
+    // With the link's pace (wireLimited) a vector's wire time includes the B command before it
+    // where the plan sends one, which the plan decides: plan without them, then again with the
+    // last plan's B bytes spread over each vector's wide neighbourhood (the unit's queue evens
+    // them out), a few times: the spread B bytes change little from one plan to the next.
     RunOutcome run()
+    {
+        planOnce();
+        if (!m_options.wireLimited || m_config.link.baud <= 0)
+            return std::move(m_out);
+        m_brakeBytes.assign(m_moves.size(), 0);
+        for (int pass = 0; pass < kWirePasses; ++pass) {
+            bool changed = false;
+            std::int64_t last = -1; // the run's first B always counts: the unit's B is unknown
+            for (std::size_t k = 0; k < m_out.vectors.size(); ++k) {
+                const PlannedVector &v = m_out.vectors[k];
+                double bytes = 0;
+                if (!v.line && v.brake != last) {
+                    last = v.brake;
+                    bytes = static_cast<double>(3 + decimalDigits(v.brake) +
+                                                (m_config.link.checksums ? 3 : 0) + 1);
+                }
+                changed = changed || bytes != m_brakeBytes[k];
+                m_brakeBytes[k] = bytes;
+            }
+            if (!changed)
+                break;
+            m_out = {};
+            planOnce();
+        }
+        return std::move(m_out);
+    }
+
+private:
+    // The link's pace: a vector's bytes are the largest C command within kWireWindow vectors
+    // either side, and the B commands within kBrakeWindow either side on average. The unit's
+    // queue (420 vectors on the GVE64) evens out the bytes of neighbours; equal caps along a
+    // stretch send no B between its vectors.
+    static constexpr std::size_t kWireWindow = 16;
+    static constexpr std::size_t kBrakeWindow = 128;
+    static constexpr int kWirePasses = 5;         // plans again at most this often
+    static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
+
+    void planOnce()
     {
         derive();
         const std::size_t n = m_moves.size();
@@ -98,6 +142,7 @@ public:
         m_capMm.assign(n, 0);
         for (std::size_t k = 0; k + 1 < n; ++k)
             vertexCaps(k);
+        flattenTightCaps();
         bound();
         std::size_t first = 0;
         for (std::size_t k = 0; k < n; ++k) {
@@ -113,16 +158,15 @@ public:
             }
         }
         jumpStats();
-        return std::move(m_out);
     }
 
-private:
     void derive()
     {
-        m_d.resize(m_moves.size());
+        m_d.assign(m_moves.size(), Derived{}); // nothing kept from an earlier pass
         for (std::size_t k = 0; k < m_moves.size(); ++k)
             deriveOne(m_moves[k], m_d[k]);
         chooseAccels();
+        wirePace();
     }
 
     // A per vector: the smallest path-acceleration cap within a window of neighbours (step
@@ -163,6 +207,48 @@ private:
         }
     }
 
+    // The link's pace (PlanOptions::wireLimited): a vector must last at least the time its bytes
+    // take on the wire, or the unit's queue runs dry mid-chain and the machine stops without
+    // braking. Its bytes: the largest vector of its neighbourhood, and the neighbourhood's B
+    // commands on average. Within a vector the unit accelerates from its entry B toward V and
+    // brakes to its exit B, so its fastest speed is at most sqrt((b0² + b1²) / 2 + A·L):
+    // capping both Bs at sqrt((L/t)² - A·L) keeps it at L/t. Where even that is below the
+    // unit's smallest B (a vector of a step or two), V itself is lowered, which costs a V
+    // command (rare). The bound takes the floor as a cruise cap.
+    void wirePace()
+    {
+        if (!m_options.wireLimited || m_config.link.baud <= 0)
+            return;
+        const std::size_t n = m_d.size();
+        // Prefix sums of the B bytes for their averages.
+        std::vector<double> brakePrefix(n + 1, 0.0);
+        for (std::size_t k = 0; k < n; ++k)
+            brakePrefix[k + 1] = brakePrefix[k] + (m_brakeBytes.size() == n ? m_brakeBytes[k] : 0);
+        for (std::size_t k = 0; k < n; ++k) {
+            Derived &r = m_d[k];
+            const std::size_t from = k > kWireWindow ? k - kWireWindow : 0;
+            const std::size_t to = std::min(n, k + kWireWindow + 1);
+            double widest = 0;
+            for (std::size_t j = from; j < to; ++j)
+                widest = std::max(widest, m_d[j].wireBytes);
+            const std::size_t bFrom = k > kBrakeWindow ? k - kBrakeWindow : 0;
+            const std::size_t bTo = std::min(n, k + kBrakeWindow + 1);
+            const double bytes =
+                widest + (brakePrefix[bTo] - brakePrefix[bFrom]) / static_cast<double>(bTo - bFrom);
+            const double wireS = bytes * 10.0 / m_config.link.baud * m_options.wireMargin;
+            const double fastest = r.units / wireS; // units/s
+            r.vMm = std::min(r.vMm, fastest / r.f);
+            if (fastest >= static_cast<double>(r.speed))
+                continue;
+            const double room = fastest * fastest - static_cast<double>(r.accel) * 1000.0 * r.units;
+            if (room >= static_cast<double>(kMinSpeed * kMinSpeed))
+                r.wireCap = std::floor(std::sqrt(room));
+            else
+                r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(fastest)),
+                                                   kMinSpeed, r.speed);
+        }
+    }
+
     void deriveOne(const Move &m, Derived &r)
     {
         Vec4 stepMm{};
@@ -200,6 +286,60 @@ private:
         for (std::int32_t c : m.d)
             major = std::max<std::int64_t>(major, std::abs(c));
         r.isShort = major < m_options.shortThreshold; // the unit compares major-axis steps
+        r.wireBytes = static_cast<double>(vectorWireBytes(m.d));
+    }
+
+    // Bytes of "!0C<x>,<y>,<z>[,<a>][,<checksum>]" and CR, as the vector goes on the wire (A only
+    // when non-zero on a four-axis unit, machine/unitwire.h).
+    std::size_t vectorWireBytes(const std::array<std::int32_t, 4> &d) const
+    {
+        const bool fourth = d[3] != 0 && wireAxisCount(m_config) == 4;
+        std::size_t bytes = 3 + 1 + (m_config.link.checksums ? 3 : 0);
+        for (int i = 0; i < (fourth ? 4 : 3); ++i) {
+            const std::int64_t c = d[static_cast<std::size_t>(i)];
+            bytes += (i ? 1 : 0) + (c < 0 ? 1 : 0) + decimalDigits(std::abs(c));
+        }
+        return bytes;
+    }
+
+    static std::size_t decimalDigits(std::int64_t n)
+    {
+        std::size_t digits = 1;
+        for (; n >= 10; n /= 10)
+            ++digits;
+        return digits;
+    }
+
+    // Where the vectors are about as short as their bytes on the wire, a B that changes at every
+    // vertex (the caps of a wavy path do) costs the link nearly as much as the vector itself, and
+    // the link's pace then halves the speed. There the caps are flattened to the least one within
+    // kFlatWindow vertices either side: a stretch runs at one B and sends no B inside it.
+    void flattenTightCaps()
+    {
+        if (!m_options.wireLimited || m_config.link.baud <= 0 || m_capUnits.size() < 2)
+            return;
+        const std::size_t vertices = m_capUnits.size() - 1;
+        const double byteS = 10.0 / m_config.link.baud * m_options.wireMargin;
+        std::vector<bool> tight(vertices, false);
+        for (std::size_t k = 0; k < vertices; ++k) {
+            const double cap = static_cast<double>(m_capUnits[k]);
+            const double withBrake =
+                (m_d[k].wireBytes + static_cast<double>(3 + decimalDigits(m_d[k].speed) +
+                                                        (m_config.link.checksums ? 3 : 0) + 1)) *
+                byteS;
+            tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
+        }
+        const std::vector<std::int64_t> caps(m_capUnits.begin(), m_capUnits.end() - 1);
+        for (std::size_t k = 0; k < vertices; ++k) {
+            if (!tight[k])
+                continue;
+            std::int64_t least = caps[k];
+            for (std::size_t j = k; j > 0 && k - j < kFlatWindow && tight[j - 1]; --j)
+                least = std::min(least, caps[j - 1]);
+            for (std::size_t j = k + 1; j < vertices && j - k <= kFlatWindow && tight[j]; ++j)
+                least = std::min(least, caps[j]);
+            m_capUnits[k] = least;
+        }
     }
 
     // Junction-deviation and curvature caps of the path speed at the vertex after move k, mm/s.
@@ -266,6 +406,7 @@ private:
                 units =
                     std::min(units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
         }
+        units = std::min({units, a.wireCap, b.wireCap}); // the link's pace (infinite: off)
         m_capUnits[k] = static_cast<std::int64_t>(floorUnits(units));
     }
 
@@ -416,6 +557,7 @@ private:
     const PlanOptions &m_options;
     bool m_vk;
     std::vector<Derived> m_d;
+    std::vector<double> m_brakeBytes;     // bytes of the B command before move k (last plan)
     std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
     std::vector<double> m_capMm;          // the bound's cap there, mm/s
     RunOutcome m_out;
