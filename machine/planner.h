@@ -40,7 +40,7 @@ struct PlanOptions
     // Every vector lasts at least the time its bytes take on the serial line (link.baud), times
     // wireMargin for packet framing, packet round trips and polls: where the motion would be
     // faster than the link can feed it, the unit's queue would run dry mid-chain and stop the
-    // machine without braking (docs/planner.md §4).
+    // machine without braking (docs/planner.md §4, "The link's pace").
     bool wireLimited = true;
     double wireMargin = 1.1;
 };
