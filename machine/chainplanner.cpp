@@ -110,8 +110,7 @@ public:
                 double bytes = 0;
                 if (!v.line && v.brake != last) {
                     last = v.brake;
-                    bytes = static_cast<double>(3 + decimalDigits(v.brake) +
-                                                (m_config.link.checksums ? 3 : 0) + 1);
+                    bytes = brakeWireBytes(v.brake);
                 }
                 changed = changed || bytes != m_brakeBytes[k];
                 m_brakeBytes[k] = bytes;
@@ -302,6 +301,13 @@ private:
         return bytes;
     }
 
+    // Bytes of "!0B<value>[,<checksum>]" and CR.
+    double brakeWireBytes(std::int64_t value) const
+    {
+        return static_cast<double>(3 + decimalDigits(value) + (m_config.link.checksums ? 3 : 0) +
+                                   1);
+    }
+
     static std::size_t decimalDigits(std::int64_t n)
     {
         std::size_t digits = 1;
@@ -323,10 +329,8 @@ private:
         std::vector<bool> tight(vertices, false);
         for (std::size_t k = 0; k < vertices; ++k) {
             const double cap = static_cast<double>(m_capUnits[k]);
-            const double withBrake =
-                (m_d[k].wireBytes + static_cast<double>(3 + decimalDigits(m_d[k].speed) +
-                                                        (m_config.link.checksums ? 3 : 0) + 1)) *
-                byteS;
+            // With a B before it (B at most V, so at most V's digits).
+            const double withBrake = (m_d[k].wireBytes + brakeWireBytes(m_d[k].speed)) * byteS;
             tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
         }
         const std::vector<std::int64_t> caps(m_capUnits.begin(), m_capUnits.end() - 1);
