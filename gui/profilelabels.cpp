@@ -24,6 +24,7 @@ const Label kKeys[] = {
     {"checksums", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Checksums")},
     {"packets", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Packets")},
     {"packetCommands", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Commands per packet")},
+    {"latencyMs", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Adapter latency (each way)")},
     {"axes", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Axes")},
     {"x", QT_TRANSLATE_NOOP("frezka::gui::Profile", "X axis")},
     {"y", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Y axis")},

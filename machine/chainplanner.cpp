@@ -124,12 +124,25 @@ public:
     }
 
 private:
-    // The link's pace: a vector's bytes are the largest C command within kWireWindow vectors
-    // either side, and the B commands within kBrakeWindow either side on average. The unit's
-    // queue (420 vectors on the GVE64) evens out the bytes of neighbours; equal caps along a
-    // stretch send no B between its vectors.
-    static constexpr std::size_t kWireWindow = 16;
-    static constexpr std::size_t kBrakeWindow = 128;
+    // The link's pace: a vector's bytes are the largest C command within wireWindow() vectors
+    // either side, and the B commands within brakeWindow() either side on average: the unit's
+    // queue (64 vectors on the GVE84, 420 on the GVE64, 2048 on the GVE114) evens out the bytes of
+    // neighbours. Equal caps along a stretch send no B between its vectors.
+    std::size_t queueVectors() const
+    {
+        return static_cast<std::size_t>(protocol::variantInfo(m_config.unit.variant).queueCapacity);
+    }
+    std::size_t brakeWindow() const { return std::clamp<std::size_t>(queueVectors() / 3, 8, 128); }
+    std::size_t wireWindow() const { return std::min<std::size_t>(16, brakeWindow() / 2); }
+    // Wire time of a vector's bytes, and its share of a packet's round trip: a packet of half the
+    // queue costs one round trip (twice the adapter's latency, and the reply's few bytes).
+    double vectorWireS(double bytes) const
+    {
+        const double roundTripS = 2 * m_config.link.latencyMs / 1000.0 + kReplyS;
+        return bytes * 10.0 / m_config.link.baud * m_options.wireMargin +
+               2 * roundTripS / static_cast<double>(queueVectors());
+    }
+    static constexpr double kReplyS = 0.002;      // a packet's reply and the unit's turnaround
     static constexpr int kWirePasses = 5;         // plans again at most this often
     static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
 
@@ -225,16 +238,16 @@ private:
             brakePrefix[k + 1] = brakePrefix[k] + (m_brakeBytes.size() == n ? m_brakeBytes[k] : 0);
         for (std::size_t k = 0; k < n; ++k) {
             Derived &r = m_d[k];
-            const std::size_t from = k > kWireWindow ? k - kWireWindow : 0;
-            const std::size_t to = std::min(n, k + kWireWindow + 1);
+            const std::size_t from = k > wireWindow() ? k - wireWindow() : 0;
+            const std::size_t to = std::min(n, k + wireWindow() + 1);
             double widest = 0;
             for (std::size_t j = from; j < to; ++j)
                 widest = std::max(widest, m_d[j].wireBytes);
-            const std::size_t bFrom = k > kBrakeWindow ? k - kBrakeWindow : 0;
-            const std::size_t bTo = std::min(n, k + kBrakeWindow + 1);
+            const std::size_t bFrom = k > brakeWindow() ? k - brakeWindow() : 0;
+            const std::size_t bTo = std::min(n, k + brakeWindow() + 1);
             const double bytes =
                 widest + (brakePrefix[bTo] - brakePrefix[bFrom]) / static_cast<double>(bTo - bFrom);
-            const double wireS = bytes * 10.0 / m_config.link.baud * m_options.wireMargin;
+            const double wireS = vectorWireS(bytes);
             const double fastest = r.units / wireS; // units/s
             r.vMm = std::min(r.vMm, fastest / r.f);
             if (fastest >= static_cast<double>(r.speed))
@@ -325,12 +338,11 @@ private:
         if (!m_options.wireLimited || m_config.link.baud <= 0 || m_capUnits.size() < 2)
             return;
         const std::size_t vertices = m_capUnits.size() - 1;
-        const double byteS = 10.0 / m_config.link.baud * m_options.wireMargin;
         std::vector<bool> tight(vertices, false);
         for (std::size_t k = 0; k < vertices; ++k) {
             const double cap = static_cast<double>(m_capUnits[k]);
             // With a B before it (B at most V, so at most V's digits).
-            const double withBrake = (m_d[k].wireBytes + brakeWireBytes(m_d[k].speed)) * byteS;
+            const double withBrake = vectorWireS(m_d[k].wireBytes + brakeWireBytes(m_d[k].speed));
             tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
         }
         const std::vector<std::int64_t> caps(m_capUnits.begin(), m_capUnits.end() - 1);

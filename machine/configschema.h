@@ -100,6 +100,7 @@ void visitProfile(V &v, MachineConfig &c)
         s.boolean("checksums", c.link.checksums);
         s.boolean("packets", c.link.packets);
         s.integer("packetCommands", c.link.packetCommands, 1, 64, "commands");
+        s.number("latencyMs", c.link.latencyMs, 0, 100, "ms");
     });
     v.object("axes", [&](V &s) {
         for (int i = 0; i < kAxisCount; ++i)

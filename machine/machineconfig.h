@@ -65,6 +65,7 @@ struct LinkConfig
     bool checksums = true;
     bool packets = true;
     int packetCommands = 10; // C/B commands per packet, 1..64
+    double latencyMs = 8;    // one way, of the serial adapter (USB converters: 1-16 ms), 0..100
     friend bool operator==(const LinkConfig &, const LinkConfig &) = default;
 };
 

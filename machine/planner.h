@@ -38,11 +38,12 @@ struct PlanOptions
     double accelKeepS = 0.05;        // ... but only on vectors shorter than this at their V, s
     double feedOverride = 1.0;       // multiplies programmed feeds (not rapids), 0.01..10
     // Every vector lasts at least the time its bytes take on the serial line (link.baud), times
-    // wireMargin for packet framing, packet round trips and polls: where the motion would be
+    // wireMargin for packet framing and polls, plus its share of a packet's round trip
+    // (link.latencyMs, a packet of half the unit's queue): where the motion would be
     // faster than the link can feed it, the unit's queue would run dry mid-chain and stop the
     // machine without braking (docs/planner.md §4, "The link's pace").
     bool wireLimited = true;
-    double wireMargin = 1.1;
+    double wireMargin = 1.05;
 };
 
 enum class PlanErrorCode : std::uint8_t {

@@ -2411,6 +2411,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Maximum spindle speed</source>
         <translation>Maximální otáčky vřetene</translation>
     </message>
+    <message>
+        <source>Adapter latency (each way)</source>
+        <translation>Latence převodníku (každým směrem)</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ProfileEditor</name>

@@ -2406,6 +2406,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Maximum spindle speed</source>
         <translation>Maximum spindle speed</translation>
     </message>
+    <message>
+        <source>Adapter latency (each way)</source>
+        <translation>Adapter latency (each way)</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ProfileEditor</name>

@@ -135,6 +135,9 @@ std::optional<std::pair<machine::MachineConfig, machine::PlanResult>> prepare(co
         }
         config = *r.config;
     }
+    // The in-process emulator's link has the latency given here: the plan keeps its pace.
+    if (a.port == QLatin1String("sim"))
+        config.link.latencyMs = a.latencyMs;
     const gcode::Result g = gcode::interpretFile(a.file.toStdString());
     if (!g.ok()) {
         for (const gcode::Error &e : g.errors)

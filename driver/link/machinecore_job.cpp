@@ -20,10 +20,10 @@ using detail::isMotion;
 using detail::lineText;
 
 namespace {
-// Motion kept in the unit beyond the round trips when a packet is sized to what it holds, s.
+// Motion kept in the unit beyond two round trips when a packet is sized to what it holds, s.
 constexpr double kDryReserveS = 0.02;
 // Below this much wire time to spare the unit runs dry whatever the packet: send a full one.
-constexpr double kMinPacedWireS = 0.02;
+constexpr double kMinPacedWireS = 0.005;
 } // namespace
 
 // The one mapping of machine/unitwire.h (shared with the plan CLI). PC-side ops are never sent.
@@ -277,14 +277,18 @@ void MachineCore::sendPacket(double now)
         }
     }
     const bool keepShort = shortEnd > m_next;
-    // The unit takes a packet at its *E: while the packet is on the wire it runs what it holds.
-    // Where the motion ahead keeps pace with the wire, a packet must not take longer than that
-    // (less a round trip for the reply and one for the next packet's start), or the unit runs
-    // dry mid-chain and stops without braking. Where the wire is the bottleneck the unit runs
-    // dry whatever the driver does, and a full packet loses least.
+    // The unit takes a packet at its *E: while the packet is on the wire, and its *E on the way,
+    // the unit runs what it holds. Where the motion ahead keeps pace with the wire, a packet must
+    // take no longer than that (each packet then brings more motion than it costs, so the unit
+    // holds more after it), or the unit runs dry mid-chain and stops without braking. Where the
+    // wire is the bottleneck, or the unit holds too little for any packet, it runs dry whatever
+    // the driver does, and a full packet loses least.
+    // Kept in reserve: the reply's and the next packet's round trips and a little more (the
+    // estimate of what the unit holds drifts between polls), or half of what it holds when it
+    // holds little (a small queue, as the GVE84's 64 vectors: a short packet still comes in time).
     const double held = bufferedS();
-    const double reserve = 2 * m_rttS + kDryReserveS;
-    const bool paced = held > reserve + kMinPacedWireS && !wireBoundAhead();
+    const double budget = held - std::min(2 * m_rttS + kDryReserveS, 0.5 * held);
+    const bool paced = held > 0 && budget >= kMinPacedWireS && !wireBoundAhead();
     while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
         const UnitOp op = cmds[end].op;
         if (op != UnitOp::Vector && op != UnitOp::Brake)
@@ -293,7 +297,7 @@ void MachineCore::sendPacket(double now)
             break;
         Command c = toCommand(cmds[end]);
         const std::size_t size = encode(c, m_engine.checksums()).size();
-        if (paced && !packet.empty() && m_engine.wireTime(bytes + size) > held - reserve)
+        if (paced && !packet.empty() && m_engine.wireTime(bytes + size) > budget)
             break;
         if (op == UnitOp::Vector &&
             queuedAfter(m_engine.wireTime(bytes + size)) + vectors + 1 > capacity)

@@ -570,16 +570,20 @@ TEST(MachineCore, SlowMotionKeepsThePositionFresh)
 // The bundled dense 3D raster (0.04 mm vectors at F3500: twice as many vectors a second as the
 // wire carries) planned with the link's pace and streamed at 8 ms latency each way: the unit
 // never runs dry mid-chain, so it never stops without braking. Planned without the pace, the
-// same job stops dozens of times.
+// same job stops dozens of times (the GVE84: hundreds).
 TEST(MachineCore, DenseRasterPlannedAtTheLinksPaceNeverRunsDry)
 {
     const gcode::Result g = gcode::interpretFile(std::string(FREZKA_SOURCE_DIR) +
                                                  "/tests/bench/planner/programs/surface.nc");
     ASSERT_TRUE(g.ok());
-    for (bool paced : {true, false}) {
+    // The GVE64 (queue 420) paced and not, the GVE84 (queue 64: packets must stay short) paced.
+    for (auto [variant, paced] : {std::pair{Variant::Gve64, true}, std::pair{Variant::Gve64, false},
+                                  std::pair{Variant::Gve84, true}}) {
+        SCOPED_TRACE(std::string(protocol::variantInfo(variant).displayName) +
+                     (paced ? " paced" : " not paced"));
         WireOptions wire;
-        wire.latencyS = 0.008;
-        Sim sim(Variant::Gve64, wire);
+        wire.latencyS = 0.008; // as the profile's link.latencyMs says
+        Sim sim(variant, wire);
         machine::PlanOptions options;
         options.wireLimited = paced;
         const machine::PlanResult plan = machine::plan(g.toolpath, sim.config, options);
