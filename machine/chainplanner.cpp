@@ -2,6 +2,7 @@
 #include "machine/chainplanner.h"
 
 #include "machine/unitmodel.h"
+#include "machine/unitwire.h"
 
 #include <algorithm>
 #include <cmath>
@@ -98,6 +99,7 @@ public:
     // them out), a few times: the spread B bytes change little from one plan to the next.
     RunOutcome run()
     {
+        derive();
         planOnce();
         if (!m_options.wireLimited || m_config.link.baud <= 0)
             return std::move(m_out);
@@ -117,7 +119,6 @@ public:
             }
             if (!changed)
                 break;
-            m_out = {};
             planOnce();
         }
         return std::move(m_out);
@@ -146,9 +147,14 @@ private:
     static constexpr int kWirePasses = 5;         // plans again at most this often
     static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
 
+    // One plan of the run: the derived moves, the link's pace over them (with the B bytes of the
+    // last plan), caps, bound and passes.
     void planOnce()
     {
-        derive();
+        m_out = {};
+        m_out.slowLines = m_slowLines;
+        m_d = m_derived;
+        wirePace();
         const std::size_t n = m_moves.size();
         m_capUnits.assign(n, 0);
         m_capMm.assign(n, 0);
@@ -172,13 +178,14 @@ private:
         jumpStats();
     }
 
+    // What the moves themselves give, once per run (every plan of it starts from this).
     void derive()
     {
-        m_d.assign(m_moves.size(), Derived{}); // nothing kept from an earlier pass
+        m_d.resize(m_moves.size());
         for (std::size_t k = 0; k < m_moves.size(); ++k)
             deriveOne(m_moves[k], m_d[k]);
         chooseAccels();
-        wirePace();
+        m_derived = m_d;
     }
 
     // A per vector: the smallest path-acceleration cap within a window of neighbours (step
@@ -291,42 +298,30 @@ private:
                                            kMinSpeed, m_config.unit.maxPulseRate);
         if (v * r.f < kMinSpeed) { // the unit cannot go slower: the move runs faster than asked
             r.vMm = kMinSpeed / r.f;
-            if (m_out.slowLines.empty() || m_out.slowLines.back() != m.line)
-                m_out.slowLines.push_back(m.line);
+            if (m_slowLines.empty() || m_slowLines.back() != m.line)
+                m_slowLines.push_back(m.line);
         }
         std::int64_t major = 0;
         for (std::int32_t c : m.d)
             major = std::max<std::int64_t>(major, std::abs(c));
         r.isShort = major < m_options.shortThreshold; // the unit compares major-axis steps
-        r.wireBytes = static_cast<double>(vectorWireBytes(m.d));
+        r.wireBytes = vectorWireBytes(m.d);
     }
 
-    // Bytes of "!0C<x>,<y>,<z>[,<a>][,<checksum>]" and CR, as the vector goes on the wire (A only
-    // when non-zero on a four-axis unit, machine/unitwire.h).
-    std::size_t vectorWireBytes(const std::array<std::int32_t, 4> &d) const
+    // Bytes of a vector and of a B command as they go on the wire (the codec's own encoding).
+    double vectorWireBytes(const std::array<std::int32_t, 4> &d) const
     {
-        const bool fourth = d[3] != 0 && wireAxisCount(m_config) == 4;
-        std::size_t bytes = 3 + 1 + (m_config.link.checksums ? 3 : 0);
-        for (int i = 0; i < (fourth ? 4 : 3); ++i) {
-            const std::int64_t c = d[static_cast<std::size_t>(i)];
-            bytes += (i ? 1 : 0) + (c < 0 ? 1 : 0) + decimalDigits(std::abs(c));
-        }
-        return bytes;
+        UnitCommand c;
+        c.op = UnitOp::Vector;
+        c.d = d;
+        return static_cast<double>(
+            protocol::encode(*wireCommand(c, wireAxisCount(m_config)), m_config.link.checksums)
+                .size());
     }
-
-    // Bytes of "!0B<value>[,<checksum>]" and CR.
     double brakeWireBytes(std::int64_t value) const
     {
-        return static_cast<double>(3 + decimalDigits(value) + (m_config.link.checksums ? 3 : 0) +
-                                   1);
-    }
-
-    static std::size_t decimalDigits(std::int64_t n)
-    {
-        std::size_t digits = 1;
-        for (; n >= 10; n /= 10)
-            ++digits;
-        return digits;
+        return static_cast<double>(
+            protocol::encode(protocol::cmd::brake(value), m_config.link.checksums).size());
     }
 
     // Where the vectors are about as short as their bytes on the wire, a B that changes at every
@@ -341,7 +336,7 @@ private:
         std::vector<bool> tight(vertices, false);
         for (std::size_t k = 0; k < vertices; ++k) {
             const double cap = static_cast<double>(m_capUnits[k]);
-            // With a B before it (B at most V, so at most V's digits).
+            // With a B before it (B at most V, so at most V's bytes).
             const double withBrake = vectorWireS(m_d[k].wireBytes + brakeWireBytes(m_d[k].speed));
             tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
         }
@@ -573,9 +568,11 @@ private:
     const PlanOptions &m_options;
     bool m_vk;
     std::vector<Derived> m_d;
-    std::vector<double> m_brakeBytes;     // bytes of the B command before move k (last plan)
-    std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
-    std::vector<double> m_capMm;          // the bound's cap there, mm/s
+    std::vector<Derived> m_derived;         // m_d before the link's pace (derive())
+    std::vector<std::uint32_t> m_slowLines; // derive(): lines below the unit's slowest speed
+    std::vector<double> m_brakeBytes;       // bytes of the B command before move k (last plan)
+    std::vector<std::int64_t> m_capUnits;   // B cap at the end of move k, speed units
+    std::vector<double> m_capMm;            // the bound's cap there, mm/s
     RunOutcome m_out;
 };
 

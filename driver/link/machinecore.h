@@ -200,6 +200,7 @@ private:
     std::size_t execEstimate() const; // estimated executing command, from time since the poll
     bool streaming() const;
     bool wireBoundAhead() const; // the motion ahead runs faster than the wire can carry it
+    std::size_t slowMotionPacketEnd() const; // where a packet ends to keep polls at their rate
     protocol::Command toCommand(const machine::UnitCommand &c) const;
 
     // path guard (machinecore_pathguard.cpp)

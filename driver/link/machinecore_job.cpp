@@ -241,26 +241,18 @@ std::int64_t MachineCore::queuedAfter(double ahead) const
     return m_vectorPrefix[m_next] - m_vectorPrefix[std::min(k, m_next)];
 }
 
-void MachineCore::sendPacket(double now)
+// Strict request/reply lets no poll through while a packet is on the wire. Where the motion is
+// slow, packets stay short so that the live position keeps its rate: best short enough for a
+// packet and a poll to share one poll interval, else at most slowPacketWireS. A cap applies only
+// where the short packet carries more than the time of the link cycle it costs (the packet, its
+// reply, a poll, and on average the status and inputs reads), twice as much while the unit holds
+// little, so the unit's queue still fills; where the wire is the bottleneck, packets fill the
+// queue. Returns the first command the packet leaves out, or m_next for no cap.
+std::size_t MachineCore::slowMotionPacketEnd() const
 {
-    // As many C/B commands as fit: the unit takes a packet at its *E, by when it has run part of
-    // its queue for as long as the packet takes on the wire.
     const auto &cmds = m_program.commands;
-    const std::int64_t capacity = variantInfo(m_config.unit.variant).queueCapacity - 1;
-    std::vector<Command> packet;
-    std::int64_t vectors = 0;
-    std::size_t bytes = 24; // *S *S *E
-    std::size_t end = m_next;
-    // Strict request/reply lets no poll through while a packet is on the wire. Where the motion
-    // is slow, packets stay short so that the live position keeps its rate: best short enough
-    // for a packet and a poll to share one poll interval, else at most slowPacketWireS. A cap
-    // applies only where the short packet carries more than the time of the link cycle it
-    // costs, twice as much while the unit holds little (the packet, its reply, a poll, and on
-    // average the status and inputs reads), so the unit's queue still fills; where the wire is the
-    // bottleneck, packets fill the queue.
-    std::size_t shortEnd = m_next;
     // With half a second queued a smaller margin will do: the queue drains only slowly, and the
-    // capacity limit below takes over where it is lower.
+    // capacity limit takes over where it is lower.
     const double margin = bufferedS() >= std::max(0.5, 20 * m_rttS) ? 1.0 : 2.0;
     for (const double wire : {m_options.pollIntervalS - 2 * m_rttS, m_options.slowPacketWireS}) {
         if (wire < 0.005)
@@ -271,21 +263,33 @@ void MachineCore::sendPacket(double now)
             ++e;
         const double cycle = wire + 2.75 * m_rttS;
         if (e > m_next && e < cmds.size() &&
-            m_timePrefix[e] - m_timePrefix[m_next] >= margin * cycle) {
-            shortEnd = e;
-            break;
-        }
+            m_timePrefix[e] - m_timePrefix[m_next] >= margin * cycle)
+            return e;
     }
+    return m_next;
+}
+
+void MachineCore::sendPacket(double now)
+{
+    // As many C/B commands as fit: the unit takes a packet at its *E, by when it has run part of
+    // its queue for as long as the packet takes on the wire.
+    const auto &cmds = m_program.commands;
+    const std::int64_t capacity = variantInfo(m_config.unit.variant).queueCapacity - 1;
+    std::vector<Command> packet;
+    std::int64_t vectors = 0;
+    std::size_t bytes = 24; // *S *S *E
+    std::size_t end = m_next;
+    const std::size_t shortEnd = slowMotionPacketEnd();
     const bool keepShort = shortEnd > m_next;
     // The unit takes a packet at its *E: while the packet is on the wire, and its *E on the way,
     // the unit runs what it holds. Where the motion ahead keeps pace with the wire, a packet must
     // take no longer than that (each packet then brings more motion than it costs, so the unit
     // holds more after it), or the unit runs dry mid-chain and stops without braking. Where the
     // wire is the bottleneck, or the unit holds too little for any packet, it runs dry whatever
-    // the driver does, and a full packet loses least.
-    // Kept in reserve: the reply's and the next packet's round trips and a little more (the
-    // estimate of what the unit holds drifts between polls), or half of what it holds when it
-    // holds little (a small queue, as the GVE84's 64 vectors: a short packet still comes in time).
+    // the driver does, and a full packet loses least. Kept in reserve: the reply's and the next
+    // packet's round trips and a little more (the estimate of what the unit holds drifts between
+    // polls), or half of what it holds when it holds little (a small queue, as the GVE84's 64
+    // vectors: a short packet still comes in time).
     const double held = bufferedS();
     const double budget = held - std::min(2 * m_rttS + kDryReserveS, 0.5 * held);
     const bool paced = held > 0 && budget >= kMinPacedWireS && !wireBoundAhead();
