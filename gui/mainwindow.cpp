@@ -23,7 +23,7 @@
 #include "speedplot.h"
 #include "toolpathview.h"
 
-#include "driver/protocol/variant.h"
+#include "protocol/variant.h"
 
 #include <QAction>
 #include <QApplication>

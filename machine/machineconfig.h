@@ -9,7 +9,7 @@
 // Units: lengths mm (the A axis: degrees), speeds mm/min for feeds and axis limits, mm/s for
 // homing, jumps and the MPG, accelerations mm/s², times ms.
 
-#include "driver/protocol/variant.h"
+#include "protocol/variant.h"
 
 #include <array>
 #include <cstdint>

@@ -1,8 +1,8 @@
 #pragma once
-// A UnitCommand as the codec's typed command (driver/protocol/command.h): one mapping for the
+// A UnitCommand as the codec's typed command (protocol/command.h): one mapping for the
 // plan CLI and the driver, so that only the codec formats bytes.
 
-#include "driver/protocol/command.h"
+#include "protocol/command.h"
 #include "machine/unitprogram.h"
 
 #include <optional>

@@ -1,6 +1,6 @@
 #include "emuoptions.h"
 
-#include "driver/protocol/variant.h"
+#include "protocol/variant.h"
 
 #include <QCoreApplication>
 

@@ -3,7 +3,7 @@
 // uint32 values, factory contents per variant, optional persistence in a text file
 // (16 lines of 16 upper-case hex bytes separated by spaces).
 
-#include "driver/protocol/variant.h"
+#include "protocol/variant.h"
 
 #include <array>
 #include <cstdint>

@@ -7,8 +7,8 @@
 // can adopt or change them. Each is used from exactly one place in the emulator; tests in
 // tests/driver/emulator/readings_test.cpp pin every one of them.
 
-#include "driver/protocol/lines.h"
-#include "driver/protocol/variant.h"
+#include "protocol/lines.h"
+#include "protocol/variant.h"
 
 #include <array>
 #include <cstdint>

@@ -3,7 +3,7 @@
 
 #include "driver/emulator/unit_impl.h"
 
-#include "driver/protocol/checksum.h"
+#include "protocol/checksum.h"
 
 #include <algorithm>
 #include <cmath>

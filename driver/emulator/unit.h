@@ -11,7 +11,7 @@
 //     unit.advance(unit.nextEventIn());                   // event-driven virtual clock
 
 #include "driver/emulator/motion.h"
-#include "driver/protocol/variant.h"
+#include "protocol/variant.h"
 
 #include <array>
 #include <cstdint>

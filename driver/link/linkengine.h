@@ -27,8 +27,8 @@
 // The engine knows the unit's command index after syncIndex() (or the first recovery that
 // learns it): it is advanced for every command except '@' and '>' (adopted reading §8).
 
-#include "driver/protocol/command.h"
-#include "driver/protocol/reply.h"
+#include "protocol/command.h"
+#include "protocol/reply.h"
 
 #include <cstdint>
 #include <functional>

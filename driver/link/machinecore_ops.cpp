@@ -5,7 +5,7 @@
 
 #include "machine/homing.h"
 
-#include "driver/protocol/commandparser.h"
+#include "protocol/commandparser.h"
 
 #include <algorithm>
 #include <cmath>

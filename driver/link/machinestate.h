@@ -6,7 +6,7 @@
 // unit's counters) and in mm (steps / steps-per-mm of the profile; A in degrees).
 
 #include "driver/link/linkengine.h"
-#include "driver/protocol/variant.h"
+#include "protocol/variant.h"
 
 #include <array>
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "emulatorrun.h"
 
 #include "driver/emulator/unit.h"
-#include "driver/protocol/command.h"
+#include "protocol/command.h"
 #include "machine/unitmodel.h"
 #include "machine/unitwire.h"
 

@@ -7,7 +7,7 @@
 //    short vectors streamed one per request, or in packets of 10 and 40, request/response.
 
 #include "driver/emulator/simulation.h"
-#include "driver/protocol/checksum.h"
+#include "protocol/checksum.h"
 
 #include <chrono>
 #include <cstdio>

@@ -1,12 +1,12 @@
-// The codec (driver/protocol, written from the PC's side) against the emulator (written from the
+// The codec (protocol/, written from the PC's side) against the emulator (written from the
 // unit's side): every command the codec builds for a variant is accepted by the emulated unit,
 // and every reply the unit gives decodes and fits the command it answers. Two independent
 // readings of docs/gve-protocol.md that must agree.
 
 #include "emulator_test_util.h"
 
-#include "driver/protocol/command.h"
-#include "driver/protocol/reply.h"
+#include "protocol/command.h"
+#include "protocol/reply.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // Helpers shared by the emulator tests.
 
 #include "driver/emulator/unit.h"
-#include "driver/protocol/checksum.h"
+#include "protocol/checksum.h"
 
 #include <string>
 #include <string_view>

@@ -1,7 +1,7 @@
 // LinkEngine against scripted unit replies: every recovery path, byte-exact.
 
 #include "driver/link/linkengine.h"
-#include "driver/protocol/reply.h"
+#include "protocol/reply.h"
 
 #include <gtest/gtest.h>
 

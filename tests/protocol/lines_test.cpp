@@ -1,4 +1,4 @@
-#include "driver/protocol/lines.h"
+#include "protocol/lines.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Encoding of every command, byte-exact against the manuals' examples, and validation against
 // the variant table.
 
-#include "driver/protocol/command.h"
+#include "protocol/command.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Unit side: received lines -> commands or the unit's reply code; round trips of every op.
 
-#include "driver/protocol/commandparser.h"
+#include "protocol/commandparser.h"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 // Wire form: '!' address op [args separated by ','] CR, or with checksums on
 // '!' address op [args] ',' HH CR where HH = checksum of everything up to that last comma.
 
-#include "driver/protocol/variant.h"
+#include "protocol/variant.h"
 
 #include <array>
 #include <cstdint>

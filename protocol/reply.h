@@ -7,8 +7,8 @@
 // read them. The incremental part (bytes in any split -> lines) is LineAssembler in lines.h;
 // ReplyDecoder joins the two.
 
-#include "driver/protocol/command.h"
-#include "driver/protocol/lines.h"
+#include "protocol/command.h"
+#include "protocol/lines.h"
 
 #include <cstdint>
 #include <optional>

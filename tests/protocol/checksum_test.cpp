@@ -1,5 +1,5 @@
-#include "driver/protocol/checksum.h"
-#include "driver/protocol/variant.h"
+#include "protocol/checksum.h"
+#include "protocol/variant.h"
 
 #include <gtest/gtest.h>
 

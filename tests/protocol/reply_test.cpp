@@ -1,6 +1,6 @@
 // Reply decoding: the manuals' reply table and checksummed replies, value shapes, garbage.
 
-#include "driver/protocol/reply.h"
+#include "protocol/reply.h"
 
 #include <gtest/gtest.h>
 

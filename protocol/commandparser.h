@@ -5,8 +5,8 @@
 // parseCommand() checks the framing, the checksum and the syntax; unitCheck() then applies the
 // variant table (validate() in command.h) and maps its verdict to the unit's reply code.
 
-#include "driver/protocol/command.h"
-#include "driver/protocol/reply.h"
+#include "protocol/command.h"
+#include "protocol/reply.h"
 
 #include <string>
 #include <string_view>
