@@ -29,6 +29,10 @@ const char *planErrorWhat(machine::PlanErrorCode code)
                                  "the spindle speed (S) is above the machine's maximum");
     case C::Unsupported:
         return QT_TRANSLATE_NOOP("frezka::gui::Plan", "the unit cannot do this");
+    case C::FeedCapped:
+        return QT_TRANSLATE_NOOP("frezka::gui::Plan",
+                                 "the feed is above what the machine's axes can do; it runs "
+                                 "slower than programmed");
     }
     return "";
 }

@@ -78,8 +78,10 @@ struct Derived
     std::int64_t accel = 0; // A (thousands)
     std::int64_t twoAU = 0; // 2 · A · usable distance, integer pulses²/s², floored
     bool isShort = false;
-    double wireBytes = 0;  // the C command on the serial line, bytes
-    double wireCap = kInf; // B cap at both its ends so that it keeps the link's pace, units
+    double wireBytes = 0;      // the C command on the serial line, bytes
+    double wireCap = kInf;     // B cap at both its ends so that it keeps the link's pace, units
+    double speedCap = kInf;    // B cap at both its ends where V lies above its own cap, units
+    std::int64_t ownSpeed = 0; // the vector's own V cap (its feed and axis limits)
 };
 
 class RunPlanner
@@ -103,19 +105,25 @@ public:
         planOnce();
         if (!m_options.wireLimited || m_config.link.baud <= 0)
             return std::move(m_out);
-        m_brakeBytes.assign(m_moves.size(), 0);
+        m_extraS.assign(m_moves.size(), 0);
         for (int pass = 0; pass < kWirePasses; ++pass) {
             bool changed = false;
-            std::int64_t last = -1; // the run's first B always counts: the unit's B is unknown
+            // The run's first B, V and A always count: the unit's modal values are unknown.
+            std::int64_t lastB = -1, lastV = -1, lastA = -1;
             for (std::size_t k = 0; k < m_out.vectors.size(); ++k) {
                 const PlannedVector &v = m_out.vectors[k];
-                double bytes = 0;
-                if (!v.line && v.brake != last) {
-                    last = v.brake;
-                    bytes = brakeWireBytes(v.brake);
-                }
-                changed = changed || bytes != m_brakeBytes[k];
-                m_brakeBytes[k] = bytes;
+                double extra = 0;
+                if (!v.line && v.brake != lastB)
+                    extra += commandS(brakeWireBytes(v.brake));
+                if (v.speed != lastV)
+                    extra += nonPacketS(wireBytes(protocol::cmd::speed(v.speed)));
+                if (v.accel != lastA)
+                    extra += nonPacketS(wireBytes(protocol::cmd::accel(v.accel)));
+                lastB = v.line ? lastB : v.brake;
+                lastV = v.speed;
+                lastA = v.accel;
+                changed = changed || extra != m_extraS[k];
+                m_extraS[k] = extra;
             }
             if (!changed)
                 break;
@@ -139,13 +147,24 @@ private:
     // queue costs one round trip (twice the adapter's latency, and the reply's few bytes).
     double vectorWireS(double bytes) const
     {
-        const double roundTripS = 2 * m_config.link.latencyMs / 1000.0 + kReplyS;
+        if (!m_config.link.packets) // every command waits for its own reply
+            return nonPacketS(bytes) * m_options.wireMargin;
         return bytes * 10.0 / m_config.link.baud * m_options.wireMargin +
-               2 * roundTripS / static_cast<double>(queueVectors());
+               2 * roundTripS() / static_cast<double>(queueVectors());
+    }
+    double roundTripS() const { return 2 * m_config.link.latencyMs / 1000.0 + kReplyS; }
+    // A command sent on its own (A, V: they cannot travel in a packet): its bytes and a round
+    // trip, for the unit's reply.
+    double nonPacketS(double bytes) const
+    {
+        if (m_config.link.baud <= 0)
+            return 0;
+        return bytes * 10.0 / m_config.link.baud + roundTripS();
     }
     static constexpr double kReplyS = 0.002;      // a packet's reply and the unit's turnaround
     static constexpr int kWirePasses = 5;         // plans again at most this often
     static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
+    static constexpr double kFlexibleRoom = 0.8;  // chooseSpeeds: B cap at least 0.97 of own
 
     // One plan of the run: the derived moves, the link's pace over them (with the B bytes of the
     // last plan), caps, bound and passes.
@@ -153,6 +172,8 @@ private:
     {
         m_out = {};
         m_out.slowLines = m_slowLines;
+        m_out.firstFeedCap = m_firstFeedCap;
+        m_out.feedCapLines = m_feedCapLines;
         m_d = m_derived;
         wirePace();
         const std::size_t n = m_moves.size();
@@ -184,46 +205,181 @@ private:
         m_d.resize(m_moves.size());
         for (std::size_t k = 0; k < m_moves.size(); ++k)
             deriveOne(m_moves[k], m_d[k]);
+        chooseSpeeds();
         chooseAccels();
         m_derived = m_d;
     }
 
-    // A per vector: the smallest path-acceleration cap within a window of neighbours (step
-    // rounding makes the direction of tiny vectors jitter), kept from the previous vector while
-    // it lies within a tolerance below the cap. Fewer A commands: A cannot travel in packets.
+    // V per vector. Each vector's own cap (feed, axis speeds in its direction, pulse rate)
+    // moves with the direction wherever an axis limit or VN's major axis sets it: a feed above
+    // the axes' maxima on a wavy 3D raster would change V at nearly every vector. V cannot
+    // travel in a packet (only C and B can, docs/gve-protocol.md §2.2), so each change is a round
+    // trip on the link, and where vectors are short the unit's queue runs dry on them.
+    //
+    // A vector runs from its entry B toward V and brakes to its exit B, so its fastest speed is
+    // at most sqrt((b0² + b1²) / 2 + A·L) (§4): where both its Bs stay at or below
+    // sqrt(cap² - A·L), V may lie above the vector's own cap without the vector ever going faster
+    // than the cap. Such a vector is *flexible*: it can share the V of its neighbours. Short
+    // vectors are (a 3D raster's, a finely chorded arc's): stretches of them share one V, the
+    // largest of their caps, and the B caps (Derived::speedCap) keep each one within its own. A
+    // *rigid* vector (long enough to reach its cap, or lasting long enough for the link to carry
+    // its own V command) takes its own cap as V; a flexible vector
+    // after it joins its stretch at that V while the cruise time this loses stays below what a V
+    // command costs the link (PlanOptions::speedChangeCost x its round trip).
+    void chooseSpeeds()
+    {
+        const double penalty = m_options.speedChangeCost * nonPacketS(speedWireBytes());
+        if (!(penalty > 0) || m_d.empty())
+            return; // no link to spare: every vector at its own cap
+        const std::size_t n = m_d.size();
+        const double change = nonPacketS(speedWireBytes());
+        std::vector<double> roomCap(n); // the B cap that keeps a vector within its own cap
+        for (std::size_t k = 0; k < n; ++k) {
+            const Derived &r = m_d[k];
+            const double c = static_cast<double>(r.speed);
+            // A vector that lasts twice its own wire time and a V round trip leaves the link
+            // the time for its own V: it keeps it (rigid).
+            if (r.units / c >= 2 * (vectorWireS(r.wireBytes) + change))
+                continue;
+            const double room = c * c - static_cast<double>(accelCap(k)) * 1000.0 * r.units;
+            // Flexible only where that costs the vector little: a vector that could accelerate
+            // well past its cap within itself keeps its own V.
+            if (room >= std::max(static_cast<double>(kMinSpeed * kMinSpeed), kFlexibleRoom * c * c))
+                roomCap[k] = std::floor(std::sqrt(room));
+        }
+        std::size_t first = 0;
+        std::int64_t level = 0, least = 0; // the stretch's V, and its least flexible cap
+        bool rigid = false;          // the stretch holds a rigid vector: its level cannot rise
+        double units = 0, owned = 0; // the stretch's distance, and its time at each own cap
+        auto close = [&](std::size_t end) {
+            // A stretch of flexible vectors whose caps differ little runs faster at its least
+            // cap than at its largest with every other vector's Bs held below its own cap.
+            if (!rigid && least < level) {
+                double atLeast = 0, atMost = 0;
+                for (std::size_t j = first; j < end; ++j) {
+                    const Derived &r = m_d[j];
+                    const double c = static_cast<double>(r.speed);
+                    atLeast += r.units / static_cast<double>(least) - r.units / c;
+                    if (r.speed < level)
+                        atMost += r.units / roomCap[j] - r.units / c;
+                }
+                if (atLeast <= atMost)
+                    level = least;
+            }
+            for (std::size_t j = first; j < end; ++j) {
+                Derived &r = m_d[j];
+                if (level > r.speed)
+                    r.speedCap = roomCap[j];
+                r.speed = level;
+            }
+        };
+        auto open = [&](std::size_t k) {
+            close(k);
+            first = k;
+            level = least = m_d[k].speed;
+            rigid = roomCap[k] == 0;
+            units = owned = 0;
+        };
+        // Flexible caps within the tolerance of each other share a V (a feed that changes, as
+        // from one G-code line to the next, is a V command of its own).
+        auto near = [&](std::int64_t cap) {
+            return static_cast<double>(std::max(level, cap)) * (1 - m_options.accelTolerance) <=
+                   static_cast<double>(std::min(least, cap));
+        };
+        for (std::size_t k = 0; k < n; ++k) {
+            const Derived &r = m_d[k];
+            const bool flexible = roomCap[k] > 0;
+            const double own = r.units / static_cast<double>(r.speed);
+            if (k == first) {
+                open(k);
+            } else if (flexible && !near(r.speed)) {
+                open(k);
+            } else if (flexible && !rigid) {
+                level = std::max(level, r.speed);
+                least = std::min(least, r.speed);
+            } else if (r.speed == level || (!flexible && !rigid && r.speed > level)) {
+                level = r.speed; // a rigid vector at or above a flexible stretch's level
+                rigid = rigid || !flexible;
+            } else if (rigid) {
+                // Below the stretch's V it takes the stretch down with it; above it, it runs at
+                // the stretch's V: either while the time lost stays below a V command's cost.
+                const std::int64_t lower = std::min(level, r.speed);
+                const double loss = (units + r.units) / static_cast<double>(lower) - (owned + own);
+                if (loss > penalty || (flexible && r.speed < level))
+                    open(k);
+                else
+                    level = lower, rigid = rigid || !flexible;
+            } else {
+                open(k); // a rigid vector below a flexible stretch's V
+            }
+            units += r.units;
+            owned += own;
+        }
+        close(n);
+    }
+
+    // A per vector: A cannot travel in packets either, so quick vectors (those that pass in
+    // under accelKeepS at their V) share one A over a stretch whose caps lie within
+    // accelTolerance of each other: the stretch's least cap. Caps drift with the direction
+    // (a 3D raster's slope changes the path acceleration the axes allow at every vector); a
+    // stretch follows the drift in steps of the tolerance instead of at every vector. A short
+    // vector's direction jitters with the step rounding: its cap is the least of its neighbours
+    // within accelWindowSteps speed units. A long vector keeps its own cap: there the
+    // acceleration matters and one A command costs the link nothing in comparison.
     void chooseAccels()
     {
         const std::size_t n = m_d.size();
-        const double w = std::max(0.0, m_options.accelWindowSteps);
-        std::int64_t last = 0;
-        for (std::size_t k = 0; k < n; ++k) {
-            Derived &r = m_d[k];
-            double a = r.aMm; // r.aMm stays the limit itself: the bound uses it
-            // Only a short vector's direction jitters with the step rounding: it takes the
-            // smallest cap of the neighbours within w speed units; a long one keeps its own.
-            double reach = r.units < w ? 0 : w;
-            for (std::size_t j = k; j > 0 && reach < w; --j) {
-                a = std::min(a, m_d[j - 1].aMm);
-                reach += m_d[j - 1].units;
+        std::vector<std::int64_t> caps(n);
+        for (std::size_t k = 0; k < n; ++k)
+            caps[k] = accelCap(k);
+        std::size_t k = 0;
+        while (k < n) {
+            std::size_t end = k + 1;
+            std::int64_t least = caps[k], most = caps[k];
+            if (quick(k)) {
+                while (end < n && quick(end)) {
+                    const std::int64_t lo = std::min(least, caps[end]);
+                    const std::int64_t hi = std::max(most, caps[end]);
+                    if (static_cast<double>(lo) <
+                        static_cast<double>(hi) * (1 - m_options.accelTolerance))
+                        break;
+                    least = lo, most = hi, ++end;
+                }
             }
-            reach = r.units < w ? 0 : w;
-            for (std::size_t j = k + 1; j < n && reach < w; ++j) {
-                a = std::min(a, m_d[j].aMm);
-                reach += m_d[j].units;
+            for (; k < end; ++k) {
+                Derived &r = m_d[k];
+                r.accel = least;
+                const double whole = std::floor(r.units + 1e-9);
+                const double usable = std::max(whole - m_options.brakeMarginSteps, whole / 2);
+                r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * r.accel * 1000.0 * usable));
             }
-            const auto cap = std::clamp<std::int64_t>(
-                static_cast<std::int64_t>(floorUnits(a * r.f / 1000)), 1, kMaxAccel);
-            // Only a vector that passes quickly keeps a lower A: on a long one the acceleration
-            // matters and one A command costs the link nothing in comparison.
-            const bool quick = r.units < m_options.accelKeepS * static_cast<double>(r.speed);
-            const bool keep =
-                quick && last > 0 && last <= cap && last >= cap * (1 - m_options.accelTolerance);
-            r.accel = keep ? last : cap;
-            last = r.accel;
-            const double whole = std::floor(r.units + 1e-9);
-            const double usable = std::max(whole - m_options.brakeMarginSteps, whole / 2);
-            r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * r.accel * 1000.0 * usable));
         }
+    }
+
+    bool quick(std::size_t k) const
+    {
+        return m_d[k].units < m_options.accelKeepS * static_cast<double>(m_d[k].speed);
+    }
+
+    // The A cap of move k, thousands of pulses/s² (see chooseAccels).
+    std::int64_t accelCap(std::size_t k) const
+    {
+        const std::size_t n = m_d.size();
+        const double w = std::max(0.0, m_options.accelWindowSteps);
+        const Derived &r = m_d[k];
+        double a = r.aMm; // r.aMm stays the limit itself: the bound uses it
+        double reach = r.units < w ? 0 : w;
+        for (std::size_t j = k; j > 0 && reach < w; --j) {
+            a = std::min(a, m_d[j - 1].aMm);
+            reach += m_d[j - 1].units;
+        }
+        reach = r.units < w ? 0 : w;
+        for (std::size_t j = k + 1; j < n && reach < w; ++j) {
+            a = std::min(a, m_d[j].aMm);
+            reach += m_d[j].units;
+        }
+        return std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(a * r.f / 1000)), 1,
+                                        kMaxAccel);
     }
 
     // The link's pace (PlanOptions::wireLimited): a vector must last at least the time its bytes
@@ -239,10 +395,10 @@ private:
         if (!m_options.wireLimited || m_config.link.baud <= 0)
             return;
         const std::size_t n = m_d.size();
-        // Prefix sums of the B bytes for their averages.
-        std::vector<double> brakePrefix(n + 1, 0.0);
+        // Prefix sums of the B, V and A commands' link time for their averages.
+        std::vector<double> extraPrefix(n + 1, 0.0);
         for (std::size_t k = 0; k < n; ++k)
-            brakePrefix[k + 1] = brakePrefix[k] + (m_brakeBytes.size() == n ? m_brakeBytes[k] : 0);
+            extraPrefix[k + 1] = extraPrefix[k] + (m_extraS.size() == n ? m_extraS[k] : 0);
         for (std::size_t k = 0; k < n; ++k) {
             Derived &r = m_d[k];
             const std::size_t from = k > wireWindow() ? k - wireWindow() : 0;
@@ -252,12 +408,12 @@ private:
                 widest = std::max(widest, m_d[j].wireBytes);
             const std::size_t bFrom = k > brakeWindow() ? k - brakeWindow() : 0;
             const std::size_t bTo = std::min(n, k + brakeWindow() + 1);
-            const double bytes =
-                widest + (brakePrefix[bTo] - brakePrefix[bFrom]) / static_cast<double>(bTo - bFrom);
-            const double wireS = vectorWireS(bytes);
+            const double span = static_cast<double>(bTo - bFrom);
+            const double wireS =
+                vectorWireS(widest) + (extraPrefix[bTo] - extraPrefix[bFrom]) / span;
             const double fastest = r.units / wireS; // units/s
             r.vMm = std::min(r.vMm, fastest / r.f);
-            if (fastest >= static_cast<double>(r.speed))
+            if (fastest >= static_cast<double>(std::min(r.speed, r.ownSpeed)))
                 continue;
             const double room = fastest * fastest - static_cast<double>(r.accel) * 1000.0 * r.units;
             if (room >= static_cast<double>(kMinSpeed * kMinSpeed))
@@ -280,22 +436,36 @@ private:
             r.uPath = normalized(stepMm), r.pathLengthMm = r.lengthMm;
         r.units = speedUnitsLength(m.d, m_vk);
         r.f = r.units / r.lengthMm;
-        double v = m.rapid ? kInf : m.feedMmPerS * m_options.feedOverride;
+        const double asked = m.rapid ? kInf : m.feedMmPerS * m_options.feedOverride;
+        double v = asked;
         double a = kInf;
+        FeedCap cap{m.line, asked, 0, 0, 0};
         for (int i = 0; i < 4; ++i) {
             r.uStep[i] = stepMm[i] / r.lengthMm;
             const double u = std::abs(r.uStep[i]);
             if (u < 1e-12)
                 continue;
             const AxisConfig &ax = m_config.axes[static_cast<std::size_t>(i)];
-            v = std::min(v, (m.rapid ? ax.rapidMmPerMin : ax.maxSpeedMmPerMin) / 60.0 / u);
+            const double axisMax = (m.rapid ? ax.rapidMmPerMin : ax.maxSpeedMmPerMin) / 60.0;
+            if (axisMax / u < v)
+                cap.limit = kAxisLetters[static_cast<std::size_t>(i)], cap.limitMmPerS = axisMax;
+            v = std::min(v, axisMax / u);
             a = std::min(a, ax.accelMmPerS2 / u);
         }
+        if (m_config.unit.maxPulseRate / r.f < v)
+            cap.limit = 'P', cap.limitMmPerS = m_config.unit.maxPulseRate / r.f;
         v = std::min(v, m_config.unit.maxPulseRate / r.f);
+        if (!m.rapid && v < asked * (1 - 1e-9) && m_lastCappedLine != m.line) {
+            cap.runMmPerS = v;
+            if (m_feedCapLines++ == 0)
+                m_firstFeedCap = cap;
+            m_lastCappedLine = m.line;
+        }
         r.vMm = v;
         r.aMm = a;
         r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(v * r.f)),
                                            kMinSpeed, m_config.unit.maxPulseRate);
+        r.ownSpeed = r.speed;
         if (v * r.f < kMinSpeed) { // the unit cannot go slower: the move runs faster than asked
             r.vMm = kMinSpeed / r.f;
             if (m_slowLines.empty() || m_slowLines.back() != m.line)
@@ -320,8 +490,24 @@ private:
     }
     double brakeWireBytes(std::int64_t value) const
     {
-        return static_cast<double>(
-            protocol::encode(protocol::cmd::brake(value), m_config.link.checksums).size());
+        return wireBytes(protocol::cmd::brake(value));
+    }
+    double wireBytes(const protocol::Command &command) const
+    {
+        return static_cast<double>(protocol::encode(command, m_config.link.checksums).size());
+    }
+    // A V command of the largest value the unit takes (its bytes barely depend on the value).
+    double speedWireBytes() const
+    {
+        return wireBytes(protocol::cmd::speed(m_config.unit.maxPulseRate));
+    }
+    // Link time of a B command (it travels in a packet, unless packets are off).
+    double commandS(double bytes) const
+    {
+        if (m_config.link.baud <= 0)
+            return 0;
+        return m_config.link.packets ? bytes * 10.0 / m_config.link.baud * m_options.wireMargin
+                                     : nonPacketS(bytes) * m_options.wireMargin;
     }
 
     // Where the vectors are about as short as their bytes on the wire, a B that changes at every
@@ -337,7 +523,8 @@ private:
         for (std::size_t k = 0; k < vertices; ++k) {
             const double cap = static_cast<double>(m_capUnits[k]);
             // With a B before it (B at most V, so at most V's bytes).
-            const double withBrake = vectorWireS(m_d[k].wireBytes + brakeWireBytes(m_d[k].speed));
+            const double withBrake =
+                vectorWireS(m_d[k].wireBytes) + commandS(brakeWireBytes(m_d[k].speed));
             tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
         }
         const std::vector<std::int64_t> caps(m_capUnits.begin(), m_capUnits.end() - 1);
@@ -417,7 +604,8 @@ private:
                 units =
                     std::min(units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
         }
-        units = std::min({units, a.wireCap, b.wireCap}); // the link's pace (infinite: off)
+        units = std::min({units, a.wireCap, b.wireCap});   // the link's pace (infinite: off)
+        units = std::min({units, a.speedCap, b.speedCap}); // V above a vector's own cap
         m_capUnits[k] = static_cast<std::int64_t>(floorUnits(units));
     }
 
@@ -453,7 +641,7 @@ private:
             const Derived &r = m_d[k];
             PlannedVector v{r.speed, r.accel, b[k - first], k == last, false};
             if (k == last) // nothing follows: the unit brakes to 0; a short vector cruises at B
-                v.brake = r.isShort ? r.speed : kMinSpeed;
+                v.brake = r.isShort ? std::min(r.speed, r.ownSpeed) : kMinSpeed;
             v.line = m_options.strategy == PlanStrategy::ExactStop;
             m_out.vectors.push_back(v);
         }
@@ -570,9 +758,12 @@ private:
     std::vector<Derived> m_d;
     std::vector<Derived> m_derived;         // m_d before the link's pace (derive())
     std::vector<std::uint32_t> m_slowLines; // derive(): lines below the unit's slowest speed
-    std::vector<double> m_brakeBytes;       // bytes of the B command before move k (last plan)
-    std::vector<std::int64_t> m_capUnits;   // B cap at the end of move k, speed units
-    std::vector<double> m_capMm;            // the bound's cap there, mm/s
+    FeedCap m_firstFeedCap;                 // derive(): the first move whose feed is capped
+    std::size_t m_feedCapLines = 0;         // ... and how many lines are
+    std::uint32_t m_lastCappedLine = 0;
+    std::vector<double> m_extraS; // link time of the B, V, A commands before move k (last plan)
+    std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
+    std::vector<double> m_capMm;          // the bound's cap there, mm/s
     RunOutcome m_out;
 };
 

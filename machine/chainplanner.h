@@ -35,10 +35,23 @@ struct PlannedVector
     bool line = false;      // send as L (stand-alone, from and to rest), not C
 };
 
+// A feed move whose programmed feed is above what the axes (or the unit's pulse rate) allow in
+// its direction: the plan runs it at the allowed speed.
+struct FeedCap
+{
+    std::uint32_t line = 0;
+    double askedMmPerS = 0;
+    double runMmPerS = 0;
+    char limit = 'X'; // the axis whose maximum speed sets it, or 'P' for the unit's pulse rate
+    double limitMmPerS = 0; // that axis's maximum (P: the pulse rate in mm/s along the move)
+};
+
 struct RunOutcome
 {
     std::vector<PlannedVector> vectors;   // one per move, in order
     std::vector<std::uint32_t> slowLines; // lines whose feed is below the unit's 10 pulses/s
+    FeedCap firstFeedCap;                 // the first move whose feed is capped (line 0: none)
+    std::size_t feedCapLines = 0;         // lines with a capped feed (consecutive moves: once)
     std::size_t chains = 0;
     double boundS = 0;                   // time-optimal bound of these moves
     double maxJumpMmPerS = 0;            // largest per-axis speed step at a vertex of the plan

@@ -63,6 +63,7 @@ public:
                 event(i);
         }
         flush();
+        feedCapWarning();
         if (!m_result.errors.empty())
             m_result.program.commands.clear();
         finishStats();
@@ -280,6 +281,11 @@ private:
         if (!run.vectors.empty() && run.vectors.back().line)
             emit(UnitOp::WaitIdle, 0, m_moves.back().line);
         m_bound += run.boundS;
+        if (run.feedCapLines > 0) {
+            if (m_feedCapLines == 0)
+                m_firstFeedCap = run.firstFeedCap;
+            m_feedCapLines += run.feedCapLines;
+        }
         for (std::uint32_t line : run.slowLines)
             warning(line, "the feed is below the unit's slowest speed (10 pulses/s) for this "
                           "move; it runs at that speed instead");
@@ -298,6 +304,7 @@ private:
     void outputs(std::uint32_t line, std::uint8_t clearBits, std::uint8_t setBits);
     void wait(std::uint32_t line, double seconds);
     void finishStats();
+    void feedCapWarning();
 
     const gcode::Toolpath &m_path;
     const MachineConfig &m_config;
@@ -316,6 +323,8 @@ private:
     std::uint8_t m_port0 = 0xFF; // outputs, active low: all off
     double m_bound = 0;
     double m_waitS = 0;
+    detail::FeedCap m_firstFeedCap; // the first move whose feed the axes cap
+    std::size_t m_feedCapLines = 0;
 };
 
 void Planner::wait(std::uint32_t line, double seconds)
@@ -448,6 +457,29 @@ void Planner::event(std::size_t i)
     case EventKind::Dwell:
         break;
     }
+}
+
+// One warning for the whole program: where the feed is first above what the axes allow, the
+// feed asked for, the feed the machine will run there, and how many lines are capped.
+void Planner::feedCapWarning()
+{
+    if (m_feedCapLines == 0)
+        return;
+    const detail::FeedCap &c = m_firstFeedCap;
+    const std::string limit =
+        c.limit == 'P' ? "the unit's " + std::to_string(m_config.unit.maxPulseRate) + " pulses/s"
+                       : std::string(1, c.limit) + "'s maximum speed of " +
+                             fmt(c.limitMmPerS * 60) + " mm/min";
+    std::string what = "F" + fmt(c.askedMmPerS * 60) +
+                       " mm/min is above what the axes allow along "
+                       "this move; the machine runs it at " +
+                       fmt(c.runMmPerS * 60) + " mm/min (" + limit + ")";
+    if (m_feedCapLines > 1)
+        what += "; " + std::to_string(m_feedCapLines - 1) + " more lines are capped the same way";
+    what += ". Lower the F word, or raise the axis maxima in the machine profile if the machine "
+            "can go faster";
+    m_result.warnings.push_back(
+        {PlanErrorCode::FeedCapped, c.line, "line " + std::to_string(c.line) + ": " + what});
 }
 
 void Planner::finishStats()

@@ -44,6 +44,10 @@ struct PlanOptions
     // machine without braking (docs/planner.md §4, "The link's pace").
     bool wireLimited = true;
     double wireMargin = 1.05;
+    // A vector's V is kept from the one before while the cruise time this loses stays below
+    // speedChangeCost x what a V command costs the link (its bytes and a round trip): V cannot
+    // travel in a packet (docs/planner.md §4). 0: every vector at its own cap.
+    double speedChangeCost = 1.0;
 };
 
 enum class PlanErrorCode : std::uint8_t {
@@ -53,6 +57,7 @@ enum class PlanErrorCode : std::uint8_t {
     NoFeed,          // a feed move with feed 0
     SpindleTooFast,  // S above spindle.maxRpm
     Unsupported,     // something the unit cannot do (M4 reverse spindle, ...)
+    FeedCapped,      // warning: a feed above what the axes allow; it runs at their maximum
 };
 
 struct PlanError

@@ -1987,6 +1987,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>%1:%2: %3 (%4)</source>
         <translation>%1:%2: %3 (%4)</translation>
     </message>
+    <message>
+        <source>the feed is above what the machine&apos;s axes can do; it runs slower than programmed</source>
+        <translation>posuv je vyšší, než zvládnou osy stroje; poběží pomaleji, než je naprogramováno</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::PortSettingsRow</name>

@@ -1982,6 +1982,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>%1:%2: %3 (%4)</source>
         <translation>%1:%2: %3 (%4)</translation>
     </message>
+    <message>
+        <source>the feed is above what the machine&apos;s axes can do; it runs slower than programmed</source>
+        <translation>the feed is above what the machine&apos;s axes can do; it runs slower than programmed</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::PortSettingsRow</name>

@@ -82,19 +82,24 @@ TEST(EmulatorJudge, DenseHelixWithDifferentAxisScales)
     const MachineConfig c = unequalScales();
     const PlanResult r = plan(helix(), c);
     EXPECT_TRUE(r.stats.speedModeVk);
-    expectHonoured(r, c);
+    // With unequal scales the same path speed is a different V on every chord; V cannot travel
+    // in a packet, so the plan shares one V over stretches of chords and holds each chord below
+    // its own cap with its Bs: 2.3 % above the bound (a V per chord was 0.3 % here, but a round
+    // trip per 5 ms chord, which no serial link carries; docs/planner.md §4).
+    expectHonoured(r, c, 1.03);
 }
 
 TEST(EmulatorJudge, DenseHelixInVnMode)
 {
     // VN: the unit's speed is the major axis's step rate, whose ratio to the path speed has
     // kinks on a curve; the plan keeps every limit but gives away a few per cent (measured
-    // 3.3 %, docs/planner.md §6).
+    // 3.3 % with a V per chord; 5.1 % with the V shared over stretches of chords, as the link
+    // needs it, docs/planner.md §4 and §6).
     MachineConfig c = unequalScales();
     c.motion.speedMode = SpeedModeChoice::Vn;
     const PlanResult r = plan(helix(), c);
     EXPECT_FALSE(r.stats.speedModeVk);
-    expectHonoured(r, c, 1.05);
+    expectHonoured(r, c, 1.06);
 }
 
 TEST(EmulatorJudge, RotaryAxisMovesWithVn)

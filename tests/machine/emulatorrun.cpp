@@ -1,9 +1,9 @@
 #include "emulatorrun.h"
 
 #include "driver/emulator/unit.h"
-#include "protocol/command.h"
 #include "machine/unitmodel.h"
 #include "machine/unitwire.h"
+#include "protocol/command.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,10 +67,20 @@ struct Vertex
     Steps4 end;
 };
 
-void measureJumps(const std::vector<Vertex> &vs, const emulator::Unit &unit, const UnitProgram &p,
-                  const MachineConfig &config, bool vk, EmulatorRun &run)
+} // namespace
+
+JumpFigures measureJumps(const std::vector<emulator::TracePoint> &trace, const UnitProgram &p,
+                         const MachineConfig &config)
 {
-    const auto &trace = unit.trace();
+    JumpFigures run;
+    bool vk = false;
+    std::vector<Vertex> vs;
+    for (const UnitCommand &c : p.commands) {
+        if (c.op == UnitOp::SpeedModeVk || c.op == UnitOp::SpeedModeVn)
+            vk = c.op == UnitOp::SpeedModeVk;
+        if (c.op == UnitOp::Vector || c.op == UnitOp::Line)
+            vs.push_back({c.d, c.endSteps});
+    }
     std::size_t j = 0;
     for (const emulator::TracePoint &t : trace) {
         if (j >= vs.size())
@@ -91,16 +101,17 @@ void measureJumps(const std::vector<Vertex> &vs, const emulator::Unit &unit, con
                 const double jump = std::abs(before - after) / a.stepsPerMm;
                 run.maxJumpMmPerS = std::max(run.maxJumpMmPerS, jump);
                 const double ratio = a.maxJumpMmPerS > 0 ? jump / a.maxJumpMmPerS : 0;
-                run.maxJumpRatio = std::max(run.maxJumpRatio, ratio);
+                run.maxRatio = std::max(run.maxRatio, ratio);
                 over = over || ratio > 1 + 1e-9;
             }
-            run.jumpOverLimit += over ? 1 : 0;
+            run.overLimit += over ? 1 : 0;
         }
         ++j;
     }
+    return run;
 }
 
-} // namespace
+namespace {} // namespace
 
 EmulatorRun runOnEmulator(const UnitProgram &program, const MachineConfig &config)
 {
@@ -111,12 +122,10 @@ EmulatorRun runOnEmulator(const UnitProgram &program, const MachineConfig &confi
         !feeder.send(protocol::cmd::mpgOff(), &run.error))
         return run;
     const double t0 = unit.now();
-    bool vk = false, drained = false;
-    std::vector<Vertex> vertices;
+    bool drained = false;
+    std::size_t sent = 0;
     Steps4 last = program.startSteps;
     for (const UnitCommand &c : program.commands) {
-        if (c.op == UnitOp::SpeedModeVk || c.op == UnitOp::SpeedModeVn)
-            vk = c.op == UnitOp::SpeedModeVk;
         if (const auto wire = wireCommand(c, program.axisCount)) {
             if (c.op == UnitOp::Vector) {
                 run.plannedStops += drained ? 1 : 0;
@@ -125,13 +134,13 @@ EmulatorRun runOnEmulator(const UnitProgram &program, const MachineConfig &confi
             if (!feeder.send(*wire, &run.error))
                 return run;
             if (c.op == UnitOp::Vector || c.op == UnitOp::Line) {
-                vertices.push_back({c.d, c.endSteps});
+                ++sent;
                 last = c.endSteps;
             }
             continue;
         }
         feeder.waitIdle();
-        drained = drained || !vertices.empty();
+        drained = drained || sent > 0;
         if (c.op == UnitOp::Dwell)
             feeder.wait(static_cast<double>(c.value) / 1000.0);
         if (c.op == UnitOp::Probe) {
@@ -150,7 +159,11 @@ EmulatorRun runOnEmulator(const UnitProgram &program, const MachineConfig &confi
     run.countersMatch = true;
     for (int i = 0; i < 4; ++i)
         run.countersMatch = run.countersMatch && pos[i] + program.startSteps[i] == last[i];
-    measureJumps(vertices, unit, program, config, vk, run);
+    const JumpFigures jumps = measureJumps(unit.trace(), program, config);
+    run.vertices = jumps.vertices;
+    run.jumpOverLimit = jumps.overLimit;
+    run.maxJumpMmPerS = jumps.maxJumpMmPerS;
+    run.maxJumpRatio = jumps.maxRatio;
     return run;
 }
 

@@ -4,11 +4,13 @@
 // violations, starvation stops, final counters and the real speed step at every vertex.
 // Shared by the planner tests and the planner benchmark.
 
+#include "driver/emulator/motion.h"
 #include "machine/machineconfig.h"
 #include "machine/unitprogram.h"
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace frezka::machine::test {
 
@@ -29,5 +31,17 @@ struct EmulatorRun
 };
 
 EmulatorRun runOnEmulator(const UnitProgram &program, const MachineConfig &config);
+
+// The per-axis speed step at every vertex the unit passed at speed, from its trace (a Unit
+// with UnitOptions::trace), against the axes' jump limits.
+struct JumpFigures
+{
+    std::size_t vertices = 0;  // vertices passed at speed
+    std::size_t overLimit = 0; // ... whose speed step exceeds an axis's limit
+    double maxJumpMmPerS = 0;
+    double maxRatio = 0; // largest speed step / axis limit
+};
+JumpFigures measureJumps(const std::vector<emulator::TracePoint> &trace, const UnitProgram &program,
+                         const MachineConfig &config);
 
 } // namespace frezka::machine::test

@@ -274,7 +274,13 @@ TEST(Speeds, AxisSpeedLimitCapsTheFeed)
     expectValid(r);
 }
 
-TEST(Speeds, PathSpeedIsTheFeedWhateverTheAxisScales)
+// The unit's speed scalar carries over numerically from vector to vector, so with unequal axis
+// scales the same path speed is a different V on every chord of an arc. V cannot travel in a
+// packet: a V per chord would be a round trip per chord on the link. The plan shares one V over
+// stretches of short chords and holds each chord below its own cap with its B speeds
+// (docs/planner.md §4): whatever V says, no chord runs faster than the feed, the path runs close
+// to it, and the plan sends few V commands.
+TEST(Speeds, PathSpeedStaysAtTheFeedWhateverTheAxisScales)
 {
     for (SpeedModeChoice mode : {SpeedModeChoice::Auto, SpeedModeChoice::Vn}) {
         MachineConfig c = gve64();
@@ -295,16 +301,25 @@ TEST(Speeds, PathSpeedIsTheFeedWhateverTheAxisScales)
         bool vk = !r.stats.speedModeVk;
         const auto vs = replay(r.program, &vk);
         EXPECT_EQ(vk, r.stats.speedModeVk);
+        double entry = 0;
+        std::size_t speedCommands = 0;
+        for (const UnitCommand &u : r.program.commands)
+            speedCommands += u.op == UnitOp::Speed ? 1 : 0;
         for (const Captured &v : vs) {
             const double dx = v.d[0] / 200.0, dy = v.d[1] / 320.0, dz = v.d[2] / 800.0;
             const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
             const double units = speedUnitsLength(v.d, vk);
-            const double pathSpeed = v.v * length / units; // mm/s the unit runs at V
-            EXPECT_LE(pathSpeed, 20.0 + 1e-9);
-            EXPECT_GT(pathSpeed, 20.0 - length / units * 1.0001); // within one pulse/s
+            const double exit = v.chainEnd ? 0 : static_cast<double>(v.b);
+            const VectorRun run =
+                runVector(entry, static_cast<double>(v.v), exit, v.a * 1000.0, units);
+            const double fastest = std::max({entry, exit, run.peak}) * length / units; // mm/s
+            EXPECT_LE(fastest, 20.0 * (1 + 1e-9));
+            entry = exit;
         }
         expectValid(r);
-        EXPECT_LE(r.stats.estimatedS, 1.02 * r.stats.boundS);
+        // Measured 3.9 % (VK) and 4.7 % (VN) above the bound: what sharing V costs here.
+        EXPECT_LE(r.stats.estimatedS, 1.05 * r.stats.boundS);
+        EXPECT_LE(speedCommands * 8, vs.size()) << speedCommands << " V for " << vs.size();
     }
 }
 

@@ -1,0 +1,71 @@
+// The stream property test's soak: the same random jobs as tests/machine/stream_property_test
+// (random programs, machine profiles and links; tests/machine/randomjob.h), many more of them
+// and larger. Prints each failing case with its seed (reproduce one with
+// FREZKA_PROPERTY_SEED=<seed> build/tests/machine/stream_property_test), then the figures over
+// all cases: the plan's estimate against its bound, the job time against the estimate on clean
+// links, the wire spent on resends on faulty ones.
+//
+//   stream_soak [CASES (default 3000)] [FIRST_SEED (default 1)] [MAX_LINES (default 1200)]
+#include "randomjob.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+using namespace frezka::machine::test;
+
+int main(int argc, char **argv)
+{
+    const long cases = argc > 1 ? std::atol(argv[1]) : 3000;
+    const long first = argc > 2 ? std::atol(argv[2]) : 1;
+    const int maxLines = argc > 3 ? std::atoi(argv[3]) : 1200;
+    long failed = 0, clean = 0, faulty = 0, pathFaults = 0, packetsOff = 0;
+    double worstBoundRatio = 0, worstClean = 0, sumClean = 0, worstResend = 0, sumResend = 0;
+    double virtualS = 0;
+    long vectors = 0;
+    for (long i = 0; i < cases; ++i) {
+        const auto seed = static_cast<std::uint64_t>(first + i);
+        const RandomJob job = drawJob(seed, maxLines);
+        const JobOutcome o = runJob(job);
+        if (!o.failures.empty()) {
+            ++failed;
+            std::printf("FAIL seed %llu: %s\n", static_cast<unsigned long long>(seed),
+                        job.summary.c_str());
+            for (const std::string &f : o.failures)
+                std::printf("  - %s\n", f.c_str());
+            std::fflush(stdout);
+        }
+        if (!o.planned)
+            continue;
+        vectors += o.vectorsPlanned;
+        virtualS += o.jobS;
+        packetsOff += job.config.link.packets ? 0 : 1;
+        if (o.stats.boundS > 0)
+            worstBoundRatio = std::max(worstBoundRatio, o.stats.estimatedS / o.stats.boundS);
+        const double off = o.stats.estimatedS > 0 ? o.jobS / o.stats.estimatedS - 1 : 0;
+        if (job.wire.byteErrorRate == 0) {
+            ++clean;
+            worstClean = std::max(worstClean, std::abs(off));
+            sumClean += std::abs(off);
+        } else {
+            ++faulty;
+            worstResend = std::max(worstResend, o.resendShare);
+            sumResend += o.resendShare;
+            pathFaults += o.pathFaults > 0 ? 1 : 0;
+        }
+    }
+    std::printf("\n# stream soak: %ld cases from seed %ld (programs up to %d lines)\n", cases,
+                first, maxLines);
+    std::printf("cases failing any invariant     %ld\n", failed);
+    std::printf("vectors streamed                %ld (%.0f s of virtual job time)\n", vectors,
+                virtualS);
+    std::printf("packets off                     %ld cases\n", packetsOff);
+    std::printf("estimate / bound, worst         %.4f\n", worstBoundRatio);
+    std::printf("clean links: job / estimate - 1 mean %.4f %%, worst %.4f %% (%ld cases)\n",
+                clean ? 100 * sumClean / clean : 0.0, 100 * worstClean, clean);
+    std::printf("faulty links (1/1000 bytes): resent share mean %.2f %%, worst %.2f %%, path "
+                "faults returned in %ld of %ld cases\n",
+                faulty ? 100 * sumResend / faulty : 0.0, 100 * worstResend, pathFaults, faulty);
+    return failed == 0 ? 0 : 1;
+}

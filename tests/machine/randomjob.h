@@ -1,0 +1,63 @@
+#pragma once
+// Random jobs for the stream property test and its soak (tests/bench/planner/stream_soak.cpp):
+// a G-code program, a machine profile and a serial link, all drawn from one seed, and the judge
+// that plans the program, streams it through the driver to the in-process emulator on a virtual
+// clock and checks what the plan and the stream promise (docs/planner.md §9):
+//
+//   - the plan: no vertex over an axis's velocity-jump limit, no brake violation in the unit's
+//     model, estimated_s <= 1.02 x the time-optimal bound (where the plan claims it: see
+//     boundClaimed);
+//   - on the emulated link: no brake violation, no starvation stop (the unit never runs dry
+//     inside a chain), no vertex over the jump limit as the unit passed it, the final counters
+//     exactly the plan's last position, every vector executed exactly once (after a path fault,
+//     the re-traced ones once more), and the job time within 2 % of estimated_s on a clean link.
+//
+// Programs: dense 3D rasters, arcs and helices, short zig-zags, long rapids and lines, spindle,
+// coolant and dwells, G20 and G21, A-axis moves on 4-axis units, feeds from 1 % to 300 % of the
+// axes' maxima. Profiles: every variant and pulse rate, steps/mm, speeds, accelerations and jump
+// limits drawn per axis across their schema ranges (docs/machine-profile.md), VK/VN/auto, packets
+// on and off. Links: the variant's baud rates, 0-16 ms latency, clean or 1 byte error in 1000.
+
+#include "driver/link/emulatorport.h"
+#include "machine/machineconfig.h"
+#include "machine/planner.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace frezka::machine::test {
+
+struct RandomJob
+{
+    std::uint64_t seed = 0;
+    MachineConfig config; // link.baud/latencyMs/packets as the wire below
+    driver::WireOptions wire;
+    std::string program; // G-code text
+    std::string summary; // one line: what was drawn
+};
+
+// Draws a job; maxLines bounds the program's size (the property test keeps it small).
+RandomJob drawJob(std::uint64_t seed, int maxLines = 1200);
+
+struct JobOutcome
+{
+    bool planned = false;
+    PlanStats stats;
+    double jobS = 0; // from run() to the job's end, virtual seconds
+    std::int64_t vectorsPlanned = 0;
+    std::int64_t vectorsExecuted = 0;
+    std::int64_t brakeViolations = 0;
+    std::int64_t starvationStops = 0;
+    std::size_t jumpOverLimit = 0; // vertices the unit passed with a speed step over a limit
+    double maxJumpRatio = 0;
+    bool exact = false;
+    std::int64_t pathFaults = 0;
+    double resendShare = 0; // bytes of resent commands / bytes sent to the unit in the job
+    std::vector<std::string> failures; // empty: every invariant held
+};
+
+// Plans and runs a job and judges it.
+JobOutcome runJob(const RandomJob &job);
+
+} // namespace frezka::machine::test
