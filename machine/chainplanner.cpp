@@ -82,6 +82,7 @@ struct Derived
     double wireCap = kInf;     // B cap at both its ends so that it keeps the link's pace, units
     double speedCap = kInf;    // B cap at both its ends where V lies above its own cap, units
     std::int64_t ownSpeed = 0; // the vector's own V cap (its feed and axis limits)
+    bool paced = false;        // V lowered to keep the link's pace (a vector of a step or two)
 };
 
 class RunPlanner
@@ -125,6 +126,12 @@ public:
                 changed = changed || extra != m_extraS[k];
                 m_extraS[k] = extra;
             }
+            auto locks = leadLocks();
+            for (const auto &l : m_leadLocks) // a lead-in once locked stays locked
+                if (std::find(locks.begin(), locks.end(), l) == locks.end())
+                    locks.push_back(l);
+            changed = changed || locks.size() != m_leadLocks.size();
+            m_leadLocks = std::move(locks);
             if (!changed)
                 break;
             planOnce();
@@ -164,6 +171,7 @@ private:
     static constexpr double kReplyS = 0.002;      // a packet's reply and the unit's turnaround
     static constexpr int kWirePasses = 5;         // plans again at most this often
     static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
+    static constexpr double kLeadMargin = 1.5; // leadLocks: motion over what the wire needs
     static constexpr double kFlexibleRoom = 0.8;  // chooseSpeeds: B cap at least 0.97 of own
 
     // One plan of the run: the derived moves, the link's pace over them (with the B bytes of the
@@ -175,6 +183,7 @@ private:
         m_out.firstFeedCap = m_firstFeedCap;
         m_out.feedCapLines = m_feedCapLines;
         m_d = m_derived;
+        applyLeadLocks();
         wirePace();
         const std::size_t n = m_moves.size();
         m_capUnits.assign(n, 0);
@@ -196,7 +205,120 @@ private:
                 first = k + 1;
             }
         }
+        mergeSpeeds();
         jumpStats();
+    }
+
+    // A chain starts from rest with the queue empty: the unit runs the first vector as soon as it
+    // arrives, and an A or V command (outside the packets) a few vectors in waits for the packet
+    // before it and its own round trip. Where the vectors before it pass in less time, the queue
+    // runs dry there. So the chain's lead-in, up to where its motion outlasts what must go on the
+    // wire, shares one V and one A (the least of it): learnt from one plan (leadLocks) and applied
+    // to the next (run()).
+    void applyLeadLocks()
+    {
+        for (const auto &[from, to] : m_leadLocks) {
+            std::int64_t v = m_d[from].speed, a = m_d[from].accel;
+            for (std::size_t k = from; k <= to; ++k)
+                v = std::min(v, m_d[k].speed), a = std::min(a, m_d[k].accel);
+            for (std::size_t k = from; k <= to; ++k) {
+                Derived &r = m_d[k];
+                r.speed = v;
+                if (r.accel != a) {
+                    r.accel = a;
+                    const double whole = std::floor(r.units + 1e-9);
+                    const double usable = std::max(whole - m_options.brakeMarginSteps, whole / 2);
+                    r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * a * 1000.0 * usable));
+                }
+            }
+        }
+    }
+
+    // The lead-ins of this plan's chains that an A or V command would starve (applyLeadLocks).
+    std::vector<std::pair<std::size_t, std::size_t>> leadLocks() const
+    {
+        std::vector<std::pair<std::size_t, std::size_t>> locks;
+        if (m_config.link.baud <= 0 || !m_options.wireLimited)
+            return locks;
+        const std::size_t n = m_out.vectors.size();
+        const double speedS = nonPacketS(speedWireBytes());
+        for (std::size_t s = 0; s < n;) {
+            std::size_t end = s;
+            while (end < n && !m_out.vectors[end].chainEnd)
+                ++end; // the chain is s..end
+            double motion = 0, wire = roundTripS(); // the first packet's reply
+            std::int64_t entry = 0, lockTo = 0;
+            bool locked = false;
+            for (std::size_t k = s; k <= end && k < n; ++k) {
+                const PlannedVector &v = m_out.vectors[k];
+                if (k > s) {
+                    const PlannedVector &p = m_out.vectors[k - 1];
+                    const int commands = (v.speed != p.speed) + (v.accel != p.accel);
+                    // A position and a status poll may come in between (about 20 Hz).
+                    const double need = wire + (commands + 2) * speedS;
+                    if (commands > 0 && motion < need * kLeadMargin)
+                        locked = true, lockTo = static_cast<std::int64_t>(k);
+                    else if (commands > 0)
+                        break; // the queue holds enough from here on
+                }
+                const std::int64_t exit = v.chainEnd ? 0 : v.brake;
+                motion += runVector(static_cast<double>(entry), static_cast<double>(v.speed),
+                                    static_cast<double>(exit), v.accel * 1000.0, m_d[k].units)
+                              .timeS;
+                wire += vectorWireS(m_d[k].wireBytes);
+                entry = exit;
+            }
+            if (locked)
+                locks.emplace_back(s, static_cast<std::size_t>(lockTo));
+            s = end + 1;
+        }
+        return locks;
+    }
+
+    // After the passes each vector's speeds are known, and with them the V values that leave its
+    // motion exactly as planned: a vector from entry b0 to exit b1 with acceleration A over L
+    // peaks at P = sqrt((b0² + b1²) / 2 + A·L) when nothing caps it (P is at least both Bs). Where
+    // P is within the vector's cap, any V from P up runs it the same; where it is not, V must be
+    // the planned one. Runs of vectors whose V ranges overlap share one V: the least number of V
+    // commands (each a round trip outside the packets) for exactly the same motion.
+    void mergeSpeeds()
+    {
+        if (m_options.strategy == PlanStrategy::ExactStop || m_out.vectors.empty())
+            return;
+        const std::size_t n = m_out.vectors.size();
+        std::int64_t entry = 0, sent = -1;
+        std::size_t first = 0;
+        double lo = 0, hi = kInf;
+        auto close = [&](std::size_t end) {
+            const auto v = static_cast<std::int64_t>(
+                sent >= lo && sent <= hi ? static_cast<double>(sent)
+                                         : (std::isfinite(hi) ? hi : std::ceil(lo)));
+            for (std::size_t j = first; j < end; ++j)
+                m_out.vectors[j].speed = v;
+            sent = v;
+        };
+        for (std::size_t k = 0; k < n; ++k) {
+            const PlannedVector &p = m_out.vectors[k];
+            const Derived &r = m_d[k];
+            const std::int64_t exit = p.chainEnd ? 0 : p.brake;
+            const double cap = static_cast<double>(std::min(p.speed, r.ownSpeed));
+            const double peak = std::sqrt(0.5 * static_cast<double>(entry * entry + exit * exit) +
+                                          static_cast<double>(p.accel) * 1000.0 * r.units);
+            double kLo = static_cast<double>(p.speed), kHi = kLo; // as planned
+            if (!r.isShort && peak <= cap)
+                kLo = std::max(peak, static_cast<double>(std::max(entry, exit))), kHi = kInf;
+            else if (r.paced) // slower is safe for the link: within the tolerance below
+                kLo = std::max(static_cast<double>(std::max(entry, exit)),
+                               std::ceil(kLo * (1 - m_options.accelTolerance)));
+            if (k > first && (std::max(lo, kLo) > std::min(hi, kHi) + 1e-9)) {
+                close(k);
+                first = k, lo = 0, hi = kInf;
+            }
+            lo = std::max(lo, kLo);
+            hi = std::min(hi, kHi);
+            entry = exit;
+        }
+        close(n);
     }
 
     // What the moves themselves give, once per run (every plan of it starts from this).
@@ -420,7 +542,8 @@ private:
                 r.wireCap = std::floor(std::sqrt(room));
             else
                 r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(fastest)),
-                                                   kMinSpeed, r.speed);
+                                                   kMinSpeed, r.speed),
+                r.paced = true;
         }
     }
 
@@ -723,7 +846,8 @@ private:
                 const double jump = static_cast<double>(v.brake) * jumpPerUnit(k, i);
                 const double limit = m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS;
                 m_out.maxJumpMmPerS = std::max(m_out.maxJumpMmPerS, jump);
-                const double ratio = limit > 0 ? jump / limit : (jump > 0 ? kInf : 0);
+                // A jump below a nanometre per second is rounding noise, not a step (limit 0: none allowed).
+                const double ratio = limit > 0 ? jump / limit : (jump > 1e-9 ? kInf : 0);
                 m_out.maxJumpRatio = std::max(m_out.maxJumpRatio, ratio);
                 over = over || ratio > 1 + 1e-9;
             }
@@ -762,6 +886,7 @@ private:
     std::size_t m_feedCapLines = 0;         // ... and how many lines are
     std::uint32_t m_lastCappedLine = 0;
     std::vector<double> m_extraS; // link time of the B, V, A commands before move k (last plan)
+    std::vector<std::pair<std::size_t, std::size_t>> m_leadLocks; // chain lead-ins sharing V, A
     std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
     std::vector<double> m_capMm;          // the bound's cap there, mm/s
     RunOutcome m_out;

@@ -314,7 +314,8 @@ void judgePlan(const PlanResult &p, JobOutcome &o)
 {
     const PlanStats &s = p.stats;
     if (s.jumpOverLimit > 0)
-        fail(o, std::to_string(s.jumpOverLimit) + " planned vertices over the jump limit");
+        fail(o, std::to_string(s.jumpOverLimit) + " planned vertices over the jump limit (worst " +
+                    std::to_string(s.maxJumpRatio) + " x)");
     if (s.brakeViolations > 0)
         fail(o, std::to_string(s.brakeViolations) + " brake violations in the plan's model");
     if (s.estimatedS < s.boundS * (1 - 1e-9))
