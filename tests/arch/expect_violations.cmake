@@ -3,11 +3,12 @@
 # check fails and reports exactly the violations listed in EXPECTED, no more and no fewer.
 #
 #   cmake -DCHECKER=<CheckModuleDeps.cmake> -DROOT=<fixture> -DTABLE=<table> -DEXPECTED=<file>
-#         -P expect_violations.cmake
+#         [-DQT_INCLUDE_DIR=<Qt include root>] -P expect_violations.cmake
 cmake_minimum_required(VERSION 3.25)
 
 execute_process(
-    COMMAND ${CMAKE_COMMAND} -DROOT=${ROOT} -DTABLE=${TABLE} -P ${CHECKER}
+    COMMAND ${CMAKE_COMMAND} -DROOT=${ROOT} -DTABLE=${TABLE} -DQT_INCLUDE_DIR=${QT_INCLUDE_DIR}
+            -P ${CHECKER}
     RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(output "${out}${err}")
 message(NOTICE "---- output of the check (exit ${result}) ----\n${output}---- end ----")
