@@ -126,12 +126,6 @@ public:
                 changed = changed || extra != m_extraS[k];
                 m_extraS[k] = extra;
             }
-            auto locks = leadLocks();
-            for (const auto &l : m_leadLocks) // a lead-in once locked stays locked
-                if (std::find(locks.begin(), locks.end(), l) == locks.end())
-                    locks.push_back(l);
-            changed = changed || locks.size() != m_leadLocks.size();
-            m_leadLocks = std::move(locks);
             if (!changed)
                 break;
             planOnce();
@@ -171,7 +165,6 @@ private:
     static constexpr double kReplyS = 0.002;      // a packet's reply and the unit's turnaround
     static constexpr int kWirePasses = 5;         // plans again at most this often
     static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
-    static constexpr double kLeadMargin = 1.5; // leadLocks: motion over what the wire needs
     static constexpr double kFlexibleRoom = 0.8;  // chooseSpeeds: B cap at least 0.97 of own
 
     // One plan of the run: the derived moves, the link's pace over them (with the B bytes of the
@@ -183,7 +176,6 @@ private:
         m_out.firstFeedCap = m_firstFeedCap;
         m_out.feedCapLines = m_feedCapLines;
         m_d = m_derived;
-        applyLeadLocks();
         wirePace();
         const std::size_t n = m_moves.size();
         m_capUnits.assign(n, 0);
@@ -207,72 +199,6 @@ private:
         }
         mergeSpeeds();
         jumpStats();
-    }
-
-    // A chain starts from rest with the queue empty: the unit runs the first vector as soon as it
-    // arrives, and an A or V command (outside the packets) a few vectors in waits for the packet
-    // before it and its own round trip. Where the vectors before it pass in less time, the queue
-    // runs dry there. So the chain's lead-in, up to where its motion outlasts what must go on the
-    // wire, shares one V and one A (the least of it): learnt from one plan (leadLocks) and applied
-    // to the next (run()).
-    void applyLeadLocks()
-    {
-        for (const auto &[from, to] : m_leadLocks) {
-            std::int64_t v = m_d[from].speed, a = m_d[from].accel;
-            for (std::size_t k = from; k <= to; ++k)
-                v = std::min(v, m_d[k].speed), a = std::min(a, m_d[k].accel);
-            for (std::size_t k = from; k <= to; ++k) {
-                Derived &r = m_d[k];
-                r.speed = v;
-                if (r.accel != a) {
-                    r.accel = a;
-                    const double whole = std::floor(r.units + 1e-9);
-                    const double usable = std::max(whole - m_options.brakeMarginSteps, whole / 2);
-                    r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * a * 1000.0 * usable));
-                }
-            }
-        }
-    }
-
-    // The lead-ins of this plan's chains that an A or V command would starve (applyLeadLocks).
-    std::vector<std::pair<std::size_t, std::size_t>> leadLocks() const
-    {
-        std::vector<std::pair<std::size_t, std::size_t>> locks;
-        if (m_config.link.baud <= 0 || !m_options.wireLimited)
-            return locks;
-        const std::size_t n = m_out.vectors.size();
-        const double speedS = nonPacketS(speedWireBytes());
-        for (std::size_t s = 0; s < n;) {
-            std::size_t end = s;
-            while (end < n && !m_out.vectors[end].chainEnd)
-                ++end; // the chain is s..end
-            double motion = 0, wire = roundTripS(); // the first packet's reply
-            std::int64_t entry = 0, lockTo = 0;
-            bool locked = false;
-            for (std::size_t k = s; k <= end && k < n; ++k) {
-                const PlannedVector &v = m_out.vectors[k];
-                if (k > s) {
-                    const PlannedVector &p = m_out.vectors[k - 1];
-                    const int commands = (v.speed != p.speed) + (v.accel != p.accel);
-                    // A position and a status poll may come in between (about 20 Hz).
-                    const double need = wire + (commands + 2) * speedS;
-                    if (commands > 0 && motion < need * kLeadMargin)
-                        locked = true, lockTo = static_cast<std::int64_t>(k);
-                    else if (commands > 0)
-                        break; // the queue holds enough from here on
-                }
-                const std::int64_t exit = v.chainEnd ? 0 : v.brake;
-                motion += runVector(static_cast<double>(entry), static_cast<double>(v.speed),
-                                    static_cast<double>(exit), v.accel * 1000.0, m_d[k].units)
-                              .timeS;
-                wire += vectorWireS(m_d[k].wireBytes);
-                entry = exit;
-            }
-            if (locked)
-                locks.emplace_back(s, static_cast<std::size_t>(lockTo));
-            s = end + 1;
-        }
-        return locks;
     }
 
     // After the passes each vector's speeds are known, and with them the V values that leave its
@@ -846,7 +772,8 @@ private:
                 const double jump = static_cast<double>(v.brake) * jumpPerUnit(k, i);
                 const double limit = m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS;
                 m_out.maxJumpMmPerS = std::max(m_out.maxJumpMmPerS, jump);
-                // A jump below a nanometre per second is rounding noise, not a step (limit 0: none allowed).
+                // A jump below a nanometre per second is rounding noise, not a step (limit 0: none
+                // allowed).
                 const double ratio = limit > 0 ? jump / limit : (jump > 1e-9 ? kInf : 0);
                 m_out.maxJumpRatio = std::max(m_out.maxJumpRatio, ratio);
                 over = over || ratio > 1 + 1e-9;
@@ -886,7 +813,6 @@ private:
     std::size_t m_feedCapLines = 0;         // ... and how many lines are
     std::uint32_t m_lastCappedLine = 0;
     std::vector<double> m_extraS; // link time of the B, V, A commands before move k (last plan)
-    std::vector<std::pair<std::size_t, std::size_t>> m_leadLocks; // chain lead-ins sharing V, A
     std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
     std::vector<double> m_capMm;          // the bound's cap there, mm/s
     RunOutcome m_out;

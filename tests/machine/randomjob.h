@@ -5,8 +5,7 @@
 // clock and checks what the plan and the stream promise (docs/planner.md §9):
 //
 //   - the plan: no vertex over an axis's velocity-jump limit, no brake violation in the unit's
-//     model, estimated_s <= 1.02 x the time-optimal bound (where the plan claims it: see
-//     boundClaimed);
+//     model, estimated_s not below the time-optimal bound;
 //   - on the emulated link: no brake violation, no starvation stop (the unit never runs dry
 //     inside a chain), no vertex over the jump limit as the unit passed it, the final counters
 //     exactly the plan's last position, every vector executed exactly once (after a path fault,
@@ -53,8 +52,15 @@ struct JobOutcome
     double maxJumpRatio = 0;
     bool exact = false;
     std::int64_t pathFaults = 0;
-    double resendShare = 0; // bytes of resent commands / bytes sent to the unit in the job
-    std::vector<std::string> failures; // empty: every invariant held
+    double resendShare = 0; // resent commands / commands sent in the job
+    // What broke, in two groups. wrong: the job ended somewhere the program does not (counters,
+    // a vector run twice or never), or the plan breaks a limit of the machine: never acceptable.
+    // pace: the link did not keep the unit fed (starvation stops and the brake violations they
+    // cause), the job took more than 2 % longer or shorter than the estimate, or the estimate is
+    // below the bound; a job that stopped with a named error (safe, resumable).
+    std::vector<std::string> wrong;
+    std::vector<std::string> pace;
+    bool ok() const { return wrong.empty() && pace.empty(); }
 };
 
 // Plans and runs a job and judges it.

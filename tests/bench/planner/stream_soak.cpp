@@ -6,6 +6,7 @@
 // links, the wire spent on resends on faulty ones.
 //
 //   stream_soak [CASES (default 3000)] [FIRST_SEED (default 1)] [MAX_LINES (default 1200)]
+//   STREAM_SOAK_VERBOSE=1 also lists every case off the link's pace.
 #include "randomjob.h"
 
 #include <algorithm>
@@ -20,6 +21,8 @@ int main(int argc, char **argv)
     const long cases = argc > 1 ? std::atol(argv[1]) : 3000;
     const long first = argc > 2 ? std::atol(argv[2]) : 1;
     const int maxLines = argc > 3 ? std::atoi(argv[3]) : 1200;
+    const bool verbose = std::getenv("STREAM_SOAK_VERBOSE") != nullptr;
+    long offPace = 0, starvedCases = 0, brakeCases = 0, starved = 0, estimateOff = 0;
     long failed = 0, clean = 0, faulty = 0, pathFaults = 0, packetsOff = 0;
     double worstBoundRatio = 0, worstClean = 0, sumClean = 0, worstResend = 0, sumResend = 0;
     double virtualS = 0;
@@ -28,13 +31,25 @@ int main(int argc, char **argv)
         const auto seed = static_cast<std::uint64_t>(first + i);
         const RandomJob job = drawJob(seed, maxLines);
         const JobOutcome o = runJob(job);
-        if (!o.failures.empty()) {
+        if (!o.wrong.empty()) {
             ++failed;
-            std::printf("FAIL seed %llu: %s\n", static_cast<unsigned long long>(seed),
+            std::printf("WRONG seed %llu: %s\n", static_cast<unsigned long long>(seed),
                         job.summary.c_str());
-            for (const std::string &f : o.failures)
+            for (const std::string &f : o.wrong)
                 std::printf("  - %s\n", f.c_str());
             std::fflush(stdout);
+        }
+        if (!o.pace.empty()) {
+            ++offPace;
+            starvedCases += o.starvationStops > 0 ? 1 : 0;
+            starved += o.starvationStops;
+            brakeCases += o.brakeViolations > 0 ? 1 : 0;
+            if (verbose) {
+                std::printf("pace seed %llu: %s\n", static_cast<unsigned long long>(seed),
+                            job.summary.c_str());
+                for (const std::string &f : o.pace)
+                    std::printf("  - %s\n", f.c_str());
+            }
         }
         if (!o.planned)
             continue;
@@ -47,6 +62,7 @@ int main(int argc, char **argv)
         if (job.wire.byteErrorRate == 0) {
             ++clean;
             worstClean = std::max(worstClean, std::abs(off));
+            estimateOff += std::abs(off) > 0.02 ? 1 : 0;
             sumClean += std::abs(off);
         } else {
             ++faulty;
@@ -57,7 +73,12 @@ int main(int argc, char **argv)
     }
     std::printf("\n# stream soak: %ld cases from seed %ld (programs up to %d lines)\n", cases,
                 first, maxLines);
-    std::printf("cases failing any invariant     %ld\n", failed);
+    std::printf("cases ending wrong or over a machine limit   %ld\n", failed);
+    std::printf("cases off the link's pace or the estimate    %ld\n", offPace);
+    std::printf("  with starvation stops                      %ld (%ld stops)\n", starvedCases,
+                starved);
+    std::printf("  with brake violations on the unit          %ld\n", brakeCases);
+    std::printf("  clean links, job more than 2 %% off the estimate %ld\n", estimateOff);
     std::printf("vectors streamed                %ld (%.0f s of virtual job time)\n", vectors,
                 virtualS);
     std::printf("packets off                     %ld cases\n", packetsOff);
