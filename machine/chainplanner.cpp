@@ -82,7 +82,6 @@ struct Derived
     double wireCap = kInf;     // B cap at both its ends so that it keeps the link's pace, units
     double speedCap = kInf;    // B cap at both its ends where V lies above its own cap, units
     std::int64_t ownSpeed = 0; // the vector's own V cap (its feed and axis limits)
-    bool paced = false;        // V lowered to keep the link's pace (a vector of a step or two)
 };
 
 class RunPlanner
@@ -165,7 +164,8 @@ private:
     static constexpr double kReplyS = 0.002;      // a packet's reply and the unit's turnaround
     static constexpr int kWirePasses = 5;         // plans again at most this often
     static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
-    static constexpr double kFlexibleRoom = 0.8;  // chooseSpeeds: B cap at least 0.97 of own
+    static constexpr double kRigidShare = 1.0; // chooseSpeeds: loss worth a shared V, of a V's cost
+    static constexpr double kFlexibleRoom = 0.8; // chooseSpeeds: B cap at least 0.89 of own
 
     // One plan of the run: the derived moves, the link's pace over them (with the B bytes of the
     // last plan), caps, bound and passes.
@@ -197,54 +197,7 @@ private:
                 first = k + 1;
             }
         }
-        mergeSpeeds();
         jumpStats();
-    }
-
-    // After the passes each vector's speeds are known, and with them the V values that leave its
-    // motion exactly as planned: a vector from entry b0 to exit b1 with acceleration A over L
-    // peaks at P = sqrt((b0² + b1²) / 2 + A·L) when nothing caps it (P is at least both Bs). Where
-    // P is within the vector's cap, any V from P up runs it the same; where it is not, V must be
-    // the planned one. Runs of vectors whose V ranges overlap share one V: the least number of V
-    // commands (each a round trip outside the packets) for exactly the same motion.
-    void mergeSpeeds()
-    {
-        if (m_options.strategy == PlanStrategy::ExactStop || m_out.vectors.empty())
-            return;
-        const std::size_t n = m_out.vectors.size();
-        std::int64_t entry = 0, sent = -1;
-        std::size_t first = 0;
-        double lo = 0, hi = kInf;
-        auto close = [&](std::size_t end) {
-            const auto v = static_cast<std::int64_t>(
-                sent >= lo && sent <= hi ? static_cast<double>(sent)
-                                         : (std::isfinite(hi) ? hi : std::ceil(lo)));
-            for (std::size_t j = first; j < end; ++j)
-                m_out.vectors[j].speed = v;
-            sent = v;
-        };
-        for (std::size_t k = 0; k < n; ++k) {
-            const PlannedVector &p = m_out.vectors[k];
-            const Derived &r = m_d[k];
-            const std::int64_t exit = p.chainEnd ? 0 : p.brake;
-            const double cap = static_cast<double>(std::min(p.speed, r.ownSpeed));
-            const double peak = std::sqrt(0.5 * static_cast<double>(entry * entry + exit * exit) +
-                                          static_cast<double>(p.accel) * 1000.0 * r.units);
-            double kLo = static_cast<double>(p.speed), kHi = kLo; // as planned
-            if (!r.isShort && peak <= cap)
-                kLo = std::max(peak, static_cast<double>(std::max(entry, exit))), kHi = kInf;
-            else if (r.paced) // slower is safe for the link: within the tolerance below
-                kLo = std::max(static_cast<double>(std::max(entry, exit)),
-                               std::ceil(kLo * (1 - m_options.accelTolerance)));
-            if (k > first && (std::max(lo, kLo) > std::min(hi, kHi) + 1e-9)) {
-                close(k);
-                first = k, lo = 0, hi = kInf;
-            }
-            lo = std::max(lo, kLo);
-            hi = std::min(hi, kHi);
-            entry = exit;
-        }
-        close(n);
     }
 
     // What the moves themselves give, once per run (every plan of it starts from this).
@@ -353,7 +306,7 @@ private:
                 // the stretch's V: either while the time lost stays below a V command's cost.
                 const std::int64_t lower = std::min(level, r.speed);
                 const double loss = (units + r.units) / static_cast<double>(lower) - (owned + own);
-                if (loss > penalty || (flexible && r.speed < level))
+                if (loss > kRigidShare * penalty || (flexible && r.speed < level))
                     open(k);
                 else
                     level = lower, rigid = rigid || !flexible;
@@ -468,8 +421,7 @@ private:
                 r.wireCap = std::floor(std::sqrt(room));
             else
                 r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(fastest)),
-                                                   kMinSpeed, r.speed),
-                r.paced = true;
+                                                   kMinSpeed, r.speed);
         }
     }
 

@@ -5,6 +5,7 @@
 #include "machine/chainplanner.h"
 #include "machine/steps.h"
 #include "machine/unitmodel.h"
+#include "machine/unitwire.h"
 
 #include <algorithm>
 #include <charconv>
@@ -305,6 +306,12 @@ private:
     void wait(std::uint32_t line, double seconds);
     void finishStats();
     void feedCapWarning();
+    double restLinkS() const;
+    // restLinkS: the driver's status poll interval (driver/link CoreOptions::pollIntervalS), a
+    // reply's turnaround, and the bytes of one command and its reply.
+    static constexpr double kStatusPollS = 0.05;
+    static constexpr double kReplyS = 0.002;
+    static constexpr double kExchangeBytes = 20;
 
     const gcode::Toolpath &m_path;
     const MachineConfig &m_config;
@@ -482,15 +489,48 @@ void Planner::feedCapWarning()
         {PlanErrorCode::FeedCapped, c.line, "line " + std::to_string(c.line) + ": " + what});
 }
 
+// The link's part of each rest (docs/planner.md §7): where the queue drains (the program's start,
+// a wait for it to drain, a dwell, an operator stop, a probe) the driver learns that the unit
+// stands from its next status poll (half the poll interval on average), reads the position
+// (the path guard), sends the commands that cannot travel in a packet one round trip each, and
+// the unit starts again when the first packet's first vector arrives.
+double Planner::restLinkS() const
+{
+    const LinkConfig &link = m_config.link;
+    if (!m_options.wireLimited || link.baud <= 0)
+        return 0;
+    const double exchangeS =
+        2 * link.latencyMs / 1000.0 + kReplyS + kExchangeBytes * 10.0 / link.baud;
+    double total = 0;
+    bool atRest = true;
+    int commands = 0;
+    for (const UnitCommand &c : m_result.program.commands) {
+        if (c.op == UnitOp::Vector || c.op == UnitOp::Line) {
+            if (atRest)
+                total += kStatusPollS / 2 + (2 + commands) * exchangeS;
+            atRest = false;
+            commands = 0;
+        } else if (c.op == UnitOp::Brake && link.packets) {
+            // travels in the first packet
+        } else if (wireCommand(c, m_result.program.axisCount)) {
+            commands += atRest ? 1 : 0;
+        } else {
+            atRest = true; // a PC-side wait: the queue drains
+        }
+    }
+    return total;
+}
+
 void Planner::finishStats()
 {
     PlanStats &s = m_result.stats;
     const ModelResult model = runUnitModel(m_result.program, m_vk);
     s.vectors = model.vectors;
     s.brakeViolations = model.brakeViolations;
+    s.linkWaitS = restLinkS();
     s.waitS = m_waitS;
-    s.estimatedS = model.motionS + model.waitS;
-    s.boundS = m_bound + m_waitS;
+    s.estimatedS = model.motionS + model.waitS + s.linkWaitS;
+    s.boundS = m_bound + m_waitS + s.linkWaitS;
 }
 
 } // namespace

@@ -377,8 +377,9 @@ QJsonArray steps(const std::array<std::int64_t, 4> &s, int axes)
     return a;
 }
 
-void printReport(const Outcome &o, const machine::UnitProgram &program, int baud)
+void printReport(const Outcome &o, const machine::PlanResult &plan, int baud)
 {
+    const machine::UnitProgram &program = plan.program;
     const int axes = program.axisCount;
     const machine::Steps4 expected =
         program.commands.empty() ? program.startSteps : program.commands.back().endSteps;
@@ -390,6 +391,8 @@ void printReport(const Outcome &o, const machine::UnitProgram &program, int baud
     j[QStringLiteral("final_steps")] = steps(o.finalSteps, axes);
     j[QStringLiteral("expected_steps")] = steps(expected, axes);
     j[QStringLiteral("job_s")] = r.endS - r.startS;
+    j[QStringLiteral("estimated_s")] = plan.stats.estimatedS;
+    j[QStringLiteral("bound_s")] = plan.stats.boundS;
     j[QStringLiteral("link_bytes")] = static_cast<qint64>(r.linkBytes);
     j[QStringLiteral("wire_limit_vectors_per_s")] = bpv > 0 ? baud / 10.0 / bpv : 0.0;
     j[QStringLiteral("vectors_per_s")] = streamS > 0 ? r.vectors / streamS : 0.0;
@@ -427,7 +430,7 @@ int runRun(const QStringList &args)
                 .arg(a->file, o.error.isEmpty() ? RunCli::tr("the job did not finish") : o.error));
         return 1;
     }
-    printReport(o, plan.program, baud);
+    printReport(o, plan, baud);
     const machine::Steps4 expected = plan.program.commands.empty()
                                          ? plan.program.startSteps
                                          : plan.program.commands.back().endSteps;

@@ -362,6 +362,7 @@ JobOutcome runJob(const RandomJob &job)
             drained = false;
         } else if (c.op > UnitOp::Spindle) {
             drained = true; // PC-side: the driver waits for the queue to drain first
+            ++o.rests;
         }
     }
 

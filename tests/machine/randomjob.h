@@ -45,6 +45,7 @@ struct JobOutcome
     PlanStats stats;
     double jobS = 0; // from run() to the job's end, virtual seconds
     std::int64_t vectorsPlanned = 0;
+    std::int64_t rests = 0; // PC-side waits for the queue to drain (WaitIdle, Dwell, ...)
     std::int64_t vectorsExecuted = 0;
     std::int64_t brakeViolations = 0;
     std::int64_t starvationStops = 0;

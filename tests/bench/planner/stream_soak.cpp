@@ -59,6 +59,10 @@ int main(int argc, char **argv)
         if (o.stats.boundS > 0)
             worstBoundRatio = std::max(worstBoundRatio, o.stats.estimatedS / o.stats.boundS);
         const double off = o.stats.estimatedS > 0 ? o.jobS / o.stats.estimatedS - 1 : 0;
+        if (std::getenv("STREAM_SOAK_RESTS") && job.wire.byteErrorRate == 0)
+            std::printf("rests %lld latency %.1f baud %d packets %d over %.4f s\n",
+                        static_cast<long long>(o.rests), job.wire.latencyS * 1000, job.wire.baud,
+                        job.config.link.packets ? 1 : 0, o.jobS - o.stats.estimatedS);
         if (job.wire.byteErrorRate == 0) {
             ++clean;
             worstClean = std::max(worstClean, std::abs(off));
