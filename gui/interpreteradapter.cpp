@@ -10,9 +10,12 @@ InterpretFn gcodeInterpreter()
         gcode::Options options;
         options.collectAllErrors = true;
         options.maxErrors = 200;
-        for (std::size_t i = 0; i < req.offsets.size(); ++i)
-            options.workOffsetsMm[i] = req.offsets[i];
-        options.coordinateSystem = req.activeOffset;
+        // The interpreter takes no G92 at its start: it is added to every system, which is
+        // what G92 does to the program's coordinates.
+        for (std::size_t s = 0; s < options.workOffsetsMm.size(); ++s)
+            for (std::size_t i = 0; i < 4; ++i)
+                options.workOffsetsMm[s][i] = req.offsets.systems[s][i] + req.offsets.g92[i];
+        options.coordinateSystem = req.offsets.active;
         options.startMm = {req.startMm[0], req.startMm[1], req.startMm[2], req.startMm[3]};
         if (req.progress) {
             options.progress = [&req](std::size_t done, std::size_t total) {

@@ -56,6 +56,8 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     m_view = new ToolpathView(this, backend);
     buildCentral();
     m_program = new ProgramSession(this);
+    m_offsets = new session::WorkOffsets(this);
+    m_mdi = std::make_unique<session::MdiSession>();
     m_program->setMaxSceneSegments(m_view->preferredMaxSegments());
     m_program->setSceneGlVertices(m_view->usesOpenGl());
     m_program->setInterpreter(gcodeInterpreter());

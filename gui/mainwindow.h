@@ -8,6 +8,9 @@
 #include "machine/machineconfig.h"
 #include "programsession.h"
 
+#include "session/mdisession.h"
+#include "session/workoffsets.h"
+
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <QPointer>
@@ -71,8 +74,9 @@ public:
     ProgramSession *program() const { return m_program; }
     driver::MachineController *controller() const { return m_controller; }
     HoldBanner *holdBanner() const { return m_hold; }
-    const WorkOffsets &workOffsets() const { return m_offsets; }
-    int activeOffset() const { return m_activeOffset; }
+    session::WorkOffsets *offsets() const { return m_offsets; }
+    const session::OffsetTable &workOffsets() const { return m_offsets->systems(); }
+    int activeOffset() const { return m_offsets->active(); }
 
     // Operator actions (the buttons call these; tests too).
     void connectToUnit();
@@ -128,10 +132,8 @@ private:
     void updateHold(const driver::MachineState &state);
     void updateProgress(const driver::MachineState &state);
     void lowerTool(double newFeedMmPerMin, bool thenContinue);
-    void loadWorkOffsets();
-    void saveWorkOffsets();
+    void onOffsetsChanged();
     void startPlannedRun();
-    std::array<double, 4> workPosition(const std::array<double, 4> &machineMm) const;
     void updateRunPhase();
     bool jogKey(QKeyEvent *event, bool pressed);
 
@@ -154,8 +156,8 @@ private:
     ProgramSession *m_program;
     driver::MachineController *m_controller = nullptr;
     HoldBanner *m_hold = nullptr;
-    WorkOffsets m_offsets{};
-    int m_activeOffset = 0;
+    session::WorkOffsets *m_offsets;
+    std::unique_ptr<session::MdiSession> m_mdi;
     bool m_runAfterLoad = false;
     bool m_checkAfterLoad = false;
     bool m_continueAfterLower = false;

@@ -11,7 +11,6 @@
 #include "gcode/interpreter.h"
 
 #include <QFileInfo>
-#include <QSettings>
 
 namespace frezka::gui {
 
@@ -88,26 +87,14 @@ void MainWindow::jogStep(int axis, double deltaMm, double feedMmPerMin)
     m_controller->jogStep(axis, deltaMm, feedMmPerMin);
 }
 
-void MainWindow::loadWorkOffsets()
+void MainWindow::onOffsetsChanged()
 {
-    QSettings s;
-    const QVariantList list = s.value(QStringLiteral("workOffsets")).toList();
-    for (int i = 0; i < 24 && i < list.size(); ++i)
-        m_offsets[std::size_t(i / 4)][std::size_t(i % 4)] = list[i].toDouble();
-    m_activeOffset = std::clamp(s.value(QStringLiteral("activeOffset"), 0).toInt(), 0, 5);
-    m_dro->setActiveOffset(m_activeOffset);
-    m_program->setWorkOffsets(m_offsets, m_activeOffset);
-}
-
-void MainWindow::saveWorkOffsets()
-{
-    QVariantList list;
-    for (const auto &o : m_offsets)
-        for (double v : o)
-            list << v;
-    QSettings s;
-    s.setValue(QStringLiteral("workOffsets"), list);
-    s.setValue(QStringLiteral("activeOffset"), m_activeOffset);
+    const auto &st = m_controller->state();
+    m_program->setWorkOffsets(m_offsets->state());
+    m_dro->setActiveOffset(m_offsets->active());
+    m_dro->setPositions(st.positionMm, m_offsets->workPosition(st.positionMm));
+    m_program->setStartPosition(st.positionMm);
+    m_program->reload(); // offsets apply by re-interpreting the program
 }
 
 void MainWindow::setWorkZero(int axis)
@@ -117,25 +104,12 @@ void MainWindow::setWorkZero(int axis)
         showError(tr("Set the work zero while the machine is ready and still."));
         return;
     }
-    for (int i = 0; i < 4; ++i) {
-        if (axis < 0 || axis == i)
-            m_offsets[std::size_t(m_activeOffset)][std::size_t(i)] = st.positionMm[std::size_t(i)];
-    }
-    saveWorkOffsets();
-    m_program->setWorkOffsets(m_offsets, m_activeOffset);
-    m_dro->setPositions(st.positionMm, workPosition(st.positionMm));
-    m_program->setStartPosition(st.positionMm);
-    m_program->reload(); // offsets apply by re-interpreting the program
+    m_offsets->setZero(axis, st.positionMm);
 }
 
 void MainWindow::selectWorkOffset(int index)
 {
-    m_activeOffset = std::clamp(index, 0, 5);
-    saveWorkOffsets();
-    m_program->setWorkOffsets(m_offsets, m_activeOffset);
-    const auto &st = m_controller->state();
-    m_dro->setPositions(st.positionMm, workPosition(st.positionMm));
-    m_program->reload();
+    m_offsets->select(index);
 }
 
 void MainWindow::executeManualLine(const QString &line)
@@ -149,24 +123,22 @@ void MainWindow::executeManualLine(const QString &line)
         showError(tr("Manual G-code runs only while the machine is ready."));
         return;
     }
-    gcode::Options options;
-    for (std::size_t i = 0; i < m_offsets.size(); ++i)
-        options.workOffsetsMm[i] = m_offsets[i];
-    options.coordinateSystem = m_activeOffset;
-    options.startMm = {st.positionMm[0], st.positionMm[1], st.positionMm[2], st.positionMm[3]};
-    gcode::Interpreter interpreter(options);
-    const std::string text = line.toStdString() + "\nM2\n";
-    gcode::Result result = interpreter.run(text);
+    const std::string text = line.toStdString();
+    session::MdiSession::Outcome result = m_mdi->interpret(text, st.positionMm, m_offsets->state());
     if (!result.ok()) {
         showError(gcode::formatError(tr("manual line"), result.errors.front()));
         return;
     }
+    if (result.offsetsChanged)
+        m_offsets->setState(result.offsets);
+    m_console->appendInfo(tr("Manual: %1 (%2)").arg(line, m_mdi->modal().text()));
+    if (result.toolpath.empty())
+        return; // modes only (G91, F100, G55 ...)
     const machine::PlanResult plan = machine::plan(result.toolpath, m_profile);
     if (!plan.ok()) {
         showError(planErrorText(tr("manual line"), plan.errors.front()));
         return;
     }
-    m_console->appendInfo(tr("Manual: %1").arg(line));
     m_controller->run(plan.program);
 }
 

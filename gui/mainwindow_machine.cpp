@@ -135,7 +135,8 @@ void MainWindow::connectMachine()
         if (!m_userDisconnected && m_controller->state().mode == MachineMode::LinkLost)
             connectToUnit();
     });
-    loadWorkOffsets();
+    connect(m_offsets, &session::WorkOffsets::changed, this, &MainWindow::onOffsetsChanged);
+    m_offsets->load();
     // The built-in emulator (or the profile's port) is connected as soon as the loop runs.
     QMetaObject::invokeMethod(
         this, [this] { connectToUnit(); }, Qt::QueuedConnection);
@@ -233,17 +234,9 @@ void MainWindow::disconnectFromUnit()
     m_controller->disconnectFromUnit();
 }
 
-std::array<double, 4> MainWindow::workPosition(const std::array<double, 4> &machineMm) const
-{
-    std::array<double, 4> w{};
-    for (std::size_t i = 0; i < 4; ++i)
-        w[i] = machineMm[i] - m_offsets[std::size_t(m_activeOffset)][i];
-    return w;
-}
-
 void MainWindow::onState(const driver::MachineState &state)
 {
-    m_dro->setPositions(state.positionMm, workPosition(state.positionMm));
+    m_dro->setPositions(state.positionMm, m_offsets->workPosition(state.positionMm));
     const auto homed = [&state](int axis) { return ((state.homedAxes >> axis) & 1) != 0; };
     m_dro->setHomed({homed(0), homed(1), homed(2), homed(3)});
     m_view->model()->setToolPosition(QVector3D(

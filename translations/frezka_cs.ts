@@ -1910,8 +1910,8 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>ruční řádek</translation>
     </message>
     <message>
-        <source>Manual: %1</source>
-        <translation>Ručně: %1</translation>
+        <source>Manual: %1 (%2)</source>
+        <translation>Ručně: %1 (%2)</translation>
     </message>
 </context>
 <context>

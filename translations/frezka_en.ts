@@ -1905,8 +1905,8 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>manual line</translation>
     </message>
     <message>
-        <source>Manual: %1</source>
-        <translation>Manual: %1</translation>
+        <source>Manual: %1 (%2)</source>
+        <translation>Manual: %1 (%2)</translation>
     </message>
 </context>
 <context>

@@ -360,6 +360,30 @@ M30
         QCOMPARE(m_window->dro()->workText(0), QStringLiteral("0.000"));
     }
 
+    // The console keeps its modes between lines as LinuxCNC's MDI does (G91, G20, F).
+    void consoleKeepsItsModes()
+    {
+        QVERIFY(waitIdle());
+        const double x0 = state().positionMm[0];
+        auto line = [&](const char *text, bool moves) {
+            QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+            m_window->executeManualLine(QLatin1String(text));
+            if (moves) {
+                QVERIFY2(finished.wait(kMachineTimeoutMs), qPrintable(describe()));
+                QCOMPARE(finished.at(0).at(0).toBool(), true);
+            }
+            QVERIFY(waitIdle());
+        };
+        line("G91", false);
+        line("G1 X1 F600", true);
+        line("G1 X1", true);
+        QVERIFY2(std::abs(state().positionMm[0] - (x0 + 2)) < 1e-3, qPrintable(describe()));
+        line("G20", false);
+        line("X-1", true); // G1, incremental, inches
+        QVERIFY2(std::abs(state().positionMm[0] - (x0 + 2 - 25.4)) < 1e-2, qPrintable(describe()));
+        line("G21 G90", false);
+    }
+
     void languageSwitch()
     {
         auto *run = button(m_window->runPanel(), "run");
