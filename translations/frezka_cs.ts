@@ -211,20 +211,8 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation><byte value="xd"/>[%1] %2% řádek %3 zbývá %4 </translation>
     </message>
     <message>
-        <source> [command %1]</source>
-        <translation> [příkaz %1]</translation>
-    </message>
-    <message>
-        <source> [reply &apos;%1&apos;]</source>
-        <translation> [odpověď &apos;%1&apos;]</translation>
-    </message>
-    <message>
         <source>could not connect to the emulator</source>
         <translation>nelze se připojit k emulátoru</translation>
-    </message>
-    <message>
-        <source>the job stopped: %1</source>
-        <translation>úloha se zastavila: %1</translation>
     </message>
     <message>
         <source>%1: %2
@@ -3141,6 +3129,107 @@ Volby:
     <message>
         <source>&apos;%1&apos; is not a firmware string of the %2</source>
         <translation>&apos;%1&apos; není řetězec firmwaru jednotky %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session::RunWorkflow</name>
+    <message>
+        <source>Not connected</source>
+        <translation>Nepřipojeno</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>Připojuji…</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Připraveno</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Najíždění do reference</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Ruční pohyb</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Obrábění</translation>
+    </message>
+    <message>
+        <source>Stopping</source>
+        <translation>Zastavuji</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Pozastaveno</translation>
+    </message>
+    <message>
+        <source>Tool lifted</source>
+        <translation>Nástroj zvednut</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Spojení ztraceno</translation>
+    </message>
+    <message>
+        <source>Connecting to %1 at %2 Bd…</source>
+        <translation>Připojuji se k %1 rychlostí %2 Bd…</translation>
+    </message>
+    <message>
+        <source>the built-in emulator</source>
+        <translation>vestavěnému emulátoru</translation>
+    </message>
+    <message>
+        <source>Open a program first.</source>
+        <translation>Nejprve otevřete program.</translation>
+    </message>
+    <message>
+        <source>The program has errors and cannot run:
+%1</source>
+        <translation>Program obsahuje chyby a nelze jej spustit:
+%1</translation>
+    </message>
+    <message>
+        <source>The machine is not ready (%1); wait until it is, then Run.</source>
+        <translation>Stroj není připraven (%1); počkejte a pak stiskněte Spustit.</translation>
+    </message>
+    <message>
+        <source>Planning from the current position…</source>
+        <translation>Plánuji od současné polohy…</translation>
+    </message>
+    <message>
+        <source>Running %1.</source>
+        <translation>Obrábím %1.</translation>
+    </message>
+    <message>
+        <source>the machine stopped: %1</source>
+        <translation>stroj se zastavil: %1</translation>
+    </message>
+    <message>
+        <source>the job stopped: %1</source>
+        <translation>úloha se zastavila: %1</translation>
+    </message>
+    <message>
+        <source>homing did not finish</source>
+        <translation>najíždění do reference nedoběhlo</translation>
+    </message>
+    <message>
+        <source> [command %1]</source>
+        <translation> [příkaz %1]</translation>
+    </message>
+    <message>
+        <source> [reply &apos;%1&apos;]</source>
+        <translation> [odpověď &apos;%1&apos;]</translation>
+    </message>
+    <message>
+        <source>the job did not finish</source>
+        <translation>úloha nedoběhla</translation>
     </message>
 </context>
 <context>
