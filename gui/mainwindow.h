@@ -1,20 +1,21 @@
 #pragma once
 // MainWindow: the one operating screen — toolpath view in the middle, DRO, run controls, jog and
 // outputs on the left, the program listing on the right, console and speed plot below, the
-// unit's LEDs in the status bar. It renders what the controller reports and asks the
-// controller to act; it keeps no machine state of its own.
+// unit's LEDs in the status bar. It renders what the controller reports and wires the operator's
+// controls to the session layer (run workflow, console, work offsets), which keeps every piece
+// of workflow state; the window keeps none of its own.
 
 #include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
 #include "programsession.h"
 
-#include "session/mdisession.h"
+#include "session/consolesession.h"
+#include "session/runworkflow.h"
 #include "session/workoffsets.h"
 
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <QPointer>
-#include <QTimer>
 
 #include <memory>
 
@@ -75,6 +76,8 @@ public:
     driver::MachineController *controller() const { return m_controller; }
     HoldBanner *holdBanner() const { return m_hold; }
     session::WorkOffsets *offsets() const { return m_offsets; }
+    session::RunWorkflow *workflow() const { return m_workflow; }
+    session::ConsoleSession *consoleSession() const { return m_consoleSession; }
     const session::OffsetTable &workOffsets() const { return m_offsets->systems(); }
     int activeOffset() const { return m_offsets->active(); }
 
@@ -88,10 +91,11 @@ public:
     // Sets the work zero of an axis (-1 = all) at the current machine position.
     void setWorkZero(int axis);
     void selectWorkOffset(int index);
-    // A manual line: "!..." is a raw unit command, anything else one block of G-code.
+    // A manual line: "!..." is a raw unit command, anything else one block of G-code in the
+    // console's modes (session::ConsoleSession).
     void executeManualLine(const QString &line);
     void jogStep(int axis, double deltaMm, double feedMmPerMin);
-    const machine::MachineConfig &profile() const { return m_profile; }
+    const machine::MachineConfig &profile() const { return m_workflow->profile(); }
     QString profilePath() const { return m_profilePath; }
     // Makes a (valid) profile the active one: axes, limits, outputs, connection.
     void applyProfile(const machine::MachineConfig &config, const QString &path);
@@ -131,9 +135,12 @@ private:
     void onLogLine(const QString &line);
     void updateHold(const driver::MachineState &state);
     void updateProgress(const driver::MachineState &state);
-    void lowerTool(double newFeedMmPerMin, bool thenContinue);
     void onOffsetsChanged();
-    void startPlannedRun();
+    void offerProgram();
+    void onJobStarted();
+    void onJobFinished(bool ok);
+    void onChecked(bool ok);
+    void onConnected();
     void updateRunPhase();
     bool jogKey(QKeyEvent *event, bool pressed);
 
@@ -157,21 +164,16 @@ private:
     driver::MachineController *m_controller = nullptr;
     HoldBanner *m_hold = nullptr;
     session::WorkOffsets *m_offsets;
-    std::unique_ptr<session::MdiSession> m_mdi;
-    bool m_runAfterLoad = false;
-    bool m_checkAfterLoad = false;
-    bool m_continueAfterLower = false;
-    bool m_userDisconnected = false;
-    double m_savedSpindleRpm = 0;
+    session::MachineLink *m_link = nullptr;
+    session::RunWorkflow *m_workflow = nullptr;
+    session::ConsoleSession *m_consoleSession = nullptr;
+    // Rendering of the running job: its clock and the actual speed from the live position.
     QElapsedTimer m_jobClock;
     double m_jobElapsedS = 0;
     std::array<double, 4> m_lastPos{};
     qint64 m_lastPosMs = -1;
     double m_actualDistanceMm = 0;
-    QTimer m_reconnectTimer;
-    driver::MachineMode m_lastMode{};
     QString m_lastError;
-    machine::MachineConfig m_profile;
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;
     QPointer<UnitConfigDialog> m_unitConfig;
