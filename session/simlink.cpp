@@ -78,7 +78,7 @@ void SimLink::connectTo(const driver::ConnectionSettings &)
 {
     // The wire was chosen with the link; connecting opens it (again, after a disconnect).
     if (m_open)
-        m_runner.unplug("reconnect");
+        m_runner.unplug({}); // closed on purpose
     m_open = true;
     m_runner.open();
     deliver();
@@ -89,7 +89,16 @@ void SimLink::disconnectFromUnit()
     if (!m_open)
         return;
     m_open = false;
-    m_runner.unplug("disconnected");
+    m_runner.unplug({}); // closed on purpose: Disconnected, not LinkLost
+    deliver();
+}
+
+void SimLink::unplug(const std::string &why)
+{
+    if (!m_open)
+        return;
+    m_open = false;
+    m_runner.unplug(why);
     deliver();
 }
 

@@ -29,6 +29,8 @@ public:
     // seconds have passed; returns done().
     bool runUntil(const std::function<bool()> &done, double limitS);
     void runFor(double seconds);
+    // The cable pulled (why non-empty: the machine sees a lost link, not a disconnect).
+    void unplug(const std::string &why);
     double now() const { return m_runner.now(); }
     const driver::JobReport &jobReport() const { return m_core.jobReport(); }
     driver::EmulatorPort &port() { return m_port; }

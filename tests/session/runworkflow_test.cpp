@@ -2,11 +2,15 @@
 // frezka-cli run drives (connect, home, run to the end), a hold ending a run nobody attends,
 // pause / tool lift / "lower and continue", planning again from where the machine is, and a
 // run refused while not connected. The GUI drives the same class (tests/gui/workflow_test).
+#include "session/consolesession.h"
 #include "session/runworkflow.h"
 #include "session/simlink.h"
+#include "session/workoffsets.h"
 
 #include "gcode/interpreter.h"
 #include "machine/planner.h"
+
+#include <QCoreApplication>
 
 #include <gtest/gtest.h>
 
@@ -149,6 +153,68 @@ TEST(RunWorkflow, RefusesToRunWhenNotConnected)
     h.workflow.runProgram();
     ASSERT_EQ(h.failures.size(), 2);
     EXPECT_TRUE(h.failures.back().contains(QStringLiteral("bad.nc:2: Q")));
+}
+
+// The reconnect timer needs an event loop: one application for the tests that use it.
+void ensureApplication()
+{
+    static int argc = 1;
+    static char name[] = "session_test";
+    static char *argv[] = {name, nullptr};
+    static QCoreApplication *app =
+        QCoreApplication::instance() ? nullptr : new QCoreApplication(argc, argv);
+    (void)app;
+}
+
+TEST(RunWorkflow, ReconnectsByItselfAfterALostLinkButNotAfterADisconnect)
+{
+    ensureApplication();
+    Headless h;
+    int lost = 0;
+    QObject::connect(&h.workflow, &RunWorkflow::linkLost, [&] { ++lost; });
+    h.workflow.setAutoReconnect(true, 0);
+    h.workflow.connectToUnit(RunWorkflow::connectionFor(h.config));
+    ASSERT_TRUE(h.until(MachineMode::Idle));
+    h.link.unplug("USB adapter unplugged");
+    ASSERT_TRUE(h.until(MachineMode::LinkLost));
+    EXPECT_EQ(lost, 1);
+    for (int i = 0; i < 100 && h.link.liveState().mode == MachineMode::LinkLost; ++i)
+        QCoreApplication::processEvents(); // the reconnect timer
+    ASSERT_TRUE(h.until(MachineMode::Idle)) << driver::machineModeName(h.link.liveState().mode);
+
+    h.workflow.disconnectFromUnit();
+    ASSERT_TRUE(h.until(MachineMode::Disconnected));
+    for (int i = 0; i < 20; ++i)
+        QCoreApplication::processEvents();
+    h.link.runFor(5);
+    EXPECT_EQ(h.link.liveState().mode, MachineMode::Disconnected);
+    EXPECT_EQ(lost, 1);
+}
+
+TEST(RunWorkflow, ConsoleLinesMoveTheMachineInTheirModes)
+{
+    Headless h;
+    WorkOffsets offsets;
+    ConsoleSession console(h.workflow, offsets);
+    QStringList failures;
+    QObject::connect(&console, &ConsoleSession::failed,
+                     [&](const QString &why) { failures << why; });
+    h.workflow.connectToUnit(RunWorkflow::connectionFor(h.config));
+    ASSERT_TRUE(h.until(MachineMode::Idle));
+    auto line = [&](const char *text) {
+        console.execute(QLatin1String(text));
+        h.link.runUntil([&] { return h.link.liveState().mode != MachineMode::Idle; }, 1);
+        ASSERT_TRUE(h.until(MachineMode::Idle)) << text;
+    };
+    line("G91");
+    line("G1 X1 F600");
+    line("G1 X1");
+    EXPECT_NEAR(h.link.state().positionMm[0], 2.0, 1e-9);
+    line("G20");
+    line("Y1"); // G1, incremental, inches
+    EXPECT_NEAR(h.link.state().positionMm[1], 25.4, 1e-3);
+    EXPECT_TRUE(failures.isEmpty()) << failures.join(QLatin1Char('\n')).toStdString();
+    EXPECT_EQ(console.modal().text(), QStringLiteral("G1 G17 G20 G91 G94 G54 F600 S0"));
 }
 
 } // namespace
