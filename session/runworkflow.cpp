@@ -186,8 +186,8 @@ void RunWorkflow::end(bool ok, const QString &why)
     if (m_step == Step::Ended || m_step == Step::None)
         return;
     m_step = Step::Ended;
-    if (!ok && m_error.isEmpty())
-        m_error = why;
+    if (!ok)
+        m_error = why; // what ended the run (an earlier error may have been survived)
     emit runEnded(ok);
 }
 
@@ -237,7 +237,10 @@ void RunWorkflow::advance(const driver::MachineState &s, MachineMode last)
 {
     if (s.mode == MachineMode::Alarm || s.mode == MachineMode::LinkLost ||
         (s.mode == MachineMode::Disconnected && last != MachineMode::Disconnected)) {
-        end(false, tr("the machine stopped: %1").arg(modeText(s.mode)));
+        QString why = tr("the machine stopped: %1").arg(modeText(s.mode));
+        if (s.lastError) // the driver's words (English until the driver has error codes)
+            why += QStringLiteral(" (%1)").arg(QString::fromStdString(s.lastError->message));
+        end(false, why);
         return;
     }
     if (m_step == Step::Running && m_endOnHold && s.mode == MachineMode::Paused) {
@@ -279,7 +282,7 @@ void RunWorkflow::onJobFinished(bool ok)
 {
     emit jobFinished(ok);
     if (m_step == Step::Running)
-        end(ok, tr("the job did not finish"));
+        end(ok, m_error.isEmpty() ? tr("the job did not finish") : m_error);
 }
 
 } // namespace frezka::session
