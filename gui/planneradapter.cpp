@@ -84,23 +84,20 @@ std::vector<float> plannedLineTimes(const machine::UnitProgram &program,
 AnalyseFn plannerAnalyser(const machine::MachineConfig &config, double feedOverride)
 {
     return [config, feedOverride](LoadedProgram &program, const std::atomic_bool *) {
-        machine::PlanOptions options;
-        options.feedOverride = feedOverride;
-        const machine::PlanResult result = machine::plan(*program.toolpath, config, options);
-        const QString file = QFileInfo(program.path).fileName();
-        for (const auto &e : result.errors)
-            program.errors.push_back({int(e.line), 0, planErrorText(file, e)});
-        for (const auto &w : result.warnings)
-            program.warnings.push_back({int(w.line), 0, planErrorText(file, w)});
+        const session::PlanOutcome result = session::planProgram(
+            *program.toolpath, config, QFileInfo(program.path).fileName(), feedOverride);
+        program.errors.insert(program.errors.end(), result.errors.begin(), result.errors.end());
+        program.warnings.insert(program.warnings.end(), result.warnings.begin(),
+                                result.warnings.end());
         if (!result.ok())
             return;
         program.estimatedS = result.stats.estimatedS;
         // Decimated here, off the GUI thread (min and max of each bucket survive).
         program.speed =
-            decimateSpeed(plannedSpeed(result.program, config, result.stats.speedModeVk), 4000);
-        program.lineEndS = plannedLineTimes(result.program, config, result.stats.speedModeVk,
+            decimateSpeed(plannedSpeed(*result.program, config, result.stats.speedModeVk), 4000);
+        program.lineEndS = plannedLineTimes(*result.program, config, result.stats.speedModeVk,
                                             result.stats.estimatedS);
-        program.unitProgram = std::make_shared<machine::UnitProgram>(result.program);
+        program.unitProgram = result.program;
         program.planStats = result.stats;
     };
 }

@@ -9,6 +9,7 @@
 #include "machine/machineconfig.h"
 #include "machine/planner.h"
 #include "session/planerrortext.h"
+#include "session/programplanner.h"
 
 namespace frezka::gui {
 

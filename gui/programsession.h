@@ -11,6 +11,7 @@
 #include "gcode/toolpath.h"
 #include "machine/planner.h"
 #include "machine/unitprogram.h"
+#include "session/programplanner.h"
 #include "session/workoffsets.h"
 
 #include <QObject>
@@ -26,13 +27,7 @@ class QThread;
 
 namespace frezka::gui {
 
-struct ProgramMessage
-{
-    int line = 0;   // 1-based, 0 = whole file
-    int column = 0; // 1-based, 0 = none
-    QString text;   // complete, in the user's language: what, where, what to do
-    friend bool operator==(const ProgramMessage &, const ProgramMessage &) = default;
-};
+using session::ProgramMessage;
 
 struct LoadedProgram
 {
@@ -58,21 +53,8 @@ struct LoadedProgram
     double remainingS(std::uint32_t line) const;
 };
 
-struct InterpretRequest
-{
-    QByteArray text;
-    QString fileName;
-    session::OffsetState offsets;    // G54..G59.3, G92 and the active system
-    std::array<double, 4> startMm{}; // machine position the program starts from
-    const std::atomic_bool *cancel = nullptr;
-    std::function<void(double)> progress; // fraction 0..1 of this step
-};
-
-struct InterpretOutcome
-{
-    std::shared_ptr<gcode::Toolpath> toolpath;
-    std::vector<ProgramMessage> errors;
-};
+using session::InterpretOutcome;
+using session::InterpretRequest;
 
 // The interpreter step, set by whoever links the G-code interpreter (defaultInterpreter()).
 using InterpretFn = std::function<InterpretOutcome(const InterpretRequest &)>;

@@ -195,18 +195,6 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>%1:%2: warning: %3
-</source>
-        <translation>%1:%2: varování: %3
-</translation>
-    </message>
-    <message>
-        <source>%1:%2: %3
-</source>
-        <translation>%1:%2: %3
-</translation>
-    </message>
-    <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
         <translation><byte value="xd"/>[%1] %2% řádek %3 zbývá %4 </translation>
     </message>
@@ -228,6 +216,12 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>%1: the unit&apos;s counters differ from the planned end position
 </source>
         <translation>%1: čítače jednotky se liší od plánované koncové polohy
+</translation>
+    </message>
+    <message>
+        <source>warning: %1
+</source>
+        <translation>varování: %1
 </translation>
     </message>
 </context>

@@ -195,18 +195,6 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>%1:%2: warning: %3
-</source>
-        <translation>%1:%2: warning: %3
-</translation>
-    </message>
-    <message>
-        <source>%1:%2: %3
-</source>
-        <translation>%1:%2: %3
-</translation>
-    </message>
-    <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
         <translation><byte value="xd"/>[%1] %2% line %3 ETA %4 </translation>
     </message>
@@ -228,6 +216,12 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>%1: the unit&apos;s counters differ from the planned end position
 </source>
         <translation>%1: the unit&apos;s counters differ from the planned end position
+</translation>
+    </message>
+    <message>
+        <source>warning: %1
+</source>
+        <translation>warning: %1
 </translation>
     </message>
 </context>

@@ -24,12 +24,14 @@
 #include "driver/link/linkworker.h"
 #include "gcode/interpreter.h"
 #include "machine/planner.h"
+#include "session/programplanner.h"
 #include "session/qtmachinelink.h"
 #include "session/runworkflow.h"
 #include "session/simlink.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -122,8 +124,9 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
     return a;
 }
 
-// Profile, G-code, plan. Prints every error; nullopt on failure.
-std::optional<std::pair<machine::MachineConfig, machine::PlanResult>> prepare(const RunArgs &a)
+// Profile, then the program checked and planned as the GUI does it (the session layer; no work
+// offsets, from the machine zero). Prints every error; nullopt on failure.
+std::optional<std::pair<machine::MachineConfig, machine::UnitProgram>> prepare(const RunArgs &a)
 {
     machine::MachineConfig config = machine::defaultMachineConfig(protocol::Variant::Gve64);
     if (!a.machine.isEmpty()) {
@@ -141,27 +144,31 @@ std::optional<std::pair<machine::MachineConfig, machine::PlanResult>> prepare(co
     // The in-process emulator's link has the latency given here: the plan keeps its pace.
     if (a.port == QLatin1String("sim"))
         config.link.latencyMs = a.latencyMs;
-    const gcode::Result g = gcode::interpretFile(a.file.toStdString());
-    if (!g.ok()) {
-        for (const gcode::Error &e : g.errors)
-            cli::err(gcode::formatError(a.file, e) + QLatin1Char('\n'));
+    QFile file(a.file);
+    if (!file.open(QIODevice::ReadOnly)) {
+        cli::err(gcode::formatError(
+                     a.file, {gcode::ErrorCode::FileOpenFailed, 0, 0, a.file.toStdString()}) +
+                 QLatin1Char('\n'));
         return std::nullopt;
     }
-    machine::PlanResult p = machine::plan(g.toolpath, config);
-    for (const machine::PlanError &w : p.warnings)
-        cli::err(RunCli::tr("%1:%2: warning: %3\n")
-                     .arg(a.file)
-                     .arg(w.line)
-                     .arg(QString::fromStdString(w.message)));
+    session::InterpretRequest request;
+    request.text = file.readAll();
+    request.fileName = a.file;
+    const session::InterpretOutcome g = session::interpretProgram(request);
+    if (!g.errors.empty()) {
+        for (const session::ProgramMessage &e : g.errors)
+            cli::err(e.text + QLatin1Char('\n'));
+        return std::nullopt;
+    }
+    session::PlanOutcome p = session::planProgram(*g.toolpath, config, a.file);
+    for (const session::ProgramMessage &w : p.warnings)
+        cli::err(RunCli::tr("warning: %1\n").arg(w.text));
     if (!p.ok()) {
-        for (const machine::PlanError &e : p.errors)
-            cli::err(RunCli::tr("%1:%2: %3\n")
-                         .arg(a.file)
-                         .arg(e.line)
-                         .arg(QString::fromStdString(e.message)));
+        for (const session::ProgramMessage &e : p.errors)
+            cli::err(e.text + QLatin1Char('\n'));
         return std::nullopt;
     }
-    return std::make_pair(config, std::move(p));
+    return std::make_pair(config, std::move(*p.program));
 }
 
 // Progress bar on a terminal (stderr), at most every 0.2 s of wall time.
@@ -376,9 +383,9 @@ int runRun(const QStringList &args)
     auto prepared = prepare(*a);
     if (!prepared)
         return 1;
-    const auto &[config, plan] = *prepared;
+    const auto &[config, program] = *prepared;
     const Outcome o =
-        a->virtualClock ? runVirtual(*a, config, plan.program) : runReal(*a, config, plan.program);
+        a->virtualClock ? runVirtual(*a, config, program) : runReal(*a, config, program);
     const int baud = a->baud > 0 ? a->baud : config.link.baud;
     if (!o.ok) {
         cli::err(
@@ -386,11 +393,10 @@ int runRun(const QStringList &args)
                 .arg(a->file, o.error.isEmpty() ? RunCli::tr("the job did not finish") : o.error));
         return 1;
     }
-    printReport(o, plan.program, baud);
-    const machine::Steps4 expected = plan.program.commands.empty()
-                                         ? plan.program.startSteps
-                                         : plan.program.commands.back().endSteps;
-    for (int i = 0; i < plan.program.axisCount; ++i) {
+    printReport(o, program, baud);
+    const machine::Steps4 expected =
+        program.commands.empty() ? program.startSteps : program.commands.back().endSteps;
+    for (int i = 0; i < program.axisCount; ++i) {
         if (o.finalSteps[static_cast<std::size_t>(i)] != expected[static_cast<std::size_t>(i)]) {
             cli::err(RunCli::tr("%1: the unit's counters differ from the planned end position\n")
                          .arg(a->file));
