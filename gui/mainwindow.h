@@ -13,7 +13,6 @@
 #include "session/runworkflow.h"
 #include "session/workoffsets.h"
 
-#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QPointer>
 
@@ -167,9 +166,7 @@ private:
     session::MachineLink *m_link = nullptr;
     session::RunWorkflow *m_workflow = nullptr;
     session::ConsoleSession *m_consoleSession = nullptr;
-    // Rendering of the running job: its clock and the actual speed from the live position.
-    QElapsedTimer m_jobClock;
-    double m_jobElapsedS = 0;
+    // Rendering of the running job: the actual speed from the live position.
     std::array<double, 4> m_lastPos{};
     qint64 m_lastPosMs = -1;
     double m_actualDistanceMm = 0;

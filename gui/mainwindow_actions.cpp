@@ -28,7 +28,6 @@ void MainWindow::onJobStarted()
     m_plot->clearActual();
     m_actualDistanceMm = 0;
     m_lastPosMs = -1;
-    m_jobClock.start();
 }
 
 void MainWindow::checkProgram()

@@ -107,15 +107,14 @@ void MainWindow::connectMachine()
 
 void MainWindow::onJobFinished(bool ok)
 {
-    m_jobElapsedS = m_jobClock.isValid() ? m_jobClock.elapsed() / 1000.0 : 0;
-    m_jobClock.invalidate();
+    const double elapsedS = m_workflow->jobElapsedS();
     if (ok) {
-        m_run->setProgress(1.0, m_jobElapsedS, 0);
+        m_run->setProgress(1.0, elapsedS, 0);
         const auto &toolpath = m_program->program().toolpath;
         m_view->model()->setCutEntry(
             std::uint32_t(std::max<std::size_t>(1, toolpath ? toolpath->size() : 1) - 1));
         statusBar()->showMessage(
-            tr("Program finished in %1.").arg(RunPanel::formatDuration(m_jobElapsedS)), 15000);
+            tr("Program finished in %1.").arg(RunPanel::formatDuration(elapsedS)), 15000);
         m_console->appendInfo(tr("Program finished."));
     }
     updateRunPhase();
@@ -260,9 +259,7 @@ void MainWindow::updateProgress(const driver::MachineState &state)
 {
     if (!state.jobActive)
         return;
-    if (!m_jobClock.isValid())
-        m_jobClock.start();
-    const double elapsed = m_jobClock.elapsed() / 1000.0;
+    const double elapsed = m_workflow->jobElapsedS();
     // ETA from the planner's model at the line being cut; the driver's own figure otherwise.
     const LoadedProgram &p = m_program->program();
     const double planned = p.remainingS(state.sourceLine);
@@ -271,7 +268,7 @@ void MainWindow::updateProgress(const driver::MachineState &state)
     else
         m_run->setProgress(state.progress, elapsed, state.etaS);
     // Actual speed from the live position (mm/min along the travelled path).
-    const qint64 now = m_jobClock.elapsed();
+    const qint64 now = qint64(elapsed * 1000);
     if (m_lastPosMs >= 0 && now > m_lastPosMs) {
         double d2 = 0;
         for (std::size_t i = 0; i < 3; ++i)

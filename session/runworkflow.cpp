@@ -156,6 +156,7 @@ void RunWorkflow::runProgram()
 void RunWorkflow::startJob()
 {
     emit message(tr("Running %1.").arg(m_name));
+    m_jobClock.start();
     emit jobStarted();
     m_link.run(*m_plan);
 }
@@ -217,6 +218,8 @@ void RunWorkflow::lowerTool(double newFeedMmPerMin, bool thenContinue)
 void RunWorkflow::onState(const driver::MachineState &s)
 {
     const MachineMode last = std::exchange(m_lastMode, s.mode);
+    if (s.jobActive && !m_jobClock.isValid())
+        m_jobClock.start(); // a job not started here (a console line, one kept over a lost link)
     if (s.mode == MachineMode::LinkLost && last != MachineMode::LinkLost) {
         emit linkLost();
         if (m_autoReconnect && !m_userDisconnected)
@@ -280,6 +283,8 @@ void RunWorkflow::onError(const driver::MachineError &e)
 
 void RunWorkflow::onJobFinished(bool ok)
 {
+    m_lastJobS = jobElapsedS();
+    m_jobClock.invalidate();
     emit jobFinished(ok);
     if (m_step == Step::Running)
         end(ok, m_error.isEmpty() ? tr("the job did not finish") : m_error);

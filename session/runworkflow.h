@@ -11,6 +11,7 @@
 
 #include "session/machinelink.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
 
@@ -60,6 +61,11 @@ public:
     QString error() const { return m_error; }
 
     // ---- during a job
+    // Wall-clock seconds of the job running now, or of the last one when none runs.
+    double jobElapsedS() const
+    {
+        return m_jobClock.isValid() ? double(m_jobClock.elapsed()) / 1000.0 : m_lastJobS;
+    }
     void pause() { m_link.pause(); }
     void resume() { m_link.resume(); }
     void abort() { m_link.abort(); }
@@ -108,6 +114,8 @@ private:
     driver::MachineMode m_lastMode = driver::MachineMode::Disconnected;
     QString m_error;
     QTimer m_reconnect;
+    QElapsedTimer m_jobClock; // from the job's start (or the first state that shows one)
+    double m_lastJobS = 0;
 };
 
 } // namespace frezka::session
