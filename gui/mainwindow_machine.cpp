@@ -81,6 +81,10 @@ void MainWindow::connectMachine()
     connect(m_workflow, &RunWorkflow::checked, this, &MainWindow::onChecked);
     connect(m_workflow, &RunWorkflow::connected, this, &MainWindow::onConnected);
     connect(m_workflow, &RunWorkflow::linkLost, this, [this] {
+        // The preference as it is now (the settings may have changed it since connecting); the
+        // workflow reads it right after this signal.
+        m_workflow->setAutoReconnect(
+            QSettings().value(QStringLiteral("link/autoReconnect"), true).toBool());
         showError(tr("The link to the unit was lost. The job position is kept: reconnect, then "
                      "Resume."));
     });

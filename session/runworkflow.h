@@ -81,7 +81,7 @@ signals:
     void jobFinished(bool ok);
     void checked(bool ok);
     void connected(); // connecting -> ready
-    void linkLost();
+    void linkLost();  // before reconnecting is decided: a handler may still setAutoReconnect()
     void runEnded(bool ok); // the headless sequence of start()
 
 private:
