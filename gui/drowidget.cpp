@@ -1,5 +1,7 @@
 #include "drowidget.h"
 
+#include "session/workoffsets.h"
+
 #include <QComboBox>
 #include <QEvent>
 #include <QFontDatabase>
@@ -49,8 +51,8 @@ DroWidget::DroWidget(QWidget *parent)
     m_offsetLabel = new QLabel(this);
     m_offset = new QComboBox(this);
     m_offset->setObjectName(QStringLiteral("workOffset"));
-    for (int i = 0; i < 6; ++i)
-        m_offset->addItem(QStringLiteral("G%1").arg(54 + i));
+    for (int i = 0; i < session::kWorkSystems; ++i)
+        m_offset->addItem(session::workSystemName(i));
     connect(m_offset, &QComboBox::activated, this, &DroWidget::offsetSelected);
     m_zeroAll = new QPushButton(this);
     m_zeroAll->setObjectName(QStringLiteral("zeroAll"));

@@ -1,6 +1,6 @@
 #pragma once
 // DroWidget: digital read-out — work and machine coordinates for each axis of the unit variant,
-// with per-axis and all-axes "set work zero" and the active work offset (G54-G59).
+// with per-axis and all-axes "set work zero" and the active work offset (G54-G59.3).
 
 #include <QWidget>
 
@@ -21,7 +21,7 @@ public:
     void setAxisCount(int count); // 3 (XYZ) or 4 (XYZA)
     int axisCount() const { return m_axisCount; }
     void setPositions(const std::array<double, 4> &machineMm, const std::array<double, 4> &workMm);
-    void setActiveOffset(int index); // 0 = G54 .. 5 = G59
+    void setActiveOffset(int index); // 0 = G54 .. 8 = G59.3
     void setHomed(const std::array<bool, 4> &homed);
     // Shown text of an axis (tests).
     QString workText(int axis) const;

@@ -1,34 +1,10 @@
 #include "interpreteradapter.h"
 
-#include "gcode/interpreter.h"
-
 namespace frezka::gui {
 
 InterpretFn gcodeInterpreter()
 {
-    return [](const InterpretRequest &req) {
-        gcode::Options options;
-        options.collectAllErrors = true;
-        options.maxErrors = 200;
-        for (std::size_t i = 0; i < req.offsets.size(); ++i)
-            options.workOffsetsMm[i] = req.offsets[i];
-        options.coordinateSystem = req.activeOffset;
-        options.startMm = {req.startMm[0], req.startMm[1], req.startMm[2], req.startMm[3]};
-        if (req.progress) {
-            options.progress = [&req](std::size_t done, std::size_t total) {
-                req.progress(double(done) / double(std::max<std::size_t>(1, total)));
-            };
-        }
-        gcode::Interpreter interpreter(options);
-        gcode::Result result =
-            interpreter.run(std::string_view(req.text.constData(), std::size_t(req.text.size())));
-        InterpretOutcome out;
-        for (const auto &e : result.errors) {
-            out.errors.push_back({int(e.line), int(e.column), gcode::formatError(req.fileName, e)});
-        }
-        out.toolpath = std::make_shared<gcode::Toolpath>(std::move(result.toolpath));
-        return out;
-    };
+    return [](const InterpretRequest &req) { return session::interpretProgram(req); };
 }
 
 } // namespace frezka::gui

@@ -56,6 +56,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     m_view = new ToolpathView(this, backend);
     buildCentral();
     m_program = new ProgramSession(this);
+    m_offsets = new session::WorkOffsets(this);
     m_program->setMaxSceneSegments(m_view->preferredMaxSegments());
     m_program->setSceneGlVertices(m_view->usesOpenGl());
     m_program->setInterpreter(gcodeInterpreter());
@@ -338,7 +339,7 @@ void MainWindow::connectProgram()
 SettingsDialog *MainWindow::openSettings()
 {
     if (!m_settings) {
-        m_settings = new SettingsDialog(m_profile, m_profilePath, this);
+        m_settings = new SettingsDialog(profile(), m_profilePath, this);
         m_settings->setAttribute(Qt::WA_DeleteOnClose);
         connect(m_settings, &SettingsDialog::profileApplied, this, &MainWindow::applyProfile);
     }
@@ -350,7 +351,7 @@ SettingsDialog *MainWindow::openSettings()
 UnitConfigDialog *MainWindow::openUnitConfig()
 {
     if (!m_unitConfig) {
-        m_unitConfig = new UnitConfigDialog(m_controller, m_profile, this);
+        m_unitConfig = new UnitConfigDialog(m_controller, profile(), this);
         m_unitConfig->setAttribute(Qt::WA_DeleteOnClose);
     }
     m_unitConfig->show();
@@ -360,7 +361,7 @@ UnitConfigDialog *MainWindow::openUnitConfig()
 
 void MainWindow::applyProfile(const machine::MachineConfig &config, const QString &path)
 {
-    m_profile = config;
+    m_workflow->setProfile(config); // the controller's too
     m_profilePath = path;
     const auto &info = protocol::variantInfo(config.unit.variant);
     const int axes = info.axisCount == 4 && config.axes[3].present ? 4 : 3;
@@ -393,8 +394,6 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
     m_program->setAnalyser(plannerAnalyser(config));
     if (m_unitConfig)
         m_unitConfig->setProfile(config);
-    if (m_controller)
-        m_controller->setMachineConfig(config);
     if (!m_program->program().path.isEmpty())
         m_program->reload(); // re-plan for the new profile
     m_unit->setText(QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size())));
@@ -410,7 +409,7 @@ void MainWindow::checkProgramLimits()
     }
     bool outside = false;
     for (int i = 0; i < 3; ++i) {
-        const auto &a = m_profile.axes[std::size_t(i)];
+        const auto &a = profile().axes[std::size_t(i)];
         if (!a.present)
             continue;
         outside = outside || scene->bounds.min[i] < a.softMinMm - 1e-6 ||

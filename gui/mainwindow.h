@@ -1,17 +1,20 @@
 #pragma once
 // MainWindow: the one operating screen — toolpath view in the middle, DRO, run controls, jog and
 // outputs on the left, the program listing on the right, console and speed plot below, the
-// unit's LEDs in the status bar. It renders what the controller reports and asks the
-// controller to act; it keeps no machine state of its own.
+// unit's LEDs in the status bar. It renders what the controller reports and wires the operator's
+// controls to the session layer (run workflow, console, work offsets), which keeps every piece
+// of workflow state; the window keeps none of its own.
 
 #include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
 #include "programsession.h"
 
-#include <QElapsedTimer>
+#include "session/consolesession.h"
+#include "session/runworkflow.h"
+#include "session/workoffsets.h"
+
 #include <QMainWindow>
 #include <QPointer>
-#include <QTimer>
 
 #include <memory>
 
@@ -71,8 +74,11 @@ public:
     ProgramSession *program() const { return m_program; }
     driver::MachineController *controller() const { return m_controller; }
     HoldBanner *holdBanner() const { return m_hold; }
-    const WorkOffsets &workOffsets() const { return m_offsets; }
-    int activeOffset() const { return m_activeOffset; }
+    session::WorkOffsets *offsets() const { return m_offsets; }
+    session::RunWorkflow *workflow() const { return m_workflow; }
+    session::ConsoleSession *consoleSession() const { return m_consoleSession; }
+    const session::OffsetTable &workOffsets() const { return m_offsets->systems(); }
+    int activeOffset() const { return m_offsets->active(); }
 
     // Operator actions (the buttons call these; tests too).
     void connectToUnit();
@@ -84,10 +90,11 @@ public:
     // Sets the work zero of an axis (-1 = all) at the current machine position.
     void setWorkZero(int axis);
     void selectWorkOffset(int index);
-    // A manual line: "!..." is a raw unit command, anything else one block of G-code.
+    // A manual line: "!..." is a raw unit command, anything else one block of G-code in the
+    // console's modes (session::ConsoleSession).
     void executeManualLine(const QString &line);
     void jogStep(int axis, double deltaMm, double feedMmPerMin);
-    const machine::MachineConfig &profile() const { return m_profile; }
+    const machine::MachineConfig &profile() const { return m_workflow->profile(); }
     QString profilePath() const { return m_profilePath; }
     // Makes a (valid) profile the active one: axes, limits, outputs, connection.
     void applyProfile(const machine::MachineConfig &config, const QString &path);
@@ -127,11 +134,12 @@ private:
     void onLogLine(const QString &line);
     void updateHold(const driver::MachineState &state);
     void updateProgress(const driver::MachineState &state);
-    void lowerTool(double newFeedMmPerMin, bool thenContinue);
-    void loadWorkOffsets();
-    void saveWorkOffsets();
-    void startPlannedRun();
-    std::array<double, 4> workPosition(const std::array<double, 4> &machineMm) const;
+    void onOffsetsChanged();
+    void offerProgram();
+    void onJobStarted();
+    void onJobFinished(bool ok);
+    void onChecked(bool ok);
+    void onConnected();
     void updateRunPhase();
     bool jogKey(QKeyEvent *event, bool pressed);
 
@@ -154,22 +162,15 @@ private:
     ProgramSession *m_program;
     driver::MachineController *m_controller = nullptr;
     HoldBanner *m_hold = nullptr;
-    WorkOffsets m_offsets{};
-    int m_activeOffset = 0;
-    bool m_runAfterLoad = false;
-    bool m_checkAfterLoad = false;
-    bool m_continueAfterLower = false;
-    bool m_userDisconnected = false;
-    double m_savedSpindleRpm = 0;
-    QElapsedTimer m_jobClock;
-    double m_jobElapsedS = 0;
+    session::WorkOffsets *m_offsets;
+    session::MachineLink *m_link = nullptr;
+    session::RunWorkflow *m_workflow = nullptr;
+    session::ConsoleSession *m_consoleSession = nullptr;
+    // Rendering of the running job: the actual speed from the live position.
     std::array<double, 4> m_lastPos{};
     qint64 m_lastPosMs = -1;
     double m_actualDistanceMm = 0;
-    QTimer m_reconnectTimer;
-    driver::MachineMode m_lastMode{};
     QString m_lastError;
-    machine::MachineConfig m_profile;
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;
     QPointer<UnitConfigDialog> m_unitConfig;

@@ -8,10 +8,8 @@
 #include "toolpathview.h"
 
 #include "driver/link/machinecontroller.h"
-#include "gcode/interpreter.h"
 
 #include <QFileInfo>
-#include <QSettings>
 
 namespace frezka::gui {
 
@@ -21,43 +19,15 @@ using driver::MachineMode;
 
 void MainWindow::runProgram()
 {
-    const LoadedProgram &p = m_program->program();
-    if (!p.runnable()) {
-        showError(
-            p.errors.empty()
-                ? tr("Open a program first.")
-                : tr("The program has errors and cannot run:\n%1").arg(p.errors.front().text));
-        return;
-    }
-    const auto &st = m_controller->state();
-    if (st.mode != MachineMode::Idle) {
-        showError(tr("The machine is not ready (%1); wait until it is, then Run.")
-                      .arg(machineModeText(st.mode)));
-        return;
-    }
-    // The plan is relative to where it starts: re-plan from the machine's actual position.
-    const gcode::Point4 o = p.toolpath->origin();
-    const std::array<double, 4> start{o.x, o.y, o.z, o.a};
-    if (start != st.positionMm || p.unitProgram->startSteps != st.positionSteps) {
-        m_program->setStartPosition(st.positionMm);
-        m_runAfterLoad = true;
-        m_console->appendInfo(tr("Planning from the current position…"));
-        m_program->reload();
-        return;
-    }
-    startPlannedRun();
+    m_workflow->runProgram();
 }
 
-void MainWindow::startPlannedRun()
+void MainWindow::onJobStarted()
 {
-    const LoadedProgram &p = m_program->program();
     m_view->model()->setCutEntry(ToolpathViewModel::kNoneCut);
     m_plot->clearActual();
     m_actualDistanceMm = 0;
     m_lastPosMs = -1;
-    m_jobClock.start();
-    m_console->appendInfo(tr("Running %1.").arg(QFileInfo(p.path).fileName()));
-    m_controller->run(*p.unitProgram);
 }
 
 void MainWindow::checkProgram()
@@ -66,15 +36,23 @@ void MainWindow::checkProgram()
         showError(tr("Open a program first."));
         return;
     }
-    m_program->setStartPosition(m_controller->state().positionMm);
-    m_checkAfterLoad = true;
-    m_program->reload();
+    m_workflow->checkProgram();
+}
+
+// The loaded (or re-planned) program goes to the run workflow.
+void MainWindow::offerProgram()
+{
+    const LoadedProgram &p = m_program->program();
+    const gcode::Point4 o = p.toolpath ? p.toolpath->origin() : gcode::Point4{};
+    m_workflow->setProgram(p.runnable() ? p.unitProgram : nullptr, {o.x, o.y, o.z, o.a},
+                           QFileInfo(p.path).fileName(),
+                           p.errors.empty() ? QString() : p.errors.front().text);
 }
 
 void MainWindow::jogStep(int axis, double deltaMm, double feedMmPerMin)
 {
     const auto &st = m_controller->state();
-    const auto &a = m_profile.axes[std::size_t(axis)];
+    const auto &a = profile().axes[std::size_t(axis)];
     const double target = st.positionMm[std::size_t(axis)] + deltaMm;
     static const char kAxes[] = "XYZA";
     if (target < a.softMinMm - 1e-9 || target > a.softMaxMm + 1e-9) {
@@ -88,26 +66,14 @@ void MainWindow::jogStep(int axis, double deltaMm, double feedMmPerMin)
     m_controller->jogStep(axis, deltaMm, feedMmPerMin);
 }
 
-void MainWindow::loadWorkOffsets()
+void MainWindow::onOffsetsChanged()
 {
-    QSettings s;
-    const QVariantList list = s.value(QStringLiteral("workOffsets")).toList();
-    for (int i = 0; i < 24 && i < list.size(); ++i)
-        m_offsets[std::size_t(i / 4)][std::size_t(i % 4)] = list[i].toDouble();
-    m_activeOffset = std::clamp(s.value(QStringLiteral("activeOffset"), 0).toInt(), 0, 5);
-    m_dro->setActiveOffset(m_activeOffset);
-    m_program->setWorkOffsets(m_offsets, m_activeOffset);
-}
-
-void MainWindow::saveWorkOffsets()
-{
-    QVariantList list;
-    for (const auto &o : m_offsets)
-        for (double v : o)
-            list << v;
-    QSettings s;
-    s.setValue(QStringLiteral("workOffsets"), list);
-    s.setValue(QStringLiteral("activeOffset"), m_activeOffset);
+    const auto &st = m_controller->state();
+    m_program->setWorkOffsets(m_offsets->state());
+    m_dro->setActiveOffset(m_offsets->active());
+    m_dro->setPositions(st.positionMm, m_offsets->workPosition(st.positionMm));
+    m_program->setStartPosition(st.positionMm);
+    m_program->reload(); // offsets apply by re-interpreting the program
 }
 
 void MainWindow::setWorkZero(int axis)
@@ -117,57 +83,17 @@ void MainWindow::setWorkZero(int axis)
         showError(tr("Set the work zero while the machine is ready and still."));
         return;
     }
-    for (int i = 0; i < 4; ++i) {
-        if (axis < 0 || axis == i)
-            m_offsets[std::size_t(m_activeOffset)][std::size_t(i)] = st.positionMm[std::size_t(i)];
-    }
-    saveWorkOffsets();
-    m_program->setWorkOffsets(m_offsets, m_activeOffset);
-    m_dro->setPositions(st.positionMm, workPosition(st.positionMm));
-    m_program->setStartPosition(st.positionMm);
-    m_program->reload(); // offsets apply by re-interpreting the program
+    m_offsets->setZero(axis, st.positionMm);
 }
 
 void MainWindow::selectWorkOffset(int index)
 {
-    m_activeOffset = std::clamp(index, 0, 5);
-    saveWorkOffsets();
-    m_program->setWorkOffsets(m_offsets, m_activeOffset);
-    const auto &st = m_controller->state();
-    m_dro->setPositions(st.positionMm, workPosition(st.positionMm));
-    m_program->reload();
+    m_offsets->select(index);
 }
 
 void MainWindow::executeManualLine(const QString &line)
 {
-    if (line.startsWith(QLatin1Char('!'))) {
-        m_controller->sendRaw(line);
-        return;
-    }
-    const auto &st = m_controller->state();
-    if (st.mode != MachineMode::Idle) {
-        showError(tr("Manual G-code runs only while the machine is ready."));
-        return;
-    }
-    gcode::Options options;
-    for (std::size_t i = 0; i < m_offsets.size(); ++i)
-        options.workOffsetsMm[i] = m_offsets[i];
-    options.coordinateSystem = m_activeOffset;
-    options.startMm = {st.positionMm[0], st.positionMm[1], st.positionMm[2], st.positionMm[3]};
-    gcode::Interpreter interpreter(options);
-    const std::string text = line.toStdString() + "\nM2\n";
-    gcode::Result result = interpreter.run(text);
-    if (!result.ok()) {
-        showError(gcode::formatError(tr("manual line"), result.errors.front()));
-        return;
-    }
-    const machine::PlanResult plan = machine::plan(result.toolpath, m_profile);
-    if (!plan.ok()) {
-        showError(planErrorText(tr("manual line"), plan.errors.front()));
-        return;
-    }
-    m_console->appendInfo(tr("Manual: %1").arg(line));
-    m_controller->run(plan.program);
+    m_consoleSession->execute(line);
 }
 
 } // namespace frezka::gui

@@ -14,7 +14,7 @@
 #include "toolpathview.h"
 
 #include "driver/link/machinecontroller.h"
-#include "gcode/interpreter.h"
+#include "session/qtmachinelink.h"
 
 #include <QFileInfo>
 #include <QLabel>
@@ -47,31 +47,7 @@ bool isConnected(MachineMode m)
 
 QString machineModeText(MachineMode mode)
 {
-    switch (mode) {
-    case MachineMode::Disconnected:
-        return MainWindow::tr("Not connected");
-    case MachineMode::Connecting:
-        return MainWindow::tr("Connecting…");
-    case MachineMode::Idle:
-        return MainWindow::tr("Ready");
-    case MachineMode::Homing:
-        return MainWindow::tr("Homing");
-    case MachineMode::Jogging:
-        return MainWindow::tr("Jogging");
-    case MachineMode::Running:
-        return MainWindow::tr("Running");
-    case MachineMode::Stopping:
-        return MainWindow::tr("Stopping");
-    case MachineMode::Paused:
-        return MainWindow::tr("Paused");
-    case MachineMode::ToolLifted:
-        return MainWindow::tr("Tool lifted");
-    case MachineMode::Alarm:
-        return MainWindow::tr("Alarm");
-    case MachineMode::LinkLost:
-        return MainWindow::tr("Link lost");
-    }
-    return {};
+    return session::RunWorkflow::modeText(mode);
 }
 
 void MainWindow::buildCentral()
@@ -89,56 +65,83 @@ void MainWindow::buildCentral()
 void MainWindow::connectMachine()
 {
     m_controller = new driver::MachineController(this);
+    m_link = new session::QtMachineLink<driver::MachineController>(*m_controller, this);
+    m_workflow = new session::RunWorkflow(*m_link, this);
+    m_consoleSession = new session::ConsoleSession(*m_workflow, *m_offsets, this);
     connect(m_controller, &driver::MachineController::stateChanged, this, &MainWindow::onState);
     connect(m_controller, &driver::MachineController::errorOccurred, this,
             &MainWindow::onMachineError);
     connect(m_controller, &driver::MachineController::logLine, this, &MainWindow::onLogLine);
-    connect(m_controller, &driver::MachineController::jobFinished, this, [this](bool ok) {
-        m_jobElapsedS = m_jobClock.isValid() ? m_jobClock.elapsed() / 1000.0 : 0;
-        m_jobClock.invalidate();
-        if (ok) {
-            m_run->setProgress(1.0, m_jobElapsedS, 0);
-            m_view->model()->setCutEntry(std::uint32_t(
-                std::max<std::size_t>(
-                    1, m_program->program().toolpath ? m_program->program().toolpath->size() : 1) -
-                1));
-            statusBar()->showMessage(
-                tr("Program finished in %1.").arg(RunPanel::formatDuration(m_jobElapsedS)), 15000);
-            m_console->appendInfo(tr("Program finished."));
-        }
-        updateRunPhase();
+
+    using session::RunWorkflow;
+    connect(m_workflow, &RunWorkflow::message, m_console, &ConsoleWidget::appendInfo);
+    connect(m_workflow, &RunWorkflow::failed, this, &MainWindow::showError);
+    connect(m_workflow, &RunWorkflow::jobStarted, this, &MainWindow::onJobStarted);
+    connect(m_workflow, &RunWorkflow::jobFinished, this, &MainWindow::onJobFinished);
+    connect(m_workflow, &RunWorkflow::checked, this, &MainWindow::onChecked);
+    connect(m_workflow, &RunWorkflow::connected, this, &MainWindow::onConnected);
+    connect(m_workflow, &RunWorkflow::linkLost, this, [this] {
+        // The preference as it is now (the settings may have changed it since connecting); the
+        // workflow reads it right after this signal.
+        m_workflow->setAutoReconnect(
+            QSettings().value(QStringLiteral("link/autoReconnect"), true).toBool());
+        showError(tr("The link to the unit was lost. The job position is kept: reconnect, then "
+                     "Resume."));
     });
+    connect(m_consoleSession, &session::ConsoleSession::message, m_console,
+            &ConsoleWidget::appendInfo);
+    connect(m_consoleSession, &session::ConsoleSession::failed, this, &MainWindow::showError);
+
+    // The program session plans; the workflow asks it to plan again from where the machine is.
+    m_workflow->setReplanner([this](const RunWorkflow::Position &startMm) {
+        m_program->setStartPosition(startMm);
+        m_program->reload();
+    });
+    connect(m_program, &ProgramSession::loaded, this, &MainWindow::offerProgram);
+    connect(m_program, &ProgramSession::loadFailed, this,
+            [this](const QString &why) { m_workflow->setProgram(nullptr, {}, QString(), why); });
 
     connectControls();
-
-    // Run or report once a (re-)load triggered by Run / Check has finished.
-    connect(m_program, &ProgramSession::loaded, this, [this] {
-        const bool run = std::exchange(m_runAfterLoad, false);
-        const bool check = std::exchange(m_checkAfterLoad, false);
-        const LoadedProgram &p = m_program->program();
-        if (check && p.runnable()) {
-            m_console->appendInfo(
-                tr("Check passed: %n move(s), estimated time %1, within the soft limits.", nullptr,
-                   int(p.planStats.vectors))
-                    .arg(RunPanel::formatDuration(p.estimatedS)));
-            statusBar()->showMessage(tr("Check passed."), 10000);
-        }
-        if (check)
-            emit programChecked(p.runnable());
-        if (run && p.runnable())
-            startPlannedRun();
-    });
-
-    m_reconnectTimer.setSingleShot(true);
-    m_reconnectTimer.setInterval(2000);
-    connect(&m_reconnectTimer, &QTimer::timeout, this, [this] {
-        if (!m_userDisconnected && m_controller->state().mode == MachineMode::LinkLost)
-            connectToUnit();
-    });
-    loadWorkOffsets();
+    connect(m_offsets, &session::WorkOffsets::changed, this, &MainWindow::onOffsetsChanged);
+    m_offsets->load();
     // The built-in emulator (or the profile's port) is connected as soon as the loop runs.
     QMetaObject::invokeMethod(
         this, [this] { connectToUnit(); }, Qt::QueuedConnection);
+}
+
+void MainWindow::onJobFinished(bool ok)
+{
+    const double elapsedS = m_workflow->jobElapsedS();
+    if (ok) {
+        m_run->setProgress(1.0, elapsedS, 0);
+        const auto &toolpath = m_program->program().toolpath;
+        m_view->model()->setCutEntry(
+            std::uint32_t(std::max<std::size_t>(1, toolpath ? toolpath->size() : 1) - 1));
+        statusBar()->showMessage(
+            tr("Program finished in %1.").arg(RunPanel::formatDuration(elapsedS)), 15000);
+        m_console->appendInfo(tr("Program finished."));
+    }
+    updateRunPhase();
+}
+
+void MainWindow::onChecked(bool ok)
+{
+    const LoadedProgram &p = m_program->program();
+    if (ok) {
+        m_console->appendInfo(
+            tr("Check passed: %n move(s), estimated time %1, within the soft limits.", nullptr,
+               int(p.planStats.vectors))
+                .arg(RunPanel::formatDuration(p.estimatedS)));
+        statusBar()->showMessage(tr("Check passed."), 10000);
+    }
+    emit programChecked(ok);
+}
+
+void MainWindow::onConnected()
+{
+    for (const auto &d : m_controller->state().eepromDifferences)
+        m_console->appendInfo(
+            tr("Unit EEPROM differs from the profile: %1").arg(QString::fromStdString(d)));
 }
 
 void MainWindow::connectControls()
@@ -146,22 +149,17 @@ void MainWindow::connectControls()
     // Operator controls.
     connect(m_run, &RunPanel::runRequested, this, &MainWindow::runProgram);
     connect(m_run, &RunPanel::checkRequested, this, &MainWindow::checkProgram);
-    connect(m_run, &RunPanel::pauseRequested, m_controller, &driver::MachineController::pause);
-    connect(m_run, &RunPanel::resumeRequested, m_controller, &driver::MachineController::resume);
-    connect(m_run, &RunPanel::stopRequested, m_controller, &driver::MachineController::abort);
-    connect(m_run, &RunPanel::abortRequested, m_controller, &driver::MachineController::abort);
-    connect(m_run, &RunPanel::toolLiftRequested, this, [this] {
-        m_savedSpindleRpm = m_controller->state().spindleRpm;
-        m_controller->toolLift(m_hold->stopSpindleOnLift());
-    });
-    connect(m_hold, &HoldBanner::continueRequested, m_controller,
-            &driver::MachineController::resume);
-    connect(m_hold, &HoldBanner::abortRequested, m_controller, &driver::MachineController::abort);
-    connect(m_hold, &HoldBanner::liftRequested, this, [this](bool stopSpindle) {
-        m_savedSpindleRpm = m_controller->state().spindleRpm;
-        m_controller->toolLift(stopSpindle);
-    });
-    connect(m_hold, &HoldBanner::lowerRequested, this, &MainWindow::lowerTool);
+    using session::RunWorkflow;
+    connect(m_run, &RunPanel::pauseRequested, m_workflow, &RunWorkflow::pause);
+    connect(m_run, &RunPanel::resumeRequested, m_workflow, &RunWorkflow::resume);
+    connect(m_run, &RunPanel::stopRequested, m_workflow, &RunWorkflow::abort);
+    connect(m_run, &RunPanel::abortRequested, m_workflow, &RunWorkflow::abort);
+    connect(m_run, &RunPanel::toolLiftRequested, this,
+            [this] { m_workflow->toolLift(m_hold->stopSpindleOnLift()); });
+    connect(m_hold, &HoldBanner::continueRequested, m_workflow, &RunWorkflow::resume);
+    connect(m_hold, &HoldBanner::abortRequested, m_workflow, &RunWorkflow::abort);
+    connect(m_hold, &HoldBanner::liftRequested, m_workflow, &RunWorkflow::toolLift);
+    connect(m_hold, &HoldBanner::lowerRequested, m_workflow, &RunWorkflow::lowerTool);
 
     connect(m_jog, &JogPanel::jogStepRequested, this, &MainWindow::jogStep);
     connect(m_jog, &JogPanel::jogContinuousStarted, m_controller,
@@ -176,7 +174,7 @@ void MainWindow::connectControls()
     connect(m_outputs, &OutputsPanel::spindleRequested, this,
             [this](bool on, double rpm) { m_controller->setSpindleRpm(on ? rpm : 0.0); });
     auto outputFunction = [this](machine::OutputFunction f, bool on) {
-        const std::uint8_t bit = machine::outputBit(m_profile, f);
+        const std::uint8_t bit = machine::outputBit(profile(), f);
         if (!bit) {
             showError(tr("No output of this machine is set up for that function; assign one in "
                          "Settings › Machine profile › Outputs."));
@@ -202,48 +200,27 @@ void MainWindow::connectControls()
     connect(m_dro, &DroWidget::zeroAxisRequested, this, &MainWindow::setWorkZero);
     connect(m_dro, &DroWidget::zeroAllRequested, this, [this] { setWorkZero(-1); });
     connect(m_dro, &DroWidget::offsetSelected, this, &MainWindow::selectWorkOffset);
-    connect(m_console, &ConsoleWidget::manualLineEntered, this, &MainWindow::executeManualLine);
+    connect(m_console, &ConsoleWidget::manualLineEntered, m_consoleSession,
+            &session::ConsoleSession::execute);
 }
 
 void MainWindow::connectToUnit()
 {
-    m_userDisconnected = false;
-    m_controller->setMachineConfig(m_profile);
-    driver::ConnectionSettings settings;
-    const QString port = QString::fromStdString(m_profile.link.port);
-    if (port.isEmpty() || port == QLatin1String("emulator")) {
-        settings.kind = driver::ConnectionSettings::Kind::Emulator;
-    } else {
-        settings.kind = driver::ConnectionSettings::Kind::SerialPort;
-        settings.portName = port;
-    }
-    settings.baud = m_profile.link.baud;
-    QSettings().setValue(QStringLiteral("link/port"), port);
-    m_console->appendInfo(tr("Connecting to %1 at %2 Bd…")
-                              .arg(settings.kind == driver::ConnectionSettings::Kind::Emulator
-                                       ? tr("the built-in emulator")
-                                       : port)
-                              .arg(settings.baud));
-    m_controller->connectTo(settings);
+    QSettings settings;
+    settings.setValue(QStringLiteral("link/port"), QString::fromStdString(profile().link.port));
+    m_workflow->setAutoReconnect(
+        settings.value(QStringLiteral("link/autoReconnect"), true).toBool());
+    m_workflow->connectToUnit(session::RunWorkflow::connectionFor(profile()));
 }
 
 void MainWindow::disconnectFromUnit()
 {
-    m_userDisconnected = true;
-    m_controller->disconnectFromUnit();
-}
-
-std::array<double, 4> MainWindow::workPosition(const std::array<double, 4> &machineMm) const
-{
-    std::array<double, 4> w{};
-    for (std::size_t i = 0; i < 4; ++i)
-        w[i] = machineMm[i] - m_offsets[std::size_t(m_activeOffset)][i];
-    return w;
+    m_workflow->disconnectFromUnit();
 }
 
 void MainWindow::onState(const driver::MachineState &state)
 {
-    m_dro->setPositions(state.positionMm, workPosition(state.positionMm));
+    m_dro->setPositions(state.positionMm, m_offsets->workPosition(state.positionMm));
     const auto homed = [&state](int axis) { return ((state.homedAxes >> axis) & 1) != 0; };
     m_dro->setHomed({homed(0), homed(1), homed(2), homed(3)});
     m_view->model()->setToolPosition(QVector3D(
@@ -254,7 +231,7 @@ void MainWindow::onState(const driver::MachineState &state)
         std::uint8_t(logicalOutputs(state.outputs) | (state.spindlePermille > 0 ? 0x01 : 0));
     m_io->setIo(inputs, outputs, state.run, state.inta);
     auto on = [&](machine::OutputFunction f) {
-        const std::uint8_t bit = machine::outputBit(m_profile, f);
+        const std::uint8_t bit = machine::outputBit(profile(), f);
         return bit && !(state.outputs & bit);
     };
     m_outputs->showState(state.spindlePermille > 0, on(machine::OutputFunction::Coolant),
@@ -279,18 +256,6 @@ void MainWindow::onState(const driver::MachineState &state)
     }
     updateProgress(state);
     updateHold(state);
-    if (state.mode == MachineMode::LinkLost && m_lastMode != MachineMode::LinkLost) {
-        showError(tr("The link to the unit was lost. The job position is kept: reconnect, then "
-                     "Resume."));
-        if (QSettings().value(QStringLiteral("link/autoReconnect"), true).toBool())
-            m_reconnectTimer.start();
-    }
-    if (state.mode == MachineMode::Idle && m_lastMode == MachineMode::Connecting) {
-        for (const auto &d : state.eepromDifferences)
-            m_console->appendInfo(
-                tr("Unit EEPROM differs from the profile: %1").arg(QString::fromStdString(d)));
-    }
-    m_lastMode = state.mode;
     updateRunPhase();
 }
 
@@ -298,9 +263,7 @@ void MainWindow::updateProgress(const driver::MachineState &state)
 {
     if (!state.jobActive)
         return;
-    if (!m_jobClock.isValid())
-        m_jobClock.start();
-    const double elapsed = m_jobClock.elapsed() / 1000.0;
+    const double elapsed = m_workflow->jobElapsedS();
     // ETA from the planner's model at the line being cut; the driver's own figure otherwise.
     const LoadedProgram &p = m_program->program();
     const double planned = p.remainingS(state.sourceLine);
@@ -309,7 +272,7 @@ void MainWindow::updateProgress(const driver::MachineState &state)
     else
         m_run->setProgress(state.progress, elapsed, state.etaS);
     // Actual speed from the live position (mm/min along the travelled path).
-    const qint64 now = m_jobClock.elapsed();
+    const qint64 now = qint64(elapsed * 1000);
     if (m_lastPosMs >= 0 && now > m_lastPosMs) {
         double d2 = 0;
         for (std::size_t i = 0; i < 3; ++i)
@@ -347,27 +310,9 @@ void MainWindow::updateHold(const driver::MachineState &state)
         default:
             kind = K::Paused;
         }
-        if (m_continueAfterLower) {
-            // The tool is back down after "Lower and continue".
-            m_continueAfterLower = false;
-            m_controller->resume();
-        }
     }
     if (kind != m_hold->kind())
         m_hold->showHold(kind, int(state.sourceLine), QString::fromStdString(state.holdText));
-}
-
-void MainWindow::lowerTool(double newFeedMmPerMin, bool thenContinue)
-{
-    // Spindle back on first when the lift stopped it, then lower (K/R and the new speed are the
-    // driver's), then continue once the machine is held again with the tool down.
-    if (m_savedSpindleRpm > 0 && m_controller->state().spindlePermille == 0)
-        m_controller->setSpindleRpm(m_savedSpindleRpm);
-    int pulses = 0;
-    if (newFeedMmPerMin > 0)
-        pulses = int(std::lround(newFeedMmPerMin / 60.0 * m_profile.axes[0].stepsPerMm));
-    m_continueAfterLower = thenContinue;
-    m_controller->toolLower(pulses);
 }
 
 void MainWindow::onMachineError(const driver::MachineError &error)

@@ -6,51 +6,6 @@
 #include <cmath>
 
 namespace frezka::gui {
-namespace {
-
-const char *planErrorWhat(machine::PlanErrorCode code)
-{
-    using C = machine::PlanErrorCode;
-    switch (code) {
-    case C::SoftLimit:
-        return QT_TRANSLATE_NOOP("frezka::gui::Plan",
-                                 "the move leaves the machine's travel (soft limits); check the "
-                                 "work zero and the program");
-    case C::AbsentAxis:
-        return QT_TRANSLATE_NOOP("frezka::gui::Plan",
-                                 "the program moves an axis this machine does not have");
-    case C::CounterOverflow:
-        return QT_TRANSLATE_NOOP("frezka::gui::Plan",
-                                 "the position is beyond the unit's step counters");
-    case C::NoFeed:
-        return QT_TRANSLATE_NOOP("frezka::gui::Plan", "a feed move has no feed rate (F)");
-    case C::SpindleTooFast:
-        return QT_TRANSLATE_NOOP("frezka::gui::Plan",
-                                 "the spindle speed (S) is above the machine's maximum");
-    case C::Unsupported:
-        return QT_TRANSLATE_NOOP("frezka::gui::Plan", "the unit cannot do this");
-    case C::FeedCapped:
-        return QT_TRANSLATE_NOOP("frezka::gui::Plan",
-                                 "the feed is above what the machine's axes can do; it runs "
-                                 "slower than programmed");
-    }
-    return "";
-}
-
-} // namespace
-
-QString planErrorText(const QString &fileName, const machine::PlanError &error)
-{
-    const QString what =
-        QCoreApplication::translate("frezka::gui::Plan", planErrorWhat(error.code));
-    if (error.line == 0)
-        return QCoreApplication::translate("frezka::gui::Plan", "%1: %2 (%3)")
-            .arg(fileName, what, QString::fromStdString(error.message));
-    return QCoreApplication::translate("frezka::gui::Plan", "%1:%2: %3 (%4)")
-        .arg(fileName)
-        .arg(error.line)
-        .arg(what, QString::fromStdString(error.message));
-}
 
 std::vector<SpeedSample> plannedSpeed(const machine::UnitProgram &program,
                                       const machine::MachineConfig &config, bool speedModeVk)
@@ -129,23 +84,20 @@ std::vector<float> plannedLineTimes(const machine::UnitProgram &program,
 AnalyseFn plannerAnalyser(const machine::MachineConfig &config, double feedOverride)
 {
     return [config, feedOverride](LoadedProgram &program, const std::atomic_bool *) {
-        machine::PlanOptions options;
-        options.feedOverride = feedOverride;
-        const machine::PlanResult result = machine::plan(*program.toolpath, config, options);
-        const QString file = QFileInfo(program.path).fileName();
-        for (const auto &e : result.errors)
-            program.errors.push_back({int(e.line), 0, planErrorText(file, e)});
-        for (const auto &w : result.warnings)
-            program.warnings.push_back({int(w.line), 0, planErrorText(file, w)});
+        const session::PlanOutcome result = session::planProgram(
+            *program.toolpath, config, QFileInfo(program.path).fileName(), feedOverride);
+        program.errors.insert(program.errors.end(), result.errors.begin(), result.errors.end());
+        program.warnings.insert(program.warnings.end(), result.warnings.begin(),
+                                result.warnings.end());
         if (!result.ok())
             return;
         program.estimatedS = result.stats.estimatedS;
         // Decimated here, off the GUI thread (min and max of each bucket survive).
         program.speed =
-            decimateSpeed(plannedSpeed(result.program, config, result.stats.speedModeVk), 4000);
-        program.lineEndS = plannedLineTimes(result.program, config, result.stats.speedModeVk,
+            decimateSpeed(plannedSpeed(*result.program, config, result.stats.speedModeVk), 4000);
+        program.lineEndS = plannedLineTimes(*result.program, config, result.stats.speedModeVk,
                                             result.stats.estimatedS);
-        program.unitProgram = std::make_shared<machine::UnitProgram>(result.program);
+        program.unitProgram = result.program;
         program.planStats = result.stats;
     };
 }

@@ -8,6 +8,8 @@
 
 #include "machine/machineconfig.h"
 #include "machine/planner.h"
+#include "session/planerrortext.h"
+#include "session/programplanner.h"
 
 namespace frezka::gui {
 
@@ -24,7 +26,7 @@ std::vector<float> plannedLineTimes(const machine::UnitProgram &program,
                                     const machine::MachineConfig &config, bool speedModeVk,
                                     double totalS);
 
-// Translated one-line text of a plan error.
-QString planErrorText(const QString &fileName, const machine::PlanError &error);
+// Translated one-line text of a plan error (the session layer's).
+using session::planErrorText;
 
 } // namespace frezka::gui

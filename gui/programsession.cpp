@@ -69,12 +69,6 @@ ProgramSession::~ProgramSession()
     cancel();
 }
 
-void ProgramSession::setWorkOffsets(const WorkOffsets &offsets, int active)
-{
-    m_offsets = offsets;
-    m_activeOffset = active;
-}
-
 void ProgramSession::cancel()
 {
     if (!m_thread)
@@ -105,8 +99,7 @@ void ProgramSession::load(const QString &path)
     auto stage = m_stage;
     const InterpretFn interpret = m_interpret;
     const AnalyseFn analyse = m_analyse;
-    const WorkOffsets offsets = m_offsets;
-    const int active = m_activeOffset;
+    const session::OffsetState offsets = m_offsets;
     const std::array<double, 4> startMm = m_startMm;
     const std::size_t maxSegments = m_maxSegments;
     const bool glVertices = m_glVertices;
@@ -150,7 +143,6 @@ void ProgramSession::load(const QString &path)
         req.text = data;
         req.fileName = QFileInfo(path).fileName();
         req.offsets = offsets;
-        req.activeOffset = active;
         req.startMm = startMm;
         req.cancel = cancelFlag.get();
         req.progress = [&](double f) { progress->store(int(f * 1000)); };

@@ -11,6 +11,8 @@
 #include "gcode/toolpath.h"
 #include "machine/planner.h"
 #include "machine/unitprogram.h"
+#include "session/programplanner.h"
+#include "session/workoffsets.h"
 
 #include <QObject>
 #include <QString>
@@ -25,16 +27,7 @@ class QThread;
 
 namespace frezka::gui {
 
-struct ProgramMessage
-{
-    int line = 0;   // 1-based, 0 = whole file
-    int column = 0; // 1-based, 0 = none
-    QString text;   // complete, in the user's language: what, where, what to do
-    friend bool operator==(const ProgramMessage &, const ProgramMessage &) = default;
-};
-
-// Work offsets G54..G59 (mm, X Y Z A), applied when the program is interpreted.
-using WorkOffsets = std::array<std::array<double, 4>, 6>;
+using session::ProgramMessage;
 
 struct LoadedProgram
 {
@@ -60,22 +53,8 @@ struct LoadedProgram
     double remainingS(std::uint32_t line) const;
 };
 
-struct InterpretRequest
-{
-    QByteArray text;
-    QString fileName;
-    WorkOffsets offsets{};
-    int activeOffset = 0;
-    std::array<double, 4> startMm{}; // machine position the program starts from
-    const std::atomic_bool *cancel = nullptr;
-    std::function<void(double)> progress; // fraction 0..1 of this step
-};
-
-struct InterpretOutcome
-{
-    std::shared_ptr<gcode::Toolpath> toolpath;
-    std::vector<ProgramMessage> errors;
-};
+using session::InterpretOutcome;
+using session::InterpretRequest;
 
 // The interpreter step, set by whoever links the G-code interpreter (defaultInterpreter()).
 using InterpretFn = std::function<InterpretOutcome(const InterpretRequest &)>;
@@ -94,11 +73,10 @@ public:
     void setAnalyser(AnalyseFn fn) { m_analyse = std::move(fn); }
     void setMaxSceneSegments(std::size_t n) { m_maxSegments = n; }
     void setSceneGlVertices(bool on) { m_glVertices = on; }
-    void setWorkOffsets(const WorkOffsets &offsets, int active);
+    void setWorkOffsets(const session::OffsetState &offsets) { m_offsets = offsets; }
     // Machine position the next interpretation starts from (mm X Y Z A).
     void setStartPosition(const std::array<double, 4> &mm) { m_startMm = mm; }
-    const WorkOffsets &workOffsets() const { return m_offsets; }
-    int activeOffset() const { return m_activeOffset; }
+    const session::OffsetState &workOffsets() const { return m_offsets; }
 
     // Loads (replacing any load in progress). loaded() or loadFailed() follows.
     void load(const QString &path);
@@ -122,8 +100,7 @@ private:
     AnalyseFn m_analyse;
     std::size_t m_maxSegments = 1'500'000;
     bool m_glVertices = false;
-    WorkOffsets m_offsets{};
-    int m_activeOffset = 0;
+    session::OffsetState m_offsets;
     std::array<double, 4> m_startMm{};
     LoadedProgram m_program;
     QThread *m_thread = nullptr;

@@ -195,36 +195,12 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>%1:%2: warning: %3
-</source>
-        <translation>%1:%2: varování: %3
-</translation>
-    </message>
-    <message>
-        <source>%1:%2: %3
-</source>
-        <translation>%1:%2: %3
-</translation>
-    </message>
-    <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
         <translation><byte value="xd"/>[%1] %2% řádek %3 zbývá %4 </translation>
     </message>
     <message>
-        <source> [command %1]</source>
-        <translation> [příkaz %1]</translation>
-    </message>
-    <message>
-        <source> [reply &apos;%1&apos;]</source>
-        <translation> [odpověď &apos;%1&apos;]</translation>
-    </message>
-    <message>
         <source>could not connect to the emulator</source>
         <translation>nelze se připojit k emulátoru</translation>
-    </message>
-    <message>
-        <source>the job stopped: %1</source>
-        <translation>úloha se zastavila: %1</translation>
     </message>
     <message>
         <source>%1: %2
@@ -240,6 +216,12 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>%1: the unit&apos;s counters differ from the planned end position
 </source>
         <translation>%1: čítače jednotky se liší od plánované koncové polohy
+</translation>
+    </message>
+    <message>
+        <source>warning: %1
+</source>
+        <translation>varování: %1
 </translation>
     </message>
 </context>
@@ -1768,50 +1750,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Kryt nástrojů</translation>
     </message>
     <message>
-        <source>Not connected</source>
-        <translation>Nepřipojeno</translation>
-    </message>
-    <message>
-        <source>Connecting…</source>
-        <translation>Připojuji…</translation>
-    </message>
-    <message>
-        <source>Ready</source>
-        <translation>Připraveno</translation>
-    </message>
-    <message>
-        <source>Homing</source>
-        <translation>Najíždění do reference</translation>
-    </message>
-    <message>
-        <source>Jogging</source>
-        <translation>Ruční pohyb</translation>
-    </message>
-    <message>
-        <source>Running</source>
-        <translation>Obrábění</translation>
-    </message>
-    <message>
-        <source>Stopping</source>
-        <translation>Zastavuji</translation>
-    </message>
-    <message>
-        <source>Paused</source>
-        <translation>Pozastaveno</translation>
-    </message>
-    <message>
-        <source>Tool lifted</source>
-        <translation>Nástroj zvednut</translation>
-    </message>
-    <message>
-        <source>Alarm</source>
-        <translation>Alarm</translation>
-    </message>
-    <message>
-        <source>Link lost</source>
-        <translation>Spojení ztraceno</translation>
-    </message>
-    <message>
         <source>Program finished in %1.</source>
         <translation>Program dokončen za %1.</translation>
     </message>
@@ -1834,14 +1772,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Check passed.</source>
         <translation>Kontrola v pořádku.</translation>
-    </message>
-    <message>
-        <source>Connecting to %1 at %2 Bd…</source>
-        <translation>Připojuji se k %1 rychlostí %2 Bd…</translation>
-    </message>
-    <message>
-        <source>the built-in emulator</source>
-        <translation>vestavěnému emulátoru</translation>
     </message>
     <message>
         <source>Line %1</source>
@@ -1876,42 +1806,12 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Nejprve otevřete program.</translation>
     </message>
     <message>
-        <source>The program has errors and cannot run:
-%1</source>
-        <translation>Program obsahuje chyby a nelze jej spustit:
-%1</translation>
-    </message>
-    <message>
-        <source>The machine is not ready (%1); wait until it is, then Run.</source>
-        <translation>Stroj není připraven (%1); počkejte a pak stiskněte Spustit.</translation>
-    </message>
-    <message>
-        <source>Planning from the current position…</source>
-        <translation>Plánuji od současné polohy…</translation>
-    </message>
-    <message>
-        <source>Running %1.</source>
-        <translation>Obrábím %1.</translation>
-    </message>
-    <message>
         <source>Jog refused: %1 would go to %2 mm, outside the soft limits %3 … %4 mm.</source>
         <translation>Ruční pohyb odmítnut: %1 by jela na %2 mm, mimo softwarové limity %3 … %4 mm.</translation>
     </message>
     <message>
         <source>Set the work zero while the machine is ready and still.</source>
         <translation>Nulový bod obrobku nastavujte, když je stroj připraven a stojí.</translation>
-    </message>
-    <message>
-        <source>Manual G-code runs only while the machine is ready.</source>
-        <translation>Ruční G-kód lze spustit jen tehdy, když je stroj připraven.</translation>
-    </message>
-    <message>
-        <source>manual line</source>
-        <translation>ruční řádek</translation>
-    </message>
-    <message>
-        <source>Manual: %1</source>
-        <translation>Ručně: %1</translation>
     </message>
 </context>
 <context>
@@ -3141,6 +3041,122 @@ Volby:
     <message>
         <source>&apos;%1&apos; is not a firmware string of the %2</source>
         <translation>&apos;%1&apos; není řetězec firmwaru jednotky %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session::ConsoleSession</name>
+    <message>
+        <source>Manual G-code runs only while the machine is ready.</source>
+        <translation>Ruční G-kód lze spustit jen tehdy, když je stroj připraven.</translation>
+    </message>
+    <message>
+        <source>manual line</source>
+        <translation>ruční řádek</translation>
+    </message>
+    <message>
+        <source>Manual: %1 (%2)</source>
+        <translation>Ručně: %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session::RunWorkflow</name>
+    <message>
+        <source>Not connected</source>
+        <translation>Nepřipojeno</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>Připojuji…</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Připraveno</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Najíždění do reference</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Ruční pohyb</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Obrábění</translation>
+    </message>
+    <message>
+        <source>Stopping</source>
+        <translation>Zastavuji</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Pozastaveno</translation>
+    </message>
+    <message>
+        <source>Tool lifted</source>
+        <translation>Nástroj zvednut</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Spojení ztraceno</translation>
+    </message>
+    <message>
+        <source>Connecting to %1 at %2 Bd…</source>
+        <translation>Připojuji se k %1 rychlostí %2 Bd…</translation>
+    </message>
+    <message>
+        <source>the built-in emulator</source>
+        <translation>vestavěnému emulátoru</translation>
+    </message>
+    <message>
+        <source>Open a program first.</source>
+        <translation>Nejprve otevřete program.</translation>
+    </message>
+    <message>
+        <source>The program has errors and cannot run:
+%1</source>
+        <translation>Program obsahuje chyby a nelze jej spustit:
+%1</translation>
+    </message>
+    <message>
+        <source>The machine is not ready (%1); wait until it is, then Run.</source>
+        <translation>Stroj není připraven (%1); počkejte a pak stiskněte Spustit.</translation>
+    </message>
+    <message>
+        <source>Planning from the current position…</source>
+        <translation>Plánuji od současné polohy…</translation>
+    </message>
+    <message>
+        <source>Running %1.</source>
+        <translation>Obrábím %1.</translation>
+    </message>
+    <message>
+        <source>the machine stopped: %1</source>
+        <translation>stroj se zastavil: %1</translation>
+    </message>
+    <message>
+        <source>the job stopped: %1</source>
+        <translation>úloha se zastavila: %1</translation>
+    </message>
+    <message>
+        <source>homing did not finish</source>
+        <translation>najíždění do reference nedoběhlo</translation>
+    </message>
+    <message>
+        <source> [command %1]</source>
+        <translation> [příkaz %1]</translation>
+    </message>
+    <message>
+        <source> [reply &apos;%1&apos;]</source>
+        <translation> [odpověď &apos;%1&apos;]</translation>
+    </message>
+    <message>
+        <source>the job did not finish</source>
+        <translation>úloha nedoběhla</translation>
     </message>
 </context>
 <context>

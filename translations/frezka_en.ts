@@ -195,36 +195,12 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>%1:%2: warning: %3
-</source>
-        <translation>%1:%2: warning: %3
-</translation>
-    </message>
-    <message>
-        <source>%1:%2: %3
-</source>
-        <translation>%1:%2: %3
-</translation>
-    </message>
-    <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
         <translation><byte value="xd"/>[%1] %2% line %3 ETA %4 </translation>
     </message>
     <message>
-        <source> [command %1]</source>
-        <translation> [command %1]</translation>
-    </message>
-    <message>
-        <source> [reply &apos;%1&apos;]</source>
-        <translation> [reply &apos;%1&apos;]</translation>
-    </message>
-    <message>
         <source>could not connect to the emulator</source>
         <translation>could not connect to the emulator</translation>
-    </message>
-    <message>
-        <source>the job stopped: %1</source>
-        <translation>the job stopped: %1</translation>
     </message>
     <message>
         <source>%1: %2
@@ -240,6 +216,12 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>%1: the unit&apos;s counters differ from the planned end position
 </source>
         <translation>%1: the unit&apos;s counters differ from the planned end position
+</translation>
+    </message>
+    <message>
+        <source>warning: %1
+</source>
+        <translation>warning: %1
 </translation>
     </message>
 </context>
@@ -1764,50 +1746,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>Tool cover</translation>
     </message>
     <message>
-        <source>Not connected</source>
-        <translation>Not connected</translation>
-    </message>
-    <message>
-        <source>Connecting…</source>
-        <translation>Connecting…</translation>
-    </message>
-    <message>
-        <source>Ready</source>
-        <translation>Ready</translation>
-    </message>
-    <message>
-        <source>Homing</source>
-        <translation>Homing</translation>
-    </message>
-    <message>
-        <source>Jogging</source>
-        <translation>Jogging</translation>
-    </message>
-    <message>
-        <source>Running</source>
-        <translation>Running</translation>
-    </message>
-    <message>
-        <source>Stopping</source>
-        <translation>Stopping</translation>
-    </message>
-    <message>
-        <source>Paused</source>
-        <translation>Paused</translation>
-    </message>
-    <message>
-        <source>Tool lifted</source>
-        <translation>Tool lifted</translation>
-    </message>
-    <message>
-        <source>Alarm</source>
-        <translation>Alarm</translation>
-    </message>
-    <message>
-        <source>Link lost</source>
-        <translation>Link lost</translation>
-    </message>
-    <message>
         <source>Program finished in %1.</source>
         <translation>Program finished in %1.</translation>
     </message>
@@ -1829,14 +1767,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Check passed.</source>
         <translation>Check passed.</translation>
-    </message>
-    <message>
-        <source>Connecting to %1 at %2 Bd…</source>
-        <translation>Connecting to %1 at %2 Bd…</translation>
-    </message>
-    <message>
-        <source>the built-in emulator</source>
-        <translation>the built-in emulator</translation>
     </message>
     <message>
         <source>Line %1</source>
@@ -1871,42 +1801,12 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>Open a program first.</translation>
     </message>
     <message>
-        <source>The program has errors and cannot run:
-%1</source>
-        <translation>The program has errors and cannot run:
-%1</translation>
-    </message>
-    <message>
-        <source>The machine is not ready (%1); wait until it is, then Run.</source>
-        <translation>The machine is not ready (%1); wait until it is, then Run.</translation>
-    </message>
-    <message>
-        <source>Planning from the current position…</source>
-        <translation>Planning from the current position…</translation>
-    </message>
-    <message>
-        <source>Running %1.</source>
-        <translation>Running %1.</translation>
-    </message>
-    <message>
         <source>Jog refused: %1 would go to %2 mm, outside the soft limits %3 … %4 mm.</source>
         <translation>Jog refused: %1 would go to %2 mm, outside the soft limits %3 … %4 mm.</translation>
     </message>
     <message>
         <source>Set the work zero while the machine is ready and still.</source>
         <translation>Set the work zero while the machine is ready and still.</translation>
-    </message>
-    <message>
-        <source>Manual G-code runs only while the machine is ready.</source>
-        <translation>Manual G-code runs only while the machine is ready.</translation>
-    </message>
-    <message>
-        <source>manual line</source>
-        <translation>manual line</translation>
-    </message>
-    <message>
-        <source>Manual: %1</source>
-        <translation>Manual: %1</translation>
     </message>
 </context>
 <context>
@@ -3132,6 +3032,122 @@ Options:
     <message>
         <source>&apos;%1&apos; is not a firmware string of the %2</source>
         <translation>&apos;%1&apos; is not a firmware string of the %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session::ConsoleSession</name>
+    <message>
+        <source>Manual G-code runs only while the machine is ready.</source>
+        <translation>Manual G-code runs only while the machine is ready.</translation>
+    </message>
+    <message>
+        <source>manual line</source>
+        <translation>manual line</translation>
+    </message>
+    <message>
+        <source>Manual: %1 (%2)</source>
+        <translation>Manual: %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session::RunWorkflow</name>
+    <message>
+        <source>Not connected</source>
+        <translation>Not connected</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>Connecting…</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Ready</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Homing</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Jogging</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Running</translation>
+    </message>
+    <message>
+        <source>Stopping</source>
+        <translation>Stopping</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Paused</translation>
+    </message>
+    <message>
+        <source>Tool lifted</source>
+        <translation>Tool lifted</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Link lost</translation>
+    </message>
+    <message>
+        <source>Connecting to %1 at %2 Bd…</source>
+        <translation>Connecting to %1 at %2 Bd…</translation>
+    </message>
+    <message>
+        <source>the built-in emulator</source>
+        <translation>the built-in emulator</translation>
+    </message>
+    <message>
+        <source>Open a program first.</source>
+        <translation>Open a program first.</translation>
+    </message>
+    <message>
+        <source>The program has errors and cannot run:
+%1</source>
+        <translation>The program has errors and cannot run:
+%1</translation>
+    </message>
+    <message>
+        <source>The machine is not ready (%1); wait until it is, then Run.</source>
+        <translation>The machine is not ready (%1); wait until it is, then Run.</translation>
+    </message>
+    <message>
+        <source>Planning from the current position…</source>
+        <translation>Planning from the current position…</translation>
+    </message>
+    <message>
+        <source>Running %1.</source>
+        <translation>Running %1.</translation>
+    </message>
+    <message>
+        <source>the machine stopped: %1</source>
+        <translation>the machine stopped: %1</translation>
+    </message>
+    <message>
+        <source>the job stopped: %1</source>
+        <translation>the job stopped: %1</translation>
+    </message>
+    <message>
+        <source>homing did not finish</source>
+        <translation>homing did not finish</translation>
+    </message>
+    <message>
+        <source> [command %1]</source>
+        <translation> [command %1]</translation>
+    </message>
+    <message>
+        <source> [reply &apos;%1&apos;]</source>
+        <translation> [reply &apos;%1&apos;]</translation>
+    </message>
+    <message>
+        <source>the job did not finish</source>
+        <translation>the job did not finish</translation>
     </message>
 </context>
 <context>

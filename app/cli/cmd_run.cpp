@@ -2,8 +2,9 @@
 //                     [--faults RATE --seed N] [--clock virtual|real] [--home]
 //                     [--return-to-path]
 //
-// Interprets and plans FILE for the machine profile, connects (a serial port / pty, or the
-// in-process emulator), optionally homes, runs the job with a progress bar on a terminal
+// Interprets and plans FILE for the machine profile, then the session's run workflow (the one
+// the GUI drives) connects (a serial port / pty, or the in-process emulator), optionally homes,
+// and runs the job with a progress bar on a terminal
 // (line, %, ETA) and ends with one JSON line of figures on stdout. Exit code 0 when the job ran
 // to its end, 1 on any error (on stderr), 2 on bad usage.
 //
@@ -21,12 +22,16 @@
 #include "driver/link/emulatorport.h"
 #include "driver/link/emulatortransport.h"
 #include "driver/link/linkworker.h"
-#include "driver/link/simrunner.h"
 #include "gcode/interpreter.h"
 #include "machine/planner.h"
+#include "session/programplanner.h"
+#include "session/qtmachinelink.h"
+#include "session/runworkflow.h"
+#include "session/simlink.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -119,8 +124,16 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
     return a;
 }
 
-// Profile, G-code, plan. Prints every error; nullopt on failure.
-std::optional<std::pair<machine::MachineConfig, machine::PlanResult>> prepare(const RunArgs &a)
+// Profile, then the program checked and planned as the GUI does it (the session layer; no work
+// offsets, from the machine zero). Prints every error; nullopt on failure.
+struct Prepared
+{
+    machine::MachineConfig config;
+    machine::UnitProgram program;
+    machine::PlanStats stats;
+};
+
+std::optional<Prepared> prepare(const RunArgs &a)
 {
     machine::MachineConfig config = machine::defaultMachineConfig(protocol::Variant::Gve64);
     if (!a.machine.isEmpty()) {
@@ -138,27 +151,31 @@ std::optional<std::pair<machine::MachineConfig, machine::PlanResult>> prepare(co
     // The in-process emulator's link has the latency given here: the plan keeps its pace.
     if (a.port == QLatin1String("sim"))
         config.link.latencyMs = a.latencyMs;
-    const gcode::Result g = gcode::interpretFile(a.file.toStdString());
-    if (!g.ok()) {
-        for (const gcode::Error &e : g.errors)
-            cli::err(gcode::formatError(a.file, e) + QLatin1Char('\n'));
+    QFile file(a.file);
+    if (!file.open(QIODevice::ReadOnly)) {
+        cli::err(gcode::formatError(
+                     a.file, {gcode::ErrorCode::FileOpenFailed, 0, 0, a.file.toStdString()}) +
+                 QLatin1Char('\n'));
         return std::nullopt;
     }
-    machine::PlanResult p = machine::plan(g.toolpath, config);
-    for (const machine::PlanError &w : p.warnings)
-        cli::err(RunCli::tr("%1:%2: warning: %3\n")
-                     .arg(a.file)
-                     .arg(w.line)
-                     .arg(QString::fromStdString(w.message)));
+    session::InterpretRequest request;
+    request.text = file.readAll();
+    request.fileName = a.file;
+    const session::InterpretOutcome g = session::interpretProgram(request);
+    if (!g.errors.empty()) {
+        for (const session::ProgramMessage &e : g.errors)
+            cli::err(e.text + QLatin1Char('\n'));
+        return std::nullopt;
+    }
+    session::PlanOutcome p = session::planProgram(*g.toolpath, config, a.file);
+    for (const session::ProgramMessage &w : p.warnings)
+        cli::err(RunCli::tr("warning: %1\n").arg(w.text));
     if (!p.ok()) {
-        for (const machine::PlanError &e : p.errors)
-            cli::err(RunCli::tr("%1:%2: %3\n")
-                         .arg(a.file)
-                         .arg(e.line)
-                         .arg(QString::fromStdString(e.message)));
+        for (const session::ProgramMessage &e : p.errors)
+            cli::err(e.text + QLatin1Char('\n'));
         return std::nullopt;
     }
-    return std::make_pair(config, std::move(p));
+    return Prepared{config, std::move(*p.program), p.stats};
 }
 
 // Progress bar on a terminal (stderr), at most every 0.2 s of wall time.
@@ -208,17 +225,7 @@ struct Outcome
     QString error;
 };
 
-QString errorText(const driver::MachineError &e)
-{
-    QString t = QString::fromStdString(e.message);
-    if (!e.command.empty())
-        t += RunCli::tr(" [command %1]").arg(QString::fromStdString(e.command));
-    if (!e.reply.empty())
-        t += RunCli::tr(" [reply '%1']").arg(QString::fromStdString(e.reply));
-    return t;
-}
-
-// The in-process emulator on a virtual clock, driven by SimRunner.
+// The in-process emulator on a virtual clock (SimLink), the run workflow turning it.
 Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
                    const machine::UnitProgram &program)
 {
@@ -229,53 +236,39 @@ Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     wire.byteErrorRate = a.faults;
     wire.replyLossRate = a.faults;
     wire.seed = a.seed;
-    driver::EmulatorPort port(driver::unitOptionsFor(config), wire);
     driver::CoreOptions options;
     options.returnToPathAutomatically = a.returnToPath;
     options.link.baud = wire.baud;
-    driver::MachineCore core(config, options);
-    driver::SimRunner runner(core, port);
-    std::optional<bool> finished;
-    core.onError = [&](const driver::MachineError &e) { out.error = errorText(e); };
-    core.onJobFinished = [&](bool ok) { finished = ok; };
+    session::SimLink link(config, driver::unitOptionsFor(config), wire, options);
+    session::RunWorkflow workflow(link);
+    workflow.setProfile(config);
+    workflow.setEndOnHold(true); // nobody at the machine to answer a hold
+    workflow.setProgram(std::make_shared<const machine::UnitProgram>(program), {}, a.file);
+    bool ended = false;
+    QObject::connect(&workflow, &session::RunWorkflow::runEnded, [&](bool ok) { ended = ok; });
     Progress progress;
-    auto mode = [&] { return core.state().mode; };
-    auto failed = [&] {
-        return mode() == driver::MachineMode::Alarm || mode() == driver::MachineMode::LinkLost;
-    };
-    runner.open();
-    runner.runUntil([&] { return mode() != driver::MachineMode::Connecting; }, 120);
-    if (mode() != driver::MachineMode::Idle)
-        return out.error.isEmpty()
-                   ? (out.error = RunCli::tr("could not connect to the emulator"), out)
-                   : out;
-    if (a.home) {
-        if (auto e = core.home(runner.now()))
-            return out.error = errorText(*e), out;
-        runner.runUntil([&] { return core.state().homed || failed(); }, 3600);
-        if (!core.state().homed)
+    workflow.start(session::RunWorkflow::connectionFor(config), a.home);
+    while (!workflow.hasEnded()) {
+        link.runFor(0.25);
+        if (link.liveState().jobActive)
+            progress.show(link.liveState());
+        if (link.liveState().mode == driver::MachineMode::Connecting && link.now() > 120) {
+            out.error = RunCli::tr("could not connect to the emulator");
             return out;
+        }
     }
-    if (auto e = core.run(program, runner.now()))
-        return out.error = errorText(*e), out;
-    while (!finished && !failed() && mode() != driver::MachineMode::Paused) {
-        runner.runFor(0.25);
-        progress.show(core.state());
-    }
-    progress.show(core.state(), true);
+    progress.show(link.liveState(), true);
     progress.done();
-    if (mode() == driver::MachineMode::Paused && !finished)
-        out.error =
-            RunCli::tr("the job stopped: %1").arg(QString::fromStdString(core.state().holdText));
-    out.ok = finished.value_or(false);
-    out.report = core.jobReport();
-    out.finalSteps = core.state().positionSteps;
-    out.unitStats = port.unit().stats();
+    out.ok = ended;
+    out.error = workflow.error();
+    out.report = link.jobReport();
+    out.finalSteps = link.liveState().positionSteps;
+    out.unitStats = link.port().unit().stats();
     return out;
 }
 
 // A serial port / pty, or the emulator in real time: the link worker on this thread's event
-// loop, exactly as the GUI drives it (without the extra thread).
+// loop, exactly as the GUI drives it (without the extra thread), the run workflow driving it.
 Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
                 const machine::UnitProgram &program)
 {
@@ -285,7 +278,6 @@ Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
     options.returnToPathAutomatically = a.returnToPath;
     options.link.baud = a.baud > 0 ? a.baud : config.link.baud;
     worker.setCoreOptions(options);
-    worker.setMachineConfig(config);
     driver::EmulatorTransport *emulated = nullptr;
     worker.setTransportFactory([&](const driver::ConnectionSettings &s,
                                    const machine::MachineConfig &c, QObject *parent,
@@ -294,43 +286,23 @@ Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
         emulated = qobject_cast<driver::EmulatorTransport *>(t);
         return t;
     });
-    driver::MachineState state;
+    session::QtMachineLink<driver::LinkWorker> link(worker);
+    session::RunWorkflow workflow(link);
+    workflow.setProfile(config);
+    workflow.setEndOnHold(true);
+    workflow.setProgram(std::make_shared<const machine::UnitProgram>(program), {}, a.file);
     std::optional<bool> finished;
     QEventLoop loop;
     Progress progress;
-    enum class Phase { Connecting, Homing, Running } phase = Phase::Connecting;
-    auto start = [&] {
-        phase = Phase::Running;
-        worker.run(program);
-    };
-    QObject::connect(&worker, &driver::LinkWorker::errorOccurred, &loop,
-                     [&](const driver::MachineError &e) {
-                         out.error = errorText(e);
-                         loop.quit();
-                     });
-    QObject::connect(&worker, &driver::LinkWorker::jobFinished, &loop, [&](bool ok) {
+    QObject::connect(&workflow, &session::RunWorkflow::runEnded, &loop, [&](bool ok) {
         finished = ok;
         loop.quit();
     });
-    QObject::connect(
-        &worker, &driver::LinkWorker::stateChanged, &loop, [&](const driver::MachineState &s) {
-            state = s;
-            if (phase == Phase::Running)
-                progress.show(s);
-            if (s.mode == driver::MachineMode::Paused && phase == Phase::Running) {
-                out.error =
-                    RunCli::tr("the job stopped: %1").arg(QString::fromStdString(s.holdText));
-                loop.quit();
-            }
-            if (s.mode != driver::MachineMode::Idle)
-                return;
-            if (phase == Phase::Connecting && a.home) {
-                phase = Phase::Homing;
-                worker.home();
-            } else if (phase == Phase::Connecting || (phase == Phase::Homing && s.homed)) {
-                start();
-            }
-        });
+    QObject::connect(&link, &session::MachineLink::stateChanged, &loop,
+                     [&](const driver::MachineState &s) {
+                         if (s.jobActive)
+                             progress.show(s);
+                     });
     driver::ConnectionSettings settings;
     const bool sim = a.port == QLatin1String("sim");
     settings.kind = sim ? driver::ConnectionSettings::Kind::Emulator
@@ -340,13 +312,14 @@ Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
     settings.latencyMs = a.latencyMs;
     settings.faultRate = a.faults;
     settings.seed = a.seed;
-    QTimer::singleShot(0, &worker, [&] { worker.connectTo(settings); });
+    QTimer::singleShot(0, &worker, [&] { workflow.start(settings, a.home); });
     loop.exec();
-    progress.show(state, true);
+    progress.show(link.state(), true);
     progress.done();
     out.ok = finished.value_or(false);
+    out.error = workflow.error();
     out.report = worker.jobReport();
-    out.finalSteps = state.positionSteps;
+    out.finalSteps = link.state().positionSteps;
     if (emulated)
         out.unitStats = emulated->unit().stats();
     worker.disconnectFromUnit();
@@ -377,9 +350,9 @@ QJsonArray steps(const std::array<std::int64_t, 4> &s, int axes)
     return a;
 }
 
-void printReport(const Outcome &o, const machine::PlanResult &plan, int baud)
+void printReport(const Outcome &o, const machine::UnitProgram &program,
+                 const machine::PlanStats &stats, int baud)
 {
-    const machine::UnitProgram &program = plan.program;
     const int axes = program.axisCount;
     const machine::Steps4 expected =
         program.commands.empty() ? program.startSteps : program.commands.back().endSteps;
@@ -391,8 +364,8 @@ void printReport(const Outcome &o, const machine::PlanResult &plan, int baud)
     j[QStringLiteral("final_steps")] = steps(o.finalSteps, axes);
     j[QStringLiteral("expected_steps")] = steps(expected, axes);
     j[QStringLiteral("job_s")] = r.endS - r.startS;
-    j[QStringLiteral("estimated_s")] = plan.stats.estimatedS;
-    j[QStringLiteral("bound_s")] = plan.stats.boundS;
+    j[QStringLiteral("estimated_s")] = stats.estimatedS;
+    j[QStringLiteral("bound_s")] = stats.boundS;
     j[QStringLiteral("link_bytes")] = static_cast<qint64>(r.linkBytes);
     j[QStringLiteral("wire_limit_vectors_per_s")] = bpv > 0 ? baud / 10.0 / bpv : 0.0;
     j[QStringLiteral("vectors_per_s")] = streamS > 0 ? r.vectors / streamS : 0.0;
@@ -420,9 +393,9 @@ int runRun(const QStringList &args)
     auto prepared = prepare(*a);
     if (!prepared)
         return 1;
-    const auto &[config, plan] = *prepared;
+    const auto &[config, program, stats] = *prepared;
     const Outcome o =
-        a->virtualClock ? runVirtual(*a, config, plan.program) : runReal(*a, config, plan.program);
+        a->virtualClock ? runVirtual(*a, config, program) : runReal(*a, config, program);
     const int baud = a->baud > 0 ? a->baud : config.link.baud;
     if (!o.ok) {
         cli::err(
@@ -430,11 +403,10 @@ int runRun(const QStringList &args)
                 .arg(a->file, o.error.isEmpty() ? RunCli::tr("the job did not finish") : o.error));
         return 1;
     }
-    printReport(o, plan, baud);
-    const machine::Steps4 expected = plan.program.commands.empty()
-                                         ? plan.program.startSteps
-                                         : plan.program.commands.back().endSteps;
-    for (int i = 0; i < plan.program.axisCount; ++i) {
+    printReport(o, program, stats, baud);
+    const machine::Steps4 expected =
+        program.commands.empty() ? program.startSteps : program.commands.back().endSteps;
+    for (int i = 0; i < program.axisCount; ++i) {
         if (o.finalSteps[static_cast<std::size_t>(i)] != expected[static_cast<std::size_t>(i)]) {
             cli::err(RunCli::tr("%1: the unit's counters differ from the planned end position\n")
                          .arg(a->file));

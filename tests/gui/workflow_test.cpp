@@ -18,6 +18,7 @@
 #include "gui/unitconfigdialog.h"
 
 #include "driver/link/machinecontroller.h"
+#include "session/runworkflow.h"
 
 #include <QDir>
 #include <QProcess>
@@ -358,6 +359,59 @@ M30
         QCOMPARE(QSettings().value(QStringLiteral("activeOffset")).toInt(), 1);
         m_window->selectWorkOffset(0);
         QCOMPARE(m_window->dro()->workText(0), QStringLiteral("0.000"));
+    }
+
+    // The console keeps its modes between lines as LinuxCNC's MDI does (G91, G20, F).
+    void consoleKeepsItsModes()
+    {
+        QVERIFY(waitIdle());
+        const double x0 = state().positionMm[0];
+        auto line = [&](const char *text, bool moves) {
+            QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+            m_window->executeManualLine(QLatin1String(text));
+            if (moves) {
+                QVERIFY2(finished.wait(kMachineTimeoutMs), qPrintable(describe()));
+                QCOMPARE(finished.at(0).at(0).toBool(), true);
+            }
+            QVERIFY(waitIdle());
+        };
+        line("G91", false);
+        line("G1 X1 F600", true);
+        line("G1 X1", true);
+        QVERIFY2(std::abs(state().positionMm[0] - (x0 + 2)) < 1e-3, qPrintable(describe()));
+        line("G20", false);
+        line("X-1", true); // G1, incremental, inches
+        QVERIFY2(std::abs(state().positionMm[0] - (x0 + 2 - 25.4)) < 1e-2, qPrintable(describe()));
+        line("G21 G90", false);
+    }
+
+    // The Run button drives the session's run workflow (the class frezka-cli run drives): the
+    // machine was jogged away from where the plan starts, so it plans again from there first.
+    void runButtonDrivesTheSessionWorkflow()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(load(writeProgram(QStringLiteral("rel.nc"), "G21 G91\nG1 X2 F600\nG1 X-2\nM2\n")));
+        QVERIFY(m_window->program()->program().runnable());
+        const double x0 = state().positionMm[0];
+        m_window->jogStep(0, 1.0, 600);
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(state().positionMm[0] - (x0 + 1)) < 1e-3,
+                                 kMachineTimeoutMs);
+        QVERIFY(waitIdle());
+        auto *workflow = m_window->workflow();
+        QSignalSpy started(workflow, &session::RunWorkflow::jobStarted);
+        QSignalSpy finished(workflow, &session::RunWorkflow::jobFinished);
+        QSignalSpy messages(workflow, &session::RunWorkflow::message);
+        button(m_window->runPanel(), "run")->click();
+        QVERIFY2(finished.wait(kMachineTimeoutMs), qPrintable(describe()));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QCOMPARE(started.size(), 1);
+        QStringList said;
+        for (const auto &m : messages)
+            said << m.at(0).toString();
+        QVERIFY2(said.contains(session::RunWorkflow::tr("Planning from the current position…")),
+                 qPrintable(said.join(QLatin1Char('|'))));
+        QVERIFY(waitIdle());
+        QVERIFY(std::abs(state().positionMm[0] - (x0 + 1)) < 1e-3); // there and back
     }
 
     void languageSwitch()

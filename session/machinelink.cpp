@@ -1,0 +1,7 @@
+#include "machinelink.h"
+
+namespace frezka::session {
+
+MachineLink::~MachineLink() = default;
+
+} // namespace frezka::session

@@ -1,0 +1,64 @@
+#pragma once
+// The program's check and plan in the session's terms, one implementation for both front
+// ends: interpretProgram() runs the G-code interpreter in check mode (every error of the file,
+// each with line, column and what to do) from the work offsets (nine systems, G92) and the
+// machine's position; planProgram() plans the toolpath for the machine profile at a feed
+// override and words the planner's errors and warnings. The GUI's program session calls both
+// in its loading thread (with progress and cancel); frezka-cli run calls them in place. Pure
+// functions: no state, no thread of their own.
+
+#include "session/workoffsets.h"
+
+#include "gcode/toolpath.h"
+#include "machine/machineconfig.h"
+#include "machine/planner.h"
+
+#include <QByteArray>
+#include <QString>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace frezka::session {
+
+struct ProgramMessage
+{
+    int line = 0;   // 1-based, 0 = whole file
+    int column = 0; // 1-based, 0 = none
+    QString text;   // complete, in the user's language: what, where, what to do
+    friend bool operator==(const ProgramMessage &, const ProgramMessage &) = default;
+};
+
+struct InterpretRequest
+{
+    QByteArray text;
+    QString fileName;
+    OffsetState offsets;             // G54..G59.3, G92 and the active system
+    std::array<double, 4> startMm{}; // machine position the program starts from
+    const std::atomic_bool *cancel = nullptr;
+    std::function<void(double)> progress; // fraction 0..1 of this step
+};
+
+struct InterpretOutcome
+{
+    std::shared_ptr<gcode::Toolpath> toolpath;
+    std::vector<ProgramMessage> errors;
+};
+
+InterpretOutcome interpretProgram(const InterpretRequest &request);
+
+struct PlanOutcome
+{
+    std::shared_ptr<machine::UnitProgram> program; // null when there are errors
+    machine::PlanStats stats;
+    std::vector<ProgramMessage> errors;
+    std::vector<ProgramMessage> warnings;
+    bool ok() const { return program != nullptr; }
+};
+
+PlanOutcome planProgram(const gcode::Toolpath &toolpath, const machine::MachineConfig &config,
+                        const QString &fileName, double feedOverride = 1.0);
+
+} // namespace frezka::session

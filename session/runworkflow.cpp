@@ -1,0 +1,293 @@
+#include "runworkflow.h"
+
+#include <cmath>
+
+namespace frezka::session {
+
+using driver::MachineMode;
+
+RunWorkflow::RunWorkflow(MachineLink &link, QObject *parent)
+    : QObject(parent)
+    , m_link(link)
+{
+    connect(&m_link, &MachineLink::stateChanged, this, &RunWorkflow::onState);
+    connect(&m_link, &MachineLink::errorOccurred, this, &RunWorkflow::onError);
+    connect(&m_link, &MachineLink::jobFinished, this, &RunWorkflow::onJobFinished);
+    m_reconnect.setSingleShot(true);
+    connect(&m_reconnect, &QTimer::timeout, this, [this] {
+        if (!m_userDisconnected && state().mode == MachineMode::LinkLost)
+            connectToUnit(m_settings);
+    });
+}
+
+QString RunWorkflow::modeText(MachineMode mode)
+{
+    switch (mode) {
+    case MachineMode::Disconnected:
+        return tr("Not connected");
+    case MachineMode::Connecting:
+        return tr("Connecting…");
+    case MachineMode::Idle:
+        return tr("Ready");
+    case MachineMode::Homing:
+        return tr("Homing");
+    case MachineMode::Jogging:
+        return tr("Jogging");
+    case MachineMode::Running:
+        return tr("Running");
+    case MachineMode::Stopping:
+        return tr("Stopping");
+    case MachineMode::Paused:
+        return tr("Paused");
+    case MachineMode::ToolLifted:
+        return tr("Tool lifted");
+    case MachineMode::Alarm:
+        return tr("Alarm");
+    case MachineMode::LinkLost:
+        return tr("Link lost");
+    }
+    return {};
+}
+
+driver::ConnectionSettings RunWorkflow::connectionFor(const machine::MachineConfig &config)
+{
+    driver::ConnectionSettings settings;
+    const QString port = QString::fromStdString(config.link.port);
+    if (port.isEmpty() || port == QLatin1String("emulator")) {
+        settings.kind = driver::ConnectionSettings::Kind::Emulator;
+    } else {
+        settings.kind = driver::ConnectionSettings::Kind::SerialPort;
+        settings.portName = port;
+    }
+    settings.baud = config.link.baud;
+    return settings;
+}
+
+void RunWorkflow::setProfile(const machine::MachineConfig &config)
+{
+    m_profile = config;
+    m_link.setMachineConfig(config);
+}
+
+// ---- connection
+
+void RunWorkflow::connectToUnit(const driver::ConnectionSettings &settings)
+{
+    m_userDisconnected = false;
+    m_settings = settings;
+    m_link.setMachineConfig(m_profile);
+    const bool emulator = settings.kind == driver::ConnectionSettings::Kind::Emulator;
+    emit message(tr("Connecting to %1 at %2 Bd…")
+                     .arg(emulator ? tr("the built-in emulator") : settings.portName)
+                     .arg(settings.baud));
+    m_link.connectTo(settings);
+}
+
+void RunWorkflow::disconnectFromUnit()
+{
+    m_userDisconnected = true;
+    m_reconnect.stop();
+    m_link.disconnectFromUnit();
+}
+
+void RunWorkflow::setAutoReconnect(bool on, int delayMs)
+{
+    m_autoReconnect = on;
+    m_reconnect.setInterval(delayMs);
+    if (!on)
+        m_reconnect.stop();
+}
+
+// ---- the program
+
+void RunWorkflow::setProgram(std::shared_ptr<const machine::UnitProgram> plan,
+                             const Position &startMm, const QString &name,
+                             const QString &notRunnable)
+{
+    m_plan = std::move(plan);
+    m_planStart = startMm;
+    m_name = name;
+    m_notRunnable = notRunnable;
+    const Pending pending = std::exchange(m_pending, Pending::None);
+    if (pending == Pending::Check)
+        emit checked(m_plan != nullptr);
+    if (pending == Pending::Run && m_plan)
+        startJob();
+    else if (pending == Pending::Run && m_step == Step::Running)
+        end(false, m_notRunnable);
+}
+
+bool RunWorkflow::planStartsHere() const
+{
+    const auto &st = state();
+    return m_planStart == st.positionMm && m_plan->startSteps == st.positionSteps;
+}
+
+void RunWorkflow::runProgram()
+{
+    if (!m_plan) {
+        const QString why =
+            m_notRunnable.isEmpty()
+                ? tr("Open a program first.")
+                : tr("The program has errors and cannot run:\n%1").arg(m_notRunnable);
+        emit failed(why);
+        if (m_step == Step::Running)
+            end(false, why);
+        return;
+    }
+    if (state().mode != MachineMode::Idle) {
+        const QString why = tr("The machine is not ready (%1); wait until it is, then Run.")
+                                .arg(modeText(state().mode));
+        emit failed(why);
+        if (m_step == Step::Running)
+            end(false, why);
+        return;
+    }
+    // The plan is relative to where it starts: re-plan from the machine's actual position.
+    if (m_replan && !planStartsHere()) {
+        m_pending = Pending::Run;
+        emit message(tr("Planning from the current position…"));
+        m_replan(state().positionMm);
+        return;
+    }
+    startJob();
+}
+
+void RunWorkflow::startJob()
+{
+    emit message(tr("Running %1.").arg(m_name));
+    m_jobClock.start();
+    emit jobStarted();
+    m_link.run(*m_plan);
+}
+
+void RunWorkflow::checkProgram()
+{
+    if (!m_replan) {
+        emit checked(m_plan != nullptr);
+        return;
+    }
+    m_pending = Pending::Check;
+    m_replan(state().positionMm);
+}
+
+void RunWorkflow::start(const driver::ConnectionSettings &settings, bool homeFirst)
+{
+    m_homeFirst = homeFirst;
+    m_error.clear();
+    m_step = Step::Connecting;
+    if (state().mode == MachineMode::Idle)
+        advance(state(), MachineMode::Idle); // already connected
+    else
+        connectToUnit(settings);
+}
+
+void RunWorkflow::end(bool ok, const QString &why)
+{
+    if (m_step == Step::Ended || m_step == Step::None)
+        return;
+    m_step = Step::Ended;
+    if (!ok)
+        m_error = why; // what ended the run (an earlier error may have been survived)
+    emit runEnded(ok);
+}
+
+// ---- during a job
+
+void RunWorkflow::toolLift(bool stopSpindle)
+{
+    m_savedSpindleRpm = state().spindleRpm;
+    m_link.toolLift(stopSpindle);
+}
+
+void RunWorkflow::lowerTool(double newFeedMmPerMin, bool thenContinue)
+{
+    // Spindle back on first when the lift stopped it, then lower (K/R and the new speed are the
+    // driver's), then continue once the machine is held again with the tool down.
+    if (m_savedSpindleRpm > 0 && state().spindlePermille == 0)
+        m_link.setSpindleRpm(m_savedSpindleRpm);
+    int pulses = 0;
+    if (newFeedMmPerMin > 0)
+        pulses = int(std::lround(newFeedMmPerMin / 60.0 * m_profile.axes[0].stepsPerMm));
+    m_continueAfterLower = thenContinue;
+    m_link.toolLower(pulses);
+}
+
+// ---- what the machine reports
+
+void RunWorkflow::onState(const driver::MachineState &s)
+{
+    const MachineMode last = std::exchange(m_lastMode, s.mode);
+    if (s.jobActive && !m_jobClock.isValid())
+        m_jobClock.start(); // a job not started here (a console line, one kept over a lost link)
+    if (s.mode == MachineMode::LinkLost && last != MachineMode::LinkLost) {
+        emit linkLost();
+        if (m_autoReconnect && !m_userDisconnected)
+            m_reconnect.start();
+    }
+    if (s.mode == MachineMode::Idle && last == MachineMode::Connecting)
+        emit connected();
+    if (s.mode == MachineMode::Paused && m_continueAfterLower) {
+        m_continueAfterLower = false; // the tool is back down after "Lower and continue"
+        m_link.resume();
+    }
+    if (m_step != Step::None && m_step != Step::Ended)
+        advance(s, last);
+}
+
+// The headless sequence: connecting -> (homing) -> running -> ended.
+void RunWorkflow::advance(const driver::MachineState &s, MachineMode last)
+{
+    if (s.mode == MachineMode::Alarm || s.mode == MachineMode::LinkLost ||
+        (s.mode == MachineMode::Disconnected && last != MachineMode::Disconnected)) {
+        QString why = tr("the machine stopped: %1").arg(modeText(s.mode));
+        if (s.lastError) // the driver's words (English until the driver has error codes)
+            why += QStringLiteral(" (%1)").arg(QString::fromStdString(s.lastError->message));
+        end(false, why);
+        return;
+    }
+    if (m_step == Step::Running && m_endOnHold && s.mode == MachineMode::Paused) {
+        end(false, tr("the job stopped: %1").arg(QString::fromStdString(s.holdText)));
+        return;
+    }
+    if (s.mode != MachineMode::Idle)
+        return;
+    if (m_step == Step::Connecting && m_homeFirst) {
+        m_step = Step::Homing;
+        m_link.home(0xF);
+    } else if (m_step == Step::Connecting || (m_step == Step::Homing && s.homed)) {
+        m_step = Step::Running;
+        runProgram();
+    } else if (m_step == Step::Homing && last == MachineMode::Homing) {
+        end(false, tr("homing did not finish"));
+    }
+}
+
+void RunWorkflow::onError(const driver::MachineError &e)
+{
+    if (m_step == Step::None || m_step == Step::Ended)
+        return;
+    m_error = QString::fromStdString(e.message);
+    if (!e.command.empty())
+        m_error += tr(" [command %1]").arg(QString::fromStdString(e.command));
+    if (!e.reply.empty())
+        m_error += tr(" [reply '%1']").arg(QString::fromStdString(e.reply));
+    // An operation refused or a port that did not open ends the sequence; while the machine
+    // is busy (connecting, homing, a job) it ends by the state or the job's end instead.
+    const auto &st = state();
+    const bool busy =
+        st.mode == MachineMode::Connecting || st.mode == MachineMode::Homing || st.jobActive;
+    if (!busy)
+        end(false, m_error);
+}
+
+void RunWorkflow::onJobFinished(bool ok)
+{
+    m_lastJobS = jobElapsedS();
+    m_jobClock.invalidate();
+    emit jobFinished(ok);
+    if (m_step == Step::Running)
+        end(ok, m_error.isEmpty() ? tr("the job did not finish") : m_error);
+}
+
+} // namespace frezka::session

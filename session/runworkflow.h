@@ -1,0 +1,121 @@
+#pragma once
+// RunWorkflow: the operator's run workflow, one class for both front ends. Over a MachineLink
+// it connects (and reconnects after a lost link when asked), homes, runs the planned program
+// (planning it again first when the machine is not where the plan starts), checks it, holds,
+// resumes, aborts, lifts the tool and lowers it again ("lower and continue" resumes once the
+// tool is down). The GUI drives it from its buttons and renders its signals; frezka-cli run
+// drives the headless sequence start(): connect, home if asked, run, and one runEnded(ok). The
+// program itself is loaded and planned by the front end (the GUI in a worker thread, the CLI
+// in place): it hands the plan over with setProgram() and, when a replanner is set, plans again
+// from the start position the workflow asks for. Texts are in the user's language.
+
+#include "session/machinelink.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+#include <array>
+#include <functional>
+#include <memory>
+
+namespace frezka::session {
+
+class RunWorkflow : public QObject
+{
+    Q_OBJECT
+
+public:
+    using Position = std::array<double, 4>;
+    using Replanner = std::function<void(const Position &startMm)>;
+
+    explicit RunWorkflow(MachineLink &link, QObject *parent = nullptr);
+
+    MachineLink &link() const { return m_link; }
+    const driver::MachineState &state() const { return m_link.state(); }
+    // The state of the machine in the user's words ("Ready", "Tool lifted").
+    static QString modeText(driver::MachineMode mode);
+    // How a profile reaches its unit: "emulator" (or no port) is the built-in emulator.
+    static driver::ConnectionSettings connectionFor(const machine::MachineConfig &config);
+
+    void setProfile(const machine::MachineConfig &config);
+    const machine::MachineConfig &profile() const { return m_profile; }
+
+    // ---- connection
+    void connectToUnit(const driver::ConnectionSettings &settings);
+    void disconnectFromUnit(); // the operator's: no reconnecting after it
+    void setAutoReconnect(bool on, int delayMs = 2000);
+
+    // ---- the program. plan == nullptr: nothing can run (notRunnable says why, "" = none).
+    void setProgram(std::shared_ptr<const machine::UnitProgram> plan, const Position &startMm,
+                    const QString &name, const QString &notRunnable = {});
+    void setReplanner(Replanner replan) { m_replan = std::move(replan); }
+    // Runs the program when the machine is ready; re-plans first from the machine's position.
+    void runProgram();
+    // Re-plans from the machine's position; checked(ok) follows.
+    void checkProgram();
+    // Headless: connect, home when asked, run; runEnded(ok) once, error() says why not.
+    void start(const driver::ConnectionSettings &settings, bool homeFirst);
+    void setEndOnHold(bool on) { m_endOnHold = on; } // nobody at the machine to answer a hold
+    bool hasEnded() const { return m_step == Step::Ended; }
+    QString error() const { return m_error; }
+
+    // ---- during a job
+    // Wall-clock seconds of the job running now, or of the last one when none runs.
+    double jobElapsedS() const
+    {
+        return m_jobClock.isValid() ? double(m_jobClock.elapsed()) / 1000.0 : m_lastJobS;
+    }
+    void pause() { m_link.pause(); }
+    void resume() { m_link.resume(); }
+    void abort() { m_link.abort(); }
+    void toolLift(bool stopSpindle);
+    // Spindle back on when the lift stopped it, tool down (new speed when > 0), then resume
+    // once the machine holds with the tool down when thenContinue.
+    void lowerTool(double newFeedMmPerMin, bool thenContinue);
+
+signals:
+    void message(const QString &text); // for the console
+    void failed(const QString &why);   // an error for the operator
+    void jobStarted();
+    void jobFinished(bool ok);
+    void checked(bool ok);
+    void connected(); // connecting -> ready
+    void linkLost();  // before reconnecting is decided: a handler may still setAutoReconnect()
+    void runEnded(bool ok); // the headless sequence of start()
+
+private:
+    enum class Step : std::uint8_t { None, Connecting, Homing, Running, Ended };
+    enum class Pending : std::uint8_t { None, Run, Check };
+
+    void onState(const driver::MachineState &state);
+    void onError(const driver::MachineError &error);
+    void onJobFinished(bool ok);
+    void advance(const driver::MachineState &state, driver::MachineMode last);
+    void startJob();
+    void end(bool ok, const QString &why);
+    bool planStartsHere() const;
+
+    MachineLink &m_link;
+    machine::MachineConfig m_profile;
+    driver::ConnectionSettings m_settings;
+    std::shared_ptr<const machine::UnitProgram> m_plan;
+    Position m_planStart{};
+    QString m_name, m_notRunnable;
+    Replanner m_replan;
+    Pending m_pending = Pending::None;
+    Step m_step = Step::None;
+    bool m_homeFirst = false;
+    bool m_endOnHold = false;
+    bool m_autoReconnect = false;
+    bool m_userDisconnected = false;
+    bool m_continueAfterLower = false;
+    double m_savedSpindleRpm = 0;
+    driver::MachineMode m_lastMode = driver::MachineMode::Disconnected;
+    QString m_error;
+    QTimer m_reconnect;
+    QElapsedTimer m_jobClock; // from the job's start (or the first state that shows one)
+    double m_lastJobS = 0;
+};
+
+} // namespace frezka::session

@@ -1,0 +1,67 @@
+// The program's check and plan shared by the GUI and frezka-cli run: work systems beyond G59
+// and G92 apply, every G-code error is reported with its line, plan errors are worded.
+#include "session/programplanner.h"
+
+#include <gtest/gtest.h>
+
+namespace frezka::session {
+namespace {
+
+InterpretOutcome interpret(const char *text, const OffsetState &offsets = {},
+                           std::array<double, 4> start = {})
+{
+    InterpretRequest r;
+    r.text = text;
+    r.fileName = QStringLiteral("job.nc");
+    r.offsets = offsets;
+    r.startMm = start;
+    return interpretProgram(r);
+}
+
+TEST(ProgramPlanner, NineSystemsAndG92Apply)
+{
+    OffsetState o;
+    o.systems[7] = {100, 50, -10, 0}; // G59.2
+    o.g92 = {1, 2, 3, 0};
+    o.active = 7;
+    const InterpretOutcome r = interpret("G21 G90\nG0 X0 Y0 Z0\nG54 G0 X0\nM2\n", o, {5, 5, 0, 0});
+    ASSERT_TRUE(r.errors.empty());
+    ASSERT_TRUE(r.toolpath);
+    EXPECT_EQ(r.toolpath->origin(), (gcode::Point4{5, 5, 0, 0}));
+    EXPECT_EQ(r.toolpath->end(0), (gcode::Point4{101, 52, -7, 0}));
+    EXPECT_EQ(r.toolpath->end(1).x, 1.0); // G54 is zero, G92 stays
+}
+
+TEST(ProgramPlanner, EveryGcodeErrorWithItsLine)
+{
+    const InterpretOutcome r = interpret("G21\nG1 X10 Q\nG1 Y5 F100 K\nM2\n");
+    ASSERT_EQ(r.errors.size(), 2u);
+    EXPECT_EQ(r.errors[0].line, 2);
+    EXPECT_EQ(r.errors[1].line, 3);
+    EXPECT_TRUE(r.errors[0].text.startsWith(QStringLiteral("job.nc:2:")))
+        << r.errors[0].text.toStdString();
+}
+
+TEST(ProgramPlanner, PlansOrWordsThePlanError)
+{
+    const auto config = machine::defaultMachineConfig(protocol::Variant::Gve64);
+    const InterpretOutcome ok = interpret("G21 G90\nG1 X10 F600\nM2\n");
+    const PlanOutcome plan = planProgram(*ok.toolpath, config, QStringLiteral("job.nc"));
+    ASSERT_TRUE(plan.ok());
+    EXPECT_FALSE(plan.program->commands.empty());
+    EXPECT_GT(plan.stats.estimatedS, 0);
+    const PlanOutcome slower = planProgram(*ok.toolpath, config, QStringLiteral("job.nc"), 0.5);
+    ASSERT_TRUE(slower.ok());
+    EXPECT_GT(slower.stats.estimatedS, plan.stats.estimatedS); // the feed override plans in
+
+    const InterpretOutcome far = interpret("G21 G90\nG0 X5000\nM2\n");
+    const PlanOutcome refused = planProgram(*far.toolpath, config, QStringLiteral("far.nc"));
+    EXPECT_FALSE(refused.ok());
+    ASSERT_FALSE(refused.errors.empty());
+    EXPECT_EQ(refused.errors.front().line, 2);
+    EXPECT_TRUE(refused.errors.front().text.startsWith(QStringLiteral("far.nc:2: the move leaves")))
+        << refused.errors.front().text.toStdString();
+}
+
+} // namespace
+} // namespace frezka::session
