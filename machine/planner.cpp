@@ -473,15 +473,18 @@ void Planner::feedCapWarning()
     if (m_feedCapLines == 0)
         return;
     const detail::FeedCap &c = m_firstFeedCap;
+    auto mmPerMin = [](double mmPerS) { return std::to_string(std::llround(mmPerS * 60)); };
     const std::string limit =
         c.limit == 'P' ? "the unit's " + std::to_string(m_config.unit.maxPulseRate) + " pulses/s"
                        : std::string(1, c.limit) + "'s maximum speed of " +
-                             fmt(c.limitMmPerS * 60) + " mm/min";
-    std::string what = "F" + fmt(c.askedMmPerS * 60) +
-                       " mm/min is above what the axes allow along "
-                       "this move; the machine runs it at " +
-                       fmt(c.runMmPerS * 60) + " mm/min (" + limit + ")";
-    if (m_feedCapLines > 1)
+                             mmPerMin(c.limitMmPerS) + " mm/min";
+    std::string what = "F" + mmPerMin(c.askedMmPerS) +
+                       " mm/min is above what the axes allow along this move; the machine runs "
+                       "it at " +
+                       mmPerMin(c.runMmPerS) + " mm/min (" + limit + ")";
+    if (m_feedCapLines == 2)
+        what += "; 1 more line is capped the same way";
+    else if (m_feedCapLines > 2)
         what += "; " + std::to_string(m_feedCapLines - 1) + " more lines are capped the same way";
     what += ". Lower the F word, or raise the axis maxima in the machine profile if the machine "
             "can go faster";

@@ -257,6 +257,13 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>frezka::cli</name>
+    <message>
+        <source>warning: </source>
+        <translation>varování: </translation>
+    </message>
+</context>
+<context>
     <name>frezka::gcode</name>
     <message>
         <source>Cannot read the file %1</source>
@@ -839,10 +846,6 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>Definujte jej v tomto souboru pomocí o&lt;název&gt; sub ... o&lt;název&gt; endsub.</translation>
     </message>
     <message>
-        <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN]</source>
-        <translation>použití: frezka-cli check SOUBOR [--rapid MM_ZA_MIN]</translation>
-    </message>
-    <message>
         <source>%1: OK, %2 lines</source>
         <translation>%1: v pořádku, %2 řádků</translation>
     </message>
@@ -877,6 +880,10 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
             <numerusform>%1: %n chyby</numerusform>
             <numerusform>%1: %n chyb</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</source>
+        <translation>použití: frezka-cli check SOUBOR [--rapid MM_ZA_MIN] [--machine PROFIL]</translation>
     </message>
 </context>
 <context>

@@ -257,6 +257,13 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>frezka::cli</name>
+    <message>
+        <source>warning: </source>
+        <translation>warning: </translation>
+    </message>
+</context>
+<context>
     <name>frezka::gcode</name>
     <message>
         <source>Cannot read the file %1</source>
@@ -839,10 +846,6 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</translation>
     </message>
     <message>
-        <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN]</source>
-        <translation>usage: frezka-cli check FILE [--rapid MM_PER_MIN]</translation>
-    </message>
-    <message>
         <source>%1: OK, %2 lines</source>
         <translation>%1: OK, %2 lines</translation>
     </message>
@@ -876,6 +879,10 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
             <numerusform>%1: %n error</numerusform>
             <numerusform>%1: %n errors</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</source>
+        <translation>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</translation>
     </message>
 </context>
 <context>

@@ -29,4 +29,14 @@ void err(const QString &text)
     std::fflush(stderr);
 }
 
+QString planMessage(const QString &file, const machine::PlanError &error, const QString &kind)
+{
+    std::string what = error.message;
+    const std::string prefix = "line " + std::to_string(error.line) + ": ";
+    if (what.rfind(prefix, 0) == 0)
+        what.erase(0, prefix.size());
+    return file + QLatin1Char(':') + QString::number(error.line) + QStringLiteral(": ") + kind +
+           QString::fromStdString(what) + QLatin1Char('\n');
+}
+
 } // namespace frezka::cli

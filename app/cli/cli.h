@@ -10,6 +10,8 @@
 
 #include <QStringList>
 
+#include "machine/planner.h"
+
 #include <functional>
 #include <map>
 #include <string>
@@ -30,9 +32,11 @@ bool registerCommand(const std::string &name, Command command);
 // Writes to stdout / stderr (UTF-8) without Qt's logging decorations.
 void out(const QString &text);
 void err(const QString &text);
+// "FILE:LINE: KIND<message>\n" for a plan error or warning (its own "line N: " prefix dropped).
+QString planMessage(const QString &file, const machine::PlanError &error, const QString &kind);
 
 } // namespace frezka::cli
 
-#define FREZKA_CLI_COMMAND(name, usage, summary, fn)                                              \
-    static const bool frezkaCliRegistered_##name =                                               \
+#define FREZKA_CLI_COMMAND(name, usage, summary, fn)                                               \
+    static const bool frezkaCliRegistered_##name =                                                 \
         ::frezka::cli::registerCommand(#name, {usage, summary, fn})

@@ -1,10 +1,14 @@
-// frezka-cli check FILE [--rapid MM_PER_MIN]: reports every error of a G-code program as
-// FILE:LINE:COL: message (exit 1), or a summary: moves, arcs, bounds per axis in machine
-// coordinates, rapid and feed length and a naive time (exit 0).
+// frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE.json]: reports every error of a
+// G-code program as FILE:LINE:COL: message (exit 1), or a summary: moves, arcs, bounds per axis
+// in machine coordinates, rapid and feed length and a naive time (exit 0). With --machine the
+// program is also planned for that machine: plan errors (soft limits, ...) fail the check, plan
+// warnings (a feed above what the axes allow, ...) are reported as FILE:LINE: warning: ...
 #include "cli.h"
 
 #include "gcode/interpreter.h"
 #include "gcode/trace.h"
+#include "machine/machineconfig.h"
+#include "machine/planner.h"
 
 #include <QCoreApplication>
 
@@ -18,18 +22,41 @@ QString mm(double v)
 int usage()
 {
     frezka::cli::err(QCoreApplication::translate(
-                         "frezka::gcode", "usage: frezka-cli check FILE [--rapid MM_PER_MIN]") +
+                         "frezka::gcode",
+                         "usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]") +
                      QLatin1Char('\n'));
     return 2;
+}
+
+// Plans the program for the machine profile: errors and warnings to stderr; false on errors.
+bool planFor(const QString &file, const QString &machinePath, const frezka::gcode::Toolpath &path)
+{
+    using namespace frezka;
+    const machine::ConfigResult loaded = machine::loadMachineConfig(machinePath.toStdString());
+    if (!loaded.config) {
+        for (const machine::ConfigError &e : loaded.errors)
+            cli::err(machinePath + QStringLiteral(": ") + QString::fromStdString(e.message) +
+                     QLatin1Char('\n'));
+        return false;
+    }
+    const machine::PlanResult plan = machine::plan(path, *loaded.config);
+    const QString warning = QCoreApplication::translate("frezka::cli", "warning: ");
+    for (const machine::PlanError &w : plan.warnings)
+        cli::err(cli::planMessage(file, w, warning));
+    for (const machine::PlanError &e : plan.errors)
+        cli::err(cli::planMessage(file, e, QString()));
+    return plan.ok();
 }
 
 int runCheck(const QStringList &args)
 {
     using namespace frezka;
-    QString file;
+    QString file, machinePath;
     double rapid = 3000.0;
     for (int i = 0; i < args.size(); ++i) {
-        if (args[i] == QLatin1String("--rapid") && i + 1 < args.size()) {
+        if (args[i] == QLatin1String("--machine") && i + 1 < args.size()) {
+            machinePath = args[++i];
+        } else if (args[i] == QLatin1String("--rapid") && i + 1 < args.size()) {
             bool ok = false;
             rapid = args[++i].toDouble(&ok);
             if (!ok || rapid <= 0)
@@ -49,11 +76,13 @@ int runCheck(const QStringList &args)
         for (const gcode::Error &e : result.errors)
             cli::err(gcode::formatError(file, e) + QLatin1Char('\n'));
         const int count = static_cast<int>(result.errors.size());
-        cli::err(QCoreApplication::translate("frezka::gcode", "%1: %n error(s)", "", count)
-                     .arg(file) +
-                 QLatin1Char('\n'));
+        cli::err(
+            QCoreApplication::translate("frezka::gcode", "%1: %n error(s)", "", count).arg(file) +
+            QLatin1Char('\n'));
         return 1;
     }
+    if (!machinePath.isEmpty() && !planFor(file, machinePath, result.toolpath))
+        return 1;
     const gcode::Summary s = gcode::summarize(result.toolpath, rapid);
     QString text;
     const auto line = [&text](const QString &l) { text += l + QLatin1Char('\n'); };
@@ -90,5 +119,5 @@ int runCheck(const QStringList &args)
 
 } // namespace
 
-FREZKA_CLI_COMMAND(check, "check FILE [--rapid MM_PER_MIN]",
+FREZKA_CLI_COMMAND(check, "check FILE [--rapid MM_PER_MIN] [--machine PROFILE]",
                    "Check a G-code program: every error, or a summary", runCheck);

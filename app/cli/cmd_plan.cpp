@@ -58,16 +58,6 @@ bool parseArgs(const QStringList &args, Args *out)
 }
 
 // "FILE:LINE: what" (the message without its own "line N: " prefix).
-QString located(const QString &file, const machine::PlanError &e, const QString &kind)
-{
-    std::string what = e.message;
-    const std::string prefix = "line " + std::to_string(e.line) + ": ";
-    if (what.rfind(prefix, 0) == 0)
-        what.erase(0, prefix.size());
-    return file + QLatin1Char(':') + QString::number(e.line) + QStringLiteral(": ") + kind +
-           QString::fromStdString(what) + QLatin1Char('\n');
-}
-
 QString tr(const char *text)
 {
     return QCoreApplication::translate("frezka::cli", text);
@@ -100,10 +90,10 @@ int runPlan(const QStringList &rawArgs)
     options.strategy = args.strategy;
     const machine::PlanResult plan = machine::plan(program.toolpath, config, options);
     for (const machine::PlanError &e : plan.warnings)
-        cli::err(located(args.file, e, tr("warning: ")));
+        cli::err(cli::planMessage(args.file, e, tr("warning: ")));
     if (!plan.ok()) {
         for (const machine::PlanError &e : plan.errors)
-            cli::err(located(args.file, e, QString()));
+            cli::err(cli::planMessage(args.file, e, QString()));
         return 1;
     }
     std::string out;

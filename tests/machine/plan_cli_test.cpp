@@ -14,10 +14,10 @@ struct CliRun
     QString out, err;
 };
 
-CliRun cli(const QStringList &args)
+CliRun cli(const QStringList &args, const QString &command = QStringLiteral("plan"))
 {
     QProcess p;
-    p.start(QStringLiteral(FREZKA_CLI), QStringList{QStringLiteral("plan")} + args);
+    p.start(QStringLiteral(FREZKA_CLI), QStringList{command} + args);
     p.waitForFinished(60000);
     return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
             QString::fromUtf8(p.readAllStandardError())};
@@ -93,4 +93,29 @@ TEST(PlanCli, TakesAMachineProfileAndRejectsABadOne)
     EXPECT_TRUE(no.out.isEmpty());
     EXPECT_TRUE(no.err.contains(QStringLiteral("axes.x.stepsPerMm: is 0, must be 1 .. 10000")));
     EXPECT_EQ(cli({}).code, 2);
+}
+
+// A feed above what the axes allow (the GVE64's X and Y run at most 4000 mm/min) is told once, in
+// words, with the line of the first such feed, the feed asked for and the feed the machine runs,
+// by check (with the machine) and by plan; the plan is written.
+TEST(PlanCli, FeedAboveTheAxesIsToldOnceWithTheFiguresByCheckAndPlan)
+{
+    QTemporaryDir dir;
+    const QString file =
+        writeProgram(dir, "fast.nc", "G21 G90\nG0 X10 Y10 Z-1\nG1 X20 F12000\nG1 Y20\nM2\n");
+    const QString warning =
+        file + QStringLiteral(":3: warning: F12000 mm/min is above what the axes allow along "
+                              "this move; the machine runs it at 4000 mm/min (X's maximum "
+                              "speed of 4000 mm/min); 1 more line is capped the same way. "
+                              "Lower the F word, or raise the axis maxima in the machine profile "
+                              "if the machine can go faster\n");
+    const CliRun plan = cli({file});
+    EXPECT_EQ(plan.code, 0);
+    EXPECT_EQ(plan.err, warning);
+    EXPECT_TRUE(plan.out.contains(QStringLiteral("!0C2000,0,0")));
+    const QString profile = QStringLiteral(FREZKA_SOURCE_DIR) + "/resources/machines/gve64.json";
+    const CliRun check = cli({file, QStringLiteral("--machine"), profile}, QStringLiteral("check"));
+    EXPECT_EQ(check.code, 0);
+    EXPECT_EQ(check.err, warning);
+    EXPECT_TRUE(check.out.contains(QStringLiteral(": OK, 5 lines")));
 }
