@@ -426,7 +426,9 @@ JobOutcome runJob(const RandomJob &job)
     const std::int64_t extra = o.vectorsExecuted - o.vectorsPlanned - rep.returnMoves;
     if (rep.pathFaults == 0 ? extra != 0 : extra < 0 || extra > rep.rerun)
         fail(o, std::to_string(o.vectorsExecuted) + " vectors executed for " +
-                    std::to_string(o.vectorsPlanned) + " planned");
+                    std::to_string(o.vectorsPlanned) + " planned (path faults " +
+                    std::to_string(rep.pathFaults) + ", re-run " + std::to_string(rep.rerun) +
+                    ", return moves " + std::to_string(rep.returnMoves) + ")");
     if (o.brakeViolations > 0)
         slow(o, std::to_string(o.brakeViolations) + " brake violations on the unit");
     if (o.starvationStops > 0)
