@@ -43,24 +43,12 @@ public slots:
     void setMachineConfig(const frezka::machine::MachineConfig &config);
     void connectTo(const frezka::driver::ConnectionSettings &settings);
     void disconnectFromUnit();
-    void run(const frezka::machine::UnitProgram &program);
-    void pause();
-    void resume();
-    void abort();
-    void toolLift(bool stopSpindle);
-    void toolLower(int speedPulsesPerS);
-    void home(unsigned axisMask = 0xF);
-    void jogStep(int axis, double distanceMm, double speedMmPerMin);
-    void jogContinuous(int axis, int direction, double speedMmPerMin);
-    void jogStop();
-    void setMpg(bool on);
-    void setSpindleRpm(double rpm);
-    void setOutputs(quint8 mask, quint8 activeHigh);
-    void setOverride(int percent);
-    void overrideUp();
-    void overrideDown();
-    void sendRaw(const QString &text);
-    void writeEeprom();
+    // An operation for the core (MachineController builds them); a refusal comes back as
+    // errorOccurred.
+    void execute(const frezka::driver::MachineCommand &command);
+    // Shorthands for the direct users of a worker without a controller (frezka-cli run).
+    void run(const frezka::machine::UnitProgram &program) { execute(op::Run{program}); }
+    void home(unsigned axisMask = 0xF) { execute(op::Home{axisMask}); }
 
 signals:
     void stateChanged(const frezka::driver::MachineState &state);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 namespace frezka::driver {
 
@@ -397,6 +398,47 @@ void MachineCore::checkIdleWaiters()
         if (w)
             w();
     }
+}
+
+// ---- operations ----------------------------------------------------------------------------
+
+namespace {
+template<class... F>
+struct Overloaded : F...
+{
+    using F::operator()...;
+};
+template<class... F>
+Overloaded(F...) -> Overloaded<F...>;
+} // namespace
+
+MachineCore::Result MachineCore::execute(const MachineCommand &command, double now)
+{
+    return std::visit(
+        Overloaded{
+            [&](const op::Run &c) { return run(c.program, now); },
+            [&](const op::Pause &) { return pause(now); },
+            [&](const op::Resume &) { return resume(now); },
+            [&](const op::Abort &) { return abort(now); },
+            [&](const op::ToolLift &c) { return toolLift(c.stopSpindle, now); },
+            [&](const op::ToolLower &c) { return toolLower(c.speedPulsesPerS, now); },
+            [&](const op::Home &c) { return home(now, c.axisMask); },
+            [&](const op::JogStep &c) {
+                return jogStep(c.axis, c.distanceMm, c.speedMmPerMin, now);
+            },
+            [&](const op::JogContinuous &c) {
+                return jogContinuous(c.axis, c.direction, c.speedMmPerMin, now);
+            },
+            [&](const op::JogStop &) { return jogStop(now); },
+            [&](const op::SetMpg &c) { return setMpg(c.on, now); },
+            [&](const op::SetSpindleRpm &c) { return setSpindleRpm(c.rpm, now); },
+            [&](const op::SetOutputs &c) { return setOutputs(c.mask, c.activeHigh, now); },
+            [&](const op::SetOverride &c) { return setOverride(c.percent, now); },
+            [&](const op::OverrideStep &c) { return overrideStep(c.up, now); },
+            [&](const op::SendRaw &c) { return sendRaw(c.text, now); },
+            [&](const op::WriteEeprom &) { return writeEeprom(now); },
+        },
+        command);
 }
 
 // ---- transport events --------------------------------------------------------------------

@@ -25,6 +25,7 @@
 // settings (V, A, B, T, $, VK/VN) in force there have been sent again.
 
 #include "driver/link/linkengine.h"
+#include "driver/link/machinecommand.h"
 #include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
 #include "machine/unitprogram.h"
@@ -97,6 +98,9 @@ public:
 
     // ---- operations. Each returns nullopt when accepted, else why not (state unchanged).
     using Result = std::optional<MachineError>;
+    // The one entry of the front ends (see machinecommand.h); the named operations below are
+    // the same, spelled out for code that drives the core directly (SimRunner users, tests).
+    Result execute(const MachineCommand &command, double now);
     Result run(machine::UnitProgram program, double now);
     Result pause(double now);
     Result resume(double now);
