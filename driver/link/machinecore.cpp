@@ -39,6 +39,33 @@ const char *machineModeName(MachineMode mode)
     return "?";
 }
 
+const char *machineActivityName(MachineActivity activity)
+{
+    switch (activity) {
+    case MachineActivity::None:
+        return "None";
+    case MachineActivity::Connecting:
+        return "Connecting";
+    case MachineActivity::Homing:
+        return "Homing";
+    case MachineActivity::Jogging:
+        return "Jogging";
+    case MachineActivity::Job:
+        return "Job";
+    case MachineActivity::CheckingProgress:
+        return "Checking progress";
+    case MachineActivity::Probing:
+        return "Probing";
+    case MachineActivity::PathFault:
+        return "Path fault";
+    case MachineActivity::ReturnToPath:
+        return "Return to path";
+    case MachineActivity::ToolLift:
+        return "Tool lift";
+    }
+    return "?";
+}
+
 MachineCore::MachineCore(machine::MachineConfig config, CoreOptions options)
     : m_config(std::move(config))
     , m_options(options)
@@ -68,8 +95,39 @@ void MachineCore::setMode(MachineMode mode)
     m_dirty = true;
 }
 
+MachineActivity MachineCore::currentActivity() const
+{
+    switch (m_state.mode) {
+    case MachineMode::Connecting:
+        return MachineActivity::Connecting;
+    case MachineMode::Homing:
+        return MachineActivity::Homing;
+    case MachineMode::Jogging:
+        return MachineActivity::Jogging;
+    default:
+        break;
+    }
+    if (!m_job)
+        return MachineActivity::None;
+    if (m_toolLift)
+        return MachineActivity::ToolLift;
+    if (m_pathFault)
+        return m_state.mode == MachineMode::Running ? MachineActivity::ReturnToPath
+                                                    : MachineActivity::PathFault;
+    if (m_needVerify)
+        return MachineActivity::CheckingProgress;
+    if (m_streamBlocked && m_next < m_program.commands.size() &&
+        m_program.commands[m_next].op == machine::UnitOp::Probe)
+        return MachineActivity::Probing;
+    return MachineActivity::Job;
+}
+
 void MachineCore::publish()
 {
+    if (const MachineActivity a = currentActivity(); a != m_state.activity) {
+        m_state.activity = a;
+        m_dirty = true;
+    }
     m_state.link = m_engine.stats();
     m_state.checksums = m_engine.checksums();
     if (m_job) {

@@ -158,6 +158,7 @@ private:
     void applyFlags(std::uint8_t flags, double now);
     void setMode(MachineMode mode);
     void publish();
+    MachineActivity currentActivity() const;
     void fail(const std::string &message, const Outcome *o, MachineMode mode);
     bool unitError(const Outcome &o, const std::string &what, MachineMode mode);
     void log(const std::string &text);
@@ -285,6 +286,7 @@ private:
     bool m_spindleStopped = false;
     int m_liftSpindle = 0;
     bool m_kept = false;
+    bool m_toolLift = false; // from toolLift() until the tool is down again
 };
 
 } // namespace frezka::driver

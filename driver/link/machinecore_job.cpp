@@ -87,6 +87,7 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
         }
     }
     m_job = true;
+    m_toolLift = false;
     m_next = m_exec = m_inflightEnd = 0;
     m_vectorsAcked = 0;
     m_streamBlocked = m_queueFullSeen = m_needVerify = false;

@@ -166,6 +166,7 @@ MachineCore::Result MachineCore::toolLift(bool stopSpindle, double now)
     m_spindleStopped = stopSpindle && m_state.spindlePermille > 0;
     const int permille = m_state.spindlePermille;
     m_liftSpindle = permille;
+    m_toolLift = true;
     setMode(MachineMode::Stopping);
     send(cmd::statusRead(4), [this](const Outcome &o) {
         if (o.status == OutcomeStatus::Ok && o.reply.ok())
@@ -236,6 +237,7 @@ MachineCore::Result MachineCore::toolLower(int speedPulsesPerS, double now)
                         return;
                     applyFlags(*f.reply.hexValue(), m_now);
                     m_holdNeedsGo = m_state.inta;
+                    m_toolLift = false;
                     m_state.holdText = "tool lowered";
                     setMode(MachineMode::Paused);
                 });
