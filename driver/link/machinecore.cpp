@@ -107,17 +107,16 @@ MachineActivity MachineCore::currentActivity() const
     default:
         break;
     }
-    if (!m_job)
+    if (!m_job.active())
         return MachineActivity::None;
     if (m_toolLift)
         return MachineActivity::ToolLift;
-    if (m_pathFault)
+    if (m_job.offPath())
         return m_state.mode == MachineMode::Running ? MachineActivity::ReturnToPath
                                                     : MachineActivity::PathFault;
-    if (m_needVerify)
+    if (m_job.verifying())
         return MachineActivity::CheckingProgress;
-    if (m_streamBlocked && m_next < m_program.commands.size() &&
-        m_program.commands[m_next].op == machine::UnitOp::Probe)
+    if (m_job.probing())
         return MachineActivity::Probing;
     return MachineActivity::Job;
 }
@@ -130,9 +129,9 @@ void MachineCore::publish()
     }
     m_state.link = m_engine.stats();
     m_state.checksums = m_engine.checksums();
-    if (m_job) {
-        m_state.commandsAcked = static_cast<std::int64_t>(m_next);
-        m_state.vectorsAcked = m_vectorsAcked;
+    if (m_job.active()) {
+        m_state.commandsAcked = static_cast<std::int64_t>(m_job.cursor().next);
+        m_state.vectorsAcked = m_job.cursor().vectorsAcked;
     }
     if (!m_dirty)
         return;
@@ -205,12 +204,6 @@ void MachineCore::onOutcome(const Outcome &o)
     }
 }
 
-bool MachineCore::streaming() const
-{
-    return m_job && m_state.mode == MachineMode::Running && !m_streamBlocked &&
-           m_now >= m_waitUntil && m_next < m_program.commands.size();
-}
-
 double MachineCore::deadline() const
 {
     double d = m_engine.deadline();
@@ -218,8 +211,8 @@ double MachineCore::deadline() const
         return d;
     if (m_engine.idle()) {
         d = std::min(d, nextPollTime());
-        if (m_waitUntil > m_now)
-            d = std::min(d, m_waitUntil);
+        if (m_job.waitUntil() > m_now)
+            d = std::min(d, m_job.waitUntil());
     }
     return d;
 }
@@ -255,9 +248,8 @@ void MachineCore::pump(double now)
             startPoll(now);
             break;
         }
-        if (m_job && m_state.mode == MachineMode::Running && !m_streamBlocked &&
-            now >= m_waitUntil) {
-            streamStep(now);
+        if (m_job.mayStream(now)) {
+            m_job.streamStep(now);
             if (!m_engine.idle() || !m_steps.empty())
                 continue;
         }
@@ -278,14 +270,14 @@ double MachineCore::nextPollTime() const
     default:
         break;
     }
-    if (!streaming() || m_queueFullSeen)
+    if (!streaming() || m_job.queueFullSeen())
         return m_lastPoll + m_options.pollIntervalS;
     // A poll costs a round trip of the link. Plenty of motion queued and the motion ahead slower
     // than the wire: the stream has time to spare, poll at the full rate. Otherwise every round
     // trip spent on polls is missing from the stream: keep them to wireBoundPollShare of the
     // link's time (the last poll's cost over that share), at least every maxPollGapS.
-    const double buffered = bufferedS();
-    if (!wireBoundAhead() && buffered >= std::max(0.25, 10 * m_rttS))
+    const double buffered = m_job.pace().bufferedS();
+    if (!m_job.pace().wireBoundAhead() && buffered >= std::max(0.25, 10 * m_rttS))
         return m_lastPoll + m_options.pollIntervalS;
     const double cost = m_lastPollTransactions * m_rttS;
     const double share = std::max(1e-3, m_options.wireBoundPollShare);
@@ -310,24 +302,15 @@ void MachineCore::startPoll(double now)
     while (!m_pollTimes.empty() && m_pollTimes.front() < now - 1.0)
         m_pollTimes.pop_front();
     m_state.pollHz = static_cast<double>(m_pollTimes.size());
-    if (m_job) {
-        ++m_report.polls;
-        if (m_next < m_program.commands.size() && m_vectorPrefix.back() > m_vectorPrefix[m_next]) {
-            ++m_report.streamPolls;
-            const double since =
-                m_report.streamPolls > 1 ? m_report.lastStreamPollS : m_report.startS;
-            m_report.maxStreamPollGapS = std::max(m_report.maxStreamPollGapS, now - since);
-            if (m_report.streamPolls == 1)
-                m_report.firstStreamPollS = now;
-            m_report.lastStreamPollS = now;
-        }
-    }
-    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+    if (m_job.active())
+        m_job.pollStarted(now);
+    const Command pos = positionCommand();
     // While streaming, every reply carries INTA (interrupts) and packet replies carry queue
     // full: F and the inputs are read less often there, to leave the wire to the job.
     // Where the stream is wire-bound, the position alone, F and the inputs every 8th time.
     const bool stream = streaming();
-    const bool lean = stream && (wireBoundAhead() || bufferedS() < std::max(0.25, 10 * m_rttS));
+    const bool lean = stream && (m_job.pace().wireBoundAhead() ||
+                                 m_job.pace().bufferedS() < std::max(0.25, 10 * m_rttS));
     const bool flags = !stream || m_pollCount % (lean ? 8 : 4) == (lean ? 7 : 0);
     ++m_pollCount;
     const bool inputs =
@@ -354,7 +337,7 @@ void MachineCore::startPoll(double now)
         sendFront(cmd::flag(), [this](const Outcome &o) {
             if (o.status != OutcomeStatus::Ok || !o.reply.ok())
                 return (void)unitError(o, "status poll", MachineMode::Alarm);
-            applyFlags(*o.reply.hexValue(), m_now);
+            applyFlags(*o.reply.hexValue());
         });
     }
     m_pollSentAt = now;
@@ -363,17 +346,8 @@ void MachineCore::startPoll(double now)
             return (void)unitError(o, "position poll", MachineMode::Alarm);
         m_rttS = 0.8 * m_rttS + 0.2 * (m_now - m_pollSentAt);
         applyPosition(o.reply);
-        // While progress is re-established from the counters a position on the path still
-        // verifies it; one off the path is left to that check.
-        if (m_job && m_state.mode == MachineMode::Running && !m_pathFault && !m_kept &&
-            !m_pathGuardOff && !onPlannedPath() && !m_needVerify) {
-            std::string at;
-            for (int a = 0; a < m_program.axisCount; ++a)
-                at += (a ? ", " : "") + std::to_string(m_state.positionSteps[a]);
-            pathFault("the unit's counters read " + at +
-                      " steps, on no segment of the path "
-                      "sent to it");
-        }
+        if (m_job.active())
+            m_job.checkPolledPosition(m_kept);
     };
     m_engine.start(pos, now);
 }
@@ -388,15 +362,12 @@ void MachineCore::applyPosition(const Reply &r)
         m_state.positionMm[i] = mmFromSteps(static_cast<int>(i), (*v)[i]);
     }
     m_dirty = true;
-    if (m_job) {
-        locateExecuting();
-        m_execAt = m_now;
-    }
+    if (m_job.active())
+        m_job.positionRead();
 }
 
-void MachineCore::applyFlags(std::uint8_t flags, double now)
+void MachineCore::applyFlags(std::uint8_t flags)
 {
-    (void)now;
     const bool wasInta = m_state.inta;
     m_state.flags = flags;
     m_state.run = (flags & 0x40) != 0;
@@ -417,7 +388,7 @@ void MachineCore::afterIdle(std::function<void()> then)
     send(cmd::flag(), [this](const Outcome &o) {
         if (o.status != OutcomeStatus::Ok || !o.reply.ok())
             return (void)unitError(o, "status", MachineMode::Alarm);
-        applyFlags(*o.reply.hexValue(), m_now);
+        applyFlags(*o.reply.hexValue());
     });
 }
 
@@ -456,6 +427,50 @@ void MachineCore::checkIdleWaiters()
         if (w)
             w();
     }
+}
+
+// ---- CoreHost ---------------------------------------------------------------------------
+
+void MachineCore::start(const Command &c, Then then)
+{
+    m_inFlight = std::move(then);
+    m_engine.start(c, m_now);
+}
+
+void MachineCore::startPacket(std::vector<Command> packet, Then then)
+{
+    m_inFlight = std::move(then);
+    m_engine.startPacket(std::move(packet), m_now);
+}
+
+void MachineCore::jobFinished(bool ok)
+{
+    if (onJobFinished)
+        onJobFinished(ok);
+}
+
+Command MachineCore::positionCommand() const
+{
+    return m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+}
+
+// Two position reads that agree: the machine stands (after RUN = 0 or an interrupt's brake).
+void MachineCore::whenStill(std::function<void()> then)
+{
+    const Command pos = positionCommand();
+    send(pos, [this, pos, then](const Outcome &first) {
+        if (unitError(first, "reading the position", MachineMode::Alarm))
+            return;
+        send(pos, [this, then, a = first.reply.values](const Outcome &second) {
+            if (unitError(second, "reading the position", MachineMode::Alarm))
+                return;
+            applyPosition(second.reply);
+            if (second.reply.values == a)
+                then();
+            else
+                whenStill(then);
+        });
+    });
 }
 
 // ---- operations ----------------------------------------------------------------------------
@@ -512,8 +527,7 @@ void MachineCore::linkOpened(double now)
     m_haltPending = false;
     m_jobIdleWaiters.clear();
     m_stopWaiters.clear();
-    if (m_job)
-        m_streamBlocked = false; // a wait in progress is taken up again from the program
+    m_job.linkOpened();
     setMode(MachineMode::Connecting);
     connectSequence();
     pump(now);
@@ -529,10 +543,8 @@ void MachineCore::linkClosed(const std::string &why, double now)
     m_idleWaiters.clear();
     m_inFlight = nullptr;
     m_haltPending = false;
-    if (m_job) {
-        m_needVerify = true;
-        m_linkWasLost = true;
-        m_pathFault = false; // the check of the counters after reconnecting takes over
+    if (m_job.active()) {
+        m_job.linkLost();
         fail("link lost: " + why + "; the job is kept and can resume after reconnecting", nullptr,
              MachineMode::LinkLost);
     } else if (why.empty()) {

@@ -206,8 +206,7 @@ void MachineCore::compareEeprom()
 
 void MachineCore::connected()
 {
-    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
-    send(pos, [this](const Outcome &o) {
+    send(positionCommand(), [this](const Outcome &o) {
         if (unitError(o, "reading the position", MachineMode::Alarm))
             return;
         applyPosition(o.reply);
@@ -222,13 +221,8 @@ void MachineCore::connected()
         m_lastPoll = m_now;
         if (m_state.mode != MachineMode::Connecting)
             return; // an error on the way
-        if (m_job && m_needVerify) {
-            setMode(MachineMode::Paused);
-            m_state.hold = HoldReason::User;
-            m_state.holdText = "link restored: checking the job's progress against the counters";
-            verifyProgress("reconnected");
+        if (m_job.resumeAfterReconnect())
             return;
-        }
         setMode(MachineMode::Idle);
     });
 }

@@ -39,6 +39,17 @@ double MachineCore::mmFromSteps(int axis, std::int64_t steps) const
     return static_cast<double>(steps) / m_config.axes[static_cast<std::size_t>(axis)].stepsPerMm;
 }
 
+// ---- run / pause / resume / abort ----
+
+MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
+{
+    if (auto refused = m_job.start(std::move(program), now))
+        return refused;
+    m_toolLift = false;
+    pump(now);
+    return std::nullopt;
+}
+
 // ---- pause / resume / abort ----------------------------------------------------------------
 
 MachineCore::Result MachineCore::pause(double now)
@@ -63,10 +74,10 @@ MachineCore::Result MachineCore::resume(double now)
 {
     if (m_state.mode != MachineMode::Paused)
         return notNow("Resume", m_state.mode);
-    if (m_needVerify)
+    if (m_job.verifying())
         return refusal("the job's progress is still being checked against the unit's counters");
-    if (m_state.hold == HoldReason::PathFault && m_job) {
-        returnToPath(1);
+    if (m_state.hold == HoldReason::PathFault && m_job.active()) {
+        m_job.returnToPath();
         pump(now);
         return std::nullopt;
     }
@@ -74,7 +85,7 @@ MachineCore::Result MachineCore::resume(double now)
         m_state.hold = HoldReason::None;
         m_state.holdText.clear();
         m_state.interruptInputs = 0;
-        setMode(m_job ? MachineMode::Running : MachineMode::Idle);
+        setMode(m_job.active() ? MachineMode::Running : MachineMode::Idle);
     };
     if (!m_holdNeedsGo) {
         running();
@@ -109,7 +120,7 @@ MachineCore::Result MachineCore::abort(double now)
     case MachineMode::Homing:
         break;
     default:
-        if (!m_job)
+        if (!m_job.active())
             return notNow("Abort", m_state.mode);
     }
     if (m_state.mode == MachineMode::ToolLifted)
@@ -117,12 +128,8 @@ MachineCore::Result MachineCore::abort(double now)
     m_steps.clear();
     m_idleWaiters.clear();
     m_jobIdleWaiters.clear();
-    const bool wasJob = m_job;
-    m_job = false;
-    m_state.jobActive = false;
-    m_streamBlocked = false;
-    m_needVerify = false;
-    m_pathFault = false;
+    const bool wasJob = m_job.active();
+    m_job.abandon();
     setMode(MachineMode::Stopping);
     send(cmd::halt(),
          [this](const Outcome &o) { unitError(o, "stopping (H)", MachineMode::Alarm); });
@@ -134,7 +141,7 @@ MachineCore::Result MachineCore::abort(double now)
         m_state.holdText.clear();
         setMode(MachineMode::Idle);
         if (wasJob) {
-            m_report.endS = m_now;
+            m_job.report().endS = m_now;
             publish();
             if (onJobFinished)
                 onJobFinished(false);
@@ -148,7 +155,7 @@ MachineCore::Result MachineCore::abort(double now)
 
 MachineCore::Result MachineCore::toolLift(bool stopSpindle, double now)
 {
-    if (m_state.mode != MachineMode::Paused || !m_job)
+    if (m_state.mode != MachineMode::Paused || !m_job.active())
         return notNow("Lifting the tool", m_state.mode);
     if (m_state.hold == HoldReason::PathFault)
         return refusal("off the planned path the unit holds no queue to keep: resume, which lifts "
@@ -235,7 +242,7 @@ MachineCore::Result MachineCore::toolLower(int speedPulsesPerS, double now)
                 send(cmd::flag(), [this](const Outcome &f) {
                     if (unitError(f, "status", MachineMode::Alarm))
                         return;
-                    applyFlags(*f.reply.hexValue(), m_now);
+                    applyFlags(*f.reply.hexValue());
                     m_holdNeedsGo = m_state.inta;
                     m_toolLift = false;
                     m_state.holdText = "tool lowered";
@@ -574,9 +581,9 @@ MachineCore::Result MachineCore::sendRaw(const std::string &text, double now)
     if (auto bad = validate(p.command, m_config.unit.variant, m_config.unit.maxPulseRate))
         return refusal(bad.message);
     const Op op = p.command.op;
-    if (m_job && (op == Op::Line || op == Op::Vector || op == Op::Delete || op == Op::Keep ||
-                  op == Op::Restore || op == Op::Jump || op == Op::ZeroAll ||
-                  op == Op::SetCounter || op == Op::Home))
+    if (m_job.active() && (op == Op::Line || op == Op::Vector || op == Op::Delete ||
+                           op == Op::Keep || op == Op::Restore || op == Op::Jump ||
+                           op == Op::ZeroAll || op == Op::SetCounter || op == Op::Home))
         return refusal("'" + text + "' would disturb the running job");
     send(p.command, [this](const Outcome &o) {
         if (o.status != OutcomeStatus::Ok) {
