@@ -18,17 +18,13 @@ using machine::UnitOp;
 
 using detail::isMotion;
 using detail::lineText;
+using detail::refusal;
 
 namespace {
 // Motion kept in the unit beyond two round trips when a packet is sized to what it holds, s.
 constexpr double kDryReserveS = 0.02;
 // Below this much wire time to spare the unit runs dry whatever the packet: send a full one.
 constexpr double kMinPacedWireS = 0.005;
-
-MachineError refusal(std::string text)
-{
-    return MachineError{std::move(text), {}, {}, -1};
-}
 } // namespace
 
 Job::Job(CoreHost &host)

@@ -109,7 +109,7 @@ MachineActivity MachineCore::currentActivity() const
     }
     if (!m_job.active())
         return MachineActivity::None;
-    if (m_toolLift)
+    if (m_toolLift.active())
         return MachineActivity::ToolLift;
     if (m_job.offPath())
         return m_state.mode == MachineMode::Running ? MachineActivity::ReturnToPath
@@ -347,7 +347,7 @@ void MachineCore::startPoll(double now)
         m_rttS = 0.8 * m_rttS + 0.2 * (m_now - m_pollSentAt);
         applyPosition(o.reply);
         if (m_job.active())
-            m_job.checkPolledPosition(m_kept);
+            m_job.checkPolledPosition(m_toolLift.kept());
     };
     m_engine.start(pos, now);
 }
@@ -418,7 +418,7 @@ void MachineCore::checkIdleWaiters()
     m_idleWaiters.clear();
     // The job's own waits (WaitIdle, M0, ProgramEnd, ...) count only while it runs: a queue
     // kept by K or a pause is not the job's end.
-    if (m_state.mode == MachineMode::Running && !m_kept) {
+    if (m_state.mode == MachineMode::Running && !m_toolLift.kept()) {
         for (auto &w : m_jobIdleWaiters)
             waiters.push_back(std::move(w));
         m_jobIdleWaiters.clear();

@@ -30,6 +30,7 @@
 #include "driver/link/linkengine.h"
 #include "driver/link/machinecommand.h"
 #include "driver/link/machinestate.h"
+#include "driver/link/toollift.h"
 #include "machine/machineconfig.h"
 #include "machine/unitprogram.h"
 
@@ -190,12 +191,7 @@ private:
     // the job (job.h) and its parts
     Job m_job{*this};
 
-    // tool lift
-    std::int64_t m_liftSteps = 0;
-    bool m_spindleStopped = false;
-    int m_liftSpindle = 0;
-    bool m_kept = false;
-    bool m_toolLift = false; // from toolLift() until the tool is down again
+    ToolLift m_toolLift{*this, m_job};
 };
 
 } // namespace frezka::driver

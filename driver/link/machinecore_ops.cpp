@@ -3,6 +3,7 @@
 
 #include "machinecore.h"
 
+#include "driver/link/machinecore_internal.h"
 #include "machine/homing.h"
 
 #include "protocol/commandparser.h"
@@ -13,21 +14,8 @@
 namespace frezka::driver {
 
 using namespace frezka::protocol;
-
-namespace {
-
-MachineError refusal(std::string text)
-{
-    return MachineError{std::move(text), {}, {}, -1};
-}
-
-MachineError notNow(const char *what, MachineMode mode)
-{
-    return refusal(std::string(what) + " is not possible now (the machine is " +
-                   machineModeName(mode) + ")");
-}
-
-} // namespace
+using detail::notNow;
+using detail::refusal;
 
 std::int64_t MachineCore::stepsFromMm(int axis, double mm) const
 {
@@ -45,7 +33,7 @@ MachineCore::Result MachineCore::run(machine::UnitProgram program, double now)
 {
     if (auto refused = m_job.start(std::move(program), now))
         return refused;
-    m_toolLift = false;
+    m_toolLift.reset();
     pump(now);
     return std::nullopt;
 }
@@ -151,106 +139,20 @@ MachineCore::Result MachineCore::abort(double now)
     return std::nullopt;
 }
 
-// ---- tool lift: H (pause) .. K, L up, [operator], L down, R, [V, XA], G (resume) ----------
+// ---- tool lift (toollift.h) ----------------------------------------------------------------
 
 MachineCore::Result MachineCore::toolLift(bool stopSpindle, double now)
 {
-    if (m_state.mode != MachineMode::Paused || !m_job.active())
-        return notNow("Lifting the tool", m_state.mode);
-    if (m_state.hold == HoldReason::PathFault)
-        return refusal("off the planned path the unit holds no queue to keep: resume, which lifts "
-                       "the tool and returns to the path, or abort");
-    const double liftMm = m_config.motion.toolLiftMm;
-    if (liftMm <= 0)
-        return refusal("the machine profile sets no tool lift height (motion.toolLiftMm)");
-    // Up is toward the upper soft limit of Z, never beyond it.
-    const machine::AxisConfig &z = m_config.axes[2];
-    const std::int64_t now_z = m_state.positionSteps[2];
-    const std::int64_t top = stepsFromMm(2, z.softMaxMm);
-    m_liftSteps = std::min(stepsFromMm(2, liftMm), std::max<std::int64_t>(0, top - now_z));
-    if (m_liftSteps == 0)
-        return refusal("Z is at its upper soft limit: no room to lift the tool");
-    m_spindleStopped = stopSpindle && m_state.spindlePermille > 0;
-    const int permille = m_state.spindlePermille;
-    m_liftSpindle = permille;
-    m_toolLift = true;
-    setMode(MachineMode::Stopping);
-    send(cmd::statusRead(4), [this](const Outcome &o) {
-        if (o.status == OutcomeStatus::Ok && o.reply.ok())
-            m_state.interruptInputs = (m_state.interruptInputs & 0xFF00) | *o.reply.hexValue();
-    });
-    send(cmd::keep(), [this](const Outcome &o) {
-        if (unitError(o, "keeping the queue (K)", MachineMode::Alarm))
-            return;
-        m_kept = true;
-    });
-    if (m_spindleStopped)
-        send(cmd::spindle(0), [this](const Outcome &o) {
-            if (!unitError(o, "stopping the spindle", MachineMode::Alarm))
-                m_state.spindlePermille = 0;
-        });
-    const int axes = m_state.axisCount;
-    const Command up = axes == 4 ? cmd::line(0, 0, m_liftSteps, 0) : cmd::line(0, 0, m_liftSteps);
-    send(up, [this](const Outcome &o) {
-        if (unitError(o, "lifting the tool", MachineMode::Alarm))
-            return;
-        afterIdle([this] {
-            m_state.hold = HoldReason::User;
-            m_state.holdText = "tool lifted";
-            setMode(MachineMode::ToolLifted);
-        });
-    });
+    if (auto refused = m_toolLift.lift(stopSpindle))
+        return refused;
     pump(now);
     return std::nullopt;
 }
 
 MachineCore::Result MachineCore::toolLower(int speedPulsesPerS, double now)
 {
-    if (m_state.mode != MachineMode::ToolLifted)
-        return notNow("Lowering the tool", m_state.mode);
-    if (speedPulsesPerS > 0) {
-        if (auto bad = validate(cmd::speed(speedPulsesPerS), m_config.unit.variant,
-                                m_config.unit.maxPulseRate))
-            return refusal(bad.message);
-    }
-    setMode(MachineMode::Stopping);
-    if (m_spindleStopped) {
-        send(cmd::spindle(m_liftSpindle), [this](const Outcome &o) {
-            if (!unitError(o, "starting the spindle", MachineMode::Alarm))
-                m_state.spindlePermille = m_liftSpindle;
-        });
-    }
-    const int axes = m_state.axisCount;
-    const Command down =
-        axes == 4 ? cmd::line(0, 0, -m_liftSteps, 0) : cmd::line(0, 0, -m_liftSteps);
-    send(down, [this, speedPulsesPerS](const Outcome &o) {
-        if (unitError(o, "lowering the tool", MachineMode::Alarm))
-            return;
-        afterIdle([this, speedPulsesPerS] {
-            sendFront(cmd::restore(), [this, speedPulsesPerS](const Outcome &r) {
-                if (unitError(r, "restoring the queue (R)", MachineMode::Alarm))
-                    return;
-                m_kept = false;
-                if (speedPulsesPerS > 0) {
-                    send(cmd::speed(speedPulsesPerS), [this](const Outcome &v) {
-                        unitError(v, "setting the new speed", MachineMode::Alarm);
-                    });
-                    send(cmd::exchangeAll(), [this](const Outcome &x) {
-                        unitError(x, "applying the new speed (XA)", MachineMode::Alarm);
-                    });
-                }
-                send(cmd::flag(), [this](const Outcome &f) {
-                    if (unitError(f, "status", MachineMode::Alarm))
-                        return;
-                    applyFlags(*f.reply.hexValue());
-                    m_holdNeedsGo = m_state.inta;
-                    m_toolLift = false;
-                    m_state.holdText = "tool lowered";
-                    setMode(MachineMode::Paused);
-                });
-            });
-        });
-    });
+    if (auto refused = m_toolLift.lower(speedPulsesPerS))
+        return refused;
     pump(now);
     return std::nullopt;
 }

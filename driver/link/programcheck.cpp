@@ -11,14 +11,8 @@ namespace frezka::driver {
 
 using namespace frezka::protocol;
 using detail::lineText;
+using detail::refusal;
 using machine::UnitOp;
-
-namespace {
-MachineError refusal(std::string text)
-{
-    return MachineError{std::move(text), {}, {}, -1};
-}
-} // namespace
 
 std::optional<MachineError> checkProgram(machine::UnitProgram &program, const MachineState &state,
                                          const machine::MachineConfig &config, std::string *note)
