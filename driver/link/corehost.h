@@ -53,6 +53,8 @@ public:
     virtual void applyPosition(const protocol::Reply &r) = 0;
     virtual void applyFlags(std::uint8_t flags) = 0;
     virtual protocol::Command positionCommand() const = 0; // P4 or PF for the axis count
+    // Queues the position and F reads (a fresh poll); `then` (may be empty) after F.
+    virtual void readPositionAndStatus(std::function<void()> then) = 0;
 
     // ---- the unit's hold (INTA): whether resuming needs G; an expected interrupt (probe)
     virtual void setHoldNeedsGo(bool on) = 0;

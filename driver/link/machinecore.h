@@ -26,7 +26,9 @@
 
 #include "driver/link/corehost.h"
 #include "driver/link/coretypes.h"
+#include "driver/link/homingcycle.h"
 #include "driver/link/job.h"
+#include "driver/link/jog.h"
 #include "driver/link/linkengine.h"
 #include "driver/link/machinecommand.h"
 #include "driver/link/machinestate.h"
@@ -154,11 +156,12 @@ private:
     void probeDoublePacketStart();
     void packetStartTest(int attempt);
     void connected();
+    void readPositionAndStatus(std::function<void()> then) override;
 
     // operations helpers (machinecore_ops.cpp)
+    Result accepted(Result refused, double now); // pumps when nothing was refused
     void interrupted();
     double mmFromSteps(int axis, std::int64_t steps) const;
-    Result jogTo(int axis, std::int64_t target, double speedMmPerMin, double now);
 
     machine::MachineConfig m_config;
     CoreOptions m_options;
@@ -186,12 +189,13 @@ private:
     // the unit's hold: INTA set by H or an interrupt, resumed with G
     bool m_holdNeedsGo = false;
     bool m_haltExpected = false; // an interrupt is part of the operation (probe), not a hold
-    bool m_jogContinuous = false;
 
     // the job (job.h) and its parts
     Job m_job{*this};
 
     ToolLift m_toolLift{*this, m_job};
+    HomingCycle m_homing{*this};
+    Jog m_jog{*this};
 };
 
 } // namespace frezka::driver

@@ -206,12 +206,23 @@ void MachineCore::compareEeprom()
 
 void MachineCore::connected()
 {
+    readPositionAndStatus([this] {
+        if (m_state.mode != MachineMode::Connecting)
+            return; // an error on the way
+        if (m_job.resumeAfterReconnect())
+            return;
+        setMode(MachineMode::Idle);
+    });
+}
+
+void MachineCore::readPositionAndStatus(std::function<void()> then)
+{
     send(positionCommand(), [this](const Outcome &o) {
         if (unitError(o, "reading the position", MachineMode::Alarm))
             return;
         applyPosition(o.reply);
     });
-    send(cmd::flag(), [this](const Outcome &o) {
+    send(cmd::flag(), [this, then = std::move(then)](const Outcome &o) {
         if (unitError(o, "reading the status", MachineMode::Alarm))
             return;
         m_state.flags = *o.reply.hexValue();
@@ -219,11 +230,8 @@ void MachineCore::connected()
         m_state.inta = (m_state.flags & 0x80) != 0;
         m_state.queueFull = (m_state.flags & 0x20) != 0;
         m_lastPoll = m_now;
-        if (m_state.mode != MachineMode::Connecting)
-            return; // an error on the way
-        if (m_job.resumeAfterReconnect())
-            return;
-        setMode(MachineMode::Idle);
+        if (then)
+            then();
     });
 }
 

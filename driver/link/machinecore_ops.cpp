@@ -143,18 +143,12 @@ MachineCore::Result MachineCore::abort(double now)
 
 MachineCore::Result MachineCore::toolLift(bool stopSpindle, double now)
 {
-    if (auto refused = m_toolLift.lift(stopSpindle))
-        return refused;
-    pump(now);
-    return std::nullopt;
+    return accepted(m_toolLift.lift(stopSpindle), now);
 }
 
 MachineCore::Result MachineCore::toolLower(int speedPulsesPerS, double now)
 {
-    if (auto refused = m_toolLift.lower(speedPulsesPerS))
-        return refused;
-    pump(now);
-    return std::nullopt;
+    return accepted(m_toolLift.lower(speedPulsesPerS), now);
 }
 
 // ---- interrupts ----------------------------------------------------------------------------
@@ -189,189 +183,40 @@ void MachineCore::interrupted()
         send(cmd::statusRead(5), cause(5));
 }
 
-// ---- homing --------------------------------------------------------------------------------
+// ---- homing (homingcycle.h), jog (jog.h) ----------------------------------------------------
 
 MachineCore::Result MachineCore::home(double now, unsigned axisMask)
 {
-    if (m_state.mode != MachineMode::Idle && m_state.mode != MachineMode::Alarm)
-        return notNow("Homing", m_state.mode);
-    const std::vector<machine::HomingMove> all = machine::homingSequence(m_config);
-    std::vector<machine::HomingMove> moves;
-    unsigned homedByProfile = 0;
-    for (const auto &m : all) {
-        const int a = static_cast<int>(m.axis);
-        if (a >= m_state.axisCount)
-            continue;
-        homedByProfile |= 1u << a;
-        if (axisMask & (1u << a))
-            moves.push_back(m);
-    }
-    if (moves.empty()) {
-        return refusal(all.empty() ? "the machine profile homes no axis (axes.*.homing.order)"
-                                   : "the machine profile does not home that axis "
-                                     "(axes.*.homing.order is 0)");
-    }
-    unsigned homing = 0;
-    for (const auto &m : moves)
-        homing |= 1u << static_cast<int>(m.axis);
-    // Before v19 a GVE64 cannot set one axis's counter (N<axis>): only N, which zeroes them all,
-    // and only when every axis is homed to 0 together.
-    const bool zeroAll = !m_state.features.vlVkXmNa;
-    if (zeroAll) {
-        unsigned every = 0; // the axes the machine has (an absent one's counter means nothing)
-        for (int a = 0; a < m_state.axisCount; ++a)
-            every |= m_config.axes[static_cast<std::size_t>(a)].present ? 1u << a : 0u;
-        const bool allZero =
-            std::all_of(moves.begin(), moves.end(),
-                        [](const machine::HomingMove &m) { return m.homeSteps == 0; });
-        if (homing != every || !allZero)
-            return refusal("this unit's firmware (v" + std::to_string(m_state.firmwareVersion) +
-                           ") cannot set one axis's counter (N<axis> needs v19), and N zeroes "
-                           "every counter: home all the machine's axes together, each with home "
-                           "position 0");
-    }
-    m_state.homedAxes = static_cast<std::uint8_t>(m_state.homedAxes & ~homing);
-    m_state.homed = false;
-    setMode(MachineMode::Homing);
-    for (const auto &m : moves) {
-        const auto axis = static_cast<Axis>(m.axis);
-        const Command w =
-            cmd::home(axis, m.travelSteps, m.towardPulsesPerS, m.backOffSteps, m.offPulsesPerS);
-        if (auto bad = validate(w, m_config.unit.variant, m_config.unit.maxPulseRate)) {
-            m_steps.clear();
-            fail("homing axis " + std::string(1, axisLetter(axis)) + ": " + bad.message, nullptr,
-                 MachineMode::Alarm);
-            return std::nullopt;
-        }
-        send(w, [this, axis](const Outcome &o) {
-            if (o.status == OutcomeStatus::Ok && o.reply.code == ReplyCode::OutOfRange) {
-                m_steps.clear();
-                fail(std::string("homing axis ") + axisLetter(axis) +
-                         ": the home switch was not found within the configured travel",
-                     &o, MachineMode::Alarm);
-                return;
-            }
-            if (unitError(o, std::string("homing axis ") + axisLetter(axis), MachineMode::Alarm))
-                m_steps.clear();
-        });
-        if (zeroAll)
-            continue; // N after the last axis
-        send(cmd::setCounter(axis, m.homeSteps), [this, axis](const Outcome &o) {
-            if (unitError(o, std::string("setting the counter of ") + axisLetter(axis),
-                          MachineMode::Alarm)) {
-                m_steps.clear();
-                return;
-            }
-            m_state.homedAxes =
-                static_cast<std::uint8_t>(m_state.homedAxes | (1u << static_cast<int>(axis)));
-        });
-    }
-    if (zeroAll) {
-        send(cmd::zeroAll(), [this, homing](const Outcome &o) {
-            if (unitError(o, "zeroing the counters (N)", MachineMode::Alarm)) {
-                m_steps.clear();
-                return;
-            }
-            m_state.homedAxes = static_cast<std::uint8_t>(m_state.homedAxes | homing);
-        });
-    }
-    connected(); // position + status -> Idle
-    send(cmd::flag(), [this, homedByProfile](const Outcome &o) {
-        if (unitError(o, "status", MachineMode::Alarm))
-            return;
-        m_state.homed = (m_state.homedAxes & homedByProfile) == homedByProfile;
-        setMode(MachineMode::Idle);
-    });
-    pump(now);
+    bool queued = false;
+    if (auto refused = m_homing.start(axisMask, &queued))
+        return refused;
+    if (queued)
+        pump(now);
     return std::nullopt;
 }
 
-// ---- jog -----------------------------------------------------------------------------------
-
-MachineCore::Result MachineCore::jogTo(int axis, std::int64_t target, double speedMmPerMin,
-                                       double now)
+MachineCore::Result MachineCore::accepted(Result refused, double now)
 {
-    const auto &ax = m_config.axes[static_cast<std::size_t>(axis)];
-    const std::int64_t lo = stepsFromMm(axis, ax.softMinMm);
-    const std::int64_t hi = stepsFromMm(axis, ax.softMaxMm);
-    const std::int64_t from = m_state.positionSteps[static_cast<std::size_t>(axis)];
-    target = std::clamp(target, std::min(lo, hi), std::max(lo, hi));
-    if (from < std::min(lo, hi) || from > std::max(lo, hi))
-        return refusal("the axis is outside its soft limits: home the machine first");
-    const std::int64_t delta = target - from;
-    if (delta == 0)
-        return refusal("the axis is at its soft limit");
-    const double rate = std::min(speedMmPerMin, ax.maxSpeedMmPerMin) / 60.0 * ax.stepsPerMm;
-    const auto pulses =
-        std::clamp<std::int64_t>(std::llround(rate), 10, m_config.unit.maxPulseRate);
-    std::array<std::int64_t, 4> d{};
-    d[static_cast<std::size_t>(axis)] = delta;
-    const Command l =
-        m_state.axisCount == 4 ? cmd::line(d[0], d[1], d[2], d[3]) : cmd::line(d[0], d[1], d[2]);
-    setMode(MachineMode::Jogging);
-    send(cmd::speed(pulses), [this](const Outcome &o) {
-        if (unitError(o, "setting the jog speed", MachineMode::Alarm))
-            m_steps.clear();
-    });
-    send(l, [this](const Outcome &o) {
-        if (unitError(o, "jogging", MachineMode::Alarm)) {
-            m_steps.clear();
-            return;
-        }
-        afterIdle([this] {
-            if (m_state.mode == MachineMode::Jogging && !m_jogContinuous)
-                setMode(MachineMode::Idle);
-        });
-    });
-    pump(now);
-    return std::nullopt;
+    if (!refused)
+        pump(now);
+    return refused;
 }
 
 MachineCore::Result MachineCore::jogStep(int axis, double distanceMm, double speedMmPerMin,
                                          double now)
 {
-    if (m_state.mode != MachineMode::Idle)
-        return notNow("Jogging", m_state.mode);
-    if (axis < 0 || axis >= m_state.axisCount)
-        return refusal("no such axis");
-    m_jogContinuous = false;
-    const auto from = m_state.positionSteps[static_cast<std::size_t>(axis)];
-    return jogTo(axis, from + stepsFromMm(axis, distanceMm), speedMmPerMin, now);
+    return accepted(m_jog.step(axis, distanceMm, speedMmPerMin), now);
 }
 
 MachineCore::Result MachineCore::jogContinuous(int axis, int direction, double speedMmPerMin,
                                                double now)
 {
-    if (m_state.mode != MachineMode::Idle)
-        return notNow("Jogging", m_state.mode);
-    if (axis < 0 || axis >= m_state.axisCount || direction == 0)
-        return refusal("no such axis or direction");
-    const auto &ax = m_config.axes[static_cast<std::size_t>(axis)];
-    m_jogContinuous = true;
-    const double limitMm =
-        direction > 0 ? std::max(ax.softMinMm, ax.softMaxMm) : std::min(ax.softMinMm, ax.softMaxMm);
-    auto r = jogTo(axis, stepsFromMm(axis, limitMm), speedMmPerMin, now);
-    if (r)
-        m_jogContinuous = false;
-    return r;
+    return accepted(m_jog.continuous(axis, direction, speedMmPerMin), now);
 }
 
 MachineCore::Result MachineCore::jogStop(double now)
 {
-    if (m_state.mode != MachineMode::Jogging)
-        return notNow("Stopping the jog", m_state.mode);
-    m_jogContinuous = false;
-    sendFront(cmd::halt(), [this](const Outcome &o) {
-        unitError(o, "stopping the jog (H)", MachineMode::Alarm);
-    });
-    send(cmd::deleteQueue(), [this](const Outcome &o) {
-        if (unitError(o, "ending the jog (D)", MachineMode::Alarm))
-            return;
-        m_state.inta = false;
-        setMode(MachineMode::Idle);
-    });
-    pump(now);
-    return std::nullopt;
+    return accepted(m_jog.stop(), now);
 }
 
 // ---- MPG, spindle, outputs, override, raw --------------------------------------------------
