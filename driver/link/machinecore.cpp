@@ -473,6 +473,26 @@ void MachineCore::whenStill(std::function<void()> then)
     });
 }
 
+void MachineCore::readPositionAndStatus(std::function<void()> then)
+{
+    send(positionCommand(), [this](const Outcome &o) {
+        if (unitError(o, "reading the position", MachineMode::Alarm))
+            return;
+        applyPosition(o.reply);
+    });
+    send(cmd::flag(), [this, then = std::move(then)](const Outcome &o) {
+        if (unitError(o, "reading the status", MachineMode::Alarm))
+            return;
+        m_state.flags = *o.reply.hexValue();
+        m_state.run = (m_state.flags & 0x40) != 0;
+        m_state.inta = (m_state.flags & 0x80) != 0;
+        m_state.queueFull = (m_state.flags & 0x20) != 0;
+        m_lastPoll = m_now;
+        if (then)
+            then();
+    });
+}
+
 // ---- operations ----------------------------------------------------------------------------
 
 namespace {
@@ -529,7 +549,7 @@ void MachineCore::linkOpened(double now)
     m_stopWaiters.clear();
     m_job.linkOpened();
     setMode(MachineMode::Connecting);
-    connectSequence();
+    m_connect.start();
     pump(now);
 }
 

@@ -24,8 +24,10 @@
 // exactly how far the unit got, and the job continues from the next command after the modal
 // settings (V, A, B, T, $, VK/VN) in force there have been sent again.
 
+#include "driver/link/connectsequence.h"
 #include "driver/link/corehost.h"
 #include "driver/link/coretypes.h"
+#include "driver/link/eepromsync.h"
 #include "driver/link/homingcycle.h"
 #include "driver/link/job.h"
 #include "driver/link/jog.h"
@@ -147,15 +149,6 @@ private:
     MachineActivity currentActivity() const;
     void checkIdleWaiters();
 
-    // connect sequence (machinecore_connect.cpp)
-    void connectSequence();
-    void switchChecksums(int attempt);
-    void setupUnit();
-    void setupAfterIdentify();
-    void compareEeprom();
-    void probeDoublePacketStart();
-    void packetStartTest(int attempt);
-    void connected();
     void readPositionAndStatus(std::function<void()> then) override;
 
     // operations helpers (machinecore_ops.cpp)
@@ -195,6 +188,8 @@ private:
 
     ToolLift m_toolLift{*this, m_job};
     HomingCycle m_homing{*this};
+    EepromSync m_eeprom{*this};
+    ConnectSequence m_connect{*this, m_job, m_eeprom};
     Jog m_jog{*this};
 };
 

@@ -214,6 +214,11 @@ MachineCore::Result MachineCore::jogContinuous(int axis, int direction, double s
     return accepted(m_jog.continuous(axis, direction, speedMmPerMin), now);
 }
 
+MachineCore::Result MachineCore::writeEeprom(double now)
+{
+    return accepted(m_eeprom.write(), now);
+}
+
 MachineCore::Result MachineCore::jogStop(double now)
 {
     return accepted(m_jog.stop(), now);
