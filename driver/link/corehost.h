@@ -35,6 +35,7 @@ public:
     virtual void afterIdle(std::function<void()> then) = 0;    // RUN = 0
     virtual void afterJobIdle(std::function<void()> then) = 0; // the same, only while running
     virtual void clearJobIdleWaiters() = 0;
+    virtual void dropPending() = 0; // the queued steps and every wait for idle
     virtual void afterStopOrInterrupt(std::function<void()> then) = 0; // RUN = 0 or INTA = 1
     virtual void whenStill(std::function<void()> then) = 0;            // two equal position reads
 

@@ -200,7 +200,7 @@ void MachineCore::onOutcome(const Outcome &o)
     if (o.status == OutcomeStatus::Ok && o.reply.inta && !m_haltPending && !m_haltExpected &&
         m_state.mode == MachineMode::Running && !m_state.inta) {
         m_state.inta = true;
-        interrupted();
+        m_hold.interrupted();
     }
 }
 
@@ -375,10 +375,10 @@ void MachineCore::applyFlags(std::uint8_t flags)
     m_state.queueFull = (flags & 0x20) != 0;
     m_dirty = true;
     if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running && !m_haltExpected)
-        interrupted();
+        m_hold.interrupted();
     if (m_state.inta && !wasInta &&
         (m_state.mode == MachineMode::Jogging || m_state.mode == MachineMode::Idle))
-        interrupted();
+        m_hold.interrupted();
     checkIdleWaiters();
 }
 
@@ -441,6 +441,13 @@ void MachineCore::startPacket(std::vector<Command> packet, Then then)
 {
     m_inFlight = std::move(then);
     m_engine.startPacket(std::move(packet), m_now);
+}
+
+void MachineCore::dropPending()
+{
+    m_steps.clear();
+    m_idleWaiters.clear();
+    m_jobIdleWaiters.clear();
 }
 
 void MachineCore::jobFinished(bool ok)

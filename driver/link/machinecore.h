@@ -28,6 +28,7 @@
 #include "driver/link/corehost.h"
 #include "driver/link/coretypes.h"
 #include "driver/link/eepromsync.h"
+#include "driver/link/hold.h"
 #include "driver/link/homingcycle.h"
 #include "driver/link/job.h"
 #include "driver/link/jog.h"
@@ -35,6 +36,7 @@
 #include "driver/link/machinecommand.h"
 #include "driver/link/machinestate.h"
 #include "driver/link/toollift.h"
+#include "driver/link/unitcontrols.h"
 #include "machine/machineconfig.h"
 #include "machine/unitprogram.h"
 
@@ -116,6 +118,7 @@ private:
     void afterIdle(std::function<void()> then) override;
     void afterJobIdle(std::function<void()> then) override;
     void clearJobIdleWaiters() override { m_jobIdleWaiters.clear(); }
+    void dropPending() override;
     // Runs `then` when F shows RUN = 0 or INTA = 1 (an interrupt braking a move).
     void afterStopOrInterrupt(std::function<void()> then) override;
     void whenStill(std::function<void()> then) override;
@@ -130,7 +133,7 @@ private:
     void applyPosition(const protocol::Reply &r) override;
     void applyFlags(std::uint8_t flags) override;
     protocol::Command positionCommand() const override;
-    void setHoldNeedsGo(bool on) override { m_holdNeedsGo = on; }
+    void setHoldNeedsGo(bool on) override { m_hold.setNeedsGo(on); }
     void setHaltExpected(bool on) override { m_haltExpected = on; }
     double now() const override { return m_now; }
     double rttS() const override { return m_rttS; }
@@ -153,7 +156,6 @@ private:
 
     // operations helpers (machinecore_ops.cpp)
     Result accepted(Result refused, double now); // pumps when nothing was refused
-    void interrupted();
     double mmFromSteps(int axis, std::int64_t steps) const;
 
     machine::MachineConfig m_config;
@@ -179,8 +181,6 @@ private:
     double m_pollSentAt = 0;
     std::int64_t m_pollCount = 0;
 
-    // the unit's hold: INTA set by H or an interrupt, resumed with G
-    bool m_holdNeedsGo = false;
     bool m_haltExpected = false; // an interrupt is part of the operation (probe), not a hold
 
     // the job (job.h) and its parts
@@ -190,6 +190,8 @@ private:
     HomingCycle m_homing{*this};
     EepromSync m_eeprom{*this};
     ConnectSequence m_connect{*this, m_job, m_eeprom};
+    Hold m_hold{*this, m_job};
+    UnitControls m_controls{*this, m_job};
     Jog m_jog{*this};
 };
 
