@@ -10,62 +10,6 @@ namespace frezka::driver {
 
 using namespace frezka::protocol;
 
-const char *machineModeName(MachineMode mode)
-{
-    switch (mode) {
-    case MachineMode::Disconnected:
-        return "Disconnected";
-    case MachineMode::Connecting:
-        return "Connecting";
-    case MachineMode::Idle:
-        return "Idle";
-    case MachineMode::Homing:
-        return "Homing";
-    case MachineMode::Jogging:
-        return "Jogging";
-    case MachineMode::Running:
-        return "Running";
-    case MachineMode::Stopping:
-        return "Stopping";
-    case MachineMode::Paused:
-        return "Paused";
-    case MachineMode::ToolLifted:
-        return "Tool lifted";
-    case MachineMode::Alarm:
-        return "Alarm";
-    case MachineMode::LinkLost:
-        return "Link lost";
-    }
-    return "?";
-}
-
-const char *machineActivityName(MachineActivity activity)
-{
-    switch (activity) {
-    case MachineActivity::None:
-        return "None";
-    case MachineActivity::Connecting:
-        return "Connecting";
-    case MachineActivity::Homing:
-        return "Homing";
-    case MachineActivity::Jogging:
-        return "Jogging";
-    case MachineActivity::Job:
-        return "Job";
-    case MachineActivity::CheckingProgress:
-        return "Checking progress";
-    case MachineActivity::Probing:
-        return "Probing";
-    case MachineActivity::PathFault:
-        return "Path fault";
-    case MachineActivity::ReturnToPath:
-        return "Return to path";
-    case MachineActivity::ToolLift:
-        return "Tool lift";
-    }
-    return "?";
-}
-
 MachineCore::MachineCore(machine::MachineConfig config, CoreOptions options)
     : m_config(std::move(config))
     , m_options(options)
@@ -210,7 +154,7 @@ double MachineCore::deadline() const
     if (!m_open)
         return d;
     if (m_engine.idle()) {
-        d = std::min(d, nextPollTime());
+        d = std::min(d, m_haltPending ? kNoDeadline : m_poller.nextTime());
         if (m_job.waitUntil() > m_now)
             d = std::min(d, m_job.waitUntil());
     }
@@ -244,8 +188,8 @@ void MachineCore::pump(double now)
             m_engine.start(s.command, now);
             break;
         }
-        if (pollDue(now)) {
-            startPoll(now);
+        if (!m_haltPending && now >= m_poller.nextTime()) {
+            m_poller.start(now);
             break;
         }
         if (m_job.mayStream(now)) {
@@ -256,100 +200,6 @@ void MachineCore::pump(double now)
         break;
     }
     publish();
-}
-
-double MachineCore::nextPollTime() const
-{
-    if (m_haltPending)
-        return kNoDeadline;
-    switch (m_state.mode) {
-    case MachineMode::Disconnected:
-    case MachineMode::Connecting:
-    case MachineMode::LinkLost:
-        return kNoDeadline;
-    default:
-        break;
-    }
-    if (!streaming() || m_job.queueFullSeen())
-        return m_lastPoll + m_options.pollIntervalS;
-    // A poll costs a round trip of the link. Plenty of motion queued and the motion ahead slower
-    // than the wire: the stream has time to spare, poll at the full rate. Otherwise every round
-    // trip spent on polls is missing from the stream: keep them to wireBoundPollShare of the
-    // link's time (the last poll's cost over that share), at least every maxPollGapS.
-    const double buffered = m_job.pace().bufferedS();
-    if (!m_job.pace().wireBoundAhead() && buffered >= std::max(0.25, 10 * m_rttS))
-        return m_lastPoll + m_options.pollIntervalS;
-    const double cost = m_lastPollTransactions * m_rttS;
-    const double share = std::max(1e-3, m_options.wireBoundPollShare);
-    // A poll that also read F and the inputs delays the next one by its extra cost.
-    return m_lastPoll + std::clamp(cost / share, m_options.pollIntervalS,
-                                   std::max(m_options.pollIntervalS, m_options.maxPollGapS) *
-                                       m_lastPollTransactions);
-}
-
-bool MachineCore::pollDue(double now) const
-{
-    return now >= nextPollTime();
-}
-
-void MachineCore::startPoll(double now)
-{
-    // Polls keep their schedule: one that had to wait for a packet's reply does not push the
-    // next one back, so the rate stays at pollIntervalS where the link has room for it.
-    const double due = nextPollTime();
-    m_lastPoll = due <= now && now - due < m_options.pollIntervalS ? due : now;
-    m_pollTimes.push_back(now);
-    while (!m_pollTimes.empty() && m_pollTimes.front() < now - 1.0)
-        m_pollTimes.pop_front();
-    m_state.pollHz = static_cast<double>(m_pollTimes.size());
-    if (m_job.active())
-        m_job.pollStarted(now);
-    const Command pos = positionCommand();
-    // While streaming, every reply carries INTA (interrupts) and packet replies carry queue
-    // full: F and the inputs are read less often there, to leave the wire to the job.
-    // Where the stream is wire-bound, the position alone, F and the inputs every 8th time.
-    const bool stream = streaming();
-    const bool lean = stream && (m_job.pace().wireBoundAhead() ||
-                                 m_job.pace().bufferedS() < std::max(0.25, 10 * m_rttS));
-    const bool flags = !stream || m_pollCount % (lean ? 8 : 4) == (lean ? 7 : 0);
-    ++m_pollCount;
-    const bool inputs =
-        (!lean || flags) && now - m_lastInputsPoll >= (stream ? 4 * m_options.inputsPollIntervalS
-                                                              : m_options.inputsPollIntervalS);
-    if (inputs)
-        m_lastInputsPoll = now;
-    m_lastPollTransactions =
-        1 + (flags ? 1 : 0) + (inputs ? (m_config.unit.variant != Variant::Gve84 ? 2 : 1) : 0);
-    // Position now, F right after it, inputs after that: one poll, ahead of other steps.
-    auto byte = [this](std::uint8_t &field) {
-        return [this, &field](const Outcome &o) {
-            if (o.status == OutcomeStatus::Ok && o.reply.ok()) {
-                field = *o.reply.hexValue();
-                m_dirty = true;
-            }
-        };
-    };
-    if (inputs && m_config.unit.variant != Variant::Gve84)
-        sendFront(cmd::input2(), byte(m_state.inputs2));
-    if (inputs)
-        sendFront(cmd::input1(), byte(m_state.inputs1));
-    if (flags) {
-        sendFront(cmd::flag(), [this](const Outcome &o) {
-            if (o.status != OutcomeStatus::Ok || !o.reply.ok())
-                return (void)unitError(o, "status poll", MachineMode::Alarm);
-            applyFlags(*o.reply.hexValue());
-        });
-    }
-    m_pollSentAt = now;
-    m_inFlight = [this](const Outcome &o) {
-        if (o.status != OutcomeStatus::Ok || !o.reply.ok())
-            return (void)unitError(o, "position poll", MachineMode::Alarm);
-        m_rttS = 0.8 * m_rttS + 0.2 * (m_now - m_pollSentAt);
-        applyPosition(o.reply);
-        if (m_job.active())
-            m_job.checkPolledPosition(m_toolLift.kept());
-    };
-    m_engine.start(pos, now);
 }
 
 void MachineCore::applyPosition(const Reply &r)
@@ -494,7 +344,7 @@ void MachineCore::readPositionAndStatus(std::function<void()> then)
         m_state.run = (m_state.flags & 0x40) != 0;
         m_state.inta = (m_state.flags & 0x80) != 0;
         m_state.queueFull = (m_state.flags & 0x20) != 0;
-        m_lastPoll = m_now;
+        m_poller.restartAt(m_now);
         if (then)
             then();
     });

@@ -35,6 +35,7 @@
 #include "driver/link/linkengine.h"
 #include "driver/link/machinecommand.h"
 #include "driver/link/machinestate.h"
+#include "driver/link/poller.h"
 #include "driver/link/toollift.h"
 #include "driver/link/unitcontrols.h"
 #include "machine/machineconfig.h"
@@ -136,8 +137,8 @@ private:
     void setHoldNeedsGo(bool on) override { m_hold.setNeedsGo(on); }
     void setHaltExpected(bool on) override { m_haltExpected = on; }
     double now() const override { return m_now; }
-    double rttS() const override { return m_rttS; }
-    void restartPollCount() override { m_pollCount = 0; }
+    double rttS() const override { return m_poller.rttS(); }
+    void restartPollCount() override { m_poller.restartCount(); }
     const CoreOptions &options() const override { return m_options; }
     LinkEngine &link() override { return m_engine; }
     std::int64_t stepsFromMm(int axis, double mm) const override;
@@ -146,9 +147,6 @@ private:
     void pump(double now);
     void onOutcome(const Outcome &o);
     bool streaming() const { return m_job.streaming(m_now); }
-    bool pollDue(double now) const;
-    double nextPollTime() const;
-    void startPoll(double now);
     MachineActivity currentActivity() const;
     void checkIdleWaiters();
 
@@ -172,14 +170,7 @@ private:
     bool m_open = false;
 
     // polling
-    double m_lastPoll = -1e9;
-    double m_lastInputsPoll = -1e9;
-    std::deque<double> m_pollTimes; // for pollHz
-    bool m_haltPending = false;     // H / W in flight: the unit answers nothing else meanwhile
-    double m_rttS = 0.01;           // round trip of a poll, smoothed
-    int m_lastPollTransactions = 1; // transactions of the last poll (position, F, inputs)
-    double m_pollSentAt = 0;
-    std::int64_t m_pollCount = 0;
+    bool m_haltPending = false; // H / W in flight: the unit answers nothing else meanwhile
 
     bool m_haltExpected = false; // an interrupt is part of the operation (probe), not a hold
 
@@ -192,6 +183,7 @@ private:
     ConnectSequence m_connect{*this, m_job, m_eeprom};
     Hold m_hold{*this, m_job};
     UnitControls m_controls{*this, m_job};
+    Poller m_poller{*this, m_job, m_toolLift};
     Jog m_jog{*this};
 };
 
