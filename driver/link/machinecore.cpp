@@ -362,33 +362,72 @@ template<class... F>
 Overloaded(F...) -> Overloaded<F...>;
 } // namespace
 
-MachineCore::Result MachineCore::execute(const MachineCommand &command, double now)
+MachineCore::Result MachineCore::execute(MachineCommand command, double now)
 {
     return std::visit(
         Overloaded{
-            [&](const op::Run &c) { return run(c.program, now); },
-            [&](const op::Pause &) { return pause(now); },
-            [&](const op::Resume &) { return resume(now); },
-            [&](const op::Abort &) { return abort(now); },
-            [&](const op::ToolLift &c) { return toolLift(c.stopSpindle, now); },
-            [&](const op::ToolLower &c) { return toolLower(c.speedPulsesPerS, now); },
-            [&](const op::Home &c) { return home(now, c.axisMask); },
-            [&](const op::JogStep &c) {
-                return jogStep(c.axis, c.distanceMm, c.speedMmPerMin, now);
+            [&](op::Run &c) { return runJob(std::move(c.program), now); },
+            [&](op::Pause &) { return accepted(m_hold.pause(), now); },
+            [&](op::Resume &) { return accepted(m_hold.resume(), now); },
+            [&](op::Abort &) { return accepted(m_hold.abort(), now); },
+            [&](op::ToolLift &c) { return accepted(m_toolLift.lift(c.stopSpindle), now); },
+            [&](op::ToolLower &c) { return accepted(m_toolLift.lower(c.speedPulsesPerS), now); },
+            [&](op::Home &c) { return startHoming(c.axisMask, now); },
+            [&](op::JogStep &c) {
+                return accepted(m_jog.step(c.axis, c.distanceMm, c.speedMmPerMin), now);
             },
-            [&](const op::JogContinuous &c) {
-                return jogContinuous(c.axis, c.direction, c.speedMmPerMin, now);
+            [&](op::JogContinuous &c) {
+                return accepted(m_jog.continuous(c.axis, c.direction, c.speedMmPerMin), now);
             },
-            [&](const op::JogStop &) { return jogStop(now); },
-            [&](const op::SetMpg &c) { return setMpg(c.on, now); },
-            [&](const op::SetSpindleRpm &c) { return setSpindleRpm(c.rpm, now); },
-            [&](const op::SetOutputs &c) { return setOutputs(c.mask, c.activeHigh, now); },
-            [&](const op::SetOverride &c) { return setOverride(c.percent, now); },
-            [&](const op::OverrideStep &c) { return overrideStep(c.up, now); },
-            [&](const op::SendRaw &c) { return sendRaw(c.text, now); },
-            [&](const op::WriteEeprom &) { return writeEeprom(now); },
+            [&](op::JogStop &) { return accepted(m_jog.stop(), now); },
+            [&](op::SetMpg &c) { return accepted(m_controls.setMpg(c.on), now); },
+            [&](op::SetSpindleRpm &c) { return accepted(m_controls.setSpindleRpm(c.rpm), now); },
+            [&](op::SetOutputs &c) {
+                return accepted(m_controls.setOutputs(c.mask, c.activeHigh), now);
+            },
+            [&](op::SetOverride &c) { return accepted(m_controls.setOverride(c.percent), now); },
+            [&](op::OverrideStep &c) { return accepted(m_controls.overrideStep(c.up), now); },
+            [&](op::SendRaw &c) { return accepted(m_controls.sendRaw(c.text), now); },
+            [&](op::WriteEeprom &) { return accepted(m_eeprom.write(), now); },
         },
         command);
+}
+
+MachineCore::Result MachineCore::accepted(Result refused, double now)
+{
+    if (!refused)
+        pump(now);
+    return refused;
+}
+
+MachineCore::Result MachineCore::runJob(machine::UnitProgram program, double now)
+{
+    if (auto refused = m_job.start(std::move(program), now))
+        return refused;
+    m_toolLift.reset();
+    pump(now);
+    return std::nullopt;
+}
+
+// Pumps only when something was queued (a W the variant refuses leaves nothing to send).
+MachineCore::Result MachineCore::startHoming(unsigned axisMask, double now)
+{
+    bool queued = false;
+    if (auto refused = m_homing.start(axisMask, &queued))
+        return refused;
+    if (queued)
+        pump(now);
+    return std::nullopt;
+}
+
+std::int64_t MachineCore::stepsFromMm(int axis, double mm) const
+{
+    return std::llround(mm * m_config.axes[static_cast<std::size_t>(axis)].stepsPerMm);
+}
+
+double MachineCore::mmFromSteps(int axis, std::int64_t steps) const
+{
+    return static_cast<double>(steps) / m_config.axes[static_cast<std::size_t>(axis)].stepsPerMm;
 }
 
 // ---- transport events --------------------------------------------------------------------

@@ -64,28 +64,43 @@ public:
     // ---- operations. Each returns nullopt when accepted, else why not (state unchanged).
     using Result = std::optional<MachineError>;
     // The one entry of the front ends (see machinecommand.h); the named operations below are
-    // the same, spelled out for code that drives the core directly (SimRunner users, tests).
-    Result execute(const MachineCommand &command, double now);
-    Result run(machine::UnitProgram program, double now);
-    Result pause(double now);
-    Result resume(double now);
-    Result abort(double now);
-    Result toolLift(bool stopSpindle, double now);
-    Result toolLower(int speedPulsesPerS, double now);
-    // Homes the axes in axisMask (bit a = axis a; default all) that the profile homes, in the
-    // profile's order: W per axis, then the counter set to the home position.
-    Result home(double now, unsigned axisMask = 0xF);
-    Result jogStep(int axis, double distanceMm, double speedMmPerMin, double now);
-    Result jogContinuous(int axis, int direction, double speedMmPerMin, double now);
-    Result jogStop(double now);
-    Result setMpg(bool on, double now);
-    Result setSpindleRpm(double rpm, double now);
-    Result setOutputs(std::uint8_t mask, std::uint8_t activeHigh, double now);
-    Result setOverride(int percent, double now);
-    Result overrideStep(bool up, double now);
-    Result sendRaw(const std::string &text, double now);
-    // Writes the profile's EEPROM settings (§12) to the unit, then compares again.
-    Result writeEeprom(double now);
+    // shorthands for it, for code that drives the core directly (tests, frezka-cli run).
+    Result execute(MachineCommand command, double now);
+    Result run(machine::UnitProgram program, double now)
+    {
+        return execute(op::Run{std::move(program)}, now);
+    }
+    Result pause(double now) { return execute(op::Pause{}, now); }
+    Result resume(double now) { return execute(op::Resume{}, now); }
+    Result abort(double now) { return execute(op::Abort{}, now); }
+    Result toolLift(bool stopSpindle, double now)
+    {
+        return execute(op::ToolLift{stopSpindle}, now);
+    }
+    Result toolLower(int speedPulsesPerS, double now)
+    {
+        return execute(op::ToolLower{speedPulsesPerS}, now);
+    }
+    Result home(double now, unsigned axisMask = 0xF) { return execute(op::Home{axisMask}, now); }
+    Result jogStep(int axis, double distanceMm, double speedMmPerMin, double now)
+    {
+        return execute(op::JogStep{axis, distanceMm, speedMmPerMin}, now);
+    }
+    Result jogContinuous(int axis, int direction, double speedMmPerMin, double now)
+    {
+        return execute(op::JogContinuous{axis, direction, speedMmPerMin}, now);
+    }
+    Result jogStop(double now) { return execute(op::JogStop{}, now); }
+    Result setMpg(bool on, double now) { return execute(op::SetMpg{on}, now); }
+    Result setSpindleRpm(double rpm, double now) { return execute(op::SetSpindleRpm{rpm}, now); }
+    Result setOutputs(std::uint8_t mask, std::uint8_t activeHigh, double now)
+    {
+        return execute(op::SetOutputs{mask, activeHigh}, now);
+    }
+    Result setOverride(int percent, double now) { return execute(op::SetOverride{percent}, now); }
+    Result overrideStep(bool up, double now) { return execute(op::OverrideStep{up}, now); }
+    Result sendRaw(const std::string &text, double now) { return execute(op::SendRaw{text}, now); }
+    Result writeEeprom(double now) { return execute(op::WriteEeprom{}, now); }
     void setConfig(machine::MachineConfig config)
     {
         m_config = std::move(config);
@@ -152,8 +167,10 @@ private:
 
     void readPositionAndStatus(std::function<void()> then) override;
 
-    // operations helpers (machinecore_ops.cpp)
+    // operations (machinecore.cpp)
     Result accepted(Result refused, double now); // pumps when nothing was refused
+    Result runJob(machine::UnitProgram program, double now);
+    Result startHoming(unsigned axisMask, double now);
     double mmFromSteps(int axis, std::int64_t steps) const;
 
     machine::MachineConfig m_config;
