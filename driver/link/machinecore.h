@@ -17,12 +17,26 @@
 //      or the next single command; L waits for an empty queue, WaitIdle/Dwell/M0/M1/M6/ProgramEnd
 //      wait for the machine to stop (F: RUN = 0).
 //
-// Progress is kept as the index of the next program command to send (everything before it was
-// accepted by the unit). When a packet's fate is unknown (its reply and the recovery queries did
-// not settle it) or the link was lost and came back, the streamer lets the unit run dry, reads
-// the position counters and finds the program command whose end position they equal: that is
-// exactly how far the unit got, and the job continues from the next command after the modal
-// settings (V, A, B, T, $, VK/VN) in force there have been sent again.
+// The core itself is only that scheduler, the published MachineState, the waits on the unit's
+// status and the error reporting (CoreHost, what its parts may use). What to do next is decided
+// by its parts, each in its own file pair with its own fields and a contract at its top:
+//
+//   ConnectSequence (+ EepromSync)  connecting          MachineActivity::Connecting
+//   HomingCycle                     homing              Homing
+//   Jog                             jogging             Jogging
+//   Job (+ JobPace)                 streaming a job     Job
+//     ProgressCheck                 progress from the counters after an unknown outcome
+//                                                       CheckingProgress
+//     ProbeMove                     a G38 move          Probing
+//     PathGuard, ReturnToPath       off the planned path, and back  PathFault, ReturnToPath
+//   ToolLift                        K, lift, lower, R in a held job  ToolLift
+//   Hold                            pause, resume, abort, input interrupts
+//   UnitControls                    MPG, spindle, outputs, override, raw commands
+//   Poller                          step 2 above
+//
+// MachineState::activity names the one in charge (currentActivity()), so that every transition
+// is observable. Operations arrive as one MachineCommand (execute()); each is accepted (its
+// steps queued, the core pumped) or refused with a MachineError and nothing changed.
 
 #include "driver/link/connectsequence.h"
 #include "driver/link/corehost.h"
