@@ -3,7 +3,7 @@
 #include "jobpace.h"
 
 #include "driver/link/corehost.h"
-#include "driver/link/machinecore.h"
+#include "driver/link/coretypes.h"
 #include "driver/link/machinecore_internal.h"
 #include "machine/unitmodel.h"
 #include "machine/unitwire.h"
