@@ -3,8 +3,9 @@
 //
 // A QObject moved to a QThread by MachineController; it creates its transport in that thread
 // (connectTo), never blocks, and drives the core from three sources: bytes received, a single
-// QTimer armed at the core's next deadline, and the operation slots (queued calls from the GUI
-// thread). Time is a QElapsedTimer in seconds. Results leave as queued signals carrying values.
+// QTimer armed at the core's next deadline, and the execute slot (MachineCommand values queued
+// from the GUI thread). Time is a QElapsedTimer in seconds. Results leave as queued signals
+// carrying values.
 
 #include "driver/link/machinecontroller.h"
 #include "driver/link/machinecore.h"
