@@ -47,9 +47,32 @@ public slots:
     // An operation for the core (MachineController builds them); a refusal comes back as
     // errorOccurred.
     void execute(const frezka::driver::MachineCommand &command);
-    // Shorthands for the direct users of a worker without a controller (frezka-cli run).
+    // The same operations by name, as MachineController has them, for the direct users of a
+    // worker without a controller (frezka-cli run, session::QtMachineLink<LinkWorker>).
     void run(const frezka::machine::UnitProgram &program) { execute(op::Run{program}); }
+    void pause() { execute(op::Pause{}); }
+    void resume() { execute(op::Resume{}); }
+    void abort() { execute(op::Abort{}); }
+    void toolLift(bool stopSpindle) { execute(op::ToolLift{stopSpindle}); }
+    void toolLower(int speedPulsesPerS) { execute(op::ToolLower{speedPulsesPerS}); }
     void home(unsigned axisMask = 0xF) { execute(op::Home{axisMask}); }
+    void jogStep(int axis, double distanceMm, double speedMmPerMin)
+    {
+        execute(op::JogStep{axis, distanceMm, speedMmPerMin});
+    }
+    void jogContinuous(int axis, int direction, double speedMmPerMin)
+    {
+        execute(op::JogContinuous{axis, direction, speedMmPerMin});
+    }
+    void jogStop() { execute(op::JogStop{}); }
+    void setMpg(bool on) { execute(op::SetMpg{on}); }
+    void setSpindleRpm(double rpm) { execute(op::SetSpindleRpm{rpm}); }
+    void setOutputs(quint8 mask, quint8 activeHigh) { execute(op::SetOutputs{mask, activeHigh}); }
+    void setOverride(int percent) { execute(op::SetOverride{percent}); }
+    void overrideUp() { execute(op::OverrideStep{true}); }
+    void overrideDown() { execute(op::OverrideStep{false}); }
+    void sendRaw(const QString &text) { execute(op::SendRaw{text.toStdString()}); }
+    void writeEeprom() { execute(op::WriteEeprom{}); }
 
 signals:
     void stateChanged(const frezka::driver::MachineState &state);
