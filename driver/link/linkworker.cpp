@@ -127,77 +127,9 @@ void LinkWorker::onClosed(const QString &why)
     service();
 }
 
-void LinkWorker::run(const machine::UnitProgram &program)
+void LinkWorker::execute(const MachineCommand &command)
 {
-    apply(core().run(program, now()));
-}
-void LinkWorker::pause()
-{
-    apply(core().pause(now()));
-}
-void LinkWorker::resume()
-{
-    apply(core().resume(now()));
-}
-void LinkWorker::abort()
-{
-    apply(core().abort(now()));
-}
-void LinkWorker::toolLift(bool stopSpindle)
-{
-    apply(core().toolLift(stopSpindle, now()));
-}
-void LinkWorker::toolLower(int speed)
-{
-    apply(core().toolLower(speed, now()));
-}
-void LinkWorker::home(unsigned axisMask)
-{
-    apply(core().home(now(), axisMask));
-}
-void LinkWorker::jogStep(int axis, double distanceMm, double speedMmPerMin)
-{
-    apply(core().jogStep(axis, distanceMm, speedMmPerMin, now()));
-}
-void LinkWorker::jogContinuous(int axis, int direction, double speedMmPerMin)
-{
-    apply(core().jogContinuous(axis, direction, speedMmPerMin, now()));
-}
-void LinkWorker::jogStop()
-{
-    apply(core().jogStop(now()));
-}
-void LinkWorker::setMpg(bool on)
-{
-    apply(core().setMpg(on, now()));
-}
-void LinkWorker::setSpindleRpm(double rpm)
-{
-    apply(core().setSpindleRpm(rpm, now()));
-}
-void LinkWorker::setOutputs(quint8 mask, quint8 activeHigh)
-{
-    apply(core().setOutputs(mask, activeHigh, now()));
-}
-void LinkWorker::setOverride(int percent)
-{
-    apply(core().setOverride(percent, now()));
-}
-void LinkWorker::overrideUp()
-{
-    apply(core().overrideStep(true, now()));
-}
-void LinkWorker::overrideDown()
-{
-    apply(core().overrideStep(false, now()));
-}
-void LinkWorker::writeEeprom()
-{
-    apply(core().writeEeprom(now()));
-}
-void LinkWorker::sendRaw(const QString &text)
-{
-    apply(core().sendRaw(text.toStdString(), now()));
+    apply(core().execute(command, now()));
 }
 
 } // namespace frezka::driver

@@ -3,8 +3,9 @@
 //
 // A QObject moved to a QThread by MachineController; it creates its transport in that thread
 // (connectTo), never blocks, and drives the core from three sources: bytes received, a single
-// QTimer armed at the core's next deadline, and the operation slots (queued calls from the GUI
-// thread). Time is a QElapsedTimer in seconds. Results leave as queued signals carrying values.
+// QTimer armed at the core's next deadline, and the execute slot (MachineCommand values queued
+// from the GUI thread). Time is a QElapsedTimer in seconds. Results leave as queued signals
+// carrying values.
 
 #include "driver/link/machinecontroller.h"
 #include "driver/link/machinecore.h"
@@ -43,24 +44,35 @@ public slots:
     void setMachineConfig(const frezka::machine::MachineConfig &config);
     void connectTo(const frezka::driver::ConnectionSettings &settings);
     void disconnectFromUnit();
-    void run(const frezka::machine::UnitProgram &program);
-    void pause();
-    void resume();
-    void abort();
-    void toolLift(bool stopSpindle);
-    void toolLower(int speedPulsesPerS);
-    void home(unsigned axisMask = 0xF);
-    void jogStep(int axis, double distanceMm, double speedMmPerMin);
-    void jogContinuous(int axis, int direction, double speedMmPerMin);
-    void jogStop();
-    void setMpg(bool on);
-    void setSpindleRpm(double rpm);
-    void setOutputs(quint8 mask, quint8 activeHigh);
-    void setOverride(int percent);
-    void overrideUp();
-    void overrideDown();
-    void sendRaw(const QString &text);
-    void writeEeprom();
+    // An operation for the core (MachineController builds them); a refusal comes back as
+    // errorOccurred.
+    void execute(const frezka::driver::MachineCommand &command);
+    // The same operations by name, as MachineController has them, for the direct users of a
+    // worker without a controller (frezka-cli run, session::QtMachineLink<LinkWorker>).
+    void run(const frezka::machine::UnitProgram &program) { execute(op::Run{program}); }
+    void pause() { execute(op::Pause{}); }
+    void resume() { execute(op::Resume{}); }
+    void abort() { execute(op::Abort{}); }
+    void toolLift(bool stopSpindle) { execute(op::ToolLift{stopSpindle}); }
+    void toolLower(int speedPulsesPerS) { execute(op::ToolLower{speedPulsesPerS}); }
+    void home(unsigned axisMask = 0xF) { execute(op::Home{axisMask}); }
+    void jogStep(int axis, double distanceMm, double speedMmPerMin)
+    {
+        execute(op::JogStep{axis, distanceMm, speedMmPerMin});
+    }
+    void jogContinuous(int axis, int direction, double speedMmPerMin)
+    {
+        execute(op::JogContinuous{axis, direction, speedMmPerMin});
+    }
+    void jogStop() { execute(op::JogStop{}); }
+    void setMpg(bool on) { execute(op::SetMpg{on}); }
+    void setSpindleRpm(double rpm) { execute(op::SetSpindleRpm{rpm}); }
+    void setOutputs(quint8 mask, quint8 activeHigh) { execute(op::SetOutputs{mask, activeHigh}); }
+    void setOverride(int percent) { execute(op::SetOverride{percent}); }
+    void overrideUp() { execute(op::OverrideStep{true}); }
+    void overrideDown() { execute(op::OverrideStep{false}); }
+    void sendRaw(const QString &text) { execute(op::SendRaw{text.toStdString()}); }
+    void writeEeprom() { execute(op::WriteEeprom{}); }
 
 signals:
     void stateChanged(const frezka::driver::MachineState &state);

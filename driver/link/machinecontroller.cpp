@@ -52,81 +52,81 @@ void MachineController::disconnectFromUnit()
 {
     QMetaObject::invokeMethod(m_worker, &LinkWorker::disconnectFromUnit);
 }
+void MachineController::execute(MachineCommand command)
+{
+    QMetaObject::invokeMethod(m_worker, [w = m_worker, c = std::move(command)] { w->execute(c); });
+}
 void MachineController::run(const machine::UnitProgram &program)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, program] { w->run(program); });
+    execute(op::Run{program});
 }
 void MachineController::pause()
 {
-    QMetaObject::invokeMethod(m_worker, &LinkWorker::pause);
+    execute(op::Pause{});
 }
 void MachineController::resume()
 {
-    QMetaObject::invokeMethod(m_worker, &LinkWorker::resume);
+    execute(op::Resume{});
 }
 void MachineController::abort()
 {
-    QMetaObject::invokeMethod(m_worker, &LinkWorker::abort);
+    execute(op::Abort{});
 }
 void MachineController::toolLift(bool stopSpindle)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, stopSpindle] { w->toolLift(stopSpindle); });
+    execute(op::ToolLift{stopSpindle});
 }
 void MachineController::toolLower(int speedPulsesPerS)
 {
-    QMetaObject::invokeMethod(m_worker,
-                              [w = m_worker, speedPulsesPerS] { w->toolLower(speedPulsesPerS); });
+    execute(op::ToolLower{speedPulsesPerS});
 }
 void MachineController::home(unsigned axisMask)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, axisMask] { w->home(axisMask); });
+    execute(op::Home{axisMask});
 }
 void MachineController::jogStep(int axis, double distanceMm, double speedMmPerMin)
 {
-    QMetaObject::invokeMethod(m_worker,
-                              [=, w = m_worker] { w->jogStep(axis, distanceMm, speedMmPerMin); });
+    execute(op::JogStep{axis, distanceMm, speedMmPerMin});
 }
 void MachineController::jogContinuous(int axis, int direction, double speedMmPerMin)
 {
-    QMetaObject::invokeMethod(
-        m_worker, [=, w = m_worker] { w->jogContinuous(axis, direction, speedMmPerMin); });
+    execute(op::JogContinuous{axis, direction, speedMmPerMin});
 }
 void MachineController::jogStop()
 {
-    QMetaObject::invokeMethod(m_worker, &LinkWorker::jogStop);
+    execute(op::JogStop{});
 }
 void MachineController::setMpg(bool on)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, on] { w->setMpg(on); });
+    execute(op::SetMpg{on});
 }
 void MachineController::setSpindleRpm(double rpm)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, rpm] { w->setSpindleRpm(rpm); });
+    execute(op::SetSpindleRpm{rpm});
 }
 void MachineController::setOutputs(quint8 mask, quint8 activeHigh)
 {
-    QMetaObject::invokeMethod(
-        m_worker, [w = m_worker, mask, activeHigh] { w->setOutputs(mask, activeHigh); });
+    execute(op::SetOutputs{mask, activeHigh});
 }
 void MachineController::setOverride(int percent)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, percent] { w->setOverride(percent); });
+    execute(op::SetOverride{percent});
 }
 void MachineController::overrideUp()
 {
-    QMetaObject::invokeMethod(m_worker, &LinkWorker::overrideUp);
+    execute(op::OverrideStep{true});
 }
 void MachineController::overrideDown()
 {
-    QMetaObject::invokeMethod(m_worker, &LinkWorker::overrideDown);
+    execute(op::OverrideStep{false});
 }
 void MachineController::writeEeprom()
 {
-    QMetaObject::invokeMethod(m_worker, &LinkWorker::writeEeprom);
+    execute(op::WriteEeprom{});
 }
 void MachineController::sendRaw(const QString &text)
 {
-    QMetaObject::invokeMethod(m_worker, [w = m_worker, text] { w->sendRaw(text); });
+    execute(op::SendRaw{text.toStdString()});
 }
 
 } // namespace frezka::driver

@@ -20,6 +20,7 @@
 //     from the probe's end point).
 //   writeEeprom: writes the profile's EEPROM settings when asked (connect only compares them).
 
+#include "driver/link/machinecommand.h"
 #include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
 #include "machine/unitprogram.h"
@@ -110,6 +111,10 @@ signals:
     void errorOccurred(const frezka::driver::MachineError &error);
     // The job ended (ok = reached its end; otherwise aborted or failed with lastError).
     void jobFinished(bool ok);
+
+public:
+    // The one way into the link thread: every slot above that operates the machine builds one.
+    void execute(frezka::driver::MachineCommand command);
 
 private:
     void onState(const frezka::driver::MachineState &state);

@@ -4,39 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 namespace frezka::driver {
 
 using namespace frezka::protocol;
-
-const char *machineModeName(MachineMode mode)
-{
-    switch (mode) {
-    case MachineMode::Disconnected:
-        return "Disconnected";
-    case MachineMode::Connecting:
-        return "Connecting";
-    case MachineMode::Idle:
-        return "Idle";
-    case MachineMode::Homing:
-        return "Homing";
-    case MachineMode::Jogging:
-        return "Jogging";
-    case MachineMode::Running:
-        return "Running";
-    case MachineMode::Stopping:
-        return "Stopping";
-    case MachineMode::Paused:
-        return "Paused";
-    case MachineMode::ToolLifted:
-        return "Tool lifted";
-    case MachineMode::Alarm:
-        return "Alarm";
-    case MachineMode::LinkLost:
-        return "Link lost";
-    }
-    return "?";
-}
 
 MachineCore::MachineCore(machine::MachineConfig config, CoreOptions options)
     : m_config(std::move(config))
@@ -67,13 +39,43 @@ void MachineCore::setMode(MachineMode mode)
     m_dirty = true;
 }
 
+MachineActivity MachineCore::currentActivity() const
+{
+    switch (m_state.mode) {
+    case MachineMode::Connecting:
+        return MachineActivity::Connecting;
+    case MachineMode::Homing:
+        return MachineActivity::Homing;
+    case MachineMode::Jogging:
+        return MachineActivity::Jogging;
+    default:
+        break;
+    }
+    if (!m_job.active())
+        return MachineActivity::None;
+    if (m_toolLift.active())
+        return MachineActivity::ToolLift;
+    if (m_job.offPath())
+        return m_state.mode == MachineMode::Running ? MachineActivity::ReturnToPath
+                                                    : MachineActivity::PathFault;
+    if (m_job.verifying())
+        return MachineActivity::CheckingProgress;
+    if (m_job.probing())
+        return MachineActivity::Probing;
+    return MachineActivity::Job;
+}
+
 void MachineCore::publish()
 {
+    if (const MachineActivity a = currentActivity(); a != m_state.activity) {
+        m_state.activity = a;
+        m_dirty = true;
+    }
     m_state.link = m_engine.stats();
     m_state.checksums = m_engine.checksums();
-    if (m_job) {
-        m_state.commandsAcked = static_cast<std::int64_t>(m_next);
-        m_state.vectorsAcked = m_vectorsAcked;
+    if (m_job.active()) {
+        m_state.commandsAcked = static_cast<std::int64_t>(m_job.cursor().next);
+        m_state.vectorsAcked = m_job.cursor().vectorsAcked;
     }
     if (!m_dirty)
         return;
@@ -142,14 +144,8 @@ void MachineCore::onOutcome(const Outcome &o)
     if (o.status == OutcomeStatus::Ok && o.reply.inta && !m_haltPending && !m_haltExpected &&
         m_state.mode == MachineMode::Running && !m_state.inta) {
         m_state.inta = true;
-        interrupted();
+        m_hold.interrupted();
     }
-}
-
-bool MachineCore::streaming() const
-{
-    return m_job && m_state.mode == MachineMode::Running && !m_streamBlocked &&
-           m_now >= m_waitUntil && m_next < m_program.commands.size();
 }
 
 double MachineCore::deadline() const
@@ -158,9 +154,9 @@ double MachineCore::deadline() const
     if (!m_open)
         return d;
     if (m_engine.idle()) {
-        d = std::min(d, nextPollTime());
-        if (m_waitUntil > m_now)
-            d = std::min(d, m_waitUntil);
+        d = std::min(d, m_haltPending ? kNoDeadline : m_poller.nextTime());
+        if (m_job.waitUntil() > m_now)
+            d = std::min(d, m_job.waitUntil());
     }
     return d;
 }
@@ -192,131 +188,18 @@ void MachineCore::pump(double now)
             m_engine.start(s.command, now);
             break;
         }
-        if (pollDue(now)) {
-            startPoll(now);
+        if (!m_haltPending && now >= m_poller.nextTime()) {
+            m_poller.start(now);
             break;
         }
-        if (m_job && m_state.mode == MachineMode::Running && !m_streamBlocked &&
-            now >= m_waitUntil) {
-            streamStep(now);
+        if (m_job.mayStream(now)) {
+            m_job.streamStep(now);
             if (!m_engine.idle() || !m_steps.empty())
                 continue;
         }
         break;
     }
     publish();
-}
-
-double MachineCore::nextPollTime() const
-{
-    if (m_haltPending)
-        return kNoDeadline;
-    switch (m_state.mode) {
-    case MachineMode::Disconnected:
-    case MachineMode::Connecting:
-    case MachineMode::LinkLost:
-        return kNoDeadline;
-    default:
-        break;
-    }
-    if (!streaming() || m_queueFullSeen)
-        return m_lastPoll + m_options.pollIntervalS;
-    // A poll costs a round trip of the link. Plenty of motion queued and the motion ahead slower
-    // than the wire: the stream has time to spare, poll at the full rate. Otherwise every round
-    // trip spent on polls is missing from the stream: keep them to wireBoundPollShare of the
-    // link's time (the last poll's cost over that share), at least every maxPollGapS.
-    const double buffered = bufferedS();
-    if (!wireBoundAhead() && buffered >= std::max(0.25, 10 * m_rttS))
-        return m_lastPoll + m_options.pollIntervalS;
-    const double cost = m_lastPollTransactions * m_rttS;
-    const double share = std::max(1e-3, m_options.wireBoundPollShare);
-    // A poll that also read F and the inputs delays the next one by its extra cost.
-    return m_lastPoll + std::clamp(cost / share, m_options.pollIntervalS,
-                                   std::max(m_options.pollIntervalS, m_options.maxPollGapS) *
-                                       m_lastPollTransactions);
-}
-
-bool MachineCore::pollDue(double now) const
-{
-    return now >= nextPollTime();
-}
-
-void MachineCore::startPoll(double now)
-{
-    // Polls keep their schedule: one that had to wait for a packet's reply does not push the
-    // next one back, so the rate stays at pollIntervalS where the link has room for it.
-    const double due = nextPollTime();
-    m_lastPoll = due <= now && now - due < m_options.pollIntervalS ? due : now;
-    m_pollTimes.push_back(now);
-    while (!m_pollTimes.empty() && m_pollTimes.front() < now - 1.0)
-        m_pollTimes.pop_front();
-    m_state.pollHz = static_cast<double>(m_pollTimes.size());
-    if (m_job) {
-        ++m_report.polls;
-        if (m_next < m_program.commands.size() && m_vectorPrefix.back() > m_vectorPrefix[m_next]) {
-            ++m_report.streamPolls;
-            const double since =
-                m_report.streamPolls > 1 ? m_report.lastStreamPollS : m_report.startS;
-            m_report.maxStreamPollGapS = std::max(m_report.maxStreamPollGapS, now - since);
-            if (m_report.streamPolls == 1)
-                m_report.firstStreamPollS = now;
-            m_report.lastStreamPollS = now;
-        }
-    }
-    const Command pos = m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
-    // While streaming, every reply carries INTA (interrupts) and packet replies carry queue
-    // full: F and the inputs are read less often there, to leave the wire to the job.
-    // Where the stream is wire-bound, the position alone, F and the inputs every 8th time.
-    const bool stream = streaming();
-    const bool lean = stream && (wireBoundAhead() || bufferedS() < std::max(0.25, 10 * m_rttS));
-    const bool flags = !stream || m_pollCount % (lean ? 8 : 4) == (lean ? 7 : 0);
-    ++m_pollCount;
-    const bool inputs =
-        (!lean || flags) && now - m_lastInputsPoll >= (stream ? 4 * m_options.inputsPollIntervalS
-                                                              : m_options.inputsPollIntervalS);
-    if (inputs)
-        m_lastInputsPoll = now;
-    m_lastPollTransactions =
-        1 + (flags ? 1 : 0) + (inputs ? (m_config.unit.variant != Variant::Gve84 ? 2 : 1) : 0);
-    // Position now, F right after it, inputs after that: one poll, ahead of other steps.
-    auto byte = [this](std::uint8_t &field) {
-        return [this, &field](const Outcome &o) {
-            if (o.status == OutcomeStatus::Ok && o.reply.ok()) {
-                field = *o.reply.hexValue();
-                m_dirty = true;
-            }
-        };
-    };
-    if (inputs && m_config.unit.variant != Variant::Gve84)
-        sendFront(cmd::input2(), byte(m_state.inputs2));
-    if (inputs)
-        sendFront(cmd::input1(), byte(m_state.inputs1));
-    if (flags) {
-        sendFront(cmd::flag(), [this](const Outcome &o) {
-            if (o.status != OutcomeStatus::Ok || !o.reply.ok())
-                return (void)unitError(o, "status poll", MachineMode::Alarm);
-            applyFlags(*o.reply.hexValue(), m_now);
-        });
-    }
-    m_pollSentAt = now;
-    m_inFlight = [this](const Outcome &o) {
-        if (o.status != OutcomeStatus::Ok || !o.reply.ok())
-            return (void)unitError(o, "position poll", MachineMode::Alarm);
-        m_rttS = 0.8 * m_rttS + 0.2 * (m_now - m_pollSentAt);
-        applyPosition(o.reply);
-        // While progress is re-established from the counters a position on the path still
-        // verifies it; one off the path is left to that check.
-        if (m_job && m_state.mode == MachineMode::Running && !m_pathFault && !m_kept &&
-            !m_pathGuardOff && !onPlannedPath() && !m_needVerify) {
-            std::string at;
-            for (int a = 0; a < m_program.axisCount; ++a)
-                at += (a ? ", " : "") + std::to_string(m_state.positionSteps[a]);
-            pathFault("the unit's counters read " + at +
-                      " steps, on no segment of the path "
-                      "sent to it");
-        }
-    };
-    m_engine.start(pos, now);
 }
 
 void MachineCore::applyPosition(const Reply &r)
@@ -329,15 +212,12 @@ void MachineCore::applyPosition(const Reply &r)
         m_state.positionMm[i] = mmFromSteps(static_cast<int>(i), (*v)[i]);
     }
     m_dirty = true;
-    if (m_job) {
-        locateExecuting();
-        m_execAt = m_now;
-    }
+    if (m_job.active())
+        m_job.positionRead();
 }
 
-void MachineCore::applyFlags(std::uint8_t flags, double now)
+void MachineCore::applyFlags(std::uint8_t flags)
 {
-    (void)now;
     const bool wasInta = m_state.inta;
     m_state.flags = flags;
     m_state.run = (flags & 0x40) != 0;
@@ -345,10 +225,10 @@ void MachineCore::applyFlags(std::uint8_t flags, double now)
     m_state.queueFull = (flags & 0x20) != 0;
     m_dirty = true;
     if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running && !m_haltExpected)
-        interrupted();
+        m_hold.interrupted();
     if (m_state.inta && !wasInta &&
         (m_state.mode == MachineMode::Jogging || m_state.mode == MachineMode::Idle))
-        interrupted();
+        m_hold.interrupted();
     checkIdleWaiters();
 }
 
@@ -358,7 +238,7 @@ void MachineCore::afterIdle(std::function<void()> then)
     send(cmd::flag(), [this](const Outcome &o) {
         if (o.status != OutcomeStatus::Ok || !o.reply.ok())
             return (void)unitError(o, "status", MachineMode::Alarm);
-        applyFlags(*o.reply.hexValue(), m_now);
+        applyFlags(*o.reply.hexValue());
     });
 }
 
@@ -388,7 +268,7 @@ void MachineCore::checkIdleWaiters()
     m_idleWaiters.clear();
     // The job's own waits (WaitIdle, M0, ProgramEnd, ...) count only while it runs: a queue
     // kept by K or a pause is not the job's end.
-    if (m_state.mode == MachineMode::Running && !m_kept) {
+    if (m_state.mode == MachineMode::Running && !m_toolLift.kept()) {
         for (auto &w : m_jobIdleWaiters)
             waiters.push_back(std::move(w));
         m_jobIdleWaiters.clear();
@@ -397,6 +277,157 @@ void MachineCore::checkIdleWaiters()
         if (w)
             w();
     }
+}
+
+// ---- CoreHost ---------------------------------------------------------------------------
+
+void MachineCore::start(const Command &c, Then then)
+{
+    m_inFlight = std::move(then);
+    m_engine.start(c, m_now);
+}
+
+void MachineCore::startPacket(std::vector<Command> packet, Then then)
+{
+    m_inFlight = std::move(then);
+    m_engine.startPacket(std::move(packet), m_now);
+}
+
+void MachineCore::dropPending()
+{
+    m_steps.clear();
+    m_idleWaiters.clear();
+    m_jobIdleWaiters.clear();
+}
+
+void MachineCore::jobFinished(bool ok)
+{
+    if (onJobFinished)
+        onJobFinished(ok);
+}
+
+Command MachineCore::positionCommand() const
+{
+    return m_state.axisCount == 4 ? cmd::positionXYZA() : cmd::positionXYZ();
+}
+
+// Two position reads that agree: the machine stands (after RUN = 0 or an interrupt's brake).
+void MachineCore::whenStill(std::function<void()> then)
+{
+    const Command pos = positionCommand();
+    send(pos, [this, pos, then](const Outcome &first) {
+        if (unitError(first, "reading the position", MachineMode::Alarm))
+            return;
+        send(pos, [this, then, a = first.reply.values](const Outcome &second) {
+            if (unitError(second, "reading the position", MachineMode::Alarm))
+                return;
+            applyPosition(second.reply);
+            if (second.reply.values == a)
+                then();
+            else
+                whenStill(then);
+        });
+    });
+}
+
+void MachineCore::readPositionAndStatus(std::function<void()> then)
+{
+    send(positionCommand(), [this](const Outcome &o) {
+        if (unitError(o, "reading the position", MachineMode::Alarm))
+            return;
+        applyPosition(o.reply);
+    });
+    send(cmd::flag(), [this, then = std::move(then)](const Outcome &o) {
+        if (unitError(o, "reading the status", MachineMode::Alarm))
+            return;
+        m_state.flags = *o.reply.hexValue();
+        m_state.run = (m_state.flags & 0x40) != 0;
+        m_state.inta = (m_state.flags & 0x80) != 0;
+        m_state.queueFull = (m_state.flags & 0x20) != 0;
+        m_poller.restartAt(m_now);
+        if (then)
+            then();
+    });
+}
+
+// ---- operations ----------------------------------------------------------------------------
+
+namespace {
+template<class... F>
+struct Overloaded : F...
+{
+    using F::operator()...;
+};
+template<class... F>
+Overloaded(F...) -> Overloaded<F...>;
+} // namespace
+
+MachineCore::Result MachineCore::execute(MachineCommand command, double now)
+{
+    return std::visit(
+        Overloaded{
+            [&](op::Run &c) { return runJob(std::move(c.program), now); },
+            [&](op::Pause &) { return accepted(m_hold.pause(), now); },
+            [&](op::Resume &) { return accepted(m_hold.resume(), now); },
+            [&](op::Abort &) { return accepted(m_hold.abort(), now); },
+            [&](op::ToolLift &c) { return accepted(m_toolLift.lift(c.stopSpindle), now); },
+            [&](op::ToolLower &c) { return accepted(m_toolLift.lower(c.speedPulsesPerS), now); },
+            [&](op::Home &c) { return startHoming(c.axisMask, now); },
+            [&](op::JogStep &c) {
+                return accepted(m_jog.step(c.axis, c.distanceMm, c.speedMmPerMin), now);
+            },
+            [&](op::JogContinuous &c) {
+                return accepted(m_jog.continuous(c.axis, c.direction, c.speedMmPerMin), now);
+            },
+            [&](op::JogStop &) { return accepted(m_jog.stop(), now); },
+            [&](op::SetMpg &c) { return accepted(m_controls.setMpg(c.on), now); },
+            [&](op::SetSpindleRpm &c) { return accepted(m_controls.setSpindleRpm(c.rpm), now); },
+            [&](op::SetOutputs &c) {
+                return accepted(m_controls.setOutputs(c.mask, c.activeHigh), now);
+            },
+            [&](op::SetOverride &c) { return accepted(m_controls.setOverride(c.percent), now); },
+            [&](op::OverrideStep &c) { return accepted(m_controls.overrideStep(c.up), now); },
+            [&](op::SendRaw &c) { return accepted(m_controls.sendRaw(c.text), now); },
+            [&](op::WriteEeprom &) { return accepted(m_eeprom.write(), now); },
+        },
+        command);
+}
+
+MachineCore::Result MachineCore::accepted(Result refused, double now)
+{
+    if (!refused)
+        pump(now);
+    return refused;
+}
+
+MachineCore::Result MachineCore::runJob(machine::UnitProgram program, double now)
+{
+    if (auto refused = m_job.start(std::move(program), now))
+        return refused;
+    m_toolLift.reset();
+    pump(now);
+    return std::nullopt;
+}
+
+// Pumps only when something was queued (a W the variant refuses leaves nothing to send).
+MachineCore::Result MachineCore::startHoming(unsigned axisMask, double now)
+{
+    bool queued = false;
+    if (auto refused = m_homing.start(axisMask, &queued))
+        return refused;
+    if (queued)
+        pump(now);
+    return std::nullopt;
+}
+
+std::int64_t MachineCore::stepsFromMm(int axis, double mm) const
+{
+    return std::llround(mm * m_config.axes[static_cast<std::size_t>(axis)].stepsPerMm);
+}
+
+double MachineCore::mmFromSteps(int axis, std::int64_t steps) const
+{
+    return static_cast<double>(steps) / m_config.axes[static_cast<std::size_t>(axis)].stepsPerMm;
 }
 
 // ---- transport events --------------------------------------------------------------------
@@ -412,10 +443,9 @@ void MachineCore::linkOpened(double now)
     m_haltPending = false;
     m_jobIdleWaiters.clear();
     m_stopWaiters.clear();
-    if (m_job)
-        m_streamBlocked = false; // a wait in progress is taken up again from the program
+    m_job.linkOpened();
     setMode(MachineMode::Connecting);
-    connectSequence();
+    m_connect.start();
     pump(now);
 }
 
@@ -429,10 +459,8 @@ void MachineCore::linkClosed(const std::string &why, double now)
     m_idleWaiters.clear();
     m_inFlight = nullptr;
     m_haltPending = false;
-    if (m_job) {
-        m_needVerify = true;
-        m_linkWasLost = true;
-        m_pathFault = false; // the check of the counters after reconnecting takes over
+    if (m_job.active()) {
+        m_job.linkLost();
         fail("link lost: " + why + "; the job is kept and can resume after reconnecting", nullptr,
              MachineMode::LinkLost);
     } else if (why.empty()) {

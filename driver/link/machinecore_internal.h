@@ -1,6 +1,7 @@
 #pragma once
-// Helpers shared by the MachineCore job files (not part of the driver's API).
+// Helpers shared by MachineCore and its activities (not part of the driver's API).
 
+#include "driver/link/machinestate.h"
 #include "machine/unitprogram.h"
 
 #include <string>
@@ -34,6 +35,18 @@ inline bool isModal(machine::UnitOp op)
 inline std::string lineText(const machine::UnitCommand &c)
 {
     return c.sourceLine ? "line " + std::to_string(c.sourceLine) : "setup";
+}
+
+// An operation refused before anything was sent.
+inline MachineError refusal(std::string text)
+{
+    return MachineError{std::move(text), {}, {}, -1};
+}
+
+inline MachineError notNow(const char *what, MachineMode mode)
+{
+    return refusal(std::string(what) + " is not possible now (the machine is " +
+                   machineModeName(mode) + ")");
 }
 
 } // namespace frezka::driver::detail

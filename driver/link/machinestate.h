@@ -34,6 +34,25 @@ enum class MachineMode : std::uint8_t {
 // English name ("Running"); the GUI maps modes to translated strings.
 const char *machineModeName(MachineMode mode);
 
+// The one activity of the core (issue 13): which of its parts drives the wire now. The mode says
+// what the machine does as the operator sees it; the activity says which part of the driver is
+// in charge, so that every transition of the core is observable (tests, logs).
+enum class MachineActivity : std::uint8_t {
+    None,             // disconnected, or connected with nothing in progress
+    Connecting,       // the connect sequence (a job kept over a link loss waits meanwhile)
+    Homing,           // W per axis, the counters set
+    Jogging,          // a jog move
+    Job,              // a job streams, waits for the machine (I/O, M0, dwell) or is held
+    CheckingProgress, // the job's progress is re-established from the unit's counters
+    Probing,          // the job waits for, runs and evaluates a G38 probe move
+    PathFault,        // the job left the planned path: stopping, then held for the operator
+    ReturnToPath,     // the job goes back to the last verified point of its path
+    ToolLift,         // the job is held with its queue kept (K): lifting, lifted, lowering
+};
+
+// English name ("Return to path"), for logs and tests.
+const char *machineActivityName(MachineActivity activity);
+
 // Why a job is held (mode Paused / ToolLifted).
 enum class HoldReason : std::uint8_t {
     None,
@@ -61,6 +80,7 @@ struct MachineState
     MachineMode mode = MachineMode::Disconnected;
     HoldReason hold = HoldReason::None;
     std::string holdText; // operator message ("M6 T3: change tool"), interrupt names, ...
+    MachineActivity activity = MachineActivity::None;
 
     // unit
     protocol::Variant variant = protocol::Variant::Gve64;

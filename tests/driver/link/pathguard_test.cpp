@@ -1,4 +1,4 @@
-// The path guard (driver/link/machinecore_pathguard.cpp): a command damaged on the line so that
+// The path guard (driver/link/pathguard.h): a command damaged on the line so that
 // its checksum still matches makes the unit run a vector nobody planned. The driver must see it
 // from the counters, stop, hold the job (or return on its own when told to), and end exactly
 // where the plan ends.

@@ -1,0 +1,142 @@
+// Hold: pause, resume, abort and input interrupts. See hold.h.
+
+#include "hold.h"
+
+#include "driver/link/corehost.h"
+#include "driver/link/job.h"
+#include "driver/link/machinecore_internal.h"
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+using detail::notNow;
+using detail::refusal;
+
+MachineState &Hold::state()
+{
+    return m_host.liveState();
+}
+
+std::optional<MachineError> Hold::pause()
+{
+    if (state().mode != MachineMode::Running)
+        return notNow("Pause", state().mode);
+    m_host.setMode(MachineMode::Stopping);
+    m_host.sendFront(cmd::halt(), [this](const Outcome &o) {
+        if (m_host.unitError(o, "pausing (H)", MachineMode::Alarm))
+            return;
+        m_needsGo = true;
+        state().inta = true;
+        state().hold = HoldReason::User;
+        state().holdText = "paused";
+        m_host.setMode(MachineMode::Paused);
+    });
+    return std::nullopt;
+}
+
+std::optional<MachineError> Hold::resume()
+{
+    if (state().mode != MachineMode::Paused)
+        return notNow("Resume", state().mode);
+    if (m_job.verifying())
+        return refusal("the job's progress is still being checked against the unit's counters");
+    if (state().hold == HoldReason::PathFault && m_job.active()) {
+        m_job.returnToPath();
+        return std::nullopt;
+    }
+    auto running = [this] {
+        state().hold = HoldReason::None;
+        state().holdText.clear();
+        state().interruptInputs = 0;
+        m_host.setMode(m_job.active() ? MachineMode::Running : MachineMode::Idle);
+    };
+    if (!m_needsGo) {
+        running();
+        return std::nullopt;
+    }
+    m_host.send(cmd::go(), [this, running](const Outcome &o) {
+        // 6 = nothing to continue: the queue ran out while braking; the job streams on.
+        if (o.status == OutcomeStatus::Ok && o.reply.code == ReplyCode::NothingToContinue) {
+            m_needsGo = false;
+            running();
+            return;
+        }
+        if (m_host.unitError(o, "continuing (G)", MachineMode::Alarm))
+            return;
+        m_needsGo = false;
+        state().inta = false;
+        running();
+    });
+    return std::nullopt;
+}
+
+std::optional<MachineError> Hold::abort()
+{
+    switch (state().mode) {
+    case MachineMode::Running:
+    case MachineMode::Paused:
+    case MachineMode::Stopping:
+    case MachineMode::Jogging:
+    case MachineMode::Alarm:
+    case MachineMode::Homing:
+        break;
+    default:
+        if (!m_job.active())
+            return notNow("Abort", state().mode);
+    }
+    if (state().mode == MachineMode::ToolLifted)
+        return refusal("lower the tool first: the job's queue is kept in the unit (K)");
+    m_host.dropPending();
+    const bool wasJob = m_job.active();
+    m_job.abandon();
+    m_host.setMode(MachineMode::Stopping);
+    m_host.send(cmd::halt(), [this](const Outcome &o) {
+        m_host.unitError(o, "stopping (H)", MachineMode::Alarm);
+    });
+    m_host.send(cmd::deleteQueue(), [this, wasJob](const Outcome &o) {
+        if (m_host.unitError(o, "dropping the queue (D)", MachineMode::Alarm))
+            return;
+        m_needsGo = false;
+        state().hold = HoldReason::None;
+        state().holdText.clear();
+        m_host.setMode(MachineMode::Idle);
+        if (wasJob) {
+            m_job.report().endS = m_host.now();
+            m_host.publish();
+            m_host.jobFinished(false);
+        }
+    });
+    return std::nullopt;
+}
+
+void Hold::interrupted()
+{
+    const bool job = state().mode == MachineMode::Running;
+    m_host.setMode(job ? MachineMode::Paused : MachineMode::Alarm);
+    m_needsGo = true;
+    state().hold = HoldReason::Interrupt;
+    state().holdText = "an input interrupt stopped the machine";
+    auto cause = [this](int n) {
+        return [this, n](const Outcome &o) {
+            if (o.status != OutcomeStatus::Ok || !o.reply.ok())
+                return;
+            const int bits = *o.reply.hexValue();
+            state().interruptInputs = static_cast<std::uint16_t>(
+                n == 4 ? (state().interruptInputs & 0xFF00) | bits
+                       : (state().interruptInputs & 0x00FF) | (bits << 8));
+            std::string names;
+            for (int b = 0; b < 16; ++b) {
+                if (state().interruptInputs & (1 << b))
+                    names += (names.empty() ? "IN" : ", IN") + std::to_string(b);
+            }
+            state().holdText = "stopped by input " + (names.empty() ? "?" : names) +
+                               (state().interruptInputs & 0x80 ? " (STOP button)" : "");
+            m_host.markDirty();
+        };
+    };
+    m_host.sendFront(cmd::statusRead(4), cause(4));
+    if (m_host.config().unit.variant != Variant::Gve84)
+        m_host.send(cmd::statusRead(5), cause(5));
+}
+
+} // namespace frezka::driver

@@ -1,0 +1,511 @@
+// Job: streaming a unit program (packets, back-pressure, PC-side waits) and its end. See job.h.
+
+#include "job.h"
+
+#include "driver/link/corehost.h"
+#include "driver/link/machinecore_internal.h"
+#include "driver/link/programcheck.h"
+#include "gcode/toolpath.h"
+#include "machine/unitwire.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+using machine::UnitOp;
+
+using detail::isMotion;
+using detail::lineText;
+using detail::refusal;
+
+namespace {
+// Motion kept in the unit beyond two round trips when a packet is sized to what it holds, s.
+constexpr double kDryReserveS = 0.02;
+// Below this much wire time to spare the unit runs dry whatever the packet: send a full one.
+constexpr double kMinPacedWireS = 0.005;
+} // namespace
+
+Job::Job(CoreHost &host)
+    : m_host(host)
+    , m_pace(host, m_program, m_cursor)
+    , m_check(host, *this)
+    , m_guard(host, *this)
+    , m_probe(host, *this)
+{}
+
+// The one mapping of machine/unitwire.h (shared with the plan CLI). PC-side ops are never sent.
+Command Job::toCommand(const machine::UnitCommand &c) const
+{
+    return machine::wireCommand(c, m_program.axisCount).value_or(cmd::flag());
+}
+
+std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
+{
+    MachineState &state = m_host.liveState();
+    if (state.mode != MachineMode::Idle)
+        return refusal(std::string("a job can start only when the machine is idle (it is ") +
+                       machineModeName(state.mode) + ")");
+    std::string note;
+    auto bad = checkProgram(program, state, m_host.config(), &note);
+    if (!note.empty())
+        m_host.log(note);
+    if (bad) {
+        m_program = {};
+        return bad;
+    }
+    m_program = std::move(program);
+    m_active = true;
+    m_cursor = {};
+    m_streamBlocked = m_queueFullSeen = false;
+    m_check.reset();
+    m_guard.reset();
+    m_waitUntil = -1;
+    m_pace.build();
+    m_packetLimit = m_pace.maxPacket();
+    m_cursor.execAt = now;
+    m_host.restartPollCount();
+    m_report = {};
+    m_report.startS = now;
+    const LinkStats &stats = m_host.link().stats();
+    m_bytesAtStart = stats.bytesIn + stats.bytesOut;
+    m_resentAtStart = stats.resent;
+    m_recoveredAtStart = stats.recovered;
+    state.jobActive = true;
+    state.commandsTotal = static_cast<std::int64_t>(m_program.commands.size());
+    state.hold = HoldReason::None;
+    state.holdText.clear();
+    state.lastError.reset();
+    m_host.setMode(MachineMode::Running);
+    return std::nullopt;
+}
+
+bool Job::mayStream(double now) const
+{
+    return m_active && m_host.liveState().mode == MachineMode::Running && !m_streamBlocked &&
+           now >= m_waitUntil;
+}
+
+bool Job::streaming(double now) const
+{
+    return mayStream(now) && m_cursor.next < m_program.commands.size();
+}
+
+bool Job::probing() const
+{
+    return m_streamBlocked && m_cursor.next < m_program.commands.size() &&
+           m_program.commands[m_cursor.next].op == UnitOp::Probe;
+}
+
+void Job::streamStep(double now)
+{
+    if (m_check.pending())
+        return;
+    if (m_cursor.next >= m_program.commands.size()) {
+        m_streamBlocked = true;
+        m_host.afterJobIdle([this] { finishWithPosition(); });
+        return;
+    }
+    const machine::UnitCommand &c = m_program.commands[m_cursor.next];
+    if ((c.op == UnitOp::Vector || c.op == UnitOp::Brake) && m_host.options().packets) {
+        sendPacket(now);
+        return;
+    }
+    if (c.op > UnitOp::Spindle) {
+        handlePcOp(c);
+        return;
+    }
+    Command wire = toCommand(c);
+    if (c.op == UnitOp::Spindle && !variantInfo(m_host.config().unit.variant).hasSpindleAddress7)
+        wire = cmd::output((m_host.liveState().outputs & 0xFE) | (c.value ? 0 : 1));
+    const std::size_t index = m_cursor.next;
+    m_cursor.inflightEnd = index + 1;
+    m_host.start(wire,
+                 [this, index](const Outcome &o) { onCommandOutcome(o, index, m_host.now()); });
+}
+
+// As many C/B commands as fit: the unit takes a packet at its *E, by when it has run part of
+// its queue for as long as the packet takes on the wire. Where the motion ahead keeps pace with
+// the wire, a packet must take no longer than that (each packet then brings more motion than it
+// costs, so the unit holds more after it), or the unit runs dry mid-chain and stops without
+// braking. Where the wire is the bottleneck, or the unit holds too little for any packet, it
+// runs dry whatever the driver does, and a full packet loses least. Kept in reserve: the reply's
+// and the next packet's round trips and a little more (the estimate of what the unit holds
+// drifts between polls), or half of what it holds when it holds little (a small queue, as the
+// GVE84's 64 vectors: a short packet still comes in time). Long for the one decision it makes.
+void Job::sendPacket(double now)
+{
+    const auto &cmds = m_program.commands;
+    const std::int64_t capacity = variantInfo(m_host.config().unit.variant).queueCapacity - 1;
+    LinkEngine &link = m_host.link();
+    std::vector<Command> packet;
+    std::int64_t vectors = 0;
+    std::size_t bytes = 24; // *S *S *E
+    std::size_t end = m_cursor.next;
+    const std::size_t shortEnd = m_pace.slowMotionPacketEnd();
+    const bool keepShort = shortEnd > m_cursor.next;
+    const double held = m_pace.bufferedS();
+    const double budget = held - std::min(2 * m_host.rttS() + kDryReserveS, 0.5 * held);
+    const bool paced = held > 0 && budget >= kMinPacedWireS && !m_pace.wireBoundAhead();
+    while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
+        const UnitOp op = cmds[end].op;
+        if (op != UnitOp::Vector && op != UnitOp::Brake)
+            break;
+        if (keepShort && end >= shortEnd)
+            break;
+        Command c = toCommand(cmds[end]);
+        const std::size_t size = encode(c, link.checksums()).size();
+        if (paced && !packet.empty() && link.wireTime(bytes + size) > budget)
+            break;
+        if (op == UnitOp::Vector &&
+            m_pace.queuedAfter(link.wireTime(bytes + size)) + vectors + 1 > capacity)
+            break;
+        bytes += size;
+        vectors += op == UnitOp::Vector ? 1 : 0;
+        packet.push_back(std::move(c));
+        ++end;
+    }
+    if (packet.empty() ||
+        (vectors == 0 && cmds[end < cmds.size() ? end : end - 1].op == UnitOp::Vector)) {
+        // No room in the unit's queue by our estimate: wait until about 16 vectors have run.
+        const std::size_t at = m_pace.execEstimate();
+        const std::size_t later = std::min(at + 16, m_cursor.next);
+        m_waitUntil = now + std::clamp(m_pace.timeBefore(later) - m_pace.timeBefore(at), 0.002,
+                                       m_host.options().pollIntervalS);
+        m_queueFullSeen = true;
+        return;
+    }
+    // The command index (mod 256) must tell a packet that arrived from one that did not: all its
+    // lines (*S *S, the commands, *E) must not advance it by a multiple of 256.
+    if ((packet.size() + 3) % 256 == 0) {
+        packet.pop_back();
+        --end;
+    }
+    const std::size_t first = m_cursor.next;
+    m_cursor.inflightEnd = end;
+    if (packet.size() == 1) {
+        m_host.start(packet.front(),
+                     [this, first](const Outcome &o) { onCommandOutcome(o, first, m_host.now()); });
+        return;
+    }
+    const std::size_t n = packet.size();
+    ++m_report.packets;
+    m_host.startPacket(std::move(packet), [this, first, n](const Outcome &o) {
+        onPacketOutcome(o, first, n, m_host.now());
+    });
+}
+
+void Job::acceptUpTo(std::size_t end)
+{
+    for (; m_cursor.next < end; ++m_cursor.next) {
+        if (isMotion(m_program.commands[m_cursor.next].op)) {
+            ++m_cursor.vectorsAcked;
+            ++m_report.vectors;
+            if (m_report.firstVectorAckS < 0)
+                m_report.firstVectorAckS = m_host.now();
+            m_report.lastVectorAckS = m_host.now();
+        }
+        ++m_report.commands;
+    }
+    MachineState &state = m_host.liveState();
+    state.commandsAcked = static_cast<std::int64_t>(m_cursor.next);
+    state.vectorsAcked = m_cursor.vectorsAcked;
+    m_host.markDirty();
+}
+
+void Job::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, double now)
+{
+    (void)now;
+    if (m_cursor.next != first || m_guard.faulted())
+        return; // superseded (abort, link loss, the path guard dropped the queue)
+    if (o.status == OutcomeStatus::Failed) {
+        m_packetLimit = std::max(4, m_packetLimit / 2);
+        m_check.verify("packet outcome unknown: " + o.error);
+        return;
+    }
+    const std::size_t accepted = std::min<std::size_t>(static_cast<std::size_t>(o.accepted), n);
+    acceptUpTo(first + accepted);
+    switch (o.reply.code) {
+    case ReplyCode::Ok:
+        m_queueFullSeen = false;
+        m_packetLimit = std::min(m_pace.maxPacket(), m_packetLimit + m_packetLimit / 2 + 1);
+        return;
+    case ReplyCode::QueueFull:
+        // The queue is full right now: that calibrates the estimate of where the unit is.
+        m_queueFullSeen = true;
+        m_cursor.exec = m_pace.executingAtFull();
+        m_cursor.execAt = m_host.now();
+        // Bytes beyond the free space are wasted wire time: start smaller next time.
+        m_packetLimit = std::max(16, static_cast<int>(accepted));
+        return;
+    case ReplyCode::Syntax:   // a line damaged on the way (bad checksum) or lost
+    case ReplyCode::Watchdog: // the packet came in too slowly: none of the rest ran
+        m_packetLimit = std::max(4, m_packetLimit / 2);
+        m_report.resent += static_cast<std::int64_t>(n - accepted);
+        return;
+    default:
+        m_host.fail(lineText(m_program.commands[first + accepted]) + ": the unit refused '" +
+                        encodeBody(toCommand(m_program.commands[first + accepted])) + "' (" +
+                        std::string(replyCodeText(o.reply.code)) + ")",
+                    &o, MachineMode::Alarm);
+        return;
+    }
+}
+
+void Job::onCommandOutcome(const Outcome &o, std::size_t index, double now)
+{
+    if (m_cursor.next != index || m_guard.faulted())
+        return;
+    const machine::UnitCommand &c = m_program.commands[index];
+    if (o.status == OutcomeStatus::Failed) {
+        if (isMotion(c.op)) {
+            m_check.verify("outcome unknown: " + o.error);
+        } else {
+            m_check.require();
+            m_host.fail(lineText(c) + ": " + o.error, &o, MachineMode::LinkLost);
+        }
+        return;
+    }
+    switch (o.reply.code) {
+    case ReplyCode::Ok:
+        if (c.op == UnitOp::Vector)
+            m_queueFullSeen = false;
+        acceptUpTo(index + 1);
+        return;
+    case ReplyCode::QueueFull: // C: queue full; L: queue not yet empty. Not accepted: again.
+        m_queueFullSeen = c.op == UnitOp::Vector;
+        m_waitUntil = now + m_host.options().pollIntervalS;
+        return;
+    default:
+        m_host.fail(lineText(c) + ": the unit refused '" + encodeBody(o.commands.front()) + "' (" +
+                        std::string(replyCodeText(o.reply.code)) + ")",
+                    &o, MachineMode::Alarm);
+        return;
+    }
+}
+
+// A wait of the job for the machine to stand before command `index`, then the path guard's
+// exact check of the counters there, then `then` (unless the job moved on meanwhile).
+void Job::atRest(std::size_t index, std::function<void()> then)
+{
+    m_host.afterJobIdle([this, index, then = std::move(then)]() mutable {
+        if (m_cursor.next != index)
+            return;
+        m_guard.checkAtRest(index, [this, index, then = std::move(then)] {
+            if (m_cursor.next == index)
+                then();
+        });
+    });
+}
+
+void Job::handlePcOp(const machine::UnitCommand &c)
+{
+    const std::size_t index = m_cursor.next;
+    m_streamBlocked = true;
+    switch (c.op) {
+    case UnitOp::WaitIdle:
+        atRest(index, [this, index] {
+            acceptUpTo(index + 1);
+            m_streamBlocked = false;
+        });
+        return;
+    case UnitOp::Dwell:
+        atRest(index, [this, index, ms = c.value] {
+            acceptUpTo(index + 1);
+            m_waitUntil = m_host.now() + static_cast<double>(ms) / 1000.0;
+            m_streamBlocked = false;
+        });
+        return;
+    case UnitOp::OperatorStop:
+        operatorStop(c, index);
+        return;
+    case UnitOp::ProgramEnd:
+        atRest(index, [this, index] {
+            acceptUpTo(index + 1);
+            finishWithPosition();
+        });
+        return;
+    case UnitOp::Probe:
+        atRest(index, [this, index] { m_probe.start(index); });
+        return;
+    default:
+        m_streamBlocked = false;
+        m_host.fail(lineText(c) + ": unknown unit program operation", nullptr, MachineMode::Alarm);
+        return;
+    }
+}
+
+// M0 / M1 / M6: the job holds where the machine stands (M1 only with optional stops on).
+void Job::operatorStop(const machine::UnitCommand &c, std::size_t index)
+{
+    const auto kind = static_cast<gcode::EventKind>(c.value);
+    if (kind == gcode::EventKind::OptionalPause && !m_host.options().optionalStops) {
+        acceptUpTo(index + 1);
+        m_streamBlocked = false;
+        return;
+    }
+    std::string text = kind == gcode::EventKind::ToolChange
+                           ? "M6: change to tool " + std::to_string(c.aux)
+                       : kind == gcode::EventKind::OptionalPause ? "M1: optional stop"
+                                                                 : "M0: program stop";
+    atRest(index, [this, index, text] {
+        acceptUpTo(index + 1);
+        m_streamBlocked = false;
+        m_host.setHoldNeedsGo(false);
+        MachineState &state = m_host.liveState();
+        state.hold = HoldReason::OperatorStop;
+        state.holdText = lineText(m_program.commands[index]) + ": " + text;
+        m_host.setMode(MachineMode::Paused);
+    });
+}
+
+// The job ran to its end: read the counters once more so that the report and the last state
+// show where the machine really is.
+void Job::finishWithPosition()
+{
+    m_host.send(m_host.positionCommand(), [this](const Outcome &o) {
+        if (m_host.unitError(o, "reading the final position", MachineMode::LinkLost))
+            return;
+        m_host.applyPosition(o.reply);
+        const auto &at = m_host.liveState().positionSteps;
+        const machine::Steps4 &end = m_guard.plannedBefore(m_program.commands.size());
+        for (int a = 0; a < m_program.axisCount && !m_guard.off(); ++a) {
+            if (at[a] != end[a]) {
+                std::string have, want;
+                for (int b = 0; b < m_program.axisCount; ++b) {
+                    have += (b ? ", " : "") + std::to_string(at[b]);
+                    want += (b ? ", " : "") + std::to_string(end[b]);
+                }
+                m_guard.fault("the job ended with the counters at " + have +
+                              " steps where the program ends at " + want);
+                return;
+            }
+        }
+        finish(true);
+    });
+}
+
+void Job::finish(bool ok)
+{
+    if (!m_active)
+        return;
+    m_active = false;
+    m_streamBlocked = false;
+    const LinkStats &stats = m_host.link().stats();
+    m_report.finished = ok;
+    m_report.endS = m_host.now();
+    m_report.linkBytes = stats.bytesIn + stats.bytesOut - m_bytesAtStart;
+    m_report.resent += stats.resent - m_resentAtStart;
+    m_report.recovered = stats.recovered - m_recoveredAtStart;
+    MachineState &state = m_host.liveState();
+    state.jobActive = false;
+    state.progress = ok ? 1.0 : state.progress;
+    state.etaS = ok ? 0 : -1;
+    m_host.markDirty();
+    if (state.mode == MachineMode::Running)
+        m_host.setMode(MachineMode::Idle);
+    m_host.log(ok ? "job finished" : "job ended");
+    m_host.publish(); // the final state before the news that the job ended
+    m_host.jobFinished(ok);
+}
+
+void Job::abandon()
+{
+    m_active = false;
+    m_host.liveState().jobActive = false;
+    m_streamBlocked = false;
+    m_check.cancel();
+    m_guard.clearFault();
+}
+
+void Job::pollStarted(double now)
+{
+    ++m_report.polls;
+    if (m_cursor.next < m_program.commands.size() &&
+        m_pace.vectorsBefore(m_pace.size() - 1) > m_pace.vectorsBefore(m_cursor.next)) {
+        ++m_report.streamPolls;
+        const double since = m_report.streamPolls > 1 ? m_report.lastStreamPollS : m_report.startS;
+        m_report.maxStreamPollGapS = std::max(m_report.maxStreamPollGapS, now - since);
+        if (m_report.streamPolls == 1)
+            m_report.firstStreamPollS = now;
+        m_report.lastStreamPollS = now;
+    }
+}
+
+// While progress is re-established from the counters a position on the path still verifies
+// it; one off the path is left to that check.
+void Job::checkPolledPosition(bool kept)
+{
+    if (m_host.liveState().mode != MachineMode::Running || m_guard.faulted() || kept ||
+        m_guard.off() || m_guard.onPlannedPath() || m_check.pending())
+        return;
+    std::string at;
+    for (int a = 0; a < m_program.axisCount; ++a)
+        at += (a ? ", " : "") + std::to_string(m_host.liveState().positionSteps[a]);
+    m_guard.fault("the unit's counters read " + at +
+                  " steps, on no segment of the path "
+                  "sent to it");
+}
+
+// The executing command from the polled position: the first motion command from the last one
+// seen executing on whose box (from its start to its end position) holds the position and which
+// has not ended.
+void Job::positionRead()
+{
+    const auto &cmds = m_program.commands;
+    const int axes = m_program.axisCount;
+    MachineState &state = m_host.liveState();
+    const auto &pos = state.positionSteps;
+    std::size_t i = m_cursor.exec;
+    const std::size_t limit = std::min(m_cursor.next, cmds.size());
+    for (int guard = 0; i < limit && guard < 100000; ++i, ++guard) {
+        if (!isMotion(cmds[i].op))
+            continue;
+        const machine::Steps4 &end = cmds[i].endSteps;
+        bool atEnd = true;
+        bool inside = true;
+        for (int a = 0; a < axes; ++a) {
+            const std::int64_t start = end[a] - cmds[i].d[a];
+            atEnd = atEnd && pos[a] == end[a];
+            inside =
+                inside && pos[a] >= std::min(start, end[a]) && pos[a] <= std::max(start, end[a]);
+        }
+        if (inside && !atEnd)
+            break;
+    }
+    m_cursor.exec = i;
+    const std::size_t shown = std::min(i, cmds.empty() ? 0 : cmds.size() - 1);
+    state.sourceLine = cmds.empty() ? 0 : cmds[shown].sourceLine;
+    state.progress = cmds.empty() ? 0 : static_cast<double>(i) / static_cast<double>(cmds.size());
+    const double elapsed = m_host.now() - m_report.startS;
+    state.etaS =
+        i > 0 ? elapsed * static_cast<double>(cmds.size() - i) / static_cast<double>(i) : -1;
+    m_cursor.execAt = m_host.now();
+}
+
+void Job::linkOpened()
+{
+    if (m_active)
+        m_streamBlocked = false; // a wait in progress is taken up again from the program
+}
+
+void Job::linkLost()
+{
+    m_check.linkLost();
+    m_guard.clearFault(); // the check of the counters after reconnecting takes over
+}
+
+bool Job::resumeAfterReconnect()
+{
+    if (!m_active || !m_check.pending())
+        return false;
+    MachineState &state = m_host.liveState();
+    m_host.setMode(MachineMode::Paused);
+    state.hold = HoldReason::User;
+    state.holdText = "link restored: checking the job's progress against the counters";
+    m_check.verify("reconnected");
+    return true;
+}
+
+} // namespace frezka::driver

@@ -1,0 +1,106 @@
+#pragma once
+// Job: the job activity of MachineCore: streams a unit program to the unit and follows it to
+// its end.
+//
+// Contract: start() checks the program against the unit and the machine's position and, when
+// it accepts, owns the job until finish() (or abandon() on abort). Whenever the core's link is
+// free and nothing else is due (operation steps and polls go first), the core calls streamStep(),
+// which puts the next packet of C/B commands (sized by JobPace to what the unit's queue holds)
+// or the next single command on the wire, or waits: for an empty queue (L), for the machine to
+// stand (WaitIdle, Dwell, M0/M1/M6, ProgramEnd, probe), for the operator, for a check. Progress
+// is the index of the next command to send (the cursor): everything before it was accepted.
+// An unknown outcome hands over to ProgressCheck (the counters tell how far the unit got), a
+// position off the planned path to PathGuard, a G38 move to ProbeMove; each of those owns its
+// own fields and gives the job back by unblocking the stream. The job never blocks and never
+// waits on time itself: it tells the core the earliest time it may send again (waitUntil).
+
+#include "driver/link/coretypes.h"
+#include "driver/link/jobpace.h"
+#include "driver/link/machinestate.h"
+#include "driver/link/pathguard.h"
+#include "driver/link/probemove.h"
+#include "driver/link/progresscheck.h"
+#include "machine/unitprogram.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace frezka::driver {
+
+class CoreHost;
+
+class Job
+{
+public:
+    explicit Job(CoreHost &host);
+    Job(const Job &) = delete;
+    Job &operator=(const Job &) = delete;
+
+    // ---- the core's side
+    // Accepts the program (nullopt) or says why not, changing nothing.
+    std::optional<MachineError> start(machine::UnitProgram program, double now);
+    bool active() const { return m_active; }
+    // Running, not waiting for the machine, the operator or a check, and not before waitUntil.
+    bool mayStream(double now) const;
+    // ... and commands are left to send.
+    bool streaming(double now) const;
+    void streamStep(double now);
+    double waitUntil() const { return m_waitUntil; }
+    bool queueFullSeen() const { return m_queueFullSeen; }
+    const JobPace &pace() const { return m_pace; }
+    const JobReport &report() const { return m_report; }
+    JobReport &report() { return m_report; }
+    const machine::UnitProgram &program() const { return m_program; }
+    void pollStarted(double now);        // counts the job's polls
+    void positionRead();                 // the executing command from the new counters
+    void checkPolledPosition(bool kept); // the path guard's check of a poll
+    void linkOpened();                   // a wait in progress is taken up again
+    void linkLost();                     // progress must be re-established afterwards
+    bool resumeAfterReconnect();         // connected again: true when a check starts
+    bool verifying() const { return m_check.pending(); }
+    bool offPath() const { return m_guard.faulted(); }
+    bool probing() const;
+    void returnToPath() { m_guard.returnToPath(); }
+    void abandon(); // abort: the job ends now, whatever is still on the wire is dropped
+    void finish(bool ok);
+
+    // ---- the job's parts (ProgressCheck, PathGuard, ReturnToPath, ProbeMove)
+    JobCursor &cursor() { return m_cursor; }
+    void acceptUpTo(std::size_t end);
+    void setStreamBlocked(bool on) { m_streamBlocked = on; }
+    void setQueueFullSeen(bool on) { m_queueFullSeen = on; }
+    void setWaitUntil(double t) { m_waitUntil = t; }
+    void resetPacketLimit() { m_packetLimit = m_pace.maxPacket(); }
+    protocol::Command toCommand(const machine::UnitCommand &c) const;
+    ProgressCheck &progress() { return m_check; }
+    PathGuard &guard() { return m_guard; }
+
+private:
+    void sendPacket(double now);
+    void onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, double now);
+    void onCommandOutcome(const Outcome &o, std::size_t index, double now);
+    void handlePcOp(const machine::UnitCommand &c);
+    void operatorStop(const machine::UnitCommand &c, std::size_t index);
+    void atRest(std::size_t index, std::function<void()> then);
+    void finishWithPosition();
+
+    CoreHost &m_host;
+    bool m_active = false;
+    machine::UnitProgram m_program;
+    JobCursor m_cursor;
+    bool m_streamBlocked = false; // waiting for idle / operator / verification
+    bool m_queueFullSeen = false; // last C/packet hit a full queue
+    double m_waitUntil = -1;      // a dwell or back-off: nothing from the job before this time
+    int m_packetLimit = 1;        // adaptive packet size (commands)
+    JobReport m_report;
+    std::int64_t m_bytesAtStart = 0;
+    std::int64_t m_resentAtStart = 0;
+    std::int64_t m_recoveredAtStart = 0;
+    JobPace m_pace;
+    ProgressCheck m_check;
+    PathGuard m_guard;
+    ProbeMove m_probe;
+};
+
+} // namespace frezka::driver

@@ -1,0 +1,154 @@
+// JobPace: the job's estimates of the unit's queue and of the wire. See jobpace.h.
+
+#include "jobpace.h"
+
+#include "driver/link/corehost.h"
+#include "driver/link/coretypes.h"
+#include "driver/link/machinecore_internal.h"
+#include "machine/unitmodel.h"
+#include "machine/unitwire.h"
+
+#include <algorithm>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+using detail::isMotion;
+using machine::UnitOp;
+
+void JobPace::build()
+{
+    const auto &cmds = m_program.commands;
+    m_vectorPrefix.assign(cmds.size() + 1, 0);
+    for (std::size_t i = 0; i < cmds.size(); ++i)
+        m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(cmds[i].op) ? 1 : 0);
+    estimateDurations();
+    m_bytePrefix.assign(cmds.size() + 1, 0);
+    for (std::size_t i = 0; i < cmds.size(); ++i) {
+        const machine::UnitCommand &c = cmds[i];
+        const std::size_t bytes =
+            c.op > UnitOp::Spindle
+                ? 0
+                : encode(machine::wireCommand(c, m_program.axisCount).value_or(cmd::flag()), true)
+                      .size();
+        m_bytePrefix[i + 1] = m_bytePrefix[i] + static_cast<std::int64_t>(bytes);
+    }
+}
+
+// Motion time per command under the unit's model (machine/unitmodel.h, the planner's own, exact
+// for the unit when its queue does not run dry): used to judge how much motion the unit holds
+// and whether the stream keeps pace with it, never for the motion itself.
+void JobPace::estimateDurations()
+{
+    const machine::ModelResult model = machine::runUnitModel(m_program);
+    m_timePrefix.assign(m_program.commands.size() + 1, 0.0);
+    std::size_t vector = 0;
+    for (std::size_t i = 0; i < m_program.commands.size(); ++i) {
+        const machine::UnitCommand &c = m_program.commands[i];
+        double t = 0;
+        if (isMotion(c.op) && vector < model.vectorTimes.size())
+            t = model.vectorTimes[vector++];
+        else if (c.op == UnitOp::Dwell)
+            t = static_cast<double>(c.value) / 1000.0;
+        m_timePrefix[i + 1] = m_timePrefix[i] + t;
+    }
+}
+
+// The unit just reported a full queue: it holds `capacity` vectors ending at next.
+std::size_t JobPace::executingAtFull() const
+{
+    const std::int64_t capacity = variantInfo(m_host.config().unit.variant).queueCapacity;
+    const std::size_t next = m_cursor.next;
+    std::size_t k = next;
+    while (k > m_cursor.exec && m_vectorPrefix[next] - m_vectorPrefix[k - 1] <= capacity)
+        --k;
+    return std::max(m_cursor.exec, k);
+}
+
+std::size_t JobPace::execEstimate() const
+{
+    double elapsed = m_host.now() - m_cursor.execAt;
+    std::size_t i = std::min(m_cursor.exec, m_cursor.next);
+    while (i < m_cursor.next && elapsed >= m_timePrefix[i + 1] - m_timePrefix[i]) {
+        elapsed -= m_timePrefix[i + 1] - m_timePrefix[i];
+        ++i;
+    }
+    return i;
+}
+
+double JobPace::bufferedS() const
+{
+    const std::size_t from = std::min(m_cursor.exec, m_cursor.next);
+    return std::max(0.0, m_timePrefix[m_cursor.next] - m_timePrefix[from] -
+                             (m_host.now() - m_cursor.execAt));
+}
+
+int JobPace::maxPacket() const
+{
+    const int queue = variantInfo(m_host.config().unit.variant).queueCapacity - 1;
+    const int wanted =
+        m_host.options().maxPacketCommands > 0 ? m_host.options().maxPacketCommands : queue;
+    return std::clamp(wanted, 1, queue);
+}
+
+// Whether the next queue-full of commands runs faster than it takes to send: then the wire sets
+// the pace and the unit will run dry whatever the driver does, so every round trip not spent on
+// the stream is lost.
+bool JobPace::wireBoundAhead() const
+{
+    const std::size_t next = m_cursor.next;
+    if (next >= m_program.commands.size())
+        return false;
+    const std::size_t span = static_cast<std::size_t>(maxPacket());
+    const std::size_t end = std::min(m_program.commands.size(), next + span);
+    const double motion = m_timePrefix[end] - m_timePrefix[next];
+    const double wire =
+        m_host.link().wireTime(static_cast<std::size_t>(m_bytePrefix[end] - m_bytePrefix[next]));
+    return motion < wire + m_host.rttS();
+}
+
+std::int64_t JobPace::queuedAfter(double ahead) const
+{
+    const std::size_t next = m_cursor.next;
+    const std::size_t from = std::min(m_cursor.exec, next);
+    const double at =
+        std::min(m_timePrefix[from] + (m_host.now() - m_cursor.execAt) + ahead, m_timePrefix[next]);
+    // The command executing at program time `at`: the last k with m_timePrefix[k] <= at.
+    auto it = std::upper_bound(m_timePrefix.begin() + static_cast<std::ptrdiff_t>(from),
+                               m_timePrefix.begin() + static_cast<std::ptrdiff_t>(next) + 1, at);
+    const auto k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+        static_cast<std::ptrdiff_t>(from), (it - m_timePrefix.begin()) - 1));
+    return m_vectorPrefix[next] - m_vectorPrefix[std::min(k, next)];
+}
+
+// Strict request/reply lets no poll through while a packet is on the wire. Where the motion is
+// slow, packets stay short so that the live position keeps its rate: best short enough for a
+// packet and a poll to share one poll interval, else at most slowPacketWireS. A cap applies only
+// where the short packet carries more than the time of the link cycle it costs (the packet, its
+// reply, a poll, and on average the status and inputs reads), twice as much while the unit holds
+// little, so the unit's queue still fills; where the wire is the bottleneck, packets fill the
+// queue. Returns the first command the packet leaves out, or next for no cap.
+std::size_t JobPace::slowMotionPacketEnd() const
+{
+    const auto &cmds = m_program.commands;
+    const std::size_t next = m_cursor.next;
+    const double rtt = m_host.rttS();
+    const CoreOptions &options = m_host.options();
+    // With half a second queued a smaller margin will do: the queue drains only slowly, and the
+    // capacity limit takes over where it is lower.
+    const double margin = bufferedS() >= std::max(0.5, 20 * rtt) ? 1.0 : 2.0;
+    for (const double wire : {options.pollIntervalS - 2 * rtt, options.slowPacketWireS}) {
+        if (wire < 0.005)
+            continue;
+        std::size_t e = next;
+        while (e < cmds.size() && m_host.link().wireTime(static_cast<std::size_t>(
+                                      m_bytePrefix[e + 1] - m_bytePrefix[next])) <= wire)
+            ++e;
+        const double cycle = wire + 2.75 * rtt;
+        if (e > next && e < cmds.size() && m_timePrefix[e] - m_timePrefix[next] >= margin * cycle)
+            return e;
+    }
+    return next;
+}
+
+} // namespace frezka::driver

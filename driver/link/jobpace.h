@@ -1,0 +1,78 @@
+#pragma once
+// JobPace: how much motion the unit holds and how fast the wire must feed it, for one job.
+//
+// Built once per job from the unit program: the estimated motion time before each program
+// command (machine/unitmodel.h, the planner's own model, exact for the unit while its queue does
+// not run dry), the wire bytes and the motion commands before each. From those and the job's
+// cursor (what was sent, what the last poll saw executing, when) it answers the streamer's and
+// the poller's questions: how many seconds of motion are queued, whether the motion ahead runs
+// faster than the wire can carry it, how many vectors will still be queued a little later, where
+// a packet should end so that polls keep their rate. Estimates only: they size packets and pace
+// polls, never the motion itself, and a wrong one costs time, not position.
+
+#include "machine/unitprogram.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace frezka::driver {
+
+class CoreHost;
+
+// Where a job stands: shared by the job's parts (the streamer, its pace, progress, path guard).
+struct JobCursor
+{
+    std::size_t next = 0;        // next program command to send (all before it were accepted)
+    std::size_t exec = 0;        // program command executing (from the polled position)
+    std::size_t inflightEnd = 0; // end of the commands in flight
+    double execAt = 0;           // when exec was read from the unit, s
+    std::int64_t vectorsAcked = 0;
+};
+
+class JobPace
+{
+public:
+    JobPace(CoreHost &host, const machine::UnitProgram &program, const JobCursor &cursor)
+        : m_host(host)
+        , m_program(program)
+        , m_cursor(cursor)
+    {}
+
+    // Derives the prefixes from the program (call when a job starts).
+    void build();
+
+    // Motion commands (C, L) before program index i.
+    std::int64_t vectorsBefore(std::size_t i) const { return m_vectorPrefix[i]; }
+    std::size_t size() const { return m_vectorPrefix.size(); }
+    // Estimated seconds of motion before program index i.
+    double timeBefore(std::size_t i) const { return m_timePrefix[i]; }
+
+    // The largest packet: the unit's queue less one (or CoreOptions::maxPacketCommands).
+    int maxPacket() const;
+    // The estimated executing command, from the time since the last poll.
+    std::size_t execEstimate() const;
+    // Estimated motion still queued in the unit, s.
+    double bufferedS() const;
+    // Vectors still queued in the unit `aheadS` seconds from now.
+    std::int64_t queuedAfter(double aheadS) const;
+    // The motion of the next queue-full runs faster than the wire can carry it.
+    bool wireBoundAhead() const;
+    // Where a packet ends to keep polls at their rate where the motion is slow (next = no cap).
+    std::size_t slowMotionPacketEnd() const;
+    // The unit reported a full queue: the executing command is at most a queue-full back.
+    // Returns the new estimate of the executing command.
+    std::size_t executingAtFull() const;
+
+private:
+    void estimateDurations();
+
+    CoreHost &m_host;
+    const machine::UnitProgram &m_program;
+    const JobCursor &m_cursor;
+    std::vector<double> m_timePrefix;         // estimated motion seconds before each index
+    std::vector<std::int64_t> m_bytePrefix;   // wire bytes of the program commands before each
+    std::vector<std::int64_t> m_vectorPrefix; // motion commands before each program index
+};
+
+} // namespace frezka::driver

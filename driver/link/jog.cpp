@@ -1,0 +1,102 @@
+// Jog: one axis moved by hand within its soft limits. See jog.h.
+
+#include "jog.h"
+
+#include "driver/link/corehost.h"
+#include "driver/link/machinecore_internal.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+using detail::notNow;
+using detail::refusal;
+
+std::optional<MachineError> Jog::moveTo(int axis, std::int64_t target, double speedMmPerMin)
+{
+    const machine::MachineConfig &config = m_host.config();
+    MachineState &state = m_host.liveState();
+    const auto &ax = config.axes[static_cast<std::size_t>(axis)];
+    const std::int64_t lo = m_host.stepsFromMm(axis, ax.softMinMm);
+    const std::int64_t hi = m_host.stepsFromMm(axis, ax.softMaxMm);
+    const std::int64_t from = state.positionSteps[static_cast<std::size_t>(axis)];
+    target = std::clamp(target, std::min(lo, hi), std::max(lo, hi));
+    if (from < std::min(lo, hi) || from > std::max(lo, hi))
+        return refusal("the axis is outside its soft limits: home the machine first");
+    const std::int64_t delta = target - from;
+    if (delta == 0)
+        return refusal("the axis is at its soft limit");
+    const double rate = std::min(speedMmPerMin, ax.maxSpeedMmPerMin) / 60.0 * ax.stepsPerMm;
+    const auto pulses = std::clamp<std::int64_t>(std::llround(rate), 10, config.unit.maxPulseRate);
+    std::array<std::int64_t, 4> d{};
+    d[static_cast<std::size_t>(axis)] = delta;
+    const Command l =
+        state.axisCount == 4 ? cmd::line(d[0], d[1], d[2], d[3]) : cmd::line(d[0], d[1], d[2]);
+    m_host.setMode(MachineMode::Jogging);
+    m_host.send(cmd::speed(pulses), [this](const Outcome &o) {
+        if (m_host.unitError(o, "setting the jog speed", MachineMode::Alarm))
+            m_host.clearSteps();
+    });
+    m_host.send(l, [this](const Outcome &o) {
+        if (m_host.unitError(o, "jogging", MachineMode::Alarm)) {
+            m_host.clearSteps();
+            return;
+        }
+        m_host.afterIdle([this] {
+            if (m_host.liveState().mode == MachineMode::Jogging && !m_continuous)
+                m_host.setMode(MachineMode::Idle);
+        });
+    });
+    return std::nullopt;
+}
+
+std::optional<MachineError> Jog::step(int axis, double distanceMm, double speedMmPerMin)
+{
+    const MachineState &state = m_host.liveState();
+    if (state.mode != MachineMode::Idle)
+        return notNow("Jogging", state.mode);
+    if (axis < 0 || axis >= state.axisCount)
+        return refusal("no such axis");
+    m_continuous = false;
+    const auto from = state.positionSteps[static_cast<std::size_t>(axis)];
+    return moveTo(axis, from + m_host.stepsFromMm(axis, distanceMm), speedMmPerMin);
+}
+
+std::optional<MachineError> Jog::continuous(int axis, int direction, double speedMmPerMin)
+{
+    const MachineState &state = m_host.liveState();
+    if (state.mode != MachineMode::Idle)
+        return notNow("Jogging", state.mode);
+    if (axis < 0 || axis >= state.axisCount || direction == 0)
+        return refusal("no such axis or direction");
+    const auto &ax = m_host.config().axes[static_cast<std::size_t>(axis)];
+    m_continuous = true;
+    const double limitMm =
+        direction > 0 ? std::max(ax.softMinMm, ax.softMaxMm) : std::min(ax.softMinMm, ax.softMaxMm);
+    auto r = moveTo(axis, m_host.stepsFromMm(axis, limitMm), speedMmPerMin);
+    if (r)
+        m_continuous = false;
+    return r;
+}
+
+std::optional<MachineError> Jog::stop()
+{
+    if (m_host.liveState().mode != MachineMode::Jogging)
+        return notNow("Stopping the jog", m_host.liveState().mode);
+    m_continuous = false;
+    m_host.sendFront(cmd::halt(), [this](const Outcome &o) {
+        m_host.unitError(o, "stopping the jog (H)", MachineMode::Alarm);
+    });
+    m_host.send(cmd::deleteQueue(), [this](const Outcome &o) {
+        if (m_host.unitError(o, "ending the jog (D)", MachineMode::Alarm))
+            return;
+        m_host.liveState().inta = false;
+        m_host.setMode(MachineMode::Idle);
+    });
+    return std::nullopt;
+}
+
+} // namespace frezka::driver

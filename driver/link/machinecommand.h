@@ -1,0 +1,121 @@
+#pragma once
+// MachineCommand: one request of a front end (GUI, CLI, tests) to the machine core.
+//
+// The one declaration of the operations the driver offers: MachineController's slots build one
+// of these and queue it to the link thread, LinkWorker hands it to MachineCore::execute, which
+// either accepts it (its effect shows in later MachineState snapshots) or refuses it with a
+// MachineError and changes nothing. Plain values (copyable, operator==), so they cross threads
+// by copy. Connecting, disconnecting and the machine profile are not commands: they concern
+// the transport and the core's configuration, not the machine.
+
+#include "machine/unitprogram.h"
+
+#include <cstdint>
+#include <string>
+#include <variant>
+
+namespace frezka::driver {
+
+namespace op {
+
+// Stream a planned program; its first command runs from the current position. Idle only.
+struct Run
+{
+    machine::UnitProgram program;
+    friend bool operator==(const Run &, const Run &) = default;
+};
+struct Pause // H: brake along the ramp, keep the queue
+{
+    friend bool operator==(const Pause &, const Pause &) = default;
+};
+struct Resume // G (after a pause, an interrupt, M0/M1/M6); off the path: return to it
+{
+    friend bool operator==(const Resume &, const Resume &) = default;
+};
+struct Abort // H, D: stop and drop the rest of the job
+{
+    friend bool operator==(const Abort &, const Abort &) = default;
+};
+// While paused: K, Z up by the profile's toolLiftMm (within the soft limit), optional spindle stop.
+struct ToolLift
+{
+    bool stopSpindle = false;
+    friend bool operator==(const ToolLift &, const ToolLift &) = default;
+};
+// Z back down, R, optional new speed (V + XA) when speedPulsesPerS > 0.
+struct ToolLower
+{
+    int speedPulsesPerS = 0;
+    friend bool operator==(const ToolLower &, const ToolLower &) = default;
+};
+// W per axis in the profile's order, then the counters; bit a of axisMask = axis a.
+struct Home
+{
+    unsigned axisMask = 0xF;
+    friend bool operator==(const Home &, const Home &) = default;
+};
+// Incremental jog in mm (A: degrees), clipped to the soft limits.
+struct JogStep
+{
+    int axis = 0;
+    double distanceMm = 0;
+    double speedMmPerMin = 0;
+    friend bool operator==(const JogStep &, const JogStep &) = default;
+};
+// Jog toward the soft limit in `direction` (+1 / -1) until JogStop.
+struct JogContinuous
+{
+    int axis = 0;
+    int direction = 0;
+    double speedMmPerMin = 0;
+    friend bool operator==(const JogContinuous &, const JogContinuous &) = default;
+};
+struct JogStop
+{
+    friend bool operator==(const JogStop &, const JogStop &) = default;
+};
+struct SetMpg
+{
+    bool on = false;
+    friend bool operator==(const SetMpg &, const SetMpg &) = default;
+};
+struct SetSpindleRpm // !7V, per mille of the profile's maximum
+{
+    double rpm = 0;
+    friend bool operator==(const SetSpindleRpm &, const SetSpindleRpm &) = default;
+};
+struct SetOutputs // port 0 bits in mask set to activeHigh (1 = on), others kept
+{
+    std::uint8_t mask = 0;
+    std::uint8_t activeHigh = 0;
+    friend bool operator==(const SetOutputs &, const SetOutputs &) = default;
+};
+struct SetOverride // XM
+{
+    int percent = 100;
+    friend bool operator==(const SetOverride &, const SetOverride &) = default;
+};
+struct OverrideStep // XU (up) / XD
+{
+    bool up = true;
+    friend bool operator==(const OverrideStep &, const OverrideStep &) = default;
+};
+// A console line such as "!0PF" or "PF" (address 0 assumed), validated for the variant.
+struct SendRaw
+{
+    std::string text;
+    friend bool operator==(const SendRaw &, const SendRaw &) = default;
+};
+struct WriteEeprom // the profile's EEPROM settings to the unit, then compared again. Idle only.
+{
+    friend bool operator==(const WriteEeprom &, const WriteEeprom &) = default;
+};
+
+} // namespace op
+
+using MachineCommand =
+    std::variant<op::Run, op::Pause, op::Resume, op::Abort, op::ToolLift, op::ToolLower, op::Home,
+                 op::JogStep, op::JogContinuous, op::JogStop, op::SetMpg, op::SetSpindleRpm,
+                 op::SetOutputs, op::SetOverride, op::OverrideStep, op::SendRaw, op::WriteEeprom>;
+
+} // namespace frezka::driver

@@ -1,0 +1,122 @@
+// ProbeMove: a G38 probe move of a job. See probemove.h.
+
+#include "probemove.h"
+
+#include "driver/link/corehost.h"
+#include "driver/link/job.h"
+#include "driver/link/machinecore_internal.h"
+#include "gcode/toolpath.h"
+
+#include <algorithm>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+using detail::lineText;
+using machine::UnitOp;
+
+void ProbeMove::start(std::size_t index)
+{
+    const machine::UnitCommand c = m_job.program().commands[index];
+    const auto kind = static_cast<gcode::ProbeKind>(c.aux);
+    const bool toward =
+        kind == gcode::ProbeKind::TowardErrorIfNoContact || kind == gcode::ProbeKind::Toward;
+    const bool mustTrip = kind == gcode::ProbeKind::TowardErrorIfNoContact ||
+                          kind == gcode::ProbeKind::AwayErrorIfNoLoss;
+    const machine::EepromConfig &ee = m_host.config().eeprom;
+    const std::uint8_t contactHigh = ee.polarityHigh & 0x80; // IN15 level that means contact
+    const auto armPolarity = static_cast<std::uint8_t>(
+        (ee.polarityHigh & 0x7F) | (toward ? contactHigh : (contactHigh ^ 0x80)));
+    m_host.send(cmd::input2(), [this, index, armPolarity](const Outcome &o) {
+        if (m_host.unitError(o, "reading the probe input", MachineMode::Alarm))
+            return;
+        if ((*o.reply.hexValue() & 0x80) == (armPolarity & 0x80)) {
+            m_host.clearSteps();
+            m_job.finish(false);
+            m_host.fail(lineText(m_job.program().commands[index]) +
+                            ": the probe input is already in the state the probe move waits for",
+                        &o, MachineMode::Alarm);
+        }
+    });
+    auto arming = [this](const Outcome &o) {
+        m_host.unitError(o, "arming the probe input", MachineMode::Alarm);
+    };
+    m_host.send(cmd::statusWrite(1, ee.interruptEnableHigh | 0x80), arming);
+    m_host.send(cmd::statusWrite(3, armPolarity), arming);
+    m_host.send(m_job.toCommand({machine::UnitOp::Line, c.d}),
+                [this, index, mustTrip](const Outcome &o) {
+                    if (m_host.unitError(o, "probe move", MachineMode::Alarm))
+                        return;
+                    m_host.setHaltExpected(true);
+                    m_host.afterStopOrInterrupt([this, index, mustTrip] {
+                        // The unit brakes after the input fires; H answers only once it stands
+                        // (two equal position reads alone can come from the last, slow steps of
+                        // the ramp).
+                        m_host.send(cmd::halt(), [this](const Outcome &h) {
+                            m_host.unitError(h, "stopping the probe move (H)", MachineMode::Alarm);
+                        });
+                        m_host.whenStill([this, index, mustTrip] { end(index, mustTrip); });
+                    });
+                });
+}
+
+// Long for the four outcomes it tells apart (no trip, short with motion after, short, at end).
+void ProbeMove::end(std::size_t index, bool mustTrip)
+{
+    m_host.send(cmd::statusRead(5), [this](const Outcome &o) {
+        if (!m_host.unitError(o, "reading the probe result", MachineMode::Alarm))
+            m_host.liveState().probeTripped = (*o.reply.hexValue() & 0x80) != 0;
+    });
+    m_host.send(m_host.positionCommand(), [this](const Outcome &o) {
+        if (!m_host.unitError(o, "reading the probe position", MachineMode::Alarm)) {
+            m_host.applyPosition(o.reply);
+            m_host.liveState().probeSteps = m_host.liveState().positionSteps;
+        }
+    });
+    // D drops what is left of the probe move and clears INTA and the cause bits.
+    m_host.send(cmd::deleteQueue(),
+                [this](const Outcome &o) { m_host.unitError(o, "D", MachineMode::Alarm); });
+    const machine::EepromConfig &ee = m_host.config().eeprom;
+    m_host.send(cmd::statusWrite(1, ee.interruptEnableHigh), [](const Outcome &) {});
+    m_host.send(cmd::statusWrite(3, ee.polarityHigh), [this, index, mustTrip](const Outcome &o) {
+        m_host.setHaltExpected(false);
+        MachineState &state = m_host.liveState();
+        if (m_host.unitError(o, "disarming the probe input", MachineMode::Alarm))
+            return;
+        state.inta = false;
+        const auto &program = m_job.program();
+        const machine::UnitCommand &c = program.commands[index];
+        bool atEnd = true;
+        for (int a = 0; a < program.axisCount; ++a)
+            atEnd = atEnd && state.positionSteps[a] == c.endSteps[a];
+        if (!state.probeTripped && mustTrip) {
+            state.hold = HoldReason::ProbeFailed;
+            m_job.finish(false);
+            m_host.fail(lineText(c) + ": the probe move ended without the probe tripping", nullptr,
+                        MachineMode::Alarm);
+            return;
+        }
+        const bool motionFollows = std::any_of(
+            program.commands.begin() + static_cast<std::ptrdiff_t>(index) + 1,
+            program.commands.end(), [](const machine::UnitCommand &u) {
+                return u.op == UnitOp::Vector || u.op == UnitOp::Line || u.op == UnitOp::Probe;
+            });
+        if (!atEnd)
+            m_job.guard().switchOff(); // the rest was planned from the probe's programmed end
+        if (!atEnd && motionFollows) {
+            m_job.finish(false);
+            m_host.fail(lineText(c) + ": the probe tripped at " +
+                            std::to_string(state.probeSteps[0]) + ", " +
+                            std::to_string(state.probeSteps[1]) + ", " +
+                            std::to_string(state.probeSteps[2]) +
+                            " steps; the rest of the program was planned from the probe's end "
+                            "point: plan it again from here",
+                        nullptr, MachineMode::Alarm);
+            return;
+        }
+        m_job.acceptUpTo(index + 1);
+        m_job.setStreamBlocked(false);
+    });
+}
+
+} // namespace frezka::driver

@@ -1,0 +1,140 @@
+// UnitControls: MPG, spindle, outputs, feed override, raw commands. See unitcontrols.h.
+
+#include "unitcontrols.h"
+
+#include "driver/link/corehost.h"
+#include "driver/link/job.h"
+#include "driver/link/machinecore_internal.h"
+#include "protocol/commandparser.h"
+
+#include <cmath>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+using detail::notNow;
+using detail::refusal;
+
+MachineState &UnitControls::state()
+{
+    return m_host.liveState();
+}
+
+std::optional<MachineError> UnitControls::setMpg(bool on)
+{
+    if (!state().features.mpg)
+        return refusal(variantInfo(m_host.config().unit.variant).hasMpg
+                           ? "this unit's firmware (v" + std::to_string(state().firmwareVersion) +
+                                 ") has no MPG handwheel; it needs v10"
+                           : std::string("this unit has no MPG handwheel"));
+    if (state().mode != MachineMode::Idle)
+        return notNow("Switching the MPG", state().mode);
+    m_host.send(on ? cmd::mpgSilent() : cmd::mpgOff(), [this, on](const Outcome &o) {
+        if (!m_host.unitError(o, "switching the MPG", MachineMode::Alarm)) {
+            state().mpgOn = on;
+            m_host.markDirty();
+        }
+    });
+    return std::nullopt;
+}
+
+std::optional<MachineError> UnitControls::setSpindleRpm(double rpm)
+{
+    if (state().mode == MachineMode::Disconnected || state().mode == MachineMode::Connecting ||
+        state().mode == MachineMode::LinkLost)
+        return notNow("Setting the spindle", state().mode);
+    const double maxRpm = m_host.config().spindle.maxRpm;
+    if (rpm < 0 || rpm > maxRpm)
+        return refusal("spindle speed " + std::to_string(rpm) + " rpm is outside 0.." +
+                       std::to_string(maxRpm));
+    const int permille = static_cast<int>(std::lround(rpm / maxRpm * 1000.0));
+    Command c = cmd::spindle(permille);
+    if (!variantInfo(m_host.config().unit.variant).hasSpindleAddress7)
+        c = cmd::output((state().outputs & 0xFE) | (permille > 0 ? 0 : 1));
+    m_host.send(c, [this, permille, rpm](const Outcome &o) {
+        if (m_host.unitError(o, "setting the spindle", MachineMode::Alarm))
+            return;
+        state().spindlePermille = permille;
+        state().spindleRpm = rpm;
+        m_host.markDirty();
+    });
+    return std::nullopt;
+}
+
+std::optional<MachineError> UnitControls::setOutputs(std::uint8_t mask, std::uint8_t activeHigh)
+{
+    if (state().mode == MachineMode::Disconnected || state().mode == MachineMode::LinkLost)
+        return notNow("Switching outputs", state().mode);
+    const auto value = static_cast<std::uint8_t>((state().outputs & ~mask) | (~activeHigh & mask));
+    m_host.send(cmd::output(value), [this, value](const Outcome &o) {
+        if (m_host.unitError(o, "switching outputs", MachineMode::Alarm))
+            return;
+        state().outputs = value;
+        m_host.markDirty();
+    });
+    return std::nullopt;
+}
+
+std::optional<MachineError> UnitControls::setOverride(int percent)
+{
+    if (auto bad = validate(cmd::multiplier(percent), m_host.config().unit.variant))
+        return refusal(bad.message);
+    if (!state().features.vlVkXmNa)
+        return refusal(variantInfo(m_host.config().unit.variant).hasVlVkXmNa
+                           ? "this unit's firmware (v" + std::to_string(state().firmwareVersion) +
+                                 ") has no XM feed override; it needs v19"
+                           : std::string("this unit has no XM feed override"));
+    m_host.send(cmd::multiplier(percent), [this, percent](const Outcome &o) {
+        if (m_host.unitError(o, "setting the feed override (XM)", MachineMode::Alarm))
+            return;
+        state().overridePercent = percent;
+        m_host.markDirty();
+    });
+    return std::nullopt;
+}
+
+std::optional<MachineError> UnitControls::overrideStep(bool up)
+{
+    m_host.send(up ? cmd::exchangeUp() : cmd::exchangeDown(), [this, up](const Outcome &o) {
+        if (m_host.unitError(o, up ? "raising queued speeds (XU)" : "lowering queued speeds (XD)",
+                             MachineMode::Alarm))
+            return;
+        // XU/XD change the queued vectors by 1/16 of their speed; shown as an approximation.
+        state().overridePercent =
+            static_cast<int>(std::lround(state().overridePercent * (up ? 17.0 : 15.0) / 16.0));
+        m_host.markDirty();
+    });
+    return std::nullopt;
+}
+
+std::optional<MachineError> UnitControls::sendRaw(const std::string &text)
+{
+    std::string line = text;
+    while (!line.empty() && (line.back() == '\r' || line.back() == '\n' || line.back() == ' '))
+        line.pop_back();
+    if (line.empty())
+        return refusal("empty command");
+    if (line.front() != '!')
+        line = "!0" + line;
+    const ParsedCommand p = parseCommand(line, false);
+    if (p.status != ParseStatus::Ok)
+        return refusal("'" + text + "': " + (p.message.empty() ? "not a command" : p.message));
+    if (auto bad =
+            validate(p.command, m_host.config().unit.variant, m_host.config().unit.maxPulseRate))
+        return refusal(bad.message);
+    const Op op = p.command.op;
+    if (m_job.active() && (op == Op::Line || op == Op::Vector || op == Op::Delete ||
+                           op == Op::Keep || op == Op::Restore || op == Op::Jump ||
+                           op == Op::ZeroAll || op == Op::SetCounter || op == Op::Home))
+        return refusal("'" + text + "' would disturb the running job");
+    m_host.send(p.command, [this](const Outcome &o) {
+        if (o.status != OutcomeStatus::Ok) {
+            m_host.unitError(o, "raw command", MachineMode::LinkLost);
+            return;
+        }
+        m_host.log("reply: " + o.raw);
+    });
+    return std::nullopt;
+}
+
+} // namespace frezka::driver
