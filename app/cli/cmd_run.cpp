@@ -14,7 +14,7 @@
 // duplicated) and lost replies at RATE each (sim only), seeded by --seed.
 //
 // When the unit's position leaves the planned path (a command damaged on the line in a way its
-// checksum cannot show; see driver/link/machinecore_pathguard.cpp) the job stops and the run
+// checksum cannot show; see driver/link/pathguard.h) the job stops and the run
 // ends with the error, unless --return-to-path lets the driver return to the last verified
 // point of the path and run on without an operator.
 #include "cli.h"
