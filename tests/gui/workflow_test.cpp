@@ -282,6 +282,25 @@ M30
         QVERIFY(!button(m_window->runPanel(), "run")->isEnabled());
     }
 
+    // A feed above what the axes allow (the GVE64's X runs at most 4000 mm/min) is told once,
+    // with its line and both feeds, among the check results in the console; the program runs.
+    void feedAboveTheAxesIsToldInTheCheckResults()
+    {
+        const QString path = writeProgram(QStringLiteral("fast.nc"),
+                                          "G21 G90\nG0 X10 Y10 Z-1\nG1 X20 F12000\nG1 Y20\nM30\n");
+        QVERIFY(load(path));
+        QVERIFY(m_window->program()->program().runnable());
+        int told = 0;
+        for (const LogEntry &e : m_window->console()->entries()) {
+            const QString line = QString::fromUtf8(e.bytes);
+            if (line.contains(QStringLiteral("fast.nc:3:")) &&
+                line.contains(QStringLiteral("F12000 mm/min")) &&
+                line.contains(QStringLiteral("4000 mm/min")))
+                ++told;
+        }
+        QCOMPARE(told, 1);
+    }
+
     void eepromWriteAndReadBack()
     {
         QVERIFY(waitIdle());
