@@ -1,6 +1,9 @@
 // Vertex caps, integer passes and the time-optimal bound (docs/planner.md §3-§5).
 #include "machine/chainplanner.h"
 
+#include "machine/chainparts.h"
+#include "machine/modalchoice.h"
+
 #include "machine/unitmodel.h"
 #include "machine/unitwire.h"
 
@@ -11,14 +14,6 @@
 namespace frezka::machine::detail {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr std::int64_t kMinSpeed = 10; // smallest V / B the unit takes, pulses/s
-// Largest A sent, thousands of pulses/s²: the manuals give no bound; the emulator accepts up to
-// this (readings of driver/emulator), and a lower A is always safe.
-constexpr std::int64_t kMaxAccel = 100000;
-
-using Vec4 = std::array<double, 4>;
 
 double dot(const Vec4 &a, const Vec4 &b)
 {
@@ -43,13 +38,6 @@ Vec4 normalized(const Vec4 &v)
     return r;
 }
 
-// floor() that forgives floating-point noise (1e-9 relative): a value the exact arithmetic
-// puts on an integer must not lose a whole unit.
-double floorUnits(double x)
-{
-    return std::floor(x + 1e-9 * std::max(1.0, std::abs(x)));
-}
-
 // floor(sqrt(x)) for x >= 0, exact in integers.
 std::int64_t isqrt(std::int64_t x)
 {
@@ -63,27 +51,6 @@ std::int64_t isqrt(std::int64_t x)
     return r;
 }
 
-// Everything the passes need about one move, derived once.
-struct Derived
-{
-    Vec4 uStep{}; // axis mm (°) per path mm of the step vector: what the unit really does
-    Vec4 uPath{}; // unit direction of the intended segment (corner geometry)
-    double lengthMm = 0;
-    double pathLengthMm = 0;
-    double f = 0;           // speed units per path mm (VN: major steps/mm, VK: step length/mm)
-    double units = 0;       // distance in speed units
-    double vMm = 0;         // cruise cap, mm/s
-    double aMm = 0;         // acceleration cap, mm/s²
-    std::int64_t speed = 0; // V
-    std::int64_t accel = 0; // A (thousands)
-    std::int64_t twoAU = 0; // 2 · A · usable distance, integer pulses²/s², floored
-    bool isShort = false;
-    double wireBytes = 0;      // the C command on the serial line, bytes
-    double wireCap = kInf;     // B cap at both its ends so that it keeps the link's pace, units
-    double speedCap = kInf;    // B cap at both its ends where V lies above its own cap, units
-    std::int64_t ownSpeed = 0; // the vector's own V cap (its feed and axis limits)
-};
-
 class RunPlanner
 {
 public:
@@ -92,6 +59,7 @@ public:
         : m_moves(moves)
         , m_config(config)
         , m_options(options)
+        , m_link(config, options)
         , m_vk(vk)
     {}
 
@@ -114,11 +82,11 @@ public:
                 const PlannedVector &v = m_out.vectors[k];
                 double extra = 0;
                 if (!v.line && v.brake != lastB)
-                    extra += commandS(brakeWireBytes(v.brake));
+                    extra += m_link.commandS(m_link.brakeWireBytes(v.brake));
                 if (v.speed != lastV)
-                    extra += nonPacketS(wireBytes(protocol::cmd::speed(v.speed)));
+                    extra += m_link.nonPacketS(m_link.wireBytes(protocol::cmd::speed(v.speed)));
                 if (v.accel != lastA)
-                    extra += nonPacketS(wireBytes(protocol::cmd::accel(v.accel)));
+                    extra += m_link.nonPacketS(m_link.wireBytes(protocol::cmd::accel(v.accel)));
                 lastB = v.line ? lastB : v.brake;
                 lastV = v.speed;
                 lastA = v.accel;
@@ -133,39 +101,8 @@ public:
     }
 
 private:
-    // The link's pace: a vector's bytes are the largest C command within wireWindow() vectors
-    // either side, and the B commands within brakeWindow() either side on average: the unit's
-    // queue (64 vectors on the GVE84, 420 on the GVE64, 2048 on the GVE114) evens out the bytes of
-    // neighbours. Equal caps along a stretch send no B between its vectors.
-    std::size_t queueVectors() const
-    {
-        return static_cast<std::size_t>(protocol::variantInfo(m_config.unit.variant).queueCapacity);
-    }
-    std::size_t brakeWindow() const { return std::clamp<std::size_t>(queueVectors() / 3, 8, 128); }
-    std::size_t wireWindow() const { return std::min<std::size_t>(16, brakeWindow() / 2); }
-    // Wire time of a vector's bytes, and its share of a packet's round trip: a packet of half the
-    // queue costs one round trip (twice the adapter's latency, and the reply's few bytes).
-    double vectorWireS(double bytes) const
-    {
-        if (!m_config.link.packets) // every command waits for its own reply
-            return nonPacketS(bytes) * m_options.wireMargin;
-        return bytes * 10.0 / m_config.link.baud * m_options.wireMargin +
-               2 * roundTripS() / static_cast<double>(queueVectors());
-    }
-    double roundTripS() const { return 2 * m_config.link.latencyMs / 1000.0 + kReplyS; }
-    // A command sent on its own (A, V: they cannot travel in a packet): its bytes and a round
-    // trip, for the unit's reply.
-    double nonPacketS(double bytes) const
-    {
-        if (m_config.link.baud <= 0)
-            return 0;
-        return bytes * 10.0 / m_config.link.baud + roundTripS();
-    }
-    static constexpr double kReplyS = 0.002;      // a packet's reply and the unit's turnaround
     static constexpr int kWirePasses = 5;         // plans again at most this often
     static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
-    static constexpr double kRigidShare = 1.0; // chooseSpeeds: loss worth a shared V, of a V's cost
-    static constexpr double kFlexibleRoom = 0.8; // chooseSpeeds: B cap at least 0.89 of own
 
     // One plan of the run: the derived moves, the link's pace over them (with the B bytes of the
     // last plan), caps, bound and passes.
@@ -206,181 +143,9 @@ private:
         m_d.resize(m_moves.size());
         for (std::size_t k = 0; k < m_moves.size(); ++k)
             deriveOne(m_moves[k], m_d[k]);
-        chooseSpeeds();
-        chooseAccels();
+        chooseSpeeds(m_d, m_options, m_link);
+        chooseAccels(m_d, m_options);
         m_derived = m_d;
-    }
-
-    // V per vector. Each vector's own cap (feed, axis speeds in its direction, pulse rate)
-    // moves with the direction wherever an axis limit or VN's major axis sets it: a feed above
-    // the axes' maxima on a wavy 3D raster would change V at nearly every vector. V cannot
-    // travel in a packet (only C and B can, docs/gve-protocol.md §2.2), so each change is a round
-    // trip on the link, and where vectors are short the unit's queue runs dry on them.
-    //
-    // A vector runs from its entry B toward V and brakes to its exit B, so its fastest speed is
-    // at most sqrt((b0² + b1²) / 2 + A·L) (§4): where both its Bs stay at or below
-    // sqrt(cap² - A·L), V may lie above the vector's own cap without the vector ever going faster
-    // than the cap. Such a vector is *flexible*: it can share the V of its neighbours. Short
-    // vectors are (a 3D raster's, a finely chorded arc's): stretches of them share one V, the
-    // largest of their caps, and the B caps (Derived::speedCap) keep each one within its own. A
-    // *rigid* vector (long enough to reach its cap, or lasting long enough for the link to carry
-    // its own V command) takes its own cap as V; a flexible vector
-    // after it joins its stretch at that V while the cruise time this loses stays below what a V
-    // command costs the link (PlanOptions::speedChangeCost x its round trip).
-    void chooseSpeeds()
-    {
-        const double penalty = m_options.speedChangeCost * nonPacketS(speedWireBytes());
-        if (!(penalty > 0) || m_d.empty())
-            return; // no link to spare: every vector at its own cap
-        const std::size_t n = m_d.size();
-        const double change = nonPacketS(speedWireBytes());
-        std::vector<double> roomCap(n); // the B cap that keeps a vector within its own cap
-        for (std::size_t k = 0; k < n; ++k) {
-            const Derived &r = m_d[k];
-            const double c = static_cast<double>(r.speed);
-            // A vector that lasts twice its own wire time and a V round trip leaves the link
-            // the time for its own V: it keeps it (rigid).
-            if (r.units / c >= 2 * (vectorWireS(r.wireBytes) + change))
-                continue;
-            const double room = c * c - static_cast<double>(accelCap(k)) * 1000.0 * r.units;
-            // Flexible only where that costs the vector little: a vector that could accelerate
-            // well past its cap within itself keeps its own V.
-            if (room >= std::max(static_cast<double>(kMinSpeed * kMinSpeed), kFlexibleRoom * c * c))
-                roomCap[k] = std::floor(std::sqrt(room));
-        }
-        std::size_t first = 0;
-        std::int64_t level = 0, least = 0; // the stretch's V, and its least flexible cap
-        bool rigid = false;          // the stretch holds a rigid vector: its level cannot rise
-        double units = 0, owned = 0; // the stretch's distance, and its time at each own cap
-        auto close = [&](std::size_t end) {
-            // A stretch of flexible vectors whose caps differ little runs faster at its least
-            // cap than at its largest with every other vector's Bs held below its own cap.
-            if (!rigid && least < level) {
-                double atLeast = 0, atMost = 0;
-                for (std::size_t j = first; j < end; ++j) {
-                    const Derived &r = m_d[j];
-                    const double c = static_cast<double>(r.speed);
-                    atLeast += r.units / static_cast<double>(least) - r.units / c;
-                    if (r.speed < level)
-                        atMost += r.units / roomCap[j] - r.units / c;
-                }
-                if (atLeast <= atMost)
-                    level = least;
-            }
-            for (std::size_t j = first; j < end; ++j) {
-                Derived &r = m_d[j];
-                if (level > r.speed)
-                    r.speedCap = roomCap[j];
-                r.speed = level;
-            }
-        };
-        auto open = [&](std::size_t k) {
-            close(k);
-            first = k;
-            level = least = m_d[k].speed;
-            rigid = roomCap[k] == 0;
-            units = owned = 0;
-        };
-        // Flexible caps within the tolerance of each other share a V (a feed that changes, as
-        // from one G-code line to the next, is a V command of its own).
-        auto near = [&](std::int64_t cap) {
-            return static_cast<double>(std::max(level, cap)) * (1 - m_options.accelTolerance) <=
-                   static_cast<double>(std::min(least, cap));
-        };
-        for (std::size_t k = 0; k < n; ++k) {
-            const Derived &r = m_d[k];
-            const bool flexible = roomCap[k] > 0;
-            const double own = r.units / static_cast<double>(r.speed);
-            if (k == first) {
-                open(k);
-            } else if (flexible && !near(r.speed)) {
-                open(k);
-            } else if (flexible && !rigid) {
-                level = std::max(level, r.speed);
-                least = std::min(least, r.speed);
-            } else if (r.speed == level || (!flexible && !rigid && r.speed > level)) {
-                level = r.speed; // a rigid vector at or above a flexible stretch's level
-                rigid = rigid || !flexible;
-            } else if (rigid) {
-                // Below the stretch's V it takes the stretch down with it; above it, it runs at
-                // the stretch's V: either while the time lost stays below a V command's cost.
-                const std::int64_t lower = std::min(level, r.speed);
-                const double loss = (units + r.units) / static_cast<double>(lower) - (owned + own);
-                if (loss > kRigidShare * penalty || (flexible && r.speed < level))
-                    open(k);
-                else
-                    level = lower, rigid = rigid || !flexible;
-            } else {
-                open(k); // a rigid vector below a flexible stretch's V
-            }
-            units += r.units;
-            owned += own;
-        }
-        close(n);
-    }
-
-    // A per vector: A cannot travel in packets either, so quick vectors (those that pass in
-    // under accelKeepS at their V) share one A over a stretch whose caps lie within
-    // accelTolerance of each other: the stretch's least cap. Caps drift with the direction
-    // (a 3D raster's slope changes the path acceleration the axes allow at every vector); a
-    // stretch follows the drift in steps of the tolerance instead of at every vector. A short
-    // vector's direction jitters with the step rounding: its cap is the least of its neighbours
-    // within accelWindowSteps speed units. A long vector keeps its own cap: there the
-    // acceleration matters and one A command costs the link nothing in comparison.
-    void chooseAccels()
-    {
-        const std::size_t n = m_d.size();
-        std::vector<std::int64_t> caps(n);
-        for (std::size_t k = 0; k < n; ++k)
-            caps[k] = accelCap(k);
-        std::size_t k = 0;
-        while (k < n) {
-            std::size_t end = k + 1;
-            std::int64_t least = caps[k], most = caps[k];
-            if (quick(k)) {
-                while (end < n && quick(end)) {
-                    const std::int64_t lo = std::min(least, caps[end]);
-                    const std::int64_t hi = std::max(most, caps[end]);
-                    if (static_cast<double>(lo) <
-                        static_cast<double>(hi) * (1 - m_options.accelTolerance))
-                        break;
-                    least = lo, most = hi, ++end;
-                }
-            }
-            for (; k < end; ++k) {
-                Derived &r = m_d[k];
-                r.accel = least;
-                const double whole = std::floor(r.units + 1e-9);
-                const double usable = std::max(whole - m_options.brakeMarginSteps, whole / 2);
-                r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * r.accel * 1000.0 * usable));
-            }
-        }
-    }
-
-    bool quick(std::size_t k) const
-    {
-        return m_d[k].units < m_options.accelKeepS * static_cast<double>(m_d[k].speed);
-    }
-
-    // The A cap of move k, thousands of pulses/s² (see chooseAccels).
-    std::int64_t accelCap(std::size_t k) const
-    {
-        const std::size_t n = m_d.size();
-        const double w = std::max(0.0, m_options.accelWindowSteps);
-        const Derived &r = m_d[k];
-        double a = r.aMm; // r.aMm stays the limit itself: the bound uses it
-        double reach = r.units < w ? 0 : w;
-        for (std::size_t j = k; j > 0 && reach < w; --j) {
-            a = std::min(a, m_d[j - 1].aMm);
-            reach += m_d[j - 1].units;
-        }
-        reach = r.units < w ? 0 : w;
-        for (std::size_t j = k + 1; j < n && reach < w; ++j) {
-            a = std::min(a, m_d[j].aMm);
-            reach += m_d[j].units;
-        }
-        return std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(a * r.f / 1000)), 1,
-                                        kMaxAccel);
     }
 
     // The link's pace (PlanOptions::wireLimited): a vector must last at least the time its bytes
@@ -402,16 +167,16 @@ private:
             extraPrefix[k + 1] = extraPrefix[k] + (m_extraS.size() == n ? m_extraS[k] : 0);
         for (std::size_t k = 0; k < n; ++k) {
             Derived &r = m_d[k];
-            const std::size_t from = k > wireWindow() ? k - wireWindow() : 0;
-            const std::size_t to = std::min(n, k + wireWindow() + 1);
+            const std::size_t from = k > m_link.wireWindow() ? k - m_link.wireWindow() : 0;
+            const std::size_t to = std::min(n, k + m_link.wireWindow() + 1);
             double widest = 0;
             for (std::size_t j = from; j < to; ++j)
                 widest = std::max(widest, m_d[j].wireBytes);
-            const std::size_t bFrom = k > brakeWindow() ? k - brakeWindow() : 0;
-            const std::size_t bTo = std::min(n, k + brakeWindow() + 1);
+            const std::size_t bFrom = k > m_link.brakeWindow() ? k - m_link.brakeWindow() : 0;
+            const std::size_t bTo = std::min(n, k + m_link.brakeWindow() + 1);
             const double span = static_cast<double>(bTo - bFrom);
             const double wireS =
-                vectorWireS(widest) + (extraPrefix[bTo] - extraPrefix[bFrom]) / span;
+                m_link.vectorWireS(widest) + (extraPrefix[bTo] - extraPrefix[bFrom]) / span;
             const double fastest = r.units / wireS; // units/s
             r.vMm = std::min(r.vMm, fastest / r.f);
             if (fastest >= static_cast<double>(std::min(r.speed, r.ownSpeed)))
@@ -476,39 +241,7 @@ private:
         for (std::int32_t c : m.d)
             major = std::max<std::int64_t>(major, std::abs(c));
         r.isShort = major < m_options.shortThreshold; // the unit compares major-axis steps
-        r.wireBytes = vectorWireBytes(m.d);
-    }
-
-    // Bytes of a vector and of a B command as they go on the wire (the codec's own encoding).
-    double vectorWireBytes(const std::array<std::int32_t, 4> &d) const
-    {
-        UnitCommand c;
-        c.op = UnitOp::Vector;
-        c.d = d;
-        return static_cast<double>(
-            protocol::encode(*wireCommand(c, wireAxisCount(m_config)), m_config.link.checksums)
-                .size());
-    }
-    double brakeWireBytes(std::int64_t value) const
-    {
-        return wireBytes(protocol::cmd::brake(value));
-    }
-    double wireBytes(const protocol::Command &command) const
-    {
-        return static_cast<double>(protocol::encode(command, m_config.link.checksums).size());
-    }
-    // A V command of the largest value the unit takes (its bytes barely depend on the value).
-    double speedWireBytes() const
-    {
-        return wireBytes(protocol::cmd::speed(m_config.unit.maxPulseRate));
-    }
-    // Link time of a B command (it travels in a packet, unless packets are off).
-    double commandS(double bytes) const
-    {
-        if (m_config.link.baud <= 0)
-            return 0;
-        return m_config.link.packets ? bytes * 10.0 / m_config.link.baud * m_options.wireMargin
-                                     : nonPacketS(bytes) * m_options.wireMargin;
+        r.wireBytes = m_link.vectorWireBytes(m.d);
     }
 
     // Where the vectors are about as short as their bytes on the wire, a B that changes at every
@@ -524,8 +257,8 @@ private:
         for (std::size_t k = 0; k < vertices; ++k) {
             const double cap = static_cast<double>(m_capUnits[k]);
             // With a B before it (B at most V, so at most V's bytes).
-            const double withBrake =
-                vectorWireS(m_d[k].wireBytes) + commandS(brakeWireBytes(m_d[k].speed));
+            const double withBrake = m_link.vectorWireS(m_d[k].wireBytes) +
+                                     m_link.commandS(m_link.brakeWireBytes(m_d[k].speed));
             tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
         }
         const std::vector<std::int64_t> caps(m_capUnits.begin(), m_capUnits.end() - 1);
@@ -757,6 +490,7 @@ private:
     const std::vector<Move> &m_moves;
     const MachineConfig &m_config;
     const PlanOptions &m_options;
+    LinkTiming m_link;
     bool m_vk;
     std::vector<Derived> m_d;
     std::vector<Derived> m_derived;         // m_d before the link's pace (derive())

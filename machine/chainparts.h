@@ -1,0 +1,91 @@
+#pragma once
+// Internal to frezka_machine: what the parts of the chain planner share (docs/planner.md §4-§5):
+// the unit's speed limits, the figures derived once from each move (Derived), and the serial
+// link's timing (LinkTiming: how long commands take on the wire, in packets and on their own).
+
+#include "machine/machineconfig.h"
+#include "machine/planner.h"
+#include "protocol/command.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+namespace frezka::machine::detail {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+inline constexpr std::int64_t kMinSpeed = 10; // smallest V / B the unit takes, pulses/s
+// Largest A sent, thousands of pulses/s²: the manuals give no bound; the emulator accepts up to
+// this (readings of driver/emulator), and a lower A is always safe.
+inline constexpr std::int64_t kMaxAccel = 100000;
+
+using Vec4 = std::array<double, 4>;
+
+// floor() that forgives floating-point noise (1e-9 relative): a value the exact arithmetic
+// puts on an integer must not lose a whole unit.
+inline double floorUnits(double x)
+{
+    return std::floor(x + 1e-9 * std::max(1.0, std::abs(x)));
+}
+
+// Everything the passes need about one move, derived once.
+struct Derived
+{
+    Vec4 uStep{}; // axis mm (°) per path mm of the step vector: what the unit really does
+    Vec4 uPath{}; // unit direction of the intended segment (corner geometry)
+    double lengthMm = 0;
+    double pathLengthMm = 0;
+    double f = 0;           // speed units per path mm (VN: major steps/mm, VK: step length/mm)
+    double units = 0;       // distance in speed units
+    double vMm = 0;         // cruise cap, mm/s
+    double aMm = 0;         // acceleration cap, mm/s²
+    std::int64_t speed = 0; // V
+    std::int64_t accel = 0; // A (thousands)
+    std::int64_t twoAU = 0; // 2 · A · usable distance, integer pulses²/s², floored
+    bool isShort = false;
+    double wireBytes = 0;      // the C command on the serial line, bytes
+    double wireCap = kInf;     // B cap at both its ends so that it keeps the link's pace, units
+    double speedCap = kInf;    // B cap at both its ends where V lies above its own cap, units
+    std::int64_t ownSpeed = 0; // the vector's own V cap (its feed and axis limits)
+};
+
+// The serial link's timing for the link's pace (PlanOptions::wireLimited, docs/planner.md §4),
+// from the profile's link keys: its baud rate, latency, checksums and packets.
+class LinkTiming
+{
+public:
+    LinkTiming(const MachineConfig &config, const PlanOptions &options)
+        : m_config(config)
+        , m_options(options)
+    {}
+
+    // The unit's queue, and the windows over which the pace evens out a vector's bytes.
+    std::size_t queueVectors() const;
+    std::size_t brakeWindow() const { return std::clamp<std::size_t>(queueVectors() / 3, 8, 128); }
+    std::size_t wireWindow() const { return std::min<std::size_t>(16, brakeWindow() / 2); }
+    // Wire time of a vector of `bytes` in a packet (or alone, with packets off), with its share
+    // of the packet's round trip; seconds.
+    double vectorWireS(double bytes) const;
+    double roundTripS() const { return 2 * m_config.link.latencyMs / 1000.0 + kReplyS; }
+    // A command sent on its own (A, V: they cannot travel in a packet): its bytes and a round trip.
+    double nonPacketS(double bytes) const;
+    // Link time of a B command (it travels in a packet, unless packets are off).
+    double commandS(double bytes) const;
+    // Bytes of commands as they go on the wire (the codec's own encoding).
+    double vectorWireBytes(const std::array<std::int32_t, 4> &d) const;
+    double brakeWireBytes(std::int64_t value) const;
+    double wireBytes(const protocol::Command &command) const;
+    // A V command of the largest value the unit takes (its bytes barely depend on the value).
+    double speedWireBytes() const;
+
+    static constexpr double kReplyS = 0.002; // a packet's reply and the unit's turnaround
+
+private:
+    const MachineConfig &m_config;
+    const PlanOptions &m_options;
+};
+
+} // namespace frezka::machine::detail

@@ -1,0 +1,192 @@
+// V and A per vector (docs/planner.md §4-§5): neither can travel in a packet, so each change is a
+// round trip on the link; they are shared over stretches of vectors where that keeps every
+// vector within its own caps.
+#include "machine/modalchoice.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frezka::machine::detail {
+
+namespace {
+
+constexpr double kRigidShare = 1.0;   // chooseSpeeds: the loss worth a shared V, of a V's cost
+constexpr double kFlexibleRoom = 0.8; // chooseSpeeds: B cap at least 0.89 of a vector's own cap
+
+} // namespace
+
+// V per vector. Each vector's own cap (feed, axis speeds in its direction, pulse rate)
+// moves with the direction wherever an axis limit or VN's major axis sets it: a feed above
+// the axes' maxima on a wavy 3D raster would change V at nearly every vector. V cannot
+// travel in a packet (only C and B can, docs/gve-protocol.md §2.2), so each change is a round
+// trip on the link, and where vectors are short the unit's queue runs dry on them.
+//
+// A vector runs from its entry B toward V and brakes to its exit B, so its fastest speed is
+// at most sqrt((b0² + b1²) / 2 + A·L) (§4): where both its Bs stay at or below
+// sqrt(cap² - A·L), V may lie above the vector's own cap without the vector ever going faster
+// than the cap. Such a vector is *flexible*: it can share the V of its neighbours. Short
+// vectors are (a 3D raster's, a finely chorded arc's): stretches of them share one V, the
+// largest of their caps, and the B caps (Derived::speedCap) keep each one within its own. A
+// *rigid* vector (long enough to reach its cap, or lasting long enough for the link to carry
+// its own V command) takes its own cap as V; a flexible vector
+// after it joins its stretch at that V while the cruise time this loses stays below what a V
+// command costs the link (PlanOptions::speedChangeCost x its round trip).
+// One function of about 100 lines: the stretch being built (first, level, least, rigid and its
+// times) is shared by the walk and its open/close steps; apart, they would pass all of it around.
+void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link)
+{
+    const double penalty = options.speedChangeCost * link.nonPacketS(link.speedWireBytes());
+    if (!(penalty > 0) || d.empty())
+        return; // no link to spare: every vector at its own cap
+    const std::size_t n = d.size();
+    const double change = link.nonPacketS(link.speedWireBytes());
+    std::vector<double> roomCap(n); // the B cap that keeps a vector within its own cap
+    for (std::size_t k = 0; k < n; ++k) {
+        const Derived &r = d[k];
+        const double c = static_cast<double>(r.speed);
+        // A vector that lasts twice its own wire time and a V round trip leaves the link
+        // the time for its own V: it keeps it (rigid).
+        if (r.units / c >= 2 * (link.vectorWireS(r.wireBytes) + change))
+            continue;
+        const double room = c * c - static_cast<double>(accelCap(d, k, options)) * 1000.0 * r.units;
+        // Flexible only where that costs the vector little: a vector that could accelerate
+        // well past its cap within itself keeps its own V.
+        if (room >= std::max(static_cast<double>(kMinSpeed * kMinSpeed), kFlexibleRoom * c * c))
+            roomCap[k] = std::floor(std::sqrt(room));
+    }
+    std::size_t first = 0;
+    std::int64_t level = 0, least = 0; // the stretch's V, and its least flexible cap
+    bool rigid = false;                // the stretch holds a rigid vector: its level cannot rise
+    double units = 0, owned = 0;       // the stretch's distance, and its time at each own cap
+    auto close = [&](std::size_t end) {
+        // A stretch of flexible vectors whose caps differ little runs faster at its least
+        // cap than at its largest with every other vector's Bs held below its own cap.
+        if (!rigid && least < level) {
+            double atLeast = 0, atMost = 0;
+            for (std::size_t j = first; j < end; ++j) {
+                const Derived &r = d[j];
+                const double c = static_cast<double>(r.speed);
+                atLeast += r.units / static_cast<double>(least) - r.units / c;
+                if (r.speed < level)
+                    atMost += r.units / roomCap[j] - r.units / c;
+            }
+            if (atLeast <= atMost)
+                level = least;
+        }
+        for (std::size_t j = first; j < end; ++j) {
+            Derived &r = d[j];
+            if (level > r.speed)
+                r.speedCap = roomCap[j];
+            r.speed = level;
+        }
+    };
+    auto open = [&](std::size_t k) {
+        close(k);
+        first = k;
+        level = least = d[k].speed;
+        rigid = roomCap[k] == 0;
+        units = owned = 0;
+    };
+    // Flexible caps within the tolerance of each other share a V (a feed that changes, as
+    // from one G-code line to the next, is a V command of its own).
+    auto near = [&](std::int64_t cap) {
+        return static_cast<double>(std::max(level, cap)) * (1 - options.accelTolerance) <=
+               static_cast<double>(std::min(least, cap));
+    };
+    for (std::size_t k = 0; k < n; ++k) {
+        const Derived &r = d[k];
+        const bool flexible = roomCap[k] > 0;
+        const double own = r.units / static_cast<double>(r.speed);
+        if (k == first) {
+            open(k);
+        } else if (flexible && !near(r.speed)) {
+            open(k);
+        } else if (flexible && !rigid) {
+            level = std::max(level, r.speed);
+            least = std::min(least, r.speed);
+        } else if (r.speed == level || (!flexible && !rigid && r.speed > level)) {
+            level = r.speed; // a rigid vector at or above a flexible stretch's level
+            rigid = rigid || !flexible;
+        } else if (rigid) {
+            // Below the stretch's V it takes the stretch down with it; above it, it runs at
+            // the stretch's V: either while the time lost stays below a V command's cost.
+            const std::int64_t lower = std::min(level, r.speed);
+            const double loss = (units + r.units) / static_cast<double>(lower) - (owned + own);
+            if (loss > kRigidShare * penalty || (flexible && r.speed < level))
+                open(k);
+            else
+                level = lower, rigid = rigid || !flexible;
+        } else {
+            open(k); // a rigid vector below a flexible stretch's V
+        }
+        units += r.units;
+        owned += own;
+    }
+    close(n);
+}
+
+// A per vector: A cannot travel in packets either, so quick vectors (those that pass in
+// under accelKeepS at their V) share one A over a stretch whose caps lie within
+// accelTolerance of each other: the stretch's least cap. Caps drift with the direction
+// (a 3D raster's slope changes the path acceleration the axes allow at every vector); a
+// stretch follows the drift in steps of the tolerance instead of at every vector. A short
+// vector's direction jitters with the step rounding: its cap is the least of its neighbours
+// within accelWindowSteps speed units. A long vector keeps its own cap: there the
+// acceleration matters and one A command costs the link nothing in comparison.
+void chooseAccels(std::vector<Derived> &d, const PlanOptions &options)
+{
+    const std::size_t n = d.size();
+    std::vector<std::int64_t> caps(n);
+    for (std::size_t k = 0; k < n; ++k)
+        caps[k] = accelCap(d, k, options);
+    std::size_t k = 0;
+    while (k < n) {
+        std::size_t end = k + 1;
+        std::int64_t least = caps[k], most = caps[k];
+        if (quick(d, k, options)) {
+            while (end < n && quick(d, end, options)) {
+                const std::int64_t lo = std::min(least, caps[end]);
+                const std::int64_t hi = std::max(most, caps[end]);
+                if (static_cast<double>(lo) <
+                    static_cast<double>(hi) * (1 - options.accelTolerance))
+                    break;
+                least = lo, most = hi, ++end;
+            }
+        }
+        for (; k < end; ++k) {
+            Derived &r = d[k];
+            r.accel = least;
+            const double whole = std::floor(r.units + 1e-9);
+            const double usable = std::max(whole - options.brakeMarginSteps, whole / 2);
+            r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * r.accel * 1000.0 * usable));
+        }
+    }
+}
+
+bool quick(const std::vector<Derived> &d, std::size_t k, const PlanOptions &options)
+{
+    return d[k].units < options.accelKeepS * static_cast<double>(d[k].speed);
+}
+
+// The A cap of move k, thousands of pulses/s² (see chooseAccels).
+std::int64_t accelCap(const std::vector<Derived> &d, std::size_t k, const PlanOptions &options)
+{
+    const std::size_t n = d.size();
+    const double w = std::max(0.0, options.accelWindowSteps);
+    const Derived &r = d[k];
+    double a = r.aMm; // r.aMm stays the limit itself: the bound uses it
+    double reach = r.units < w ? 0 : w;
+    for (std::size_t j = k; j > 0 && reach < w; --j) {
+        a = std::min(a, d[j - 1].aMm);
+        reach += d[j - 1].units;
+    }
+    reach = r.units < w ? 0 : w;
+    for (std::size_t j = k + 1; j < n && reach < w; ++j) {
+        a = std::min(a, d[j].aMm);
+        reach += d[j].units;
+    }
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(a * r.f / 1000)), 1,
+                                    kMaxAccel);
+}
+
+} // namespace frezka::machine::detail

@@ -1,0 +1,22 @@
+#pragma once
+// Internal to frezka_machine: V and A per vector, shared over stretches (docs/planner.md §4-§5).
+
+#include "machine/chainparts.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace frezka::machine::detail {
+
+// Sets each vector's V (Derived::speed) and, where it shares a V above its own cap, the B cap
+// that keeps it within its own (Derived::speedCap). Without a link (baud 0) each keeps its own.
+void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link);
+// Sets each vector's A (Derived::accel) and its braking room (Derived::twoAU).
+void chooseAccels(std::vector<Derived> &d, const PlanOptions &options);
+// The A cap of vector k, thousands of pulses/s².
+std::int64_t accelCap(const std::vector<Derived> &d, std::size_t k, const PlanOptions &options);
+// True when vector k passes in under PlanOptions::accelKeepS at its V.
+bool quick(const std::vector<Derived> &d, std::size_t k, const PlanOptions &options);
+
+} // namespace frezka::machine::detail
