@@ -372,13 +372,10 @@ void Job::finishWithPosition()
         const machine::Steps4 &end = m_guard.plannedBefore(m_program.commands.size());
         for (int a = 0; a < m_program.axisCount && !m_guard.off(); ++a) {
             if (at[a] != end[a]) {
-                std::string have, want;
-                for (int b = 0; b < m_program.axisCount; ++b) {
-                    have += (b ? ", " : "") + std::to_string(at[b]);
-                    want += (b ? ", " : "") + std::to_string(end[b]);
-                }
-                m_guard.fault("the job ended with the counters at " + have +
-                              " steps where the program ends at " + want);
+                m_guard.fault("the job ended with the counters at " +
+                              detail::stepsText(at, m_program.axisCount) +
+                              " steps where the program ends at " +
+                              detail::stepsText(end, m_program.axisCount));
                 return;
             }
         }
@@ -440,10 +437,8 @@ void Job::checkPolledPosition(bool kept)
     if (m_host.liveState().mode != MachineMode::Running || m_guard.faulted() || kept ||
         m_guard.off() || m_guard.onPlannedPath() || m_check.pending())
         return;
-    std::string at;
-    for (int a = 0; a < m_program.axisCount; ++a)
-        at += (a ? ", " : "") + std::to_string(m_host.liveState().positionSteps[a]);
-    m_guard.fault("the unit's counters read " + at +
+    m_guard.fault("the unit's counters read " +
+                  detail::stepsText(m_host.liveState().positionSteps, m_program.axisCount) +
                   " steps, on no segment of the path "
                   "sent to it");
 }

@@ -37,6 +37,15 @@ inline std::string lineText(const machine::UnitCommand &c)
     return c.sourceLine ? "line " + std::to_string(c.sourceLine) : "setup";
 }
 
+// "120, -40, 7" for the first `axes` counters, for messages.
+inline std::string stepsText(const machine::Steps4 &s, int axes)
+{
+    std::string t;
+    for (int a = 0; a < axes; ++a)
+        t += (a ? ", " : "") + std::to_string(s[static_cast<std::size_t>(a)]);
+    return t;
+}
+
 // An operation refused before anything was sent.
 inline MachineError refusal(std::string text)
 {

@@ -14,19 +14,8 @@ namespace frezka::driver {
 using namespace frezka::protocol;
 using detail::isMotion;
 using detail::lineText;
+using detail::stepsText;
 using machine::UnitOp;
-
-namespace {
-
-std::string stepsText(const machine::Steps4 &s, int axes)
-{
-    std::string t;
-    for (int a = 0; a < axes; ++a)
-        t += (a ? ", " : "") + std::to_string(s[static_cast<std::size_t>(a)]);
-    return t;
-}
-
-} // namespace
 
 PathGuard::PathGuard(CoreHost &host, Job &job)
     : m_host(host)

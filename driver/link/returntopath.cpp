@@ -4,6 +4,7 @@
 
 #include "driver/link/corehost.h"
 #include "driver/link/job.h"
+#include "driver/link/machinecore_internal.h"
 #include "driver/link/pathguard.h"
 
 #include <algorithm>
@@ -12,18 +13,7 @@
 namespace frezka::driver {
 
 using namespace frezka::protocol;
-
-namespace {
-
-std::string stepsText(const machine::Steps4 &s, int axes)
-{
-    std::string t;
-    for (int a = 0; a < axes; ++a)
-        t += (a ? ", " : "") + std::to_string(s[static_cast<std::size_t>(a)]);
-    return t;
-}
-
-} // namespace
+using detail::stepsText;
 
 void ReturnToPath::start(int attempt)
 {
