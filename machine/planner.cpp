@@ -2,6 +2,7 @@
 // emission of unit commands (docs/planner.md). Vertex speeds: chainplanner.cpp.
 #include "machine/planner.h"
 
+#include "machine/chainparts.h"
 #include "machine/chainplanner.h"
 #include "machine/steps.h"
 #include "machine/unitmodel.h"
@@ -307,10 +308,9 @@ private:
     void finishStats();
     void feedCapWarning();
     double restLinkS() const;
-    // restLinkS: the driver's status poll interval (driver/link CoreOptions::pollIntervalS), a
-    // reply's turnaround, and the bytes of one command and its reply.
+    // restLinkS: the driver's status poll interval (driver/link CoreOptions::pollIntervalS) and
+    // the bytes of one command and its reply.
     static constexpr double kStatusPollS = 0.05;
-    static constexpr double kReplyS = 0.002;
     static constexpr double kExchangeBytes = 20;
 
     const gcode::Toolpath &m_path;
@@ -502,8 +502,7 @@ double Planner::restLinkS() const
     const LinkConfig &link = m_config.link;
     if (!m_options.wireLimited || link.baud <= 0)
         return 0;
-    const double exchangeS =
-        2 * link.latencyMs / 1000.0 + kReplyS + kExchangeBytes * 10.0 / link.baud;
+    const double exchangeS = detail::LinkTiming(m_config, m_options).nonPacketS(kExchangeBytes);
     double total = 0;
     bool atRest = true;
     int commands = 0;
