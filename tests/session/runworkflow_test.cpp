@@ -9,6 +9,7 @@
 
 #include "gcode/interpreter.h"
 #include "machine/planner.h"
+#include "machine/steps.h"
 
 #include <QCoreApplication>
 
@@ -113,10 +114,27 @@ TEST(RunWorkflow, PauseLiftAndLowerAndContinueEndsTheJob)
     ASSERT_TRUE(h.until(MachineMode::ToolLifted));
     const double liftedZ = h.link.state().positionMm[2];
     EXPECT_NEAR(liftedZ, -10 + h.config.motion.toolLiftMm, 0.01);
+    // What the unit itself did, not only what the state says: the tool stands lifted there, and
+    // what was executed of the job is kept (K) for after the lower.
+    const auto unitLifted = h.link.port().unit().position();
+    EXPECT_EQ(unitLifted[2],
+              machine::stepsOf(-10 + h.config.motion.toolLiftMm, h.config.axes[2].stepsPerMm));
     h.workflow.lowerTool(0, true); // back down, then on by itself
     ASSERT_TRUE(h.runToEnd());
     EXPECT_TRUE(h.ended.value_or(false)) << h.workflow.error().toStdString();
     EXPECT_EQ(h.link.liveState().positionSteps, plan->commands.back().endSteps);
+    // The unit's own counters end exactly at the program's end, every vector ran once (plus the
+    // lift and the lower) and it never stopped without its ramp.
+    const auto end = plan->commands.back().endSteps;
+    const auto unitEnd = h.link.port().unit().position();
+    for (int a = 0; a < 3; ++a)
+        EXPECT_EQ(unitEnd[static_cast<std::size_t>(a)], end[static_cast<std::size_t>(a)]);
+    const auto motion = h.link.port().unit().stats().motion;
+    std::int64_t planned = 0;
+    for (const machine::UnitCommand &c : plan->commands)
+        planned += c.op == machine::UnitOp::Vector || c.op == machine::UnitOp::Line ? 1 : 0;
+    EXPECT_EQ(motion.vectorsExecuted, planned + 2);
+    EXPECT_EQ(motion.brakeViolations, 0);
 }
 
 TEST(RunWorkflow, PlansAgainFromWhereTheMachineIs)
