@@ -95,6 +95,8 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     updateRecentMenu();
     const ProfileLoad profile = loadCurrentProfile();
     applyProfile(profile.config, profile.path);
+    for (const QString &notice : profile.notices)
+        m_console->appendInfo(notice);
     if (!profile.error.isEmpty())
         QMetaObject::invokeMethod(
             this, [this, e = profile.error] { showError(e); }, Qt::QueuedConnection);

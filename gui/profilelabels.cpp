@@ -23,7 +23,6 @@ const Label kKeys[] = {
     {"baud", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Baud rate")},
     {"checksums", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Checksums")},
     {"packets", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Packets")},
-    {"packetCommands", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Commands per packet")},
     {"latencyMs", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Adapter latency (each way)")},
     {"axes", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Axes")},
     {"x", QT_TRANSLATE_NOOP("frezka::gui::Profile", "X axis")},
@@ -78,7 +77,7 @@ const Label kKeys[] = {
     {"aSlavedTo",
      QT_TRANSLATE_NOOP("frezka::gui::Profile", "A axis slaved to (0 none, 1 X, 2 Y, 3 Z)")},
     {"pwmBreakout", QT_TRANSLATE_NOOP("frezka::gui::Profile", "PWM for breakout boards")},
-    {"stepPolarityInvert", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Invert STEP polarity")},
+    {"stepActiveEdge", QT_TRANSLATE_NOOP("frezka::gui::Profile", "STEP active edge")},
     {"defaultSpindlePermille", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Default spindle speed")},
     {"brakeReleaseDelayS", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Brake release delay")},
 };
@@ -103,6 +102,9 @@ const Label kChoices[] = {
     {"onRotaryA", QT_TRANSLATE_NOOP("frezka::gui::Profile", "On, 4th position drives rotary A")},
     {"onRotaryAWithLimits",
      QT_TRANSLATE_NOOP("frezka::gui::Profile", "On with limits, 4th position drives rotary A")},
+    {"default", QT_TRANSLATE_NOOP("frezka::gui::Profile", "As the unit left the factory")},
+    {"falling", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Falling edge")},
+    {"rising", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Rising edge")},
     {"gve84", QT_TRANSLATE_NOOP("frezka::gui::Profile", "GVE84")},
     {"gve64", QT_TRANSLATE_NOOP("frezka::gui::Profile", "GVE64")},
     {"gve64-phantom", QT_TRANSLATE_NOOP("frezka::gui::Profile", "GVE64 PHANTOM")},
@@ -163,6 +165,10 @@ QString configErrorText(const machine::ConfigError &error)
     case C::Inconsistent:
         what = QT_TRANSLATE_NOOP("frezka::gui::Profile",
                                  "the value contradicts another setting or the unit type");
+        break;
+    case C::Retired:
+        what = QT_TRANSLATE_NOOP("frezka::gui::Profile",
+                                 "a key of an older profile, read into its successor or ignored");
         break;
     }
     return QCoreApplication::translate("frezka::gui::Profile", "%1: %2 (%3)")

@@ -24,6 +24,8 @@ ProfileLoad loadCurrentProfile()
     if (!QFileInfo::exists(out.path))
         return out; // first start: defaults, saved on the first "Save"
     const auto result = machine::loadMachineConfig(out.path.toStdString());
+    for (const auto &n : result.notes)
+        out.notices << configErrorText(n);
     if (result.config) {
         out.config = *result.config;
     } else {

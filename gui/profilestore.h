@@ -5,6 +5,7 @@
 #include "machine/machineconfig.h"
 
 #include <QString>
+#include <QStringList>
 
 namespace frezka::gui {
 
@@ -13,6 +14,7 @@ struct ProfileLoad
     machine::MachineConfig config;
     QString path;  // file it came from / will be saved to
     QString error; // why the file could not be used (config then holds defaults); empty = fine
+    QStringList notices; // retired keys read from an older profile (shown in the console)
 };
 
 QString defaultProfilePath();

@@ -115,6 +115,20 @@ struct Rules
             fail("motion.speedMode", "this unit's firmware has no VK; use \"vn\" or \"auto\"");
         if (c.motion.speedMode == SpeedModeChoice::Vk && c.axes[3].present)
             fail("motion.speedMode", "VK ignores the rotary axis A; use \"vn\" or \"auto\"");
+        const protocol::Features fw = protocol::featuresOf(info.variant, c.unit.firmwareVersion);
+        for (int i = 0; i < kAxisCount && !fw.switchHoming; ++i) {
+            const AxisConfig &a = c.axes[static_cast<std::size_t>(i)];
+            if (a.present && a.homing.order > 0)
+                fail(axisKey(i) + ".homing.order",
+                     "this unit's firmware (v" + std::to_string(c.unit.firmwareVersion) +
+                         ") has no W (homing to a switch comes with IP64MPG v10); set 0 and "
+                         "set the position by hand, or update the unit");
+        }
+        if (info.variant == protocol::Variant::Gve64Phantom &&
+            c.eeprom.stepEdge == StepEdge::Rising)
+            fail("eeprom.stepActiveEdge", "a GVE64 PHANTOM steps on the falling edge only (its "
+                                          "STEP polarity cannot be changed); set \"default\" or "
+                                          "\"falling\" and use drivers that take that edge");
         if (c.eeprom.homingInput != 0 && (c.eeprom.homingInput < 3 || !info.hasMpg))
             fail("eeprom.homingInput", "must be 0 (off) or an input 3..7 (GVE64/GVE114 only)");
         if (c.eeprom.aSlavedTo != 0 && info.axisCount < 4)

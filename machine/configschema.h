@@ -39,6 +39,10 @@ inline constexpr Choice<MpgMode> kMpgModes[] = {
     {"onRotaryA", MpgMode::OnRotaryA},
     {"onRotaryAWithLimits", MpgMode::OnRotaryAWithLimits}};
 
+inline constexpr Choice<StepEdge> kStepEdges[] = {{"default", StepEdge::UnitDefault},
+                                                  {"falling", StepEdge::Falling},
+                                                  {"rising", StepEdge::Rising}};
+
 inline constexpr Choice<protocol::Variant> kVariants[] = {
     {"gve84", protocol::Variant::Gve84},
     {"gve64", protocol::Variant::Gve64},
@@ -99,7 +103,6 @@ void visitProfile(V &v, MachineConfig &c)
         s.integer("baud", c.link.baud, 9600, 921600, "Bd");
         s.boolean("checksums", c.link.checksums);
         s.boolean("packets", c.link.packets);
-        s.integer("packetCommands", c.link.packetCommands, 1, 64, "commands");
         s.number("latencyMs", c.link.latencyMs, 0, 100, "ms");
     });
     v.object("axes", [&](V &s) {
@@ -138,7 +141,7 @@ void visitProfile(V &v, MachineConfig &c)
         s.byte("polarityHigh", e.polarityHigh);
         s.integer("aSlavedTo", e.aSlavedTo, 0, 3, "");
         s.boolean("pwmBreakout", e.pwmBreakout);
-        s.boolean("stepPolarityInvert", e.stepPolarityInvert);
+        s.choice("stepActiveEdge", e.stepEdge, all(kStepEdges));
         s.integer("defaultSpindlePermille", e.defaultSpindlePermille, 1, 1000, "‰");
         s.number("brakeReleaseDelayS", e.brakeReleaseDelayS, 0, 5, "s");
     });

@@ -1,7 +1,10 @@
 // The unit EEPROM settings a machine profile asks for (docs/gve-protocol.md §12).
 //
-// Adopted reading for the STEP/DIR byte 0x05 (the manuals give only the default FF): a set bit
-// is the normal polarity, a cleared bit inverts that signal.
+// Adopted reading for the STEP/DIR byte 0x05 (the manuals give only the default FF): a set DIR
+// bit is the normal direction, a cleared one reverses the axis. STEP bits by physical edge
+// (docs/gve-protocol.md §12): GVE84/GVE64 bit4 set = falling edge, cleared = rising (the
+// manuals' text); GVE114 bits 0-3 set = rising edge, cleared = falling (its worked example
+// 0xAC: "X,Y falling edge, Z,A rising").
 #include "machine/machineconfig.h"
 
 #include <algorithm>
@@ -20,14 +23,17 @@ std::uint8_t stepDirByte(const MachineConfig &c)
 {
     std::uint8_t b = 0xFF;
     const bool is114 = c.unit.variant == protocol::Variant::Gve114;
+    // The edge a cleared STEP bit selects on this variant (see the reading above).
+    const StepEdge clearedEdge = is114 ? StepEdge::Falling : StepEdge::Rising;
+    const bool clearStep = c.eeprom.stepEdge == clearedEdge;
     const int axes = wireAxisCount(c);
     for (int i = 0; i < axes; ++i) {
         if (c.axes[static_cast<std::size_t>(i)].invertDirection)
             b = static_cast<std::uint8_t>(b & ~(1u << (is114 ? 4 + i : i)));
-        if (is114 && c.eeprom.stepPolarityInvert)
+        if (is114 && clearStep)
             b = static_cast<std::uint8_t>(b & ~(1u << i));
     }
-    if (!is114 && c.eeprom.stepPolarityInvert)
+    if (!is114 && clearStep)
         b = static_cast<std::uint8_t>(b & ~0x10u);
     return b;
 }
@@ -98,6 +104,11 @@ std::vector<EepromEntry> eepromEntries(const MachineConfig &c)
         {0x4C, K::Uint32, static_cast<double>(ee.defaultSpindlePermille), "default spindle speed"});
     if (c.unit.variant == protocol::Variant::Gve114) {
         e.push_back({0x60, K::Float, ee.mpgStepMultiplier, "MPG step multiplier"});
+        // The baud range: 230 400-921 600 Bd need 01, 19 200-57 600 need FF; 115 200 is in both.
+        if (c.link.baud > 115200)
+            byte(0x0D, 0x01, "baud range (01: 115 200-921 600 Bd)");
+        else if (c.link.baud < 115200)
+            byte(0x0D, 0xFF, "baud range (FF: 19 200-115 200 Bd)");
     } else {
         static const char *homing[] = {"homing speed X", "homing speed Y", "homing speed Z"};
         for (int i = 0; i < 3; ++i) {

@@ -310,6 +310,38 @@ void lineAndColumn(const std::string &text, int offset, int &line, int &column)
     }
 }
 
+// Keys of older profiles: each is taken out of the object before it is read, and a note says
+// what became of it. eeprom.stepPolarityInvert meant the opposite physical edge on a GVE114
+// than on a GVE64, so it becomes the edge it selected on the profile's own variant.
+void takeRetiredKeys(QJsonObject &root, protocol::Variant variant, MachineConfig &config,
+                     std::vector<ConfigError> &notes)
+{
+    const auto take = [&](const char *object, const char *key) {
+        QJsonObject o = root.value(QLatin1String(object)).toObject();
+        const QJsonValue v = o.take(QLatin1String(key));
+        if (!v.isUndefined())
+            root.insert(QLatin1String(object), o);
+        return v;
+    };
+    if (!take("link", "packetCommands").isUndefined())
+        notes.push_back({ConfigErrorCode::Retired, "link.packetCommands",
+                         "link.packetCommands: retired and ignored: the driver fills each "
+                         "packet up to the unit's byte limit; remove the key"});
+    const QJsonValue invert = take("eeprom", "stepPolarityInvert");
+    if (invert.isUndefined())
+        return;
+    const bool is114 = variant == protocol::Variant::Gve114;
+    const bool on = invert.toBool();
+    if (on)
+        config.eeprom.stepEdge = is114 ? StepEdge::Falling : StepEdge::Rising;
+    notes.push_back({ConfigErrorCode::Retired, "eeprom.stepPolarityInvert",
+                     std::string("eeprom.stepPolarityInvert: retired; read as stepActiveEdge \"") +
+                         (!on     ? "default"
+                          : is114 ? "falling"
+                                  : "rising") +
+                         "\"; save the profile or write that key instead"});
+}
+
 } // namespace
 
 ConfigResult parseMachineConfig(const std::string &json)
@@ -341,8 +373,10 @@ ConfigResult parseMachineConfig(const std::string &json)
         r.choice("variant", variant, schema::all(schema::kVariants));
     }
     config = defaultMachineConfig(variant);
+    QJsonObject root = doc.object();
+    takeRetiredKeys(root, variant, config, result.notes);
     {
-        Reader reader(doc.object(), {}, result.errors);
+        Reader reader(root, {}, result.errors);
         schema::visitProfile(reader, config);
     }
     if (result.errors.empty())
@@ -366,6 +400,8 @@ ConfigResult loadMachineConfig(const std::string &path)
     }
     ConfigResult result = parseMachineConfig(file.readAll().toStdString());
     for (ConfigError &e : result.errors)
+        e.message = path + ": " + e.message;
+    for (ConfigError &e : result.notes)
         e.message = path + ": " + e.message;
     return result;
 }

@@ -63,9 +63,8 @@ struct LinkConfig
     std::string port = "emulator"; // "/dev/ttyUSB0", a pty path, or "emulator" (in-process)
     int baud = 115200;
     bool checksums = true;
-    bool packets = true;
-    int packetCommands = 10; // C/B commands per packet, 1..64
-    double latencyMs = 8;    // one way, of the serial adapter (USB converters: 1-16 ms), 0..100
+    bool packets = true;  // the driver fills each packet up to the unit's byte limit
+    double latencyMs = 8; // one way, of the serial adapter (USB converters: 1-16 ms), 0..100
     friend bool operator==(const LinkConfig &, const LinkConfig &) = default;
 };
 
@@ -113,6 +112,11 @@ struct OutputConfig
 
 enum class MpgMode : std::uint8_t { Off, On, OnWithLimits, OnRotaryA, OnRotaryAWithLimits };
 
+// The STEP edge the motor drivers act on (EEPROM 0x05). UnitDefault leaves the unit's factory
+// bits (FF): the falling edge on a GVE84/GVE64 (a PHANTOM's is fixed there), the rising edge on
+// a GVE114 (docs/gve-protocol.md §12, adopted reading).
+enum class StepEdge : std::uint8_t { UnitDefault, Falling, Rising };
+
 // Unit EEPROM settings Frezka keeps in sync (docs/gve-protocol.md §12). Limits, steps per mm,
 // DIR polarity and homing speeds come from the axes.
 struct EepromConfig
@@ -130,7 +134,7 @@ struct EepromConfig
     std::uint8_t polarityHigh = 0x00;        // IN14/IN15
     int aSlavedTo = 0;                       // 0 independent, 1 X, 2 Y, 3 Z
     bool pwmBreakout = false;                // 0x04: breakout-board signal instead of standard PWM
-    bool stepPolarityInvert = false;         // STEP polarity bit (GVE84/64: bit4; GVE114: all axes)
+    StepEdge stepEdge = StepEdge::UnitDefault; // the STEP edge the drivers act on
     int defaultSpindlePermille = 500;
     double brakeReleaseDelayS = 1.0; // 0xFD, 0..5 s
     friend bool operator==(const EepromConfig &, const EepromConfig &) = default;
@@ -160,6 +164,7 @@ enum class ConfigErrorCode : std::uint8_t {
     OutOfRange,     // a number outside its range
     BadChoice,      // a string that is none of the allowed names
     Inconsistent,   // keys that contradict each other or the unit variant
+    Retired,        // a key of an older profile, read into its successor or ignored (a note)
 };
 
 struct ConfigError
@@ -174,6 +179,7 @@ struct ConfigResult
 {
     std::optional<MachineConfig> config; // set only when errors is empty
     std::vector<ConfigError> errors;
+    std::vector<ConfigError> notes; // retired keys: what became of each (not errors)
 };
 
 // Parses and validates a profile (JSON text). Collects every error, not only the first.

@@ -2,8 +2,8 @@
 // A UnitCommand as the codec's typed command (protocol/command.h): one mapping for the
 // plan CLI and the driver, so that only the codec formats bytes.
 
-#include "protocol/command.h"
 #include "machine/unitprogram.h"
+#include "protocol/command.h"
 
 #include <optional>
 #include <string>

@@ -75,8 +75,9 @@ std::optional<int> firmwareVersion(std::string_view firmware)
 Features featuresOf(Variant v, std::optional<int> version)
 {
     const VariantInfo &info = variantInfo(v);
-    Features f{info.hasMpg, info.hasEepromFloat, info.hasVlVkXmNa};
+    Features f{info.hasMpg, info.hasEepromFloat, info.hasVlVkXmNa, true};
     if ((v == Variant::Gve64 || v == Variant::Gve64Phantom) && version) {
+        f.switchHoming = *version >= 10;
         f.mpg = f.mpg && *version >= 10;
         f.eepromFloat = f.eepromFloat && *version >= 10;
         f.vlVkXmNa = f.vlVkXmNa && *version >= 19;

@@ -52,6 +52,7 @@ struct Features
     bool mpg = false;
     bool eepromFloat = false;
     bool vlVkXmNa = false;
+    bool switchHoming = true; // W: GVE64 from IP64MPG v10 (manual §14.1)
     friend bool operator==(const Features &, const Features &) = default;
 };
 Features featuresOf(Variant v, std::optional<int> version);

@@ -11,40 +11,6 @@
 <context>
     <name>GrinderCli</name>
     <message>
-        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
-                          [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] FILE
-       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
-                          [--reply-timeout-ms N]
-  ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
-  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or, as K51LOAD 2.20 did, the file name
-  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
-         waits for a binary frame); --go MM moves the table and waits until reached
-  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
-  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
-                         the data after a request)
-Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
-</source>
-        <translation>použití: frezka-cli grinder ping|save|load --port CESTA [--family k51|anc|hedit]
-                          [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] SOUBOR
-         frezka-cli grinder z --port CESTA [--baud N] [--form 1|2] [--go MM]
-                          [--reply-timeout-ms N]
-  ping   kontrola spojení (ENQ/ACK)
-  save   řídicí systém -&gt; PC: zapíše data řídicího systému do SOUBORU, bajt po bajtu
-  load   PC -&gt; řídicí systém: pošle SOUBOR beze změny; 16znakovou hlavičku dává --header,
-         jinak (jako K51LOAD 2.20) název souboru
-  z      přenos polohy Z: vypíše polohu stolu (FORM=1 se ptá Z?, FORM=2
-         čeká na binární rámec); --go MM přejede stolem a čeká na dosažení
-  --retries N            opakování po vypršení času, NAK nebo chybném součtu (výchozí 3)
-  --reply-timeout-ms N   povolené ticho před odpovědí (výchozí 3000; 10000 pro
-                         data po žádosti)
-Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné použití.
-</translation>
-    </message>
-    <message>
         <source>--header: &apos;%1&apos; is longer than 16 characters</source>
         <translation>--header: &apos;%1&apos; má víc než 16 znaků</translation>
     </message>
@@ -170,6 +136,44 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>Přejíždím na %1 mm...
 </translation>
     </message>
+    <message>
+        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
+                          [--baud N] [--header TEXT] [--retries N]
+                          [--reply-timeout-ms N] FILE
+       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N]
+  ping   link check (ENQ/ACK)
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
+         or, as K51LOAD 2.20 did, the file name
+  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
+         waits for a binary frame); --go MM moves the table and waits until reached
+  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
+                         HEDIT 9600 Bd)
+  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
+  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
+                         the data after a request)
+Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
+</source>
+        <translation>použití: frezka-cli grinder ping|save|load --port CESTA [--family k51|anc|hedit]
+                          [--baud N] [--header TEXT] [--retries N]
+                          [--reply-timeout-ms N] SOUBOR
+         frezka-cli grinder z --port CESTA [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N]
+  ping   kontrola spojení (ENQ/ACK)
+  save   řídicí systém -&gt; PC: zapíše data řídicího systému do SOUBORU, bajt po bajtu
+  load   PC -&gt; řídicí systém: pošle SOUBOR beze změny; 16znakovou hlavičku dává --header,
+         jinak (jako K51LOAD 2.20) název souboru
+  z      přenos polohy Z: vypíše polohu stolu (FORM=1 se ptá Z?, FORM=2
+         čeká na binární rámec); --go MM přejede stolem a čeká na dosažení
+  --baud N               rychlost linky (výchozí: ANC 4800 Bd jako ANCLOAD/ANCSAVE; K51
+                         a HEDIT 9600 Bd)
+  --retries N            opakování po vypršení času, NAK nebo chybném součtu (výchozí 3)
+  --reply-timeout-ms N   povolené ticho před odpovědí (výchozí 3000; 10000 pro
+                         data po žádosti)
+Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné použití.
+</translation>
+    </message>
 </context>
 <context>
     <name>LinkWorker</name>
@@ -261,6 +265,10 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     <message>
         <source>warning: </source>
         <translation>varování: </translation>
+    </message>
+    <message>
+        <source>note: </source>
+        <translation>poznámka: </translation>
     </message>
 </context>
 <context>
@@ -2023,10 +2031,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Pakety</translation>
     </message>
     <message>
-        <source>Commands per packet</source>
-        <translation>Příkazů v paketu</translation>
-    </message>
-    <message>
         <source>Axes</source>
         <translation>Osy</translation>
     </message>
@@ -2223,10 +2227,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>PWM pro oddělovací desky</translation>
     </message>
     <message>
-        <source>Invert STEP polarity</source>
-        <translation>Obrátit polaritu STEP</translation>
-    </message>
-    <message>
         <source>Default spindle speed</source>
         <translation>Výchozí otáčky vřetene</translation>
     </message>
@@ -2325,6 +2325,26 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Adapter latency (each way)</source>
         <translation>Latence převodníku (každým směrem)</translation>
+    </message>
+    <message>
+        <source>STEP active edge</source>
+        <translation>Aktivní hrana STEP</translation>
+    </message>
+    <message>
+        <source>As the unit left the factory</source>
+        <translation>Jak je nastaveno z výroby</translation>
+    </message>
+    <message>
+        <source>Falling edge</source>
+        <translation>Sestupná hrana</translation>
+    </message>
+    <message>
+        <source>Rising edge</source>
+        <translation>Náběžná hrana</translation>
+    </message>
+    <message>
+        <source>a key of an older profile, read into its successor or ignored</source>
+        <translation>klíč staršího profilu, převzatý do nástupce nebo vynechaný</translation>
     </message>
 </context>
 <context>

@@ -11,40 +11,6 @@
 <context>
     <name>GrinderCli</name>
     <message>
-        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
-                          [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] FILE
-       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
-                          [--reply-timeout-ms N]
-  ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
-  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or, as K51LOAD 2.20 did, the file name
-  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
-         waits for a binary frame); --go MM moves the table and waits until reached
-  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
-  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
-                         the data after a request)
-Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
-</source>
-        <translation>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
-                          [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] FILE
-       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
-                          [--reply-timeout-ms N]
-  ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
-  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or, as K51LOAD 2.20 did, the file name
-  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
-         waits for a binary frame); --go MM moves the table and waits until reached
-  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
-  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
-                         the data after a request)
-Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
-</translation>
-    </message>
-    <message>
         <source>--header: &apos;%1&apos; is longer than 16 characters</source>
         <translation>--header: &apos;%1&apos; is longer than 16 characters</translation>
     </message>
@@ -170,6 +136,44 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>Moving to %1 mm...
 </translation>
     </message>
+    <message>
+        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
+                          [--baud N] [--header TEXT] [--retries N]
+                          [--reply-timeout-ms N] FILE
+       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N]
+  ping   link check (ENQ/ACK)
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
+         or, as K51LOAD 2.20 did, the file name
+  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
+         waits for a binary frame); --go MM moves the table and waits until reached
+  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
+                         HEDIT 9600 Bd)
+  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
+  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
+                         the data after a request)
+Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
+</source>
+        <translation>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
+                          [--baud N] [--header TEXT] [--retries N]
+                          [--reply-timeout-ms N] FILE
+       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N]
+  ping   link check (ENQ/ACK)
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
+         or, as K51LOAD 2.20 did, the file name
+  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
+         waits for a binary frame); --go MM moves the table and waits until reached
+  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
+                         HEDIT 9600 Bd)
+  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
+  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
+                         the data after a request)
+Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
+</translation>
+    </message>
 </context>
 <context>
     <name>LinkWorker</name>
@@ -261,6 +265,10 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     <message>
         <source>warning: </source>
         <translation>warning: </translation>
+    </message>
+    <message>
+        <source>note: </source>
+        <translation>note: </translation>
     </message>
 </context>
 <context>
@@ -2018,10 +2026,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>Packets</translation>
     </message>
     <message>
-        <source>Commands per packet</source>
-        <translation>Commands per packet</translation>
-    </message>
-    <message>
         <source>Axes</source>
         <translation>Axes</translation>
     </message>
@@ -2218,10 +2222,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>PWM for breakout boards</translation>
     </message>
     <message>
-        <source>Invert STEP polarity</source>
-        <translation>Invert STEP polarity</translation>
-    </message>
-    <message>
         <source>Default spindle speed</source>
         <translation>Default spindle speed</translation>
     </message>
@@ -2320,6 +2320,26 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Adapter latency (each way)</source>
         <translation>Adapter latency (each way)</translation>
+    </message>
+    <message>
+        <source>STEP active edge</source>
+        <translation>STEP active edge</translation>
+    </message>
+    <message>
+        <source>As the unit left the factory</source>
+        <translation>As the unit left the factory</translation>
+    </message>
+    <message>
+        <source>Falling edge</source>
+        <translation>Falling edge</translation>
+    </message>
+    <message>
+        <source>Rising edge</source>
+        <translation>Rising edge</translation>
+    </message>
+    <message>
+        <source>a key of an older profile, read into its successor or ignored</source>
+        <translation>a key of an older profile, read into its successor or ignored</translation>
     </message>
 </context>
 <context>

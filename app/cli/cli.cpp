@@ -1,5 +1,7 @@
 #include "cli.h"
 
+#include <QCoreApplication>
+
 #include <cstdio>
 
 namespace frezka::cli {
@@ -37,6 +39,13 @@ QString planMessage(const QString &file, const machine::PlanError &error, const 
         what.erase(0, prefix.size());
     return file + QLatin1Char(':') + QString::number(error.line) + QStringLiteral(": ") + kind +
            QString::fromStdString(what) + QLatin1Char('\n');
+}
+
+void printConfigNotes(const machine::ConfigResult &result)
+{
+    const QString note = QCoreApplication::translate("frezka::cli", "note: ");
+    for (const machine::ConfigError &n : result.notes)
+        err(note + QString::fromStdString(n.message) + QLatin1Char('\n'));
 }
 
 } // namespace frezka::cli

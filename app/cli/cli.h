@@ -10,6 +10,7 @@
 
 #include <QStringList>
 
+#include "machine/machineconfig.h"
 #include "machine/planner.h"
 
 #include <functional>
@@ -34,6 +35,8 @@ void out(const QString &text);
 void err(const QString &text);
 // "FILE:LINE: KIND<message>\n" for a plan error or warning (its own "line N: " prefix dropped).
 QString planMessage(const QString &file, const machine::PlanError &error, const QString &kind);
+// Prints what became of a profile's retired keys ("note: ..."), one line each, to stderr.
+void printConfigNotes(const machine::ConfigResult &result);
 
 } // namespace frezka::cli
 

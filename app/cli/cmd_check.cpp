@@ -33,6 +33,7 @@ bool planFor(const QString &file, const QString &machinePath, const frezka::gcod
 {
     using namespace frezka;
     const machine::ConfigResult loaded = machine::loadMachineConfig(machinePath.toStdString());
+    cli::printConfigNotes(loaded);
     if (!loaded.config) {
         for (const machine::ConfigError &e : loaded.errors)
             cli::err(machinePath + QStringLiteral(": ") + QString::fromStdString(e.message) +

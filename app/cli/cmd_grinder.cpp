@@ -30,6 +30,7 @@ struct Args
     QString action; // ping, save, load, z
     QString file;
     SerialSettings serial;
+    bool hasBaud = false; // without --baud: the family's rate (ANC 4800, K51/HEDIT 9600)
     Family family = Family::K51;
     QString header;
     bool hasHeader = false;
@@ -54,6 +55,8 @@ QString usage()
         "         or, as K51LOAD 2.20 did, the file name\n"
         "  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2\n"
         "         waits for a binary frame); --go MM moves the table and waits until reached\n"
+        "  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and\n"
+        "                         HEDIT 9600 Bd)\n"
         "  --retries N            repeats after a timeout, NAK or bad checksum (default 3)\n"
         "  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for\n"
         "                         the data after a request)\n"
@@ -86,6 +89,7 @@ QString parseOption(const QString &option, const QString &value, Args &args)
         args.family = *family;
     } else if (option == "--baud") {
         args.serial.baud = value.toInt(&ok);
+        args.hasBaud = true;
         if (!ok || args.serial.baud <= 0)
             return GrinderCli::tr("--baud: '%1' is not a baud rate").arg(value);
     } else if (option == "--header") {
@@ -147,6 +151,8 @@ int parseArgs(const QStringList &list, Args &args)
     }
     if (args.serial.portName.isEmpty())
         return fail(GrinderCli::tr("--port PATH is required"));
+    if (!args.hasBaud)
+        args.serial.baud = familyInfo(args.family).defaultBaud;
     if ((args.action == "save" || args.action == "load") && args.file.isEmpty())
         return fail(GrinderCli::tr("%1 needs a FILE").arg(args.action));
     return 0;

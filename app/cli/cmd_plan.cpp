@@ -73,6 +73,7 @@ int runPlan(const QStringList &rawArgs)
     machine::MachineConfig config = machine::defaultMachineConfig(protocol::Variant::Gve64);
     if (!args.machine.isEmpty()) {
         const machine::ConfigResult loaded = machine::loadMachineConfig(args.machine.toStdString());
+        cli::printConfigNotes(loaded);
         if (!loaded.config) {
             for (const machine::ConfigError &e : loaded.errors)
                 cli::err(QString::fromStdString(e.message) + QLatin1Char('\n'));

@@ -138,6 +138,7 @@ std::optional<Prepared> prepare(const RunArgs &a)
     machine::MachineConfig config = machine::defaultMachineConfig(protocol::Variant::Gve64);
     if (!a.machine.isEmpty()) {
         const machine::ConfigResult r = machine::loadMachineConfig(a.machine.toStdString());
+        cli::printConfigNotes(r);
         if (!r.config) {
             for (const machine::ConfigError &e : r.errors)
                 cli::err(QStringLiteral("%1: %2%3\n")

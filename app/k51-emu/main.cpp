@@ -2,6 +2,7 @@
 // transfer tools without a machine. Prints the terminal path on the first line of stdout.
 #include "app/k51-emu/options.h"
 #include "app/k51-emu/ptyserver.h"
+#include "driver/grinder/family.h"
 
 #include <csignal>
 #include <cstdio>
@@ -36,7 +37,10 @@ int main(int argc, char *argv[])
     sigaction(SIGTERM, &action, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
 
-    PtyServer server(options.config, options.baud, options.fast);
+    const int baud = options.baud > 0
+                         ? options.baud
+                         : frezka::grinder::familyInfo(options.config.family).defaultBaud;
+    PtyServer server(options.config, baud, options.fast);
     const std::string path = server.open(error);
     if (path.empty()) {
         std::fprintf(stderr, "k51-emu: %s\n", error.c_str());

@@ -33,7 +33,8 @@ Controller:
   --store FILE            after every accepted load write the received data to FILE
 
 Line:
-  --baud N                pace every byte at 10 bits / N s (default 9600)
+  --baud N                pace every byte at 10 bits / N s (default: the family's rate,
+                          ANC 4800, K51 and HEDIT 9600)
   --fast                  no pacing (for tests)
   --reply-delay-ms N      controller's pause before each answer (default 2)
 

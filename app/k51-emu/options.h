@@ -11,7 +11,7 @@ namespace frezka::k51emu {
 struct Options
 {
     grinder::EmulatorConfig config;
-    int baud = 9600;
+    int baud = 0;          // 0: the family's rate (ANC 4800, K51/HEDIT 9600)
     bool fast = false;     // no baud pacing
     std::string storePath; // write the image here after every load
     bool verbose = false;

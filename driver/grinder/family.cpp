@@ -7,7 +7,7 @@ namespace frezka::grinder {
 namespace {
 const FamilyInfo kFamilies[] = {
     {Family::Anc, "anc", Framing::Anc, Code::AncLoad, Code::AncSave, Code::AncSave,
-     kAncImageSizeWithWheel, 9600},
+     kAncImageSizeWithWheel, 4800}, // ANCLOAD/ANCSAVE's rate (the manual's table); 9600 works too
     {Family::K51, "k51", Framing::K51, Code::Load, Code::Request, Code::Save, kK51ImageSize, 9600},
     {Family::HardChrome, "hedit", Framing::K51, Code::LoadHardChrome, Code::RequestHardChrome,
      Code::SaveHardChrome, kHardChromeSize, 9600},

@@ -67,6 +67,13 @@ GrinderWindow::GrinderWindow(QWidget *parent)
     m_linkTimer->setInterval(kLinkCheckIntervalMs);
     connect(m_linkTimer, &QTimer::timeout, this, &GrinderWindow::checkLink);
     connect(m_connectButton, &QPushButton::clicked, this, &GrinderWindow::onConnectClicked);
+    // Choosing a control sets its usual rate (ANCLOAD/ANCSAVE 4800 Bd, K51 and HEDIT 9600);
+    // the rate can still be changed after.
+    connect(m_family, &QComboBox::activated, this, [this] {
+        grinder::SerialSettings s = m_port->settings();
+        s.baud = familyInfo(static_cast<Family>(m_family->currentData().toInt())).defaultBaud;
+        m_port->setSettings(s);
+    });
     loadSettings();
     setLinkUp(false, QString());
     m_connection->setText(tr("Not connected."));

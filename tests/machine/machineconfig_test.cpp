@@ -218,3 +218,96 @@ TEST(MachineConfig, HomingSequenceInStepsAndPulses)
     EXPECT_EQ(seq[2].order, 2);
     EXPECT_EQ(seq[2].homeSteps, 60000);
 }
+
+namespace {
+
+double eepromValue(const MachineConfig &c, int address)
+{
+    for (const EepromEntry &e : eepromEntries(c)) {
+        if (e.address == address)
+            return e.value;
+    }
+    return -1;
+}
+
+} // namespace
+
+// STEP polarity is set by the physical edge; the byte differs per variant (docs/gve-protocol.md
+// §12): GVE64 bit4 set = falling, GVE114 bits 0-3 set = rising (its example 0xAC).
+TEST(MachineConfig, StepEdgeIsMappedPerVariant)
+{
+    MachineConfig g64 = defaultMachineConfig(protocol::Variant::Gve64);
+    EXPECT_EQ(eepromValue(g64, 0x05), 0xFF);
+    g64.eeprom.stepEdge = StepEdge::Falling;
+    EXPECT_EQ(eepromValue(g64, 0x05), 0xFF);
+    g64.eeprom.stepEdge = StepEdge::Rising;
+    EXPECT_EQ(eepromValue(g64, 0x05), 0xEF);
+    MachineConfig g114 = defaultMachineConfig(protocol::Variant::Gve114);
+    g114.eeprom.stepEdge = StepEdge::Rising;
+    EXPECT_EQ(eepromValue(g114, 0x05), 0xFF);
+    g114.eeprom.stepEdge = StepEdge::Falling;
+    EXPECT_EQ(eepromValue(g114, 0x05), 0xF0);
+    MachineConfig g84 = defaultMachineConfig(protocol::Variant::Gve84);
+    g84.eeprom.stepEdge = StepEdge::Rising;
+    EXPECT_EQ(eepromValue(g84, 0x05), 0xEF);
+}
+
+// The retired stepPolarityInvert meant opposite edges on a GVE64 and a GVE114: an old profile
+// keeps the edge it selected, and a note says so; packetCommands is ignored with a note.
+TEST(MachineConfig, RetiredKeysAreReadIntoTheirSuccessorsWithANote)
+{
+    const ConfigResult g64 = parseMachineConfig(
+        R"({"link": {"packetCommands": 10}, "eeprom": {"stepPolarityInvert": true}})");
+    ASSERT_TRUE(g64.config) << errorsText(g64);
+    EXPECT_EQ(g64.config->eeprom.stepEdge, StepEdge::Rising);
+    EXPECT_EQ(eepromValue(*g64.config, 0x05), 0xEF); // the byte the old key wrote
+    ASSERT_EQ(g64.notes.size(), 2u);
+    EXPECT_EQ(g64.notes[0].code, ConfigErrorCode::Retired);
+    EXPECT_EQ(g64.notes[0].key, "link.packetCommands");
+    EXPECT_NE(g64.notes[1].message.find("\"rising\""), std::string::npos) << g64.notes[1].message;
+    const ConfigResult g114 = parseMachineConfig(
+        R"({"unit": {"variant": "gve114"}, "eeprom": {"stepPolarityInvert": true}})");
+    ASSERT_TRUE(g114.config) << errorsText(g114);
+    EXPECT_EQ(g114.config->eeprom.stepEdge, StepEdge::Falling);
+    const ConfigResult off = parseMachineConfig(R"({"eeprom": {"stepPolarityInvert": false}})");
+    ASSERT_TRUE(off.config);
+    EXPECT_EQ(off.config->eeprom.stepEdge, StepEdge::UnitDefault);
+    const ConfigResult fresh = parseMachineConfig(R"({"eeprom": {"stepActiveEdge": "rising"}})");
+    ASSERT_TRUE(fresh.config) << errorsText(fresh);
+    EXPECT_TRUE(fresh.notes.empty());
+    EXPECT_EQ(fresh.config->eeprom.stepEdge, StepEdge::Rising);
+}
+
+// The PHANTOM's STEP is fixed to the falling edge (GVE64 manual §14.2); W needs IP64MPG v10.
+TEST(MachineConfig, FirmwareAndVariantLimitsAreRefused)
+{
+    const ConfigResult phantom = parseMachineConfig(
+        R"({"unit": {"variant": "gve64-phantom"}, "eeprom": {"stepActiveEdge": "rising"}})");
+    EXPECT_TRUE(hasError(phantom, ConfigErrorCode::Inconsistent, "eeprom.stepActiveEdge"))
+        << errorsText(phantom);
+    const ConfigResult falling = parseMachineConfig(
+        R"({"unit": {"variant": "gve64-phantom"}, "eeprom": {"stepActiveEdge": "falling"}})");
+    EXPECT_TRUE(falling.config) << errorsText(falling);
+    const ConfigResult v9 =
+        parseMachineConfig(R"({"unit": {"firmwareVersion": 9}, "eeprom": {"mpg": "off"}})");
+    EXPECT_TRUE(hasError(v9, ConfigErrorCode::Inconsistent, "axes.z.homing.order"))
+        << errorsText(v9);
+    const ConfigResult v9NoHoming = parseMachineConfig(R"({"unit": {"firmwareVersion": 9},
+        "eeprom": {"mpg": "off"}, "axes": {"x": {"homing": {"order": 0}},
+        "y": {"homing": {"order": 0}}, "z": {"homing": {"order": 0}}}})");
+    EXPECT_TRUE(v9NoHoming.config) << errorsText(v9NoHoming);
+}
+
+// Above 115 200 Bd a GVE114 needs EEPROM 0x0D = 01, below it FF; the image carries it so that
+// the connect's EEPROM check finds a unit set for the other range.
+TEST(MachineConfig, Gve114BaudRangeIsInTheEepromImage)
+{
+    MachineConfig c = defaultMachineConfig(protocol::Variant::Gve114);
+    c.link.baud = 921600;
+    EXPECT_EQ(eepromValue(c, 0x0D), 0x01);
+    c.link.baud = 57600;
+    EXPECT_EQ(eepromValue(c, 0x0D), 0xFF);
+    c.link.baud = 115200; // in both ranges: left as the unit has it
+    EXPECT_EQ(eepromValue(c, 0x0D), -1);
+    EXPECT_EQ(eepromValue(defaultMachineConfig(protocol::Variant::Gve64), 0x0D), -1);
+}

@@ -43,7 +43,9 @@ TEST(Variant, FirmwareVersionAndFeatures)
     EXPECT_EQ(featuresOf(Variant::Gve64, 19), all);
     EXPECT_EQ(featuresOf(Variant::Gve64, std::nullopt), all);
     EXPECT_EQ(featuresOf(Variant::Gve64, 17), (Features{true, true, false}));
-    EXPECT_EQ(featuresOf(Variant::Gve64Phantom, 9), (Features{false, false, false}));
+    EXPECT_EQ(featuresOf(Variant::Gve64Phantom, 9), (Features{false, false, false, false}));
+    EXPECT_TRUE(featuresOf(Variant::Gve64, 10).switchHoming); // W from IP64MPG v10 (§14.1)
+    EXPECT_FALSE(featuresOf(Variant::Gve64, 9).switchHoming);
     EXPECT_EQ(featuresOf(Variant::Gve114, 1), all); // the version gates the GVE64 only
     EXPECT_EQ(featuresOf(Variant::Gve84, 3), (Features{false, false, true}));
 }

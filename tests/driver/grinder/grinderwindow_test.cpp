@@ -7,6 +7,7 @@
 #include "gui/grinder/serialmonitor.h"
 #include "gui/grinder/zpositionpanel.h"
 
+#include <QComboBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
@@ -27,6 +28,7 @@ private slots:
     void silentControllerShowsNoConnection();
     void zPositionForm1WithTheInProcessEmulator();
     void serialMonitorShowsBothDirectionsAndCaptures();
+    void choosingAControlSetsItsRate();
 
 private:
     QTemporaryDir m_dir;
@@ -167,4 +169,30 @@ void GrinderWindowTest::serialMonitorShowsBothDirectionsAndCaptures()
 }
 
 QTEST_MAIN(GrinderWindowTest)
+// The manual's table: ANCLOAD/ANCSAVE talk at 4800 Bd, K51LOAD/K51SAVE and HEDIT at 9600.
+// Choosing the control in the list sets its rate, and the port opens at it.
+void GrinderWindowTest::choosingAControlSetsItsRate()
+{
+    GrinderWindow window;
+    window.setSerialSettings({QStringLiteral("emulator"), 9600, 8, 'n', 1});
+    auto *family = window.findChild<QComboBox *>(QStringLiteral("family"));
+    QVERIFY(family);
+    const auto choose = [family](Family f) {
+        const int index = family->findData(int(f));
+        family->setCurrentIndex(index);
+        emit family->activated(index);
+    };
+    window.setLinkMode(GrinderWindow::LinkMode::ZForm1); // its "Open: ... at N Bd." names the rate
+    const auto openedAt = [&window](const QString &rate) {
+        const bool ok = window.connectPort() && window.connectionText().contains(rate);
+        const QString text = window.connectionText();
+        window.disconnectPort();
+        return ok ? QString() : text;
+    };
+    choose(Family::Anc);
+    QCOMPARE(openedAt(QStringLiteral("4800 Bd")), QString());
+    choose(Family::K51);
+    QCOMPARE(openedAt(QStringLiteral("9600 Bd")), QString());
+}
+
 #include "grinderwindow_test.moc"

@@ -604,3 +604,24 @@ TEST(MachineCore, DenseRasterPlannedAtTheLinksPaceNeverRunsDry)
             EXPECT_EQ(sim.port.unit().position()[a], plan.program.commands.back().endSteps[a]);
     }
 }
+
+// Before IP64MPG v10 a GVE64 has no W (manual §14.1): homing is refused with the reason and
+// nothing reaches the wire; the unit's counters stay where they were.
+TEST(MachineCore, FirmwareBeforeV10RefusesHomingToASwitch)
+{
+    Sim sim(Variant::Gve64, {}, {}, false, "IP64 v9 1.2.2008");
+    sim.config.unit.firmwareVersion = 9;
+    sim.config.eeprom.mpg = machine::MpgMode::Off;
+    sim.config.eeprom.sync = false;
+    sim.core.setConfig(sim.config);
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    EXPECT_TRUE(sim.errors.empty()) << sim.lastLog();
+    EXPECT_FALSE(sim.core.state().features.switchHoming);
+    const auto refused = sim.core.home(sim.runner.now());
+    ASSERT_TRUE(refused);
+    EXPECT_NE(refused->message.find("has no W"), std::string::npos) << refused->message;
+    sim.runner.runFor(1.0);
+    for (const std::string &line : sim.log)
+        EXPECT_EQ(line.rfind("> !0W", 0), std::string::npos) << line;
+    EXPECT_FALSE(sim.core.state().homed);
+}
