@@ -625,3 +625,22 @@ TEST(MachineCore, FirmwareBeforeV10RefusesHomingToASwitch)
         EXPECT_EQ(line.rfind("> !0W", 0), std::string::npos) << line;
     EXPECT_FALSE(sim.core.state().homed);
 }
+
+// A GVE114 profile at 921 600 Bd needs the unit's EEPROM 0x0D = 01: connecting to a unit set
+// for the low range names the byte among the differences, and writing (asked) sets it.
+TEST(MachineCore, Gve114FastBaudRangeIsCheckedAndWrittenWhenAsked)
+{
+    Sim sim(Variant::Gve114);
+    sim.config.link.baud = 921600;
+    sim.core.setConfig(sim.config);
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    EXPECT_EQ(sim.port.unit().eepromByte(0x0D), 0xFF);
+    bool named = false;
+    for (const std::string &d : sim.core.state().eepromDifferences)
+        named = named || d.find("baud range") != std::string::npos;
+    EXPECT_TRUE(named) << sim.lastLog();
+    ASSERT_FALSE(sim.core.writeEeprom(sim.runner.now()));
+    sim.runner.runFor(2.0);
+    EXPECT_EQ(sim.port.unit().eepromByte(0x0D), 0x01);
+    EXPECT_TRUE(sim.errors.empty()) << sim.errors.front().message;
+}
