@@ -248,6 +248,7 @@ bool Parser::applyOperator(int op, double l, double r, double *out, std::size_t 
     return fail(ErrorCode::UnknownOperator, pos, {}, error);
 }
 
+// One branch per unary function of rs274ngc (abs, acos, ... exists): a table, kept whole.
 bool Parser::readUnary(double *value, Error *error)
 {
     const std::size_t start = m_pos;

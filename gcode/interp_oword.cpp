@@ -63,6 +63,8 @@ bool Interpreter::skipTo(const std::string &label, std::initializer_list<OKind> 
     return false;
 }
 
+// One case per O-word kind (sub, call, if, while, repeat, ...): a dispatch table, each case a few
+// lines, kept whole so that the control-flow words are read together.
 bool Interpreter::executeOword(Error *error)
 {
     const std::string label = m_block.oLabel;

@@ -26,6 +26,8 @@ std::string gName(int code10)
     return s;
 }
 
+// The modal group of each G code, and why an unsupported one is refused: one case per code, a
+// table as long as the list of G codes, kept whole so that a code is looked up in one place.
 int gGroup(int code10, bool *supported, const char **reason)
 {
     *supported = true;

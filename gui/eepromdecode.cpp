@@ -126,6 +126,7 @@ QString eepromLabel(protocol::Variant variant, std::uint8_t a)
     }
 }
 
+// One case per EEPROM address of §12: a table, kept whole so that it reads as the manual's.
 QString eepromMeaning(protocol::Variant variant, std::uint8_t a, double value)
 {
     const unsigned v = unsigned(std::lround(value)) & 0xFFFFFFFFu;

@@ -57,6 +57,7 @@ std::uint8_t mpgByte(MpgMode m)
 
 } // namespace
 
+// One line per EEPROM address, in the order of §12: a table, kept whole like the manual's.
 std::vector<EepromEntry> eepromEntries(const MachineConfig &c)
 {
     using K = EepromKind;

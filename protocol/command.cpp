@@ -299,6 +299,7 @@ char axisLetter(Axis axis)
     return "XYZA"[static_cast<int>(axis)];
 }
 
+// One case per command shape: a table, kept whole so that every wire form is read in one place.
 std::string encodeBody(const Command &c)
 {
     std::string s = "!";

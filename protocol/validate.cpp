@@ -134,6 +134,8 @@ CommandCheck checkHome(const Command &c, const VariantInfo &info, std::int64_t m
     return range(c, c.args[3], 10, maxRate, "speed off the switch");
 }
 
+// One case per command of §3-§13, each a line or two: longer than ~60 lines as a table is, and
+// clearer whole than split by an arbitrary group of commands.
 CommandCheck checkArgs(const Command &c, const VariantInfo &info, std::int64_t maxRate)
 {
     const bool fourAxes = info.axisCount == 4;

@@ -49,6 +49,43 @@ bool planFor(const QString &file, const QString &machinePath, const frezka::gcod
     return plan.ok();
 }
 
+// The summary `check` prints for a good program: lines, moves, bounds, lengths, naive time.
+QString summaryText(const QString &file, const frezka::gcode::Result &result, double rapid)
+{
+    using namespace frezka;
+    const gcode::Summary s = gcode::summarize(result.toolpath, rapid);
+    QString text;
+    const auto line = [&text](const QString &l) { text += l + QLatin1Char('\n'); };
+    line(QCoreApplication::translate("frezka::gcode", "%1: OK, %2 lines")
+             .arg(file)
+             .arg(result.linesRead));
+    line(QCoreApplication::translate("frezka::gcode",
+                                     "moves: %1 (rapid %2, feed %3, arc %4, probe %5), dwells: %6")
+             .arg(s.moves())
+             .arg(s.rapids)
+             .arg(s.feeds)
+             .arg(s.arcs)
+             .arg(s.probes)
+             .arg(s.dwells));
+    if (s.hasMotion) {
+        line(QCoreApplication::translate(
+                 "frezka::gcode",
+                 "bounds (machine, mm): X %1 .. %2, Y %3 .. %4, Z %5 .. %6, A %7 .. %8")
+                 .arg(mm(s.min.x), mm(s.max.x), mm(s.min.y), mm(s.max.y), mm(s.min.z), mm(s.max.z),
+                      mm(s.min.a), mm(s.max.a)));
+    }
+    line(QCoreApplication::translate("frezka::gcode", "length: rapid %1 mm, feed %2 mm")
+             .arg(mm(s.rapidLengthMm), mm(s.feedLengthMm)));
+    const auto seconds = static_cast<long long>(std::llround(s.timeSeconds));
+    line(QCoreApplication::translate("frezka::gcode",
+                                     "naive time: %1:%2:%3 (rapid %4 mm/min, no acceleration)")
+             .arg(seconds / 3600)
+             .arg((seconds / 60) % 60, 2, 10, QLatin1Char('0'))
+             .arg(seconds % 60, 2, 10, QLatin1Char('0'))
+             .arg(rapid));
+    return text;
+}
+
 int runCheck(const QStringList &args)
 {
     using namespace frezka;
@@ -84,37 +121,7 @@ int runCheck(const QStringList &args)
     }
     if (!machinePath.isEmpty() && !planFor(file, machinePath, result.toolpath))
         return 1;
-    const gcode::Summary s = gcode::summarize(result.toolpath, rapid);
-    QString text;
-    const auto line = [&text](const QString &l) { text += l + QLatin1Char('\n'); };
-    line(QCoreApplication::translate("frezka::gcode", "%1: OK, %2 lines")
-             .arg(file)
-             .arg(result.linesRead));
-    line(QCoreApplication::translate("frezka::gcode",
-                                     "moves: %1 (rapid %2, feed %3, arc %4, probe %5), dwells: %6")
-             .arg(s.moves())
-             .arg(s.rapids)
-             .arg(s.feeds)
-             .arg(s.arcs)
-             .arg(s.probes)
-             .arg(s.dwells));
-    if (s.hasMotion) {
-        line(QCoreApplication::translate(
-                 "frezka::gcode",
-                 "bounds (machine, mm): X %1 .. %2, Y %3 .. %4, Z %5 .. %6, A %7 .. %8")
-                 .arg(mm(s.min.x), mm(s.max.x), mm(s.min.y), mm(s.max.y), mm(s.min.z), mm(s.max.z),
-                      mm(s.min.a), mm(s.max.a)));
-    }
-    line(QCoreApplication::translate("frezka::gcode", "length: rapid %1 mm, feed %2 mm")
-             .arg(mm(s.rapidLengthMm), mm(s.feedLengthMm)));
-    const auto seconds = static_cast<long long>(std::llround(s.timeSeconds));
-    line(QCoreApplication::translate("frezka::gcode",
-                                     "naive time: %1:%2:%3 (rapid %4 mm/min, no acceleration)")
-             .arg(seconds / 3600)
-             .arg((seconds / 60) % 60, 2, 10, QLatin1Char('0'))
-             .arg(seconds % 60, 2, 10, QLatin1Char('0'))
-             .arg(rapid));
-    cli::out(text);
+    cli::out(summaryText(file, result, rapid));
     return 0;
 }
 

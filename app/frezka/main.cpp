@@ -42,6 +42,8 @@ void runForScreenshot(frezka::gui::MainWindow &window, int ms, const std::functi
 
 } // namespace
 
+// The start-up sequence read top to bottom: language, options, window, emulator or port. Long
+// as a script is; each step is a call, and splitting it would scatter the order that matters.
 int main(int argc, char **argv)
 {
     QApplication app(argc, argv);

@@ -90,6 +90,8 @@ QString emuHelpText()
         "  --help              this text\n");
 }
 
+// One branch per option of the usage text above, in its order: long as the list is, kept whole
+// so that the usage and the parser are read side by side.
 bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &error)
 {
     using protocol::variantInfo;
