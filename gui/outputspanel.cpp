@@ -1,5 +1,7 @@
 #include "outputspanel.h"
 
+#include "driver/link/machinestate.h"
+
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QGridLayout>
@@ -42,7 +44,7 @@ OutputsPanel::OutputsPanel(QWidget *parent)
     m_feedLabel = new QLabel(this);
     m_feed = new QSlider(Qt::Horizontal, this);
     m_feed->setObjectName(QStringLiteral("feedOverride"));
-    m_feed->setRange(10, 200);
+    m_feed->setRange(driver::kOverrideMinPercent, driver::kOverrideMaxPercent);
     m_feed->setValue(100);
     m_feed->setPageStep(10);
     m_feedValue = new QLabel(QStringLiteral("100 %"), this);

@@ -1,5 +1,8 @@
 #include "machine/unitwire.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace frezka::machine {
 
 namespace {
@@ -83,6 +86,20 @@ std::string commandText(const UnitCommand &c, int axisCount)
         break;
     }
     return "# ?";
+}
+
+std::array<std::int64_t, 4> axisSpeedLimits(const MachineConfig &config)
+{
+    std::array<std::int64_t, 4> limits{};
+    const auto rate = static_cast<std::int64_t>(config.unit.maxPulseRate);
+    for (std::size_t i = 0; i < limits.size(); ++i) {
+        const AxisConfig &a = config.axes[i];
+        const double pulses = a.maxSpeedMmPerMin / 60.0 * a.stepsPerMm;
+        limits[i] = a.present ? std::clamp(static_cast<std::int64_t>(std::floor(pulses)),
+                                           std::int64_t{10}, rate)
+                              : rate;
+    }
+    return limits;
 }
 
 } // namespace frezka::machine

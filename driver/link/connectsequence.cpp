@@ -15,6 +15,7 @@
 #include "driver/link/corehost.h"
 #include "driver/link/eepromsync.h"
 #include "driver/link/job.h"
+#include "machine/unitwire.h"
 
 #include <algorithm>
 
@@ -114,8 +115,14 @@ void ConnectSequence::setupAfterIdentify()
         state().mpgOn = false;
     }
     m_host.send(cmd::pause(std::clamp(m_host.config().motion.pauseMs, 1, 24)), check("setting T"));
-    if (state().features.vlVkXmNa)
+    if (state().features.vlVkXmNa) {
         m_host.send(cmd::speedModeVn(), check("setting VN"));
+        // VL from the profile's axis maxima: the feed override (XM) is capped per axis by them.
+        const auto vl = machine::axisSpeedLimits(m_host.config());
+        m_host.send(state().axisCount == 4 ? cmd::velocityLimit(vl[0], vl[1], vl[2], vl[3])
+                                           : cmd::velocityLimit(vl[0], vl[1], vl[2]),
+                    check("setting the axis speed limits (VL)"));
+    }
     const machine::EepromConfig &ee = m_host.config().eeprom;
     m_host.send(cmd::statusWrite(0, ee.interruptEnable), check("setting the interrupt mask"));
     m_host.send(cmd::statusWrite(2, ee.polarity), check("setting the input polarity"));

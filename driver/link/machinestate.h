@@ -16,6 +16,10 @@
 
 namespace frezka::driver {
 
+// The feed override's range, percent (XM): the GUI's slider and the ± steps stay within it.
+inline constexpr int kOverrideMinPercent = 10;
+inline constexpr int kOverrideMaxPercent = 200;
+
 // The operations state machine (issue 5 item 4). Exactly one at a time.
 enum class MachineMode : std::uint8_t {
     Disconnected, // no port open

@@ -95,6 +95,13 @@ std::optional<MachineError> UnitControls::setOverride(int percent)
 
 std::optional<MachineError> UnitControls::overrideStep(bool up)
 {
+    // With XM the step is a new multiplier, exact, for the queued vectors and every one streamed
+    // after; XU/XD (units without XM) change only the queued vectors' speeds.
+    if (state().features.vlVkXmNa) {
+        const double next = state().overridePercent * (up ? 17.0 : 15.0) / 16.0;
+        return setOverride(std::clamp(static_cast<int>(std::lround(next)), kOverrideMinPercent,
+                                      kOverrideMaxPercent));
+    }
     m_host.send(up ? cmd::exchangeUp() : cmd::exchangeDown(), [this, up](const Outcome &o) {
         if (m_host.unitError(o, up ? "raising queued speeds (XU)" : "lowering queued speeds (XD)",
                              MachineMode::Alarm))

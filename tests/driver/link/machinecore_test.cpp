@@ -5,6 +5,7 @@
 #include "gcode/interpreter.h"
 #include "gcode/toolpath.h"
 #include "machine/planner.h"
+#include "machine/unitwire.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -643,4 +644,53 @@ TEST(MachineCore, Gve114FastBaudRangeIsCheckedAndWrittenWhenAsked)
     sim.runner.runFor(2.0);
     EXPECT_EQ(sim.port.unit().eepromByte(0x0D), 0x01);
     EXPECT_TRUE(sim.errors.empty()) << sim.errors.front().message;
+}
+
+// Connecting sets VL from the profile's axis maxima, so that the feed override at its top
+// (XM200) drives no axis over its maximum: X is sampled every 10 ms of the emulator's time.
+TEST(MachineCore, FeedOverrideIsCappedByTheAxisMaxima)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    const auto vl = machine::axisSpeedLimits(sim.config); // X 4000 mm/min x 200 steps/mm
+    EXPECT_EQ(vl[0], 13333);
+    bool sawVl = false;
+    for (const std::string &line : sim.log)
+        sawVl = sawVl || line == "> !0VL13333,13333,6666,50000";
+    EXPECT_TRUE(sawVl) << sim.lastLog(80);
+    ASSERT_FALSE(sim.core.setOverride(kOverrideMaxPercent, sim.runner.now()));
+    const auto program = denseProgram(30, 3, 13000, 13000, 4000);
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    double peak = 0;
+    auto last = sim.port.unit().position()[0];
+    while (sim.finished.empty() && sim.runner.now() < 120) {
+        sim.runner.runFor(0.01);
+        const auto x = sim.port.unit().position()[0];
+        peak = std::max(peak, std::abs(double(x - last)) / 0.01);
+        last = x;
+    }
+    ASSERT_FALSE(sim.finished.empty()) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front()) << sim.lastLog();
+    EXPECT_GT(peak, 10000.0) << "the job ran at speed";
+    EXPECT_LE(peak, vl[0] * 1.02) << "X over its maximum with XM" << kOverrideMaxPercent;
+    EXPECT_EQ(sim.port.unit().position()[0], program.commands.back().endSteps[0]);
+}
+
+// With XM the ± steps are exact multipliers (1/16 each way) that stay within the slider's range.
+TEST(MachineCore, OverrideStepsAreExactXmMultipliers)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    for (int i = 0; i < 20; ++i) {
+        ASSERT_FALSE(sim.core.overrideStep(true, sim.runner.now()));
+        sim.runner.runFor(0.1);
+    }
+    EXPECT_EQ(sim.core.state().overridePercent, kOverrideMaxPercent);
+    bool sawXm = false, sawXu = false;
+    for (const std::string &line : sim.log) {
+        sawXm = sawXm || line == "> !0XM200";
+        sawXu = sawXu || line == "> !0XU";
+    }
+    EXPECT_TRUE(sawXm) << sim.lastLog(60);
+    EXPECT_FALSE(sawXu) << "XU changes only the queued vectors";
 }
