@@ -15,6 +15,8 @@ MachineCore::MachineCore(machine::MachineConfig config, CoreOptions options)
     , m_options(options)
     , m_engine(options.link)
 {
+    if (m_options.link.baud <= 0)
+        m_engine.setBaud(m_config.link.baud);
     m_engine.onOutcome = [this](const Outcome &o) { onOutcome(o); };
     m_engine.onLog = [this](LinkLogKind kind, const std::string &text) {
         static constexpr const char *kPrefix[] = {"> ", "< ", "? ", "! ", "!! "};

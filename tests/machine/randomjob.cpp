@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 
 namespace frezka::machine::test {
@@ -378,6 +379,10 @@ JobOutcome runJob(const RandomJob &job)
     std::vector<bool> finished;
     std::string firstError;
     core.onJobFinished = [&](bool ok) { finished.push_back(ok); };
+    if (std::getenv("FREZKA_PROPERTY_TRACE")) // the link log with virtual times, to stderr
+        core.onLog = [&port](const std::string &text) {
+            std::fprintf(stderr, "%.6f %s\n", port.now(), text.c_str());
+        };
     core.onError = [&](const driver::MachineError &e) {
         if (firstError.empty())
             firstError = e.message + " [" + e.command + "] -> '" + e.reply + "'";
