@@ -422,6 +422,14 @@ JobOutcome runJob(const RandomJob &job)
     o.exact = true;
     for (int i = 0; i < 4; ++i)
         o.exact = o.exact && pos[i] == end[i];
+    if (std::getenv("FREZKA_PROPERTY_TRACE")) {
+        for (const emulator::TracePoint &t : port.unit().trace()) // where the machine stood
+            if (t.pathSpeedPulsesPerS == 0)
+                std::fprintf(stderr, "%.6f unit at rest at %lld,%lld,%lld\n", t.timeS,
+                             static_cast<long long>(t.position[0]),
+                             static_cast<long long>(t.position[1]),
+                             static_cast<long long>(t.position[2]));
+    }
     const JumpFigures jumps = measureJumps(port.unit().trace(), p.program, job.config);
     o.jumpOverLimit = jumps.overLimit;
     o.maxJumpRatio = jumps.maxRatio;
