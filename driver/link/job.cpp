@@ -479,6 +479,19 @@ void Job::positionRead()
     m_cursor.execAt = m_host.now();
 }
 
+// F answered RUN = 0: the unit's queue is empty, so every command accepted before F was sent
+// (all of them: one transaction at a time) has run. The counters alone cannot always tell: where
+// the path comes back over itself, a standing position may lie inside the box of an earlier,
+// longer vector, and the executing command read from it would stay there for good; the job
+// would then take the unit's queue for full for ever and never send again.
+void Job::unitStands()
+{
+    if (m_cursor.exec >= m_cursor.next)
+        return;
+    m_cursor.exec = m_cursor.next;
+    m_cursor.execAt = m_host.now();
+}
+
 void Job::linkOpened()
 {
     if (m_active)

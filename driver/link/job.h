@@ -54,6 +54,7 @@ public:
     const machine::UnitProgram &program() const { return m_program; }
     void pollStarted(double now);        // counts the job's polls
     void positionRead();                 // the executing command from the new counters
+    void unitStands();                   // F read RUN = 0: everything accepted has run
     void checkPolledPosition(bool kept); // the path guard's check of a poll
     void linkOpened();                   // a wait in progress is taken up again
     void linkLost();                     // progress must be re-established afterwards

@@ -43,7 +43,9 @@ bool advancesIndex(Op op)
 
 LinkEngine::LinkEngine(LinkOptions options)
     : m_options(options)
-{}
+{
+    setBaud(options.baud);
+}
 
 bool LinkEngine::exact() const
 {

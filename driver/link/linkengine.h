@@ -40,10 +40,15 @@
 namespace frezka::driver {
 
 inline constexpr double kNoDeadline = std::numeric_limits<double>::infinity();
+inline constexpr int kDefaultBaud = 115200;
 
 struct LinkOptions
 {
-    int baud = 115200;          // for transmit-time allowances in timeouts
+    // The line's rate, for the transmit-time allowances in timeouts: a packet of 400 vectors
+    // takes 0.5 s at 115 200 Bd and 3 s at 19 200 Bd, and a timeout that fires while it is still
+    // on the wire sends '@' into it. 0 = not given: MachineCore takes the machine profile's
+    // link.baud, the engine alone kDefaultBaud.
+    int baud = 0;
     double replyTimeoutS = 0.2; // beyond the command's and reply's transmit time
     double haltTimeoutS = 60;   // H replies only when the machine has stopped
     double homeTimeoutS = 600;  // W replies only when homing has finished
@@ -121,6 +126,8 @@ public:
     // successful %+ / %- by itself).
     void setChecksums(bool on) { m_checksums = on; }
     void setDoublePacketStart(bool on) { m_options.doublePacketStart = on; }
+    // The line's rate (a machine profile changed while connected); 0 = kDefaultBaud.
+    void setBaud(int baud) { m_options.baud = baud > 0 ? baud : kDefaultBaud; }
     std::optional<int> unitIndex() const { return m_index; }
     const LinkStats &stats() const { return m_stats; }
     const LinkOptions &options() const { return m_options; }

@@ -15,6 +15,8 @@ MachineCore::MachineCore(machine::MachineConfig config, CoreOptions options)
     , m_options(options)
     , m_engine(options.link)
 {
+    if (m_options.link.baud <= 0)
+        m_engine.setBaud(m_config.link.baud);
     m_engine.onOutcome = [this](const Outcome &o) { onOutcome(o); };
     m_engine.onLog = [this](LinkLogKind kind, const std::string &text) {
         static constexpr const char *kPrefix[] = {"> ", "< ", "? ", "! ", "!! "};
@@ -224,6 +226,8 @@ void MachineCore::applyFlags(std::uint8_t flags)
     m_state.inta = (flags & 0x80) != 0;
     m_state.queueFull = (flags & 0x20) != 0;
     m_dirty = true;
+    if (m_job.active() && !m_state.run)
+        m_job.unitStands();
     if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running && !m_haltExpected)
         m_hold.interrupted();
     if (m_state.inta && !wasInta &&

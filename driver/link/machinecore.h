@@ -118,6 +118,8 @@ public:
     void setConfig(machine::MachineConfig config)
     {
         m_config = std::move(config);
+        if (m_options.link.baud <= 0)
+            m_engine.setBaud(m_config.link.baud);
         if (!m_job.active())
             m_state.axisCount = machine::wireAxisCount(m_config);
     }

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 
 namespace frezka::machine::test {
@@ -378,6 +379,10 @@ JobOutcome runJob(const RandomJob &job)
     std::vector<bool> finished;
     std::string firstError;
     core.onJobFinished = [&](bool ok) { finished.push_back(ok); };
+    if (std::getenv("FREZKA_PROPERTY_TRACE")) // the link log with virtual times, to stderr
+        core.onLog = [&port](const std::string &text) {
+            std::fprintf(stderr, "%.6f %s\n", port.now(), text.c_str());
+        };
     core.onError = [&](const driver::MachineError &e) {
         if (firstError.empty())
             firstError = e.message + " [" + e.command + "] -> '" + e.reply + "'";
@@ -417,6 +422,14 @@ JobOutcome runJob(const RandomJob &job)
     o.exact = true;
     for (int i = 0; i < 4; ++i)
         o.exact = o.exact && pos[i] == end[i];
+    if (std::getenv("FREZKA_PROPERTY_TRACE")) {
+        for (const emulator::TracePoint &t : port.unit().trace()) // where the machine stood
+            if (t.pathSpeedPulsesPerS == 0)
+                std::fprintf(stderr, "%.6f unit at rest at %lld,%lld,%lld\n", t.timeS,
+                             static_cast<long long>(t.position[0]),
+                             static_cast<long long>(t.position[1]),
+                             static_cast<long long>(t.position[2]));
+    }
     const JumpFigures jumps = measureJumps(port.unit().trace(), p.program, job.config);
     o.jumpOverLimit = jumps.overLimit;
     o.maxJumpRatio = jumps.maxRatio;

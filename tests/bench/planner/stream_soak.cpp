@@ -6,24 +6,64 @@
 // links, the wire spent on resends on faulty ones.
 //
 //   stream_soak [CASES (default 3000)] [FIRST_SEED (default 1)] [MAX_LINES (default 1200)]
-//   STREAM_SOAK_VERBOSE=1 also lists every case off the link's pace.
+//   stream_soak --one PROGRAM.nc PROFILE.json   one given job (the profile's baud, latency,
+//                                                packets) on a clean link
+//   STREAM_SOAK_VERBOSE=1 also lists every case off the link's pace (else only those that
+//   stopped with an error on a clean link, which it must never do).
 #include "randomjob.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 using namespace frezka::machine::test;
 
+namespace {
+
+// One given program on one given profile (its link.baud, link.latencyMs and link.packets), on a
+// clean link: the judge's verdict (FREZKA_PROPERTY_TRACE=1 adds the link log).
+int runOne(const char *programPath, const char *profilePath)
+{
+    RandomJob job;
+    const auto loaded = frezka::machine::loadMachineConfig(profilePath);
+    if (!loaded.config) {
+        std::fprintf(stderr, "cannot load %s\n", profilePath);
+        return 2;
+    }
+    job.config = *loaded.config;
+    job.wire.baud = job.config.link.baud;
+    job.wire.latencyS = job.config.link.latencyMs / 1000.0;
+    std::ifstream in(programPath);
+    job.program.assign(std::istreambuf_iterator<char>(in), {});
+    const JobOutcome o = runJob(job);
+    std::printf("job %.3f s, estimate %.3f s, bound %.3f s, vectors %lld, starvation stops %lld, "
+                "brake violations %lld, exact %d\n",
+                o.jobS, o.stats.estimatedS, o.stats.boundS,
+                static_cast<long long>(o.vectorsPlanned), static_cast<long long>(o.starvationStops),
+                static_cast<long long>(o.brakeViolations), o.exact ? 1 : 0);
+    for (const std::string &f : o.wrong)
+        std::printf("  wrong: %s\n", f.c_str());
+    for (const std::string &f : o.pace)
+        std::printf("  pace: %s\n", f.c_str());
+    return o.wrong.empty() ? 0 : 1;
+}
+
+} // namespace
+
 int main(int argc, char **argv)
 {
+    if (argc == 4 && std::string(argv[1]) == "--one")
+        return runOne(argv[2], argv[3]);
     const long cases = argc > 1 ? std::atol(argv[1]) : 3000;
     const long first = argc > 2 ? std::atol(argv[2]) : 1;
     const int maxLines = argc > 3 ? std::atoi(argv[3]) : 1200;
     const bool verbose = std::getenv("STREAM_SOAK_VERBOSE") != nullptr;
     long offPace = 0, starvedCases = 0, brakeCases = 0, starved = 0, estimateOff = 0;
-    long failed = 0, clean = 0, faulty = 0, pathFaults = 0, packetsOff = 0;
+    long failed = 0, clean = 0, faulty = 0, pathFaults = 0, packetsOff = 0, cleanStopped = 0;
     double worstBoundRatio = 0, worstClean = 0, sumClean = 0, worstResend = 0, sumResend = 0;
     double virtualS = 0;
     long vectors = 0;
@@ -41,6 +81,14 @@ int main(int argc, char **argv)
         }
         if (!o.pace.empty()) {
             ++offPace;
+            const bool stopped = std::any_of(o.pace.begin(), o.pace.end(), [](const auto &p) {
+                return p.starts_with("clean link: the job did not finish");
+            });
+            cleanStopped += stopped ? 1 : 0;
+            if (stopped && !verbose)
+                std::printf("STOPPED seed %llu: %s\n  - %s\n",
+                            static_cast<unsigned long long>(seed), job.summary.c_str(),
+                            o.pace.front().c_str());
             starvedCases += o.starvationStops > 0 ? 1 : 0;
             starved += o.starvationStops;
             brakeCases += o.brakeViolations > 0 ? 1 : 0;
@@ -82,6 +130,7 @@ int main(int argc, char **argv)
     std::printf("  with starvation stops                      %ld (%ld stops)\n", starvedCases,
                 starved);
     std::printf("  with brake violations on the unit          %ld\n", brakeCases);
+    std::printf("  clean links, job stopped with an error     %ld\n", cleanStopped);
     std::printf("  clean links, job more than 2 %% off the estimate %ld\n", estimateOff);
     std::printf("vectors streamed                %ld (%.0f s of virtual job time)\n", vectors,
                 virtualS);
