@@ -33,6 +33,33 @@ const char *machineModeName(MachineMode mode)
     return "?";
 }
 
+void noteOutputsAccepted(MachineState &state, const protocol::Command &c, double maxRpm,
+                         std::uint8_t relayBit)
+{
+    using protocol::Op;
+    if (c.op == Op::SpindleSpeed && c.address == 7) {
+        state.spindlePermille = static_cast<int>(c.args[0]);
+        state.spindleRpm = maxRpm * static_cast<double>(c.args[0]) / 1000.0;
+        state.outputs =
+            static_cast<std::uint8_t>(c.args[0] > 0 ? state.outputs & 0xFE : state.outputs | 0x01);
+        state.spindleOn = c.args[0] > 0;
+        return;
+    }
+    if (c.op != Op::Output)
+        return;
+    state.outputs = static_cast<std::uint8_t>(c.args[0]);
+    if (state.variant == protocol::Variant::Gve84) {
+        state.spindleOn = relayBit != 0 && !(state.outputs & relayBit);
+        if (!state.spindleOn) {
+            state.spindlePermille = 0;
+            state.spindleRpm = 0;
+        }
+    } else {
+        // OUT0 switches the spindle's power; its speed stays the last !7V.
+        state.spindleOn = state.spindlePermille > 0 && !(state.outputs & 0x01);
+    }
+}
+
 const char *machineActivityName(MachineActivity activity)
 {
     switch (activity) {
