@@ -16,9 +16,14 @@ bool SafetyWatch::atSpeed(double now) const
 
 bool SafetyWatch::intoWork(const Steps &from, const Steps &to) const
 {
-    if (m_model.hasWorkSurface)
-        return std::min(from[2], to[2]) <= m_model.workSurfaceZSteps;
-    return to[2] < from[2];
+    const bool down = to[2] < from[2];
+    if (!m_model.hasWorkSurface)
+        return down;
+    // Z straight up leaves the work (a retract); down to the surface or any move across at or
+    // below it is a cut.
+    const bool across = from[0] != to[0] || from[1] != to[1] || from[3] != to[3];
+    const bool atOrBelow = std::min(from[2], to[2]) <= m_model.workSurfaceZSteps;
+    return atOrBelow && (down || across);
 }
 
 void SafetyWatch::spindle(bool on, double now, bool cutting)
