@@ -70,15 +70,15 @@ std::optional<MachineError> Hold::resume()
         }
         goOn();
     };
-    if (!m_spindle.stopped()) {
-        proceed();
-        return std::nullopt;
-    }
     // The spindle (and coolant) first, at speed before the tool moves in the work again.
     m_resuming = true;
-    state().holdText = "the spindle starts; the job continues after its spin-up";
-    m_host.markDirty();
-    m_spindle.restore(proceed);
+    if (m_spindle.stopped()) {
+        state().holdText = "the spindle starts; the job continues after its spin-up";
+        m_host.markDirty();
+        m_spindle.restore(proceed);
+    } else {
+        m_spindle.whenAtSpeed(proceed); // at once unless a spin-up is under way
+    }
     return std::nullopt;
 }
 

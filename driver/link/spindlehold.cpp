@@ -75,6 +75,7 @@ void SpindleHold::restore(std::function<void()> then)
     const int permille = m_permille;
     const std::uint8_t port = m_port;
     m_stopped = false;
+    m_starting = true;
     const std::string what = "switching the spindle and coolant on again";
     if (permille > 0) {
         m_host.send(cmd::spindle(permille), [this, what](const Outcome &o) {
@@ -95,19 +96,39 @@ void SpindleHold::restore(std::function<void()> then)
             return;
         m_host.liveState().outputsHeld = false;
         m_host.markDirty();
+        if (then)
+            m_waiters.insert(m_waiters.begin(), std::move(then));
         if (wait > 0) {
             m_host.log("waiting " + std::to_string(static_cast<int>(wait * 1000)) +
                        " ms for the spindle to reach its speed (spindle.spinUpMs)");
-            m_host.afterDelay(wait, then ? std::move(then) : std::function<void()>([] {}));
-        } else if (then) {
-            then();
+            m_host.afterDelay(wait, [this] { atSpeed(); });
+        } else {
+            atSpeed();
         }
     });
 }
 
+void SpindleHold::atSpeed()
+{
+    m_starting = false;
+    auto waiters = std::move(m_waiters);
+    m_waiters.clear();
+    for (auto &w : waiters)
+        w();
+}
+
+void SpindleHold::whenAtSpeed(std::function<void()> then)
+{
+    if (m_starting)
+        m_waiters.push_back(std::move(then));
+    else if (then)
+        then();
+}
+
 void SpindleHold::forget()
 {
-    m_stopped = false;
+    m_stopped = m_starting = false;
+    m_waiters.clear();
     m_host.liveState().outputsHeld = false;
     m_host.markDirty();
 }

@@ -6,12 +6,14 @@
 // remembers what was on; nothing is sent for what is already off. restore(then) queues them back
 // on as they were and, when the spindle was started again, waits the profile's spindle.spinUpMs
 // before `then` — the motion back into the work (lowering Z, G); without a stop before, `then`
-// runs at once. forget() drops what would be restored (the job ended: abort). The operator's word
+// runs at once; whenAtSpeed() waits for a spin-up under way. forget() drops what would be
+// restored and the waits (the job ended: abort). The operator's word
 // thus holds on the wire, and MachineState::outputsHeld tells the screen that the outputs are
 // off for the hold and go on again first. The only fields are what stop() switched off.
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace frezka::driver {
 
@@ -28,6 +30,8 @@ public:
     void stop(const char *why);
     // Back on as they were, the spin-up waited, then `then` (may be empty).
     void restore(std::function<void()> then);
+    // `then` once a spindle that restore() started is at speed (at once when none is starting).
+    void whenAtSpeed(std::function<void()> then);
     // Forget what was on: the job ended, nothing goes on again.
     void forget();
     // Whether stop() switched something off that restore() switches on again.
@@ -39,8 +43,12 @@ private:
     std::uint8_t coolantBits() const; // port-0 bits of coolant, mist and air blow (active low)
     std::uint8_t relayBit() const;    // GVE84: the bit that switches the spindle, else 0
 
+    void atSpeed(); // the spin-up is over: the waiters go on
+
     CoreHost &m_host;
     bool m_stopped = false;
+    bool m_starting = false;                        // restore() sent, its spin-up not yet over
+    std::vector<std::function<void()>> m_waiters{}; // whenAtSpeed() meanwhile
     int m_permille = 0;         // the spindle's !7V before the stop (0: it was off)
     std::uint8_t m_port = 0xFF; // port 0 before the stop
 };

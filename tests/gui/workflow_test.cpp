@@ -20,6 +20,7 @@
 #include "driver/link/machinecontroller.h"
 #include "session/runworkflow.h"
 
+#include <QCheckBox>
 #include <QDir>
 #include <QLabel>
 #include <QProcess>
@@ -277,6 +278,16 @@ M30
                     ->findChild<QLabel *>(QStringLiteral("holdSpindle"))
                     ->text()
                     .contains(QStringLiteral("off for the hold")));
+        // Unticking the box switches them on again at once, ticking it off again.
+        auto *box =
+            m_window->holdBanner()->findChild<QCheckBox *>(QStringLiteral("holdStopSpindle"));
+        QVERIFY(box && box->isChecked());
+        box->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().spindleOn && (state().outputs & coolant) == 0,
+                                 kMachineTimeoutMs);
+        QTRY_VERIFY(m_window->ioPanel()->outputLed(0));
+        box->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!state().spindleOn && state().outputsHeld, kMachineTimeoutMs);
         button(m_window->holdBanner(), "holdContinue")->click();
         QTRY_VERIFY_WITH_TIMEOUT(state().spindleOn, kMachineTimeoutMs);
         QVERIFY(finished.wait(kMachineTimeoutMs));
