@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 #include <variant>
 
 namespace frezka::driver {
@@ -138,16 +137,8 @@ void MachineCore::onOutcome(const Outcome &o)
         (o.commands.front().op == Op::Halt || o.commands.front().op == Op::Home))
         m_haltPending = false;
     // What the unit drives now, whoever sent it (job, buttons, console, holds): issue 14.
-    if (o.status == OutcomeStatus::Ok && o.reply.ok() && !o.packet && !o.commands.empty()) {
-        const auto was =
-            std::make_tuple(m_state.outputs, m_state.spindlePermille, m_state.spindleOn);
-        noteOutputsAccepted(m_state, o.commands.front(), m_config.spindle.maxRpm,
-                            variantInfo(m_config.unit.variant).hasSpindleAddress7
-                                ? 0
-                                : machine::outputBit(m_config, machine::OutputFunction::Spindle));
-        m_dirty = m_dirty || was != std::make_tuple(m_state.outputs, m_state.spindlePermille,
-                                                    m_state.spindleOn);
-    }
+    if (o.status == OutcomeStatus::Ok && o.reply.ok() && !o.packet && !o.commands.empty())
+        m_dirty = noteOutputsAccepted(m_state, o.commands.front(), m_config) || m_dirty;
     Then then = std::move(m_inFlight);
     m_inFlight = nullptr;
     if (then)
@@ -210,12 +201,7 @@ void MachineCore::afterDelay(double seconds, std::function<void()> then)
 
 void MachineCore::heldAtOperatorStop(machine::StopReason reason)
 {
-    const bool stop = reason == machine::StopReason::ToolChange
-                          ? m_config.spindle.stopAtToolChange
-                          : m_config.spindle.stopAtProgramStop;
-    if (stop)
-        m_spindle.stop(reason == machine::StopReason::ToolChange ? "M6: tool change"
-                                                                 : "M0/M1: program stop");
+    m_spindle.atOperatorStop(reason);
 }
 
 void MachineCore::pump(double now)

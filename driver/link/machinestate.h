@@ -6,6 +6,7 @@
 // unit's counters) and in mm (steps / steps-per-mm of the profile; A in degrees).
 
 #include "driver/link/linkengine.h"
+#include "machine/machineconfig.h"
 #include "protocol/variant.h"
 
 #include <array>
@@ -59,10 +60,10 @@ const char *machineActivityName(MachineActivity activity);
 
 struct MachineState;
 // The unit accepted `c`: the spindle and port 0 as it drives them now (docs/gve-protocol.md §9:
-// !7V0 also switches OUT0 off, !7V1..1000 on). relayBit: the port-0 bit that switches the spindle
-// on a GVE84 (0 when no output does, and on units with address 7). Other commands change nothing.
-void noteOutputsAccepted(MachineState &state, const protocol::Command &c, double maxRpm,
-                         std::uint8_t relayBit);
+// !7V0 also switches OUT0 off, !7V1..1000 on; a GVE84 switches its spindle with the profile's
+// relay on port 0). Other commands change nothing. True when something changed.
+bool noteOutputsAccepted(MachineState &state, const protocol::Command &c,
+                         const machine::MachineConfig &config);
 
 // Why a job is held (mode Paused / ToolLifted).
 enum class HoldReason : std::uint8_t {

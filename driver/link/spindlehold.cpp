@@ -64,6 +64,14 @@ void SpindleHold::stop(const char *why)
     }
 }
 
+void SpindleHold::atOperatorStop(machine::StopReason reason)
+{
+    const machine::SpindleConfig &c = m_host.config().spindle;
+    const bool toolChange = reason == machine::StopReason::ToolChange;
+    if (toolChange ? c.stopAtToolChange : c.stopAtProgramStop)
+        stop(toolChange ? "M6: tool change" : "M0/M1: program stop");
+}
+
 void SpindleHold::restore(std::function<void()> then)
 {
     if (!m_stopped) {

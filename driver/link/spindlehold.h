@@ -11,6 +11,8 @@
 // thus holds on the wire, and MachineState::outputsHeld tells the screen that the outputs are
 // off for the hold and go on again first. The only fields are what stop() switched off.
 
+#include "machine/unitprogram.h"
+
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -28,6 +30,8 @@ public:
 
     // Switches the spindle and coolant off (why: for messages, "pausing"). Idempotent.
     void stop(const char *why);
+    // The job holds at M0/M1/M6: stop() when the profile says so (spindle.stopAt...).
+    void atOperatorStop(machine::StopReason reason);
     // Back on as they were, the spin-up waited, then `then` (may be empty).
     void restore(std::function<void()> then);
     // `then` once a spindle that restore() started is at speed (at once when none is starting).
