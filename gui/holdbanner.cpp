@@ -25,8 +25,13 @@ HoldBanner::HoldBanner(QWidget *parent)
     m_text = new QLabel(this);
     m_text->setObjectName(QStringLiteral("holdText"));
     m_text->setWordWrap(true);
+    m_spindle = new QLabel(this);
+    m_spindle->setObjectName(QStringLiteral("holdSpindle"));
+    m_spindle->setWordWrap(true);
     m_stopSpindle = new QCheckBox(this);
+    m_stopSpindle->setObjectName(QStringLiteral("holdStopSpindle"));
     m_stopSpindle->setChecked(true);
+    connect(m_stopSpindle, &QCheckBox::clicked, this, &HoldBanner::spindleHoldRequested);
     m_feedLabel = new QLabel(this);
     m_feed = new QDoubleSpinBox(this);
     m_feed->setObjectName(QStringLiteral("holdNewFeed"));
@@ -63,6 +68,7 @@ HoldBanner::HoldBanner(QWidget *parent)
     layout->setContentsMargins(8, 6, 8, 6);
     layout->addWidget(m_title);
     layout->addWidget(m_text);
+    layout->addWidget(m_spindle);
     layout->addLayout(buttons);
     showHold(Kind::None, 0, QString());
 }
@@ -95,6 +101,21 @@ bool HoldBanner::stopSpindleOnLift() const
     return m_stopSpindle->isChecked();
 }
 
+void HoldBanner::setOutputs(bool spindleOn, bool heldOff, double spinUpS)
+{
+    if (spindleOn == m_spindleOn && heldOff == m_heldOff && spinUpS == m_spinUpS)
+        return;
+    m_spindleOn = spindleOn;
+    m_heldOff = heldOff;
+    m_spinUpS = spinUpS;
+    retranslate();
+}
+
+void HoldBanner::setStopSpindle(bool on)
+{
+    m_stopSpindle->setChecked(on);
+}
+
 double HoldBanner::newFeedMmPerMin() const
 {
     return m_feed->value();
@@ -121,7 +142,8 @@ void HoldBanner::retranslate()
     case Kind::Paused:
         m_title->setText(tr("Paused %1").arg(where));
         m_text->setText(tr("The machine has stopped along its ramp and keeps the rest of the job. "
-                           "Continue, or lift the tool to change or clean it."));
+                           "Continue, or lift the tool to change or clean it (the spindle and "
+                           "coolant go off for a lifted tool)."));
         break;
     case Kind::OperatorStop:
         m_title->setText(tr("Program stop %1").arg(where));
@@ -147,12 +169,29 @@ void HoldBanner::retranslate()
         break;
     case Kind::ToolLifted:
         m_title->setText(tr("Tool lifted %1").arg(where));
-        m_text->setText(tr("Change or clean the tool. Then lower it: the spindle starts again if "
-                           "it was stopped, the tool goes back down to where it was, and the job "
-                           "continues — at a new feed if you enter one."));
+        m_text->setText(
+            tr("The spindle and coolant are off. Change, measure or clean the tool; you may jog "
+               "the machine away by steps. Lowering switches the spindle and coolant on again as "
+               "they were, waits %1 s for the spindle to reach its speed, returns exactly to where "
+               "the tool was lifted, lowers it into the work and continues — at a new feed if you "
+               "enter one. Abort ends the job here with the tool up.")
+                .arg(m_spinUpS, 0, 'f', 1));
         break;
     }
+    if (m_kind == Kind::None || m_kind == Kind::ToolLifted)
+        m_spindle->clear();
+    else if (m_heldOff)
+        m_spindle->setText(tr("The spindle and coolant are off for the hold. Continue switches "
+                              "them on again and waits %1 s for the spindle before the tool moves.")
+                               .arg(m_spinUpS, 0, 'f', 1));
+    else if (m_spindleOn)
+        m_spindle->setText(tr("The spindle is running."));
+    else
+        m_spindle->setText(tr("The spindle is off."));
     m_stopSpindle->setText(tr("Stop the spindle"));
+    m_stopSpindle->setToolTip(
+        tr("While the job is held: the spindle and coolant off (ticked) or on again (unticked). "
+           "Ticked, a pause stops them as soon as the machine stands."));
     m_feedLabel->setText(tr("New feed (0 = unchanged):"));
     m_continue->setText(tr("Continue"));
     m_lift->setText(tr("Lift tool"));

@@ -1,7 +1,10 @@
 #pragma once
 // HoldBanner: the guided step shown above the toolpath view while a job is held — a pause,
 // an M0/M1/M6 operator stop, an input interrupt — and the tool-lift workflow (lift, spindle
-// off, change or clean the tool, spindle on, lower, continue, optionally at a new speed).
+// off, change or clean the tool, jog it away and back, spindle on, lower, continue, optionally
+// at a new speed). Its "Stop the spindle" box is the operator's word for the spindle and coolant
+// while the job is held: ticking or unticking it asks for them off or on again at once
+// (spindleHoldRequested); what the unit really drives is shown in the text (setOutputs).
 // Never modal: the machine window stays usable and tests drive it by its buttons.
 
 #include <QFrame>
@@ -25,6 +28,9 @@ public:
     Kind kind() const { return m_kind; }
     QString text() const;
     bool stopSpindleOnLift() const;
+    // The unit's spindle as the driver knows it (on, or held off for the hold) and its spin-up.
+    void setOutputs(bool spindleOn, bool heldOff, double spinUpS);
+    void setStopSpindle(bool on); // the box, without a request
     // New feed for the rest of the job, mm/min; 0 = unchanged.
     double newFeedMmPerMin() const;
     void setNewFeedMmPerMin(double feed);
@@ -32,6 +38,8 @@ public:
 signals:
     void continueRequested();
     void liftRequested(bool stopSpindle);
+    // The box clicked: the spindle and coolant off (true) or on again (false) while held.
+    void spindleHoldRequested(bool stop);
     // Spindle back on (if it was stopped), lower the tool, continue (or stay paused).
     void lowerRequested(double newFeedMmPerMin, bool thenContinue);
     void abortRequested();
@@ -45,7 +53,10 @@ private:
     Kind m_kind = Kind::None;
     int m_line = 0;
     QString m_detail;
-    QLabel *m_title, *m_text, *m_feedLabel;
+    bool m_spindleOn = false;
+    bool m_heldOff = false;
+    double m_spinUpS = 0;
+    QLabel *m_title, *m_text, *m_spindle, *m_feedLabel;
     QCheckBox *m_stopSpindle;
     QDoubleSpinBox *m_feed;
     QPushButton *m_continue, *m_lift, *m_lowerContinue, *m_lowerOnly, *m_abort;

@@ -160,6 +160,8 @@ void MainWindow::connectControls()
     connect(m_hold, &HoldBanner::abortRequested, m_workflow, &RunWorkflow::abort);
     connect(m_hold, &HoldBanner::liftRequested, m_workflow, &RunWorkflow::toolLift);
     connect(m_hold, &HoldBanner::lowerRequested, m_workflow, &RunWorkflow::lowerTool);
+    connect(m_hold, &HoldBanner::spindleHoldRequested, this,
+            [this](bool stop) { m_controller->execute(driver::op::HoldSpindle{stop}); });
 
     connect(m_jog, &JogPanel::jogStepRequested, this, &MainWindow::jogStep);
     connect(m_jog, &JogPanel::jogContinuousStarted, m_controller,
@@ -228,13 +230,13 @@ void MainWindow::onState(const driver::MachineState &state)
     const std::uint16_t inputs = std::uint16_t(state.inputs1 | ((state.inputs2 & 0xC0) << 8));
     // !7V1..1000 switches OUT0 on in the unit as well (docs/gve-protocol.md §9).
     const std::uint8_t outputs =
-        std::uint8_t(logicalOutputs(state.outputs) | (state.spindlePermille > 0 ? 0x01 : 0));
+        std::uint8_t(logicalOutputs(state.outputs) | (state.spindleOn ? 0x01 : 0));
     m_io->setIo(inputs, outputs, state.run, state.inta);
     auto on = [&](machine::OutputFunction f) {
         const std::uint8_t bit = machine::outputBit(profile(), f);
         return bit && !(state.outputs & bit);
     };
-    m_outputs->showState(state.spindlePermille > 0, on(machine::OutputFunction::Coolant),
+    m_outputs->showState(state.spindleOn, on(machine::OutputFunction::Coolant),
                          on(machine::OutputFunction::AirBlow), std::uint8_t(~state.outputs));
     m_outputs->showFeedOverride(state.overridePercent);
     m_jog->setMpgOn(state.mpgOn);
@@ -311,8 +313,17 @@ void MainWindow::updateHold(const driver::MachineState &state)
             kind = K::Paused;
         }
     }
-    if (kind != m_hold->kind())
-        m_hold->showHold(kind, int(state.sourceLine), QString::fromStdString(state.holdText));
+    m_hold->setOutputs(state.spindleOn, state.outputsHeld, profile().spindle.spinUpMs / 1000.0);
+    if (kind == m_hold->kind())
+        return;
+    m_hold->showHold(kind, int(state.sourceLine), QString::fromStdString(state.holdText));
+    // The operator's word on the spindle for a hold: ticked, a pause or an input's stop switches
+    // it off once the machine stands; at M0/M1/M6 the profile decides and the box shows it.
+    if (kind == K::OperatorStop)
+        m_hold->setStopSpindle(state.outputsHeld || !state.spindleOn);
+    else if ((kind == K::Paused || kind == K::Interrupt) && m_hold->stopSpindleOnLift() &&
+             state.spindleOn && !state.outputsHeld)
+        m_controller->execute(driver::op::HoldSpindle{true});
 }
 
 void MainWindow::onMachineError(const driver::MachineError &error)
@@ -368,7 +379,9 @@ void MainWindow::updateRunPhase()
     }
     m_run->setPhase(phase, connected && (st.mode == MachineMode::Idle || phase != RunPhase::Ready));
     const bool idle = st.mode == MachineMode::Idle;
-    m_jog->setEnabled(idle || st.mode == MachineMode::Jogging);
+    // While the tool is lifted the operator jogs it away and back (by steps, issue 14).
+    m_jog->setEnabled(idle || st.mode == MachineMode::Jogging ||
+                      st.mode == MachineMode::ToolLifted);
     m_dro->setEnabled(true);
     m_connectAction->setEnabled(!connected);
     m_disconnectAction->setEnabled(st.mode != MachineMode::Disconnected);

@@ -119,6 +119,8 @@ void visitProfile(V &v, MachineConfig &c)
     v.object("spindle", [&](V &s) {
         s.number("maxRpm", c.spindle.maxRpm, 1, 1000000, "rpm");
         s.integer("spinUpMs", c.spindle.spinUpMs, 0, 60000, "ms");
+        s.boolean("stopAtProgramStop", c.spindle.stopAtProgramStop);
+        s.boolean("stopAtToolChange", c.spindle.stopAtToolChange);
     });
     v.object("outputs", [&](V &s) {
         s.choice("out1", c.outputs.out[0], all(kOutputFunctions));

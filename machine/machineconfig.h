@@ -84,6 +84,10 @@ struct SpindleConfig
 {
     double maxRpm = 24000; // rpm at 1000 ‰ (10 V / 100 % PWM)
     int spinUpMs = 2000;   // wait after start / speed change before cutting
+    // Whether the driver switches the spindle and coolant off when a job holds at M0 / M1 and at
+    // M6 (on again, with the spin-up, before it continues). Issue 14.
+    bool stopAtProgramStop = true;
+    bool stopAtToolChange = true;
     friend bool operator==(const SpindleConfig &, const SpindleConfig &) = default;
 };
 

@@ -37,6 +37,8 @@ public:
     virtual void home(unsigned axisMask) = 0;
     virtual void setSpindleRpm(double rpm) = 0;
     virtual void sendRaw(const QString &text) = 0;
+    // Any other operation of the driver (driver/link/machinecommand.h), e.g. op::HoldSpindle.
+    virtual void execute(const driver::MachineCommand &command) = 0;
 
 signals:
     void stateChanged(const frezka::driver::MachineState &state);

@@ -44,6 +44,7 @@ public:
     void home(unsigned axisMask) override { m_driver.home(axisMask); }
     void setSpindleRpm(double rpm) override { m_driver.setSpindleRpm(rpm); }
     void sendRaw(const QString &text) override { m_driver.sendRaw(text); }
+    void execute(const driver::MachineCommand &command) override { m_driver.execute(command); }
 
 private:
     Driver &m_driver;

@@ -196,16 +196,13 @@ void RunWorkflow::end(bool ok, const QString &why)
 
 void RunWorkflow::toolLift(bool stopSpindle)
 {
-    m_savedSpindleRpm = state().spindleRpm;
     m_link.toolLift(stopSpindle);
 }
 
 void RunWorkflow::lowerTool(double newFeedMmPerMin, bool thenContinue)
 {
-    // Spindle back on first when the lift stopped it, then lower (K/R and the new speed are the
-    // driver's), then continue once the machine is held again with the tool down.
-    if (m_savedSpindleRpm > 0 && state().spindlePermille == 0)
-        m_link.setSpindleRpm(m_savedSpindleRpm);
+    // The driver switches the spindle and coolant on again and waits their spin-up before the
+    // tool goes down (K/R and the new speed are its too); continue once it is held again, down.
     int pulses = 0;
     if (newFeedMmPerMin > 0)
         pulses = int(std::lround(newFeedMmPerMin / 60.0 * m_profile.axes[0].stepsPerMm));

@@ -110,7 +110,6 @@ private:
     bool m_autoReconnect = false;
     bool m_userDisconnected = false;
     bool m_continueAfterLower = false;
-    double m_savedSpindleRpm = 0;
     driver::MachineMode m_lastMode = driver::MachineMode::Disconnected;
     QString m_error;
     QTimer m_reconnect;

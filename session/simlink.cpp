@@ -122,6 +122,11 @@ void SimLink::abort()
     apply(m_core.abort(now()));
 }
 
+void SimLink::execute(const driver::MachineCommand &command)
+{
+    apply(m_core.execute(command, now()));
+}
+
 void SimLink::toolLift(bool stopSpindle)
 {
     apply(m_core.toolLift(stopSpindle, now()));

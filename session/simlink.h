@@ -50,6 +50,7 @@ public:
     void home(unsigned axisMask) override;
     void setSpindleRpm(double rpm) override;
     void sendRaw(const QString &text) override;
+    void execute(const driver::MachineCommand &command) override;
 
 private:
     void apply(const driver::MachineCore::Result &result);

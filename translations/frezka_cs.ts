@@ -193,12 +193,6 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 <context>
     <name>RunCli</name>
     <message>
-        <source>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path]
-</source>
-        <translation>použití: frezka-cli run SOUBOR [--machine PROFIL] [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path]
-</translation>
-    </message>
-    <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
         <translation><byte value="xd"/>[%1] %2% řádek %3 zbývá %4 </translation>
     </message>
@@ -227,6 +221,16 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </source>
         <translation>varování: %1
 </translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
+</source>
+        <translation>použití: frezka-cli run SOUBOR [--machine PROFIL] [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]]
+</translation>
+    </message>
+    <message>
+        <source>the scripted hold at line %1 failed %2: %3</source>
+        <translation>naskriptované zastavení na řádku %1 selhalo (%2): %3</translation>
     </message>
 </context>
 <context>
@@ -1485,10 +1489,6 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>Pozastaveno %1</translation>
     </message>
     <message>
-        <source>The machine has stopped along its ramp and keeps the rest of the job. Continue, or lift the tool to change or clean it.</source>
-        <translation>Stroj zabrzdil po rampě a zbytek úlohy si drží. Pokračujte, nebo zvedněte nástroj k výměně či očištění.</translation>
-    </message>
-    <message>
         <source>Program stop %1</source>
         <translation>Zastavení programu %1</translation>
     </message>
@@ -1521,10 +1521,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Tool lifted %1</source>
         <translation>Nástroj zvednut %1</translation>
-    </message>
-    <message>
-        <source>Change or clean the tool. Then lower it: the spindle starts again if it was stopped, the tool goes back down to where it was, and the job continues — at a new feed if you enter one.</source>
-        <translation>Vyměňte nebo očistěte nástroj. Pak jej spusťte: vřeteno se znovu roztočí, pokud bylo zastaveno, nástroj sjede zpět tam, kde byl, a úloha pokračuje — s novým posuvem, pokud jej zadáte.</translation>
     </message>
     <message>
         <source>Stop the spindle</source>
@@ -1561,6 +1557,30 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>The machine&apos;s position left the path that was sent: a command was damaged on the serial line in a way its checksum cannot show, and the unit ran it. The machine has stopped. Check the workpiece. Continue lifts the tool, returns to the last point verified on the path and runs the job on from there; or Abort the job.</source>
         <translation>Poloha stroje opustila odeslanou dráhu: příkaz se na sériové lince poškodil tak, že to jeho kontrolní součet nepozná, a jednotka ho provedla. Stroj stojí. Zkontrolujte obrobek. Pokračovat zvedne nástroj, vrátí se do posledního ověřeného bodu dráhy a odtud úlohu dokončí; nebo úlohu přerušte.</translation>
+    </message>
+    <message>
+        <source>The machine has stopped along its ramp and keeps the rest of the job. Continue, or lift the tool to change or clean it (the spindle and coolant go off for a lifted tool).</source>
+        <translation>Stroj zabrzdil po rampě a zbytek úlohy si drží. Pokračujte, nebo zvedněte nástroj k výměně či očištění (při zvednutém nástroji se vřeteno a chlazení vypnou).</translation>
+    </message>
+    <message>
+        <source>The spindle and coolant are off. Change, measure or clean the tool; you may jog the machine away by steps. Lowering switches the spindle and coolant on again as they were, waits %1 s for the spindle to reach its speed, returns exactly to where the tool was lifted, lowers it into the work and continues — at a new feed if you enter one. Abort ends the job here with the tool up.</source>
+        <translation>Vřeteno a chlazení jsou vypnuté. Vyměňte, změřte nebo očistěte nástroj; stroj můžete krokově odjet. Spuštění nástroje zapne vřeteno a chlazení tak, jak byly, počká %1 s, než vřeteno dosáhne otáček, vrátí se přesně do místa zvednutí, spustí nástroj do materiálu a pokračuje — s novým posuvem, pokud jej zadáte. Přerušení zde úlohu ukončí se zvednutým nástrojem.</translation>
+    </message>
+    <message>
+        <source>The spindle and coolant are off for the hold. Continue switches them on again and waits %1 s for the spindle before the tool moves.</source>
+        <translation>Vřeteno a chlazení jsou po dobu zastavení vypnuté. Pokračovat je znovu zapne a počká %1 s na vřeteno, než se nástroj pohne.</translation>
+    </message>
+    <message>
+        <source>The spindle is running.</source>
+        <translation>Vřeteno běží.</translation>
+    </message>
+    <message>
+        <source>The spindle is off.</source>
+        <translation>Vřeteno je vypnuté.</translation>
+    </message>
+    <message>
+        <source>While the job is held: the spindle and coolant off (ticked) or on again (unticked). Ticked, a pause stops them as soon as the machine stands.</source>
+        <translation>Během zastavené úlohy: vřeteno a chlazení vypnout (zaškrtnuto) nebo znovu zapnout (nezaškrtnuto). Zaškrtnuto: pauza je vypne, jakmile stroj stojí.</translation>
     </message>
 </context>
 <context>
@@ -2345,6 +2365,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>a key of an older profile, read into its successor or ignored</source>
         <translation>klíč staršího profilu, převzatý do nástupce nebo vynechaný</translation>
+    </message>
+    <message>
+        <source>Spindle and coolant off at M0 / M1</source>
+        <translation>Vřeteno a chlazení vypnout při M0 / M1</translation>
+    </message>
+    <message>
+        <source>Spindle and coolant off at M6</source>
+        <translation>Vřeteno a chlazení vypnout při M6</translation>
     </message>
 </context>
 <context>

@@ -193,12 +193,6 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 <context>
     <name>RunCli</name>
     <message>
-        <source>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path]
-</source>
-        <translation>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path]
-</translation>
-    </message>
-    <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
         <translation><byte value="xd"/>[%1] %2% line %3 ETA %4 </translation>
     </message>
@@ -227,6 +221,16 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </source>
         <translation>warning: %1
 </translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
+</source>
+        <translation>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
+</translation>
+    </message>
+    <message>
+        <source>the scripted hold at line %1 failed %2: %3</source>
+        <translation>the scripted hold at line %1 failed %2: %3</translation>
     </message>
 </context>
 <context>
@@ -1484,10 +1488,6 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>Paused %1</translation>
     </message>
     <message>
-        <source>The machine has stopped along its ramp and keeps the rest of the job. Continue, or lift the tool to change or clean it.</source>
-        <translation>The machine has stopped along its ramp and keeps the rest of the job. Continue, or lift the tool to change or clean it.</translation>
-    </message>
-    <message>
         <source>Program stop %1</source>
         <translation>Program stop %1</translation>
     </message>
@@ -1520,10 +1520,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Tool lifted %1</source>
         <translation>Tool lifted %1</translation>
-    </message>
-    <message>
-        <source>Change or clean the tool. Then lower it: the spindle starts again if it was stopped, the tool goes back down to where it was, and the job continues — at a new feed if you enter one.</source>
-        <translation>Change or clean the tool. Then lower it: the spindle starts again if it was stopped, the tool goes back down to where it was, and the job continues — at a new feed if you enter one.</translation>
     </message>
     <message>
         <source>Stop the spindle</source>
@@ -1560,6 +1556,30 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>The machine&apos;s position left the path that was sent: a command was damaged on the serial line in a way its checksum cannot show, and the unit ran it. The machine has stopped. Check the workpiece. Continue lifts the tool, returns to the last point verified on the path and runs the job on from there; or Abort the job.</source>
         <translation>The machine&apos;s position left the path that was sent: a command was damaged on the serial line in a way its checksum cannot show, and the unit ran it. The machine has stopped. Check the workpiece. Continue lifts the tool, returns to the last point verified on the path and runs the job on from there; or Abort the job.</translation>
+    </message>
+    <message>
+        <source>The machine has stopped along its ramp and keeps the rest of the job. Continue, or lift the tool to change or clean it (the spindle and coolant go off for a lifted tool).</source>
+        <translation>The machine has stopped along its ramp and keeps the rest of the job. Continue, or lift the tool to change or clean it (the spindle and coolant go off for a lifted tool).</translation>
+    </message>
+    <message>
+        <source>The spindle and coolant are off. Change, measure or clean the tool; you may jog the machine away by steps. Lowering switches the spindle and coolant on again as they were, waits %1 s for the spindle to reach its speed, returns exactly to where the tool was lifted, lowers it into the work and continues — at a new feed if you enter one. Abort ends the job here with the tool up.</source>
+        <translation>The spindle and coolant are off. Change, measure or clean the tool; you may jog the machine away by steps. Lowering switches the spindle and coolant on again as they were, waits %1 s for the spindle to reach its speed, returns exactly to where the tool was lifted, lowers it into the work and continues — at a new feed if you enter one. Abort ends the job here with the tool up.</translation>
+    </message>
+    <message>
+        <source>The spindle and coolant are off for the hold. Continue switches them on again and waits %1 s for the spindle before the tool moves.</source>
+        <translation>The spindle and coolant are off for the hold. Continue switches them on again and waits %1 s for the spindle before the tool moves.</translation>
+    </message>
+    <message>
+        <source>The spindle is running.</source>
+        <translation>The spindle is running.</translation>
+    </message>
+    <message>
+        <source>The spindle is off.</source>
+        <translation>The spindle is off.</translation>
+    </message>
+    <message>
+        <source>While the job is held: the spindle and coolant off (ticked) or on again (unticked). Ticked, a pause stops them as soon as the machine stands.</source>
+        <translation>While the job is held: the spindle and coolant off (ticked) or on again (unticked). Ticked, a pause stops them as soon as the machine stands.</translation>
     </message>
 </context>
 <context>
@@ -2340,6 +2360,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>a key of an older profile, read into its successor or ignored</source>
         <translation>a key of an older profile, read into its successor or ignored</translation>
+    </message>
+    <message>
+        <source>Spindle and coolant off at M0 / M1</source>
+        <translation>Spindle and coolant off at M0 / M1</translation>
+    </message>
+    <message>
+        <source>Spindle and coolant off at M6</source>
+        <translation>Spindle and coolant off at M6</translation>
     </message>
 </context>
 <context>

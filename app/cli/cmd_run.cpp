@@ -1,6 +1,6 @@
 // frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N]
 //                     [--faults RATE --seed N] [--clock virtual|real] [--home]
-//                     [--return-to-path]
+//                     [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
 //
 // Interprets and plans FILE for the machine profile, then the session's run workflow (the one
 // the GUI drives) connects (a serial port / pty, or the in-process emulator), optionally homes,
@@ -17,6 +17,13 @@
 // checksum cannot show; see driver/link/pathguard.h) the job stops and the run
 // ends with the error, unless --return-to-path lets the driver return to the last verified
 // point of the path and run on without an operator.
+//
+// --feed-override PCT sets the unit's feed override (XM, the driver's override path) once the job
+// runs. --hold-at-line N (in-process emulator on the virtual clock) plays an operator: when the
+// job reaches line N it pauses with "stop the spindle", with --lift lifts the tool, waits 5 s,
+// lowers it and continues (without --lift: waits and continues). The report then carries the
+// emulator's safety counters (axis_over_max, cut_without_spindle, spindle_on_while_held) with
+// the program's highest feed level as the top of the work (docs/emulator.md).
 #include "cli.h"
 
 #include "driver/link/emulatorport.h"
@@ -64,14 +71,20 @@ struct RunArgs
     bool clockGiven = false;
     bool home = false;
     bool returnToPath = false;
+    int feedOverride = 0; // 0 = unchanged
+    int holdAtLine = 0;   // 0 = no scripted hold
+    bool lift = false;
 };
+
+// The scripted operator's wait while the job is held (--hold-at-line).
+constexpr double kScriptedHoldS = 5.0;
 
 int usage()
 {
     cli::err(
         RunCli::tr("usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] "
                    "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] "
-                   "[--return-to-path]\n"));
+                   "[--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]\n"));
     return 2;
 }
 
@@ -106,6 +119,14 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
             a.home = true;
         } else if (k == QLatin1String("--return-to-path")) {
             a.returnToPath = true;
+        } else if (k == QLatin1String("--feed-override") && hasValue) {
+            a.feedOverride = args[++i].toInt(&ok);
+            ok = ok && a.feedOverride >= 1 && a.feedOverride <= 1000;
+        } else if (k == QLatin1String("--hold-at-line") && hasValue) {
+            a.holdAtLine = args[++i].toInt(&ok);
+            ok = ok && a.holdAtLine >= 1;
+        } else if (k == QLatin1String("--lift")) {
+            a.lift = true;
         } else if (a.file.isEmpty() && !k.startsWith(QLatin1String("--"))) {
             a.file = k;
         } else {
@@ -121,6 +142,8 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
         a.virtualClock = false;
     if (!sim && (a.virtualClock || a.faults > 0 || a.latencyMs > 0))
         return std::nullopt; // a real port runs in real time, with its own faults and latency
+    if ((a.lift && a.holdAtLine == 0) || (a.holdAtLine > 0 && !(sim && a.virtualClock)))
+        return std::nullopt; // the scripted operator plays on the virtual clock only
     return a;
 }
 
@@ -131,7 +154,19 @@ struct Prepared
     machine::MachineConfig config;
     machine::UnitProgram program;
     machine::PlanStats stats;
+    std::optional<double> workTopMm; // the highest Z a feed move reaches: the top of the work
 };
+
+std::optional<double> workTop(const gcode::Toolpath &path)
+{
+    std::optional<double> top;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const gcode::MotionKind k = path.kind(i);
+        if (k == gcode::MotionKind::Feed || k == gcode::MotionKind::Arc)
+            top = std::max(top.value_or(path.end(i).z), path.end(i).z);
+    }
+    return top;
+}
 
 std::optional<Prepared> prepare(const RunArgs &a)
 {
@@ -176,7 +211,7 @@ std::optional<Prepared> prepare(const RunArgs &a)
             cli::err(e.text + QLatin1Char('\n'));
         return std::nullopt;
     }
-    return Prepared{config, std::move(*p.program), p.stats};
+    return Prepared{config, std::move(*p.program), p.stats, workTop(*g.toolpath)};
 }
 
 // Progress bar on a terminal (stderr), at most every 0.2 s of wall time.
@@ -223,12 +258,69 @@ struct Outcome
     driver::JobReport report;
     std::array<std::int64_t, 4> finalSteps{};
     std::optional<emulator::Stats> unitStats;
+    std::optional<bool> spindleOnAtEnd; // the emulator's spindle when the job ended
     QString error;
 };
 
+// The scripted operator of --hold-at-line: pause with the spindle stop at line N, (lift), wait,
+// (lower), continue. The workflow would end the run at a hold: it waits meanwhile. Empty when
+// all went as asked, else why not.
+QString scriptedHold(const RunArgs &a, session::SimLink &link, session::RunWorkflow &workflow)
+{
+    using driver::MachineMode;
+    const driver::MachineState &s = link.liveState();
+    auto until = [&](const std::function<bool()> &done, const char *what) {
+        return link.runUntil([&] { return done() || workflow.hasEnded(); }, 3600) &&
+                       !workflow.hasEnded()
+                   ? QString()
+                   : RunCli::tr("the scripted hold at line %1 failed %2: %3")
+                         .arg(a.holdAtLine)
+                         .arg(QString::fromLatin1(what),
+                              QString::fromStdString(s.lastError ? s.lastError->message
+                                                                 : std::string("(no error)")));
+    };
+    if (QString e = until(
+            [&] {
+                return s.mode == MachineMode::Running &&
+                       s.sourceLine >= std::uint32_t(a.holdAtLine);
+            },
+            "reaching the line");
+        !e.isEmpty())
+        return e;
+    workflow.setEndOnHold(false);
+    link.execute(driver::op::Pause{true});
+    if (QString e = until([&] { return s.mode == MachineMode::Paused && !s.spindleOn; }, "pausing");
+        !e.isEmpty())
+        return e;
+    if (a.lift) {
+        link.execute(driver::op::ToolLift{true});
+        if (QString e = until([&] { return s.mode == MachineMode::ToolLifted; }, "lifting");
+            !e.isEmpty())
+            return e;
+    }
+    link.runFor(kScriptedHoldS);
+    if (a.lift) {
+        link.execute(driver::op::ToolLower{0});
+        if (QString e = until(
+                [&] {
+                    return s.mode == MachineMode::Paused &&
+                           s.activity != driver::MachineActivity::ToolLift;
+                },
+                "lowering");
+            !e.isEmpty())
+            return e;
+    }
+    link.execute(driver::op::Resume{});
+    if (QString e = until([&] { return s.mode == MachineMode::Running; }, "continuing");
+        !e.isEmpty())
+        return e;
+    workflow.setEndOnHold(true);
+    return {};
+}
+
 // The in-process emulator on a virtual clock (SimLink), the run workflow turning it.
 Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
-                   const machine::UnitProgram &program)
+                   const machine::UnitProgram &program, std::optional<double> workTopMm)
 {
     Outcome out;
     driver::WireOptions wire;
@@ -240,7 +332,12 @@ Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     driver::CoreOptions options;
     options.returnToPathAutomatically = a.returnToPath;
     options.link.baud = wire.baud;
-    session::SimLink link(config, driver::unitOptionsFor(config), wire, options);
+    emulator::UnitOptions unit = driver::unitOptionsFor(config);
+    if (workTopMm) { // the program starts at the machine's zero: its Z is the counter's
+        unit.machine.hasWorkSurface = true;
+        unit.machine.workSurfaceZSteps = std::llround(*workTopMm * config.axes[2].stepsPerMm);
+    }
+    session::SimLink link(config, unit, wire, options);
     session::RunWorkflow workflow(link);
     workflow.setProfile(config);
     workflow.setEndOnHold(true); // nobody at the machine to answer a hold
@@ -249,6 +346,17 @@ Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     QObject::connect(&workflow, &session::RunWorkflow::runEnded, [&](bool ok) { ended = ok; });
     Progress progress;
     workflow.start(session::RunWorkflow::connectionFor(config), a.home);
+    if (a.feedOverride > 0) {
+        link.runUntil([&] { return link.liveState().jobActive || workflow.hasEnded(); }, 600);
+        link.execute(driver::op::SetOverride{a.feedOverride});
+    }
+    if (a.holdAtLine > 0) {
+        if (QString e = scriptedHold(a, link, workflow); !e.isEmpty()) {
+            out.error = e;
+            out.unitStats = link.port().unit().stats();
+            return out;
+        }
+    }
     while (!workflow.hasEnded()) {
         link.runFor(0.25);
         if (link.liveState().jobActive)
@@ -265,6 +373,7 @@ Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     out.report = link.jobReport();
     out.finalSteps = link.liveState().positionSteps;
     out.unitStats = link.port().unit().stats();
+    out.spindleOnAtEnd = link.port().unit().spindleTurning();
     return out;
 }
 
@@ -299,8 +408,13 @@ Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
         finished = ok;
         loop.quit();
     });
+    bool overrideSent = a.feedOverride == 0;
     QObject::connect(&link, &session::MachineLink::stateChanged, &loop,
                      [&](const driver::MachineState &s) {
+                         if (s.jobActive && !overrideSent) {
+                             overrideSent = true;
+                             link.execute(driver::op::SetOverride{a.feedOverride});
+                         }
                          if (s.jobActive)
                              progress.show(s);
                      });
@@ -321,8 +435,10 @@ Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
     out.error = workflow.error();
     out.report = worker.jobReport();
     out.finalSteps = link.state().positionSteps;
-    if (emulated)
+    if (emulated) {
         out.unitStats = emulated->unit().stats();
+        out.spindleOnAtEnd = emulated->unit().spindleTurning();
+    }
     worker.disconnectFromUnit();
     return out;
 }
@@ -375,10 +491,18 @@ void printReport(const Outcome &o, const machine::UnitProgram &program,
             static_cast<qint64>(o.unitStats->motion.starvationStops);
         j[QStringLiteral("brake_violations")] =
             static_cast<qint64>(o.unitStats->motion.brakeViolations);
+        j[QStringLiteral("axis_over_max")] = static_cast<qint64>(o.unitStats->motion.axisOverMax);
+        j[QStringLiteral("cut_without_spindle")] =
+            static_cast<qint64>(o.unitStats->safety.cutWithoutSpindle);
+        j[QStringLiteral("spindle_on_while_held")] =
+            static_cast<qint64>(o.unitStats->safety.spindleOnWhileHeld);
     } else { // a real unit does not count them
-        j[QStringLiteral("starvation_stops")] = QJsonValue::Null;
-        j[QStringLiteral("brake_violations")] = QJsonValue::Null;
+        for (const char *key : {"starvation_stops", "brake_violations", "axis_over_max",
+                                "cut_without_spindle", "spindle_on_while_held"})
+            j[QLatin1String(key)] = QJsonValue::Null;
     }
+    j[QStringLiteral("spindle_on_at_end")] =
+        o.spindleOnAtEnd ? QJsonValue(*o.spindleOnAtEnd) : QJsonValue(QJsonValue::Null);
     j[QStringLiteral("resent")] = static_cast<qint64>(r.resent);
     j[QStringLiteral("recovered")] = static_cast<qint64>(r.recovered);
     j[QStringLiteral("path_faults")] = static_cast<qint64>(r.pathFaults);
@@ -394,9 +518,9 @@ int runRun(const QStringList &args)
     auto prepared = prepare(*a);
     if (!prepared)
         return 1;
-    const auto &[config, program, stats] = *prepared;
+    const auto &[config, program, stats, top] = *prepared;
     const Outcome o =
-        a->virtualClock ? runVirtual(*a, config, program) : runReal(*a, config, program);
+        a->virtualClock ? runVirtual(*a, config, program, top) : runReal(*a, config, program);
     const int baud = a->baud > 0 ? a->baud : config.link.baud;
     if (!o.ok) {
         cli::err(
@@ -422,5 +546,6 @@ int runRun(const QStringList &args)
 FREZKA_CLI_COMMAND(
     run,
     "run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] "
-    "[--faults RATE --seed N] [--clock virtual|real] [--home]",
+    "[--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] "
+    "[--feed-override PCT] [--hold-at-line N [--lift]]",
     "Run a G-code job on a GVE unit or the emulator, with progress and a JSON report", runRun);

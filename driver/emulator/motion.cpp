@@ -188,6 +188,8 @@ void MotionEngine::step(double dt)
             ++m_stats.starvationStops;
         m_prevEndedDry = false;
         record();
+        if (onVectorStart)
+            onVectorStart(head);
         return;
     }
     const Segment seg = currentSegment();
@@ -261,6 +263,8 @@ void MotionEngine::completeHead()
         !m_queue.empty() && m_v > 0 && !m_queue.front().isLine && !m_queue.front().isHoming;
     if (continues) {
         m_started = true;
+        if (onVectorStart)
+            onVectorStart(m_queue.front());
     } else {
         m_v = 0; // an arrival above zero with nothing to continue into stops dead
         m_restSince = m_now;
@@ -288,7 +292,22 @@ void MotionEngine::notePeak()
         const double axisSpeed = m_v * std::abs(double(head.steps[i])) / length;
         m_stats.peakAxisSpeedPulsesPerS[i] =
             std::max(m_stats.peakAxisSpeedPulsesPerS[i], axisSpeed);
+        if (m_axisMax[i] > 0 && axisSpeed > m_axisMax[i] + readings::kAxisOverMaxTolerance &&
+            head.serial != m_overMaxSerial) {
+            m_overMaxSerial = head.serial;
+            ++m_stats.axisOverMax;
+        }
     }
+}
+
+std::array<std::int64_t, kMaxAxes> MotionEngine::headEnd() const
+{
+    auto end = m_base;
+    if (!m_queue.empty()) {
+        for (int i = 0; i < kMaxAxes; ++i)
+            end[i] += m_queue.front().steps[i];
+    }
+    return end;
 }
 
 void MotionEngine::record()
@@ -308,6 +327,9 @@ void MotionEngine::reset()
     fresh.m_limits.maxPulseRate = m_limits.maxPulseRate;
     fresh.onStopped = std::move(onStopped);
     fresh.onVectorDone = std::move(onVectorDone);
+    fresh.onVectorStart = std::move(onVectorStart);
+    fresh.m_axisMax = m_axisMax;
+    fresh.m_overMaxSerial = m_overMaxSerial;
     *this = std::move(fresh);
 }
 

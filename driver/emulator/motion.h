@@ -58,7 +58,8 @@ struct MotionStats
     double worstBrakeExcessPulsesPerS = 0; // largest arrival speed above the allowed exit speed
     std::int64_t starvationStops = 0;      // C stopped because the queue ran dry, then a C followed
     std::array<double, kMaxAxes> peakAxisSpeedPulsesPerS{};
-    double movingTimeS = 0; // time with a vector executing (dwell excluded)
+    double movingTimeS = 0;       // time with a vector executing (dwell excluded)
+    std::int64_t axisOverMax = 0; // vectors in which an axis ran above its maximum (setAxisMax)
     bool operator==(const MotionStats &) const = default;
 };
 
@@ -121,6 +122,10 @@ public:
 
     void setPauseS(double pause) { m_pauseS = pause; }
     void setLimits(const SpeedLimits &limits) { m_limits = limits; }
+    // The machine's axis maxima, pulses/s (0 = none), for MotionStats::axisOverMax only.
+    void setAxisMax(const std::array<double, kMaxAxes> &max) { m_axisMax = max; }
+    // Counters where the head vector ends (the position when nothing is queued).
+    std::array<std::int64_t, kMaxAxes> headEnd() const;
     const SpeedLimits &limits() const { return m_limits; }
 
     // Axis thresholds to stop at: an event happens when the counter of `axis` moves from below
@@ -141,6 +146,9 @@ public:
     std::function<void()> onStopped;
     // Called when a vector completes (after its steps were added).
     std::function<void(const MotionVector &)> onVectorDone;
+    // Called when the head vector starts to move: from rest, out of a chain, or again after a
+    // stop (G). For the emulator's safety counters; changes nothing of the motion.
+    std::function<void(const MotionVector &)> onVectorStart;
 
 private:
     struct Segment
@@ -175,6 +183,8 @@ private:
     double m_restSince = -1e9; // time the machine last came to rest
     double m_pauseS = 0;
     SpeedLimits m_limits;
+    std::array<double, kMaxAxes> m_axisMax{};
+    std::uint64_t m_overMaxSerial = 0; // the last vector counted in axisOverMax
     std::vector<Watch> m_watches;
     bool m_traceEnabled = false;
     std::vector<TracePoint> m_trace;

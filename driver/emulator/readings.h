@@ -139,6 +139,18 @@ inline constexpr std::int64_t kMultiplierMaxPercent = 2147483647;
 // step or more and no rounding. Pinned by Rounding.* and Motion.BrakeViolation*.
 inline constexpr double kBrakeViolationTolerance = 0.01;
 
+// ---- Part 3: the machine behind the unit (safety counters, issue 14; emulator choices) ---------
+
+// An axis counts as over its maximum speed when faster than it by more than this (pulses/s): the
+// rounding of a V to whole pulses/s stays below it.
+inline constexpr double kAxisOverMaxTolerance = 1.0;
+
+// The spindle may stand on while the job is held (INTA or KEEP) and the machine stands for this
+// long after the stop (time for the PC to switch it off), or for its spin-up time plus this after
+// it was switched on during the hold (it must be at speed before the tool goes back into the
+// work); longer counts once as spindle_on_while_held.
+inline constexpr double kHeldSpindleGraceS = 0.5;
+
 // The index and the last reply are shared by addresses 0 and 7 (one processor).
 inline constexpr bool kIndexSharedByAddresses = true;
 

@@ -23,6 +23,12 @@ Unit::Impl::Impl(UnitOptions opts)
 {
     engine.onStopped = [this] { onStopped(); };
     engine.setTraceEnabled(options.trace);
+    safety.setModel(options.machine);
+    engine.setAxisMax(options.machine.axisMaxPulsesPerS);
+    engine.onVectorStart = [this](const MotionVector &v) {
+        if (!v.isHoming)
+            safety.vectorStarts(engine.position(), engine.headEnd(), engine.now());
+    };
     for (const EepromPreset &p : options.eepromPreset) {
         switch (p.kind) {
         case EepromPreset::Kind::Byte:
@@ -64,6 +70,7 @@ void Unit::Impl::resetState(bool powerOn)
     mpg = features.mpg ? Mpg::Silent : Mpg::Off;
     outputs = 0xFF;
     spindle = 0;
+    noteSpindle();
     kept = false;
     keptQueue = {};
     homing.reset();
@@ -189,7 +196,9 @@ void Unit::Impl::handleLine(int address, std::string_view body)
         packetOpen = false; // '@' or '>' ends an unfinished packet: nothing of it runs
         packet.clear();
     }
+    observeSafety();
     const Reply r = execute(address, body);
+    observeSafety();
     if (r.code < 0)
         return; // deferred (H, W) or no reply at all (*S)
     sendReply(r);
@@ -286,6 +295,7 @@ void Unit::Impl::advanceBy(double seconds)
         const double dt = reached ? event : left;
         engine.step(dt);
         left = std::max(0.0, left - dt);
+        observeSafety();
         checkInterrupts();
         checkHoming();
         if (deferred == Deferred::None && watchdogAt() <= engine.now())
@@ -410,6 +420,24 @@ void Unit::Impl::onStopped()
     const Reply r{0, {}};
     sendReply(r);
     lastReply = formatReply(r);
+}
+
+bool Unit::Impl::spindleTurning() const
+{
+    const bool out0 = !(outputs & 0x01);
+    return info->hasSpindleAddress7 ? out0 && spindle > 0 : out0;
+}
+
+void Unit::Impl::noteSpindle()
+{
+    const bool cutting = engine.isMoving() && !engine.queue().front().isHoming &&
+                         safety.intoWork(engine.position(), engine.headEnd());
+    safety.spindle(spindleTurning(), engine.now(), cutting);
+}
+
+void Unit::Impl::observeSafety()
+{
+    safety.observe((kept || inta) && !engine.isMoving(), engine.now());
 }
 
 bool Unit::Impl::runBit() const

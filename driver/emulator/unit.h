@@ -11,6 +11,7 @@
 //     unit.advance(unit.nextEventIn());                   // event-driven virtual clock
 
 #include "driver/emulator/motion.h"
+#include "driver/emulator/safetywatch.h"
 #include "protocol/variant.h"
 
 #include <array>
@@ -57,6 +58,8 @@ struct UnitOptions
     // (protocol::featuresOf): an older GVE64 answers 3 (unknown) to VL/VK/VN/XM/N<axis> below
     // v19 and to Y and the EEPROM float/uint32 commands below v10.
     std::string firmware{};
+    // The machine behind the unit: spin-up, axis maxima, the work, for the safety counters.
+    MachineModel machine{};
     bool operator==(const UnitOptions &) const = default;
 };
 
@@ -68,6 +71,7 @@ struct Stats
     std::int64_t watchdogs = 0;      // answered code 2
     std::int64_t discardedBytes = 0; // outside any command, cut off by '!', or lost in reset
     std::int64_t interrupts = 0;     // input interrupts accepted
+    SafetyStats safety;              // cuts without the spindle, spindle on while held
     bool operator==(const Stats &) const = default;
 };
 
@@ -112,6 +116,7 @@ public:
 
     std::uint8_t outputs() const;     // port 0 as written by O0 (active low)
     int spindlePermille() const;      // last !7V value
+    bool spindleTurning() const;      // !7V > 0 with OUT0 on (GVE84: its relay, bit0, on)
     std::uint8_t status(int n) const; // ST0..ST6 as SRn would answer
     std::uint8_t eepromByte(int address) const;
     bool checksumsOn() const;

@@ -61,6 +61,7 @@ Stats Unit::stats() const
 {
     Stats s = m_impl->stats;
     s.motion = m_impl->engine.stats();
+    s.safety = m_impl->safety.stats();
     return s;
 }
 
@@ -124,6 +125,11 @@ std::uint8_t Unit::outputs() const
 int Unit::spindlePermille() const
 {
     return m_impl->spindle;
+}
+
+bool Unit::spindleTurning() const
+{
+    return m_impl->spindleTurning();
 }
 
 std::uint8_t Unit::status(int n) const

@@ -130,6 +130,7 @@ Reply Unit::Impl::executeSpindle(std::string_view body)
         return {code, {}};
     spindle = static_cast<int>(v[0]);
     outputs = spindle == 0 ? (outputs | 0x01) : (outputs & ~0x01); // OUT0 follows (active low)
+    noteSpindle();
     return {0, {}};
 }
 

@@ -5,6 +5,7 @@
 #include "driver/emulator/eeprom.h"
 #include "driver/emulator/motion.h"
 #include "driver/emulator/readings.h"
+#include "driver/emulator/safetywatch.h"
 #include "driver/emulator/unit.h"
 
 #include <optional>
@@ -86,6 +87,7 @@ struct Unit::Impl
     };
     std::optional<Homing> homing;
     Stats stats;
+    SafetyWatch safety;
 
     // ---- unit.cpp
     void resetState(bool powerOn);
@@ -108,6 +110,9 @@ struct Unit::Impl
     void onStopped();
     std::uint8_t st6() const;
     bool runBit() const;
+    bool spindleTurning() const;
+    void noteSpindle();   // the spindle's state after !7V, O0 or J, for the safety counters
+    void observeSafety(); // at every event: the job held while the machine stands?
 
     // ---- unit_commands.cpp
     Reply execute(int address, std::string_view body);

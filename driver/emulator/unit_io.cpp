@@ -140,6 +140,7 @@ Reply Unit::Impl::cmdIo(std::string_view body)
         value.value > 0xFF)
         return {5, {}};
     outputs = static_cast<std::uint8_t>(value.value);
+    noteSpindle();
     return {0, {}};
 }
 

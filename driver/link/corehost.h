@@ -9,6 +9,7 @@
 #include "driver/link/linkengine.h"
 #include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
+#include "machine/unitprogram.h"
 
 #include <functional>
 #include <string>
@@ -38,6 +39,8 @@ public:
     virtual void dropPending() = 0; // the queued steps and every wait for idle
     virtual void afterStopOrInterrupt(std::function<void()> then) = 0; // RUN = 0 or INTA = 1
     virtual void whenStill(std::function<void()> then) = 0;            // two equal position reads
+    // Runs `then` once `seconds` have passed (the spindle's spin-up); dropPending() cancels it.
+    virtual void afterDelay(double seconds, std::function<void()> then) = 0;
 
     // ---- state and errors
     virtual MachineState &liveState() = 0; // the state the core publishes
@@ -60,6 +63,9 @@ public:
     // ---- the unit's hold (INTA): whether resuming needs G; an expected interrupt (probe)
     virtual void setHoldNeedsGo(bool on) = 0;
     virtual void setHaltExpected(bool on) = 0;
+    // The job holds at an operator stop (M0 / M1 / M6, machine::StopReason): the spindle and
+    // coolant go off when the profile says so (SpindleHold).
+    virtual void heldAtOperatorStop(machine::StopReason reason) = 0;
 
     // ---- context
     virtual double now() const = 0;

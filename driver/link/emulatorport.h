@@ -40,7 +40,9 @@ struct WireStats
 };
 
 // An emulated unit for a machine profile: its variant and maximum pulse rate, and a home switch
-// (IN0..IN3) for every homed axis, 5 mm from the counter's zero in the homing direction.
+// (IN0..IN3) for every homed axis, 5 mm from the counter's zero in the homing direction; the
+// machine model of its safety counters: the spindle's spin-up and the axes' maximum speeds (the
+// work surface is not known from a profile: set it where the program tells it).
 emulator::UnitOptions unitOptionsFor(const machine::MachineConfig &config);
 
 // The emulator's wire options for the driver's short form.

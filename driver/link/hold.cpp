@@ -5,6 +5,8 @@
 #include "driver/link/corehost.h"
 #include "driver/link/job.h"
 #include "driver/link/machinecore_internal.h"
+#include "driver/link/spindlehold.h"
+#include "driver/link/toollift.h"
 
 namespace frezka::driver {
 
@@ -17,12 +19,12 @@ MachineState &Hold::state()
     return m_host.liveState();
 }
 
-std::optional<MachineError> Hold::pause()
+std::optional<MachineError> Hold::pause(bool stopSpindle)
 {
     if (state().mode != MachineMode::Running)
         return notNow("Pause", state().mode);
     m_host.setMode(MachineMode::Stopping);
-    m_host.sendFront(cmd::halt(), [this](const Outcome &o) {
+    m_host.sendFront(cmd::halt(), [this, stopSpindle](const Outcome &o) {
         if (m_host.unitError(o, "pausing (H)", MachineMode::Alarm))
             return;
         m_needsGo = true;
@@ -30,7 +32,23 @@ std::optional<MachineError> Hold::pause()
         state().hold = HoldReason::User;
         state().holdText = "paused";
         m_host.setMode(MachineMode::Paused);
+        if (stopSpindle)
+            m_spindle.stop("pausing"); // only once the machine stands: never mid-cut
     });
+    return std::nullopt;
+}
+
+std::optional<MachineError> Hold::holdSpindle(bool stop)
+{
+    if (state().mode != MachineMode::Paused || !m_job.active())
+        return notNow(stop ? "Stopping the spindle of a held job" : "Starting the spindle again",
+                      state().mode);
+    if (m_resuming)
+        return refusal("the spindle is starting: the job continues after its spin-up");
+    if (stop)
+        m_spindle.stop("the operator asked while the job is held");
+    else
+        m_spindle.restore(nullptr);
     return std::nullopt;
 }
 
@@ -40,10 +58,32 @@ std::optional<MachineError> Hold::resume()
         return notNow("Resume", state().mode);
     if (m_job.verifying())
         return refusal("the job's progress is still being checked against the unit's counters");
-    if (state().hold == HoldReason::PathFault && m_job.active()) {
-        m_job.returnToPath();
-        return std::nullopt;
+    if (m_resuming)
+        return refusal("the spindle is starting: the job continues after its spin-up");
+    auto proceed = [this] {
+        m_resuming = false;
+        if (state().mode != MachineMode::Paused)
+            return; // aborted meanwhile
+        if (state().hold == HoldReason::PathFault && m_job.active()) {
+            m_job.returnToPath();
+            return;
+        }
+        goOn();
+    };
+    // The spindle (and coolant) first, at speed before the tool moves in the work again.
+    m_resuming = true;
+    if (m_spindle.stopped()) {
+        state().holdText = "the spindle starts; the job continues after its spin-up";
+        m_host.markDirty();
+        m_spindle.restore(proceed);
+    } else {
+        m_spindle.whenAtSpeed(proceed); // at once unless a spin-up is under way
     }
+    return std::nullopt;
+}
+
+void Hold::goOn()
+{
     auto running = [this] {
         state().hold = HoldReason::None;
         state().holdText.clear();
@@ -52,7 +92,7 @@ std::optional<MachineError> Hold::resume()
     };
     if (!m_needsGo) {
         running();
-        return std::nullopt;
+        return;
     }
     m_host.send(cmd::go(), [this, running](const Outcome &o) {
         // 6 = nothing to continue: the queue ran out while braking; the job streams on.
@@ -67,7 +107,6 @@ std::optional<MachineError> Hold::resume()
         state().inta = false;
         running();
     });
-    return std::nullopt;
 }
 
 std::optional<MachineError> Hold::abort()
@@ -79,24 +118,36 @@ std::optional<MachineError> Hold::abort()
     case MachineMode::Jogging:
     case MachineMode::Alarm:
     case MachineMode::Homing:
+    case MachineMode::ToolLifted:
         break;
     default:
         if (!m_job.active())
             return notNow("Abort", state().mode);
     }
-    if (state().mode == MachineMode::ToolLifted)
-        return refusal("lower the tool first: the job's queue is kept in the unit (K)");
     m_host.dropPending();
     const bool wasJob = m_job.active();
+    const bool kept = m_lift.kept(); // the job's queue aside in the unit (K): back, then dropped
     m_job.abandon();
+    m_lift.abandon();
+    m_resuming = false;
     m_host.setMode(MachineMode::Stopping);
     m_host.send(cmd::halt(), [this](const Outcome &o) {
         m_host.unitError(o, "stopping (H)", MachineMode::Alarm);
     });
+    if (kept) {
+        m_host.send(cmd::restore(), [this](const Outcome &o) {
+            m_host.unitError(o, "taking the kept queue back to drop it (R)", MachineMode::Alarm);
+        });
+    }
+    // The spindle and coolant off once the machine stands, whatever a hold had remembered.
+    m_spindle.forget();
+    m_spindle.stop("aborting");
+    m_spindle.forget();
     m_host.send(cmd::deleteQueue(), [this, wasJob](const Outcome &o) {
         if (m_host.unitError(o, "dropping the queue (D)", MachineMode::Alarm))
             return;
         m_needsGo = false;
+        state().inta = false;
         state().hold = HoldReason::None;
         state().holdText.clear();
         m_host.setMode(MachineMode::Idle);

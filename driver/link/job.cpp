@@ -357,6 +357,8 @@ void Job::operatorStop(const machine::UnitCommand &c, std::size_t index)
         state.hold = HoldReason::OperatorStop;
         state.holdText = lineText(m_program.commands[index]) + ": " + text;
         m_host.setMode(MachineMode::Paused);
+        m_host.heldAtOperatorStop(
+            static_cast<machine::StopReason>(m_program.commands[index].value));
     });
 }
 

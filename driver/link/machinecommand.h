@@ -24,25 +24,35 @@ struct Run
     machine::UnitProgram program;
     friend bool operator==(const Run &, const Run &) = default;
 };
-struct Pause // H: brake along the ramp, keep the queue
+struct Pause // H: brake along the ramp, keep the queue; then spindle and coolant off if asked
 {
+    bool stopSpindle = false;
     friend bool operator==(const Pause &, const Pause &) = default;
+};
+// While a job is held (Paused): the spindle and coolant off (stop) or on again as they were
+// (after the spin-up the job may continue). The operator's "Stop the spindle" box.
+struct HoldSpindle
+{
+    bool stop = true;
+    friend bool operator==(const HoldSpindle &, const HoldSpindle &) = default;
 };
 struct Resume // G (after a pause, an interrupt, M0/M1/M6); off the path: return to it
 {
     friend bool operator==(const Resume &, const Resume &) = default;
 };
-struct Abort // H, D: stop and drop the rest of the job
+struct Abort // H, D (R first when the tool is lifted), spindle and coolant off: the job ends
 {
     friend bool operator==(const Abort &, const Abort &) = default;
 };
-// While paused: K, Z up by the profile's toolLiftMm (within the soft limit), optional spindle stop.
+// While paused: K, Z up by the profile's toolLiftMm (within the soft limit), spindle and coolant
+// off (always: issue 14). While lifted, JogStep moves the tool away and back.
 struct ToolLift
 {
-    bool stopSpindle = false;
+    bool stopSpindle = true; // the operator's box, for the log; the lift stops the spindle anyway
     friend bool operator==(const ToolLift &, const ToolLift &) = default;
 };
-// Z back down, R, optional new speed (V + XA) when speedPulsesPerS > 0.
+// Spindle and coolant on again (the spin-up waited), back to the lift point, Z down, R, optional
+// new speed (V + XA) when speedPulsesPerS > 0.
 struct ToolLower
 {
     int speedPulsesPerS = 0;
@@ -116,6 +126,7 @@ struct WriteEeprom // the profile's EEPROM settings to the unit, then compared a
 using MachineCommand =
     std::variant<op::Run, op::Pause, op::Resume, op::Abort, op::ToolLift, op::ToolLower, op::Home,
                  op::JogStep, op::JogContinuous, op::JogStop, op::SetMpg, op::SetSpindleRpm,
-                 op::SetOutputs, op::SetOverride, op::OverrideStep, op::SendRaw, op::WriteEeprom>;
+                 op::SetOutputs, op::SetOverride, op::OverrideStep, op::SendRaw, op::WriteEeprom,
+                 op::HoldSpindle>;
 
 } // namespace frezka::driver

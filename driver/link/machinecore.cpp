@@ -138,6 +138,9 @@ void MachineCore::onOutcome(const Outcome &o)
     if (!o.commands.empty() &&
         (o.commands.front().op == Op::Halt || o.commands.front().op == Op::Home))
         m_haltPending = false;
+    // What the unit drives now, whoever sent it (job, buttons, console, holds): issue 14.
+    if (o.status == OutcomeStatus::Ok && o.reply.ok() && !o.packet && !o.commands.empty())
+        m_dirty = noteOutputsAccepted(m_state, o.commands.front(), m_config) || m_dirty;
     Then then = std::move(m_inFlight);
     m_inFlight = nullptr;
     if (then)
@@ -155,6 +158,8 @@ double MachineCore::deadline() const
     double d = m_engine.deadline();
     if (!m_open)
         return d;
+    for (const auto &t : m_timers)
+        d = std::min(d, t.first);
     if (m_engine.idle()) {
         d = std::min(d, m_haltPending ? kNoDeadline : m_poller.nextTime());
         if (m_job.waitUntil() > m_now)
@@ -177,9 +182,35 @@ void MachineCore::onTime(double now)
     pump(now);
 }
 
+void MachineCore::runDueTimers()
+{
+    for (;;) {
+        auto due = std::find_if(m_timers.begin(), m_timers.end(),
+                                [this](const auto &t) { return t.first <= m_now; });
+        if (due == m_timers.end())
+            return;
+        std::function<void()> then = std::move(due->second);
+        m_timers.erase(due);
+        if (then)
+            then();
+    }
+}
+
+void MachineCore::afterDelay(double seconds, std::function<void()> then)
+{
+    m_timers.emplace_back(m_now + std::max(0.0, seconds), std::move(then));
+}
+
+void MachineCore::heldAtOperatorStop(machine::StopReason reason)
+{
+    m_spindle.atOperatorStop(reason);
+}
+
 void MachineCore::pump(double now)
 {
     m_now = now;
+    if (m_open)
+        runDueTimers();
     while (m_open && m_engine.idle()) {
         if (!m_steps.empty()) {
             Step s = std::move(m_steps.front());
@@ -299,6 +330,7 @@ void MachineCore::startPacket(std::vector<Command> packet, Then then)
 
 void MachineCore::dropPending()
 {
+    m_timers.clear();
     m_steps.clear();
     m_idleWaiters.clear();
     m_jobIdleWaiters.clear();
@@ -371,13 +403,16 @@ MachineCore::Result MachineCore::execute(MachineCommand command, double now)
     return std::visit(
         Overloaded{
             [&](op::Run &c) { return runJob(std::move(c.program), now); },
-            [&](op::Pause &) { return accepted(m_hold.pause(), now); },
+            [&](op::Pause &c) { return accepted(m_hold.pause(c.stopSpindle), now); },
+            [&](op::HoldSpindle &c) { return accepted(m_hold.holdSpindle(c.stop), now); },
             [&](op::Resume &) { return accepted(m_hold.resume(), now); },
             [&](op::Abort &) { return accepted(m_hold.abort(), now); },
             [&](op::ToolLift &c) { return accepted(m_toolLift.lift(c.stopSpindle), now); },
             [&](op::ToolLower &c) { return accepted(m_toolLift.lower(c.speedPulsesPerS), now); },
             [&](op::Home &c) { return startHoming(c.axisMask, now); },
             [&](op::JogStep &c) {
+                if (m_state.mode == MachineMode::ToolLifted) // away from the work and back
+                    return accepted(m_toolLift.jog(c.axis, c.distanceMm, c.speedMmPerMin), now);
                 return accepted(m_jog.step(c.axis, c.distanceMm, c.speedMmPerMin), now);
             },
             [&](op::JogContinuous &c) {
@@ -447,6 +482,7 @@ void MachineCore::linkOpened(double now)
     m_haltPending = false;
     m_jobIdleWaiters.clear();
     m_stopWaiters.clear();
+    m_timers.clear();
     m_job.linkOpened();
     setMode(MachineMode::Connecting);
     m_connect.start();
@@ -461,6 +497,7 @@ void MachineCore::linkClosed(const std::string &why, double now)
     m_engine.reset();
     m_steps.clear();
     m_idleWaiters.clear();
+    m_timers.clear();
     m_inFlight = nullptr;
     m_haltPending = false;
     if (m_job.active()) {

@@ -31,6 +31,8 @@
 //     PathGuard, ReturnToPath       off the planned path, and back  PathFault, ReturnToPath
 //   ToolLift                        K, lift, lower, R in a held job  ToolLift
 //   Hold                            pause, resume, abort, input interrupts
+//   SpindleHold                     spindle and coolant off for a hold, on again (spin-up) before
+//                                   the work
 //   UnitControls                    MPG, spindle, outputs, override, raw commands
 //   Poller                          step 2 above
 //
@@ -50,6 +52,7 @@
 #include "driver/link/machinecommand.h"
 #include "driver/link/machinestate.h"
 #include "driver/link/poller.h"
+#include "driver/link/spindlehold.h"
 #include "driver/link/toollift.h"
 #include "driver/link/unitcontrols.h"
 #include "machine/machineconfig.h"
@@ -84,7 +87,11 @@ public:
     {
         return execute(op::Run{std::move(program)}, now);
     }
-    Result pause(double now) { return execute(op::Pause{}, now); }
+    Result pause(double now, bool stopSpindle = false)
+    {
+        return execute(op::Pause{stopSpindle}, now);
+    }
+    Result holdSpindle(bool stop, double now) { return execute(op::HoldSpindle{stop}, now); }
     Result resume(double now) { return execute(op::Resume{}, now); }
     Result abort(double now) { return execute(op::Abort{}, now); }
     Result toolLift(bool stopSpindle, double now)
@@ -154,6 +161,7 @@ private:
     // Runs `then` when F shows RUN = 0 or INTA = 1 (an interrupt braking a move).
     void afterStopOrInterrupt(std::function<void()> then) override;
     void whenStill(std::function<void()> then) override;
+    void afterDelay(double seconds, std::function<void()> then) override;
     MachineState &liveState() override { return m_state; }
     void markDirty() override { m_dirty = true; }
     void setMode(MachineMode mode) override;
@@ -167,6 +175,7 @@ private:
     protocol::Command positionCommand() const override;
     void setHoldNeedsGo(bool on) override { m_hold.setNeedsGo(on); }
     void setHaltExpected(bool on) override { m_haltExpected = on; }
+    void heldAtOperatorStop(machine::StopReason reason) override;
     double now() const override { return m_now; }
     double rttS() const override { return m_poller.rttS(); }
     void restartPollCount() override { m_poller.restartCount(); }
@@ -180,6 +189,7 @@ private:
     bool streaming() const { return m_job.streaming(m_now); }
     MachineActivity currentActivity() const;
     void checkIdleWaiters();
+    void runDueTimers();
 
     void readPositionAndStatus(std::function<void()> then) override;
 
@@ -200,6 +210,7 @@ private:
     std::vector<std::function<void()>> m_idleWaiters; // run when F shows RUN = 0
     std::vector<std::function<void()>> m_jobIdleWaiters; // the same, only while the job runs
     std::vector<std::function<void()>> m_stopWaiters;    // RUN = 0 or INTA = 1
+    std::vector<std::pair<double, std::function<void()>>> m_timers; // afterDelay: (when, what)
     bool m_open = false;
 
     // polling
@@ -210,11 +221,12 @@ private:
     // the job (job.h) and its parts
     Job m_job{*this};
 
-    ToolLift m_toolLift{*this, m_job};
+    SpindleHold m_spindle{*this};
+    ToolLift m_toolLift{*this, m_job, m_spindle};
     HomingCycle m_homing{*this};
     EepromSync m_eeprom{*this};
     ConnectSequence m_connect{*this, m_job, m_eeprom};
-    Hold m_hold{*this, m_job};
+    Hold m_hold{*this, m_job, m_spindle, m_toolLift};
     UnitControls m_controls{*this, m_job};
     Poller m_poller{*this, m_job, m_toolLift};
     Jog m_jog{*this};

@@ -2,6 +2,8 @@
 
 #include "machinestate.h"
 
+#include <tuple>
+
 namespace frezka::driver {
 
 const char *machineModeName(MachineMode mode)
@@ -31,6 +33,39 @@ const char *machineModeName(MachineMode mode)
         return "Link lost";
     }
     return "?";
+}
+
+bool noteOutputsAccepted(MachineState &state, const protocol::Command &c,
+                         const machine::MachineConfig &config)
+{
+    using protocol::Op;
+    const auto was = std::make_tuple(state.outputs, state.spindlePermille, state.spindleOn);
+    const auto changed = [&] {
+        return was != std::make_tuple(state.outputs, state.spindlePermille, state.spindleOn);
+    };
+    if (c.op == Op::SpindleSpeed && c.address == 7) {
+        state.spindlePermille = static_cast<int>(c.args[0]);
+        state.spindleRpm = config.spindle.maxRpm * static_cast<double>(c.args[0]) / 1000.0;
+        state.outputs =
+            static_cast<std::uint8_t>(c.args[0] > 0 ? state.outputs & 0xFE : state.outputs | 0x01);
+        state.spindleOn = c.args[0] > 0;
+        return changed();
+    }
+    if (c.op != Op::Output)
+        return false;
+    state.outputs = static_cast<std::uint8_t>(c.args[0]);
+    if (!protocol::variantInfo(config.unit.variant).hasSpindleAddress7) {
+        const std::uint8_t relay = machine::outputBit(config, machine::OutputFunction::Spindle);
+        state.spindleOn = relay != 0 && !(state.outputs & relay);
+        if (!state.spindleOn) {
+            state.spindlePermille = 0;
+            state.spindleRpm = 0;
+        }
+    } else {
+        // OUT0 switches the spindle's power; its speed stays the last !7V.
+        state.spindleOn = state.spindlePermille > 0 && !(state.outputs & 0x01);
+    }
+    return changed();
 }
 
 const char *machineActivityName(MachineActivity activity)

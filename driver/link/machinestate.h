@@ -6,6 +6,7 @@
 // unit's counters) and in mm (steps / steps-per-mm of the profile; A in degrees).
 
 #include "driver/link/linkengine.h"
+#include "machine/machineconfig.h"
 #include "protocol/variant.h"
 
 #include <array>
@@ -56,6 +57,13 @@ enum class MachineActivity : std::uint8_t {
 
 // English name ("Return to path"), for logs and tests.
 const char *machineActivityName(MachineActivity activity);
+
+struct MachineState;
+// The unit accepted `c`: the spindle and port 0 as it drives them now (docs/gve-protocol.md §9:
+// !7V0 also switches OUT0 off, !7V1..1000 on; a GVE84 switches its spindle with the profile's
+// relay on port 0). Other commands change nothing. True when something changed.
+bool noteOutputsAccepted(MachineState &state, const protocol::Command &c,
+                         const machine::MachineConfig &config);
 
 // Why a job is held (mode Paused / ToolLifted).
 enum class HoldReason : std::uint8_t {
@@ -110,9 +118,13 @@ struct MachineState
     std::uint8_t inputs1 = 0;          // I1: IN0..IN7
     std::uint8_t inputs2 = 0;          // I2: bit6 IN14, bit7 IN15
     std::uint16_t interruptInputs = 0; // ST4 | ST5 << 8 of the last interrupt
-    std::uint8_t outputs = 0xFF;       // port 0 as last written (active low)
-    int spindlePermille = 0;
+    // Outputs as the unit drives them: every accepted !7V and O0 (the job's, the buttons', the
+    // console's, the holds'); the unit has no command that reads port 0 back (issue 14).
+    std::uint8_t outputs = 0xFF; // port 0 (active low): bit0 OUT0, bit1 OUT3, bit2 OUT1, bit3 OUT2
+    int spindlePermille = 0;     // last !7V (GVE84: as the buttons asked for it)
     double spindleRpm = 0;
+    bool spindleOn = false;   // the spindle turns: !7V > 0 with OUT0 on, or the GVE84's relay on
+    bool outputsHeld = false; // a hold switched the spindle / coolant off: they go on again first
     int overridePercent = 100;
     bool mpgOn = false;
 

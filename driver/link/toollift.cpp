@@ -1,23 +1,34 @@
-// ToolLift: K, L up, [operator], L down, R, [V, XA] in a held job. See toollift.h.
+// ToolLift: K, L up, spindle off, [hand moves], spindle on, back, L down, R, [V, XA] in a held
+// job. See toollift.h.
 
 #include "toollift.h"
 
 #include "driver/link/corehost.h"
 #include "driver/link/job.h"
 #include "driver/link/machinecore_internal.h"
+#include "driver/link/spindlehold.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace frezka::driver {
 
 using namespace frezka::protocol;
 using detail::notNow;
 using detail::refusal;
+using detail::stepsText;
 
 MachineState &ToolLift::state()
 {
     return m_host.liveState();
 }
+
+namespace {
+Command lineFor(const machine::Steps4 &d, int axes)
+{
+    return axes == 4 ? cmd::line(d[0], d[1], d[2], d[3]) : cmd::line(d[0], d[1], d[2]);
+}
+} // namespace
 
 std::optional<MachineError> ToolLift::lift(bool stopSpindle)
 {
@@ -37,10 +48,10 @@ std::optional<MachineError> ToolLift::lift(bool stopSpindle)
     m_liftSteps = std::min(m_host.stepsFromMm(2, liftMm), std::max<std::int64_t>(0, top - now_z));
     if (m_liftSteps == 0)
         return refusal("Z is at its upper soft limit: no room to lift the tool");
-    m_spindleStopped = stopSpindle && state().spindlePermille > 0;
-    const int permille = state().spindlePermille;
-    m_liftSpindle = permille;
+    if (!stopSpindle && state().spindleOn)
+        m_host.log("the spindle and coolant go off for the lifted tool all the same");
     m_active = true;
+    m_jogged = m_moving = false;
     m_host.setMode(MachineMode::Stopping);
     m_host.send(cmd::statusRead(4), [this](const Outcome &o) {
         if (o.status == OutcomeStatus::Ok && o.reply.ok())
@@ -51,20 +62,75 @@ std::optional<MachineError> ToolLift::lift(bool stopSpindle)
             return;
         m_kept = true;
     });
-    if (m_spindleStopped)
-        m_host.send(cmd::spindle(0), [this](const Outcome &o) {
-            if (!m_host.unitError(o, "stopping the spindle", MachineMode::Alarm))
-                state().spindlePermille = 0;
-        });
-    const int axes = state().axisCount;
-    const Command up = axes == 4 ? cmd::line(0, 0, m_liftSteps, 0) : cmd::line(0, 0, m_liftSteps);
+    const Command up = lineFor({0, 0, m_liftSteps, 0}, state().axisCount);
     m_host.send(up, [this](const Outcome &o) {
-        if (m_host.unitError(o, "lifting the tool", MachineMode::Alarm))
+        if (!m_active || m_host.unitError(o, "lifting the tool", MachineMode::Alarm))
+            return;
+        m_host.afterIdle([this] { lifted(); });
+    });
+    return std::nullopt;
+}
+
+// Up and standing: the spindle and coolant off, the lift point read from the counters.
+void ToolLift::lifted()
+{
+    if (!m_active)
+        return;
+    m_spindle.stop("the tool is lifted");
+    m_host.whenStill([this] {
+        if (!m_active)
+            return;
+        m_liftPoint = state().positionSteps;
+        state().hold = HoldReason::User;
+        state().holdText = "tool lifted";
+        m_host.setMode(MachineMode::ToolLifted);
+    });
+}
+
+int ToolLift::handSpeed(double mmPerMin) const
+{
+    const machine::MachineConfig &config = m_host.config();
+    double rate = config.unit.maxPulseRate;
+    for (int a = 0; a < m_host.liveState().axisCount; ++a) {
+        const machine::AxisConfig &ax = config.axes[static_cast<std::size_t>(a)];
+        rate = std::min(rate, ax.maxSpeedMmPerMin / 60.0 * ax.stepsPerMm);
+        if (mmPerMin > 0)
+            rate = std::min(rate, mmPerMin / 60.0 * ax.stepsPerMm);
+    }
+    return static_cast<int>(
+        std::clamp<long long>(std::llround(std::floor(rate)), 10, config.unit.maxPulseRate));
+}
+
+std::optional<MachineError> ToolLift::jog(int axis, double distanceMm, double speedMmPerMin)
+{
+    if (state().mode != MachineMode::ToolLifted || !m_active)
+        return notNow("Moving the lifted tool", state().mode);
+    if (m_moving)
+        return refusal("the lifted tool is still moving");
+    if (axis < 0 || axis >= state().axisCount)
+        return refusal("this machine has no such axis");
+    const machine::AxisConfig &ax = m_host.config().axes[static_cast<std::size_t>(axis)];
+    const std::int64_t at = state().positionSteps[static_cast<std::size_t>(axis)];
+    const std::int64_t target =
+        std::clamp(at + m_host.stepsFromMm(axis, distanceMm),
+                   m_host.stepsFromMm(axis, ax.softMinMm), m_host.stepsFromMm(axis, ax.softMaxMm));
+    if (target == at)
+        return refusal("the axis is at its soft limit in that direction");
+    machine::Steps4 d{};
+    d[static_cast<std::size_t>(axis)] = target - at;
+    m_moving = m_jogged = true;
+    m_host.markDirty();
+    m_host.send(cmd::speed(handSpeed(speedMmPerMin)), [this](const Outcome &o) {
+        m_host.unitError(o, "setting the speed of the hand move", MachineMode::Alarm);
+    });
+    m_host.send(lineFor(d, state().axisCount), [this](const Outcome &o) {
+        if (!m_active || m_host.unitError(o, "moving the lifted tool", MachineMode::Alarm))
             return;
         m_host.afterIdle([this] {
-            state().hold = HoldReason::User;
-            state().holdText = "tool lifted";
-            m_host.setMode(MachineMode::ToolLifted);
+            m_host.whenStill([this] {
+                m_moving = false;
+                m_host.markDirty();
+            });
         });
     });
     return std::nullopt;
@@ -75,50 +141,128 @@ std::optional<MachineError> ToolLift::lower(int speedPulsesPerS)
     const machine::MachineConfig &config = m_host.config();
     if (state().mode != MachineMode::ToolLifted)
         return notNow("Lowering the tool", state().mode);
+    if (m_moving)
+        return refusal("the lifted tool is still moving: lower it when it stands");
     if (speedPulsesPerS > 0) {
         if (auto bad = validate(cmd::speed(speedPulsesPerS), config.unit.variant,
                                 config.unit.maxPulseRate))
             return refusal(bad.message);
     }
     m_host.setMode(MachineMode::Stopping);
-    if (m_spindleStopped) {
-        m_host.send(cmd::spindle(m_liftSpindle), [this](const Outcome &o) {
-            if (!m_host.unitError(o, "starting the spindle", MachineMode::Alarm))
-                state().spindlePermille = m_liftSpindle;
-        });
+    state().holdText = "lowering the tool";
+    // The spindle at speed before anything moves toward the work again.
+    m_spindle.restore([this, speedPulsesPerS] {
+        if (!m_active)
+            return;
+        const machine::Steps4 from = state().positionSteps;
+        const machine::Steps4 &to = m_liftPoint;
+        const std::int64_t high = std::max(from[2], to[2]);
+        m_moves.clear();
+        auto add = [this](machine::Steps4 d) {
+            if (std::any_of(d.begin(), d.end(), [](std::int64_t v) { return v != 0; }))
+                m_moves.push_back(d);
+        };
+        add({0, 0, high - from[2], 0});
+        add({to[0] - from[0], to[1] - from[1], 0, to[3] - from[3]});
+        add({0, 0, to[2] - high, 0});
+        if (!m_moves.empty()) {
+            m_host.log("back to the lift point: " + stepsText(from, state().axisCount) + " -> " +
+                       stepsText(to, state().axisCount));
+            m_host.send(cmd::speed(handSpeed(0)), [this](const Outcome &o) {
+                m_host.unitError(o, "setting the speed back to the lift point", MachineMode::Alarm);
+            });
+            m_jogged = true;
+        }
+        moveBack(0, speedPulsesPerS);
+    });
+    return std::nullopt;
+}
+
+// Each L from rest to rest, then the counters must read the lift point exactly.
+void ToolLift::moveBack(std::size_t k, int speedPulsesPerS)
+{
+    if (!m_active)
+        return;
+    if (k < m_moves.size()) {
+        m_host.send(
+            lineFor(m_moves[k], state().axisCount), [this, k, speedPulsesPerS](const Outcome &o) {
+                if (!m_active ||
+                    m_host.unitError(o, "moving back to the lift point", MachineMode::Alarm))
+                    return;
+                m_host.afterIdle([this, k, speedPulsesPerS] { moveBack(k + 1, speedPulsesPerS); });
+            });
+        return;
     }
-    const int axes = state().axisCount;
-    const Command down =
-        axes == 4 ? cmd::line(0, 0, -m_liftSteps, 0) : cmd::line(0, 0, -m_liftSteps);
-    m_host.send(down, [this, speedPulsesPerS](const Outcome &o) {
-        if (m_host.unitError(o, "lowering the tool", MachineMode::Alarm))
+    m_host.whenStill([this, speedPulsesPerS] {
+        if (!m_active)
+            return;
+        for (int a = 0; a < state().axisCount; ++a) {
+            if (state().positionSteps[static_cast<std::size_t>(a)] !=
+                m_liftPoint[static_cast<std::size_t>(a)]) {
+                m_host.fail("the tool did not arrive back at the lift point (" +
+                                stepsText(state().positionSteps, state().axisCount) +
+                                " instead of " + stepsText(m_liftPoint, state().axisCount) +
+                                "); abort the job and check the machine",
+                            nullptr, MachineMode::Alarm);
+                return;
+            }
+        }
+        if (!m_jogged) {
+            down(speedPulsesPerS);
+            return;
+        }
+        // A hand move set its own V: the job's speed settings again before its queue runs on.
+        m_jogged = false;
+        m_job.progress().resendModals([this, speedPulsesPerS] { down(speedPulsesPerS); });
+    });
+}
+
+void ToolLift::down(int speedPulsesPerS)
+{
+    if (!m_active)
+        return;
+    const Command l = lineFor({0, 0, -m_liftSteps, 0}, state().axisCount);
+    m_host.send(l, [this, speedPulsesPerS](const Outcome &o) {
+        if (!m_active || m_host.unitError(o, "lowering the tool", MachineMode::Alarm))
             return;
         m_host.afterIdle([this, speedPulsesPerS] {
+            if (!m_active)
+                return;
             m_host.sendFront(cmd::restore(), [this, speedPulsesPerS](const Outcome &r) {
                 if (m_host.unitError(r, "restoring the queue (R)", MachineMode::Alarm))
                     return;
                 m_kept = false;
-                if (speedPulsesPerS > 0) {
-                    m_host.send(cmd::speed(speedPulsesPerS), [this](const Outcome &v) {
-                        m_host.unitError(v, "setting the new speed", MachineMode::Alarm);
-                    });
-                    m_host.send(cmd::exchangeAll(), [this](const Outcome &x) {
-                        m_host.unitError(x, "applying the new speed (XA)", MachineMode::Alarm);
-                    });
-                }
-                m_host.send(cmd::flag(), [this](const Outcome &f) {
-                    if (m_host.unitError(f, "status", MachineMode::Alarm))
-                        return;
-                    m_host.applyFlags(*f.reply.hexValue());
-                    m_host.setHoldNeedsGo(state().inta);
-                    m_active = false;
-                    state().holdText = "tool lowered";
-                    m_host.setMode(MachineMode::Paused);
-                });
+                restored(speedPulsesPerS);
             });
         });
     });
-    return std::nullopt;
+}
+
+void ToolLift::restored(int speedPulsesPerS)
+{
+    if (speedPulsesPerS > 0) {
+        m_host.send(cmd::speed(speedPulsesPerS), [this](const Outcome &v) {
+            m_host.unitError(v, "setting the new speed", MachineMode::Alarm);
+        });
+        m_host.send(cmd::exchangeAll(), [this](const Outcome &x) {
+            m_host.unitError(x, "applying the new speed (XA)", MachineMode::Alarm);
+        });
+    }
+    m_host.send(cmd::flag(), [this](const Outcome &f) {
+        if (m_host.unitError(f, "status", MachineMode::Alarm))
+            return;
+        m_host.applyFlags(*f.reply.hexValue());
+        m_host.setHoldNeedsGo(state().inta);
+        m_active = false;
+        state().holdText = "tool lowered";
+        m_host.setMode(MachineMode::Paused);
+    });
+}
+
+void ToolLift::abandon()
+{
+    m_active = m_kept = m_moving = m_jogged = false;
+    m_moves.clear();
 }
 
 } // namespace frezka::driver

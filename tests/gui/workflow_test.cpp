@@ -20,7 +20,9 @@
 #include "driver/link/machinecontroller.h"
 #include "session/runworkflow.h"
 
+#include <QCheckBox>
 #include <QDir>
+#include <QLabel>
 #include <QProcess>
 #include <QPushButton>
 #include <QSettings>
@@ -234,6 +236,65 @@ M30
         QTRY_COMPARE_WITH_TIMEOUT(state().spindlePermille, 0, 10000);
         button(m_window->outputsPanel(), "coolant")->click();
         QTRY_VERIFY_WITH_TIMEOUT((state().outputs & bit) != 0, 10000);
+    }
+
+    // Issue 14: the lights and buttons show what the program switched on the unit (M3, M8),
+    // and a pause with "Stop the spindle" ticked switches the spindle off and says so.
+    void outputsFollowTheProgram()
+    {
+        QVERIFY(waitIdle());
+        const QString path = writeProgram(QStringLiteral("m3m8.nc"), R"(G21 G90
+M3 S12000
+M8
+G0 X5 Y5
+G1 Z-5 F600
+G1 X60 F600
+G1 Y30
+G0 Z-1
+M9
+M5
+M30
+)");
+        QVERIFY(load(path));
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        const std::uint8_t coolant =
+            machine::outputBit(m_window->profile(), machine::OutputFunction::Coolant);
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running && state().spindleOn &&
+                                     (state().outputs & coolant) == 0,
+                                 kMachineTimeoutMs);
+        QTRY_VERIFY(m_window->ioPanel()->outputLed(0)); // OUT0: the spindle
+        QTRY_VERIFY(m_window->ioPanel()->outputLed(1)); // OUT1: coolant in the default profile
+        QTRY_VERIFY(button(m_window->outputsPanel(), "spindle")->isChecked());
+        QTRY_VERIFY(button(m_window->outputsPanel(), "coolant")->isChecked());
+        button(m_window->runPanel(), "pause")->click();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->holdBanner()->kind(), HoldBanner::Kind::Paused,
+                                  kMachineTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!state().spindleOn && state().outputsHeld, kMachineTimeoutMs);
+        QTRY_VERIFY(!m_window->ioPanel()->outputLed(0));
+        QTRY_VERIFY(!m_window->ioPanel()->outputLed(1));
+        QTRY_VERIFY(!button(m_window->outputsPanel(), "spindle")->isChecked());
+        QVERIFY(m_window->holdBanner()
+                    ->findChild<QLabel *>(QStringLiteral("holdSpindle"))
+                    ->text()
+                    .contains(QStringLiteral("off for the hold")));
+        // Unticking the box switches them on again at once, ticking it off again.
+        auto *box =
+            m_window->holdBanner()->findChild<QCheckBox *>(QStringLiteral("holdStopSpindle"));
+        QVERIFY(box && box->isChecked());
+        box->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().spindleOn && (state().outputs & coolant) == 0,
+                                 kMachineTimeoutMs);
+        QTRY_VERIFY(m_window->ioPanel()->outputLed(0));
+        box->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!state().spindleOn && state().outputsHeld, kMachineTimeoutMs);
+        button(m_window->holdBanner(), "holdContinue")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().spindleOn, kMachineTimeoutMs);
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QTRY_VERIFY(!m_window->ioPanel()->outputLed(0));
+        QTRY_VERIFY(!m_window->ioPanel()->outputLed(1));
+        QTRY_VERIFY(!button(m_window->outputsPanel(), "coolant")->isChecked());
     }
 
     void feedOverrideReachesTheUnit()

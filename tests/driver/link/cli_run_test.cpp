@@ -106,6 +106,70 @@ private slots:
         emu.waitForFinished(5000);
     }
 
+    // Issue 14: a cut with the spindle and coolant, held at line 8 by the scripted operator.
+    QString spindleJob()
+    {
+        return write(QStringLiteral("spindle.nc"), "G21 G90\n"
+                                                   "M3 S12000\n"
+                                                   "M8\n"
+                                                   "G0 X10 Y10\n"
+                                                   "G0 Z-8\n"
+                                                   "G1 Z-10 F300\n"
+                                                   "G1 X40 F600\n"
+                                                   "G1 Y40\n"
+                                                   "G1 X10\n"
+                                                   "G1 Y10\n"
+                                                   "G0 Z0\n"
+                                                   "M9\n"
+                                                   "M5\n"
+                                                   "M2\n");
+    }
+
+    void holdAtLineWithLift()
+    {
+        const Run plain = cli({spindleJob()});
+        QCOMPARE(plain.code, 0);
+        const Run held = cli({spindleJob(), QStringLiteral("--hold-at-line"), QStringLiteral("8"),
+                              QStringLiteral("--lift")});
+        QVERIFY2(held.code == 0, held.err.constData());
+        const QJsonObject j = lastJson(held.out);
+        QCOMPARE(j[QStringLiteral("final_steps")].toArray(),
+                 j[QStringLiteral("expected_steps")].toArray());
+        for (const char *key :
+             {"cut_without_spindle", "spindle_on_while_held", "axis_over_max", "brake_violations"})
+            QVERIFY2(j[QLatin1String(key)].isDouble() && j[QLatin1String(key)].toInt() == 0, key);
+        QCOMPARE(j[QStringLiteral("spindle_on_at_end")].toBool(), false);
+        // The hold really happened: 5 s of waiting and 2 s of spin-up more than the plain run.
+        QVERIFY(j[QStringLiteral("job_s")].toDouble() >
+                lastJson(plain.out)[QStringLiteral("job_s")].toDouble() + 7);
+        const Run paused =
+            cli({spindleJob(), QStringLiteral("--hold-at-line"), QStringLiteral("8")});
+        QVERIFY2(paused.code == 0, paused.err.constData());
+        QCOMPARE(lastJson(paused.out)[QStringLiteral("cut_without_spindle")].toInt(), 0);
+        QCOMPARE(lastJson(paused.out)[QStringLiteral("spindle_on_while_held")].toInt(), 0);
+    }
+
+    void feedOverride()
+    {
+        const Run plain = cli({spindleJob()});
+        const Run faster =
+            cli({spindleJob(), QStringLiteral("--feed-override"), QStringLiteral("150")});
+        QVERIFY2(faster.code == 0, faster.err.constData());
+        const QJsonObject j = lastJson(faster.out);
+        QCOMPARE(j[QStringLiteral("final_steps")].toArray(),
+                 j[QStringLiteral("expected_steps")].toArray());
+        QVERIFY(j[QStringLiteral("axis_over_max")].isDouble());
+        QVERIFY(j[QStringLiteral("job_s")].toDouble() <
+                0.9 * lastJson(plain.out)[QStringLiteral("job_s")].toDouble());
+        QCOMPARE(cli({spindleJob(), QStringLiteral("--feed-override"), QStringLiteral("0")}).code,
+                 2);
+        QCOMPARE(cli({spindleJob(), QStringLiteral("--lift")}).code, 2); // a lift needs a hold
+        QCOMPARE(cli({spindleJob(), QStringLiteral("--hold-at-line"), QStringLiteral("3"),
+                      QStringLiteral("--clock"), QStringLiteral("real")})
+                     .code,
+                 2); // the scripted operator plays on the virtual clock only
+    }
+
     void errors()
     {
         const Run bad = cli({write(QStringLiteral("bad.nc"), "G21\nG1 X10 Q\n")});
