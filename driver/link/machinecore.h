@@ -44,6 +44,7 @@
 #include "driver/link/eepromsync.h"
 #include "driver/link/hold.h"
 #include "driver/link/homingcycle.h"
+#include "driver/link/inputhoming.h"
 #include "driver/link/job.h"
 #include "driver/link/jog.h"
 #include "driver/link/linkengine.h"
@@ -183,6 +184,7 @@ private:
 
     // operations (machinecore.cpp)
     Result accepted(Result refused, double now); // pumps when nothing was refused
+    Result moving(const std::function<Result()> &operation, double now); // Y- first (InputHoming)
     Result runJob(machine::UnitProgram program, double now);
     Result startHoming(unsigned axisMask, double now);
     double mmFromSteps(int axis, std::int64_t steps) const;
@@ -216,6 +218,7 @@ private:
     UnitControls m_controls{*this, m_job};
     Poller m_poller{*this, m_job, m_toolLift};
     Jog m_jog{*this};
+    InputHoming m_inputHoming{*this}; // Y& while idle, Y- before motion (homing from an input)
 };
 
 } // namespace frezka::driver

@@ -20,6 +20,7 @@
 #include "driver/link/machinecontroller.h"
 #include "session/runworkflow.h"
 
+#include <QApplication>
 #include <QDir>
 #include <QProcess>
 #include <QPushButton>
@@ -431,6 +432,54 @@ M30
                  qPrintable(said.join(QLatin1Char('|'))));
         QVERIFY(waitIdle());
         QVERIFY(std::abs(state().positionMm[0] - (x0 + 1)) < 1e-3); // there and back
+    }
+
+    // Esc is the controlled stop from anywhere in the window (issue 14): the job is held along
+    // the ramp, kept and resumable, not dropped; Stop in the run panel does the same.
+    void escStopsARunAndTheJobCanResume()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(state().homed); // homed earlier: Run does not ask for homing
+        QVERIFY(
+            load(writeProgram(QStringLiteral("long.nc"), "G21 G90\nG1 X60 Y5 F300\nG1 X1\nM2\n")));
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        button(m_window->runPanel(), "run")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running, kMachineTimeoutMs);
+        QTest::keyClick(m_window.get(), Qt::Key_Escape);
+        QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Paused, qPrintable(describe()),
+                                  10000);
+        QCOMPARE(state().hold, driver::HoldReason::User);
+        QVERIFY2(state().jobActive, "Esc holds the job, it does not drop it");
+        const double held = state().positionMm[0];
+        QTest::qWait(300);
+        QCOMPARE(state().positionMm[0], held);
+        QVERIFY(button(m_window->runPanel(), "resume")->isEnabled());
+        m_window->workflow()->abort();
+        QVERIFY(waitIdle());
+    }
+
+    // The operator clicks Run with the mouse, then presses Space or Enter (meaning something
+    // else): no run button has the keyboard focus, so the job runs on.
+    void spaceOrEnterNeverPressARunButton()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(
+            load(writeProgram(QStringLiteral("long2.nc"), "G21 G90\nG1 X60 Y5 F300\nG1 X1\nM2\n")));
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        QTest::mouseClick(button(m_window->runPanel(), "run"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running, kMachineTimeoutMs);
+        for (Qt::Key key : {Qt::Key_Space, Qt::Key_Return, Qt::Key_Enter}) {
+            QWidget *focus = QApplication::focusWidget();
+            QVERIFY2(!focus || !m_window->runPanel()->isAncestorOf(focus),
+                     qPrintable(focus->objectName()));
+            QTest::keyClick(focus ? focus : m_window.get(), key);
+        }
+        QTest::qWait(500);
+        QCOMPARE(state().mode, MachineMode::Running);
+        m_window->workflow()->abort();
+        QVERIFY(waitIdle());
     }
 
     void languageSwitch()
