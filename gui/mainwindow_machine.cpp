@@ -16,7 +16,9 @@
 #include "driver/link/machinecontroller.h"
 #include "session/qtmachinelink.h"
 
+#include <QAbstractButton>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QLabel>
 #include <QMessageBox>
 #include <QSettings>

@@ -22,7 +22,7 @@
 // by its parts, each in its own file pair with its own fields and a contract at its top:
 //
 //   ConnectSequence (+ EepromSync)  connecting          MachineActivity::Connecting
-//   HomingCycle                     homing              Homing
+//   HomingCycle                     homing in legs of W  Homing
 //   Jog                             jogging             Jogging
 //   Job (+ JobPace)                 streaming a job     Job
 //     ProgressCheck                 progress from the counters after an unknown outcome
@@ -32,6 +32,7 @@
 //   ToolLift                        K, lift, lower, R in a held job  ToolLift
 //   Hold                            pause, resume, abort, input interrupts
 //   UnitControls                    MPG, spindle, outputs, override, raw commands
+//   InputHoming                     Y& while idle, Y- before motion (homing from an input)
 //   Poller                          step 2 above
 //
 // MachineState::activity names the one in charge (currentActivity()), so that every transition

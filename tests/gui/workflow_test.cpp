@@ -455,6 +455,13 @@ M30
         QTest::qWait(300);
         QCOMPARE(state().positionMm[0], held);
         QVERIFY(button(m_window->runPanel(), "resume")->isEnabled());
+        // Resume, then the Stop button: the same controlled stop (it used to abort the job).
+        button(m_window->runPanel(), "resume")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running, 10000);
+        button(m_window->runPanel(), "stop")->click();
+        QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Paused, qPrintable(describe()),
+                                  10000);
+        QVERIFY2(state().jobActive, "Stop holds the job, it does not drop it");
         m_window->workflow()->abort();
         QVERIFY(waitIdle());
     }
