@@ -9,6 +9,7 @@
 #include "gui/drowidget.h"
 #include "gui/holdbanner.h"
 #include "gui/iopanel.h"
+#include "gui/jogpanel.h"
 #include "gui/mainwindow.h"
 #include "gui/outputspanel.h"
 #include "gui/programsession.h"
@@ -22,6 +23,7 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QLabel>
 #include <QProcess>
 #include <QPushButton>
 #include <QSettings>
@@ -487,6 +489,34 @@ M30
         QCOMPARE(state().mode, MachineMode::Running);
         m_window->workflow()->abort();
         QVERIFY(waitIdle());
+    }
+
+    // Homing can be stopped from the window (Stop is enabled, Esc works), the position display
+    // follows the axes meanwhile, and the axes then count as not homed (issue 14).
+    void homingCanBeStoppedAndThePositionFollows()
+    {
+        QVERIFY(waitIdle());
+        const double zStart = state().positionMm[2];
+        m_window->jogStep(2, -20, 1200); // Z 20 mm further from its switch: homing takes seconds
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(state().positionMm[2] - (zStart - 20)) < 1e-3,
+                                 kMachineTimeoutMs);
+        QVERIFY(waitIdle());
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        const double z0 = state().positionMm[2];
+        QVERIFY(button(m_window->jogPanel(), "homeAll")->isEnabled());
+        button(m_window->jogPanel(), "homeAll")->click();
+        QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Homing, qPrintable(describe()),
+                                  10000);
+        QTRY_VERIFY_WITH_TIMEOUT(state().positionMm[2] > z0 + 1, 10000); // the display moves
+        QVERIFY(button(m_window->runPanel(), "stop")->isEnabled());
+        QVERIFY(button(m_window->runPanel(), "abort")->isEnabled());
+        QTest::keyClick(m_window.get(), Qt::Key_Escape);
+        QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Idle, qPrintable(describe()), 5000);
+        QVERIFY(!state().homed);
+        QCOMPARE(int(state().homedAxes), 0);
+        QVERIFY(
+            m_window->jogPanel()->findChild<QLabel *>(QStringLiteral("limitsOff"))->isVisible());
     }
 
     void languageSwitch()
