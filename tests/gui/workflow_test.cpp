@@ -453,8 +453,11 @@ M30
                                   10000);
         QCOMPARE(state().hold, driver::HoldReason::User);
         QVERIFY2(state().jobActive, "Esc holds the job, it does not drop it");
-        const double held = state().positionMm[0];
+        // The machine stands: the position read after the hold no longer changes (the state
+        // published with Paused may still carry a poll from while it braked).
         QTest::qWait(300);
+        const double held = state().positionMm[0];
+        QTest::qWait(500);
         QCOMPARE(state().positionMm[0], held);
         QVERIFY(button(m_window->runPanel(), "resume")->isEnabled());
         // Resume, then the Stop button: the same controlled stop (it used to abort the job).
