@@ -42,12 +42,14 @@ JogPanel::JogPanel(QWidget *parent)
         m_home[std::size_t(axis)] = new QPushButton(this);
         m_home[std::size_t(axis)]->setObjectName(
             QStringLiteral("home%1").arg(QLatin1Char(kAxes[axis])));
+        m_home[std::size_t(axis)]->setFocusPolicy(Qt::NoFocus);
         connect(m_home[std::size_t(axis)], &QPushButton::clicked, this,
                 [this, axis] { emit homeRequested(axis); });
         grid->addWidget(m_home[std::size_t(axis)], axis, 1);
     }
     m_homeAll = new QPushButton(this);
     m_homeAll->setObjectName(QStringLiteral("homeAll"));
+    m_homeAll->setFocusPolicy(Qt::NoFocus);
     connect(m_homeAll, &QPushButton::clicked, this, [this] { emit homeRequested(-1); });
     grid->addWidget(m_homeAll, 4, 0, 1, 3);
 
@@ -81,8 +83,15 @@ JogPanel::JogPanel(QWidget *parent)
     feedRow->addWidget(m_feed, 1);
     feedRow->addWidget(m_mpg);
 
+    m_limits = new QLabel(this);
+    m_limits->setObjectName(QStringLiteral("limitsOff"));
+    m_limits->setWordWrap(true);
+    m_limits->setStyleSheet(QStringLiteral("color: #b35900; font-weight: bold;"));
+    m_limits->hide();
+
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
+    layout->addWidget(m_limits);
     layout->addLayout(grid);
     layout->addLayout(steps);
     layout->addLayout(feedRow);
@@ -93,6 +102,8 @@ JogPanel::JogPanel(QWidget *parent)
 void JogPanel::setAxisCount(int count)
 {
     m_axisCount = count;
+    if (m_limits)
+        showLimits();
     for (int axis = 0; axis < 4; ++axis) {
         m_jog[std::size_t(axis * 2)]->setVisible(axis < count);
         m_jog[std::size_t(axis * 2 + 1)]->setVisible(axis < count);
@@ -139,6 +150,30 @@ void JogPanel::setMpgOn(bool on)
     m_mpg->setChecked(on);
 }
 
+void JogPanel::setHomedAxes(std::uint8_t homedAxes, bool connected)
+{
+    m_homedAxes = homedAxes;
+    m_connected = connected;
+    showLimits();
+}
+
+// "not homed: limits off" while any axis of the machine is connected and not homed
+// (machine/softlimits.h: its jog has no soft limits and runs at the homing speed).
+void JogPanel::showLimits()
+{
+    QString axes;
+    for (int axis = 0; axis < m_axisCount; ++axis) {
+        if (!((m_homedAxes >> axis) & 1))
+            axes += QLatin1Char(kAxes[axis]);
+    }
+    m_limits->setVisible(m_connected && !axes.isEmpty());
+    m_limits->setText(tr("%1 not homed: soft limits off, slow jog").arg(axes));
+    m_limits->setToolTip(
+        tr("Before homing the counters do not say where the axes are: jogging ignores the "
+           "soft limits and runs at most at the homing speed. Home the machine to have the "
+           "limits and the full jog speed; a program asks for homing before it runs."));
+}
+
 void JogPanel::jogKey(int axis, int direction, bool pressed)
 {
     if (axis < 0 || axis >= m_axisCount)
@@ -176,6 +211,7 @@ void JogPanel::retranslate()
     m_feedLabel->setText(tr("Jog feed:"));
     m_mpg->setText(tr("Handwheel (MPG)"));
     setToolTip(tr("Keyboard: arrows jog X/Y, Page Up/Page Down jog Z"));
+    showLimits();
 }
 
 } // namespace frezka::gui

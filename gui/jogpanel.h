@@ -1,11 +1,12 @@
 #pragma once
 // JogPanel: jog buttons per axis (step 0.01 / 0.1 / 1 / 10 mm or continuous while held),
-// jog feed, homing (all / per axis) and the MPG switch. It only asks; the controller checks the
-// soft limits and refuses what would pass them.
+// jog feed, homing (all / per axis) and the MPG switch. It only asks; the soft-limit policy
+// (machine/softlimits.h) decides in the driver. Shows which axes are not homed (limits off).
 
 #include <QWidget>
 
 #include <array>
+#include <cstdint>
 
 class QButtonGroup;
 class QCheckBox;
@@ -31,6 +32,8 @@ public:
     // Per-axis homing buttons (hidden while the driver homes only the whole machine).
     void setPerAxisHoming(bool available);
     void setMpgOn(bool on);
+    // Shows "X Y not homed: soft limits off, slow jog" while connected with axes not homed.
+    void setHomedAxes(std::uint8_t homedAxes, bool connected);
     // Jog as if the button of axis (0..3) in direction (+1/-1) was clicked (keyboard).
     void jogKey(int axis, int direction, bool pressed);
 
@@ -46,6 +49,7 @@ protected:
 
 private:
     void retranslate();
+    void showLimits();
 
     std::array<QPushButton *, 8> m_jog{};
     std::array<QPushButton *, 4> m_home{};
@@ -55,6 +59,9 @@ private:
     QDoubleSpinBox *m_feed;
     QLabel *m_feedLabel, *m_stepLabel;
     QCheckBox *m_mpg;
+    QLabel *m_limits = nullptr;
+    std::uint8_t m_homedAxes = 0;
+    bool m_connected = false;
     int m_axisCount = 4;
     bool m_perAxisHoming = true;
 };

@@ -81,6 +81,8 @@ public:
     int activeOffset() const { return m_offsets->active(); }
 
     // Operator actions (the buttons call these; tests too).
+    // Run was asked before homing: offer "Home and run" (session::RunWorkflow::homingNeeded).
+    void askToHome();
     void connectToUnit();
     void disconnectFromUnit();
     // Runs the loaded program; re-plans first when the machine is not where the plan starts.

@@ -8,6 +8,7 @@
 #include "toolpathview.h"
 
 #include "driver/link/machinecontroller.h"
+#include "machine/softlimits.h"
 
 #include <QFileInfo>
 
@@ -49,16 +50,20 @@ void MainWindow::offerProgram()
                            p.errors.empty() ? QString() : p.errors.front().text);
 }
 
+// The soft-limit policy (machine/softlimits.h) decides; the driver applies the same function,
+// this only puts its refusal into the operator's words at once.
 void MainWindow::jogStep(int axis, double deltaMm, double feedMmPerMin)
 {
     const auto &st = m_controller->state();
     const auto &a = profile().axes[std::size_t(axis)];
-    const double target = st.positionMm[std::size_t(axis)] + deltaMm;
+    const bool homed = ((st.homedAxes >> axis) & 1) != 0;
+    const machine::JogMove move = machine::jogStep(
+        profile(), axis, st.positionSteps[std::size_t(axis)], deltaMm, feedMmPerMin, homed);
     static const char kAxes[] = "XYZA";
-    if (target < a.softMinMm - 1e-9 || target > a.softMaxMm + 1e-9) {
+    if (move.verdict == machine::JogVerdict::BeyondLimit) {
         showError(tr("Jog refused: %1 would go to %2 mm, outside the soft limits %3 … %4 mm.")
                       .arg(QLatin1Char(kAxes[axis]))
-                      .arg(target, 0, 'f', 3)
+                      .arg(move.targetMm, 0, 'f', 3)
                       .arg(a.softMinMm, 0, 'f', 3)
                       .arg(a.softMaxMm, 0, 'f', 3));
         return;

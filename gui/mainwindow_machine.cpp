@@ -16,9 +16,13 @@
 #include "driver/link/machinecontroller.h"
 #include "session/qtmachinelink.h"
 
+#include <QAbstractButton>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QLabel>
+#include <QMessageBox>
 #include <QSettings>
+#include <QShortcut>
 #include <QStatusBar>
 #include <QVBoxLayout>
 
@@ -152,7 +156,13 @@ void MainWindow::connectControls()
     using session::RunWorkflow;
     connect(m_run, &RunPanel::pauseRequested, m_workflow, &RunWorkflow::pause);
     connect(m_run, &RunPanel::resumeRequested, m_workflow, &RunWorkflow::resume);
-    connect(m_run, &RunPanel::stopRequested, m_workflow, &RunWorkflow::abort);
+    // Stop is the controlled stop (H: the job held, resumable; homing ended), Abort drops the
+    // job; Esc is Stop from anywhere in the window (docs/gui.md, "Stopping").
+    connect(m_run, &RunPanel::stopRequested, m_workflow, &RunWorkflow::stop);
+    auto *esc = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    esc->setObjectName(QStringLiteral("stopShortcut"));
+    connect(esc, &QShortcut::activated, m_workflow, &RunWorkflow::stop);
+    connect(m_workflow, &RunWorkflow::homingNeeded, this, &MainWindow::askToHome);
     connect(m_run, &RunPanel::abortRequested, m_workflow, &RunWorkflow::abort);
     connect(m_run, &RunPanel::toolLiftRequested, this,
             [this] { m_workflow->toolLift(m_hold->stopSpindleOnLift()); });
@@ -206,6 +216,23 @@ void MainWindow::connectControls()
             &session::ConsoleSession::execute);
 }
 
+// A run asked before homing: home, then run - or not (never modal under offscreen tests).
+void MainWindow::askToHome()
+{
+    const QString text = tr("The machine is not homed: its soft limits refer to nothing yet. "
+                            "Home all axes now and then run the program?");
+    m_console->appendInfo(text);
+    statusBar()->showMessage(text, 15000);
+    if (QGuiApplication::platformName() == QLatin1String("offscreen"))
+        return;
+    auto *box = new QMessageBox(QMessageBox::Question, tr("Frezka"), text,
+                                QMessageBox::Yes | QMessageBox::Cancel, this);
+    box->button(QMessageBox::Yes)->setText(tr("Home and run"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    connect(box, &QMessageBox::accepted, m_workflow, &session::RunWorkflow::homeThenRun);
+    box->open();
+}
+
 void MainWindow::connectToUnit()
 {
     QSettings settings;
@@ -240,6 +267,7 @@ void MainWindow::onState(const driver::MachineState &state)
                          on(machine::OutputFunction::AirBlow), std::uint8_t(~state.outputs));
     m_outputs->showFeedOverride(state.overridePercent);
     m_jog->setMpgOn(state.mpgOn);
+    m_jog->setHomedAxes(state.homedAxes, isConnected(state.mode));
     m_connection->setText(machineModeText(state.mode));
     m_connection->setStyleSheet(isConnected(state.mode) ? QString()
                                                         : QStringLiteral("color: #c00;"));
@@ -373,6 +401,9 @@ void MainWindow::updateRunPhase()
         break;
     case MachineMode::ToolLifted:
         phase = RunPhase::Lifted;
+        break;
+    case MachineMode::Homing: // Stop and Abort end homing
+        phase = RunPhase::Homing;
         break;
     default:
         break;

@@ -16,6 +16,8 @@ RunPanel::RunPanel(QWidget *parent)
     auto make = [this](const char *name, void (RunPanel::*signal)()) {
         auto *b = new QPushButton(this);
         b->setObjectName(QLatin1String(name));
+        b->setFocusPolicy(Qt::NoFocus); // Space / Enter never press a run button
+        b->setAutoDefault(false);
         connect(b, &QPushButton::clicked, this, signal);
         return b;
     };
@@ -62,7 +64,7 @@ void RunPanel::setPhase(RunPhase phase, bool connected)
     m_resume->setEnabled(connected && (phase == RunPhase::Paused || phase == RunPhase::Lifted));
     m_lift->setEnabled(connected && phase == RunPhase::Paused);
     m_stop->setEnabled(connected && (phase == RunPhase::Running || phase == RunPhase::Paused ||
-                                     phase == RunPhase::Lifted));
+                                     phase == RunPhase::Lifted || phase == RunPhase::Homing));
     m_abort->setEnabled(connected);
 }
 
@@ -98,13 +100,20 @@ void RunPanel::retranslate()
     m_check->setText(tr("Check"));
     m_check->setToolTip(tr("Check the program against the machine profile without moving"));
     m_run->setText(tr("Run"));
+    m_run->setToolTip(tr("Run the checked program (asks for homing first on a machine not "
+                         "homed). The machine's START button does the same when the profile "
+                         "names its input. Space and Enter never press it."));
     m_pause->setText(tr("Pause"));
     m_pause->setToolTip(tr("Brake along the ramp and hold; Resume continues"));
     m_resume->setText(tr("Resume"));
-    m_stop->setText(tr("Stop"));
-    m_stop->setToolTip(tr("Stop the program; the position stays known"));
+    m_resume->setToolTip(tr("Continue the held job (the START button does the same)"));
+    m_stop->setText(tr("Stop (Esc)"));
+    m_stop->setToolTip(tr("Controlled stop (Esc): brake along the ramp and hold the job; the "
+                          "position stays known and Resume continues it. During homing: end "
+                          "homing, the axes not yet homed stay not homed."));
     m_abort->setText(tr("Abort"));
-    m_abort->setToolTip(tr("Stop at once and drop every queued move"));
+    m_abort->setToolTip(tr("Brake and drop every queued move: the job ends and cannot be "
+                           "resumed; the position stays known. Also ends homing."));
     m_lift->setText(tr("Tool lift…"));
     m_lift->setToolTip(tr("Lift the tool, switch the spindle off, change or clean it, continue"));
     setProgress(double(m_progress->value()) / 1000.0, m_elapsedS, m_remainingS);

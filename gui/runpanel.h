@@ -1,6 +1,8 @@
 #pragma once
 // RunPanel: Check / Run / Pause / Resume / Stop / Abort / Tool lift, and progress with elapsed
-// time and the ETA of the planner's model.
+// time and the ETA of the planner's model. Its buttons never take the keyboard focus, so that
+// Space or Enter meant for another control can never press Run, Stop or Abort by accident;
+// Esc (the main window's shortcut) is the keyboard's controlled stop.
 
 #include <QWidget>
 
@@ -10,7 +12,7 @@ class QPushButton;
 
 namespace frezka::gui {
 
-enum class RunPhase { NoProgram, Ready, Running, Paused, Lifted, Finished };
+enum class RunPhase { NoProgram, Ready, Running, Paused, Lifted, Finished, Homing };
 
 class RunPanel : public QWidget
 {

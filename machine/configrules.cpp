@@ -129,6 +129,10 @@ struct Rules
             fail("eeprom.stepActiveEdge", "a GVE64 PHANTOM steps on the falling edge only (its "
                                           "STEP polarity cannot be changed); set \"default\" or "
                                           "\"falling\" and use drivers that take that edge");
+        if (c.unit.startInput != 0 &&
+            (c.unit.startInput < 3 || info.variant == protocol::Variant::Gve84))
+            fail("unit.startInput", "must be 0 (no START button) or an input 3..7 (GVE64/GVE114 "
+                                    "only; the GVE84's inputs are its home switches)");
         if (c.eeprom.homingInput != 0 && (c.eeprom.homingInput < 3 || !info.hasMpg))
             fail("eeprom.homingInput", "must be 0 (off) or an input 3..7 (GVE64/GVE114 only)");
         if (c.eeprom.aSlavedTo != 0 && info.axisCount < 4)

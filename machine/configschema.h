@@ -97,6 +97,7 @@ void visitProfile(V &v, MachineConfig &c)
         s.choice("variant", c.unit.variant, all(kVariants));
         s.integer("maxPulseRate", c.unit.maxPulseRate, 10, 500000, "pulses/s");
         s.integer("firmwareVersion", c.unit.firmwareVersion, 1, 99, "");
+        s.integer("startInput", c.unit.startInput, 0, 7, "");
     });
     v.object("link", [&](V &s) {
         s.text("port", c.link.port);
@@ -115,6 +116,7 @@ void visitProfile(V &v, MachineConfig &c)
         s.integer("pauseMs", c.motion.pauseMs, 1, 24, "ms");
         s.choice("speedMode", c.motion.speedMode, all(kSpeedModes));
         s.number("toolLiftMm", c.motion.toolLiftMm, 0, 1000, "mm");
+        s.boolean("runBeforeHoming", c.motion.runBeforeHoming);
     });
     v.object("spindle", [&](V &s) {
         s.number("maxRpm", c.spindle.maxRpm, 1, 1000000, "rpm");

@@ -55,6 +55,10 @@ struct UnitConfig
     protocol::Variant variant = protocol::Variant::Gve64;
     int maxPulseRate = 50000; // pulses/s, one of the variant's orderable rates
     int firmwareVersion = 19; // features: MPG v10+, EEPROM float v10+, VL/VK/XM v19+ (GVE64)
+    // The machine's START button: 3..7 = that input (GVE64 IN3, GVE114 IN6) starts a loaded,
+    // checked program or resumes a held one; 0 = the machine has none. Active at the level of
+    // its bit in eeprom.polarity (0 = active low, the button grounds the input).
+    int startInput = 0;
     friend bool operator==(const UnitConfig &, const UnitConfig &) = default;
 };
 
@@ -77,6 +81,9 @@ struct MotionConfig
     int pauseMs = 10;                  // T: pause between non-continuous moves, 1..24
     SpeedModeChoice speedMode = SpeedModeChoice::Auto; // Auto: VK when it is exact, else VN
     double toolLiftMm = 5; // lift of Z for a manual stop (driver), 0 = none
+    // false: a run before the machine is homed asks for homing first; true: it runs, with a
+    // warning (machine/softlimits.h).
+    bool runBeforeHoming = false;
     friend bool operator==(const MotionConfig &, const MotionConfig &) = default;
 };
 

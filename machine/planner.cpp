@@ -4,6 +4,7 @@
 
 #include "machine/chainparts.h"
 #include "machine/chainplanner.h"
+#include "machine/softlimits.h"
 #include "machine/steps.h"
 #include "machine/unitmodel.h"
 #include "machine/unitwire.h"
@@ -136,8 +137,7 @@ private:
                 }
                 continue;
             }
-            const double tol = 1e-9 * std::max(1.0, std::abs(v));
-            if (v < a.softMinMm - tol || v > a.softMaxMm + tol) {
+            if (!withinSoftLimits(a, v)) { // the one soft-limit policy (softlimits.h)
                 error(PlanErrorCode::SoftLimit, line,
                       std::string(1, axis) + " " + fmt(v) + " is outside the soft limits " +
                           fmt(a.softMinMm) + " .. " + fmt(a.softMaxMm) +

@@ -1,6 +1,7 @@
 #include "runworkflow.h"
 
 #include <cmath>
+#include <utility>
 
 namespace frezka::session {
 
@@ -143,6 +144,16 @@ void RunWorkflow::runProgram()
             end(false, why);
         return;
     }
+    // The headless sequence (frezka-cli run) homes when told to (--home) and warns otherwise.
+    if (!state().homed) {
+        if (!m_profile.motion.runBeforeHoming && m_step != Step::Running) {
+            emit message(tr("The machine is not homed: home it first, then Run."));
+            emit homingNeeded();
+            return;
+        }
+        emit message(tr("Warning: the machine is not homed; the program runs from counters "
+                        "that were not set by homing (motion.runBeforeHoming)."));
+    }
     // The plan is relative to where it starts: re-plan from the machine's actual position.
     if (m_replan && !planStartsHere()) {
         m_pending = Pending::Run;
@@ -159,6 +170,24 @@ void RunWorkflow::startJob()
     m_jobClock.start();
     emit jobStarted();
     m_link.run(*m_plan);
+}
+
+void RunWorkflow::stop()
+{
+    // Stop: a controlled halt along the ramp, the job resumable; the spindle and coolant go off
+    // once the machine stands and come back on (after the spin-up) when the job resumes.
+    const MachineMode mode = state().mode;
+    if (mode == MachineMode::Running)
+        m_link.execute(driver::op::Pause{true});
+    else if (mode == MachineMode::Homing)
+        m_link.pause();
+}
+
+void RunWorkflow::homeThenRun()
+{
+    m_runAfterHoming = true;
+    emit message(tr("Homing, then running the program…"));
+    m_link.home(0xF);
 }
 
 void RunWorkflow::checkProgram()
@@ -228,8 +257,50 @@ void RunWorkflow::onState(const driver::MachineState &s)
         m_continueAfterLower = false; // the tool is back down after "Lower and continue"
         m_link.resume();
     }
+    if (m_runAfterHoming && s.mode == MachineMode::Idle && last == MachineMode::Homing) {
+        m_runAfterHoming = false;
+        if (s.homed)
+            runProgram();
+        else
+            emit failed(tr("Homing did not finish; the program was not started."));
+    }
+    watchStartInput(s);
     if (m_step != Step::None && m_step != Step::Ended)
         advance(s, last);
+}
+
+// The START button: its press (the edge to the active level of unit.startInput, at the
+// polarity of eeprom.polarity) while connected. Forgotten over a new connection, so that a
+// button held while connecting does nothing.
+void RunWorkflow::watchStartInput(const driver::MachineState &s)
+{
+    const int input = m_profile.unit.startInput;
+    if (input < 3 || input > 7 || s.mode == MachineMode::Connecting ||
+        s.mode == MachineMode::Disconnected || s.mode == MachineMode::LinkLost) {
+        m_startActive = -1;
+        return;
+    }
+    const bool level = ((s.inputs1 >> input) & 1) != 0;
+    const bool activeHigh = ((m_profile.eeprom.polarity >> input) & 1) != 0;
+    const int active = level == activeHigh ? 1 : 0;
+    const int was = std::exchange(m_startActive, active);
+    if (was == 0 && active == 1)
+        startPressed();
+}
+
+void RunWorkflow::startPressed()
+{
+    const MachineMode mode = state().mode;
+    if (mode == MachineMode::Paused) {
+        emit message(tr("START button: resuming the job."));
+        m_link.resume();
+    } else if (mode == MachineMode::Idle && m_plan && !state().jobActive) {
+        emit message(tr("START button: running %1.").arg(m_name));
+        runProgram();
+    } else {
+        emit message(
+            tr("START button ignored: nothing to start or resume (%1).").arg(modeText(mode)));
+    }
 }
 
 // The headless sequence: connecting -> (homing) -> running -> ended.

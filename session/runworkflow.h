@@ -8,6 +8,14 @@
 // program itself is loaded and planned by the front end (the GUI in a worker thread, the CLI
 // in place): it hands the plan over with setProgram() and, when a replanner is set, plans again
 // from the start position the workflow asks for. Texts are in the user's language.
+//
+// The operator's stops: stop() is the controlled stop (H along the ramp: the job is held, its
+// position known, resume() continues it; homing ends and its axes stay not homed), abort()
+// drops the job (H, D). A run before homing asks for homing first (homingNeeded(), then
+// homeThenRun()) unless the profile allows it (motion.runBeforeHoming: it runs with a warning).
+// The machine's START button (unit.startInput, read by the driver's input polls) runs the
+// loaded, checked program as Run does, or resumes a held job; it acts on the press (the edge
+// to its active level), never on a button held while connecting.
 
 #include "session/machinelink.h"
 
@@ -68,7 +76,11 @@ public:
     }
     void pause() { m_link.pause(); }
     void resume() { m_link.resume(); }
+    // The controlled stop (Stop, Esc): a job is held (H), homing ends; nothing when idle.
+    void stop();
     void abort() { m_link.abort(); }
+    // Home every axis the profile homes, then run the program (the answer to homingNeeded()).
+    void homeThenRun();
     void toolLift(bool stopSpindle);
     // Spindle back on when the lift stopped it, tool down (new speed when > 0), then resume
     // once the machine holds with the tool down when thenContinue.
@@ -83,6 +95,8 @@ signals:
     void connected(); // connecting -> ready
     void linkLost();  // before reconnecting is decided: a handler may still setAutoReconnect()
     void runEnded(bool ok); // the headless sequence of start()
+    // Run (or START) was asked before the machine was homed: home first (homeThenRun()).
+    void homingNeeded();
 
 private:
     enum class Step : std::uint8_t { None, Connecting, Homing, Running, Ended };
@@ -93,6 +107,8 @@ private:
     void onJobFinished(bool ok);
     void advance(const driver::MachineState &state, driver::MachineMode last);
     void startJob();
+    void watchStartInput(const driver::MachineState &state);
+    void startPressed();
     void end(bool ok, const QString &why);
     bool planStartsHere() const;
 
@@ -110,6 +126,8 @@ private:
     bool m_autoReconnect = false;
     bool m_userDisconnected = false;
     bool m_continueAfterLower = false;
+    bool m_runAfterHoming = false; // homeThenRun(): run once homed
+    int m_startActive = -1;        // START input's last state: -1 unknown, 0 / 1
     driver::MachineMode m_lastMode = driver::MachineMode::Disconnected;
     QString m_error;
     QTimer m_reconnect;

@@ -3,7 +3,8 @@
 //   %+        checksums on (sent plain; a unit that already has them on answers 4 with a
 //             checksum, then it is sent again with one)
 //   ? Q       identify: firmware string -> variant, compared with the profile; unit id
-//   Y-        MPG off where the unit has one (reset state Y& refuses vectors)
+//   Y-        MPG off where the unit has one (reset state Y& refuses vectors); not when the
+//             unit homes from an input (InputHoming parks it in Y& once idle)
 //   T VN/VK   pause between moves, speed mode set explicitly (adopted reading §4)
 //   SW0..SW3  interrupt masks and polarities from the profile
 //   E*R       the unit's EEPROM compared with the profile; differences reported, never written
@@ -14,6 +15,7 @@
 
 #include "driver/link/corehost.h"
 #include "driver/link/eepromsync.h"
+#include "driver/link/inputhoming.h"
 #include "driver/link/job.h"
 #include "machine/unitwire.h"
 
@@ -30,6 +32,11 @@ MachineState &ConnectSequence::state()
 
 void ConnectSequence::start()
 {
+    // A new link may lead to a new unit, or to one that was switched off meanwhile: its
+    // counters say nothing about where the axes are until they are homed again.
+    state().homed = false;
+    state().homedAxes = 0;
+    m_host.markDirty();
     m_host.link().setChecksums(false);
     switchChecksums(1);
 }
@@ -110,7 +117,9 @@ void ConnectSequence::setupAfterIdentify()
     auto check = [this](const char *what) {
         return [this, what](const Outcome &o) { m_host.unitError(o, what, MachineMode::Alarm); };
     };
-    if (state().features.mpg) {
+    // MPG off, unless the unit is to home from its input: then the core parks it in Y& as
+    // soon as it is idle (InputHoming), since Y- would disable that.
+    if (state().features.mpg && !InputHoming::wanted(m_host.config(), state().features)) {
         m_host.send(cmd::mpgOff(), check("switching the MPG off"));
         state().mpgOn = false;
     }

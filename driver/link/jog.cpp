@@ -4,6 +4,7 @@
 
 #include "driver/link/corehost.h"
 #include "driver/link/machinecore_internal.h"
+#include "machine/softlimits.h"
 
 #include <algorithm>
 #include <array>
@@ -15,24 +16,29 @@ using namespace frezka::protocol;
 using detail::notNow;
 using detail::refusal;
 
-std::optional<MachineError> Jog::moveTo(int axis, std::int64_t target, double speedMmPerMin)
+// Sends what the soft-limit policy (machine/softlimits.h) made of the request: V (the speed)
+// and one L, or the policy's refusal.
+std::optional<MachineError> Jog::send(int axis, const machine::JogMove &m)
 {
     const machine::MachineConfig &config = m_host.config();
     MachineState &state = m_host.liveState();
     const auto &ax = config.axes[static_cast<std::size_t>(axis)];
-    const std::int64_t lo = m_host.stepsFromMm(axis, ax.softMinMm);
-    const std::int64_t hi = m_host.stepsFromMm(axis, ax.softMaxMm);
-    const std::int64_t from = state.positionSteps[static_cast<std::size_t>(axis)];
-    target = std::clamp(target, std::min(lo, hi), std::max(lo, hi));
-    if (from < std::min(lo, hi) || from > std::max(lo, hi))
-        return refusal("the axis is outside its soft limits: home the machine first");
-    const std::int64_t delta = target - from;
-    if (delta == 0)
+    switch (m.verdict) {
+    case machine::JogVerdict::Move:
+        break;
+    case machine::JogVerdict::BeyondLimit:
+        return refusal("the jog would end at " + std::to_string(m.targetMm) +
+                       " mm, outside the soft limits " + std::to_string(ax.softMinMm) + " .. " +
+                       std::to_string(ax.softMaxMm) + " mm");
+    case machine::JogVerdict::AtLimit:
         return refusal("the axis is at its soft limit");
-    const double rate = std::min(speedMmPerMin, ax.maxSpeedMmPerMin) / 60.0 * ax.stepsPerMm;
+    case machine::JogVerdict::NoMove:
+        return refusal("the jog is shorter than one step");
+    }
+    const double rate = m.speedMmPerMin / 60.0 * ax.stepsPerMm;
     const auto pulses = std::clamp<std::int64_t>(std::llround(rate), 10, config.unit.maxPulseRate);
     std::array<std::int64_t, 4> d{};
-    d[static_cast<std::size_t>(axis)] = delta;
+    d[static_cast<std::size_t>(axis)] = m.deltaSteps;
     const Command l =
         state.axisCount == 4 ? cmd::line(d[0], d[1], d[2], d[3]) : cmd::line(d[0], d[1], d[2]);
     m_host.setMode(MachineMode::Jogging);
@@ -53,6 +59,11 @@ std::optional<MachineError> Jog::moveTo(int axis, std::int64_t target, double sp
     return std::nullopt;
 }
 
+bool Jog::homed(const MachineState &state, int axis)
+{
+    return ((state.homedAxes >> axis) & 1) != 0;
+}
+
 std::optional<MachineError> Jog::step(int axis, double distanceMm, double speedMmPerMin)
 {
     const MachineState &state = m_host.liveState();
@@ -62,7 +73,8 @@ std::optional<MachineError> Jog::step(int axis, double distanceMm, double speedM
         return refusal("no such axis");
     m_continuous = false;
     const auto from = state.positionSteps[static_cast<std::size_t>(axis)];
-    return moveTo(axis, from + m_host.stepsFromMm(axis, distanceMm), speedMmPerMin);
+    return send(axis, machine::jogStep(m_host.config(), axis, from, distanceMm, speedMmPerMin,
+                                       homed(state, axis)));
 }
 
 std::optional<MachineError> Jog::continuous(int axis, int direction, double speedMmPerMin)
@@ -72,11 +84,10 @@ std::optional<MachineError> Jog::continuous(int axis, int direction, double spee
         return notNow("Jogging", state.mode);
     if (axis < 0 || axis >= state.axisCount || direction == 0)
         return refusal("no such axis or direction");
-    const auto &ax = m_host.config().axes[static_cast<std::size_t>(axis)];
     m_continuous = true;
-    const double limitMm =
-        direction > 0 ? std::max(ax.softMinMm, ax.softMaxMm) : std::min(ax.softMinMm, ax.softMaxMm);
-    auto r = moveTo(axis, m_host.stepsFromMm(axis, limitMm), speedMmPerMin);
+    const auto from = state.positionSteps[static_cast<std::size_t>(axis)];
+    auto r = send(axis, machine::jogContinuous(m_host.config(), axis, from, direction,
+                                               speedMmPerMin, homed(state, axis)));
     if (r)
         m_continuous = false;
     return r;

@@ -39,6 +39,8 @@ void MachineCore::setMode(MachineMode mode)
     log("mode: " + std::string(machineModeName(m_state.mode)) + " -> " + machineModeName(mode));
     m_state.mode = mode;
     m_dirty = true;
+    if (mode == MachineMode::Idle)
+        m_inputHoming.park();
 }
 
 MachineActivity MachineCore::currentActivity() const
@@ -402,21 +404,31 @@ MachineCore::Result MachineCore::execute(MachineCommand command, double now)
 {
     return std::visit(
         Overloaded{
-            [&](op::Run &c) { return runJob(std::move(c.program), now); },
-            [&](op::Pause &c) { return accepted(m_hold.pause(c.stopSpindle), now); },
+            [&](op::Run &c) {
+                return moving([&] { return runJob(std::move(c.program), now); }, now);
+            },
+            // Homing stops at Pause (Stop, Esc) and Abort alike: no job to hold or drop.
+            [&](op::Pause &c) {
+                return accepted(m_homing.active() ? m_homing.stop() : m_hold.pause(c.stopSpindle),
+                                now);
+            },
             [&](op::HoldSpindle &c) { return accepted(m_hold.holdSpindle(c.stop), now); },
             [&](op::Resume &) { return accepted(m_hold.resume(), now); },
-            [&](op::Abort &) { return accepted(m_hold.abort(), now); },
+            [&](op::Abort &) {
+                return accepted(m_homing.active() ? m_homing.stop() : m_hold.abort(), now);
+            },
             [&](op::ToolLift &c) { return accepted(m_toolLift.lift(c.stopSpindle), now); },
             [&](op::ToolLower &c) { return accepted(m_toolLift.lower(c.speedPulsesPerS), now); },
-            [&](op::Home &c) { return startHoming(c.axisMask, now); },
+            [&](op::Home &c) { return moving([&] { return startHoming(c.axisMask, now); }, now); },
             [&](op::JogStep &c) {
                 if (m_state.mode == MachineMode::ToolLifted) // away from the work and back
                     return accepted(m_toolLift.jog(c.axis, c.distanceMm, c.speedMmPerMin), now);
-                return accepted(m_jog.step(c.axis, c.distanceMm, c.speedMmPerMin), now);
+                return moving([&] { return m_jog.step(c.axis, c.distanceMm, c.speedMmPerMin); },
+                              now);
             },
             [&](op::JogContinuous &c) {
-                return accepted(m_jog.continuous(c.axis, c.direction, c.speedMmPerMin), now);
+                return moving(
+                    [&] { return m_jog.continuous(c.axis, c.direction, c.speedMmPerMin); }, now);
             },
             [&](op::JogStop &) { return accepted(m_jog.stop(), now); },
             [&](op::SetMpg &c) { return accepted(m_controls.setMpg(c.on), now); },
@@ -437,6 +449,17 @@ MachineCore::Result MachineCore::accepted(Result refused, double now)
     if (!refused)
         pump(now);
     return refused;
+}
+
+// An operation that moves the machine: a unit parked in Y& for homing from its input gets Y-
+// first (only while idle: a held job's moves already run with the MPG off).
+MachineCore::Result MachineCore::moving(const std::function<Result()> &operation, double now)
+{
+    const bool unparked = m_inputHoming.unpark(); // parked only while idle (or in an alarm)
+    Result refused = operation();
+    if (refused && unparked)
+        m_inputHoming.park();
+    return accepted(refused, now);
 }
 
 MachineCore::Result MachineCore::runJob(machine::UnitProgram program, double now)
@@ -484,6 +507,7 @@ void MachineCore::linkOpened(double now)
     m_stopWaiters.clear();
     m_timers.clear();
     m_job.linkOpened();
+    m_inputHoming.linkOpened();
     setMode(MachineMode::Connecting);
     m_connect.start();
     pump(now);

@@ -22,7 +22,7 @@
 // by its parts, each in its own file pair with its own fields and a contract at its top:
 //
 //   ConnectSequence (+ EepromSync)  connecting          MachineActivity::Connecting
-//   HomingCycle                     homing              Homing
+//   HomingCycle                     homing in legs of W  Homing
 //   Jog                             jogging             Jogging
 //   Job (+ JobPace)                 streaming a job     Job
 //     ProgressCheck                 progress from the counters after an unknown outcome
@@ -34,6 +34,7 @@
 //   SpindleHold                     spindle and coolant off for a hold, on again (spin-up) before
 //                                   the work
 //   UnitControls                    MPG, spindle, outputs, override, raw commands
+//   InputHoming                     Y& while idle, Y- before motion (homing from an input)
 //   Poller                          step 2 above
 //
 // MachineState::activity names the one in charge (currentActivity()), so that every transition
@@ -46,6 +47,7 @@
 #include "driver/link/eepromsync.h"
 #include "driver/link/hold.h"
 #include "driver/link/homingcycle.h"
+#include "driver/link/inputhoming.h"
 #include "driver/link/job.h"
 #include "driver/link/jog.h"
 #include "driver/link/linkengine.h"
@@ -195,6 +197,7 @@ private:
 
     // operations (machinecore.cpp)
     Result accepted(Result refused, double now); // pumps when nothing was refused
+    Result moving(const std::function<Result()> &operation, double now); // Y- first (InputHoming)
     Result runJob(machine::UnitProgram program, double now);
     Result startHoming(unsigned axisMask, double now);
     double mmFromSteps(int axis, std::int64_t steps) const;
@@ -230,6 +233,7 @@ private:
     UnitControls m_controls{*this, m_job};
     Poller m_poller{*this, m_job, m_toolLift};
     Jog m_jog{*this};
+    InputHoming m_inputHoming{*this}; // Y& while idle, Y- before motion (homing from an input)
 };
 
 } // namespace frezka::driver

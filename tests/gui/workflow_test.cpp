@@ -9,6 +9,7 @@
 #include "gui/drowidget.h"
 #include "gui/holdbanner.h"
 #include "gui/iopanel.h"
+#include "gui/jogpanel.h"
 #include "gui/mainwindow.h"
 #include "gui/outputspanel.h"
 #include "gui/programsession.h"
@@ -21,6 +22,7 @@
 #include "session/runworkflow.h"
 
 #include <QCheckBox>
+#include <QApplication>
 #include <QDir>
 #include <QLabel>
 #include <QProcess>
@@ -492,6 +494,92 @@ M30
                  qPrintable(said.join(QLatin1Char('|'))));
         QVERIFY(waitIdle());
         QVERIFY(std::abs(state().positionMm[0] - (x0 + 1)) < 1e-3); // there and back
+    }
+
+    // Esc is the controlled stop from anywhere in the window (issue 14): the job is held along
+    // the ramp, kept and resumable, not dropped; Stop in the run panel does the same.
+    void escStopsARunAndTheJobCanResume()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(state().homed); // homed earlier: Run does not ask for homing
+        QVERIFY(
+            load(writeProgram(QStringLiteral("long.nc"), "G21 G90\nG1 X60 Y5 F300\nG1 X1\nM2\n")));
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        button(m_window->runPanel(), "run")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running, kMachineTimeoutMs);
+        QTest::keyClick(m_window.get(), Qt::Key_Escape);
+        QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Paused, qPrintable(describe()),
+                                  10000);
+        QCOMPARE(state().hold, driver::HoldReason::User);
+        QVERIFY2(state().jobActive, "Esc holds the job, it does not drop it");
+        // The machine stands: the position read after the hold no longer changes (the state
+        // published with Paused may still carry a poll from while it braked).
+        QTest::qWait(300);
+        const double held = state().positionMm[0];
+        QTest::qWait(500);
+        QCOMPARE(state().positionMm[0], held);
+        QVERIFY(button(m_window->runPanel(), "resume")->isEnabled());
+        // Resume, then the Stop button: the same controlled stop (it used to abort the job).
+        button(m_window->runPanel(), "resume")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running, 10000);
+        button(m_window->runPanel(), "stop")->click();
+        QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Paused, qPrintable(describe()),
+                                  10000);
+        QVERIFY2(state().jobActive, "Stop holds the job, it does not drop it");
+        m_window->workflow()->abort();
+        QVERIFY(waitIdle());
+    }
+
+    // The operator clicks Run with the mouse, then presses Space or Enter (meaning something
+    // else): no run button has the keyboard focus, so the job runs on.
+    void spaceOrEnterNeverPressARunButton()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(
+            load(writeProgram(QStringLiteral("long2.nc"), "G21 G90\nG1 X60 Y5 F300\nG1 X1\nM2\n")));
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        QTest::mouseClick(button(m_window->runPanel(), "run"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running, kMachineTimeoutMs);
+        for (Qt::Key key : {Qt::Key_Space, Qt::Key_Return, Qt::Key_Enter}) {
+            QWidget *focus = QApplication::focusWidget();
+            QVERIFY2(!focus || !m_window->runPanel()->isAncestorOf(focus),
+                     qPrintable(focus->objectName()));
+            QTest::keyClick(focus ? focus : m_window.get(), key);
+        }
+        QTest::qWait(500);
+        QCOMPARE(state().mode, MachineMode::Running);
+        m_window->workflow()->abort();
+        QVERIFY(waitIdle());
+    }
+
+    // Homing can be stopped from the window (Stop is enabled, Esc works), the position display
+    // follows the axes meanwhile, and the axes then count as not homed (issue 14).
+    void homingCanBeStoppedAndThePositionFollows()
+    {
+        QVERIFY(waitIdle());
+        const double zStart = state().positionMm[2];
+        m_window->jogStep(2, -20, 1200); // Z 20 mm further from its switch: homing takes seconds
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(state().positionMm[2] - (zStart - 20)) < 1e-3,
+                                 kMachineTimeoutMs);
+        QVERIFY(waitIdle());
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        const double z0 = state().positionMm[2];
+        QVERIFY(button(m_window->jogPanel(), "homeAll")->isEnabled());
+        button(m_window->jogPanel(), "homeAll")->click();
+        QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Homing, qPrintable(describe()),
+                                  10000);
+        QTRY_VERIFY_WITH_TIMEOUT(state().positionMm[2] > z0 + 1, 10000); // the display moves
+        QVERIFY(button(m_window->runPanel(), "stop")->isEnabled());
+        QVERIFY(button(m_window->runPanel(), "abort")->isEnabled());
+        QTest::keyClick(m_window.get(), Qt::Key_Escape);
+        QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Idle, qPrintable(describe()), 5000);
+        QVERIFY(!state().homed);
+        QCOMPARE(int(state().homedAxes), 0);
+        QVERIFY(
+            m_window->jogPanel()->findChild<QLabel *>(QStringLiteral("limitsOff"))->isVisible());
     }
 
     void languageSwitch()
