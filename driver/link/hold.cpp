@@ -27,8 +27,7 @@ std::optional<MachineError> Hold::pause()
             return;
         m_needsGo = true;
         state().inta = true;
-        state().hold = HoldReason::User;
-        state().holdText = "paused";
+        detail::setHold(state(), HoldReason::User, {DriverCode::HoldPaused}, state().sourceLine);
         m_host.setMode(MachineMode::Paused);
     });
     return std::nullopt;
@@ -39,14 +38,13 @@ std::optional<MachineError> Hold::resume()
     if (state().mode != MachineMode::Paused)
         return notNow("Resume", state().mode);
     if (m_job.verifying())
-        return refusal("the job's progress is still being checked against the unit's counters");
+        return refusal(DriverCode::ProgressBeingChecked);
     if (state().hold == HoldReason::PathFault && m_job.active()) {
         m_job.returnToPath();
         return std::nullopt;
     }
     auto running = [this] {
-        state().hold = HoldReason::None;
-        state().holdText.clear();
+        detail::setHold(state(), HoldReason::None, {}, 0);
         state().interruptInputs = 0;
         m_host.setMode(m_job.active() ? MachineMode::Running : MachineMode::Idle);
     };
@@ -85,7 +83,7 @@ std::optional<MachineError> Hold::abort()
             return notNow("Abort", state().mode);
     }
     if (state().mode == MachineMode::ToolLifted)
-        return refusal("lower the tool first: the job's queue is kept in the unit (K)");
+        return refusal(DriverCode::LowerToolFirst);
     m_host.dropPending();
     const bool wasJob = m_job.active();
     m_job.abandon();
@@ -97,8 +95,7 @@ std::optional<MachineError> Hold::abort()
         if (m_host.unitError(o, "dropping the queue (D)", MachineMode::Alarm))
             return;
         m_needsGo = false;
-        state().hold = HoldReason::None;
-        state().holdText.clear();
+        detail::setHold(state(), HoldReason::None, {}, 0);
         m_host.setMode(MachineMode::Idle);
         if (wasJob) {
             m_job.report().endS = m_host.now();
@@ -114,8 +111,8 @@ void Hold::interrupted()
     const bool job = state().mode == MachineMode::Running;
     m_host.setMode(job ? MachineMode::Paused : MachineMode::Alarm);
     m_needsGo = true;
-    state().hold = HoldReason::Interrupt;
-    state().holdText = "an input interrupt stopped the machine";
+    detail::setHold(state(), HoldReason::Interrupt, {DriverCode::HoldInterrupt},
+                    state().sourceLine);
     auto cause = [this](int n) {
         return [this, n](const Outcome &o) {
             if (o.status != OutcomeStatus::Ok || !o.reply.ok())
@@ -129,8 +126,11 @@ void Hold::interrupted()
                 if (state().interruptInputs & (1 << b))
                     names += (names.empty() ? "IN" : ", IN") + std::to_string(b);
             }
-            state().holdText = "stopped by input " + (names.empty() ? "?" : names) +
-                               (state().interruptInputs & 0x80 ? " (STOP button)" : "");
+            detail::setHold(state(), state().hold,
+                            {state().interruptInputs & 0x80 ? DriverCode::HoldStopButton
+                                                            : DriverCode::HoldInput,
+                             {names.empty() ? "?" : names}},
+                            state().holdLine);
             m_host.markDirty();
         };
     };

@@ -31,9 +31,7 @@ std::optional<MachineError> HomingCycle::plan(unsigned axisMask, Plan &p) const
             p.moves.push_back(m);
     }
     if (p.moves.empty()) {
-        return refusal(all.empty() ? "the machine profile homes no axis (axes.*.homing.order)"
-                                   : "the machine profile does not home that axis "
-                                     "(axes.*.homing.order is 0)");
+        return refusal(all.empty() ? DriverCode::NoHomedAxis : DriverCode::AxisNotHomed);
     }
     for (const auto &m : p.moves)
         p.homing |= 1u << static_cast<int>(m.axis);
@@ -48,10 +46,7 @@ std::optional<MachineError> HomingCycle::plan(unsigned axisMask, Plan &p) const
             std::all_of(p.moves.begin(), p.moves.end(),
                         [](const machine::HomingMove &m) { return m.homeSteps == 0; });
         if (p.homing != every || !allZero)
-            return refusal("this unit's firmware (v" + std::to_string(state.firmwareVersion) +
-                           ") cannot set one axis's counter (N<axis> needs v19), and N zeroes "
-                           "every counter: home all the machine's axes together, each with home "
-                           "position 0");
+            return refusal(DriverCode::HomeAllTogether, {std::to_string(state.firmwareVersion)});
     }
     return std::nullopt;
 }
@@ -104,16 +99,15 @@ bool HomingCycle::queueAxis(const machine::HomingMove &m, bool zeroAll)
         cmd::home(axis, m.travelSteps, m.towardPulsesPerS, m.backOffSteps, m.offPulsesPerS);
     if (auto bad = validate(w, config.unit.variant, config.unit.maxPulseRate)) {
         m_host.clearSteps();
-        m_host.fail("homing axis " + std::string(1, axisLetter(axis)) + ": " + bad.message, nullptr,
-                    MachineMode::Alarm);
+        m_host.fail({DriverCode::HomingInvalid, {std::string(1, axisLetter(axis)), bad.message}},
+                    nullptr, MachineMode::Alarm);
         return false;
     }
     m_host.send(w, [this, axis](const Outcome &o) {
         if (o.status == OutcomeStatus::Ok && o.reply.code == ReplyCode::OutOfRange) {
             m_host.clearSteps();
-            m_host.fail(std::string("homing axis ") + axisLetter(axis) +
-                            ": the home switch was not found within the configured travel",
-                        &o, MachineMode::Alarm);
+            m_host.fail({DriverCode::HomeSwitchNotFound, {std::string(1, axisLetter(axis))}}, &o,
+                        MachineMode::Alarm);
             return;
         }
         if (m_host.unitError(o, std::string("homing axis ") + axisLetter(axis), MachineMode::Alarm))

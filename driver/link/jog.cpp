@@ -25,10 +25,10 @@ std::optional<MachineError> Jog::moveTo(int axis, std::int64_t target, double sp
     const std::int64_t from = state.positionSteps[static_cast<std::size_t>(axis)];
     target = std::clamp(target, std::min(lo, hi), std::max(lo, hi));
     if (from < std::min(lo, hi) || from > std::max(lo, hi))
-        return refusal("the axis is outside its soft limits: home the machine first");
+        return refusal(DriverCode::JogOutsideLimits);
     const std::int64_t delta = target - from;
     if (delta == 0)
-        return refusal("the axis is at its soft limit");
+        return refusal(DriverCode::JogAtLimit);
     const double rate = std::min(speedMmPerMin, ax.maxSpeedMmPerMin) / 60.0 * ax.stepsPerMm;
     const auto pulses = std::clamp<std::int64_t>(std::llround(rate), 10, config.unit.maxPulseRate);
     std::array<std::int64_t, 4> d{};
@@ -59,7 +59,7 @@ std::optional<MachineError> Jog::step(int axis, double distanceMm, double speedM
     if (state.mode != MachineMode::Idle)
         return notNow("Jogging", state.mode);
     if (axis < 0 || axis >= state.axisCount)
-        return refusal("no such axis");
+        return refusal(DriverCode::NoSuchAxis);
     m_continuous = false;
     const auto from = state.positionSteps[static_cast<std::size_t>(axis)];
     return moveTo(axis, from + m_host.stepsFromMm(axis, distanceMm), speedMmPerMin);
@@ -71,7 +71,7 @@ std::optional<MachineError> Jog::continuous(int axis, int direction, double spee
     if (state.mode != MachineMode::Idle)
         return notNow("Jogging", state.mode);
     if (axis < 0 || axis >= state.axisCount || direction == 0)
-        return refusal("no such axis or direction");
+        return refusal(DriverCode::NoSuchAxisOrDirection);
     const auto &ax = m_host.config().axes[static_cast<std::size_t>(axis)];
     m_continuous = true;
     const double limitMm =

@@ -25,18 +25,17 @@ std::optional<MachineError> ToolLift::lift(bool stopSpindle)
     if (state().mode != MachineMode::Paused || !m_job.active())
         return notNow("Lifting the tool", state().mode);
     if (state().hold == HoldReason::PathFault)
-        return refusal("off the planned path the unit holds no queue to keep: resume, which lifts "
-                       "the tool and returns to the path, or abort");
+        return refusal(DriverCode::LiftOffPath);
     const double liftMm = config.motion.toolLiftMm;
     if (liftMm <= 0)
-        return refusal("the machine profile sets no tool lift height (motion.toolLiftMm)");
+        return refusal(DriverCode::NoLiftHeight);
     // Up is toward the upper soft limit of Z, never beyond it.
     const machine::AxisConfig &z = config.axes[2];
     const std::int64_t now_z = state().positionSteps[2];
     const std::int64_t top = m_host.stepsFromMm(2, z.softMaxMm);
     m_liftSteps = std::min(m_host.stepsFromMm(2, liftMm), std::max<std::int64_t>(0, top - now_z));
     if (m_liftSteps == 0)
-        return refusal("Z is at its upper soft limit: no room to lift the tool");
+        return refusal(DriverCode::LiftAtLimit);
     m_spindleStopped = stopSpindle && state().spindlePermille > 0;
     const int permille = state().spindlePermille;
     m_liftSpindle = permille;
@@ -62,8 +61,8 @@ std::optional<MachineError> ToolLift::lift(bool stopSpindle)
         if (m_host.unitError(o, "lifting the tool", MachineMode::Alarm))
             return;
         m_host.afterIdle([this] {
-            state().hold = HoldReason::User;
-            state().holdText = "tool lifted";
+            detail::setHold(state(), HoldReason::User, {DriverCode::HoldToolLifted},
+                            state().holdLine);
             m_host.setMode(MachineMode::ToolLifted);
         });
     });
@@ -78,7 +77,7 @@ std::optional<MachineError> ToolLift::lower(int speedPulsesPerS)
     if (speedPulsesPerS > 0) {
         if (auto bad = validate(cmd::speed(speedPulsesPerS), config.unit.variant,
                                 config.unit.maxPulseRate))
-            return refusal(bad.message);
+            return refusal(DriverCode::SpeedInvalid, {bad.message});
     }
     m_host.setMode(MachineMode::Stopping);
     if (m_spindleStopped) {
@@ -112,7 +111,8 @@ std::optional<MachineError> ToolLift::lower(int speedPulsesPerS)
                     m_host.applyFlags(*f.reply.hexValue());
                     m_host.setHoldNeedsGo(state().inta);
                     m_active = false;
-                    state().holdText = "tool lowered";
+                    detail::setHold(state(), state().hold, {DriverCode::HoldToolLowered},
+                                    state().holdLine);
                     m_host.setMode(MachineMode::Paused);
                 });
             });
