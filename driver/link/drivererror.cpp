@@ -81,7 +81,8 @@ constexpr CodeInfo kCodes[] = {
     {C::ProgramStartsElsewhere, "ProgramStartsElsewhere",
      QT_TRANSLATE_NOOP("frezka::driver",
                        "The program was planned from %1 steps on axis %2 but the machine is at %3"),
-     QT_TRANSLATE_NOOP("frezka::driver", "Plan it again from here.")},
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "Jog back to where it starts, or plan it again from here.")},
     {C::ProgramNeedsVk, "ProgramNeedsVk",
      QT_TRANSLATE_NOOP(
          "frezka::driver",
@@ -197,7 +198,8 @@ constexpr CodeInfo kCodes[] = {
          "frezka::driver",
          "Line %1: the probe tripped at %2 steps; the rest of the program was planned from the "
          "probe's end point"),
-     QT_TRANSLATE_NOOP("frezka::driver", "Plan it again from here.")},
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "Check the probe and the workpiece, then plan it again from here.")},
     {C::CountersMatchNothing, "CountersMatchNothing",
      QT_TRANSLATE_NOOP(
          "frezka::driver",

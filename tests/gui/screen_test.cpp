@@ -24,8 +24,8 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
-#include <QStatusBar>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -287,7 +287,13 @@ private slots:
         for (int a = 0; a < 3; ++a)
             reach += axes[std::size_t(a)].maxSpeedMmPerMin * axes[std::size_t(a)].maxSpeedMmPerMin;
         reach = std::sqrt(reach);
-        QVERIFY(!m_window->speedPlot()->actual().empty());
+        QVERIFY(waitIdle());
+        QVERIFY(load(writeProgram(QStringLiteral("fast.nc"),
+                                  "G21 G91\nG1 X20 Y20 F6000\nG1 X-20 Y-20\nM30\n")));
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY(m_window->speedPlot()->actual().size() > 10);
         for (const SpeedSample &s : m_window->speedPlot()->actual())
             QVERIFY2(s.speedMmPerMin <= reach + 1e-6, qPrintable(QString::number(s.speedMmPerMin)));
     }
@@ -374,7 +380,7 @@ private slots:
         QVERIFY(errors.wait(10000));
         const QString error = m_window->lastError();
         QVERIFY2(error.contains(QStringLiteral("Spouštění nástroje")) &&
-                     error.contains(QStringLiteral("není nyní možné")) &&
+                     error.contains(QStringLiteral("nyní není možné")) &&
                      error.contains(QStringLiteral("Pozastaveno")),
                  qPrintable(error));
         for (const char *english : {"Lowering", "not possible", "Paused", "machine is"})
