@@ -374,10 +374,6 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>Program byl naplánován od %1 kroků v ose %2, ale stroj je na %3</translation>
     </message>
     <message>
-        <source>Plan it again from here.</source>
-        <translation>Naplánujte ho znovu odsud.</translation>
-    </message>
-    <message>
         <source>Line %1: the plan uses VK, which this unit&apos;s firmware (v%2) lacks (it needs v19)</source>
         <translation>Řádek %1: plán používá VK, které firmware této jednotky (v%2) nemá (vyžaduje v19)</translation>
     </message>
@@ -1032,6 +1028,14 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     <message>
         <source>setup</source>
         <translation>nastavení</translation>
+    </message>
+    <message>
+        <source>Jog back to where it starts, or plan it again from here.</source>
+        <translation>Najeďte zpět tam, kde začíná, nebo ho naplánujte znovu odsud.</translation>
+    </message>
+    <message>
+        <source>Check the probe and the workpiece, then plan it again from here.</source>
+        <translation>Zkontrolujte sondu a obrobek a pak program naplánujte znovu odsud.</translation>
     </message>
 </context>
 <context>

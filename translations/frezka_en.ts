@@ -374,10 +374,6 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>The program was planned from %1 steps on axis %2 but the machine is at %3</translation>
     </message>
     <message>
-        <source>Plan it again from here.</source>
-        <translation>Plan it again from here.</translation>
-    </message>
-    <message>
         <source>Line %1: the plan uses VK, which this unit&apos;s firmware (v%2) lacks (it needs v19)</source>
         <translation>Line %1: the plan uses VK, which this unit&apos;s firmware (v%2) lacks (it needs v19)</translation>
     </message>
@@ -1032,6 +1028,14 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     <message>
         <source>setup</source>
         <translation>setup</translation>
+    </message>
+    <message>
+        <source>Jog back to where it starts, or plan it again from here.</source>
+        <translation>Jog back to where it starts, or plan it again from here.</translation>
+    </message>
+    <message>
+        <source>Check the probe and the workpiece, then plan it again from here.</source>
+        <translation>Check the probe and the workpiece, then plan it again from here.</translation>
     </message>
 </context>
 <context>
