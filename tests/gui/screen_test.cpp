@@ -23,6 +23,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -179,6 +180,7 @@ private slots:
         };
         auto conn = connect(m_window->controller(), &driver::MachineController::stateChanged, this,
                             check, Qt::QueuedConnection);
+        const auto stopChecking = qScopeGuard([&] { disconnect(conn); });
         QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
         m_window->runProgram();
         QTRY_VERIFY_WITH_TIMEOUT(state().positionMm[0] - x0 > 12, kMachineTimeoutMs);
