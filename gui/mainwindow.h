@@ -140,6 +140,7 @@ private:
     void updateProgress(const driver::MachineState &state);
     QString connectionText(const driver::MachineState &state) const;
     std::uint32_t shownLine(const driver::MachineState &state) const;
+    QString logLineText(const QString &line) const;
     void onOffsetsChanged();
     void offerProgram();
     void onJobStarted();

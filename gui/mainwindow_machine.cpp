@@ -283,7 +283,7 @@ void MainWindow::onLogLine(const QString &line)
     if (line.startsWith(QLatin1String("EEPROM differs: ")))
         return; // onConnected() reports each difference in the user's language
     LogDirection dir = LogDirection::Info;
-    QString body = line;
+    QString body = logLineText(line);
     if (line.startsWith(QLatin1String("> "))) {
         dir = LogDirection::Sent;
         body = line.mid(2);

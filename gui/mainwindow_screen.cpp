@@ -151,4 +151,19 @@ void MainWindow::onMachineError(const driver::MachineError &error)
     showError(text);
 }
 
+// The driver's log line of a mode change ("mode: Idle -> Jogging") in the user's words; any
+// other line as it is.
+QString MainWindow::logLineText(const QString &line) const
+{
+    static const QLatin1String kMode("mode: ");
+    const qsizetype arrow = line.indexOf(QLatin1String(" -> "));
+    if (!line.startsWith(kMode) || arrow < 0)
+        return line;
+    const QString from = line.mid(kMode.size(), arrow - kMode.size());
+    const QString to = line.mid(arrow + 4);
+    return tr("State: %1 → %2")
+        .arg(driver::translatedPhrase(from.toStdString()),
+             driver::translatedPhrase(to.toStdString()));
+}
+
 } // namespace frezka::gui

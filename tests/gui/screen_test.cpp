@@ -365,11 +365,21 @@ private slots:
         QVERIFY(load(writeProgram(QStringLiteral("m0.nc"),
                                   "G21 G91\nG1 X1 F600\nM0 (zkontroluj hloubku)\nG1 X-1\nM30\n")));
         QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        const std::size_t logFrom = m_window->console()->entries().size();
         m_window->runProgram();
         QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Paused &&
                                      state().hold == driver::HoldReason::OperatorStop,
                                  kMachineTimeoutMs);
         QTRY_COMPARE(m_window->holdBanner()->kind(), HoldBanner::Kind::OperatorStop);
+        // The machine's state changes in the console are Czech too.
+        int czechStates = 0;
+        const auto &log = m_window->console()->entries();
+        for (std::size_t i = logFrom; i < log.size(); ++i) {
+            const QString e = QString::fromUtf8(log[i].bytes);
+            QVERIFY2(!e.startsWith(QLatin1String("mode: ")), qPrintable(e));
+            czechStates += e.startsWith(QStringLiteral("Stav: Připraven → Obrábění")) ? 1 : 0;
+        }
+        QCOMPARE(czechStates, 1);
         const QString banner = m_window->holdBanner()->text();
         QVERIFY2(banner.contains(QStringLiteral("Programový stop (M0) na řádku 3")),
                  qPrintable(banner));
@@ -393,6 +403,26 @@ private slots:
         back->chooseLanguage(QStringLiteral("en"));
         back->close();
         QTRY_COMPARE(button(m_window->runPanel(), "run")->text(), QStringLiteral("Run"));
+    }
+
+    // After a restart the port used last is used again (and the console says so), even when
+    // it was only applied, never saved in the profile.
+    void lastPortIsUsedAfterARestart()
+    {
+        QSettings().setValue(QStringLiteral("link/port"), QStringLiteral("/nonexistent/ttyLAST"));
+        m_window.reset();
+        MainWindowOptions options;
+        options.view = MainWindowOptions::View::Software;
+        options.restoreLayout = false;
+        m_window = std::make_unique<MainWindow>(options);
+        m_window->show();
+        QTRY_VERIFY_WITH_TIMEOUT(connectionText().contains(QStringLiteral("/nonexistent/ttyLAST")),
+                                 10000);
+        bool told = false;
+        for (const LogEntry &e : m_window->console()->entries())
+            told = told || QString::fromUtf8(e.bytes).contains(QStringLiteral("port used last"));
+        QVERIFY(told);
+        QCOMPARE(m_window->profile().link.port, std::string("emulator")); // the profile as saved
     }
 
     void cleanup()
