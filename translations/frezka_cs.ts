@@ -2623,6 +2623,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Program comment: %1</source>
         <translation>Komentář programu: %1</translation>
     </message>
+    <message>
+        <source>State: %1 → %2</source>
+        <translation>Stav: %1 → %2</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>

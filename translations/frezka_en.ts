@@ -2618,6 +2618,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Program comment: %1</source>
         <translation>Program comment: %1</translation>
     </message>
+    <message>
+        <source>State: %1 → %2</source>
+        <translation>State: %1 → %2</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
