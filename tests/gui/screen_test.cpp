@@ -405,6 +405,41 @@ private slots:
         QTRY_COMPARE(button(m_window->runPanel(), "run")->text(), QStringLiteral("Run"));
     }
 
+    // A multi-line error is shown on console lines, not with a literal "\n"; a good file clears
+    // the previous file's error; after an abort no progress is left shown.
+    void staleErrorsAndProgressAreCleared()
+    {
+        QVERIFY(waitIdle());
+        QSignalSpy loaded(m_window->program(), &ProgramSession::loaded);
+        m_window->openProgram(writeProgram(QStringLiteral("bad.nc"), "G21\nG1 X1 Q\nM30\n"));
+        QVERIFY(loaded.wait(20000));
+        QVERIFY(!m_window->lastError().isEmpty());
+        QVERIFY(m_window->lastError().contains(QLatin1Char('\n')));
+        const LogEntry &shown = m_window->console()->entries().back();
+        QCOMPARE(shown.direction, LogDirection::Error);
+        const QString text = m_window->console()->formatEntry(shown);
+        QVERIFY2(!text.contains(QLatin1String("\\n")), qPrintable(text));
+        QVERIFY(text.contains(QLatin1Char('\n')));
+        QVERIFY(load(writeProgram(QStringLiteral("stepped.nc"), steppedProgram())));
+        QVERIFY2(m_window->lastError().isEmpty(), qPrintable(m_window->lastError()));
+        QVERIFY(m_window->statusBar()->currentMessage().isEmpty());
+        const double x0 = state().positionMm[0];
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QTRY_VERIFY_WITH_TIMEOUT(state().positionMm[0] - x0 > 8, kMachineTimeoutMs);
+        QVERIFY(progress() > 0);
+        button(m_window->runPanel(), "abort")->click();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QCOMPARE(finished.at(0).at(0).toBool(), false);
+        QVERIFY(waitIdle());
+        QCOMPARE(progress(), 0);
+        QCOMPARE(statusLine(), QString());
+        m_window->executeManualLine(QStringLiteral("G91 G1 Z1 F600")); // the stepped plunge back
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Idle && !state().jobActive,
+                                 kMachineTimeoutMs);
+        m_window->executeManualLine(QStringLiteral("G90"));
+    }
+
     // After a restart the port used last is used again (and the console says so), even when
     // it was only applied, never saved in the profile.
     void lastPortIsUsedAfterARestart()
