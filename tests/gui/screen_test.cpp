@@ -415,9 +415,13 @@ private slots:
         QVERIFY(loaded.wait(20000));
         QVERIFY(!m_window->lastError().isEmpty());
         QVERIFY(m_window->lastError().contains(QLatin1Char('\n')));
-        const LogEntry &shown = m_window->console()->entries().back();
-        QCOMPARE(shown.direction, LogDirection::Error);
-        const QString text = m_window->console()->formatEntry(shown);
+        const auto &log = m_window->console()->entries();
+        const auto shown = std::find_if(log.rbegin(), log.rend(), [](const LogEntry &e) {
+            return e.direction == LogDirection::Error;
+        });
+        QVERIFY(shown != log.rend());
+        QVERIFY(shown->bytes.contains('\n'));
+        const QString text = m_window->console()->formatEntry(*shown);
         QVERIFY2(!text.contains(QLatin1String("\\n")), qPrintable(text));
         QVERIFY(text.contains(QLatin1Char('\n')));
         QVERIFY(load(writeProgram(QStringLiteral("stepped.nc"), steppedProgram())));
