@@ -117,6 +117,11 @@ constexpr CodeInfo kCodes[] = {
     {C::NoOverride, "NoOverride",
      QT_TRANSLATE_NOOP("frezka::driver", "This unit has no feed override (XM)"),
      QT_TRANSLATE_NOOP("frezka::driver", "Change the feed in the program instead.")},
+    {C::HomingNeedsFirmware, "HomingNeedsFirmware",
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "This unit's firmware (v%1) has no W: homing to a switch comes with "
+                       "IP64MPG v10"),
+     QT_TRANSLATE_NOOP("frezka::driver", "Set the position by hand (G92) or update the unit.")},
     {C::OverrideNeedsFirmware, "OverrideNeedsFirmware",
      QT_TRANSLATE_NOOP("frezka::driver",
                        "This unit's firmware (v%1) has no XM feed override; it needs v19"),

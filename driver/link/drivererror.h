@@ -50,6 +50,7 @@ enum class DriverCode : std::uint16_t {
     CommandDisturbsJob = 126,     // %1 the text
     SpeedInvalid = 127,           // %1 why
     OverrideNeedsFirmware = 128,  // %1 firmware version
+    HomingNeedsFirmware = 129,    // %1 firmware version (W needs IP64MPG v10)
     // The unit and the link (2xx)
     UnitAnswered = 200,       // %1 the action, %2 the unit's reply
     LinkFailed = 201,         // %1 the action, %2 why

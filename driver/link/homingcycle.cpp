@@ -18,9 +18,7 @@ std::optional<MachineError> HomingCycle::plan(unsigned axisMask, Plan &p) const
     const MachineState &state = m_host.liveState();
     const machine::MachineConfig &config = m_host.config();
     if (!state.features.switchHoming)
-        return refusal("this unit's firmware (v" + std::to_string(state.firmwareVersion) +
-                       ") has no W: homing to a switch comes with IP64MPG v10; set the position "
-                       "by hand (G92) or update the unit");
+        return refusal(DriverCode::HomingNeedsFirmware, {std::to_string(state.firmwareVersion)});
     const std::vector<machine::HomingMove> all = machine::homingSequence(config);
     for (const auto &m : all) {
         const int a = static_cast<int>(m.axis);
