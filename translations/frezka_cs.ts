@@ -1037,6 +1037,14 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>Check the probe and the workpiece, then plan it again from here.</source>
         <translation>Zkontrolujte sondu a obrobek a pak program naplánujte znovu odsud.</translation>
     </message>
+    <message>
+        <source>This unit&apos;s firmware (v%1) has no W: homing to a switch comes with IP64MPG v10</source>
+        <translation>Firmware této jednotky (v%1) nemá W: najíždění na spínač přináší až IP64MPG v10</translation>
+    </message>
+    <message>
+        <source>Set the position by hand (G92) or update the unit.</source>
+        <translation>Nastavte polohu ručně (G92), nebo aktualizujte jednotku.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>

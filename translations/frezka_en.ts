@@ -1037,6 +1037,14 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>Check the probe and the workpiece, then plan it again from here.</source>
         <translation>Check the probe and the workpiece, then plan it again from here.</translation>
     </message>
+    <message>
+        <source>This unit&apos;s firmware (v%1) has no W: homing to a switch comes with IP64MPG v10</source>
+        <translation>This unit&apos;s firmware (v%1) has no W: homing to a switch comes with IP64MPG v10</translation>
+    </message>
+    <message>
+        <source>Set the position by hand (G92) or update the unit.</source>
+        <translation>Set the position by hand (G92) or update the unit.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>
