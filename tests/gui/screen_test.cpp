@@ -174,6 +174,15 @@ private slots:
                             .arg(driver::machineModeName(s.mode))
                             .arg(progress());
             }
+            // The cut drawing: nothing beyond the line after the one being cut is drawn as cut.
+            const auto cut = m_window->toolpathView()->model()->cutEntry();
+            const auto limit =
+                m_window->program()->program().entryOfLine(std::uint32_t(cutting + 1));
+            if (cut != ToolpathViewModel::kNoneCut && cut > limit)
+                worst += QStringLiteral(" | cut to entry %1 while cutting line %2 (entry %3)")
+                             .arg(cut)
+                             .arg(cutting)
+                             .arg(limit);
             if (x < 78 && progress() >= 1000)
                 worst +=
                     QStringLiteral(" | 100 % at x %1, ").arg(x) + driver::machineModeName(s.mode);
@@ -202,7 +211,9 @@ private slots:
         QVERIFY(finished.wait(kMachineTimeoutMs));
         QCOMPARE(finished.at(0).at(0).toBool(), true);
         disconnect(conn);
-        QVERIFY2(worstAhead <= 1 && !worst.contains(QLatin1String("100 %")), qPrintable(worst));
+        QVERIFY2(worstAhead <= 1 && !worst.contains(QLatin1String("100 %")) &&
+                     !worst.contains(QLatin1String("cut to entry")),
+                 qPrintable(worst));
         QCOMPARE(progress(), 1000);
         QVERIFY(waitIdle());
     }
