@@ -1049,6 +1049,58 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>Set the position by hand (G92) or update the unit.</source>
         <translation>Nastavte polohu ručně (G92), nebo aktualizujte jednotku.</translation>
     </message>
+    <message>
+        <source>The spindle is starting: the job continues after its spin-up</source>
+        <translation>Vřeteno se rozbíhá: program pokračuje po jeho rozběhu</translation>
+    </message>
+    <message>
+        <source>Wait for the spin-up; the job then goes on by itself.</source>
+        <translation>Počkejte na rozběh; program pak pokračuje sám.</translation>
+    </message>
+    <message>
+        <source>The jog would end at %1 mm, outside the soft limits %2 .. %3 mm</source>
+        <translation>Posuv by skončil na %1 mm, mimo softwarové limity %2 .. %3 mm</translation>
+    </message>
+    <message>
+        <source>Jog a shorter distance.</source>
+        <translation>Posuňte o kratší vzdálenost.</translation>
+    </message>
+    <message>
+        <source>The jog is shorter than one step</source>
+        <translation>Posuv je kratší než jeden krok</translation>
+    </message>
+    <message>
+        <source>Choose a larger jog step.</source>
+        <translation>Zvolte větší krok posuvu.</translation>
+    </message>
+    <message>
+        <source>The lifted tool is still moving</source>
+        <translation>Zvednutý nástroj se ještě pohybuje</translation>
+    </message>
+    <message>
+        <source>Wait until it stands, then try again.</source>
+        <translation>Počkejte, až se zastaví, a zkuste to znovu.</translation>
+    </message>
+    <message>
+        <source>Homing axis %1: stopped before the end of its search leg (an input interrupt, or the home switch did not release within homing.backOffMm)</source>
+        <translation>Reference osy %1: zastavena před koncem úseku hledání (přerušení ze vstupu, nebo se referenční spínač neuvolnil v rámci homing.backOffMm)</translation>
+    </message>
+    <message>
+        <source>Check the inputs and the switch, then home again; the axis is not homed.</source>
+        <translation>Zkontrolujte vstupy a spínač a najeďte referenci znovu; osa nemá referenci.</translation>
+    </message>
+    <message>
+        <source>The tool did not arrive back at the lift point (%1 instead of %2)</source>
+        <translation>Nástroj se nevrátil do bodu zvednutí (%1 místo %2)</translation>
+    </message>
+    <message>
+        <source>The spindle starts; the job continues after its spin-up</source>
+        <translation>Vřeteno se rozbíhá; program pokračuje po jeho rozběhu</translation>
+    </message>
+    <message>
+        <source>Keep clear of the tool.</source>
+        <translation>Nesahejte k nástroji.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>
@@ -2400,6 +2452,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Keyboard: arrows jog X/Y, Page Up/Page Down jog Z</source>
         <translation>Klávesnice: šipky posouvají X/Y, Page Up/Page Down posouvá Z</translation>
     </message>
+    <message>
+        <source>%1 not homed: soft limits off, slow jog</source>
+        <translation>%1 bez reference: softwarové limity vypnuty, pomalý ruční posuv</translation>
+    </message>
+    <message>
+        <source>Before homing the counters do not say where the axes are: jogging ignores the soft limits and runs at most at the homing speed. Home the machine to have the limits and the full jog speed; a program asks for homing before it runs.</source>
+        <translation>Před najetím do reference čítače neříkají, kde osy jsou: ruční posuv nebere ohled na softwarové limity a jede nejvýše rychlostí hledání reference. Najeďte stroj do reference, aby platily limity a plná rychlost posuvu; program si před spuštěním o referenci řekne.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::MainWindow</name>
@@ -2654,6 +2714,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>State: %1 → %2</source>
         <translation>Stav: %1 → %2</translation>
+    </message>
+    <message>
+        <source>The machine is not homed: its soft limits refer to nothing yet. Home all axes now and then run the program?</source>
+        <translation>Stroj není v referenci: jeho softwarové limity zatím k ničemu neodkazují. Najet teď všemi osami do reference a pak spustit program?</translation>
+    </message>
+    <message>
+        <source>Home and run</source>
+        <translation>Reference a spustit</translation>
     </message>
 </context>
 <context>
@@ -3181,6 +3249,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Spindle and coolant off at M6</source>
         <translation>Vřeteno a chlazení vypnout při M6</translation>
     </message>
+    <message>
+        <source>START button input (0 = none)</source>
+        <translation>Vstup tlačítka START (0 = není)</translation>
+    </message>
+    <message>
+        <source>Allow a run before homing (with a warning)</source>
+        <translation>Povolit spuštění před najetím do reference (s varováním)</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ProfileEditor</name>
@@ -3287,20 +3363,8 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Pokračovat</translation>
     </message>
     <message>
-        <source>Stop</source>
-        <translation>Stop</translation>
-    </message>
-    <message>
-        <source>Stop the program; the position stays known</source>
-        <translation>Zastavit program; poloha zůstává známá</translation>
-    </message>
-    <message>
         <source>Abort</source>
         <translation>Přerušit</translation>
-    </message>
-    <message>
-        <source>Stop at once and drop every queued move</source>
-        <translation>Okamžitě zastavit a zahodit všechny pohyby ve frontě</translation>
     </message>
     <message>
         <source>Tool lift…</source>
@@ -3309,6 +3373,26 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Lift the tool, switch the spindle off, change or clean it, continue</source>
         <translation>Zvednout nástroj, vypnout vřeteno, vyměnit nebo očistit nástroj, pokračovat</translation>
+    </message>
+    <message>
+        <source>Run the checked program (asks for homing first on a machine not homed). The machine&apos;s START button does the same when the profile names its input. Space and Enter never press it.</source>
+        <translation>Spustit zkontrolovaný program (u stroje bez reference se nejprve zeptá na najetí do reference). Totéž udělá tlačítko START stroje, pokud profil uvádí jeho vstup. Mezerník ani Enter jej nikdy nestisknou.</translation>
+    </message>
+    <message>
+        <source>Continue the held job (the START button does the same)</source>
+        <translation>Pokračovat v pozastavené úloze (totéž udělá tlačítko START)</translation>
+    </message>
+    <message>
+        <source>Stop (Esc)</source>
+        <translation>Stop (Esc)</translation>
+    </message>
+    <message>
+        <source>Controlled stop (Esc): brake along the ramp and hold the job; the position stays known and Resume continues it. During homing: end homing, the axes not yet homed stay not homed.</source>
+        <translation>Řízené zastavení (Esc): zabrzdit po rampě a pozastavit úlohu; poloha zůstává známá a Pokračovat ji dokončí. Při najíždění do reference: ukončit je, osy dosud bez reference zůstanou bez reference.</translation>
+    </message>
+    <message>
+        <source>Brake and drop every queued move: the job ends and cannot be resumed; the position stays known. Also ends homing.</source>
+        <translation>Zabrzdit a zahodit všechny pohyby ve frontě: úloha skončí a nelze v ní pokračovat; poloha zůstává známá. Ukončí i najíždění do reference.</translation>
     </message>
 </context>
 <context>
@@ -4043,6 +4127,34 @@ Volby:
     <message>
         <source>the job did not finish</source>
         <translation>úloha nedoběhla</translation>
+    </message>
+    <message>
+        <source>The machine is not homed: home it first, then Run.</source>
+        <translation>Stroj není v referenci: nejprve jej najeďte do reference, pak stiskněte Spustit.</translation>
+    </message>
+    <message>
+        <source>Warning: the machine is not homed; the program runs from counters that were not set by homing (motion.runBeforeHoming).</source>
+        <translation>Varování: stroj není v referenci; program poběží podle čítačů, které nenastavilo najetí do reference (motion.runBeforeHoming).</translation>
+    </message>
+    <message>
+        <source>Homing, then running the program…</source>
+        <translation>Najíždím do reference, pak spustím program…</translation>
+    </message>
+    <message>
+        <source>Homing did not finish; the program was not started.</source>
+        <translation>Najíždění do reference nedoběhlo; program nebyl spuštěn.</translation>
+    </message>
+    <message>
+        <source>START button: resuming the job.</source>
+        <translation>Tlačítko START: pokračuji v úloze.</translation>
+    </message>
+    <message>
+        <source>START button: running %1.</source>
+        <translation>Tlačítko START: spouštím %1.</translation>
+    </message>
+    <message>
+        <source>START button ignored: nothing to start or resume (%1).</source>
+        <translation>Tlačítko START přeskočeno: není co spustit ani v čem pokračovat (%1).</translation>
     </message>
 </context>
 <context>

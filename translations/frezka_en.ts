@@ -1049,6 +1049,58 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>Set the position by hand (G92) or update the unit.</source>
         <translation>Set the position by hand (G92) or update the unit.</translation>
     </message>
+    <message>
+        <source>The spindle is starting: the job continues after its spin-up</source>
+        <translation>The spindle is starting: the job continues after its spin-up</translation>
+    </message>
+    <message>
+        <source>Wait for the spin-up; the job then goes on by itself.</source>
+        <translation>Wait for the spin-up; the job then goes on by itself.</translation>
+    </message>
+    <message>
+        <source>The jog would end at %1 mm, outside the soft limits %2 .. %3 mm</source>
+        <translation>The jog would end at %1 mm, outside the soft limits %2 .. %3 mm</translation>
+    </message>
+    <message>
+        <source>Jog a shorter distance.</source>
+        <translation>Jog a shorter distance.</translation>
+    </message>
+    <message>
+        <source>The jog is shorter than one step</source>
+        <translation>The jog is shorter than one step</translation>
+    </message>
+    <message>
+        <source>Choose a larger jog step.</source>
+        <translation>Choose a larger jog step.</translation>
+    </message>
+    <message>
+        <source>The lifted tool is still moving</source>
+        <translation>The lifted tool is still moving</translation>
+    </message>
+    <message>
+        <source>Wait until it stands, then try again.</source>
+        <translation>Wait until it stands, then try again.</translation>
+    </message>
+    <message>
+        <source>Homing axis %1: stopped before the end of its search leg (an input interrupt, or the home switch did not release within homing.backOffMm)</source>
+        <translation>Homing axis %1: stopped before the end of its search leg (an input interrupt, or the home switch did not release within homing.backOffMm)</translation>
+    </message>
+    <message>
+        <source>Check the inputs and the switch, then home again; the axis is not homed.</source>
+        <translation>Check the inputs and the switch, then home again; the axis is not homed.</translation>
+    </message>
+    <message>
+        <source>The tool did not arrive back at the lift point (%1 instead of %2)</source>
+        <translation>The tool did not arrive back at the lift point (%1 instead of %2)</translation>
+    </message>
+    <message>
+        <source>The spindle starts; the job continues after its spin-up</source>
+        <translation>The spindle starts; the job continues after its spin-up</translation>
+    </message>
+    <message>
+        <source>Keep clear of the tool.</source>
+        <translation>Keep clear of the tool.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>
@@ -2399,6 +2451,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Keyboard: arrows jog X/Y, Page Up/Page Down jog Z</source>
         <translation>Keyboard: arrows jog X/Y, Page Up/Page Down jog Z</translation>
     </message>
+    <message>
+        <source>%1 not homed: soft limits off, slow jog</source>
+        <translation>%1 not homed: soft limits off, slow jog</translation>
+    </message>
+    <message>
+        <source>Before homing the counters do not say where the axes are: jogging ignores the soft limits and runs at most at the homing speed. Home the machine to have the limits and the full jog speed; a program asks for homing before it runs.</source>
+        <translation>Before homing the counters do not say where the axes are: jogging ignores the soft limits and runs at most at the homing speed. Home the machine to have the limits and the full jog speed; a program asks for homing before it runs.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::MainWindow</name>
@@ -2649,6 +2709,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>State: %1 → %2</source>
         <translation>State: %1 → %2</translation>
+    </message>
+    <message>
+        <source>The machine is not homed: its soft limits refer to nothing yet. Home all axes now and then run the program?</source>
+        <translation>The machine is not homed: its soft limits refer to nothing yet. Home all axes now and then run the program?</translation>
+    </message>
+    <message>
+        <source>Home and run</source>
+        <translation>Home and run</translation>
     </message>
 </context>
 <context>
@@ -3176,6 +3244,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Spindle and coolant off at M6</source>
         <translation>Spindle and coolant off at M6</translation>
     </message>
+    <message>
+        <source>START button input (0 = none)</source>
+        <translation>START button input (0 = none)</translation>
+    </message>
+    <message>
+        <source>Allow a run before homing (with a warning)</source>
+        <translation>Allow a run before homing (with a warning)</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ProfileEditor</name>
@@ -3281,20 +3357,8 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>Resume</translation>
     </message>
     <message>
-        <source>Stop</source>
-        <translation>Stop</translation>
-    </message>
-    <message>
-        <source>Stop the program; the position stays known</source>
-        <translation>Stop the program; the position stays known</translation>
-    </message>
-    <message>
         <source>Abort</source>
         <translation>Abort</translation>
-    </message>
-    <message>
-        <source>Stop at once and drop every queued move</source>
-        <translation>Stop at once and drop every queued move</translation>
     </message>
     <message>
         <source>Tool lift…</source>
@@ -3303,6 +3367,26 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Lift the tool, switch the spindle off, change or clean it, continue</source>
         <translation>Lift the tool, switch the spindle off, change or clean it, continue</translation>
+    </message>
+    <message>
+        <source>Run the checked program (asks for homing first on a machine not homed). The machine&apos;s START button does the same when the profile names its input. Space and Enter never press it.</source>
+        <translation>Run the checked program (asks for homing first on a machine not homed). The machine&apos;s START button does the same when the profile names its input. Space and Enter never press it.</translation>
+    </message>
+    <message>
+        <source>Continue the held job (the START button does the same)</source>
+        <translation>Continue the held job (the START button does the same)</translation>
+    </message>
+    <message>
+        <source>Stop (Esc)</source>
+        <translation>Stop (Esc)</translation>
+    </message>
+    <message>
+        <source>Controlled stop (Esc): brake along the ramp and hold the job; the position stays known and Resume continues it. During homing: end homing, the axes not yet homed stay not homed.</source>
+        <translation>Controlled stop (Esc): brake along the ramp and hold the job; the position stays known and Resume continues it. During homing: end homing, the axes not yet homed stay not homed.</translation>
+    </message>
+    <message>
+        <source>Brake and drop every queued move: the job ends and cannot be resumed; the position stays known. Also ends homing.</source>
+        <translation>Brake and drop every queued move: the job ends and cannot be resumed; the position stays known. Also ends homing.</translation>
     </message>
 </context>
 <context>
@@ -4032,6 +4116,34 @@ Options:
     <message>
         <source>the job did not finish</source>
         <translation>the job did not finish</translation>
+    </message>
+    <message>
+        <source>The machine is not homed: home it first, then Run.</source>
+        <translation>The machine is not homed: home it first, then Run.</translation>
+    </message>
+    <message>
+        <source>Warning: the machine is not homed; the program runs from counters that were not set by homing (motion.runBeforeHoming).</source>
+        <translation>Warning: the machine is not homed; the program runs from counters that were not set by homing (motion.runBeforeHoming).</translation>
+    </message>
+    <message>
+        <source>Homing, then running the program…</source>
+        <translation>Homing, then running the program…</translation>
+    </message>
+    <message>
+        <source>Homing did not finish; the program was not started.</source>
+        <translation>Homing did not finish; the program was not started.</translation>
+    </message>
+    <message>
+        <source>START button: resuming the job.</source>
+        <translation>START button: resuming the job.</translation>
+    </message>
+    <message>
+        <source>START button: running %1.</source>
+        <translation>START button: running %1.</translation>
+    </message>
+    <message>
+        <source>START button ignored: nothing to start or resume (%1).</source>
+        <translation>START button ignored: nothing to start or resume (%1).</translation>
     </message>
 </context>
 <context>
