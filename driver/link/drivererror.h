@@ -79,17 +79,17 @@ enum class DriverCode : std::uint16_t {
     ReturnFailed = 305,          // %1 attempts
     OffPath = 306,               // %1 what the counters read, %2 the line it returns to
     // Why a job is held (4xx)
-    HoldPaused = 400,       //
-    HoldProgramStop = 401,  // %1 line (M0)
-    HoldOptionalStop = 402, // %1 line (M1)
-    HoldToolChange = 403,   // %1 line, %2 tool (M6)
-    HoldInterrupt = 404,    //
-    HoldInput = 405,        // %1 the inputs' names
-    HoldStopButton = 406,   // %1 the inputs' names (the STOP button among them)
-    HoldToolLifted = 407,   //
-    HoldToolLowered = 408,  //
-    HoldReturning = 409,    //
-    HoldLinkRestored = 410, //
+    HoldPaused = 400,          //
+    HoldProgramStop = 401,     // %1 line (M0)
+    HoldOptionalStop = 402,    // %1 line (M1)
+    HoldToolChange = 403,      // %1 line, %2 tool (M6)
+    HoldInterrupt = 404,       //
+    HoldInput = 405,           // %1 the inputs' names
+    HoldStopButton = 406,      // %1 the inputs' names (the STOP button among them)
+    HoldToolLifted = 407,      //
+    HoldToolLowered = 408,     //
+    HoldReturning = 409,       //
+    HoldLinkRestored = 410,    //
     HoldSpindleStarting = 411, //
     HoldToolLowering = 412,    //
 };

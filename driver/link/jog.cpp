@@ -27,9 +27,9 @@ std::optional<MachineError> Jog::send(int axis, const machine::JogMove &m)
     case machine::JogVerdict::Move:
         break;
     case machine::JogVerdict::BeyondLimit:
-        return refusal(DriverCode::JogBeyondLimits, {numberText(m.targetMm),
-                                                     numberText(ax.softMinMm),
-                                                     numberText(ax.softMaxMm)});
+        return refusal(
+            DriverCode::JogBeyondLimits,
+            {numberText(m.targetMm), numberText(ax.softMinMm), numberText(ax.softMaxMm)});
     case machine::JogVerdict::AtLimit:
         return refusal(DriverCode::JogAtLimit);
     case machine::JogVerdict::NoMove:

@@ -261,7 +261,9 @@ void MachineCore::applyFlags(std::uint8_t flags)
     m_state.inta = (flags & 0x80) != 0;
     m_state.queueFull = (flags & 0x20) != 0;
     m_dirty = true;
-    if (m_job.active() && !m_state.run)
+    // A running unit that stands has run everything accepted; one held by H, an interrupt or a
+    // tool lift (INTA set, or not Running) stands with its queue kept.
+    if (m_job.active() && !m_state.run && !m_state.inta && m_state.mode == MachineMode::Running)
         m_job.unitStands();
     if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running && !m_haltExpected)
         m_hold.interrupted();

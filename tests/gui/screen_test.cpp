@@ -112,6 +112,8 @@ private slots:
         QCoreApplication::setOrganizationName(QStringLiteral("FrezkaScreenTest"));
         machine::MachineConfig profile = machine::defaultMachineConfig(protocol::Variant::Gve64);
         profile.link.port = "emulator";
+        // The screen is under test, not homing: runs start on the unhomed emulator (warned).
+        profile.motion.runBeforeHoming = true;
         const QString profilePath = m_dir.filePath(QStringLiteral("machine.json"));
         QVERIFY(!machine::saveMachineConfig(profile, profilePath.toStdString()));
         QSettings().setValue(QStringLiteral("lastProfile"), profilePath);
@@ -163,6 +165,8 @@ private slots:
                 return;
             // The line whose X range holds the unit's X (lines 1-2 are the plunge).
             const double x = s.positionMm[0] - x0;
+            if (x >= 80 - 1e-6)
+                return; // the cut is done: the unit stands at its end, on the program's last lines
             const int cutting = x <= 0 ? 2 : std::min(42, 3 + int(std::floor((x - 1e-6) / 2)));
             const int shown = m_window->listing()->currentLine();
             if (shown - cutting > worstAhead) {
