@@ -80,10 +80,11 @@ ConsoleWidget::ConsoleWidget(QWidget *parent)
 
 void ConsoleWidget::append(LogDirection direction, const QByteArray &bytes)
 {
-    // Polls: position (P, PF, P4), flags (F), inputs (I1, I2), status (SR6), and the reply that
+    // Polls: position (P, PF, P4), flags (F), inputs (I1, I2), status (SR6), the link's own
+    // index and last-reply queries (@, >, docs/gve-protocol.md §8), and the reply that
     // follows one (the link is half duplex, so the next received line answers it).
     static const QRegularExpression kPoll(
-        QStringLiteral("^!?[0-7]?(P|PF|P4|F|I1|I2|SR6)(,[0-9A-F]{2})?\\r?$"));
+        QStringLiteral("^!?[0-7]?(P|PF|P4|F|I1|I2|SR6|@|>)(,[0-9A-F]{2})?\\r?$"));
     bool poll = false;
     if (direction == LogDirection::Sent) {
         poll = kPoll.match(QString::fromLatin1(bytes).trimmed()).hasMatch();
@@ -105,10 +106,15 @@ QString ConsoleWidget::formatEntry(const LogEntry &e) const
     QString body;
     if (m_hex && (e.direction == LogDirection::Sent || e.direction == LogDirection::Received)) {
         body = QString::fromLatin1(e.bytes.toHex(' ').toUpper());
-    } else {
-        body = QString::fromUtf8(e.bytes);
+    } else if (e.direction == LogDirection::Sent || e.direction == LogDirection::Received) {
+        body = QString::fromUtf8(e.bytes); // the wire's bytes: line ends shown as such
         body.replace(QLatin1Char('\r'), QStringLiteral("\\r"));
         body.replace(QLatin1Char('\n'), QStringLiteral("\\n"));
+    } else {
+        // A message of several lines: each further line indented under the first.
+        body = QString::fromUtf8(e.bytes);
+        body.remove(QLatin1Char('\r'));
+        body.replace(QLatin1Char('\n'), QStringLiteral("\n               "));
     }
     return e.time.toString(QStringLiteral("HH:mm:ss.zzz ")) +
            QLatin1String(kPrefix[int(e.direction)]) + body;

@@ -221,8 +221,13 @@ void MainWindow::retranslate()
 
 void MainWindow::changeEvent(QEvent *event)
 {
-    if (event->type() == QEvent::LanguageChange)
+    if (event->type() == QEvent::LanguageChange) {
         retranslate();
+        if (m_controller) { // the hold's words and the connection in the new language
+            m_holdDetail.clear();
+            onState(m_controller->state());
+        }
+    }
     QMainWindow::changeEvent(event);
 }
 
@@ -312,6 +317,10 @@ void MainWindow::connectProgram()
         const LoadedProgram &p = m_program->program();
         m_listing->setText(p.text);
         m_view->model()->setScene(p.scene);
+        if (p.errors.empty()) { // a good file: the previous file's error is no longer news
+            m_lastError.clear();
+            statusBar()->clearMessage();
+        }
 
         m_plot->setPlanned(p.speed);
         checkProgramLimits();
@@ -363,7 +372,18 @@ UnitConfigDialog *MainWindow::openUnitConfig()
 
 void MainWindow::applyProfile(const machine::MachineConfig &config, const QString &path)
 {
+    const bool newLink = m_connectedOnce && (config.link.port != profile().link.port ||
+                                             config.link.baud != profile().link.baud);
     m_workflow->setProfile(config); // the controller's too
+    if (newLink) {
+        // A new port (or rate) set with Apply is used now, unless a job is on the machine.
+        if (m_controller->state().jobActive)
+            m_console->appendInfo(tr("The new port is used when you connect again after the "
+                                     "job."));
+        else
+            QMetaObject::invokeMethod(
+                this, [this] { connectToUnit(); }, Qt::QueuedConnection);
+    }
     m_profilePath = path;
     const auto &info = protocol::variantInfo(config.unit.variant);
     const int axes = info.axisCount == 4 && config.axes[3].present ? 4 : 3;

@@ -5,6 +5,8 @@
 // controls to the session layer (run workflow, console, work offsets), which keeps every piece
 // of workflow state; the window keeps none of its own.
 
+#include "actualspeed.h"
+
 #include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
 #include "programsession.h"
@@ -135,7 +137,12 @@ private:
     void onMachineError(const driver::MachineError &error);
     void onLogLine(const QString &line);
     void updateHold(const driver::MachineState &state);
+    QString holdDetail(const driver::MachineState &state) const;
+    void showJob(const driver::MachineState &state);
     void updateProgress(const driver::MachineState &state);
+    QString connectionText(const driver::MachineState &state) const;
+    std::uint32_t shownLine(const driver::MachineState &state) const;
+    QString logLineText(const QString &line) const;
     void onOffsetsChanged();
     void offerProgram();
     void onJobStarted();
@@ -168,10 +175,11 @@ private:
     session::MachineLink *m_link = nullptr;
     session::RunWorkflow *m_workflow = nullptr;
     session::ConsoleSession *m_consoleSession = nullptr;
-    // Rendering of the running job: the actual speed from the live position.
-    std::array<double, 4> m_lastPos{};
-    qint64 m_lastPosMs = -1;
-    double m_actualDistanceMm = 0;
+    // Rendering of the running job: the actual speed from the live position; the hold shown.
+    ActualSpeed m_speed;
+    int m_holdLine = 0;
+    QString m_holdDetail;
+    bool m_connectedOnce = false; // the first connect may use the port used last
     QString m_lastError;
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;

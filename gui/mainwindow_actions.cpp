@@ -27,8 +27,7 @@ void MainWindow::onJobStarted()
 {
     m_view->model()->setCutEntry(ToolpathViewModel::kNoneCut);
     m_plot->clearActual();
-    m_actualDistanceMm = 0;
-    m_lastPosMs = -1;
+    m_speed.reset();
 }
 
 void MainWindow::checkProgram()

@@ -116,6 +116,18 @@ void MainWindow::connectMachine()
 void MainWindow::onJobFinished(bool ok)
 {
     const double elapsedS = m_workflow->jobElapsedS();
+    if (m_consoleSession->ranLastJob()) {
+        // A console line's own job: the loaded program's display stays as it was.
+        if (ok)
+            m_console->appendInfo(tr("Manual line done."));
+        updateRunPhase();
+        return;
+    }
+    if (!ok) {
+        // Aborted or failed: nothing of the program is running, so no progress is left shown.
+        m_run->setProgress(0, elapsedS, m_program->program().estimatedS);
+        m_state->clear();
+    }
     if (ok) {
         m_run->setProgress(1.0, elapsedS, 0);
         const auto &toolpath = m_program->program().toolpath;
@@ -143,6 +155,7 @@ void MainWindow::onChecked(bool ok)
 
 void MainWindow::onConnected()
 {
+    // Once, in the user's words (the driver's own English log line of each is not shown).
     for (const auto &d : m_controller->state().eepromDifferences)
         m_console->appendInfo(
             tr("Unit EEPROM differs from the profile: %1").arg(QString::fromStdString(d)));
@@ -236,10 +249,22 @@ void MainWindow::askToHome()
 void MainWindow::connectToUnit()
 {
     QSettings settings;
-    settings.setValue(QStringLiteral("link/port"), QString::fromStdString(profile().link.port));
+    machine::MachineConfig config = profile();
+    // After a restart the port used last (set with Apply, perhaps never saved in the profile)
+    // is used again, and the console says so.
+    const QString last = settings.value(QStringLiteral("link/port")).toString();
+    if (!m_connectedOnce && !last.isEmpty() && last.toStdString() != config.link.port) {
+        m_console->appendInfo(tr("Using the port used last, %1 (the machine profile says %2).")
+                                  .arg(last, QString::fromStdString(config.link.port)));
+        config.link.port = last.toStdString();
+        config.link.baud = settings.value(QStringLiteral("link/baud"), config.link.baud).toInt();
+    }
+    m_connectedOnce = true;
+    settings.setValue(QStringLiteral("link/port"), QString::fromStdString(config.link.port));
+    settings.setValue(QStringLiteral("link/baud"), config.link.baud);
     m_workflow->setAutoReconnect(
         settings.value(QStringLiteral("link/autoReconnect"), true).toBool());
-    m_workflow->connectToUnit(session::RunWorkflow::connectionFor(profile()));
+    m_workflow->connectToUnit(session::RunWorkflow::connectionFor(config));
 }
 
 void MainWindow::disconnectFromUnit()
@@ -268,7 +293,7 @@ void MainWindow::onState(const driver::MachineState &state)
     m_outputs->showFeedOverride(state.overridePercent);
     m_jog->setMpgOn(state.mpgOn);
     m_jog->setHomedAxes(state.homedAxes, isConnected(state.mode));
-    m_connection->setText(machineModeText(state.mode));
+    m_connection->setText(connectionText(state));
     m_connection->setStyleSheet(isConnected(state.mode) ? QString()
                                                         : QStringLiteral("color: #c00;"));
     const auto &info = protocol::variantInfo(state.variant);
@@ -278,99 +303,17 @@ void MainWindow::onState(const driver::MachineState &state)
             : QStringLiteral("%1 · %2").arg(
                   QString::fromUtf8(info.displayName.data(), qsizetype(info.displayName.size())),
                   QString::fromStdString(state.firmware)));
-    m_state->setText(state.jobActive && state.sourceLine > 0 ? tr("Line %1").arg(state.sourceLine)
-                                                             : QString());
-    if (state.jobActive && state.sourceLine > 0) {
-        m_listing->showCurrentLine(int(state.sourceLine));
-        m_view->model()->setCutEntry(m_program->program().entryOfLine(state.sourceLine));
-    }
-    updateProgress(state);
+    showJob(state);
     updateHold(state);
     updateRunPhase();
 }
 
-void MainWindow::updateProgress(const driver::MachineState &state)
-{
-    if (!state.jobActive)
-        return;
-    const double elapsed = m_workflow->jobElapsedS();
-    // ETA from the planner's model at the line being cut; the driver's own figure otherwise.
-    const LoadedProgram &p = m_program->program();
-    const double planned = p.remainingS(state.sourceLine);
-    if (planned >= 0 && p.estimatedS > 0)
-        m_run->setProgress(1.0 - planned / p.estimatedS, elapsed, planned);
-    else
-        m_run->setProgress(state.progress, elapsed, state.etaS);
-    // Actual speed from the live position (mm/min along the travelled path).
-    const qint64 now = qint64(elapsed * 1000);
-    if (m_lastPosMs >= 0 && now > m_lastPosMs) {
-        double d2 = 0;
-        for (std::size_t i = 0; i < 3; ++i)
-            d2 += (state.positionMm[i] - m_lastPos[i]) * (state.positionMm[i] - m_lastPos[i]);
-        const double d = std::sqrt(d2);
-        m_actualDistanceMm += d;
-        m_plot->addActual(
-            {m_actualDistanceMm, d / (double(now - m_lastPosMs) / 60000.0), state.sourceLine});
-        m_plot->setCursorDistance(m_actualDistanceMm);
-    }
-    m_lastPos = state.positionMm;
-    m_lastPosMs = now;
-}
-
-void MainWindow::updateHold(const driver::MachineState &state)
-{
-    using K = HoldBanner::Kind;
-    K kind = K::None;
-    if (state.mode == MachineMode::ToolLifted) {
-        kind = K::ToolLifted;
-    } else if (state.mode == MachineMode::Paused) {
-        switch (state.hold) {
-        case driver::HoldReason::OperatorStop:
-            kind = K::OperatorStop;
-            break;
-        case driver::HoldReason::Interrupt:
-            kind = K::Interrupt;
-            break;
-        case driver::HoldReason::ProbeFailed:
-            kind = K::ProbeFailed;
-            break;
-        case driver::HoldReason::PathFault:
-            kind = K::PathFault;
-            break;
-        default:
-            kind = K::Paused;
-        }
-    }
-    m_hold->setOutputs(state.spindleOn, state.outputsHeld, profile().spindle.spinUpMs / 1000.0);
-    if (kind == m_hold->kind())
-        return;
-    m_hold->showHold(kind, int(state.sourceLine), QString::fromStdString(state.holdText));
-    // The operator's word on the spindle for a hold: ticked, a pause or an input's stop switches
-    // it off once the machine stands; at M0/M1/M6 the profile decides and the box shows it.
-    if (kind == K::OperatorStop)
-        m_hold->setStopSpindle(state.outputsHeld || !state.spindleOn);
-    else if ((kind == K::Paused || kind == K::Interrupt) && m_hold->stopSpindleOnLift() &&
-             state.spindleOn && !state.outputsHeld)
-        m_controller->execute(driver::op::HoldSpindle{true});
-}
-
-void MainWindow::onMachineError(const driver::MachineError &error)
-{
-    QString text = tr("The unit reported a problem: %1").arg(QString::fromStdString(error.message));
-    if (!error.command.empty())
-        text += QLatin1Char('\n') + tr("Command: %1").arg(QString::fromStdString(error.command));
-    if (!error.reply.empty())
-        text += QLatin1Char('\n') + tr("Reply: %1").arg(QString::fromStdString(error.reply));
-    const std::uint32_t line = m_controller->state().sourceLine;
-    if (m_controller->state().jobActive && line > 0)
-        text += QLatin1Char('\n') + tr("Program line: %1").arg(line);
-    showError(text);
-}
-
 void MainWindow::onLogLine(const QString &line)
 {
+    if (line.startsWith(QLatin1String("EEPROM differs: ")))
+        return; // onConnected() reports each difference in the user's language
     LogDirection dir = LogDirection::Info;
-    QString body = line;
+    QString body = logLineText(line);
     if (line.startsWith(QLatin1String("> "))) {
         dir = LogDirection::Sent;
         body = line.mid(2);

@@ -1,5 +1,7 @@
 #include "programtext.h"
 
+#include <QStringList>
+
 #include <cstring>
 
 namespace frezka::gui {
@@ -37,6 +39,31 @@ QString ProgramText::line(int index) const
     while (end > start && (m_data[end - 1] == '\n' || m_data[end - 1] == '\r'))
         --end;
     return QString::fromUtf8(m_data.constData() + start, end - start);
+}
+
+QString ProgramText::comment(int line) const
+{
+    if (line < 1 || line > lineCount())
+        return {};
+    const QString text = this->line(line - 1);
+    QStringList parts;
+    qsizetype i = 0;
+    while (i < text.size()) {
+        if (text[i] == QLatin1Char(';')) {
+            parts << text.mid(i + 1).trimmed();
+            break;
+        }
+        if (text[i] == QLatin1Char('(')) {
+            const qsizetype end = text.indexOf(QLatin1Char(')'), i + 1);
+            parts << text.mid(i + 1, end < 0 ? -1 : end - i - 1).trimmed();
+            if (end < 0)
+                break;
+            i = end;
+        }
+        ++i;
+    }
+    parts.removeAll(QString());
+    return parts.join(QStringLiteral("; "));
 }
 
 } // namespace frezka::gui

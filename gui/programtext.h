@@ -24,6 +24,10 @@ public:
     QString line(int index) const;
     const QByteArray &data() const { return m_data; }
 
+    // The comment of a 1-based line: the text of its ( ) comments, or after ';' (0 or out of
+    // range: empty), for an operator stop ("M0 (check the slot depth)").
+    QString comment(int line) const;
+
 private:
     QByteArray m_data;
     std::vector<qint64> m_starts;

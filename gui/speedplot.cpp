@@ -80,10 +80,16 @@ void SpeedPlot::setCursorDistance(double mm)
     update();
 }
 
+// The speed labels sit left of the plot, the top one centred on its top edge: room for the
+// widest label and half a line above the plot, so that no label is cut.
 QRectF SpeedPlot::plotRect() const
 {
-    const int left = fontMetrics().horizontalAdvance(QStringLiteral("00000")) + 6;
-    return QRectF(left, 4, width() - left - 4, height() - fontMetrics().height() - 8);
+    const QFontMetrics fm = fontMetrics();
+    const int left = std::max(fm.horizontalAdvance(QStringLiteral("00000")),
+                              fm.horizontalAdvance(QString::number(m_maxSpeed, 'f', 0))) +
+                     6;
+    const int top = fm.height() / 2 + 2;
+    return QRectF(left, top, width() - left - 4, height() - top - fm.height() - 4);
 }
 
 void SpeedPlot::paintEvent(QPaintEvent *)
@@ -94,8 +100,9 @@ void SpeedPlot::paintEvent(QPaintEvent *)
     p.setPen(QColor(90, 90, 90));
     p.drawRect(r);
     p.setPen(QColor(200, 200, 200));
-    p.drawText(QRectF(0, r.top(), r.left() - 4, 20), Qt::AlignRight | Qt::AlignTop,
-               QString::number(m_maxSpeed, 'f', 0));
+    const int lineH = fontMetrics().height();
+    p.drawText(QRectF(0, r.top() - lineH / 2.0, r.left() - 4, lineH),
+               Qt::AlignRight | Qt::AlignVCenter, QString::number(m_maxSpeed, 'f', 0));
     p.drawText(QRectF(0, r.bottom() - 16, r.left() - 4, 16), Qt::AlignRight, QStringLiteral("0"));
     p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), 20), Qt::AlignLeft,
                tr("mm/min along the path (%1 mm)").arg(m_maxDistance, 0, 'f', 0));

@@ -2,12 +2,14 @@
 
 #include "eepromdecode.h"
 
+#include "driver/link/drivererror.h"
 #include "driver/link/machinecontroller.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -31,9 +33,12 @@ UnitConfigDialog::UnitConfigDialog(driver::MachineController *controller,
     m_writeDiff = new QPushButton(this);
     m_writeAll = new QPushButton(this);
     m_close = new QPushButton(this);
+    m_read->setObjectName(QStringLiteral("eepromRead"));
+    m_writeDiff->setObjectName(QStringLiteral("eepromWriteDifferences"));
+    m_writeAll->setObjectName(QStringLiteral("eepromWriteAll"));
     connect(m_read, &QPushButton::clicked, this, &UnitConfigDialog::readUnit);
-    connect(m_writeDiff, &QPushButton::clicked, this, [this] { writeUnit(false); });
-    connect(m_writeAll, &QPushButton::clicked, this, [this] { writeUnit(true); });
+    connect(m_writeDiff, &QPushButton::clicked, this, [this] { requestWrite(false); });
+    connect(m_writeAll, &QPushButton::clicked, this, [this] { requestWrite(true); });
     connect(m_close, &QPushButton::clicked, this, &QDialog::close);
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_read);
@@ -86,6 +91,32 @@ void UnitConfigDialog::readUnit()
         m_queue.push_back({eepromReadCommand(m_rows[i].wanted), int(i), false, false});
     m_status->setText(tr("Reading the unit's EEPROM…"));
     next();
+}
+
+void UnitConfigDialog::requestWrite(bool all)
+{
+    if (isBusy())
+        return;
+    const int n = all ? int(m_rows.size()) : differences();
+    if (!all && n == 0) {
+        writeUnit(false); // nothing to write: says so
+        return;
+    }
+    auto *box = new QMessageBox(
+        QMessageBox::Question, tr("Write the unit's EEPROM"),
+        all ? tr("Write all %n value(s) of the profile into the unit's EEPROM?", nullptr, n)
+            : tr("Write the %n value(s) that differ into the unit's EEPROM?", nullptr, n),
+        QMessageBox::Yes | QMessageBox::Cancel, this);
+    box->setObjectName(QStringLiteral("confirmEepromWrite"));
+    box->setInformativeText(tr("The unit keeps them after it is switched off, and the machine "
+                               "moves by them from now on."));
+    box->setDefaultButton(QMessageBox::Cancel);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    connect(box, &QMessageBox::finished, this, [this, all](int result) {
+        if (result == QMessageBox::Yes)
+            writeUnit(all);
+    });
+    box->open();
 }
 
 void UnitConfigDialog::writeUnit(bool all)
@@ -175,7 +206,8 @@ void UnitConfigDialog::onLogLine(const QString &line)
 void UnitConfigDialog::onError(const driver::MachineError &error)
 {
     if (m_current)
-        fail(tr("%1 failed: %2").arg(m_current->command, QString::fromStdString(error.message)));
+        fail(tr("%1 failed: %2")
+                 .arg(m_current->command, driver::translatedText(error.reason, true)));
 }
 
 void UnitConfigDialog::fail(const QString &why)

@@ -1,7 +1,8 @@
 #pragma once
 // UnitConfigDialog: what the vendor's configuration utility does — read the unit's EEPROM,
 // show it decoded for its variant next to what the machine profile asks, write the differences
-// on request and read them back to verify. Commands go through the controller's raw-command
+// on request (after asking: the unit keeps what is written) and read them back to verify.
+// Commands go through the controller's raw-command
 // path one at a time (the link is half duplex); each reply is matched to its command.
 
 #include "machine/machineconfig.h"
@@ -37,6 +38,9 @@ public:
     void readUnit();
     // Writes the entries that differ (all = every entry), then reads them back.
     void writeUnit(bool all = false);
+    // What the Write buttons do: asks first (a non-modal question, object name
+    // "confirmEepromWrite"); writeUnit(all) only when the operator confirms.
+    void requestWrite(bool all);
     bool isBusy() const { return !m_queue.empty() || m_current.has_value(); }
 
     struct Row

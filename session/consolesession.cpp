@@ -12,7 +12,9 @@ ConsoleSession::ConsoleSession(RunWorkflow &workflow, WorkOffsets &offsets, QObj
     : QObject(parent)
     , m_workflow(workflow)
     , m_offsets(offsets)
-{}
+{
+    connect(&m_workflow, &RunWorkflow::jobStarted, this, [this] { m_ranLastJob = false; });
+}
 
 void ConsoleSession::execute(const QString &line)
 {
@@ -41,6 +43,8 @@ void ConsoleSession::execute(const QString &line)
         emit failed(planErrorText(tr("manual line"), plan.errors.front()));
         return;
     }
+    m_ranLastJob = true;
+    emit jobStarted();
     m_workflow.link().run(plan.program);
 }
 

@@ -309,13 +309,13 @@ void RunWorkflow::advance(const driver::MachineState &s, MachineMode last)
     if (s.mode == MachineMode::Alarm || s.mode == MachineMode::LinkLost ||
         (s.mode == MachineMode::Disconnected && last != MachineMode::Disconnected)) {
         QString why = tr("the machine stopped: %1").arg(modeText(s.mode));
-        if (s.lastError) // the driver's words (English until the driver has error codes)
-            why += QStringLiteral(" (%1)").arg(QString::fromStdString(s.lastError->message));
+        if (s.lastError) // the driver's words in the user's language
+            why += QStringLiteral(" (%1)").arg(driver::translatedText(s.lastError->reason, true));
         end(false, why);
         return;
     }
     if (m_step == Step::Running && m_endOnHold && s.mode == MachineMode::Paused) {
-        end(false, tr("the job stopped: %1").arg(QString::fromStdString(s.holdText)));
+        end(false, tr("the job stopped: %1").arg(driver::translatedText(s.holdMessage)));
         return;
     }
     if (s.mode != MachineMode::Idle)
@@ -335,7 +335,7 @@ void RunWorkflow::onError(const driver::MachineError &e)
 {
     if (m_step == Step::None || m_step == Step::Ended)
         return;
-    m_error = QString::fromStdString(e.message);
+    m_error = driver::translatedText(e.reason, true);
     if (!e.command.empty())
         m_error += tr(" [command %1]").arg(QString::fromStdString(e.command));
     if (!e.reply.empty())

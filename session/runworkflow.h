@@ -47,6 +47,8 @@ public:
     static driver::ConnectionSettings connectionFor(const machine::MachineConfig &config);
 
     void setProfile(const machine::MachineConfig &config);
+    // The connection asked for last (the built-in emulator or which port).
+    const driver::ConnectionSettings &connection() const { return m_settings; }
     const machine::MachineConfig &profile() const { return m_profile; }
 
     // ---- connection

@@ -276,6 +276,833 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>frezka::driver</name>
+    <message>
+        <source>%1 is not possible now (the machine is %2)</source>
+        <translation>%1 nyní není možné (stav stroje: %2)</translation>
+    </message>
+    <message>
+        <source>Wait until the machine is in a state that allows it, or stop what it is doing.</source>
+        <translation>Počkejte, až to stav stroje dovolí, nebo zastavte, co právě dělá.</translation>
+    </message>
+    <message>
+        <source>A job can start only when the machine is ready (it is %1)</source>
+        <translation>Úlohu lze spustit jen tehdy, když je stroj připraven (stav: %1)</translation>
+    </message>
+    <message>
+        <source>Wait until the machine is ready, then start the job again.</source>
+        <translation>Počkejte, až bude stroj připraven, a spusťte úlohu znovu.</translation>
+    </message>
+    <message>
+        <source>The job&apos;s progress is still being checked against the unit&apos;s counters</source>
+        <translation>Postup úlohy se ještě ověřuje podle čítačů jednotky</translation>
+    </message>
+    <message>
+        <source>Wait a moment, then continue.</source>
+        <translation>Chvíli počkejte a pak pokračujte.</translation>
+    </message>
+    <message>
+        <source>The tool is lifted and the job&apos;s queue is kept in the unit (K)</source>
+        <translation>Nástroj je zvednutý a fronta úlohy je uchována v jednotce (K)</translation>
+    </message>
+    <message>
+        <source>Lower the tool first, then abort.</source>
+        <translation>Nejprve spusťte nástroj dolů, pak úlohu přerušte.</translation>
+    </message>
+    <message>
+        <source>The machine profile homes no axis</source>
+        <translation>Profil stroje nenajíždí do reference žádnou osu</translation>
+    </message>
+    <message>
+        <source>Set a homing order for the axes (axes.*.homing.order) in the machine profile.</source>
+        <translation>Nastavte v profilu stroje pořadí najíždění os do reference (axes.*.homing.order).</translation>
+    </message>
+    <message>
+        <source>The machine profile does not home that axis</source>
+        <translation>Profil stroje tuto osu do reference nenajíždí</translation>
+    </message>
+    <message>
+        <source>Give the axis a homing order (axes.*.homing.order) in the machine profile.</source>
+        <translation>Dejte ose v profilu stroje pořadí najíždění do reference (axes.*.homing.order).</translation>
+    </message>
+    <message>
+        <source>This unit&apos;s firmware (v%1) cannot set one axis&apos;s counter (N&lt;axis&gt; needs v19), and N zeroes every counter</source>
+        <translation>Firmware této jednotky (v%1) neumí nastavit čítač jedné osy (N&lt;osa&gt; vyžaduje v19) a N nuluje všechny čítače</translation>
+    </message>
+    <message>
+        <source>Home all the machine&apos;s axes together, each with home position 0.</source>
+        <translation>Najeďte do reference všechny osy stroje najednou, každou s referenční polohou 0.</translation>
+    </message>
+    <message>
+        <source>The axis is outside its soft limits</source>
+        <translation>Osa je mimo své softwarové limity</translation>
+    </message>
+    <message>
+        <source>Home the machine first.</source>
+        <translation>Nejprve najeďte strojem do reference.</translation>
+    </message>
+    <message>
+        <source>The axis is at its soft limit</source>
+        <translation>Osa je na svém softwarovém limitu</translation>
+    </message>
+    <message>
+        <source>Jog in the other direction.</source>
+        <translation>Pohybujte opačným směrem.</translation>
+    </message>
+    <message>
+        <source>This machine has no such axis</source>
+        <translation>Tento stroj takovou osu nemá</translation>
+    </message>
+    <message>
+        <source>Use one of the axes the machine profile has.</source>
+        <translation>Použijte některou z os, které profil stroje má.</translation>
+    </message>
+    <message>
+        <source>This machine has no such axis or direction</source>
+        <translation>Tento stroj takovou osu nebo směr nemá</translation>
+    </message>
+    <message>
+        <source>The unit program has %1 axes</source>
+        <translation>Program pro jednotku má %1 os</translation>
+    </message>
+    <message>
+        <source>Plan the program again for this machine.</source>
+        <translation>Naplánujte program znovu pro tento stroj.</translation>
+    </message>
+    <message>
+        <source>The unit program has 4 axes but the %1 has 3</source>
+        <translation>Program pro jednotku má 4 osy, ale %1 má 3</translation>
+    </message>
+    <message>
+        <source>The program was planned from %1 steps on axis %2 but the machine is at %3</source>
+        <translation>Program byl naplánován od %1 kroků v ose %2, ale stroj je na %3</translation>
+    </message>
+    <message>
+        <source>Line %1: the plan uses VK, which this unit&apos;s firmware (v%2) lacks (it needs v19)</source>
+        <translation>Řádek %1: plán používá VK, které firmware této jednotky (v%2) nemá (vyžaduje v19)</translation>
+    </message>
+    <message>
+        <source>Plan in VN (motion.speedMode &quot;vn&quot;), or set unit.firmwareVersion in the profile.</source>
+        <translation>Plánujte ve VN (motion.speedMode &quot;vn&quot;) nebo nastavte v profilu unit.firmwareVersion.</translation>
+    </message>
+    <message>
+        <source>Line %1: the command cannot be sent: %2</source>
+        <translation>Řádek %1: příkaz nelze odeslat: %2</translation>
+    </message>
+    <message>
+        <source>Check the machine profile&apos;s limits and plan the program again.</source>
+        <translation>Zkontrolujte limity v profilu stroje a naplánujte program znovu.</translation>
+    </message>
+    <message>
+        <source>Off the planned path the unit holds no queue to keep</source>
+        <translation>Mimo plánovanou dráhu jednotka nemá žádnou frontu k uchování</translation>
+    </message>
+    <message>
+        <source>Continue (it lifts the tool and returns to the path) or abort.</source>
+        <translation>Pokračujte (nástroj se zvedne a vrátí na dráhu), nebo přerušte.</translation>
+    </message>
+    <message>
+        <source>The machine profile sets no tool lift height</source>
+        <translation>Profil stroje nenastavuje výšku zvednutí nástroje</translation>
+    </message>
+    <message>
+        <source>Set motion.toolLiftMm in the machine profile.</source>
+        <translation>Nastavte v profilu stroje motion.toolLiftMm.</translation>
+    </message>
+    <message>
+        <source>Z is at its upper soft limit: no room to lift the tool</source>
+        <translation>Z je na horním softwarovém limitu: nástroj není kam zvednout</translation>
+    </message>
+    <message>
+        <source>Continue without lifting, or abort the job.</source>
+        <translation>Pokračujte bez zvednutí, nebo úlohu přerušte.</translation>
+    </message>
+    <message>
+        <source>This unit&apos;s firmware (v%1) has no MPG handwheel; it needs v10</source>
+        <translation>Firmware této jednotky (v%1) nemá ruční kolečko MPG; vyžaduje v10</translation>
+    </message>
+    <message>
+        <source>Jog with the buttons or the keyboard instead.</source>
+        <translation>Pohybujte raději tlačítky nebo klávesnicí.</translation>
+    </message>
+    <message>
+        <source>This unit has no MPG handwheel</source>
+        <translation>Tato jednotka nemá ruční kolečko MPG</translation>
+    </message>
+    <message>
+        <source>Spindle speed %1 rpm is outside 0 … %2 rpm</source>
+        <translation>Otáčky vřetena %1 ot/min jsou mimo 0 … %2 ot/min</translation>
+    </message>
+    <message>
+        <source>Enter a speed within the machine profile&apos;s range (spindle.maxRpm).</source>
+        <translation>Zadejte otáčky v rozsahu profilu stroje (spindle.maxRpm).</translation>
+    </message>
+    <message>
+        <source>This unit has no feed override (XM)</source>
+        <translation>Tato jednotka nemá korekci posuvu (XM)</translation>
+    </message>
+    <message>
+        <source>Change the feed in the program instead.</source>
+        <translation>Změňte raději posuv v programu.</translation>
+    </message>
+    <message>
+        <source>This unit&apos;s firmware (v%1) has no XM feed override; it needs v19</source>
+        <translation>Firmware této jednotky (v%1) nemá korekci posuvu XM; vyžaduje v19</translation>
+    </message>
+    <message>
+        <source>The feed override cannot be set: %1</source>
+        <translation>Korekci posuvu nelze nastavit: %1</translation>
+    </message>
+    <message>
+        <source>Choose a value within the unit&apos;s range.</source>
+        <translation>Zvolte hodnotu v rozsahu jednotky.</translation>
+    </message>
+    <message>
+        <source>Empty command</source>
+        <translation>Prázdný příkaz</translation>
+    </message>
+    <message>
+        <source>Type a unit command after &apos;!&apos;.</source>
+        <translation>Napište za &apos;!&apos; příkaz pro jednotku.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be sent to the unit: %2</source>
+        <translation>&apos;%1&apos; nelze poslat jednotce: %2</translation>
+    </message>
+    <message>
+        <source>See the unit&apos;s command list (docs/gve-protocol.md).</source>
+        <translation>Viz seznam příkazů jednotky (docs/gve-protocol.md).</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; would disturb the running job</source>
+        <translation>&apos;%1&apos; by narušil běžící úlohu</translation>
+    </message>
+    <message>
+        <source>Send it when the job has ended.</source>
+        <translation>Pošlete ho, až úloha skončí.</translation>
+    </message>
+    <message>
+        <source>The new speed cannot be set: %1</source>
+        <translation>Novou rychlost nelze nastavit: %1</translation>
+    </message>
+    <message>
+        <source>Enter a lower feed, or leave it unchanged.</source>
+        <translation>Zadejte nižší posuv, nebo ho ponechte beze změny.</translation>
+    </message>
+    <message>
+        <source>%1: the unit answered: %2</source>
+        <translation>%1: jednotka odpověděla: %2</translation>
+    </message>
+    <message>
+        <source>Check the machine and the connection, then try again.</source>
+        <translation>Zkontrolujte stroj a spojení a zkuste to znovu.</translation>
+    </message>
+    <message>
+        <source>%1: the link failed: %2</source>
+        <translation>%1: spojení selhalo: %2</translation>
+    </message>
+    <message>
+        <source>Check the cable and that the unit is on, then connect again.</source>
+        <translation>Zkontrolujte kabel a zda je jednotka zapnutá, pak se znovu připojte.</translation>
+    </message>
+    <message>
+        <source>Line %1: the unit refused &apos;%2&apos; (%3)</source>
+        <translation>Řádek %1: jednotka odmítla &apos;%2&apos; (%3)</translation>
+    </message>
+    <message>
+        <source>Check the machine profile against the unit (variant, firmware, limits).</source>
+        <translation>Porovnejte profil stroje s jednotkou (varianta, firmware, limity).</translation>
+    </message>
+    <message>
+        <source>The link was lost: %1</source>
+        <translation>Spojení bylo ztraceno: %1</translation>
+    </message>
+    <message>
+        <source>The job is kept: reconnect, then continue.</source>
+        <translation>Úloha je uchována: znovu se připojte a pokračujte.</translation>
+    </message>
+    <message>
+        <source>Cannot connect: %1</source>
+        <translation>Nelze se připojit: %1</translation>
+    </message>
+    <message>
+        <source>Check the port in the settings, the cable, and that the unit is on.</source>
+        <translation>Zkontrolujte port v nastavení, kabel a zda je jednotka zapnutá.</translation>
+    </message>
+    <message>
+        <source>The unit reports firmware &apos;%1&apos; but the machine profile is for a %2</source>
+        <translation>Jednotka hlásí firmware &apos;%1&apos;, ale profil stroje je pro %2</translation>
+    </message>
+    <message>
+        <source>Choose the matching machine profile.</source>
+        <translation>Zvolte odpovídající profil stroje.</translation>
+    </message>
+    <message>
+        <source>The unit reports firmware v%1 but the machine profile says v%2; plans for the profile&apos;s firmware may use what this one lacks (MPG and EEPROM floats need v10; VK, VL, XM and setting one axis&apos;s counter v19)</source>
+        <translation>Jednotka hlásí firmware v%1, ale profil stroje uvádí v%2; plány pro firmware z profilu mohou použít, co tento nemá (MPG a reálná čísla v EEPROM vyžadují v10; VK, VL, XM a nastavení čítače jedné osy v19)</translation>
+    </message>
+    <message>
+        <source>Set unit.firmwareVersion to %1 in the machine profile.</source>
+        <translation>Nastavte v profilu stroje unit.firmwareVersion na %1.</translation>
+    </message>
+    <message>
+        <source>Line %1: unknown unit program operation</source>
+        <translation>Řádek %1: neznámá operace programu jednotky</translation>
+    </message>
+    <message>
+        <source>Plan the program again.</source>
+        <translation>Naplánujte program znovu.</translation>
+    </message>
+    <message>
+        <source>Homing axis %1: the home switch was not found within the configured travel</source>
+        <translation>Reference osy %1: referenční spínač nebyl v nastavené dráze nalezen</translation>
+    </message>
+    <message>
+        <source>Check the switch and its wiring, and the axis&apos;s homing travel in the profile.</source>
+        <translation>Zkontrolujte spínač a jeho zapojení a dráhu najíždění osy v profilu.</translation>
+    </message>
+    <message>
+        <source>Homing axis %1: %2</source>
+        <translation>Reference osy %1: %2</translation>
+    </message>
+    <message>
+        <source>Check the axis&apos;s homing settings in the machine profile.</source>
+        <translation>Zkontrolujte nastavení reference osy v profilu stroje.</translation>
+    </message>
+    <message>
+        <source>Line %1: %2</source>
+        <translation>Řádek %1: %2</translation>
+    </message>
+    <message>
+        <source>Check the cable and that the unit is on; the job is kept: reconnect, then continue.</source>
+        <translation>Zkontrolujte kabel a zda je jednotka zapnutá; úloha je uchována: znovu se připojte a pokračujte.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe input is already in the state the probe move waits for</source>
+        <translation>Řádek %1: vstup sondy už je ve stavu, na který pohyb sondy čeká</translation>
+    </message>
+    <message>
+        <source>Check the probe and its wiring.</source>
+        <translation>Zkontrolujte sondu a její zapojení.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe move ended without the probe tripping</source>
+        <translation>Řádek %1: pohyb sondy skončil, aniž sonda sepnula</translation>
+    </message>
+    <message>
+        <source>Check the probe and the workpiece, then run the job again.</source>
+        <translation>Zkontrolujte sondu a obrobek a spusťte úlohu znovu.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe tripped at %2 steps; the rest of the program was planned from the probe&apos;s end point</source>
+        <translation>Řádek %1: sonda sepnula na %2 krocích; zbytek programu byl naplánován od koncového bodu sondy</translation>
+    </message>
+    <message>
+        <source>The unit&apos;s counters match no point the job has reached; the job cannot resume exactly</source>
+        <translation>Čítače jednotky neodpovídají žádnému bodu, kterého úloha dosáhla; úlohu nelze přesně obnovit</translation>
+    </message>
+    <message>
+        <source>Home the machine and start the job again.</source>
+        <translation>Najeďte strojem do reference a spusťte úlohu znovu.</translation>
+    </message>
+    <message>
+        <source>The unit&apos;s counters match several points of the job; cannot tell how far it got</source>
+        <translation>Čítače jednotky odpovídají několika bodům úlohy; nelze určit, kam až došla</translation>
+    </message>
+    <message>
+        <source>Abort the job.</source>
+        <translation>Přerušte úlohu.</translation>
+    </message>
+    <message>
+        <source>The machine did not arrive back on the planned path after %1 attempts</source>
+        <translation>Stroj se ani po %1 pokusech nevrátil na plánovanou dráhu</translation>
+    </message>
+    <message>
+        <source>Abort the job and check the machine.</source>
+        <translation>Přerušte úlohu a zkontrolujte stroj.</translation>
+    </message>
+    <message>
+        <source>The machine left the planned path: %1. A command was damaged on the serial line in a way its checksum cannot show</source>
+        <translation>Stroj opustil plánovanou dráhu: %1. Příkaz byl na sériové lince poškozen tak, že to kontrolní součet nepozná</translation>
+    </message>
+    <message>
+        <source>Check the workpiece. Continue lifts the tool, returns to line %2 and runs the job on from there; or abort the job.</source>
+        <translation>Zkontrolujte obrobek. Pokračovat zvedne nástroj, vrátí se na řádek %2 a odtud úlohu dokončí; nebo úlohu přerušte.</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Pozastaveno</translation>
+    </message>
+    <message>
+        <source>Continue, or lift the tool to change or clean it.</source>
+        <translation>Pokračujte, nebo zvedněte nástroj, abyste ho vyměnili či očistili.</translation>
+    </message>
+    <message>
+        <source>Program stop (M0) at line %1</source>
+        <translation>Programový stop (M0) na řádku %1</translation>
+    </message>
+    <message>
+        <source>Do what the program asks, then continue.</source>
+        <translation>Udělejte, co program žádá, a pak pokračujte.</translation>
+    </message>
+    <message>
+        <source>Optional stop (M1) at line %1</source>
+        <translation>Volitelný stop (M1) na řádku %1</translation>
+    </message>
+    <message>
+        <source>Tool change (M6) at line %1: change to tool %2</source>
+        <translation>Výměna nástroje (M6) na řádku %1: vyměňte za nástroj %2</translation>
+    </message>
+    <message>
+        <source>Lift the tool, change it to tool %2, lower it and continue.</source>
+        <translation>Zvedněte nástroj, vyměňte ho za nástroj %2, spusťte ho dolů a pokračujte.</translation>
+    </message>
+    <message>
+        <source>An input interrupt stopped the machine</source>
+        <translation>Přerušení ze vstupu zastavilo stroj</translation>
+    </message>
+    <message>
+        <source>Check the machine; when it is safe, continue or abort.</source>
+        <translation>Zkontrolujte stroj; až to bude bezpečné, pokračujte nebo přerušte.</translation>
+    </message>
+    <message>
+        <source>Stopped by input %1</source>
+        <translation>Zastaveno vstupem %1</translation>
+    </message>
+    <message>
+        <source>Stopped by input %1 (STOP button)</source>
+        <translation>Zastaveno vstupem %1 (tlačítko STOP)</translation>
+    </message>
+    <message>
+        <source>Tool lifted</source>
+        <translation>Nástroj zvednut</translation>
+    </message>
+    <message>
+        <source>Change or clean the tool, then lower it.</source>
+        <translation>Vyměňte nebo očistěte nástroj a pak ho spusťte dolů.</translation>
+    </message>
+    <message>
+        <source>Tool lowered</source>
+        <translation>Nástroj spuštěn</translation>
+    </message>
+    <message>
+        <source>Continue or abort.</source>
+        <translation>Pokračujte, nebo přerušte.</translation>
+    </message>
+    <message>
+        <source>Returning to the planned path</source>
+        <translation>Návrat na plánovanou dráhu</translation>
+    </message>
+    <message>
+        <source>Wait until the machine is back on the path.</source>
+        <translation>Počkejte, až bude stroj zpět na dráze.</translation>
+    </message>
+    <message>
+        <source>Link restored: checking the job&apos;s progress against the counters</source>
+        <translation>Spojení obnoveno: ověřuje se postup úlohy podle čítačů</translation>
+    </message>
+    <message>
+        <source>Wait until the check has finished, then continue.</source>
+        <translation>Počkejte na konec ověření a pak pokračujte.</translation>
+    </message>
+    <message>
+        <source>applying the new speed (XA)</source>
+        <translation>použití nové rychlosti (XA)</translation>
+    </message>
+    <message>
+        <source>arming the probe input</source>
+        <translation>aktivace vstupu sondy</translation>
+    </message>
+    <message>
+        <source>continuing (G)</source>
+        <translation>pokračování (G)</translation>
+    </message>
+    <message>
+        <source>disarming the probe input</source>
+        <translation>deaktivace vstupu sondy</translation>
+    </message>
+    <message>
+        <source>dropping the queue (D)</source>
+        <translation>zrušení fronty (D)</translation>
+    </message>
+    <message>
+        <source>dropping the queue (D) off the planned path</source>
+        <translation>zrušení fronty (D) mimo plánovanou dráhu</translation>
+    </message>
+    <message>
+        <source>ending the jog (D)</source>
+        <translation>ukončení ručního pohybu (D)</translation>
+    </message>
+    <message>
+        <source>identifying the unit (&apos;?&apos;)</source>
+        <translation>identifikace jednotky (&apos;?&apos;)</translation>
+    </message>
+    <message>
+        <source>identifying the unit (&apos;Q&apos;)</source>
+        <translation>identifikace jednotky (&apos;Q&apos;)</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <translation>ruční pohyb</translation>
+    </message>
+    <message>
+        <source>keeping the queue (K)</source>
+        <translation>uchování fronty (K)</translation>
+    </message>
+    <message>
+        <source>lifting the tool</source>
+        <translation>zvednutí nástroje</translation>
+    </message>
+    <message>
+        <source>lowering the tool</source>
+        <translation>spuštění nástroje</translation>
+    </message>
+    <message>
+        <source>pausing (H)</source>
+        <translation>pozastavení (H)</translation>
+    </message>
+    <message>
+        <source>position poll</source>
+        <translation>čtení polohy</translation>
+    </message>
+    <message>
+        <source>probe move</source>
+        <translation>pohyb sondy</translation>
+    </message>
+    <message>
+        <source>raw command</source>
+        <translation>přímý příkaz</translation>
+    </message>
+    <message>
+        <source>re-sending the job&apos;s speed settings</source>
+        <translation>opětovné odeslání rychlostí úlohy</translation>
+    </message>
+    <message>
+        <source>reading the EEPROM</source>
+        <translation>čtení EEPROM</translation>
+    </message>
+    <message>
+        <source>reading the final position</source>
+        <translation>čtení koncové polohy</translation>
+    </message>
+    <message>
+        <source>reading the position</source>
+        <translation>čtení polohy</translation>
+    </message>
+    <message>
+        <source>reading the probe input</source>
+        <translation>čtení vstupu sondy</translation>
+    </message>
+    <message>
+        <source>reading the probe position</source>
+        <translation>čtení polohy sondy</translation>
+    </message>
+    <message>
+        <source>reading the probe result</source>
+        <translation>čtení výsledku sondy</translation>
+    </message>
+    <message>
+        <source>reading the status</source>
+        <translation>čtení stavu</translation>
+    </message>
+    <message>
+        <source>restoring the queue (R)</source>
+        <translation>obnovení fronty (R)</translation>
+    </message>
+    <message>
+        <source>returning to the planned path</source>
+        <translation>návrat na plánovanou dráhu</translation>
+    </message>
+    <message>
+        <source>setting the feed override (XM)</source>
+        <translation>nastavení korekce posuvu (XM)</translation>
+    </message>
+    <message>
+        <source>setting the jog speed</source>
+        <translation>nastavení rychlosti ručního pohybu</translation>
+    </message>
+    <message>
+        <source>setting the new speed</source>
+        <translation>nastavení nové rychlosti</translation>
+    </message>
+    <message>
+        <source>setting the speed to return to the path</source>
+        <translation>nastavení rychlosti návratu na dráhu</translation>
+    </message>
+    <message>
+        <source>setting the spindle</source>
+        <translation>nastavení vřetena</translation>
+    </message>
+    <message>
+        <source>starting the spindle</source>
+        <translation>spuštění vřetena</translation>
+    </message>
+    <message>
+        <source>status</source>
+        <translation>stav</translation>
+    </message>
+    <message>
+        <source>status poll</source>
+        <translation>čtení stavu</translation>
+    </message>
+    <message>
+        <source>stopping (H)</source>
+        <translation>zastavení (H)</translation>
+    </message>
+    <message>
+        <source>stopping (H) off the planned path</source>
+        <translation>zastavení (H) mimo plánovanou dráhu</translation>
+    </message>
+    <message>
+        <source>stopping the jog (H)</source>
+        <translation>zastavení ručního pohybu (H)</translation>
+    </message>
+    <message>
+        <source>stopping the probe move (H)</source>
+        <translation>zastavení pohybu sondy (H)</translation>
+    </message>
+    <message>
+        <source>stopping the spindle</source>
+        <translation>zastavení vřetena</translation>
+    </message>
+    <message>
+        <source>switching checksums</source>
+        <translation>zapnutí kontrolních součtů</translation>
+    </message>
+    <message>
+        <source>switching outputs</source>
+        <translation>přepnutí výstupů</translation>
+    </message>
+    <message>
+        <source>switching the MPG</source>
+        <translation>přepnutí MPG</translation>
+    </message>
+    <message>
+        <source>switching the MPG off</source>
+        <translation>vypnutí MPG</translation>
+    </message>
+    <message>
+        <source>testing packets</source>
+        <translation>test paketů</translation>
+    </message>
+    <message>
+        <source>raising queued speeds (XU)</source>
+        <translation>zvýšení rychlostí ve frontě (XU)</translation>
+    </message>
+    <message>
+        <source>lowering queued speeds (XD)</source>
+        <translation>snížení rychlostí ve frontě (XD)</translation>
+    </message>
+    <message>
+        <source>zeroing the counters (N)</source>
+        <translation>vynulování čítačů (N)</translation>
+    </message>
+    <message>
+        <source>setting T</source>
+        <translation>nastavení T</translation>
+    </message>
+    <message>
+        <source>setting VN</source>
+        <translation>nastavení VN</translation>
+    </message>
+    <message>
+        <source>setting the interrupt mask</source>
+        <translation>nastavení masky přerušení</translation>
+    </message>
+    <message>
+        <source>setting the input polarity</source>
+        <translation>nastavení polarity vstupů</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastavení</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Pokračování</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Přerušení</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Najíždění do reference</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Ruční pohyb</translation>
+    </message>
+    <message>
+        <source>Stopping the jog</source>
+        <translation>Zastavení ručního pohybu</translation>
+    </message>
+    <message>
+        <source>Writing the EEPROM</source>
+        <translation>Zápis do EEPROM</translation>
+    </message>
+    <message>
+        <source>Lifting the tool</source>
+        <translation>Zvednutí nástroje</translation>
+    </message>
+    <message>
+        <source>Lowering the tool</source>
+        <translation>Spouštění nástroje</translation>
+    </message>
+    <message>
+        <source>Switching the MPG</source>
+        <translation>Přepnutí MPG</translation>
+    </message>
+    <message>
+        <source>Setting the spindle</source>
+        <translation>Nastavení vřetena</translation>
+    </message>
+    <message>
+        <source>Switching outputs</source>
+        <translation>Přepnutí výstupů</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>queue full</source>
+        <translation>fronta plná</translation>
+    </message>
+    <message>
+        <source>command not received completely in time</source>
+        <translation>příkaz nebyl včas přijat celý</translation>
+    </message>
+    <message>
+        <source>unknown command</source>
+        <translation>neznámý příkaz</translation>
+    </message>
+    <message>
+        <source>syntax error</source>
+        <translation>chyba syntaxe</translation>
+    </message>
+    <message>
+        <source>parameter out of range</source>
+        <translation>parametr mimo rozsah</translation>
+    </message>
+    <message>
+        <source>nothing to continue</source>
+        <translation>není v čem pokračovat</translation>
+    </message>
+    <message>
+        <source>not allowed while a vector runs</source>
+        <translation>není dovoleno během vektoru</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Nepřipojeno</translation>
+    </message>
+    <message>
+        <source>Connecting</source>
+        <translation>Připojování</translation>
+    </message>
+    <message>
+        <source>Idle</source>
+        <translation>Připraven</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Obrábění</translation>
+    </message>
+    <message>
+        <source>Stopping</source>
+        <translation>Zastavuji</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Spojení ztraceno</translation>
+    </message>
+    <message>
+        <source>the link was closed</source>
+        <translation>spojení bylo uzavřeno</translation>
+    </message>
+    <message>
+        <source>no reply</source>
+        <translation>bez odpovědi</translation>
+    </message>
+    <message>
+        <source>setup</source>
+        <translation>nastavení</translation>
+    </message>
+    <message>
+        <source>Jog back to where it starts, or plan it again from here.</source>
+        <translation>Najeďte zpět tam, kde začíná, nebo ho naplánujte znovu odsud.</translation>
+    </message>
+    <message>
+        <source>Check the probe and the workpiece, then plan it again from here.</source>
+        <translation>Zkontrolujte sondu a obrobek a pak program naplánujte znovu odsud.</translation>
+    </message>
+    <message>
+        <source>This unit&apos;s firmware (v%1) has no W: homing to a switch comes with IP64MPG v10</source>
+        <translation>Firmware této jednotky (v%1) nemá W: najíždění na spínač přináší až IP64MPG v10</translation>
+    </message>
+    <message>
+        <source>Set the position by hand (G92) or update the unit.</source>
+        <translation>Nastavte polohu ručně (G92), nebo aktualizujte jednotku.</translation>
+    </message>
+    <message>
+        <source>The spindle is starting: the job continues after its spin-up</source>
+        <translation>Vřeteno se rozbíhá: program pokračuje po jeho rozběhu</translation>
+    </message>
+    <message>
+        <source>Wait for the spin-up; the job then goes on by itself.</source>
+        <translation>Počkejte na rozběh; program pak pokračuje sám.</translation>
+    </message>
+    <message>
+        <source>The jog would end at %1 mm, outside the soft limits %2 .. %3 mm</source>
+        <translation>Posuv by skončil na %1 mm, mimo softwarové limity %2 .. %3 mm</translation>
+    </message>
+    <message>
+        <source>Jog a shorter distance.</source>
+        <translation>Posuňte o kratší vzdálenost.</translation>
+    </message>
+    <message>
+        <source>The jog is shorter than one step</source>
+        <translation>Posuv je kratší než jeden krok</translation>
+    </message>
+    <message>
+        <source>Choose a larger jog step.</source>
+        <translation>Zvolte větší krok posuvu.</translation>
+    </message>
+    <message>
+        <source>The lifted tool is still moving</source>
+        <translation>Zvednutý nástroj se ještě pohybuje</translation>
+    </message>
+    <message>
+        <source>Wait until it stands, then try again.</source>
+        <translation>Počkejte, až se zastaví, a zkuste to znovu.</translation>
+    </message>
+    <message>
+        <source>Homing axis %1: stopped before the end of its search leg (an input interrupt, or the home switch did not release within homing.backOffMm)</source>
+        <translation>Reference osy %1: zastavena před koncem úseku hledání (přerušení ze vstupu, nebo se referenční spínač neuvolnil v rámci homing.backOffMm)</translation>
+    </message>
+    <message>
+        <source>Check the inputs and the switch, then home again; the axis is not homed.</source>
+        <translation>Zkontrolujte vstupy a spínač a najeďte referenci znovu; osa nemá referenci.</translation>
+    </message>
+    <message>
+        <source>The tool did not arrive back at the lift point (%1 instead of %2)</source>
+        <translation>Nástroj se nevrátil do bodu zvednutí (%1 místo %2)</translation>
+    </message>
+    <message>
+        <source>The spindle starts; the job continues after its spin-up</source>
+        <translation>Vřeteno se rozbíhá; program pokračuje po jeho rozběhu</translation>
+    </message>
+    <message>
+        <source>Keep clear of the tool.</source>
+        <translation>Nesahejte k nástroji.</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gcode</name>
     <message>
         <source>Cannot read the file %1</source>
@@ -1857,6 +2684,38 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Nulový bod obrobku nastavujte, když je stroj připraven a stojí.</translation>
     </message>
     <message>
+        <source>The new port is used when you connect again after the job.</source>
+        <translation>Nový port se použije, až se po úloze znovu připojíte.</translation>
+    </message>
+    <message>
+        <source>Manual line done.</source>
+        <translation>Ruční řádek dokončen.</translation>
+    </message>
+    <message>
+        <source>Using the port used last, %1 (the machine profile says %2).</source>
+        <translation>Používá se naposledy použitý port %1 (profil stroje uvádí %2).</translation>
+    </message>
+    <message>
+        <source>built-in emulator</source>
+        <translation>vestavěný emulátor</translation>
+    </message>
+    <message>
+        <source>%1, %2 Bd</source>
+        <translation>%1, %2 Bd</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>Program comment: %1</source>
+        <translation>Komentář programu: %1</translation>
+    </message>
+    <message>
+        <source>State: %1 → %2</source>
+        <translation>Stav: %1 → %2</translation>
+    </message>
+    <message>
         <source>The machine is not homed: its soft limits refer to nothing yet. Home all axes now and then run the program?</source>
         <translation>Stroj není v referenci: jeho softwarové limity zatím k ničemu neodkazují. Najet teď všemi osami do reference a pak spustit program?</translation>
     </message>
@@ -2968,6 +3827,30 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Close</source>
         <translation>Zavřít</translation>
+    </message>
+    <message>
+        <source>Write the unit&apos;s EEPROM</source>
+        <translation>Zápis do EEPROM jednotky</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write all %n value(s) of the profile into the unit&apos;s EEPROM?</source>
+        <translation>
+            <numerusform>Zapsat %n hodnotu profilu do EEPROM jednotky?</numerusform>
+            <numerusform>Zapsat všechny %n hodnoty profilu do EEPROM jednotky?</numerusform>
+            <numerusform>Zapsat všech %n hodnot profilu do EEPROM jednotky?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Write the %n value(s) that differ into the unit&apos;s EEPROM?</source>
+        <translation>
+            <numerusform>Zapsat %n odlišnou hodnotu do EEPROM jednotky?</numerusform>
+            <numerusform>Zapsat %n odlišné hodnoty do EEPROM jednotky?</numerusform>
+            <numerusform>Zapsat %n odlišných hodnot do EEPROM jednotky?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The unit keeps them after it is switched off, and the machine moves by them from now on.</source>
+        <translation>Jednotka si je pamatuje i po vypnutí a stroj se jimi od teď řídí.</translation>
     </message>
 </context>
 <context>

@@ -276,6 +276,833 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>frezka::driver</name>
+    <message>
+        <source>%1 is not possible now (the machine is %2)</source>
+        <translation>%1 is not possible now (the machine is %2)</translation>
+    </message>
+    <message>
+        <source>Wait until the machine is in a state that allows it, or stop what it is doing.</source>
+        <translation>Wait until the machine is in a state that allows it, or stop what it is doing.</translation>
+    </message>
+    <message>
+        <source>A job can start only when the machine is ready (it is %1)</source>
+        <translation>A job can start only when the machine is ready (it is %1)</translation>
+    </message>
+    <message>
+        <source>Wait until the machine is ready, then start the job again.</source>
+        <translation>Wait until the machine is ready, then start the job again.</translation>
+    </message>
+    <message>
+        <source>The job&apos;s progress is still being checked against the unit&apos;s counters</source>
+        <translation>The job&apos;s progress is still being checked against the unit&apos;s counters</translation>
+    </message>
+    <message>
+        <source>Wait a moment, then continue.</source>
+        <translation>Wait a moment, then continue.</translation>
+    </message>
+    <message>
+        <source>The tool is lifted and the job&apos;s queue is kept in the unit (K)</source>
+        <translation>The tool is lifted and the job&apos;s queue is kept in the unit (K)</translation>
+    </message>
+    <message>
+        <source>Lower the tool first, then abort.</source>
+        <translation>Lower the tool first, then abort.</translation>
+    </message>
+    <message>
+        <source>The machine profile homes no axis</source>
+        <translation>The machine profile homes no axis</translation>
+    </message>
+    <message>
+        <source>Set a homing order for the axes (axes.*.homing.order) in the machine profile.</source>
+        <translation>Set a homing order for the axes (axes.*.homing.order) in the machine profile.</translation>
+    </message>
+    <message>
+        <source>The machine profile does not home that axis</source>
+        <translation>The machine profile does not home that axis</translation>
+    </message>
+    <message>
+        <source>Give the axis a homing order (axes.*.homing.order) in the machine profile.</source>
+        <translation>Give the axis a homing order (axes.*.homing.order) in the machine profile.</translation>
+    </message>
+    <message>
+        <source>This unit&apos;s firmware (v%1) cannot set one axis&apos;s counter (N&lt;axis&gt; needs v19), and N zeroes every counter</source>
+        <translation>This unit&apos;s firmware (v%1) cannot set one axis&apos;s counter (N&lt;axis&gt; needs v19), and N zeroes every counter</translation>
+    </message>
+    <message>
+        <source>Home all the machine&apos;s axes together, each with home position 0.</source>
+        <translation>Home all the machine&apos;s axes together, each with home position 0.</translation>
+    </message>
+    <message>
+        <source>The axis is outside its soft limits</source>
+        <translation>The axis is outside its soft limits</translation>
+    </message>
+    <message>
+        <source>Home the machine first.</source>
+        <translation>Home the machine first.</translation>
+    </message>
+    <message>
+        <source>The axis is at its soft limit</source>
+        <translation>The axis is at its soft limit</translation>
+    </message>
+    <message>
+        <source>Jog in the other direction.</source>
+        <translation>Jog in the other direction.</translation>
+    </message>
+    <message>
+        <source>This machine has no such axis</source>
+        <translation>This machine has no such axis</translation>
+    </message>
+    <message>
+        <source>Use one of the axes the machine profile has.</source>
+        <translation>Use one of the axes the machine profile has.</translation>
+    </message>
+    <message>
+        <source>This machine has no such axis or direction</source>
+        <translation>This machine has no such axis or direction</translation>
+    </message>
+    <message>
+        <source>The unit program has %1 axes</source>
+        <translation>The unit program has %1 axes</translation>
+    </message>
+    <message>
+        <source>Plan the program again for this machine.</source>
+        <translation>Plan the program again for this machine.</translation>
+    </message>
+    <message>
+        <source>The unit program has 4 axes but the %1 has 3</source>
+        <translation>The unit program has 4 axes but the %1 has 3</translation>
+    </message>
+    <message>
+        <source>The program was planned from %1 steps on axis %2 but the machine is at %3</source>
+        <translation>The program was planned from %1 steps on axis %2 but the machine is at %3</translation>
+    </message>
+    <message>
+        <source>Line %1: the plan uses VK, which this unit&apos;s firmware (v%2) lacks (it needs v19)</source>
+        <translation>Line %1: the plan uses VK, which this unit&apos;s firmware (v%2) lacks (it needs v19)</translation>
+    </message>
+    <message>
+        <source>Plan in VN (motion.speedMode &quot;vn&quot;), or set unit.firmwareVersion in the profile.</source>
+        <translation>Plan in VN (motion.speedMode &quot;vn&quot;), or set unit.firmwareVersion in the profile.</translation>
+    </message>
+    <message>
+        <source>Line %1: the command cannot be sent: %2</source>
+        <translation>Line %1: the command cannot be sent: %2</translation>
+    </message>
+    <message>
+        <source>Check the machine profile&apos;s limits and plan the program again.</source>
+        <translation>Check the machine profile&apos;s limits and plan the program again.</translation>
+    </message>
+    <message>
+        <source>Off the planned path the unit holds no queue to keep</source>
+        <translation>Off the planned path the unit holds no queue to keep</translation>
+    </message>
+    <message>
+        <source>Continue (it lifts the tool and returns to the path) or abort.</source>
+        <translation>Continue (it lifts the tool and returns to the path) or abort.</translation>
+    </message>
+    <message>
+        <source>The machine profile sets no tool lift height</source>
+        <translation>The machine profile sets no tool lift height</translation>
+    </message>
+    <message>
+        <source>Set motion.toolLiftMm in the machine profile.</source>
+        <translation>Set motion.toolLiftMm in the machine profile.</translation>
+    </message>
+    <message>
+        <source>Z is at its upper soft limit: no room to lift the tool</source>
+        <translation>Z is at its upper soft limit: no room to lift the tool</translation>
+    </message>
+    <message>
+        <source>Continue without lifting, or abort the job.</source>
+        <translation>Continue without lifting, or abort the job.</translation>
+    </message>
+    <message>
+        <source>This unit&apos;s firmware (v%1) has no MPG handwheel; it needs v10</source>
+        <translation>This unit&apos;s firmware (v%1) has no MPG handwheel; it needs v10</translation>
+    </message>
+    <message>
+        <source>Jog with the buttons or the keyboard instead.</source>
+        <translation>Jog with the buttons or the keyboard instead.</translation>
+    </message>
+    <message>
+        <source>This unit has no MPG handwheel</source>
+        <translation>This unit has no MPG handwheel</translation>
+    </message>
+    <message>
+        <source>Spindle speed %1 rpm is outside 0 … %2 rpm</source>
+        <translation>Spindle speed %1 rpm is outside 0 … %2 rpm</translation>
+    </message>
+    <message>
+        <source>Enter a speed within the machine profile&apos;s range (spindle.maxRpm).</source>
+        <translation>Enter a speed within the machine profile&apos;s range (spindle.maxRpm).</translation>
+    </message>
+    <message>
+        <source>This unit has no feed override (XM)</source>
+        <translation>This unit has no feed override (XM)</translation>
+    </message>
+    <message>
+        <source>Change the feed in the program instead.</source>
+        <translation>Change the feed in the program instead.</translation>
+    </message>
+    <message>
+        <source>This unit&apos;s firmware (v%1) has no XM feed override; it needs v19</source>
+        <translation>This unit&apos;s firmware (v%1) has no XM feed override; it needs v19</translation>
+    </message>
+    <message>
+        <source>The feed override cannot be set: %1</source>
+        <translation>The feed override cannot be set: %1</translation>
+    </message>
+    <message>
+        <source>Choose a value within the unit&apos;s range.</source>
+        <translation>Choose a value within the unit&apos;s range.</translation>
+    </message>
+    <message>
+        <source>Empty command</source>
+        <translation>Empty command</translation>
+    </message>
+    <message>
+        <source>Type a unit command after &apos;!&apos;.</source>
+        <translation>Type a unit command after &apos;!&apos;.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be sent to the unit: %2</source>
+        <translation>&apos;%1&apos; cannot be sent to the unit: %2</translation>
+    </message>
+    <message>
+        <source>See the unit&apos;s command list (docs/gve-protocol.md).</source>
+        <translation>See the unit&apos;s command list (docs/gve-protocol.md).</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; would disturb the running job</source>
+        <translation>&apos;%1&apos; would disturb the running job</translation>
+    </message>
+    <message>
+        <source>Send it when the job has ended.</source>
+        <translation>Send it when the job has ended.</translation>
+    </message>
+    <message>
+        <source>The new speed cannot be set: %1</source>
+        <translation>The new speed cannot be set: %1</translation>
+    </message>
+    <message>
+        <source>Enter a lower feed, or leave it unchanged.</source>
+        <translation>Enter a lower feed, or leave it unchanged.</translation>
+    </message>
+    <message>
+        <source>%1: the unit answered: %2</source>
+        <translation>%1: the unit answered: %2</translation>
+    </message>
+    <message>
+        <source>Check the machine and the connection, then try again.</source>
+        <translation>Check the machine and the connection, then try again.</translation>
+    </message>
+    <message>
+        <source>%1: the link failed: %2</source>
+        <translation>%1: the link failed: %2</translation>
+    </message>
+    <message>
+        <source>Check the cable and that the unit is on, then connect again.</source>
+        <translation>Check the cable and that the unit is on, then connect again.</translation>
+    </message>
+    <message>
+        <source>Line %1: the unit refused &apos;%2&apos; (%3)</source>
+        <translation>Line %1: the unit refused &apos;%2&apos; (%3)</translation>
+    </message>
+    <message>
+        <source>Check the machine profile against the unit (variant, firmware, limits).</source>
+        <translation>Check the machine profile against the unit (variant, firmware, limits).</translation>
+    </message>
+    <message>
+        <source>The link was lost: %1</source>
+        <translation>The link was lost: %1</translation>
+    </message>
+    <message>
+        <source>The job is kept: reconnect, then continue.</source>
+        <translation>The job is kept: reconnect, then continue.</translation>
+    </message>
+    <message>
+        <source>Cannot connect: %1</source>
+        <translation>Cannot connect: %1</translation>
+    </message>
+    <message>
+        <source>Check the port in the settings, the cable, and that the unit is on.</source>
+        <translation>Check the port in the settings, the cable, and that the unit is on.</translation>
+    </message>
+    <message>
+        <source>The unit reports firmware &apos;%1&apos; but the machine profile is for a %2</source>
+        <translation>The unit reports firmware &apos;%1&apos; but the machine profile is for a %2</translation>
+    </message>
+    <message>
+        <source>Choose the matching machine profile.</source>
+        <translation>Choose the matching machine profile.</translation>
+    </message>
+    <message>
+        <source>The unit reports firmware v%1 but the machine profile says v%2; plans for the profile&apos;s firmware may use what this one lacks (MPG and EEPROM floats need v10; VK, VL, XM and setting one axis&apos;s counter v19)</source>
+        <translation>The unit reports firmware v%1 but the machine profile says v%2; plans for the profile&apos;s firmware may use what this one lacks (MPG and EEPROM floats need v10; VK, VL, XM and setting one axis&apos;s counter v19)</translation>
+    </message>
+    <message>
+        <source>Set unit.firmwareVersion to %1 in the machine profile.</source>
+        <translation>Set unit.firmwareVersion to %1 in the machine profile.</translation>
+    </message>
+    <message>
+        <source>Line %1: unknown unit program operation</source>
+        <translation>Line %1: unknown unit program operation</translation>
+    </message>
+    <message>
+        <source>Plan the program again.</source>
+        <translation>Plan the program again.</translation>
+    </message>
+    <message>
+        <source>Homing axis %1: the home switch was not found within the configured travel</source>
+        <translation>Homing axis %1: the home switch was not found within the configured travel</translation>
+    </message>
+    <message>
+        <source>Check the switch and its wiring, and the axis&apos;s homing travel in the profile.</source>
+        <translation>Check the switch and its wiring, and the axis&apos;s homing travel in the profile.</translation>
+    </message>
+    <message>
+        <source>Homing axis %1: %2</source>
+        <translation>Homing axis %1: %2</translation>
+    </message>
+    <message>
+        <source>Check the axis&apos;s homing settings in the machine profile.</source>
+        <translation>Check the axis&apos;s homing settings in the machine profile.</translation>
+    </message>
+    <message>
+        <source>Line %1: %2</source>
+        <translation>Line %1: %2</translation>
+    </message>
+    <message>
+        <source>Check the cable and that the unit is on; the job is kept: reconnect, then continue.</source>
+        <translation>Check the cable and that the unit is on; the job is kept: reconnect, then continue.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe input is already in the state the probe move waits for</source>
+        <translation>Line %1: the probe input is already in the state the probe move waits for</translation>
+    </message>
+    <message>
+        <source>Check the probe and its wiring.</source>
+        <translation>Check the probe and its wiring.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe move ended without the probe tripping</source>
+        <translation>Line %1: the probe move ended without the probe tripping</translation>
+    </message>
+    <message>
+        <source>Check the probe and the workpiece, then run the job again.</source>
+        <translation>Check the probe and the workpiece, then run the job again.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe tripped at %2 steps; the rest of the program was planned from the probe&apos;s end point</source>
+        <translation>Line %1: the probe tripped at %2 steps; the rest of the program was planned from the probe&apos;s end point</translation>
+    </message>
+    <message>
+        <source>The unit&apos;s counters match no point the job has reached; the job cannot resume exactly</source>
+        <translation>The unit&apos;s counters match no point the job has reached; the job cannot resume exactly</translation>
+    </message>
+    <message>
+        <source>Home the machine and start the job again.</source>
+        <translation>Home the machine and start the job again.</translation>
+    </message>
+    <message>
+        <source>The unit&apos;s counters match several points of the job; cannot tell how far it got</source>
+        <translation>The unit&apos;s counters match several points of the job; cannot tell how far it got</translation>
+    </message>
+    <message>
+        <source>Abort the job.</source>
+        <translation>Abort the job.</translation>
+    </message>
+    <message>
+        <source>The machine did not arrive back on the planned path after %1 attempts</source>
+        <translation>The machine did not arrive back on the planned path after %1 attempts</translation>
+    </message>
+    <message>
+        <source>Abort the job and check the machine.</source>
+        <translation>Abort the job and check the machine.</translation>
+    </message>
+    <message>
+        <source>The machine left the planned path: %1. A command was damaged on the serial line in a way its checksum cannot show</source>
+        <translation>The machine left the planned path: %1. A command was damaged on the serial line in a way its checksum cannot show</translation>
+    </message>
+    <message>
+        <source>Check the workpiece. Continue lifts the tool, returns to line %2 and runs the job on from there; or abort the job.</source>
+        <translation>Check the workpiece. Continue lifts the tool, returns to line %2 and runs the job on from there; or abort the job.</translation>
+    </message>
+    <message>
+        <source>Paused</source>
+        <translation>Paused</translation>
+    </message>
+    <message>
+        <source>Continue, or lift the tool to change or clean it.</source>
+        <translation>Continue, or lift the tool to change or clean it.</translation>
+    </message>
+    <message>
+        <source>Program stop (M0) at line %1</source>
+        <translation>Program stop (M0) at line %1</translation>
+    </message>
+    <message>
+        <source>Do what the program asks, then continue.</source>
+        <translation>Do what the program asks, then continue.</translation>
+    </message>
+    <message>
+        <source>Optional stop (M1) at line %1</source>
+        <translation>Optional stop (M1) at line %1</translation>
+    </message>
+    <message>
+        <source>Tool change (M6) at line %1: change to tool %2</source>
+        <translation>Tool change (M6) at line %1: change to tool %2</translation>
+    </message>
+    <message>
+        <source>Lift the tool, change it to tool %2, lower it and continue.</source>
+        <translation>Lift the tool, change it to tool %2, lower it and continue.</translation>
+    </message>
+    <message>
+        <source>An input interrupt stopped the machine</source>
+        <translation>An input interrupt stopped the machine</translation>
+    </message>
+    <message>
+        <source>Check the machine; when it is safe, continue or abort.</source>
+        <translation>Check the machine; when it is safe, continue or abort.</translation>
+    </message>
+    <message>
+        <source>Stopped by input %1</source>
+        <translation>Stopped by input %1</translation>
+    </message>
+    <message>
+        <source>Stopped by input %1 (STOP button)</source>
+        <translation>Stopped by input %1 (STOP button)</translation>
+    </message>
+    <message>
+        <source>Tool lifted</source>
+        <translation>Tool lifted</translation>
+    </message>
+    <message>
+        <source>Change or clean the tool, then lower it.</source>
+        <translation>Change or clean the tool, then lower it.</translation>
+    </message>
+    <message>
+        <source>Tool lowered</source>
+        <translation>Tool lowered</translation>
+    </message>
+    <message>
+        <source>Continue or abort.</source>
+        <translation>Continue or abort.</translation>
+    </message>
+    <message>
+        <source>Returning to the planned path</source>
+        <translation>Returning to the planned path</translation>
+    </message>
+    <message>
+        <source>Wait until the machine is back on the path.</source>
+        <translation>Wait until the machine is back on the path.</translation>
+    </message>
+    <message>
+        <source>Link restored: checking the job&apos;s progress against the counters</source>
+        <translation>Link restored: checking the job&apos;s progress against the counters</translation>
+    </message>
+    <message>
+        <source>Wait until the check has finished, then continue.</source>
+        <translation>Wait until the check has finished, then continue.</translation>
+    </message>
+    <message>
+        <source>applying the new speed (XA)</source>
+        <translation>applying the new speed (XA)</translation>
+    </message>
+    <message>
+        <source>arming the probe input</source>
+        <translation>arming the probe input</translation>
+    </message>
+    <message>
+        <source>continuing (G)</source>
+        <translation>continuing (G)</translation>
+    </message>
+    <message>
+        <source>disarming the probe input</source>
+        <translation>disarming the probe input</translation>
+    </message>
+    <message>
+        <source>dropping the queue (D)</source>
+        <translation>dropping the queue (D)</translation>
+    </message>
+    <message>
+        <source>dropping the queue (D) off the planned path</source>
+        <translation>dropping the queue (D) off the planned path</translation>
+    </message>
+    <message>
+        <source>ending the jog (D)</source>
+        <translation>ending the jog (D)</translation>
+    </message>
+    <message>
+        <source>identifying the unit (&apos;?&apos;)</source>
+        <translation>identifying the unit (&apos;?&apos;)</translation>
+    </message>
+    <message>
+        <source>identifying the unit (&apos;Q&apos;)</source>
+        <translation>identifying the unit (&apos;Q&apos;)</translation>
+    </message>
+    <message>
+        <source>jogging</source>
+        <translation>jogging</translation>
+    </message>
+    <message>
+        <source>keeping the queue (K)</source>
+        <translation>keeping the queue (K)</translation>
+    </message>
+    <message>
+        <source>lifting the tool</source>
+        <translation>lifting the tool</translation>
+    </message>
+    <message>
+        <source>lowering the tool</source>
+        <translation>lowering the tool</translation>
+    </message>
+    <message>
+        <source>pausing (H)</source>
+        <translation>pausing (H)</translation>
+    </message>
+    <message>
+        <source>position poll</source>
+        <translation>position poll</translation>
+    </message>
+    <message>
+        <source>probe move</source>
+        <translation>probe move</translation>
+    </message>
+    <message>
+        <source>raw command</source>
+        <translation>raw command</translation>
+    </message>
+    <message>
+        <source>re-sending the job&apos;s speed settings</source>
+        <translation>re-sending the job&apos;s speed settings</translation>
+    </message>
+    <message>
+        <source>reading the EEPROM</source>
+        <translation>reading the EEPROM</translation>
+    </message>
+    <message>
+        <source>reading the final position</source>
+        <translation>reading the final position</translation>
+    </message>
+    <message>
+        <source>reading the position</source>
+        <translation>reading the position</translation>
+    </message>
+    <message>
+        <source>reading the probe input</source>
+        <translation>reading the probe input</translation>
+    </message>
+    <message>
+        <source>reading the probe position</source>
+        <translation>reading the probe position</translation>
+    </message>
+    <message>
+        <source>reading the probe result</source>
+        <translation>reading the probe result</translation>
+    </message>
+    <message>
+        <source>reading the status</source>
+        <translation>reading the status</translation>
+    </message>
+    <message>
+        <source>restoring the queue (R)</source>
+        <translation>restoring the queue (R)</translation>
+    </message>
+    <message>
+        <source>returning to the planned path</source>
+        <translation>returning to the planned path</translation>
+    </message>
+    <message>
+        <source>setting the feed override (XM)</source>
+        <translation>setting the feed override (XM)</translation>
+    </message>
+    <message>
+        <source>setting the jog speed</source>
+        <translation>setting the jog speed</translation>
+    </message>
+    <message>
+        <source>setting the new speed</source>
+        <translation>setting the new speed</translation>
+    </message>
+    <message>
+        <source>setting the speed to return to the path</source>
+        <translation>setting the speed to return to the path</translation>
+    </message>
+    <message>
+        <source>setting the spindle</source>
+        <translation>setting the spindle</translation>
+    </message>
+    <message>
+        <source>starting the spindle</source>
+        <translation>starting the spindle</translation>
+    </message>
+    <message>
+        <source>status</source>
+        <translation>status</translation>
+    </message>
+    <message>
+        <source>status poll</source>
+        <translation>status poll</translation>
+    </message>
+    <message>
+        <source>stopping (H)</source>
+        <translation>stopping (H)</translation>
+    </message>
+    <message>
+        <source>stopping (H) off the planned path</source>
+        <translation>stopping (H) off the planned path</translation>
+    </message>
+    <message>
+        <source>stopping the jog (H)</source>
+        <translation>stopping the jog (H)</translation>
+    </message>
+    <message>
+        <source>stopping the probe move (H)</source>
+        <translation>stopping the probe move (H)</translation>
+    </message>
+    <message>
+        <source>stopping the spindle</source>
+        <translation>stopping the spindle</translation>
+    </message>
+    <message>
+        <source>switching checksums</source>
+        <translation>switching checksums</translation>
+    </message>
+    <message>
+        <source>switching outputs</source>
+        <translation>switching outputs</translation>
+    </message>
+    <message>
+        <source>switching the MPG</source>
+        <translation>switching the MPG</translation>
+    </message>
+    <message>
+        <source>switching the MPG off</source>
+        <translation>switching the MPG off</translation>
+    </message>
+    <message>
+        <source>testing packets</source>
+        <translation>testing packets</translation>
+    </message>
+    <message>
+        <source>raising queued speeds (XU)</source>
+        <translation>raising queued speeds (XU)</translation>
+    </message>
+    <message>
+        <source>lowering queued speeds (XD)</source>
+        <translation>lowering queued speeds (XD)</translation>
+    </message>
+    <message>
+        <source>zeroing the counters (N)</source>
+        <translation>zeroing the counters (N)</translation>
+    </message>
+    <message>
+        <source>setting T</source>
+        <translation>setting T</translation>
+    </message>
+    <message>
+        <source>setting VN</source>
+        <translation>setting VN</translation>
+    </message>
+    <message>
+        <source>setting the interrupt mask</source>
+        <translation>setting the interrupt mask</translation>
+    </message>
+    <message>
+        <source>setting the input polarity</source>
+        <translation>setting the input polarity</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Resume</translation>
+    </message>
+    <message>
+        <source>Abort</source>
+        <translation>Abort</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Homing</translation>
+    </message>
+    <message>
+        <source>Jogging</source>
+        <translation>Jogging</translation>
+    </message>
+    <message>
+        <source>Stopping the jog</source>
+        <translation>Stopping the jog</translation>
+    </message>
+    <message>
+        <source>Writing the EEPROM</source>
+        <translation>Writing the EEPROM</translation>
+    </message>
+    <message>
+        <source>Lifting the tool</source>
+        <translation>Lifting the tool</translation>
+    </message>
+    <message>
+        <source>Lowering the tool</source>
+        <translation>Lowering the tool</translation>
+    </message>
+    <message>
+        <source>Switching the MPG</source>
+        <translation>Switching the MPG</translation>
+    </message>
+    <message>
+        <source>Setting the spindle</source>
+        <translation>Setting the spindle</translation>
+    </message>
+    <message>
+        <source>Switching outputs</source>
+        <translation>Switching outputs</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>queue full</source>
+        <translation>queue full</translation>
+    </message>
+    <message>
+        <source>command not received completely in time</source>
+        <translation>command not received completely in time</translation>
+    </message>
+    <message>
+        <source>unknown command</source>
+        <translation>unknown command</translation>
+    </message>
+    <message>
+        <source>syntax error</source>
+        <translation>syntax error</translation>
+    </message>
+    <message>
+        <source>parameter out of range</source>
+        <translation>parameter out of range</translation>
+    </message>
+    <message>
+        <source>nothing to continue</source>
+        <translation>nothing to continue</translation>
+    </message>
+    <message>
+        <source>not allowed while a vector runs</source>
+        <translation>not allowed while a vector runs</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Disconnected</translation>
+    </message>
+    <message>
+        <source>Connecting</source>
+        <translation>Connecting</translation>
+    </message>
+    <message>
+        <source>Idle</source>
+        <translation>Idle</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Running</translation>
+    </message>
+    <message>
+        <source>Stopping</source>
+        <translation>Stopping</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Link lost</translation>
+    </message>
+    <message>
+        <source>the link was closed</source>
+        <translation>the link was closed</translation>
+    </message>
+    <message>
+        <source>no reply</source>
+        <translation>no reply</translation>
+    </message>
+    <message>
+        <source>setup</source>
+        <translation>setup</translation>
+    </message>
+    <message>
+        <source>Jog back to where it starts, or plan it again from here.</source>
+        <translation>Jog back to where it starts, or plan it again from here.</translation>
+    </message>
+    <message>
+        <source>Check the probe and the workpiece, then plan it again from here.</source>
+        <translation>Check the probe and the workpiece, then plan it again from here.</translation>
+    </message>
+    <message>
+        <source>This unit&apos;s firmware (v%1) has no W: homing to a switch comes with IP64MPG v10</source>
+        <translation>This unit&apos;s firmware (v%1) has no W: homing to a switch comes with IP64MPG v10</translation>
+    </message>
+    <message>
+        <source>Set the position by hand (G92) or update the unit.</source>
+        <translation>Set the position by hand (G92) or update the unit.</translation>
+    </message>
+    <message>
+        <source>The spindle is starting: the job continues after its spin-up</source>
+        <translation>The spindle is starting: the job continues after its spin-up</translation>
+    </message>
+    <message>
+        <source>Wait for the spin-up; the job then goes on by itself.</source>
+        <translation>Wait for the spin-up; the job then goes on by itself.</translation>
+    </message>
+    <message>
+        <source>The jog would end at %1 mm, outside the soft limits %2 .. %3 mm</source>
+        <translation>The jog would end at %1 mm, outside the soft limits %2 .. %3 mm</translation>
+    </message>
+    <message>
+        <source>Jog a shorter distance.</source>
+        <translation>Jog a shorter distance.</translation>
+    </message>
+    <message>
+        <source>The jog is shorter than one step</source>
+        <translation>The jog is shorter than one step</translation>
+    </message>
+    <message>
+        <source>Choose a larger jog step.</source>
+        <translation>Choose a larger jog step.</translation>
+    </message>
+    <message>
+        <source>The lifted tool is still moving</source>
+        <translation>The lifted tool is still moving</translation>
+    </message>
+    <message>
+        <source>Wait until it stands, then try again.</source>
+        <translation>Wait until it stands, then try again.</translation>
+    </message>
+    <message>
+        <source>Homing axis %1: stopped before the end of its search leg (an input interrupt, or the home switch did not release within homing.backOffMm)</source>
+        <translation>Homing axis %1: stopped before the end of its search leg (an input interrupt, or the home switch did not release within homing.backOffMm)</translation>
+    </message>
+    <message>
+        <source>Check the inputs and the switch, then home again; the axis is not homed.</source>
+        <translation>Check the inputs and the switch, then home again; the axis is not homed.</translation>
+    </message>
+    <message>
+        <source>The tool did not arrive back at the lift point (%1 instead of %2)</source>
+        <translation>The tool did not arrive back at the lift point (%1 instead of %2)</translation>
+    </message>
+    <message>
+        <source>The spindle starts; the job continues after its spin-up</source>
+        <translation>The spindle starts; the job continues after its spin-up</translation>
+    </message>
+    <message>
+        <source>Keep clear of the tool.</source>
+        <translation>Keep clear of the tool.</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gcode</name>
     <message>
         <source>Cannot read the file %1</source>
@@ -1852,6 +2679,38 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>Set the work zero while the machine is ready and still.</translation>
     </message>
     <message>
+        <source>The new port is used when you connect again after the job.</source>
+        <translation>The new port is used when you connect again after the job.</translation>
+    </message>
+    <message>
+        <source>Manual line done.</source>
+        <translation>Manual line done.</translation>
+    </message>
+    <message>
+        <source>Using the port used last, %1 (the machine profile says %2).</source>
+        <translation>Using the port used last, %1 (the machine profile says %2).</translation>
+    </message>
+    <message>
+        <source>built-in emulator</source>
+        <translation>built-in emulator</translation>
+    </message>
+    <message>
+        <source>%1, %2 Bd</source>
+        <translation>%1, %2 Bd</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>Program comment: %1</source>
+        <translation>Program comment: %1</translation>
+    </message>
+    <message>
+        <source>State: %1 → %2</source>
+        <translation>State: %1 → %2</translation>
+    </message>
+    <message>
         <source>The machine is not homed: its soft limits refer to nothing yet. Home all axes now and then run the program?</source>
         <translation>The machine is not homed: its soft limits refer to nothing yet. Home all axes now and then run the program?</translation>
     </message>
@@ -2959,6 +3818,28 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Close</source>
         <translation>Close</translation>
+    </message>
+    <message>
+        <source>Write the unit&apos;s EEPROM</source>
+        <translation>Write the unit&apos;s EEPROM</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write all %n value(s) of the profile into the unit&apos;s EEPROM?</source>
+        <translation>
+            <numerusform>Write %n value of the profile into the unit&apos;s EEPROM?</numerusform>
+            <numerusform>Write all %n values of the profile into the unit&apos;s EEPROM?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Write the %n value(s) that differ into the unit&apos;s EEPROM?</source>
+        <translation>
+            <numerusform>Write the %n value that differs into the unit&apos;s EEPROM?</numerusform>
+            <numerusform>Write the %n values that differ into the unit&apos;s EEPROM?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The unit keeps them after it is switched off, and the machine moves by them from now on.</source>
+        <translation>The unit keeps them after it is switched off, and the machine moves by them from now on.</translation>
     </message>
 </context>
 <context>

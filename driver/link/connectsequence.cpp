@@ -75,11 +75,9 @@ void ConnectSequence::setupUnit()
             want.variant == Variant::Gve64Phantom ? Variant::Gve64 : want.variant;
         if (!found || *found != wantFamily) {
             m_host.clearSteps();
-            m_host.fail("the unit reports firmware '" + state().firmware +
-                            "' but the machine profile is "
-                            "for a " +
-                            std::string(want.displayName) + "; choose the matching profile",
-                        &o, MachineMode::Alarm);
+            m_host.fail(
+                {DriverCode::WrongVariant, {state().firmware, std::string(want.displayName)}}, &o,
+                MachineMode::Alarm);
             return;
         }
         state().variant = want.variant;
@@ -91,15 +89,10 @@ void ConnectSequence::setupUnit()
         const Features &have = state().features;
         if ((promised.mpg && !have.mpg) || (promised.eepromFloat && !have.eepromFloat) ||
             (promised.vlVkXmNa && !have.vlVkXmNa)) {
-            m_host.fail(
-                "the unit reports firmware v" + std::to_string(state().firmwareVersion) +
-                    " but the machine profile says v" +
-                    std::to_string(m_host.config().unit.firmwareVersion) +
-                    ", and plans for the profile's firmware may use what this one lacks (MPG "
-                    "and EEPROM floats need v10; VK, VL, XM and setting one axis's counter "
-                    "v19): set unit.firmwareVersion to " +
-                    std::to_string(state().firmwareVersion) + " in the profile",
-                &o, MachineMode::Alarm);
+            m_host.fail({DriverCode::FirmwareTooOld,
+                         {std::to_string(state().firmwareVersion),
+                          std::to_string(m_host.config().unit.firmwareVersion)}},
+                        &o, MachineMode::Alarm);
         }
         m_host.markDirty();
         setupAfterIdentify();

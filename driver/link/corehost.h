@@ -47,7 +47,8 @@ public:
     virtual void markDirty() = 0;
     virtual void setMode(MachineMode mode) = 0;
     virtual void publish() = 0;
-    virtual void fail(const std::string &message, const Outcome *o, MachineMode mode) = 0;
+    // Reports an error (a code with its arguments, drivererror.h) and sets the mode.
+    virtual void fail(const DriverMessage &message, const Outcome *o, MachineMode mode) = 0;
     // True (and the error reported, the mode set) when `o` is not an accepted reply.
     virtual bool unitError(const Outcome &o, const std::string &what, MachineMode mode) = 0;
     virtual void log(const std::string &text) = 0;

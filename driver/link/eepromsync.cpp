@@ -49,7 +49,7 @@ void EepromSync::compare()
                                          : 0.0;
             if (std::abs(have - e.value) > tolerance) {
                 const std::string text = e.what + ": unit " + o.reply.values.front() +
-                                         ", profile " + std::to_string(e.value);
+                                         ", profile " + numberText(e.value);
                 state().eepromDifferences.push_back(text);
                 m_host.markDirty();
                 m_host.log("EEPROM differs: " + text);

@@ -29,8 +29,7 @@ std::optional<MachineError> Hold::pause(bool stopSpindle)
             return;
         m_needsGo = true;
         state().inta = true;
-        state().hold = HoldReason::User;
-        state().holdText = "paused";
+        detail::setHold(state(), HoldReason::User, {DriverCode::HoldPaused}, state().sourceLine);
         m_host.setMode(MachineMode::Paused);
         if (stopSpindle)
             m_spindle.stop("pausing"); // only once the machine stands: never mid-cut
@@ -44,7 +43,7 @@ std::optional<MachineError> Hold::holdSpindle(bool stop)
         return notNow(stop ? "Stopping the spindle of a held job" : "Starting the spindle again",
                       state().mode);
     if (m_resuming)
-        return refusal("the spindle is starting: the job continues after its spin-up");
+        return refusal(DriverCode::SpindleStarting);
     if (stop)
         m_spindle.stop("the operator asked while the job is held");
     else
@@ -57,9 +56,9 @@ std::optional<MachineError> Hold::resume()
     if (state().mode != MachineMode::Paused)
         return notNow("Resume", state().mode);
     if (m_job.verifying())
-        return refusal("the job's progress is still being checked against the unit's counters");
+        return refusal(DriverCode::ProgressBeingChecked);
     if (m_resuming)
-        return refusal("the spindle is starting: the job continues after its spin-up");
+        return refusal(DriverCode::SpindleStarting);
     auto proceed = [this] {
         m_resuming = false;
         if (state().mode != MachineMode::Paused)
@@ -73,7 +72,7 @@ std::optional<MachineError> Hold::resume()
     // The spindle (and coolant) first, at speed before the tool moves in the work again.
     m_resuming = true;
     if (m_spindle.stopped()) {
-        state().holdText = "the spindle starts; the job continues after its spin-up";
+        detail::setHold(state(), state().hold, {DriverCode::HoldSpindleStarting}, state().holdLine);
         m_host.markDirty();
         m_spindle.restore(proceed);
     } else {
@@ -85,8 +84,7 @@ std::optional<MachineError> Hold::resume()
 void Hold::goOn()
 {
     auto running = [this] {
-        state().hold = HoldReason::None;
-        state().holdText.clear();
+        detail::setHold(state(), HoldReason::None, {}, 0);
         state().interruptInputs = 0;
         m_host.setMode(m_job.active() ? MachineMode::Running : MachineMode::Idle);
     };
@@ -148,8 +146,7 @@ std::optional<MachineError> Hold::abort()
             return;
         m_needsGo = false;
         state().inta = false;
-        state().hold = HoldReason::None;
-        state().holdText.clear();
+        detail::setHold(state(), HoldReason::None, {}, 0);
         m_host.setMode(MachineMode::Idle);
         if (wasJob) {
             m_job.report().endS = m_host.now();
@@ -165,8 +162,8 @@ void Hold::interrupted()
     const bool job = state().mode == MachineMode::Running;
     m_host.setMode(job ? MachineMode::Paused : MachineMode::Alarm);
     m_needsGo = true;
-    state().hold = HoldReason::Interrupt;
-    state().holdText = "an input interrupt stopped the machine";
+    detail::setHold(state(), HoldReason::Interrupt, {DriverCode::HoldInterrupt},
+                    state().sourceLine);
     auto cause = [this](int n) {
         return [this, n](const Outcome &o) {
             if (o.status != OutcomeStatus::Ok || !o.reply.ok())
@@ -180,8 +177,11 @@ void Hold::interrupted()
                 if (state().interruptInputs & (1 << b))
                     names += (names.empty() ? "IN" : ", IN") + std::to_string(b);
             }
-            state().holdText = "stopped by input " + (names.empty() ? "?" : names) +
-                               (state().interruptInputs & 0x80 ? " (STOP button)" : "");
+            detail::setHold(state(), state().hold,
+                            {state().interruptInputs & 0x80 ? DriverCode::HoldStopButton
+                                                            : DriverCode::HoldInput,
+                             {names.empty() ? "?" : names}},
+                            state().holdLine);
             m_host.markDirty();
         };
     };

@@ -20,9 +20,7 @@ std::optional<MachineError> HomingCycle::plan(unsigned axisMask, Plan &p) const
     const MachineState &state = m_host.liveState();
     const machine::MachineConfig &config = m_host.config();
     if (!state.features.switchHoming)
-        return refusal("this unit's firmware (v" + std::to_string(state.firmwareVersion) +
-                       ") has no W: homing to a switch comes with IP64MPG v10; set the position "
-                       "by hand (G92) or update the unit");
+        return refusal(DriverCode::HomingNeedsFirmware, {std::to_string(state.firmwareVersion)});
     const std::vector<machine::HomingMove> all = machine::homingSequence(config);
     for (const auto &m : all) {
         const int a = static_cast<int>(m.axis);
@@ -33,9 +31,7 @@ std::optional<MachineError> HomingCycle::plan(unsigned axisMask, Plan &p) const
             p.moves.push_back(m);
     }
     if (p.moves.empty()) {
-        return refusal(all.empty() ? "the machine profile homes no axis (axes.*.homing.order)"
-                                   : "the machine profile does not home that axis "
-                                     "(axes.*.homing.order is 0)");
+        return refusal(all.empty() ? DriverCode::NoHomedAxis : DriverCode::AxisNotHomed);
     }
     for (const auto &m : p.moves)
         p.homing |= 1u << static_cast<int>(m.axis);
@@ -50,10 +46,7 @@ std::optional<MachineError> HomingCycle::plan(unsigned axisMask, Plan &p) const
             std::all_of(p.moves.begin(), p.moves.end(),
                         [](const machine::HomingMove &m) { return m.homeSteps == 0; });
         if (p.homing != every || !allZero)
-            return refusal("this unit's firmware (v" + std::to_string(state.firmwareVersion) +
-                           ") cannot set one axis's counter (N<axis> needs v19), and N zeroes "
-                           "every counter: home all the machine's axes together, each with home "
-                           "position 0");
+            return refusal(DriverCode::HomeAllTogether, {std::to_string(state.firmwareVersion)});
     }
     return std::nullopt;
 }
@@ -74,8 +67,9 @@ bool HomingCycle::validMoves() const
             cmd::home(axis, m.travelSteps, m.towardPulsesPerS, m.backOffSteps, m.offPulsesPerS);
         if (auto bad = validate(w, config.unit.variant, config.unit.maxPulseRate)) {
             m_host.clearSteps();
-            m_host.fail("homing axis " + std::string(1, axisLetter(axis)) + ": " + bad.message,
-                        nullptr, MachineMode::Alarm);
+            m_host.fail(
+                {DriverCode::HomingInvalid, {std::string(1, axisLetter(axis)), bad.message}},
+                nullptr, MachineMode::Alarm);
             return false;
         }
     }
@@ -123,7 +117,7 @@ std::optional<MachineError> HomingCycle::stop()
     return std::nullopt;
 }
 
-void HomingCycle::alarm(const std::string &message, const Outcome *o)
+void HomingCycle::alarm(const DriverMessage &message, const Outcome *o)
 {
     m_active = false;
     m_host.clearSteps();
@@ -175,16 +169,14 @@ void HomingCycle::legEnded(const machine::HomingMove &m, std::int64_t leg, std::
     m_sought += leg;
     const std::int64_t sign = m.travelSteps < 0 ? -1 : 1;
     const bool inta = o.reply.inta;
-    m_host.readPositionAndStatus([this, m, leg, from, sign, inta, name, o] {
+    m_host.readPositionAndStatus([this, m, leg, from, sign, inta, axis, o] {
         const std::int64_t at = m_host.liveState().positionSteps[static_cast<std::size_t>(m.axis)];
         if (inta || at != from + sign * leg) {
-            alarm(name + ": stopped before the end of its search leg (an input interrupt, or the "
-                         "home switch did not release within homing.backOffMm)",
-                  &o);
+            alarm({DriverCode::HomingLegStopped, {std::string(1, axisLetter(axis))}}, &o);
             return;
         }
         if (m_sought >= std::llabs(m.travelSteps) && !m_stopRequested) {
-            alarm(name + ": the home switch was not found within the configured travel", &o);
+            alarm({DriverCode::HomeSwitchNotFound, {std::string(1, axisLetter(axis))}}, &o);
             return;
         }
         nextLeg();

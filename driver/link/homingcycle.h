@@ -65,7 +65,7 @@ private:
                   const Outcome &o);
     void axisHomed(const machine::HomingMove &m);
     void finish();
-    void alarm(const std::string &message, const Outcome *o);
+    void alarm(const DriverMessage &message, const Outcome *o);
 
     CoreHost &m_host;
     Plan m_plan;

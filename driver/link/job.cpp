@@ -17,7 +17,6 @@ using namespace frezka::protocol;
 using machine::UnitOp;
 
 using detail::isMotion;
-using detail::lineText;
 using detail::refusal;
 
 namespace {
@@ -45,8 +44,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
 {
     MachineState &state = m_host.liveState();
     if (state.mode != MachineMode::Idle)
-        return refusal(std::string("a job can start only when the machine is idle (it is ") +
-                       machineModeName(state.mode) + ")");
+        return refusal(DriverCode::JobNeedsIdle, {machineModeName(state.mode)});
     std::string note;
     auto bad = checkProgram(program, state, m_host.config(), &note);
     if (!note.empty())
@@ -74,8 +72,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     m_recoveredAtStart = stats.recovered;
     state.jobActive = true;
     state.commandsTotal = static_cast<std::int64_t>(m_program.commands.size());
-    state.hold = HoldReason::None;
-    state.holdText.clear();
+    detail::setHold(state, HoldReason::None, {}, 0);
     state.lastError.reset();
     m_host.setMode(MachineMode::Running);
     return std::nullopt;
@@ -245,9 +242,10 @@ void Job::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, do
         m_report.resent += static_cast<std::int64_t>(n - accepted);
         return;
     default:
-        m_host.fail(lineText(m_program.commands[first + accepted]) + ": the unit refused '" +
-                        encodeBody(toCommand(m_program.commands[first + accepted])) + "' (" +
-                        std::string(replyCodeText(o.reply.code)) + ")",
+        m_host.fail({DriverCode::UnitRefused,
+                     {detail::lineArg(m_program.commands[first + accepted]),
+                      encodeBody(toCommand(m_program.commands[first + accepted])),
+                      std::string(replyCodeText(o.reply.code))}},
                     &o, MachineMode::Alarm);
         return;
     }
@@ -263,7 +261,8 @@ void Job::onCommandOutcome(const Outcome &o, std::size_t index, double now)
             m_check.verify("outcome unknown: " + o.error);
         } else {
             m_check.require();
-            m_host.fail(lineText(c) + ": " + o.error, &o, MachineMode::LinkLost);
+            m_host.fail({DriverCode::LinkFailedAtLine, {detail::lineArg(c), o.error}}, &o,
+                        MachineMode::LinkLost);
         }
         return;
     }
@@ -278,8 +277,9 @@ void Job::onCommandOutcome(const Outcome &o, std::size_t index, double now)
         m_waitUntil = now + m_host.options().pollIntervalS;
         return;
     default:
-        m_host.fail(lineText(c) + ": the unit refused '" + encodeBody(o.commands.front()) + "' (" +
-                        std::string(replyCodeText(o.reply.code)) + ")",
+        m_host.fail({DriverCode::UnitRefused,
+                     {detail::lineArg(c), encodeBody(o.commands.front()),
+                      std::string(replyCodeText(o.reply.code))}},
                     &o, MachineMode::Alarm);
         return;
     }
@@ -331,7 +331,8 @@ void Job::handlePcOp(const machine::UnitCommand &c)
         return;
     default:
         m_streamBlocked = false;
-        m_host.fail(lineText(c) + ": unknown unit program operation", nullptr, MachineMode::Alarm);
+        m_host.fail({DriverCode::UnknownOperation, {detail::lineArg(c)}}, nullptr,
+                    MachineMode::Alarm);
         return;
     }
 }
@@ -339,23 +340,27 @@ void Job::handlePcOp(const machine::UnitCommand &c)
 // M0 / M1 / M6: the job holds where the machine stands (M1 only with optional stops on).
 void Job::operatorStop(const machine::UnitCommand &c, std::size_t index)
 {
-    const auto kind = static_cast<gcode::EventKind>(c.value);
-    if (kind == gcode::EventKind::OptionalPause && !m_host.options().optionalStops) {
+    // The planner's StopReason (machine/unitprogram.h), not the G-code event kind.
+    const auto kind = static_cast<machine::StopReason>(c.value);
+    if (kind == machine::StopReason::OptionalPause && !m_host.options().optionalStops) {
         acceptUpTo(index + 1);
         m_streamBlocked = false;
         return;
     }
-    std::string text = kind == gcode::EventKind::ToolChange
-                           ? "M6: change to tool " + std::to_string(c.aux)
-                       : kind == gcode::EventKind::OptionalPause ? "M1: optional stop"
-                                                                 : "M0: program stop";
+    const std::string line = detail::lineArg(c);
+    const DriverMessage text =
+        kind == machine::StopReason::ToolChange
+            ? DriverMessage{DriverCode::HoldToolChange, {line, std::to_string(c.aux)}}
+        : kind == machine::StopReason::OptionalPause
+            ? DriverMessage{DriverCode::HoldOptionalStop, {line}}
+            : DriverMessage{DriverCode::HoldProgramStop, {line}};
     atRest(index, [this, index, text] {
         acceptUpTo(index + 1);
         m_streamBlocked = false;
         m_host.setHoldNeedsGo(false);
         MachineState &state = m_host.liveState();
-        state.hold = HoldReason::OperatorStop;
-        state.holdText = lineText(m_program.commands[index]) + ": " + text;
+        detail::setHold(state, HoldReason::OperatorStop, text,
+                        m_program.commands[index].sourceLine);
         m_host.setMode(MachineMode::Paused);
         m_host.heldAtOperatorStop(
             static_cast<machine::StopReason>(m_program.commands[index].value));
@@ -447,7 +452,8 @@ void Job::checkPolledPosition(bool kept)
 
 // The executing command from the polled position: the first motion command from the last one
 // seen executing on whose box (from its start to its end position) holds the position and which
-// has not ended.
+// has not ended. A position on none of them (the tool lifted, the machine off the path) says
+// nothing about progress: the line, progress and ETA stay where they were.
 void Job::positionRead()
 {
     const auto &cmds = m_program.commands;
@@ -456,6 +462,7 @@ void Job::positionRead()
     const auto &pos = state.positionSteps;
     std::size_t i = m_cursor.exec;
     const std::size_t limit = std::min(m_cursor.next, cmds.size());
+    bool onPath = false; // inside a box, or at the end of the last motion sent
     for (int guard = 0; i < limit && guard < 100000; ++i, ++guard) {
         if (!isMotion(cmds[i].op))
             continue;
@@ -468,9 +475,14 @@ void Job::positionRead()
             inside =
                 inside && pos[a] >= std::min(start, end[a]) && pos[a] <= std::max(start, end[a]);
         }
-        if (inside && !atEnd)
+        onPath = atEnd;
+        if (inside && !atEnd) {
+            onPath = true;
             break;
+        }
     }
+    if (!onPath && i > m_cursor.exec)
+        return;
     m_cursor.exec = i;
     const std::size_t shown = std::min(i, cmds.empty() ? 0 : cmds.size() - 1);
     state.sourceLine = cmds.empty() ? 0 : cmds[shown].sourceLine;
@@ -512,8 +524,7 @@ bool Job::resumeAfterReconnect()
         return false;
     MachineState &state = m_host.liveState();
     m_host.setMode(MachineMode::Paused);
-    state.hold = HoldReason::User;
-    state.holdText = "link restored: checking the job's progress against the counters";
+    detail::setHold(state, HoldReason::User, {DriverCode::HoldLinkRestored}, state.sourceLine);
     m_check.verify("reconnected");
     return true;
 }

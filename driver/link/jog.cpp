@@ -27,13 +27,13 @@ std::optional<MachineError> Jog::send(int axis, const machine::JogMove &m)
     case machine::JogVerdict::Move:
         break;
     case machine::JogVerdict::BeyondLimit:
-        return refusal("the jog would end at " + std::to_string(m.targetMm) +
-                       " mm, outside the soft limits " + std::to_string(ax.softMinMm) + " .. " +
-                       std::to_string(ax.softMaxMm) + " mm");
+        return refusal(
+            DriverCode::JogBeyondLimits,
+            {numberText(m.targetMm), numberText(ax.softMinMm), numberText(ax.softMaxMm)});
     case machine::JogVerdict::AtLimit:
-        return refusal("the axis is at its soft limit");
+        return refusal(DriverCode::JogAtLimit);
     case machine::JogVerdict::NoMove:
-        return refusal("the jog is shorter than one step");
+        return refusal(DriverCode::JogTooShort);
     }
     const double rate = m.speedMmPerMin / 60.0 * ax.stepsPerMm;
     const auto pulses = std::clamp<std::int64_t>(std::llround(rate), 10, config.unit.maxPulseRate);
@@ -70,7 +70,7 @@ std::optional<MachineError> Jog::step(int axis, double distanceMm, double speedM
     if (state.mode != MachineMode::Idle)
         return notNow("Jogging", state.mode);
     if (axis < 0 || axis >= state.axisCount)
-        return refusal("no such axis");
+        return refusal(DriverCode::NoSuchAxis);
     m_continuous = false;
     const auto from = state.positionSteps[static_cast<std::size_t>(axis)];
     return send(axis, machine::jogStep(m_host.config(), axis, from, distanceMm, speedMmPerMin,
@@ -83,7 +83,7 @@ std::optional<MachineError> Jog::continuous(int axis, int direction, double spee
     if (state.mode != MachineMode::Idle)
         return notNow("Jogging", state.mode);
     if (axis < 0 || axis >= state.axisCount || direction == 0)
-        return refusal("no such axis or direction");
+        return refusal(DriverCode::NoSuchAxisOrDirection);
     m_continuous = true;
     const auto from = state.positionSteps[static_cast<std::size_t>(axis)];
     auto r = send(axis, machine::jogContinuous(m_host.config(), axis, from, direction,

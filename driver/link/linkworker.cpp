@@ -90,7 +90,8 @@ void LinkWorker::connectTo(const ConnectionSettings &settings)
     m_transport = m_factory(settings, m_config, this, &error);
     if (!m_transport) {
         MachineError e;
-        e.message = error.toStdString();
+        e.reason = {DriverCode::CannotConnect, {error.toStdString()}};
+        e.message = englishText(e.reason, true);
         emit errorOccurred(e);
         return;
     }

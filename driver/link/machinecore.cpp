@@ -88,10 +88,12 @@ void MachineCore::publish()
         onStateChanged(m_state);
 }
 
-void MachineCore::fail(const std::string &message, const Outcome *o, MachineMode mode)
+void MachineCore::fail(const DriverMessage &reason, const Outcome *o, MachineMode mode)
 {
     MachineError e;
-    e.message = message;
+    e.reason = reason;
+    e.message = englishText(reason, true);
+    const std::string &message = e.message;
     if (o) {
         if (!o->commands.empty())
             e.command = o->packet ? encodeBody(o->commands.front()) + " (packet of " +
@@ -115,11 +117,11 @@ bool MachineCore::unitError(const Outcome &o, const std::string &what, MachineMo
     if (o.status == OutcomeStatus::Ok && o.reply.ok())
         return false;
     if (o.status == OutcomeStatus::Failed) {
-        fail(what + ": " + o.error, &o, MachineMode::LinkLost);
+        fail({DriverCode::LinkFailed, {what, o.error}}, &o, MachineMode::LinkLost);
         m_steps.clear();
         return true;
     }
-    fail(what + ": the unit answered " + std::string(replyCodeText(o.reply.code)), &o, mode);
+    fail({DriverCode::UnitAnswered, {what, std::string(replyCodeText(o.reply.code))}}, &o, mode);
     return true;
 }
 
@@ -259,7 +261,9 @@ void MachineCore::applyFlags(std::uint8_t flags)
     m_state.inta = (flags & 0x80) != 0;
     m_state.queueFull = (flags & 0x20) != 0;
     m_dirty = true;
-    if (m_job.active() && !m_state.run)
+    // A running unit that stands has run everything accepted; one held by H, an interrupt or a
+    // tool lift (INTA set, or not Running) stands with its queue kept.
+    if (m_job.active() && !m_state.run && !m_state.inta && m_state.mode == MachineMode::Running)
         m_job.unitStands();
     if (m_state.inta && !wasInta && m_state.mode == MachineMode::Running && !m_haltExpected)
         m_hold.interrupted();
@@ -526,14 +530,13 @@ void MachineCore::linkClosed(const std::string &why, double now)
     m_haltPending = false;
     if (m_job.active()) {
         m_job.linkLost();
-        fail("link lost: " + why + "; the job is kept and can resume after reconnecting", nullptr,
-             MachineMode::LinkLost);
+        fail({DriverCode::LinkLostJobKept, {why}}, nullptr, MachineMode::LinkLost);
     } else if (why.empty()) {
         log("link closed");
         setMode(MachineMode::Disconnected);
     } else {
         // A port that failed to open or went away: the user must see why.
-        fail((wasOpen ? "link lost: " : "cannot connect: ") + why, nullptr,
+        fail({wasOpen ? DriverCode::LinkLost : DriverCode::CannotConnect, {why}}, nullptr,
              wasOpen ? MachineMode::LinkLost : MachineMode::Disconnected);
     }
     publish();

@@ -168,7 +168,7 @@ private:
     void markDirty() override { m_dirty = true; }
     void setMode(MachineMode mode) override;
     void publish() override;
-    void fail(const std::string &message, const Outcome *o, MachineMode mode) override;
+    void fail(const DriverMessage &message, const Outcome *o, MachineMode mode) override;
     bool unitError(const Outcome &o, const std::string &what, MachineMode mode) override;
     void log(const std::string &text) override;
     void jobFinished(bool ok) override;

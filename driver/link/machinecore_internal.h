@@ -46,16 +46,35 @@ inline std::string stepsText(const machine::Steps4 &s, int axes)
     return t;
 }
 
-// An operation refused before anything was sent.
-inline MachineError refusal(std::string text)
+// An operation refused before anything was sent (a code with its arguments, drivererror.h).
+inline MachineError refusal(DriverCode code, std::vector<std::string> args = {})
 {
-    return MachineError{std::move(text), {}, {}, -1};
+    MachineError e;
+    e.reason = DriverMessage{code, std::move(args)};
+    e.message = englishText(e.reason, true);
+    return e;
 }
 
 inline MachineError notNow(const char *what, MachineMode mode)
 {
-    return refusal(std::string(what) + " is not possible now (the machine is " +
-                   machineModeName(mode) + ")");
+    return refusal(DriverCode::NotNow, {what, machineModeName(mode)});
+}
+
+// "12" or "setup": the line argument of a message.
+inline std::string lineArg(const machine::UnitCommand &c)
+{
+    return c.sourceLine ? std::to_string(c.sourceLine) : "setup";
+}
+
+// The job is held (or the hold ends with HoldReason::None): the reason, its words and the
+// program line it belongs to.
+inline void setHold(MachineState &state, HoldReason reason, DriverMessage message,
+                    std::uint32_t line)
+{
+    state.hold = reason;
+    state.holdText = message.empty() ? std::string() : englishText(message);
+    state.holdMessage = std::move(message);
+    state.holdLine = line;
 }
 
 } // namespace frezka::driver::detail

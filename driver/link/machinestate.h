@@ -5,6 +5,7 @@
 // copy whenever something changed; nobody else keeps machine state. Positions come in steps (the
 // unit's counters) and in mm (steps / steps-per-mm of the profile; A in degrees).
 
+#include "driver/link/drivererror.h"
 #include "driver/link/linkengine.h"
 #include "machine/machineconfig.h"
 #include "protocol/variant.h"
@@ -70,20 +71,23 @@ enum class HoldReason : std::uint8_t {
     None,
     User,         // pause()
     Interrupt,    // an enabled input fired (STOP button, limit, ...): see interruptInputs
-    OperatorStop, // M0 / M1 / M6 in the program: see holdText
+    OperatorStop, // M0 / M1 / M6 in the program: see holdMessage and holdLine
     ProbeFailed,  // G38.2 / G38.4 ended without the expected contact change
     PathFault,    // the unit's position left the planned path (a command damaged on the line
                   // in a way its checksum cannot show): resume returns to the last verified
                   // point of the path and runs on from there
 };
 
-// The last error, with the command and the unit's reply (or what came back instead).
+// The last error, with the command and the unit's reply (or what came back instead). The
+// front ends word it from `reason` (a code with its arguments, drivererror.h) in the user's
+// language; `message` is the same in English for logs.
 struct MachineError
 {
-    std::string message; // English, complete
+    std::string message; // English, complete: englishText(reason)
     std::string command; // the command text, e.g. "!0C697,30,0", empty when not command-related
     std::string reply;   // the raw reply line, empty when none came
     int unitCode = -1;   // the unit's error code 0..7 when it replied, else -1
+    DriverMessage reason;
     friend bool operator==(const MachineError &, const MachineError &) = default;
 };
 
@@ -91,7 +95,9 @@ struct MachineState
 {
     MachineMode mode = MachineMode::Disconnected;
     HoldReason hold = HoldReason::None;
-    std::string holdText; // operator message ("M6 T3: change tool"), interrupt names, ...
+    std::string holdText;       // English: englishText(holdMessage), for logs and the CLI
+    DriverMessage holdMessage;  // why it holds, with its arguments (line, tool, inputs ...)
+    std::uint32_t holdLine = 0; // the program line the hold belongs to (M0/M6: its own line)
     MachineActivity activity = MachineActivity::None;
 
     // unit

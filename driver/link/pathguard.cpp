@@ -13,7 +13,6 @@ namespace frezka::driver {
 
 using namespace frezka::protocol;
 using detail::isMotion;
-using detail::lineText;
 using detail::stepsText;
 using machine::UnitOp;
 
@@ -136,19 +135,16 @@ void PathGuard::holdOrReturn()
 {
     const auto &cmds = m_job.program().commands;
     const std::size_t g = std::min(m_verified, cmds.size());
-    const std::string where = cmds.empty() ? "setup" : lineText(cmds[std::min(g, cmds.size() - 1)]);
-    const std::string text = "the machine left the planned path: " + m_faultText +
-                             ". A command was damaged on the serial line in a way its checksum "
-                             "cannot show. Resuming lifts the tool, returns to " +
-                             where + " and runs the job on from there";
+    const machine::UnitCommand *at = cmds.empty() ? nullptr : &cmds[std::min(g, cmds.size() - 1)];
+    const DriverMessage text{DriverCode::OffPath,
+                             {m_faultText, at ? detail::lineArg(*at) : std::string("setup")}};
     if (m_host.options().returnToPathAutomatically) {
-        m_host.log(text);
+        m_host.log(englishText(text, true));
         m_return.start(1);
         return;
     }
     MachineState &state = m_host.liveState();
-    state.hold = HoldReason::PathFault;
-    state.holdText = text;
+    detail::setHold(state, HoldReason::PathFault, text, at ? at->sourceLine : 0);
     m_host.fail(text, nullptr, MachineMode::Paused);
 }
 

@@ -12,7 +12,6 @@
 namespace frezka::driver {
 
 using namespace frezka::protocol;
-using detail::lineText;
 using machine::UnitOp;
 
 void ProbeMove::start(std::size_t index)
@@ -33,8 +32,8 @@ void ProbeMove::start(std::size_t index)
         if ((*o.reply.hexValue() & 0x80) == (armPolarity & 0x80)) {
             m_host.clearSteps();
             m_job.finish(false);
-            m_host.fail(lineText(m_job.program().commands[index]) +
-                            ": the probe input is already in the state the probe move waits for",
+            m_host.fail({DriverCode::ProbeAlreadyTripped,
+                         {detail::lineArg(m_job.program().commands[index])}},
                         &o, MachineMode::Alarm);
         }
     });
@@ -92,7 +91,7 @@ void ProbeMove::end(std::size_t index, bool mustTrip)
         if (!state.probeTripped && mustTrip) {
             state.hold = HoldReason::ProbeFailed;
             m_job.finish(false);
-            m_host.fail(lineText(c) + ": the probe move ended without the probe tripping", nullptr,
+            m_host.fail({DriverCode::ProbeNotTripped, {detail::lineArg(c)}}, nullptr,
                         MachineMode::Alarm);
             return;
         }
@@ -105,12 +104,8 @@ void ProbeMove::end(std::size_t index, bool mustTrip)
             m_job.guard().switchOff(); // the rest was planned from the probe's programmed end
         if (!atEnd && motionFollows) {
             m_job.finish(false);
-            m_host.fail(lineText(c) + ": the probe tripped at " +
-                            std::to_string(state.probeSteps[0]) + ", " +
-                            std::to_string(state.probeSteps[1]) + ", " +
-                            std::to_string(state.probeSteps[2]) +
-                            " steps; the rest of the program was planned from the probe's end "
-                            "point: plan it again from here",
+            m_host.fail({DriverCode::ProbeTrippedElsewhere,
+                         {detail::lineArg(c), detail::stepsText(state.probeSteps, 3)}},
                         nullptr, MachineMode::Alarm);
             return;
         }

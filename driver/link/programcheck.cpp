@@ -10,7 +10,6 @@
 namespace frezka::driver {
 
 using namespace frezka::protocol;
-using detail::lineText;
 using detail::refusal;
 using machine::UnitOp;
 
@@ -19,15 +18,14 @@ std::optional<MachineError> checkProgram(machine::UnitProgram &program, const Ma
 {
     const VariantInfo &info = variantInfo(config.unit.variant);
     if (program.axisCount != 3 && program.axisCount != 4)
-        return refusal("the unit program has " + std::to_string(program.axisCount) + " axes");
+        return refusal(DriverCode::ProgramAxisCount, {std::to_string(program.axisCount)});
     if (program.axisCount > info.axisCount)
-        return refusal("the unit program has 4 axes but the " + std::string(info.displayName) +
-                       " has 3");
+        return refusal(DriverCode::ProgramFourAxes, {std::string(info.displayName)});
     for (int a = 0; a < program.axisCount; ++a) {
         if (program.startSteps[a] != state.positionSteps[a])
-            return refusal("the program was planned from " + std::to_string(program.startSteps[a]) +
-                           " steps on axis " + "XYZA"[a] + " but the machine is at " +
-                           std::to_string(state.positionSteps[a]) + "; plan it again from here");
+            return refusal(DriverCode::ProgramStartsElsewhere,
+                           {std::to_string(program.startSteps[a]), std::string(1, "XYZA"[a]),
+                            std::to_string(state.positionSteps[a])});
     }
     auto &cmds = program.commands;
     if (!state.features.vlVkXmNa) {
@@ -37,10 +35,8 @@ std::optional<MachineError> checkProgram(machine::UnitProgram &program, const Ma
             return c.op == UnitOp::SpeedModeVk;
         });
         if (vk != cmds.end())
-            return refusal(lineText(*vk) + ": the plan uses VK, which this unit's firmware (v" +
-                           std::to_string(state.firmwareVersion) +
-                           ") lacks (it needs v19); plan in VN (motion.speedMode \"vn\", or "
-                           "unit.firmwareVersion in the profile)");
+            return refusal(DriverCode::ProgramNeedsVk,
+                           {detail::lineArg(*vk), std::to_string(state.firmwareVersion)});
         const auto before = cmds.size();
         std::erase_if(cmds,
                       [](const machine::UnitCommand &c) { return c.op == UnitOp::SpeedModeVn; });
@@ -55,7 +51,7 @@ std::optional<MachineError> checkProgram(machine::UnitProgram &program, const Ma
         if (c.op == UnitOp::Spindle && !info.hasSpindleAddress7)
             wire = cmd::output(c.value ? 0xFE : 0xFF); // GVE84: the relay
         if (auto bad = validate(wire, config.unit.variant, config.unit.maxPulseRate)) {
-            auto e = refusal(lineText(c) + ": " + bad.message);
+            auto e = refusal(DriverCode::InvalidCommand, {detail::lineArg(c), bad.message});
             e.command = encodeBody(wire);
             return e;
         }

@@ -91,12 +91,9 @@ void ProgressCheck::matchProgress()
         m_host.log("counters " + counters + "; searched commands " + std::to_string(lo) + ".." +
                    std::to_string(hi) + " ending " + std::to_string(endOf(lo)[0]) + ".." +
                    std::to_string(endOf(hi)[0]) + " on X");
-        m_host.fail(matches.empty()
-                        ? "the unit's counters match no point the job has reached; the job "
-                          "cannot resume exactly (re-home and start it again)"
-                        : "the unit's counters match several points of the job; cannot tell how "
-                          "far it got (abort the job)",
-                    nullptr, MachineMode::Alarm);
+        m_host.fail(
+            {matches.empty() ? DriverCode::CountersMatchNothing : DriverCode::CountersMatchSeveral},
+            nullptr, MachineMode::Alarm);
         return;
     }
     const std::size_t j = matches.front();

@@ -19,15 +19,12 @@ void ReturnToPath::start(int attempt)
 {
     constexpr int kAttempts = 3;
     if (attempt > kAttempts) {
-        m_host.fail("the machine did not arrive back on the planned path after " +
-                        std::to_string(kAttempts) +
-                        " attempts; abort the job and check the machine",
-                    nullptr, MachineMode::Alarm);
+        m_host.fail({DriverCode::ReturnFailed, {std::to_string(kAttempts)}}, nullptr,
+                    MachineMode::Alarm);
         return;
     }
     MachineState &state = m_host.liveState();
-    state.hold = HoldReason::None;
-    state.holdText = "returning to the planned path";
+    detail::setHold(state, HoldReason::None, {DriverCode::HoldReturning}, state.holdLine);
     state.lastError.reset();
     m_host.setMode(MachineMode::Running); // the path fault keeps the stream and the guard off
     const machine::MachineConfig &config = m_host.config();
@@ -131,7 +128,7 @@ void ReturnToPath::arrived()
         m_guard.clearFault();
         m_job.setStreamBlocked(false);
         m_job.setQueueFullSeen(false);
-        m_host.liveState().holdText.clear();
+        detail::setHold(m_host.liveState(), HoldReason::None, {}, 0);
         m_host.markDirty();
     });
 }

@@ -36,18 +36,17 @@ std::optional<MachineError> ToolLift::lift(bool stopSpindle)
     if (state().mode != MachineMode::Paused || !m_job.active())
         return notNow("Lifting the tool", state().mode);
     if (state().hold == HoldReason::PathFault)
-        return refusal("off the planned path the unit holds no queue to keep: resume, which lifts "
-                       "the tool and returns to the path, or abort");
+        return refusal(DriverCode::LiftOffPath);
     const double liftMm = config.motion.toolLiftMm;
     if (liftMm <= 0)
-        return refusal("the machine profile sets no tool lift height (motion.toolLiftMm)");
+        return refusal(DriverCode::NoLiftHeight);
     // Up is toward the upper soft limit of Z, never beyond it.
     const machine::AxisConfig &z = config.axes[2];
     const std::int64_t now_z = state().positionSteps[2];
     const std::int64_t top = m_host.stepsFromMm(2, z.softMaxMm);
     m_liftSteps = std::min(m_host.stepsFromMm(2, liftMm), std::max<std::int64_t>(0, top - now_z));
     if (m_liftSteps == 0)
-        return refusal("Z is at its upper soft limit: no room to lift the tool");
+        return refusal(DriverCode::LiftAtLimit);
     if (!stopSpindle && state().spindleOn)
         m_host.log("the spindle and coolant go off for the lifted tool all the same");
     m_active = true;
@@ -81,8 +80,7 @@ void ToolLift::lifted()
         if (!m_active)
             return;
         m_liftPoint = state().positionSteps;
-        state().hold = HoldReason::User;
-        state().holdText = "tool lifted";
+        detail::setHold(state(), HoldReason::User, {DriverCode::HoldToolLifted}, state().holdLine);
         m_host.setMode(MachineMode::ToolLifted);
     });
 }
@@ -106,16 +104,16 @@ std::optional<MachineError> ToolLift::jog(int axis, double distanceMm, double sp
     if (state().mode != MachineMode::ToolLifted || !m_active)
         return notNow("Moving the lifted tool", state().mode);
     if (m_moving)
-        return refusal("the lifted tool is still moving");
+        return refusal(DriverCode::ToolStillMoving);
     if (axis < 0 || axis >= state().axisCount)
-        return refusal("this machine has no such axis");
+        return refusal(DriverCode::NoSuchAxis);
     const machine::AxisConfig &ax = m_host.config().axes[static_cast<std::size_t>(axis)];
     const std::int64_t at = state().positionSteps[static_cast<std::size_t>(axis)];
     const std::int64_t target =
         std::clamp(at + m_host.stepsFromMm(axis, distanceMm),
                    m_host.stepsFromMm(axis, ax.softMinMm), m_host.stepsFromMm(axis, ax.softMaxMm));
     if (target == at)
-        return refusal("the axis is at its soft limit in that direction");
+        return refusal(DriverCode::JogAtLimit);
     machine::Steps4 d{};
     d[static_cast<std::size_t>(axis)] = target - at;
     m_moving = m_jogged = true;
@@ -142,14 +140,14 @@ std::optional<MachineError> ToolLift::lower(int speedPulsesPerS)
     if (state().mode != MachineMode::ToolLifted)
         return notNow("Lowering the tool", state().mode);
     if (m_moving)
-        return refusal("the lifted tool is still moving: lower it when it stands");
+        return refusal(DriverCode::ToolStillMoving);
     if (speedPulsesPerS > 0) {
         if (auto bad = validate(cmd::speed(speedPulsesPerS), config.unit.variant,
                                 config.unit.maxPulseRate))
-            return refusal(bad.message);
+            return refusal(DriverCode::SpeedInvalid, {bad.message});
     }
     m_host.setMode(MachineMode::Stopping);
-    state().holdText = "lowering the tool";
+    detail::setHold(state(), state().hold, {DriverCode::HoldToolLowering}, state().holdLine);
     // The spindle at speed before anything moves toward the work again.
     m_spindle.restore([this, speedPulsesPerS] {
         if (!m_active)
@@ -199,10 +197,9 @@ void ToolLift::moveBack(std::size_t k, int speedPulsesPerS)
         for (int a = 0; a < state().axisCount; ++a) {
             if (state().positionSteps[static_cast<std::size_t>(a)] !=
                 m_liftPoint[static_cast<std::size_t>(a)]) {
-                m_host.fail("the tool did not arrive back at the lift point (" +
-                                stepsText(state().positionSteps, state().axisCount) +
-                                " instead of " + stepsText(m_liftPoint, state().axisCount) +
-                                "); abort the job and check the machine",
+                m_host.fail({DriverCode::LiftPointMissed,
+                             {stepsText(state().positionSteps, state().axisCount),
+                              stepsText(m_liftPoint, state().axisCount)}},
                             nullptr, MachineMode::Alarm);
                 return;
             }
@@ -254,7 +251,7 @@ void ToolLift::restored(int speedPulsesPerS)
         m_host.applyFlags(*f.reply.hexValue());
         m_host.setHoldNeedsGo(state().inta);
         m_active = false;
-        state().holdText = "tool lowered";
+        detail::setHold(state(), state().hold, {DriverCode::HoldToolLowered}, state().holdLine);
         m_host.setMode(MachineMode::Paused);
     });
 }

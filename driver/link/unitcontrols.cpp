@@ -23,10 +23,10 @@ MachineState &UnitControls::state()
 std::optional<MachineError> UnitControls::setMpg(bool on)
 {
     if (!state().features.mpg)
-        return refusal(variantInfo(m_host.config().unit.variant).hasMpg
-                           ? "this unit's firmware (v" + std::to_string(state().firmwareVersion) +
-                                 ") has no MPG handwheel; it needs v10"
-                           : std::string("this unit has no MPG handwheel"));
+        return variantInfo(m_host.config().unit.variant).hasMpg
+                   ? refusal(DriverCode::MpgNeedsFirmware,
+                             {std::to_string(state().firmwareVersion)})
+                   : refusal(DriverCode::NoMpg);
     if (state().mode != MachineMode::Idle)
         return notNow("Switching the MPG", state().mode);
     m_host.send(on ? cmd::mpgSilent() : cmd::mpgOff(), [this, on](const Outcome &o) {
@@ -45,8 +45,7 @@ std::optional<MachineError> UnitControls::setSpindleRpm(double rpm)
         return notNow("Setting the spindle", state().mode);
     const double maxRpm = m_host.config().spindle.maxRpm;
     if (rpm < 0 || rpm > maxRpm)
-        return refusal("spindle speed " + std::to_string(rpm) + " rpm is outside 0.." +
-                       std::to_string(maxRpm));
+        return refusal(DriverCode::SpindleOutOfRange, {numberText(rpm), numberText(maxRpm)});
     const int permille = static_cast<int>(std::lround(rpm / maxRpm * 1000.0));
     Command c = cmd::spindle(permille);
     if (!variantInfo(m_host.config().unit.variant).hasSpindleAddress7)
@@ -78,12 +77,12 @@ std::optional<MachineError> UnitControls::setOutputs(std::uint8_t mask, std::uin
 std::optional<MachineError> UnitControls::setOverride(int percent)
 {
     if (auto bad = validate(cmd::multiplier(percent), m_host.config().unit.variant))
-        return refusal(bad.message);
+        return refusal(DriverCode::OverrideInvalid, {bad.message});
     if (!state().features.vlVkXmNa)
-        return refusal(variantInfo(m_host.config().unit.variant).hasVlVkXmNa
-                           ? "this unit's firmware (v" + std::to_string(state().firmwareVersion) +
-                                 ") has no XM feed override; it needs v19"
-                           : std::string("this unit has no XM feed override"));
+        return variantInfo(m_host.config().unit.variant).hasVlVkXmNa
+                   ? refusal(DriverCode::OverrideNeedsFirmware,
+                             {std::to_string(state().firmwareVersion)})
+                   : refusal(DriverCode::NoOverride);
     m_host.send(cmd::multiplier(percent), [this, percent](const Outcome &o) {
         if (m_host.unitError(o, "setting the feed override (XM)", MachineMode::Alarm))
             return;
@@ -120,20 +119,20 @@ std::optional<MachineError> UnitControls::sendRaw(const std::string &text)
     while (!line.empty() && (line.back() == '\r' || line.back() == '\n' || line.back() == ' '))
         line.pop_back();
     if (line.empty())
-        return refusal("empty command");
+        return refusal(DriverCode::EmptyCommand);
     if (line.front() != '!')
         line = "!0" + line;
     const ParsedCommand p = parseCommand(line, false);
     if (p.status != ParseStatus::Ok)
-        return refusal("'" + text + "': " + (p.message.empty() ? "not a command" : p.message));
+        return refusal(DriverCode::NotACommand, {text, p.message});
     if (auto bad =
             validate(p.command, m_host.config().unit.variant, m_host.config().unit.maxPulseRate))
-        return refusal(bad.message);
+        return refusal(DriverCode::NotACommand, {text, bad.message});
     const Op op = p.command.op;
     if (m_job.active() && (op == Op::Line || op == Op::Vector || op == Op::Delete ||
                            op == Op::Keep || op == Op::Restore || op == Op::Jump ||
                            op == Op::ZeroAll || op == Op::SetCounter || op == Op::Home))
-        return refusal("'" + text + "' would disturb the running job");
+        return refusal(DriverCode::CommandDisturbsJob, {text});
     m_host.send(p.command, [this](const Outcome &o) {
         if (o.status != OutcomeStatus::Ok) {
             m_host.unitError(o, "raw command", MachineMode::LinkLost);

@@ -301,7 +301,7 @@ TEST(MachineCore, OperatorStopsAndDwellWaitForTheMachine)
     const auto mid = p.commands.back().endSteps;
     machine::UnitCommand m6;
     m6.op = UnitOp::OperatorStop;
-    m6.value = static_cast<std::int64_t>(gcode::EventKind::ToolChange);
+    m6.value = static_cast<std::int64_t>(machine::StopReason::ToolChange);
     m6.aux = 3;
     m6.sourceLine = 77;
     m6.endSteps = mid;

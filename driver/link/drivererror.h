@@ -1,0 +1,132 @@
+#pragma once
+// The driver's messages as codes (issue 13 item 4), modelled on gcode/error.h: every refusal,
+// error and hold reason the driver reports is a stable DriverCode with its arguments (the line,
+// the axis, the command, the unit's reply ...), never finished prose. Each code has an English
+// template (%1, %2 ... for the arguments) and a hint on what to do, both marked with
+// QT_TRANSLATE_NOOP("frezka::driver", ...) so that lupdate finds them; the front ends word a
+// message in the user's language with translatedText(). Arguments that are themselves fixed
+// driver phrases (an action such as "pausing (H)", the unit's reply "queue full", a mode name)
+// are translated too when the catalogue knows them; numbers, commands and replies stay as they
+// are. The English text (englishText) is what logs and the tests' assertions read. The table of
+// codes is documented in docs/gui.md ("Driver messages"); never renumber a code.
+
+#include <QString>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace frezka::driver {
+
+enum class DriverCode : std::uint16_t {
+    None = 0,
+    // Refusals: nothing was sent (1xx)
+    NotNow = 100,                 // %1 the action, %2 the machine's mode
+    JobNeedsIdle = 101,           // %1 mode
+    ProgressBeingChecked = 102,   //
+    LowerToolFirst = 103,         //
+    NoHomedAxis = 104,            //
+    AxisNotHomed = 105,           //
+    HomeAllTogether = 106,        // %1 firmware version
+    JogOutsideLimits = 107,       //
+    JogAtLimit = 108,             //
+    NoSuchAxis = 109,             //
+    NoSuchAxisOrDirection = 110,  //
+    ProgramAxisCount = 111,       // %1 axes
+    ProgramFourAxes = 112,        // %1 the unit's name
+    ProgramStartsElsewhere = 113, // %1 planned steps, %2 axis, %3 steps now
+    ProgramNeedsVk = 114,         // %1 line, %2 firmware version
+    InvalidCommand = 115,         // %1 line, %2 why (the protocol's check)
+    LiftOffPath = 116,            //
+    NoLiftHeight = 117,           //
+    LiftAtLimit = 118,            //
+    MpgNeedsFirmware = 119,       // %1 firmware version
+    NoMpg = 120,                  //
+    SpindleOutOfRange = 121,      // %1 rpm asked, %2 the profile's maximum
+    NoOverride = 122,             //
+    OverrideInvalid = 123,        // %1 why
+    EmptyCommand = 124,           //
+    NotACommand = 125,            // %1 the text, %2 why
+    CommandDisturbsJob = 126,     // %1 the text
+    SpeedInvalid = 127,           // %1 why
+    OverrideNeedsFirmware = 128,  // %1 firmware version
+    HomingNeedsFirmware = 129,    // %1 firmware version (W needs IP64MPG v10)
+    SpindleStarting = 130,        //
+    JogBeyondLimits = 131,        // %1 target mm, %2 soft minimum, %3 soft maximum
+    JogTooShort = 132,            //
+    ToolStillMoving = 133,        //
+    // The unit and the link (2xx)
+    UnitAnswered = 200,       // %1 the action, %2 the unit's reply
+    LinkFailed = 201,         // %1 the action, %2 why
+    UnitRefused = 202,        // %1 line, %2 command, %3 the unit's reply
+    LinkLostJobKept = 203,    // %1 why
+    LinkLost = 204,           // %1 why
+    CannotConnect = 205,      // %1 why
+    WrongVariant = 206,       // %1 firmware, %2 the profile's unit
+    FirmwareTooOld = 207,     // %1 the unit's version, %2 the profile's version
+    UnknownOperation = 208,   // %1 line
+    HomeSwitchNotFound = 209, // %1 axis
+    HomingInvalid = 210,      // %1 axis, %2 why
+    LinkFailedAtLine = 211,   // %1 line, %2 why
+    HomingLegStopped = 212,   // %1 axis
+    LiftPointMissed = 213,    // %1 the counters, %2 the lift point
+    // The job (3xx)
+    ProbeAlreadyTripped = 300,   // %1 line
+    ProbeNotTripped = 301,       // %1 line
+    ProbeTrippedElsewhere = 302, // %1 line, %2 the counters
+    CountersMatchNothing = 303,  //
+    CountersMatchSeveral = 304,  //
+    ReturnFailed = 305,          // %1 attempts
+    OffPath = 306,               // %1 what the counters read, %2 the line it returns to
+    // Why a job is held (4xx)
+    HoldPaused = 400,          //
+    HoldProgramStop = 401,     // %1 line (M0)
+    HoldOptionalStop = 402,    // %1 line (M1)
+    HoldToolChange = 403,      // %1 line, %2 tool (M6)
+    HoldInterrupt = 404,       //
+    HoldInput = 405,           // %1 the inputs' names
+    HoldStopButton = 406,      // %1 the inputs' names (the STOP button among them)
+    HoldToolLifted = 407,      //
+    HoldToolLowered = 408,     //
+    HoldReturning = 409,       //
+    HoldLinkRestored = 410,    //
+    HoldSpindleStarting = 411, //
+    HoldToolLowering = 412,    //
+};
+
+// A code with its arguments: a hold reason, a refusal, an error.
+struct DriverMessage
+{
+    DriverMessage() = default;
+    DriverMessage(DriverCode c, std::vector<std::string> a = {})
+        : code(c)
+        , args(std::move(a))
+    {}
+    DriverCode code = DriverCode::None;
+    std::vector<std::string> args;
+    bool empty() const { return code == DriverCode::None; }
+    friend bool operator==(const DriverMessage &, const DriverMessage &) = default;
+};
+
+// Stable identifier of a code ("HoldToolChange"), for logs and tests.
+const char *driverCodeName(DriverCode code);
+// English template (%1 ... for the arguments) and the hint on what to do.
+const char *driverTemplate(DriverCode code);
+const char *driverHint(DriverCode code);
+// Every code of the table, in order (tests walk it).
+std::vector<DriverCode> allDriverCodes();
+// The English text, arguments filled in; "text. hint" when withHint (MachineError::message),
+// the text alone otherwise (holdText).
+std::string englishText(const DriverMessage &message, bool withHint = false);
+// The text in the user's language (QCoreApplication::translate, context "frezka::driver"),
+// arguments filled in and translated where they are fixed phrases; with the hint after it when
+// withHint.
+QString translatedText(const DriverMessage &message, bool withHint = false);
+// A fixed driver phrase (an action, a reply, a mode name) in the user's language; anything the
+// catalogue does not know comes back unchanged.
+QString translatedPhrase(const std::string &phrase);
+
+// Numbers for arguments: no trailing zeros ("10", "12.5").
+std::string numberText(double value);
+
+} // namespace frezka::driver

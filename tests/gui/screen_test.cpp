@@ -1,0 +1,498 @@
+// What the screen says (issue 14 item 6, issue 13 item 4), on the whole main window against the
+// built-in emulator in real time (offscreen, software view): the current line, progress and cut
+// drawing follow the unit through a pause, a tool lift and a resume; M6 and M0 are named with
+// their line, tool and comment; a console line leaves the loaded program's display alone; the
+// status bar names the connection and a port set with Apply is connected; a hold banner and a
+// driver error are Czech in the Czech interface; the EEPROM dialog asks before it writes.
+// Never sleeps on a guess: every wait is on the machine's own state.
+#include "gui/consolewidget.h"
+#include "gui/holdbanner.h"
+#include "gui/mainwindow.h"
+#include "gui/programlisting.h"
+#include "gui/programsession.h"
+#include "gui/runpanel.h"
+#include "gui/settingsdialog.h"
+#include "gui/speedplot.h"
+#include "gui/toolpathview.h"
+#include "gui/toolpathviewmodel.h"
+#include "gui/unitconfigdialog.h"
+
+#include "driver/link/machinecontroller.h"
+
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScopeGuard>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace frezka;
+using namespace frezka::gui;
+using driver::MachineMode;
+
+namespace {
+constexpr int kMachineTimeoutMs = 60000;
+}
+
+class ScreenTest : public QObject
+{
+    Q_OBJECT
+
+private:
+    const driver::MachineState &state() const { return m_window->controller()->state(); }
+
+    QString writeProgram(const QString &name, const QByteArray &text)
+    {
+        const QString path = m_dir.filePath(name);
+        QFile f(path);
+        if (!f.open(QIODevice::WriteOnly))
+            return {};
+        f.write(text);
+        return path;
+    }
+
+    bool load(const QString &path)
+    {
+        QSignalSpy loaded(m_window->program(), &ProgramSession::loaded);
+        m_window->openProgram(path);
+        return loaded.wait(20000) && m_window->program()->program().runnable();
+    }
+
+    QPushButton *button(QWidget *parent, const char *name)
+    {
+        return parent->findChild<QPushButton *>(QLatin1String(name));
+    }
+
+    int progress() const
+    {
+        return m_window->runPanel()
+            ->findChild<QProgressBar *>(QStringLiteral("runProgress"))
+            ->value();
+    }
+
+    QString statusLine() const
+    {
+        return m_window->findChild<QLabel *>(QStringLiteral("machineStatus"))->text();
+    }
+
+    QString connectionText() const
+    {
+        return m_window->findChild<QLabel *>(QStringLiteral("connectionStatus"))->text();
+    }
+
+    bool waitIdle()
+    {
+        return QTest::qWaitFor([&] { return state().mode == MachineMode::Idle; },
+                               kMachineTimeoutMs);
+    }
+
+    // Line k (3 .. 42) of the stepped program cuts X from 2(k-3) to 2(k-2) mm past its start.
+    static QByteArray steppedProgram()
+    {
+        QByteArray p = "G21 G91\nG1 Z-1 F600\n";
+        for (int k = 3; k <= 42; ++k)
+            p += "G1 X2\n";
+        p += "G1 Z1\nM30\n";
+        return p;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY(m_dir.isValid());
+        QSettings::setDefaultFormat(QSettings::IniFormat);
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
+        QCoreApplication::setOrganizationName(QStringLiteral("FrezkaScreenTest"));
+        machine::MachineConfig profile = machine::defaultMachineConfig(protocol::Variant::Gve64);
+        profile.link.port = "emulator";
+        // The screen is under test, not homing: runs start on the unhomed emulator (warned).
+        profile.motion.runBeforeHoming = true;
+        const QString profilePath = m_dir.filePath(QStringLiteral("machine.json"));
+        QVERIFY(!machine::saveMachineConfig(profile, profilePath.toStdString()));
+        QSettings().setValue(QStringLiteral("lastProfile"), profilePath);
+        QSettings().setValue(QStringLiteral("language"), QStringLiteral("en"));
+        MainWindowOptions options;
+        options.view = MainWindowOptions::View::Software;
+        options.restoreLayout = false;
+        m_window = std::make_unique<MainWindow>(options);
+        m_window->show();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Idle, 20000);
+    }
+
+    // The status bar names the built-in emulator; a port set with Apply is connected at once
+    // (and named), and the built-in emulator again when it is chosen again.
+    void statusBarNamesTheConnection()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY2(connectionText().contains(QStringLiteral("built-in emulator")),
+                 qPrintable(connectionText()));
+        QVERIFY2(connectionText().contains(QStringLiteral("Ready")), qPrintable(connectionText()));
+        machine::MachineConfig port = m_window->profile();
+        port.link.port = "/nonexistent/ttyFREZKA";
+        m_window->applyProfile(port, m_window->profilePath());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            connectionText().contains(QStringLiteral("/nonexistent/ttyFREZKA")), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Disconnected, 10000);
+        QCOMPARE(QSettings().value(QStringLiteral("link/port")).toString(),
+                 QStringLiteral("/nonexistent/ttyFREZKA"));
+        machine::MachineConfig emulator = m_window->profile();
+        emulator.link.port = "emulator";
+        m_window->applyProfile(emulator, m_window->profilePath());
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Idle, 20000);
+        QTRY_VERIFY(connectionText().contains(QStringLiteral("built-in emulator")));
+    }
+
+    // Pause, lift, lower and continue: the line shown is never ahead of the line the unit's
+    // counters say is being cut, the progress never runs ahead of the cut drawing's line, and
+    // neither shows 100 % before the end.
+    void lineAndProgressFollowTheUnitThroughAHold()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(load(writeProgram(QStringLiteral("stepped.nc"), steppedProgram())));
+        const double x0 = state().positionMm[0];
+        int worstAhead = 0;
+        QString worst;
+        auto check = [&] {
+            const auto &s = state();
+            if (!s.jobActive || s.mode == MachineMode::Stopping)
+                return;
+            // The line whose X range holds the unit's X (lines 1-2 are the plunge).
+            const double x = s.positionMm[0] - x0;
+            if (x >= 80 - 1e-6)
+                return; // the cut is done: the unit stands at its end, on the program's last lines
+            const int cutting = x <= 0 ? 2 : std::min(42, 3 + int(std::floor((x - 1e-6) / 2)));
+            const int shown = m_window->listing()->currentLine();
+            if (shown - cutting > worstAhead) {
+                worstAhead = shown - cutting;
+                worst = QStringLiteral("shown %1 cutting %2 (x %3, mode %4, progress %5)")
+                            .arg(shown)
+                            .arg(cutting)
+                            .arg(x)
+                            .arg(driver::machineModeName(s.mode))
+                            .arg(progress());
+            }
+            // The cut drawing: nothing beyond the line after the one being cut is drawn as cut.
+            const auto cut = m_window->toolpathView()->model()->cutEntry();
+            const auto limit =
+                m_window->program()->program().entryOfLine(std::uint32_t(cutting + 1));
+            if (cut != ToolpathViewModel::kNoneCut && cut > limit)
+                worst += QStringLiteral(" | cut to entry %1 while cutting line %2 (entry %3)")
+                             .arg(cut)
+                             .arg(cutting)
+                             .arg(limit);
+            if (x < 78 && progress() >= 1000)
+                worst +=
+                    QStringLiteral(" | 100 % at x %1, ").arg(x) + driver::machineModeName(s.mode);
+        };
+        auto conn = connect(m_window->controller(), &driver::MachineController::stateChanged, this,
+                            check, Qt::QueuedConnection);
+        const auto stopChecking = qScopeGuard([&] { disconnect(conn); });
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QTRY_VERIFY_WITH_TIMEOUT(state().positionMm[0] - x0 > 12, kMachineTimeoutMs);
+        button(m_window->runPanel(), "pause")->click();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Paused, kMachineTimeoutMs);
+        const int lineAtPause = m_window->listing()->currentLine();
+        const int progressAtPause = progress();
+        QVERIFY2(
+            m_window->holdBanner()->text().contains(QStringLiteral("line %1").arg(lineAtPause)),
+            qPrintable(m_window->holdBanner()->text()));
+        QCOMPARE(statusLine(), QStringLiteral("Line %1").arg(lineAtPause));
+        button(m_window->holdBanner(), "holdLift")->click();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::ToolLifted, kMachineTimeoutMs);
+        QTest::qWait(400); // several polls of the lifted position
+        QCOMPARE(m_window->listing()->currentLine(), lineAtPause);
+        QCOMPARE(progress(), progressAtPause);
+        button(m_window->holdBanner(), "holdLowerContinue")->click();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Running, kMachineTimeoutMs);
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        disconnect(conn);
+        QVERIFY2(worstAhead <= 1 && !worst.contains(QLatin1String("100 %")) &&
+                     !worst.contains(QLatin1String("cut to entry")),
+                 qPrintable(worst));
+        QCOMPARE(progress(), 1000);
+        QVERIFY(waitIdle());
+    }
+
+    // T1 M6 holds as a tool change naming tool 1 at its own line; M0 with a comment names its
+    // line and shows the comment; banner title, body, listing and status bar agree.
+    void operatorStopsAreNamedWithLineToolAndComment()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(load(writeProgram(QStringLiteral("stops.nc"), "G21 G91\n"
+                                                              "G1 Z-1 F600\n"
+                                                              "G1 X2\n"
+                                                              "G1 Y2\n"
+                                                              "T1 M6\n"
+                                                              "G1 X2\n"
+                                                              "G1 Y-2\n"
+                                                              "G1 X-2\n"
+                                                              "M0 (check the slot depth)\n"
+                                                              "G1 X-2 Z1\n"
+                                                              "M30\n")));
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Paused &&
+                                     state().hold == driver::HoldReason::OperatorStop,
+                                 kMachineTimeoutMs);
+        QTRY_COMPARE(m_window->holdBanner()->kind(), HoldBanner::Kind::OperatorStop);
+        QString text = m_window->holdBanner()->text();
+        QVERIFY2(text.contains(QStringLiteral("M6")) && text.contains(QStringLiteral("tool 1")) &&
+                     !text.contains(QStringLiteral("M0")),
+                 qPrintable(text));
+        QVERIFY2(text.count(QStringLiteral("line 5")) >= 2, qPrintable(text)); // title and body
+        QCOMPARE(m_window->listing()->currentLine(), 5);
+        QCOMPARE(statusLine(), QStringLiteral("Line 5"));
+        button(m_window->holdBanner(), "holdContinue")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Paused &&
+                                     state().hold == driver::HoldReason::OperatorStop &&
+                                     state().holdLine == 9,
+                                 kMachineTimeoutMs);
+        QTRY_VERIFY(
+            m_window->holdBanner()->text().contains(QStringLiteral("check the slot depth")));
+        text = m_window->holdBanner()->text();
+        QVERIFY2(text.contains(QStringLiteral("M0")) && !text.contains(QStringLiteral("line 5")),
+                 qPrintable(text));
+        QVERIFY2(text.count(QStringLiteral("line 9")) >= 2, qPrintable(text));
+        QCOMPARE(m_window->listing()->currentLine(), 9);
+        QCOMPARE(statusLine(), QStringLiteral("Line 9"));
+        button(m_window->holdBanner(), "holdContinue")->click();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QVERIFY(waitIdle());
+    }
+
+    // A console line runs as its own small job: the unit moves, the loaded program's listing,
+    // progress, cut drawing and status stay as they were.
+    void consoleLineLeavesTheProgramAlone()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(load(writeProgram(QStringLiteral("square.nc"),
+                                  "G21 G91\nG1 X3 F600\nG1 Y3\nG1 X-3\nG1 Y-3\nM30\n")));
+        const int line = m_window->listing()->currentLine();
+        const int progressBefore = progress();
+        const auto cut = m_window->toolpathView()->model()->cutEntry();
+        const QString eta =
+            m_window->runPanel()->findChild<QLabel *>(QStringLiteral("eta"))->text();
+        const double x0 = state().positionMm[0];
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->executeManualLine(QStringLiteral("G91 G1 X1.5 F600"));
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY(waitIdle());
+        QVERIFY(std::abs(state().positionMm[0] - (x0 + 1.5)) < 1e-3); // the unit moved
+        QCOMPARE(m_window->listing()->currentLine(), line);
+        QCOMPARE(progress(), progressBefore);
+        QCOMPARE(m_window->toolpathView()->model()->cutEntry(), cut);
+        QCOMPARE(m_window->runPanel()->findChild<QLabel *>(QStringLiteral("eta"))->text(), eta);
+        QVERIFY(!m_window->statusBar()->currentMessage().contains(QStringLiteral("finished")));
+        m_window->executeManualLine(QStringLiteral("G90"));
+    }
+
+    // The actual-speed plot never shows a speed the machine cannot reach.
+    void actualSpeedStaysWithinTheMachine()
+    {
+        const auto &axes = m_window->profile().axes;
+        double reach = 0;
+        for (int a = 0; a < 3; ++a)
+            reach += axes[std::size_t(a)].maxSpeedMmPerMin * axes[std::size_t(a)].maxSpeedMmPerMin;
+        reach = std::sqrt(reach);
+        QVERIFY(waitIdle());
+        QVERIFY(load(writeProgram(QStringLiteral("fast.nc"),
+                                  "G21 G91\nG1 X20 Y20 F6000\nG1 X-20 Y-20\nM30\n")));
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY(m_window->speedPlot()->actual().size() > 10);
+        for (const SpeedSample &s : m_window->speedPlot()->actual())
+            QVERIFY2(s.speedMmPerMin <= reach + 1e-6, qPrintable(QString::number(s.speedMmPerMin)));
+    }
+
+    // The EEPROM dialog asks before "Write differences" writes: nothing goes to the unit until
+    // the operator says yes; Cancel writes nothing.
+    void eepromWriteAsksFirst()
+    {
+        QVERIFY(waitIdle());
+        UnitConfigDialog *dlg = m_window->openUnitConfig();
+        QSignalSpy finished(dlg, &UnitConfigDialog::finished);
+        machine::MachineConfig changed = m_window->profile();
+        changed.axes[1].stepsPerMm = 250;
+        dlg->setProfile(changed);
+        dlg->readUnit();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY(dlg->differences() >= 1);
+        auto writes = [&] {
+            int n = 0;
+            for (const LogEntry &e : m_window->console()->entries())
+                n += e.direction == LogDirection::Sent &&
+                             (e.bytes.contains("EW") || e.bytes.contains("EFW") ||
+                              e.bytes.contains("EUW"))
+                         ? 1
+                         : 0;
+            return n;
+        };
+        const int before = writes();
+        button(dlg, "eepromWriteDifferences")->click();
+        auto *ask = dlg->findChild<QMessageBox *>(QStringLiteral("confirmEepromWrite"));
+        QVERIFY(ask);
+        QTRY_VERIFY(ask->isVisible());
+        QTest::qWait(300);
+        QCOMPARE(writes(), before); // nothing written while the question is open
+        QVERIFY(!dlg->isBusy());
+        ask->button(QMessageBox::Cancel)->click();
+        QTest::qWait(300);
+        QCOMPARE(writes(), before);
+        QVERIFY(dlg->differences() >= 1);
+        button(dlg, "eepromWriteDifferences")->click();
+        ask = dlg->findChild<QMessageBox *>(QStringLiteral("confirmEepromWrite"));
+        QVERIFY(ask);
+        ask->button(QMessageBox::Yes)->click();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY2(finished.last().at(0).toBool(), qPrintable(dlg->statusText()));
+        QCOMPARE(dlg->differences(), 0);
+        QTRY_VERIFY(writes() > before);
+        // Back to the profile's values for the tests after this one.
+        dlg->setProfile(m_window->profile());
+        dlg->readUnit();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        dlg->writeUnit(false);
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        dlg->close();
+    }
+
+    // In the Czech interface (chosen in the settings, as the operator does) an M0 banner and a
+    // driver's refusal are Czech, with no English words of the driver left in them.
+    void czechHoldBannerAndDriverError()
+    {
+        QVERIFY(waitIdle());
+        SettingsDialog *settings = m_window->openSettings();
+        settings->chooseLanguage(QStringLiteral("cs"));
+        settings->close();
+        QTRY_COMPARE(button(m_window->runPanel(), "run")->text(), QStringLiteral("Spustit"));
+        QTRY_VERIFY(connectionText().contains(QStringLiteral("vestavěný emulátor")));
+        QVERIFY(load(writeProgram(QStringLiteral("m0.nc"),
+                                  "G21 G91\nG1 X1 F600\nM0 (zkontroluj hloubku)\nG1 X-1\nM30\n")));
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        const std::size_t logFrom = m_window->console()->entries().size();
+        m_window->runProgram();
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Paused &&
+                                     state().hold == driver::HoldReason::OperatorStop,
+                                 kMachineTimeoutMs);
+        QTRY_COMPARE(m_window->holdBanner()->kind(), HoldBanner::Kind::OperatorStop);
+        // The machine's state changes in the console are Czech too.
+        int czechStates = 0;
+        const auto &log = m_window->console()->entries();
+        for (std::size_t i = logFrom; i < log.size(); ++i) {
+            const QString e = QString::fromUtf8(log[i].bytes);
+            QVERIFY2(!e.startsWith(QLatin1String("mode: ")), qPrintable(e));
+            czechStates += e.startsWith(QStringLiteral("Stav: Připraven → Obrábění")) ? 1 : 0;
+        }
+        QCOMPARE(czechStates, 1);
+        const QString banner = m_window->holdBanner()->text();
+        QVERIFY2(banner.contains(QStringLiteral("Programový stop (M0) na řádku 3")),
+                 qPrintable(banner));
+        QVERIFY2(banner.contains(QStringLiteral("zkontroluj hloubku")), qPrintable(banner));
+        for (const char *english : {"Program stop", "line", "Continue"})
+            QVERIFY2(!banner.contains(QLatin1String(english)), qPrintable(banner));
+        // A refusal of the driver: lowering a tool that is not lifted.
+        QSignalSpy errors(m_window.get(), &MainWindow::errorShown);
+        m_window->controller()->toolLower(0);
+        QVERIFY(errors.wait(10000));
+        const QString error = m_window->lastError();
+        QVERIFY2(error.contains(QStringLiteral("Spouštění nástroje")) &&
+                     error.contains(QStringLiteral("nyní není možné")) &&
+                     error.contains(QStringLiteral("Pozastaveno")),
+                 qPrintable(error));
+        for (const char *english : {"Lowering", "not possible", "Paused", "machine is"})
+            QVERIFY2(!error.contains(QLatin1String(english)), qPrintable(error));
+        button(m_window->holdBanner(), "holdContinue")->click();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        SettingsDialog *back = m_window->openSettings();
+        back->chooseLanguage(QStringLiteral("en"));
+        back->close();
+        QTRY_COMPARE(button(m_window->runPanel(), "run")->text(), QStringLiteral("Run"));
+    }
+
+    // A multi-line error is shown on console lines, not with a literal "\n"; a good file clears
+    // the previous file's error; after an abort no progress is left shown.
+    void staleErrorsAndProgressAreCleared()
+    {
+        QVERIFY(waitIdle());
+        QSignalSpy loaded(m_window->program(), &ProgramSession::loaded);
+        m_window->openProgram(writeProgram(QStringLiteral("bad.nc"), "G21\nG1 X1 Q\nM30\n"));
+        QVERIFY(loaded.wait(20000));
+        QVERIFY(!m_window->lastError().isEmpty());
+        QVERIFY(m_window->lastError().contains(QLatin1Char('\n')));
+        const auto &log = m_window->console()->entries();
+        const auto shown = std::find_if(log.rbegin(), log.rend(), [](const LogEntry &e) {
+            return e.direction == LogDirection::Error;
+        });
+        QVERIFY(shown != log.rend());
+        QVERIFY(shown->bytes.contains('\n'));
+        const QString text = m_window->console()->formatEntry(*shown);
+        QVERIFY2(!text.contains(QLatin1String("\\n")), qPrintable(text));
+        QVERIFY(text.contains(QLatin1Char('\n')));
+        QVERIFY(load(writeProgram(QStringLiteral("stepped.nc"), steppedProgram())));
+        QVERIFY2(m_window->lastError().isEmpty(), qPrintable(m_window->lastError()));
+        QVERIFY(m_window->statusBar()->currentMessage().isEmpty());
+        const double x0 = state().positionMm[0];
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QTRY_VERIFY_WITH_TIMEOUT(state().positionMm[0] - x0 > 8, kMachineTimeoutMs);
+        QVERIFY(progress() > 0);
+        button(m_window->runPanel(), "abort")->click();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QCOMPARE(finished.at(0).at(0).toBool(), false);
+        QVERIFY(waitIdle());
+        QCOMPARE(progress(), 0);
+        QCOMPARE(statusLine(), QString());
+        m_window->executeManualLine(QStringLiteral("G91 G1 Z1 F600")); // the stepped plunge back
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Idle && !state().jobActive,
+                                 kMachineTimeoutMs);
+        m_window->executeManualLine(QStringLiteral("G90"));
+    }
+
+    // After a restart the port used last is used again (and the console says so), even when
+    // it was only applied, never saved in the profile.
+    void lastPortIsUsedAfterARestart()
+    {
+        QSettings().setValue(QStringLiteral("link/port"), QStringLiteral("/nonexistent/ttyLAST"));
+        m_window.reset();
+        MainWindowOptions options;
+        options.view = MainWindowOptions::View::Software;
+        options.restoreLayout = false;
+        m_window = std::make_unique<MainWindow>(options);
+        m_window->show();
+        QTRY_VERIFY_WITH_TIMEOUT(connectionText().contains(QStringLiteral("/nonexistent/ttyLAST")),
+                                 10000);
+        bool told = false;
+        for (const LogEntry &e : m_window->console()->entries())
+            told = told || QString::fromUtf8(e.bytes).contains(QStringLiteral("port used last"));
+        QVERIFY(told);
+        QCOMPARE(m_window->profile().link.port, std::string("emulator")); // the profile as saved
+    }
+
+    void cleanup()
+    {
+        if (state().mode != MachineMode::Idle && state().mode != MachineMode::Disconnected) {
+            m_window->controller()->abort();
+            waitIdle();
+        }
+    }
+
+    void cleanupTestCase() { m_window.reset(); }
+
+private:
+    QTemporaryDir m_dir;
+    std::unique_ptr<MainWindow> m_window;
+};
+
+QTEST_MAIN(ScreenTest)
+#include "screen_test.moc"
