@@ -114,6 +114,37 @@ TEST(RunWorkflowStops, StopIsAControlledHaltAndTheJobResumesToItsExactEnd)
     EXPECT_EQ(b.link.port().unit().stats().motion.brakeViolations, 0);
 }
 
+// Stop with the spindle turning: H, then !7V0 once the machine stands (the unit's spindle off
+// while held); resume switches it on again before G, and the job ends exactly.
+TEST(RunWorkflowStops, StopSwitchesTheSpindleOffAndResumeBackOnBeforeMotion)
+{
+    Bench b(gve64());
+    ASSERT_TRUE(b.connect());
+    ASSERT_TRUE(b.home());
+    const auto plan =
+        planOf("G21 G90\nM3 S12000\nG1 Z-10 F600\nG1 X60 F300\nG1 Y20\nM5\nM2\n", b.config);
+    b.workflow.setProgram(plan, {}, QStringLiteral("spindle.nc"));
+    b.workflow.runProgram();
+    ASSERT_TRUE(b.until(MachineMode::Running));
+    b.link.runFor(6);
+    ASSERT_GT(b.link.port().unit().spindlePermille(), 0) << "the program's M3 runs the spindle";
+    const auto from = b.wire.size();
+    b.workflow.stop();
+    ASSERT_TRUE(b.until(MachineMode::Paused));
+    b.link.runFor(1);
+    EXPECT_EQ(b.wire.matching("!0H", from).size(), 1u);
+    EXPECT_EQ(b.wire.matching("!7V0", from).size(), 1u) << "Stop switches the spindle off";
+    EXPECT_EQ(b.link.port().unit().spindlePermille(), 0);
+    const auto resumed = b.wire.size();
+    b.workflow.resume();
+    ASSERT_TRUE(b.link.runUntil([&] { return !b.jobs.empty(); }, 600));
+    EXPECT_TRUE(b.jobs.front());
+    const auto on = b.wire.matching("!7V", resumed);
+    ASSERT_FALSE(on.empty()) << "resume switches the spindle on again";
+    EXPECT_NE(on.front(), "!7V0");
+    b.expectExactEnd(*plan);
+}
+
 TEST(RunWorkflowStops, AbortDropsTheQueue)
 {
     Bench b(gve64());
