@@ -16,20 +16,10 @@ namespace {
 // position of the later ones lies inside the first one's box.
 machine::UnitProgram backAndForth(int shortVectors)
 {
-    using machine::UnitCommand;
     using machine::UnitOp;
-    machine::UnitProgram p;
-    p.axisCount = 3;
-    machine::Steps4 at = p.startSteps;
-    auto add = [&](UnitOp op, std::int64_t value, std::array<std::int32_t, 4> d = {}) {
-        UnitCommand c;
-        c.op = op;
-        c.value = value;
-        c.d = d;
-        for (int a = 0; a < 4; ++a)
-            at[a] += d[a];
-        c.endSteps = at;
-        p.commands.push_back(c);
+    ProgramBuilder b(3);
+    auto add = [&b](UnitOp op, std::int64_t value, std::array<std::int32_t, 4> d = {}) {
+        b.add(op, value, d);
     };
     add(UnitOp::Accel, 200);
     add(UnitOp::Speed, 4000);
@@ -38,7 +28,7 @@ machine::UnitProgram backAndForth(int shortVectors)
     for (int i = 0; i < shortVectors; ++i)
         add(UnitOp::Vector, 0, {i % 2 ? 40 : -40, 0, 0, 0});
     add(UnitOp::ProgramEnd, 0);
-    return p;
+    return b.program;
 }
 
 } // namespace

@@ -90,18 +90,18 @@ struct Sim
     std::vector<bool> finished;
 };
 
-// A dense program: `n` short continuous vectors tracing a zig-zag, preceded by speed settings.
-inline machine::UnitProgram denseProgram(int n, int axisCount = 3, int speed = 20000,
-                                         int brake = 20000, int stepLen = 60)
+// Builds a unit program command by command; each command's endSteps follow from its delta.
+struct ProgramBuilder
 {
-    using machine::UnitCommand;
-    using machine::UnitOp;
-    machine::UnitProgram p;
-    p.axisCount = axisCount;
-    machine::Steps4 at = p.startSteps;
-    auto add = [&](UnitOp op, std::int64_t value, std::array<std::int32_t, 4> d = {},
-                   std::uint32_t line = 0) {
-        UnitCommand c;
+    explicit ProgramBuilder(int axisCount)
+    {
+        program.axisCount = axisCount;
+        at = program.startSteps;
+    }
+    void add(machine::UnitOp op, std::int64_t value, std::array<std::int32_t, 4> d = {},
+             std::uint32_t line = 0)
+    {
+        machine::UnitCommand c;
         c.op = op;
         c.value = value;
         c.d = d;
@@ -109,8 +109,20 @@ inline machine::UnitProgram denseProgram(int n, int axisCount = 3, int speed = 2
             at[a] += d[a];
         c.endSteps = at;
         c.sourceLine = line;
-        p.commands.push_back(c);
-    };
+        program.commands.push_back(c);
+    }
+    machine::UnitProgram program;
+    machine::Steps4 at{};
+};
+
+// A dense program: `n` short continuous vectors tracing a zig-zag, preceded by speed settings.
+inline machine::UnitProgram denseProgram(int n, int axisCount = 3, int speed = 20000,
+                                         int brake = 20000, int stepLen = 60)
+{
+    using machine::UnitOp;
+    ProgramBuilder b(axisCount);
+    auto add = [&b](UnitOp op, std::int64_t value, std::array<std::int32_t, 4> d = {},
+                    std::uint32_t line = 0) { b.add(op, value, d, line); };
     add(UnitOp::Accel, 200);
     add(UnitOp::Speed, speed);
     add(UnitOp::Brake, brake);
@@ -119,7 +131,7 @@ inline machine::UnitProgram denseProgram(int n, int axisCount = 3, int speed = 2
         add(UnitOp::Vector, 0, {stepLen, dy, (i % 5) - 2, 0}, static_cast<std::uint32_t>(10 + i));
     }
     add(UnitOp::ProgramEnd, 0);
-    return p;
+    return b.program;
 }
 
 // A slow job (long vectors) so that there is time to pause it.
