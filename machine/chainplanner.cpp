@@ -161,6 +161,7 @@ private:
         if (!m_options.wireLimited || m_config.link.baud <= 0)
             return;
         const std::size_t n = m_d.size();
+        std::vector<bool> lowered(n, false); // V itself lowered to keep the pace
         // Prefix sums of the B, V and A commands' link time for their averages.
         std::vector<double> extraPrefix(n + 1, 0.0);
         for (std::size_t k = 0; k < n; ++k)
@@ -184,9 +185,52 @@ private:
             const double room = fastest * fastest - static_cast<double>(r.accel) * 1000.0 * r.units;
             if (room >= static_cast<double>(kMinSpeed * kMinSpeed))
                 r.wireCap = std::floor(std::sqrt(room));
-            else
+            else {
                 r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(fastest)),
                                                    kMinSpeed, r.speed);
+                lowered[k] = true;
+            }
+        }
+        sharePacedSpeeds(lowered);
+    }
+
+    // Where the pace lowers V itself, each vector's own V differs from its neighbours' by a few
+    // units (its window's bytes differ a little), and every V is a round trip outside the
+    // packets: a slow plunge of two-step vectors sent a V before nearly every vector and the
+    // unit ran dry at each (property seed 29). A stretch of such vectors shares its least V
+    // while the time that costs stays below the V commands it saves. A lower V only lengthens
+    // a vector, so the pace holds; the vertex caps follow V (vertexCaps).
+    void sharePacedSpeeds(const std::vector<bool> &lowered)
+    {
+        const double penalty =
+            m_options.speedChangeCost * m_link.nonPacketS(m_link.speedWireBytes());
+        const std::size_t n = m_d.size();
+        std::size_t k = 0;
+        while (k < n) {
+            if (!lowered[k]) {
+                ++k;
+                continue;
+            }
+            std::size_t end = k + 1;
+            std::int64_t level = m_d[k].speed;
+            double units = m_d[k].units;
+            double owned = units / static_cast<double>(level);
+            for (; end < n && lowered[end]; ++end) {
+                const Derived &r = m_d[end];
+                const std::int64_t lower = std::min(level, r.speed);
+                const double loss = (units + r.units) / static_cast<double>(lower) -
+                                    (owned + r.units / static_cast<double>(r.speed));
+                if (loss > penalty * static_cast<double>(end - k))
+                    break;
+                level = lower;
+                units += r.units;
+                owned += r.units / static_cast<double>(r.speed);
+            }
+            for (; k < end; ++k) {
+                Derived &r = m_d[k];
+                r.speed = level;
+                r.vMm = std::min(r.vMm, static_cast<double>(level) / r.f); // the bound follows
+            }
         }
     }
 

@@ -25,6 +25,24 @@ private:
         return true;
     }
 
+    static QString describe(const MachineState &s)
+    {
+        QString text = QStringLiteral("mode %1 hold %2 (%3) acked %4/%5 progress %6")
+                           .arg(int(s.mode))
+                           .arg(int(s.hold))
+                           .arg(QString::fromStdString(s.holdText))
+                           .arg(s.commandsAcked)
+                           .arg(s.commandsTotal)
+                           .arg(s.progress);
+        if (s.lastError) {
+            text += QStringLiteral("; last error: %1 [%2 -> %3]")
+                        .arg(QString::fromStdString(s.lastError->message),
+                             QString::fromStdString(s.lastError->command),
+                             QString::fromStdString(s.lastError->reply));
+        }
+        return text;
+    }
+
     // Starts gve-emu with extra options; returns the pty path (empty on failure).
     QString startEmulator(QProcess &emu, const QStringList &extra)
     {
@@ -41,8 +59,19 @@ private:
     void runJob(MachineController &c, const machine::UnitProgram &p)
     {
         QSignalSpy finished(&c, &MachineController::jobFinished);
+        QSignalSpy errors(&c, &MachineController::errorOccurred);
         c.run(p);
-        QVERIFY(finished.wait(60000));
+        // A refused run (errorOccurred, no jobFinished) or a job that hangs: say what the
+        // controller was doing instead of only that the wait ran out.
+        const bool ended = finished.wait(60000);
+        if (!ended) {
+            qWarning().noquote() << describe(c.state());
+            for (const QList<QVariant> &e : errors) {
+                qWarning().noquote()
+                    << "error:" << QString::fromStdString(e.first().value<MachineError>().message);
+            }
+        }
+        QVERIFY(ended);
         QCOMPARE(finished.first().first().toBool(), true);
         QTRY_VERIFY_WITH_TIMEOUT(at(c.state(), p), 5000);
     }
