@@ -144,7 +144,7 @@ private:
         for (std::size_t k = 0; k < m_moves.size(); ++k)
             deriveOne(m_moves[k], m_d[k]);
         chooseSpeeds(m_d, m_options, m_link);
-        chooseAccels(m_d, m_options);
+        chooseAccels(m_d, m_options, m_link);
         m_derived = m_d;
     }
 

@@ -133,24 +133,38 @@ void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const Lin
 // vector's direction jitters with the step rounding: its cap is the least of its neighbours
 // within accelWindowSteps speed units. A long vector keeps its own cap: there the
 // acceleration matters and one A command costs the link nothing in comparison.
-void chooseAccels(std::vector<Derived> &d, const PlanOptions &options)
+// The time a stretch loses to a lower A is estimated as if each vector were all acceleration
+// (t ~ 1/sqrt(A)): vector j, t_j long at its cap c_j, takes t_j sqrt(c_j / least) at the
+// stretch's least cap. The sums S = sum t_j sqrt(c_j) and T = sum t_j give the loss
+// S / sqrt(least) - T in one step as the stretch grows. An over-estimate: a vector that cruises
+// or brakes for part of its length loses less.
+void chooseAccels(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link)
 {
     const std::size_t n = d.size();
+    const double penalty = options.speedChangeCost * link.nonPacketS(link.speedWireBytes());
     std::vector<std::int64_t> caps(n);
     for (std::size_t k = 0; k < n; ++k)
         caps[k] = accelCap(d, k, options);
+    const auto timeOf = [&d](std::size_t j) {
+        return d[j].speed > 0 ? d[j].units / static_cast<double>(d[j].speed) : 0.0;
+    };
     std::size_t k = 0;
     while (k < n) {
         std::size_t end = k + 1;
         std::int64_t least = caps[k], most = caps[k];
+        double rootSum = timeOf(k) * std::sqrt(static_cast<double>(caps[k]));
+        double timeSum = timeOf(k);
         if (quick(d, k, options)) {
             while (end < n && quick(d, end, options)) {
                 const std::int64_t lo = std::min(least, caps[end]);
                 const std::int64_t hi = std::max(most, caps[end]);
-                if (static_cast<double>(lo) <
-                    static_cast<double>(hi) * (1 - options.accelTolerance))
+                const double s = rootSum + timeOf(end) * std::sqrt(static_cast<double>(caps[end]));
+                const double t = timeSum + timeOf(end);
+                const bool close = static_cast<double>(lo) >=
+                                   static_cast<double>(hi) * (1 - options.accelTolerance);
+                if (!close && !(s / std::sqrt(static_cast<double>(lo)) - t < penalty))
                     break;
-                least = lo, most = hi, ++end;
+                least = lo, most = hi, rootSum = s, timeSum = t, ++end;
             }
         }
         for (; k < end; ++k) {

@@ -12,8 +12,10 @@ namespace frezka::machine::detail {
 // Sets each vector's V (Derived::speed) and, where it shares a V above its own cap, the B cap
 // that keeps it within its own (Derived::speedCap). Without a link (baud 0) each keeps its own.
 void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link);
-// Sets each vector's A (Derived::accel) and its braking room (Derived::twoAU).
-void chooseAccels(std::vector<Derived> &d, const PlanOptions &options);
+// Sets each vector's A (Derived::accel) and its braking room (Derived::twoAU). Quick vectors
+// share one A while their caps lie within PlanOptions::accelTolerance, or while the time the
+// lower A costs them stays below what an A command costs the link.
+void chooseAccels(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link);
 // The A cap of vector k, thousands of pulses/s².
 std::int64_t accelCap(const std::vector<Derived> &d, std::size_t k, const PlanOptions &options);
 // True when vector k passes in under PlanOptions::accelKeepS at its V.
