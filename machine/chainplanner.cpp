@@ -197,9 +197,11 @@ private:
     // Where the pace lowers V itself, each vector's own V differs from its neighbours' by a few
     // units (its window's bytes differ a little), and every V is a round trip outside the
     // packets: a slow plunge of two-step vectors sent a V before nearly every vector and the
-    // unit ran dry at each (property seed 29). A stretch of such vectors shares its least V
-    // while the time that costs stays below the V commands it saves. A lower V only lengthens
-    // a vector, so the pace holds; the vertex caps follow V (vertexCaps).
+    // unit ran dry at each (property seed 29). A stretch from such a vector shares its least V
+    // while the time that costs stays below the V commands it saves; vectors the pace did not
+    // lower join it on the same terms (a plunge that alternates one- and two-step vectors
+    // lowers only every other V), but the stretch ends at its last lowered vector. A lower V
+    // only lengthens a vector, so the pace holds; the vertex caps follow V (vertexCaps).
     void sharePacedSpeeds(const std::vector<bool> &lowered)
     {
         const double penalty =
@@ -211,22 +213,28 @@ private:
                 ++k;
                 continue;
             }
-            std::size_t end = k + 1;
             std::int64_t level = m_d[k].speed;
             double units = m_d[k].units;
             double owned = units / static_cast<double>(level);
-            for (; end < n && lowered[end]; ++end) {
-                const Derived &r = m_d[end];
+            std::size_t changes = 0;     // V commands the stretch saves
+            std::size_t lastLowered = k; // its last vector the pace lowered
+            for (std::size_t j = k + 1; j < n; ++j) {
+                const Derived &r = m_d[j];
                 const std::int64_t lower = std::min(level, r.speed);
-                const double loss = (units + r.units) / static_cast<double>(lower) -
-                                    (owned + r.units / static_cast<double>(r.speed));
-                if (loss > penalty * static_cast<double>(end - k))
+                changes += r.speed != m_d[j - 1].speed ? 1 : 0;
+                const double own = r.units / static_cast<double>(r.speed);
+                const double loss = (units + r.units) / static_cast<double>(lower) - (owned + own);
+                if (loss > penalty * static_cast<double>(changes))
                     break;
                 level = lower;
                 units += r.units;
-                owned += r.units / static_cast<double>(r.speed);
+                owned += own;
+                lastLowered = lowered[j] ? j : lastLowered;
             }
-            for (; k < end; ++k) {
+            level = m_d[k].speed;
+            for (std::size_t j = k + 1; j <= lastLowered; ++j)
+                level = std::min(level, m_d[j].speed);
+            for (; k <= lastLowered; ++k) {
                 Derived &r = m_d[k];
                 r.speed = level;
                 r.vMm = std::min(r.vMm, static_cast<double>(level) / r.f); // the bound follows
