@@ -55,15 +55,18 @@ void Poller::start(double now)
     const Command pos = m_host.positionCommand();
     // While streaming, every reply carries INTA (interrupts) and packet replies carry queue
     // full: F and the inputs are read less often there, to leave the wire to the job.
-    // Where the stream is wire-bound, the position alone, F and the inputs every 8th time.
+    // Where the stream is wire-bound or the unit holds little, the position alone, F every 8th
+    // time and the inputs at another (a poll of position, F and inputs is three or four round
+    // trips, longer than a GVE84's short queue lasts on a dense raster: two stops there).
     const bool stream = m_job.streaming(m_host.now());
     const bool lean = stream && (m_job.pace().wireBoundAhead() ||
                                  m_job.pace().bufferedS() < std::max(0.25, 10 * m_rttS));
     const bool flags = !stream || m_pollCount % (lean ? 8 : 4) == (lean ? 7 : 0);
+    const bool inputsTurn = !lean || m_pollCount % 8 == 3;
     ++m_pollCount;
-    const bool inputs = (!lean || flags) &&
-                        now - m_lastInputsPoll >= (stream ? 4 * m_host.options().inputsPollIntervalS
-                                                          : m_host.options().inputsPollIntervalS);
+    const bool inputs =
+        inputsTurn && now - m_lastInputsPoll >= (stream ? 4 * m_host.options().inputsPollIntervalS
+                                                        : m_host.options().inputsPollIntervalS);
     if (inputs)
         m_lastInputsPoll = now;
     m_lastPollTransactions =
