@@ -136,3 +136,39 @@ TEST(StreamPace, APacedPlungeSharesOneSpeedAndNeverRunsDry)
     EXPECT_EQ(o.starvationStops, 0) << list(o.pace);
     EXPECT_EQ(o.brakeViolations, 0);
 }
+
+// A raster whose Z steps up and down in a sawtooth (a stair-stepped 3D finish): the A the axes
+// allow drifts with the slope at every vector, and quick vectors held their own A while the caps
+// differed by more than the tolerance, one A round trip every few vectors: 702 A commands and
+// 50 starvation stops at 8 ms. Now the lower A is shared while it costs less than the round
+// trips it saves.
+TEST(StreamPace, AStairRasterSharesOneAccelerationAndNeverRunsDry)
+{
+    RandomJob job;
+    job.config = frezka::machine::defaultMachineConfig(frezka::protocol::Variant::Gve64);
+    job.config.link.latencyMs = 8;
+    job.wire.baud = job.config.link.baud;
+    job.wire.latencyS = job.config.link.latencyMs / 1000.0;
+    std::string program = "G21 G90 G0 X0 Y0 Z-1\nG1 F2000\n";
+    char line[64];
+    for (int i = 1; i <= 2500; ++i) {
+        std::snprintf(line, sizeof line, "X%.2f Y%.2f Z%.3f\n", 0.04 * i, (i / 250) % 2 ? 0.5 : 0.0,
+                      -1 - 0.01 * (i % 7));
+        program += line;
+    }
+    program += "M2\n";
+    job.program = program;
+    const frezka::machine::PlanResult plan =
+        frezka::machine::plan(frezka::gcode::interpretText(job.program).toolpath, job.config);
+    ASSERT_TRUE(plan.errors.empty());
+    std::size_t accels = 0;
+    for (const frezka::machine::UnitCommand &c : plan.program.commands)
+        accels += c.op == frezka::machine::UnitOp::Accel ? 1 : 0;
+    EXPECT_LE(accels, 20u);
+    const JobOutcome o = runJob(job);
+    if (!o.ok())
+        dump(job);
+    EXPECT_TRUE(o.wrong.empty()) << list(o.wrong);
+    EXPECT_EQ(o.starvationStops, 0) << list(o.pace);
+    EXPECT_EQ(o.brakeViolations, 0);
+}
