@@ -69,6 +69,8 @@ public:
     // Wire time of a vector of `bytes` in a packet (or alone, with packets off), with its share
     // of the packet's round trip; seconds.
     double vectorWireS(double bytes) const;
+    // The vectors of a packet that costs one round trip, as the pace counts them.
+    double packetVectors() const;
     double roundTripS() const { return 2 * m_config.link.latencyMs / 1000.0 + kReplyS; }
     // A command sent on its own (A, V: they cannot travel in a packet): its bytes and a round trip.
     double nonPacketS(double bytes) const;
@@ -81,7 +83,8 @@ public:
     // A V command of the largest value the unit takes (its bytes barely depend on the value).
     double speedWireBytes() const;
 
-    static constexpr double kReplyS = 0.002; // a packet's reply and the unit's turnaround
+    static constexpr double kReplyS = 0.002;   // a packet's reply and the unit's turnaround
+    static constexpr double kShortQueue = 128; // see packetVectors
 
 private:
     const MachineConfig &m_config;
