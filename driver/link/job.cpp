@@ -142,7 +142,7 @@ void Job::sendPacket(double now)
     std::size_t end = m_cursor.next;
     const std::size_t shortEnd = m_pace.slowMotionPacketEnd();
     const bool keepShort = shortEnd > m_cursor.next;
-    const double held = m_pace.bufferedS();
+    const double held = m_pace.leadS(); // the packet must arrive before the last vector brakes
     const double budget = held - std::min(2 * m_host.rttS() + kDryReserveS, 0.5 * held);
     const bool paced = held > 0 && budget >= kMinPacedWireS && !m_pace.wireBoundAhead();
     while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {

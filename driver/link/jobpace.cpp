@@ -23,6 +23,16 @@ void JobPace::build()
     for (std::size_t i = 0; i < cmds.size(); ++i)
         m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(cmds[i].op) ? 1 : 0);
     estimateDurations();
+    // V and A are modal: each vector brakes from the last V at the last A (thousands of
+    // pulses/s²) when nothing follows it.
+    m_brakeS.assign(cmds.size() + 1, 0.0);
+    std::int64_t speed = 0, accel = 0;
+    for (std::size_t i = 0; i < cmds.size(); ++i) {
+        speed = cmds[i].op == UnitOp::Speed ? cmds[i].value : speed;
+        accel = cmds[i].op == UnitOp::Accel ? cmds[i].value : accel;
+        m_brakeS[i + 1] =
+            accel > 0 ? static_cast<double>(speed) / (1000.0 * static_cast<double>(accel)) : 0.0;
+    }
     m_bytePrefix.assign(cmds.size() + 1, 0);
     for (std::size_t i = 0; i < cmds.size(); ++i) {
         const machine::UnitCommand &c = cmds[i];
@@ -81,6 +91,17 @@ double JobPace::bufferedS() const
     const std::size_t from = std::min(m_cursor.exec, m_cursor.next);
     return std::max(0.0, m_timePrefix[m_cursor.next] - m_timePrefix[from] -
                              (m_host.now() - m_cursor.execAt));
+}
+
+double JobPace::leadS() const
+{
+    const double held = bufferedS();
+    const std::size_t last = m_cursor.next;
+    if (held <= 0 || last == 0 || last >= m_brakeS.size())
+        return held;
+    // The last queued vector brakes for at most its own time.
+    const double own = m_timePrefix[last] - m_timePrefix[last - 1];
+    return std::max(0.0, held - std::min(m_brakeS[last], own));
 }
 
 int JobPace::maxPacket() const

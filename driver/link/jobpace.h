@@ -54,6 +54,10 @@ public:
     std::size_t execEstimate() const;
     // Estimated motion still queued in the unit, s.
     double bufferedS() const;
+    // The time left before the unit must have its next vector: what it holds less the braking
+    // of its last vector, which brakes to rest when nothing follows it (a long rapid brakes for
+    // a sixth of a second: the plunge after it must be queued before that begins), s.
+    double leadS() const;
     // Vectors still queued in the unit `aheadS` seconds from now.
     std::int64_t queuedAfter(double aheadS) const;
     // The motion of the next queue-full runs faster than the wire can carry it.
@@ -73,6 +77,7 @@ private:
     std::vector<double> m_timePrefix;         // estimated motion seconds before each index
     std::vector<std::int64_t> m_bytePrefix;   // wire bytes of the program commands before each
     std::vector<std::int64_t> m_vectorPrefix; // motion commands before each program index
+    std::vector<double> m_brakeS;             // braking time from V to rest before each index
 };
 
 } // namespace frezka::driver

@@ -28,7 +28,7 @@ double Poller::nextTime() const
     // than the wire: the stream has time to spare, poll at the full rate. Otherwise every round
     // trip spent on polls is missing from the stream: keep them to wireBoundPollShare of the
     // link's time (the last poll's cost over that share), at least every maxPollGapS.
-    const double buffered = m_job.pace().bufferedS();
+    const double buffered = m_job.pace().leadS();
     if (!m_job.pace().wireBoundAhead() && buffered >= std::max(0.25, 10 * m_rttS))
         return m_lastPoll + m_host.options().pollIntervalS;
     const double cost = m_lastPollTransactions * m_rttS;
@@ -60,7 +60,7 @@ void Poller::start(double now)
     // trips, longer than a GVE84's short queue lasts on a dense raster: two stops there).
     const bool stream = m_job.streaming(m_host.now());
     const bool lean = stream && (m_job.pace().wireBoundAhead() ||
-                                 m_job.pace().bufferedS() < std::max(0.25, 10 * m_rttS));
+                                 m_job.pace().leadS() < std::max(0.25, 10 * m_rttS));
     const bool flags = !stream || m_pollCount % (lean ? 8 : 4) == (lean ? 7 : 0);
     const bool inputsTurn = !lean || m_pollCount % 8 == 3;
     ++m_pollCount;
