@@ -326,6 +326,9 @@ void judgePlan(const PlanResult &p, JobOutcome &o)
     if (s.estimatedS < s.boundS * (1 - 1e-9))
         slow(o, "estimate " + std::to_string(s.estimatedS) + " s below the bound " +
                     std::to_string(s.boundS) + " s");
+    else if (s.estimatedS > 1.02 * s.boundS)
+        slow(o, "estimate " + std::to_string(s.estimatedS) + " s more than 1.02 x the bound " +
+                    std::to_string(s.boundS) + " s");
 }
 
 } // namespace

@@ -20,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -171,4 +172,47 @@ TEST(StreamPace, AStairRasterSharesOneAccelerationAndNeverRunsDry)
     EXPECT_TRUE(o.wrong.empty()) << list(o.wrong);
     EXPECT_EQ(o.starvationStops, 0) << list(o.pace);
     EXPECT_EQ(o.brakeViolations, 0);
+}
+
+// Issue 12's raster: 12 000 segments of 0.1 mm over a wavy surface at F12000, three times the
+// bundled GVE64 and GVE84 profiles' 4000 mm/min, at 1, 8 and 16 ms (tests/bench/link/overfeed.sh
+// runs the same through frezka-cli). Before the fixes it sent a V before nearly every vector and
+// the unit ran dry thousands of times; the GVE84 at 16 ms still ran dry 19 times while its
+// packets were counted at half its queue.
+TEST(StreamPace, RasterAtThreeTimesTheMaximumFeedKeepsThePace)
+{
+    std::string program = "G21 G90 G17 G94 G64\nG0 X30 Y30\nG1 Z-5 F300\nF12000\n";
+    char line[96];
+    for (int row = 0; row < 12; ++row) {
+        const double y = 30 + row * 0.5;
+        for (int j = 0; j < 1000; ++j) {
+            const double x = 30 + 0.1 * (row % 2 == 0 ? j : 1000 - j);
+            const double z = -5 + 0.3 * std::sin(x * 0.7) * std::cos(y * 0.3);
+            std::snprintf(line, sizeof line, "G1 X%.4f Y%.4f Z%.4f\n", x, y, z);
+            program += line;
+        }
+    }
+    program += "G0 Z-1\nM2\n";
+    for (const char *unit : {"gve64", "gve84"}) {
+        for (const double ms : {1.0, 8.0, 16.0}) {
+            SCOPED_TRACE(std::string(unit) + " at " + std::to_string(ms) + " ms");
+            const auto loaded = frezka::machine::loadMachineConfig(
+                std::string(FREZKA_SOURCE_DIR) + "/resources/machines/" + unit + ".json");
+            ASSERT_TRUE(loaded.config);
+            RandomJob job;
+            job.config = *loaded.config;
+            job.config.link.latencyMs = ms;
+            job.wire.baud = job.config.link.baud;
+            job.wire.latencyS = ms / 1000.0;
+            job.program = program;
+            const JobOutcome o = runJob(job);
+            EXPECT_TRUE(o.wrong.empty()) << list(o.wrong);
+            EXPECT_EQ(o.starvationStops, 0);
+            EXPECT_EQ(o.brakeViolations, 0);
+            EXPECT_NEAR(o.jobS / o.stats.estimatedS, 1.0, 0.02);
+            // Not yet within 1.02 of the bound (1.029-1.039 here): measured, in the soak.
+            std::printf("%s at %.0f ms: job %.2f s, estimate %.2f s, bound %.2f s\n", unit, ms,
+                        o.jobS, o.stats.estimatedS, o.stats.boundS);
+        }
+    }
 }
