@@ -3,31 +3,39 @@
 #include "ledwidget.h"
 
 #include <QHBoxLayout>
+#include <QLabel>
 
 namespace frezka::gui {
 namespace {
 constexpr int kInputBits[] = {0, 1, 2, 3, 4, 5, 6, 7, 14, 15};
 }
 
+// The status bar holds the connection, the unit and the state before this strip: at 1366 px the
+// full captions (IN0 ... IN15, OUT0 ... OUT3) did not fit and were cut to "IN1", "OU'". The groups
+// are named once and each lamp carries its number, with the full name as its tool tip.
 IoPanel::IoPanel(QWidget *parent)
     : QWidget(parent)
 {
     auto *row = new QHBoxLayout(this);
     row->setContentsMargins(2, 0, 2, 0);
-    row->setSpacing(2);
+    row->setSpacing(1);
     m_run = new LedWidget(QStringLiteral("RUN"), QColor(40, 220, 60), this);
     m_inta = new LedWidget(QStringLiteral("INTA"), QColor(255, 80, 40), this);
     row->addWidget(m_run);
     row->addWidget(m_inta);
-    row->addSpacing(8);
+    row->addSpacing(6);
+    row->addWidget(new QLabel(QStringLiteral("IN"), this));
     for (int bit : kInputBits) {
-        auto *led = new LedWidget(QStringLiteral("IN%1").arg(bit), QColor(250, 200, 40), this);
+        auto *led = new LedWidget(QString::number(bit), QColor(250, 200, 40), this);
+        led->setToolTip(QStringLiteral("IN%1").arg(bit));
         m_inputs.push_back(led);
         row->addWidget(led);
     }
-    row->addSpacing(8);
+    row->addSpacing(6);
+    row->addWidget(new QLabel(QStringLiteral("OUT"), this));
     for (int i = 0; i < 4; ++i) {
-        auto *led = new LedWidget(QStringLiteral("OUT%1").arg(i), QColor(40, 160, 255), this);
+        auto *led = new LedWidget(QString::number(i), QColor(40, 160, 255), this);
+        led->setToolTip(QStringLiteral("OUT%1").arg(i));
         m_outputs.push_back(led);
         row->addWidget(led);
     }

@@ -17,6 +17,7 @@ public:
     bool isOn() const { return m_on; }
     void setCaption(const QString &caption);
     QSize sizeHint() const override;
+    QSize minimumSizeHint() const override { return sizeHint(); } // never cut the caption
 
 protected:
     void paintEvent(QPaintEvent *event) override;
