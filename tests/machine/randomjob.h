@@ -5,7 +5,7 @@
 // clock and checks what the plan and the stream promise (docs/planner.md §9):
 //
 //   - the plan: no vertex over an axis's velocity-jump limit, no brake violation in the unit's
-//     model, estimated_s not below the time-optimal bound;
+//     model, estimated_s not below the time-optimal bound and not above 1.02 times it;
 //   - on the emulated link: no brake violation, no starvation stop (the unit never runs dry
 //     inside a chain), no vertex over the jump limit as the unit passed it, the final counters
 //     exactly the plan's last position, every vector executed exactly once (after a path fault,
