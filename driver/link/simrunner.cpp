@@ -45,6 +45,11 @@ void SimRunner::exchange()
 
 void SimRunner::step(double limit)
 {
+    // What the caller's predicate started (SimLink delivers events there, and a workflow answers
+    // them with operations) is still in the core's output: on the wire with it before the clock
+    // moves, or it waited until the next deadline, the reply's own timeout (frezka-cli run: the
+    // job's first command "no reply" on a clean link and every reply after it one late).
+    exchange();
     const double now = m_port.now();
     double next = std::min(m_core.deadline(), now + m_port.nextEventIn());
     next = std::min(next, limit);

@@ -86,6 +86,28 @@ TEST(RunWorkflow, ConnectsHomesAndRunsToTheEnd)
     EXPECT_EQ(h.link.port().unit().stats().motion.brakeViolations, 0u);
 }
 
+// The workflow answers the link's events with operations from inside SimLink's predicate; what
+// they queue must reach the wire before the virtual clock moves on. It waited until the next
+// deadline, the reply timeout of that very command: on a clean link the job's first command
+// had "no reply", every reply after it came one late, and frezka-cli run's figures showed
+// starvation stops the link did not cause.
+TEST(RunWorkflow, ACleanLinkWithLatencyNeedsNoResend)
+{
+    machine::MachineConfig config = machine::defaultMachineConfig(protocol::Variant::Gve84);
+    config.link.latencyMs = 16;
+    driver::WireOptions wire;
+    wire.latencyS = 0.016;
+    SimLink link(config, driver::unitOptionsFor(config), wire, driver::CoreOptions{});
+    RunWorkflow workflow(link);
+    workflow.setProfile(config);
+    workflow.setProgram(planOf(kSquare, config), {}, QStringLiteral("square.nc"));
+    workflow.start(RunWorkflow::connectionFor(config), false);
+    ASSERT_TRUE(link.runUntil([&] { return workflow.hasEnded(); }, 600));
+    EXPECT_TRUE(workflow.error().isEmpty()) << workflow.error().toStdString();
+    EXPECT_EQ(link.jobReport().resent, 0);
+    EXPECT_EQ(link.jobReport().recovered, 0);
+}
+
 TEST(RunWorkflow, AHoldEndsARunNobodyAttends)
 {
     Headless h;
