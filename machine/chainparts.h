@@ -83,8 +83,9 @@ public:
     // A V command of the largest value the unit takes (its bytes barely depend on the value).
     double speedWireBytes() const;
 
-    static constexpr double kReplyS = 0.002;   // a packet's reply and the unit's turnaround
-    static constexpr double kShortQueue = 128; // see packetVectors
+    static constexpr double kReplyS = 0.002;     // a packet's reply and the unit's turnaround
+    static constexpr double kShortQueue = 128;   // see packetVectors
+    static constexpr double kSteadyHeldS = 0.25; // see vectorWireS
 
 private:
     const MachineConfig &m_config;

@@ -1,6 +1,8 @@
 // The serial link's timing for the link's pace (docs/planner.md §4).
 #include "machine/chainparts.h"
 
+#include <algorithm>
+
 #include "machine/unitwire.h"
 #include "protocol/variant.h"
 
@@ -29,8 +31,13 @@ double LinkTiming::vectorWireS(double bytes) const
 {
     if (!m_config.link.packets) // every command waits for its own reply
         return nonPacketS(bytes) * m_options.wireMargin;
-    return bytes * 10.0 / m_config.link.baud * m_options.wireMargin +
-           roundTripS() / packetVectors();
+    const double wire = bytes * 10.0 / m_config.link.baud;
+    // While the unit holds little the driver keeps half of it in reserve, and a packet brings
+    // more motion than its cycle only while held > 2 w RTT / (t - w): t - w must leave that
+    // true from kSteadyHeldS of motion on, or packets shrink cycle after cycle (docs/planner.md
+    // §9; the GVE64 surface at 16 ms ran dry 7 times).
+    const double steady = wire + 2 * wire * roundTripS() / kSteadyHeldS;
+    return std::max(wire * m_options.wireMargin + roundTripS() / packetVectors(), steady);
 }
 
 double LinkTiming::nonPacketS(double bytes) const
