@@ -94,6 +94,33 @@ TEST_P(StreamProperty, NeverEndsWrongAndKeepsTheMachinesLimits)
 
 INSTANTIATE_TEST_SUITE_P(Shards, StreamProperty, ::testing::Range(0, kShards));
 
+namespace {
+
+// The commands of one kind in the plan of a job's program.
+std::size_t countInPlan(const RandomJob &job, frezka::machine::UnitOp op)
+{
+    const frezka::machine::PlanResult plan =
+        frezka::machine::plan(frezka::gcode::interpretText(job.program).toolpath, job.config);
+    EXPECT_TRUE(plan.errors.empty());
+    std::size_t n = 0;
+    for (const frezka::machine::UnitCommand &c : plan.program.commands)
+        n += c.op == op ? 1 : 0;
+    return n;
+}
+
+// Streams the job on its link: it ends right, the unit never ran dry nor braked late.
+void expectKeepsThePace(const RandomJob &job)
+{
+    const JobOutcome o = runJob(job);
+    if (!o.ok())
+        dump(job);
+    EXPECT_TRUE(o.wrong.empty()) << list(o.wrong);
+    EXPECT_EQ(o.starvationStops, 0) << list(o.pace);
+    EXPECT_EQ(o.brakeViolations, 0);
+}
+
+} // namespace
+
 // Property seed 29's failure, built by hand: a slow plunge of vectors one to three steps long
 // on a stiff Z axis, where the link's pace lowers V itself. Each vector's own V differed from
 // its neighbours' by a unit or two, so the plan sent a V (a round trip outside the packets)
@@ -121,21 +148,10 @@ TEST(StreamPace, APacedPlungeSharesOneSpeedAndNeverRunsDry)
     program += "G0 Z-1\nM2\n";
     job.program = program;
     job.summary = "paced plunge";
-    const frezka::machine::PlanResult plan =
-        frezka::machine::plan(frezka::gcode::interpretText(job.program).toolpath, job.config);
-    ASSERT_TRUE(plan.errors.empty());
-    std::size_t speeds = 0, vectors = 0;
-    for (const frezka::machine::UnitCommand &c : plan.program.commands) {
-        speeds += c.op == frezka::machine::UnitOp::Speed ? 1 : 0;
-        vectors += c.op == frezka::machine::UnitOp::Vector ? 1 : 0;
-    }
+    const std::size_t speeds = countInPlan(job, frezka::machine::UnitOp::Speed);
+    const std::size_t vectors = countInPlan(job, frezka::machine::UnitOp::Vector);
     EXPECT_LE(speeds * 20, vectors) << speeds << " V commands for " << vectors << " vectors";
-    const JobOutcome o = runJob(job);
-    if (!o.ok())
-        dump(job);
-    EXPECT_TRUE(o.wrong.empty()) << list(o.wrong);
-    EXPECT_EQ(o.starvationStops, 0) << list(o.pace);
-    EXPECT_EQ(o.brakeViolations, 0);
+    expectKeepsThePace(job);
 }
 
 // A raster whose Z steps up and down in a sawtooth (a stair-stepped 3D finish): the A the axes
@@ -159,19 +175,8 @@ TEST(StreamPace, AStairRasterSharesOneAccelerationAndNeverRunsDry)
     }
     program += "M2\n";
     job.program = program;
-    const frezka::machine::PlanResult plan =
-        frezka::machine::plan(frezka::gcode::interpretText(job.program).toolpath, job.config);
-    ASSERT_TRUE(plan.errors.empty());
-    std::size_t accels = 0;
-    for (const frezka::machine::UnitCommand &c : plan.program.commands)
-        accels += c.op == frezka::machine::UnitOp::Accel ? 1 : 0;
-    EXPECT_LE(accels, 20u);
-    const JobOutcome o = runJob(job);
-    if (!o.ok())
-        dump(job);
-    EXPECT_TRUE(o.wrong.empty()) << list(o.wrong);
-    EXPECT_EQ(o.starvationStops, 0) << list(o.pace);
-    EXPECT_EQ(o.brakeViolations, 0);
+    EXPECT_LE(countInPlan(job, frezka::machine::UnitOp::Accel), 20u);
+    expectKeepsThePace(job);
 }
 
 // Issue 12's raster: 12 000 segments of 0.1 mm over a wavy surface at F12000, three times the
