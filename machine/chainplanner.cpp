@@ -477,23 +477,34 @@ private:
         }
     }
 
-    // Continuous backward/forward passes in mm/s with the bound's caps; closed-form times.
+    // Continuous backward/forward passes in mm/s with the bound's caps; closed-form times. The
+    // acceleration is each segment's own limit as the unit can take it: A is whole thousands of
+    // pulses/s², so an axis at 17 steps/mm and 59 mm/s² gets A 0.99 -> at least 1, and one that
+    // allows A 1.9 gets 1 (no plan can do better; property seed 5 was 8 % above a bound that
+    // took the fractions).
     void bound()
     {
         const std::size_t n = m_moves.size();
         if (n == 0)
             return;
+        std::vector<double> a(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            const Derived &r = m_d[k];
+            const double whole = std::clamp(std::floor(r.aMm * r.f / 1000.0 + 1e-9), 1.0,
+                                            static_cast<double>(kMaxAccel));
+            a[k] = whole * 1000.0 / r.f;
+        }
         std::vector<double> x(m_capMm);
         x[n - 1] = 0;
         for (std::size_t k = n - 1; k > 0; --k) {
-            const double entry = std::sqrt(x[k] * x[k] + 2 * m_d[k].aMm * m_d[k].lengthMm);
+            const double entry = std::sqrt(x[k] * x[k] + 2 * a[k] * m_d[k].lengthMm);
             x[k - 1] = std::min(x[k - 1], entry);
         }
         double e = 0;
         for (std::size_t k = 0; k < n; ++k) {
             const Derived &r = m_d[k];
-            x[k] = std::min(x[k], std::sqrt(e * e + 2 * r.aMm * r.lengthMm));
-            m_out.boundS += runVector(e, r.vMm, x[k], r.aMm, r.lengthMm).timeS;
+            x[k] = std::min(x[k], std::sqrt(e * e + 2 * a[k] * r.lengthMm));
+            m_out.boundS += runVector(e, r.vMm, x[k], a[k], r.lengthMm).timeS;
             e = x[k];
         }
     }
