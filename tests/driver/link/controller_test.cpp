@@ -4,6 +4,7 @@
 #include "driver/link/machinecontroller.h"
 #include "simfixture.h"
 
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QTest>
@@ -56,22 +57,38 @@ private:
         return QString::fromUtf8(emu.readLine()).trimmed();
     }
 
-    void runJob(MachineController &c, const machine::UnitProgram &p)
+    // Runs a job to its end. With byte faults on the line a damaged command can pass its checksum
+    // (about 1 run in 50 here): the unit then leaves the path, the path guard holds the job, and
+    // the operator's Continue returns to the last verified point and runs on, as the hold says.
+    // The job must still end exactly at the program's end.
+    void runJob(MachineController &c, const machine::UnitProgram &p, bool continueOnPathFault)
     {
         QSignalSpy finished(&c, &MachineController::jobFinished);
         QSignalSpy errors(&c, &MachineController::errorOccurred);
         c.run(p);
+        QElapsedTimer clock;
+        clock.start();
+        int continues = 0;
+        while (finished.isEmpty() && clock.elapsed() < 60000) {
+            finished.wait(200);
+            const MachineState s = c.state();
+            if (continueOnPathFault && continues < 5 && s.mode == MachineMode::Paused &&
+                s.hold == HoldReason::PathFault) {
+                ++continues;
+                c.resume();
+                QTRY_VERIFY_WITH_TIMEOUT(c.state().mode != MachineMode::Paused, 10000);
+            }
+        }
         // A refused run (errorOccurred, no jobFinished) or a job that hangs: say what the
         // controller was doing instead of only that the wait ran out.
-        const bool ended = finished.wait(60000);
-        if (!ended) {
+        if (finished.isEmpty()) {
             qWarning().noquote() << describe(c.state());
             for (const QList<QVariant> &e : errors) {
                 qWarning().noquote()
                     << "error:" << QString::fromStdString(e.first().value<MachineError>().message);
             }
         }
-        QVERIFY(ended);
+        QVERIFY(!finished.isEmpty());
         QCOMPARE(finished.first().first().toBool(), true);
         QTRY_VERIFY_WITH_TIMEOUT(at(c.state(), p), 5000);
     }
@@ -87,7 +104,7 @@ private slots:
         c.connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::Idle, 10000);
         QVERIFY(c.state().checksums);
-        runJob(c, test::denseProgram(300));
+        runJob(c, test::denseProgram(300), false);
         QCOMPARE(c.state().mode, MachineMode::Idle);
     }
 
@@ -105,7 +122,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::Idle, 10000);
         QCOMPARE(QString::fromStdString(c.state().firmware),
                  QStringLiteral("IP64MPG v19 10.9.2010"));
-        runJob(c, test::denseProgram(400));
+        runJob(c, test::denseProgram(400), false);
         c.disconnectFromUnit();
         emu.terminate();
         QVERIFY(emu.waitForFinished(5000));
@@ -127,7 +144,7 @@ private slots:
         s.portName = path;
         c.connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(c.state().mode, MachineMode::Idle, 20000);
-        runJob(c, test::denseProgram(1500));
+        runJob(c, test::denseProgram(1500), true);
         emu.terminate();
         QVERIFY(emu.waitForFinished(5000));
     }
