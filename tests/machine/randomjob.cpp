@@ -68,6 +68,13 @@ MachineConfig drawConfig(Rng &rng, driver::WireOptions &wire)
         drawAxis(rng, c.axes[static_cast<std::size_t>(i)], c.unit.maxPulseRate);
     if (info.axisCount == 4)
         c.axes[3].present = chance(rng, 0.4);
+    // The MPG's top speed must stay within half the pulse rate on every axis (configrules.cpp);
+    // it plays no part in a job, and a dumped profile must load.
+    for (const AxisConfig &a : c.axes) {
+        if (a.present)
+            c.eeprom.mpgMaxSpeedMmPerS = std::min(
+                c.eeprom.mpgMaxSpeedMmPerS, c.unit.maxPulseRate / 2.0 / a.stepsPerMm * (1 - 1e-9));
+    }
     c.motion.junctionDeviationMm = chance(rng, 0.1) ? 0 : logUniform(rng, 0.001, 10);
     c.motion.chordToleranceMm = logUniform(rng, 0.0001, 1);
     c.motion.pauseMs = std::uniform_int_distribution<int>(1, 24)(rng);

@@ -74,6 +74,11 @@ TEST_P(StreamProperty, NeverEndsWrongAndKeepsTheMachinesLimits)
     int paceCases = 0;
     for (std::uint64_t seed = first; seed < first + cases; ++seed) {
         const RandomJob job = drawJob(seed, 600);
+        // A profile as a user could write it: every key within its range and the rules.
+        for (const frezka::machine::ConfigError &e :
+             frezka::machine::validateMachineConfig(job.config))
+            ADD_FAILURE() << "seed " << seed << ": the drawn profile breaks " << e.key << ": "
+                          << e.message;
         const JobOutcome o = runJob(job);
         if (!o.ok())
             dump(job);
