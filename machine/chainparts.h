@@ -82,6 +82,9 @@ public:
     double wireBytes(const protocol::Command &command) const;
     // A V command of the largest value the unit takes (its bytes barely depend on the value).
     double speedWireBytes() const;
+    // What a V or an A command costs the link (its bytes and a round trip; an A is no longer
+    // than the largest V): the price the plan weighs against a shared V or A.
+    double modalChangeS() const { return nonPacketS(speedWireBytes()); }
 
     static constexpr double kReplyS = 0.002;     // a packet's reply and the unit's turnaround
     static constexpr double kShortQueue = 128;   // see packetVectors

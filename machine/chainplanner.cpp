@@ -204,8 +204,7 @@ private:
     // only lengthens a vector, so the pace holds; the vertex caps follow V (vertexCaps).
     void sharePacedSpeeds(const std::vector<bool> &lowered)
     {
-        const double penalty =
-            m_options.speedChangeCost * m_link.nonPacketS(m_link.speedWireBytes());
+        const double penalty = m_options.speedChangeCost * m_link.modalChangeS();
         const std::size_t n = m_d.size();
         std::size_t k = 0;
         while (k < n) {

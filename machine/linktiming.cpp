@@ -1,10 +1,10 @@
 // The serial link's timing for the link's pace (docs/planner.md §4).
 #include "machine/chainparts.h"
 
-#include <algorithm>
-
 #include "machine/unitwire.h"
 #include "protocol/variant.h"
+
+#include <algorithm>
 
 namespace frezka::machine::detail {
 

@@ -35,11 +35,11 @@ constexpr double kFlexibleRoom = 0.8; // chooseSpeeds: B cap at least 0.89 of a 
 // times) is shared by the walk and its open/close steps; apart, they would pass all of it around.
 void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link)
 {
-    const double penalty = options.speedChangeCost * link.nonPacketS(link.speedWireBytes());
+    const double penalty = options.speedChangeCost * link.modalChangeS();
     if (!(penalty > 0) || d.empty())
         return; // no link to spare: every vector at its own cap
     const std::size_t n = d.size();
-    const double change = link.nonPacketS(link.speedWireBytes());
+    const double change = link.modalChangeS();
     std::vector<double> roomCap(n); // the B cap that keeps a vector within its own cap
     for (std::size_t k = 0; k < n; ++k) {
         const Derived &r = d[k];
@@ -141,7 +141,7 @@ void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const Lin
 void chooseAccels(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link)
 {
     const std::size_t n = d.size();
-    const double penalty = options.speedChangeCost * link.nonPacketS(link.speedWireBytes());
+    const double penalty = options.speedChangeCost * link.modalChangeS();
     std::vector<std::int64_t> caps(n);
     for (std::size_t k = 0; k < n; ++k)
         caps[k] = accelCap(d, k, options);

@@ -307,8 +307,13 @@ private:
     void wait(std::uint32_t line, double seconds);
     void finishStats();
     void feedCapWarning();
-    double restLinkS(double *pauseS = nullptr) const;
-    // restLinkS: the driver's status poll interval (driver/link CoreOptions::pollIntervalS) and
+    struct RestCosts
+    {
+        double linkS = 0;      // the link's part of the rests, beyond the unit's T pauses
+        double unitPauseS = 0; // the unit's T pauses after them (what dwells did not cover)
+    };
+    RestCosts restCosts() const;
+    // restCosts: the driver's status poll interval (driver/link CoreOptions::pollIntervalS) and
     // the bytes of one command and its reply.
     static constexpr double kStatusPollS = 0.05;
     static constexpr double kExchangeBytes = 20;
@@ -497,17 +502,17 @@ void Planner::feedCapWarning()
 // stands from its next status poll (half the poll interval on average), reads the position
 // (the path guard), sends the commands that cannot travel in a packet one round trip each, and
 // the unit starts again when the first packet's first vector arrives.
-double Planner::restLinkS(double *unitPauseS) const
+Planner::RestCosts Planner::restCosts() const
 {
     const LinkConfig &link = m_config.link;
     if (!m_options.wireLimited || link.baud <= 0)
-        return 0;
+        return {};
     const double exchangeS = detail::LinkTiming(m_config, m_options).nonPacketS(kExchangeBytes);
-    double total = 0, pauses = 0;
+    RestCosts costs;
     bool atRest = true;
-    bool moved = false;    // a chain ran before this rest: the unit pauses T after it
-    double pauseS = 0.010; // T, as the unit model starts (machine/unitmodel.cpp)
-    double dwellS = 0;     // PC-side dwell since the rest began
+    bool moved = false;             // a chain ran before this rest: the unit pauses T after it
+    double pauseS = kInitialPauseS; // T, as the unit model starts
+    double dwellS = 0;              // PC-side dwell since the rest began
     int commands = 0;
     for (const UnitCommand &c : m_result.program.commands) {
         if (c.op == UnitOp::Vector || c.op == UnitOp::Line) {
@@ -515,8 +520,8 @@ double Planner::restLinkS(double *unitPauseS) const
                 // The unit's own T pause after the rest (what a dwell has not covered) runs
                 // while the link does its part: the estimate counts the longer of the two.
                 const double unitS = moved ? std::max(0.0, pauseS - dwellS) : 0.0;
-                total += std::max(0.0, kStatusPollS / 2 + (2 + commands) * exchangeS - unitS);
-                pauses += unitS;
+                costs.linkS += std::max(0.0, kStatusPollS / 2 + (2 + commands) * exchangeS - unitS);
+                costs.unitPauseS += unitS;
             }
             atRest = false;
             moved = true;
@@ -532,9 +537,7 @@ double Planner::restLinkS(double *unitPauseS) const
             dwellS += c.op == UnitOp::Dwell ? static_cast<double>(c.value) / 1000.0 : 0.0;
         }
     }
-    if (unitPauseS)
-        *unitPauseS = pauses;
-    return total;
+    return costs;
 }
 
 void Planner::finishStats()
@@ -547,11 +550,11 @@ void Planner::finishStats()
     // the machine's (a reversal its jump limits cannot pass moving), not the plan's: the bound
     // pays it as the estimate does (seed 30: 181 such rests, the estimate 2.9 % above a bound
     // that left them out). Rests the plan chooses (exact stop's L moves) stay out of it.
-    double restPausesS = 0;
-    s.linkWaitS = restLinkS(&restPausesS);
+    const RestCosts rests = restCosts();
+    s.linkWaitS = rests.linkS;
     s.waitS = m_waitS;
     s.estimatedS = model.motionS + model.waitS + s.linkWaitS;
-    s.boundS = m_bound + m_waitS + restPausesS + s.linkWaitS;
+    s.boundS = m_bound + m_waitS + rests.unitPauseS + s.linkWaitS;
 }
 
 } // namespace

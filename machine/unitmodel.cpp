@@ -184,7 +184,7 @@ private:
     }
 
     bool m_vk;
-    double m_a = 20000, m_v = 1000, m_b = 35000, m_pauseS = 0.010;
+    double m_a = 20000, m_v = 1000, m_b = 35000, m_pauseS = kInitialPauseS;
     std::int64_t m_short = 512;
     bool m_restedBefore = false;
     double m_sinceRest = 0;

@@ -26,6 +26,9 @@ struct VectorRun
 };
 VectorRun runVector(double e, double c, double x, double a, double n);
 
+// T (pause between non-continuous vectors) the model assumes until the program sets one.
+inline constexpr double kInitialPauseS = 0.010;
+
 struct ModelResult
 {
     double motionS = 0; // time with the axes moving

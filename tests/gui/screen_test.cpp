@@ -17,6 +17,8 @@
 #include "gui/toolpathviewmodel.h"
 #include "gui/unitconfigdialog.h"
 
+#include "windowtest.h"
+
 #include "driver/link/machinecontroller.h"
 
 #include <QLabel>
@@ -49,25 +51,15 @@ private:
 
     QString writeProgram(const QString &name, const QByteArray &text)
     {
-        const QString path = m_dir.filePath(name);
-        QFile f(path);
-        if (!f.open(QIODevice::WriteOnly))
-            return {};
-        f.write(text);
-        return path;
+        return test::writeProgram(m_dir, name, text);
     }
 
     bool load(const QString &path)
     {
-        QSignalSpy loaded(m_window->program(), &ProgramSession::loaded);
-        m_window->openProgram(path);
-        return loaded.wait(20000) && m_window->program()->program().runnable();
+        return test::openAndWait(m_window.get(), path) && m_window->program()->program().runnable();
     }
 
-    QPushButton *button(QWidget *parent, const char *name)
-    {
-        return parent->findChild<QPushButton *>(QLatin1String(name));
-    }
+    QPushButton *button(QWidget *parent, const char *name) { return test::button(parent, name); }
 
     int progress() const
     {

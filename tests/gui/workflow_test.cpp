@@ -18,11 +18,13 @@
 #include "gui/toolpathview.h"
 #include "gui/unitconfigdialog.h"
 
+#include "windowtest.h"
+
 #include "driver/link/machinecontroller.h"
 #include "session/runworkflow.h"
 
-#include <QCheckBox>
 #include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QLabel>
 #include <QProcess>
@@ -62,25 +64,12 @@ private:
 
     QString writeProgram(const QString &name, const QByteArray &text)
     {
-        const QString path = m_dir.filePath(name);
-        QFile f(path);
-        if (!f.open(QIODevice::WriteOnly))
-            return {};
-        f.write(text);
-        return path;
+        return test::writeProgram(m_dir, name, text);
     }
 
-    bool load(const QString &path)
-    {
-        QSignalSpy loaded(m_window->program(), &ProgramSession::loaded);
-        m_window->openProgram(path);
-        return loaded.wait(20000);
-    }
+    bool load(const QString &path) { return test::openAndWait(m_window.get(), path); }
 
-    QPushButton *button(QWidget *parent, const char *name)
-    {
-        return parent->findChild<QPushButton *>(QLatin1String(name));
-    }
+    QPushButton *button(QWidget *parent, const char *name) { return test::button(parent, name); }
 
     bool waitIdle()
     {
