@@ -29,6 +29,7 @@
 #include <QLabel>
 #include <QProcess>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
@@ -569,6 +570,38 @@ M30
         QCOMPARE(int(state().homedAxes), 0);
         QVERIFY(
             m_window->jogPanel()->findChild<QLabel *>(QStringLiteral("limitsOff"))->isVisible());
+    }
+
+    // Holding a jog button with "Continuous" chosen moves the axis until it is released, and the
+    // release is the operator's stop: straight back to Idle, no alarm and no error on the way
+    // (issue 14: each release logged "Jogging -> Alarm -> Idle").
+    void continuousJogReleaseIsNoAlarm()
+    {
+        QVERIFY(waitIdle());
+        QStringList log;
+        auto tap = connect(m_window->controller(), &driver::MachineController::logLine, this,
+                           [&log](const QString &line) { log << line; });
+        QSignalSpy errors(m_window->controller(), &driver::MachineController::errorOccurred);
+        auto radio = [this](const char *name) {
+            return m_window->jogPanel()->findChild<QRadioButton *>(QLatin1String(name));
+        };
+        radio("jogContinuous")->click();
+        const double x0 = state().positionMm[0];
+        QPushButton *plus = button(m_window->jogPanel(), "jogXPlus");
+        QTest::mousePress(plus, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(state().positionMm[0] > x0 + 0.5, 10000);
+        QTest::mouseRelease(plus, Qt::LeftButton);
+        QVERIFY(waitIdle());
+        QSignalSpy polls(m_window->controller(), &driver::MachineController::stateChanged);
+        QTRY_VERIFY(polls.count() >= 5); // a few polls after the stop
+        disconnect(tap);
+        QCOMPARE(state().mode, MachineMode::Idle);
+        QCOMPARE(errors.count(), 0);
+        const QStringList modes = log.filter(QStringLiteral("mode: "));
+        QVERIFY2(modes.filter(QStringLiteral("Alarm")).isEmpty(), qPrintable(modes.join('\n')));
+        QVERIFY2(!modes.isEmpty(), "the mode changes are logged");
+        QVERIFY(state().positionMm[0] > x0 + 0.5);
+        radio("jogStep2")->click(); // the default step again for the tests after
     }
 
     void languageSwitch()

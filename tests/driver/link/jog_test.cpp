@@ -59,5 +59,40 @@ TEST(Jog, AfterHomingContinuousStopsAtTheLimitAndAStepBeyondIsRefused)
     EXPECT_EQ(sim.port.unit().position()[0], 0);
 }
 
+// Releasing a continuous jog is the operator's stop, not an alarm: the H that ends it sets INTA,
+// which must not be read as an input interrupt (the log showed "Jogging -> Alarm -> Idle" on every
+// release, and an error in between).
+// A quick tap (released before the jog's own commands went out) and a long press.
+class JogRelease : public ::testing::TestWithParam<double>
+{
+};
+
+TEST_P(JogRelease, GoesStraightBackToIdle)
+{
+    const double holdS = GetParam();
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    WireTap wire(sim.port);
+    const auto logFrom = sim.log.size();
+    ASSERT_FALSE(sim.core.jogContinuous(0, 1, 3000, sim.runner.now()));
+    sim.runner.runFor(holdS);
+    ASSERT_FALSE(sim.core.jogStop(sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Idle, 10)) << sim.lastLog();
+    sim.runner.runFor(1.0);
+    std::vector<std::string> modes;
+    for (std::size_t i = logFrom; i < sim.log.size(); ++i)
+        if (sim.log[i].find("mode: ") != std::string::npos)
+            modes.push_back(sim.log[i].substr(sim.log[i].find("mode: ")));
+    EXPECT_EQ(modes, (std::vector<std::string>{"mode: Idle -> Jogging", "mode: Jogging -> Idle"}))
+        << sim.lastLog();
+    EXPECT_TRUE(sim.errors.empty()) << sim.lastLog();
+    EXPECT_EQ(wire.matching("!0H").size(), 1u);
+    EXPECT_GE(sim.port.unit().position()[0], 0);
+    EXPECT_FALSE(sim.port.unit().isMoving());
+    EXPECT_FALSE(sim.core.state().inta);
+}
+
+INSTANTIATE_TEST_SUITE_P(Jog, JogRelease, ::testing::Values(0.0, 0.001, 0.02, 1.0));
+
 } // namespace
 } // namespace frezka::driver::test
