@@ -17,6 +17,7 @@ struct CoreOptions
     double inputsPollIntervalS = 0.25; // I1/I2
     double maxPollGapS = 4.0;          // while streaming wire-bound, poll at least this often
     double wireBoundPollShare = 0.005; // ... and otherwise spend at most this share on polls
+    double streamPollShare = 0.5;      // while a job streams, polls take at most this share
     double slowPacketWireS = 0.1;      // where the motion is slow, packets at most this long
     bool compareEeprom = true;         // read the unit's EEPROM on connect and report differences
     bool optionalStops = true;         // M1 pauses

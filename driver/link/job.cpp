@@ -89,6 +89,12 @@ bool Job::streaming(double now) const
     return mayStream(now) && m_cursor.next < m_program.commands.size();
 }
 
+bool Job::feeding() const
+{
+    return m_active && m_host.liveState().mode == MachineMode::Running && !m_streamBlocked &&
+           m_cursor.next < m_program.commands.size();
+}
+
 bool Job::probing() const
 {
     return m_streamBlocked && m_cursor.next < m_program.commands.size() &&
@@ -168,8 +174,8 @@ void Job::sendPacket(double now)
         // No room in the unit's queue by our estimate: wait until about 16 vectors have run.
         const std::size_t at = m_pace.execEstimate();
         const std::size_t later = std::min(at + 16, m_cursor.next);
-        m_waitUntil = now + std::clamp(m_pace.timeBefore(later) - m_pace.timeBefore(at), 0.002,
-                                       m_host.options().pollIntervalS);
+        m_waitUntil =
+            now + std::clamp(m_pace.runS(at, later), 0.002, m_host.options().pollIntervalS);
         m_queueFullSeen = true;
         return;
     }
@@ -463,6 +469,7 @@ void Job::positionRead()
     std::size_t i = m_cursor.exec;
     const std::size_t limit = std::min(m_cursor.next, cmds.size());
     bool onPath = false; // inside a box, or at the end of the last motion sent
+    double done = 0;     // the share of vector i's longest axis already run
     for (int guard = 0; i < limit && guard < 100000; ++i, ++guard) {
         if (!isMotion(cmds[i].op))
             continue;
@@ -478,6 +485,12 @@ void Job::positionRead()
         onPath = atEnd;
         if (inside && !atEnd) {
             onPath = true;
+            int longest = 0;
+            for (int a = 1; a < axes; ++a)
+                longest = std::abs(cmds[i].d[a]) > std::abs(cmds[i].d[longest]) ? a : longest;
+            const std::int64_t left = std::abs(end[longest] - pos[longest]);
+            const std::int64_t length = std::abs(cmds[i].d[longest]);
+            done = length > 0 ? 1.0 - static_cast<double>(left) / static_cast<double>(length) : 0;
             break;
         }
     }
@@ -490,7 +503,9 @@ void Job::positionRead()
     const double elapsed = m_host.now() - m_report.startS;
     state.etaS =
         i > 0 ? elapsed * static_cast<double>(cmds.size() - i) / static_cast<double>(i) : -1;
-    m_cursor.execAt = m_host.now();
+    // Vector i began that share of its time ago (a long plunge read half way holds half its
+    // time, not all of it: the packet after it was sized to arrive when it had already ended).
+    m_cursor.execAt = m_host.now() - (i < limit ? done * m_pace.runS(i, i + 1) : 0.0);
 }
 
 // F answered RUN = 0: the unit's queue is empty, so every command accepted before F was sent

@@ -45,6 +45,8 @@ public:
     bool mayStream(double now) const;
     // ... and commands are left to send.
     bool streaming(double now) const;
+    // Commands are left to send and only the unit's full queue holds them back (if at all).
+    bool feeding() const;
     void streamStep(double now);
     double waitUntil() const { return m_waitUntil; }
     bool queueFullSeen() const { return m_queueFullSeen; }

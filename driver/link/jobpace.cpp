@@ -75,9 +75,22 @@ std::size_t JobPace::executingAtFull() const
     return std::max(m_cursor.exec, k);
 }
 
+// The operator's override (XM) above 100 % runs the unit faster than the model: program time
+// passes that much faster. Below 100 % the model's time is kept, so that the driver never thinks
+// the unit holds more than it does (XM scales cruise only; the motion is at most that slower).
+double JobPace::rate() const
+{
+    return std::max(1.0, m_host.liveState().overridePercent / 100.0);
+}
+
+double JobPace::runS(std::size_t from, std::size_t to) const
+{
+    return (m_timePrefix[to] - m_timePrefix[from]) / rate();
+}
+
 std::size_t JobPace::execEstimate() const
 {
-    double elapsed = m_host.now() - m_cursor.execAt;
+    double elapsed = (m_host.now() - m_cursor.execAt) * rate();
     std::size_t i = std::min(m_cursor.exec, m_cursor.next);
     while (i < m_cursor.next && elapsed >= m_timePrefix[i + 1] - m_timePrefix[i]) {
         elapsed -= m_timePrefix[i + 1] - m_timePrefix[i];
@@ -89,8 +102,7 @@ std::size_t JobPace::execEstimate() const
 double JobPace::bufferedS() const
 {
     const std::size_t from = std::min(m_cursor.exec, m_cursor.next);
-    return std::max(0.0, m_timePrefix[m_cursor.next] - m_timePrefix[from] -
-                             (m_host.now() - m_cursor.execAt));
+    return std::max(0.0, runS(from, m_cursor.next) - (m_host.now() - m_cursor.execAt));
 }
 
 double JobPace::leadS() const
@@ -99,9 +111,9 @@ double JobPace::leadS() const
     const std::size_t last = m_cursor.next;
     if (held <= 0 || last == 0 || last >= m_brakeS.size())
         return held;
-    // The last queued vector brakes for at most its own time.
-    const double own = m_timePrefix[last] - m_timePrefix[last - 1];
-    return std::max(0.0, held - std::min(m_brakeS[last], own));
+    // The last queued vector brakes for at most its own time (from V times the override).
+    const double own = runS(last - 1, last);
+    return std::max(0.0, held - std::min(m_brakeS[last] * rate(), own));
 }
 
 int JobPace::maxPacket() const
@@ -122,7 +134,7 @@ bool JobPace::wireBoundAhead() const
         return false;
     const std::size_t span = static_cast<std::size_t>(maxPacket());
     const std::size_t end = std::min(m_program.commands.size(), next + span);
-    const double motion = m_timePrefix[end] - m_timePrefix[next];
+    const double motion = runS(next, end);
     const double wire =
         m_host.link().wireTime(static_cast<std::size_t>(m_bytePrefix[end] - m_bytePrefix[next]));
     return motion < wire + m_host.rttS();
@@ -132,8 +144,8 @@ std::int64_t JobPace::queuedAfter(double ahead) const
 {
     const std::size_t next = m_cursor.next;
     const std::size_t from = std::min(m_cursor.exec, next);
-    const double at =
-        std::min(m_timePrefix[from] + (m_host.now() - m_cursor.execAt) + ahead, m_timePrefix[next]);
+    const double at = std::min(
+        m_timePrefix[from] + (m_host.now() - m_cursor.execAt + ahead) * rate(), m_timePrefix[next]);
     // The command executing at program time `at`: the last k with m_timePrefix[k] <= at.
     auto it = std::upper_bound(m_timePrefix.begin() + static_cast<std::ptrdiff_t>(from),
                                m_timePrefix.begin() + static_cast<std::ptrdiff_t>(next) + 1, at);
@@ -166,7 +178,7 @@ std::size_t JobPace::slowMotionPacketEnd() const
                                       m_bytePrefix[e + 1] - m_bytePrefix[next])) <= wire)
             ++e;
         const double cycle = wire + 2.75 * rtt;
-        if (e > next && e < cmds.size() && m_timePrefix[e] - m_timePrefix[next] >= margin * cycle)
+        if (e > next && e < cmds.size() && runS(next, e) >= margin * cycle)
             return e;
     }
     return next;

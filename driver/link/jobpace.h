@@ -45,8 +45,10 @@ public:
     // Motion commands (C, L) before program index i.
     std::int64_t vectorsBefore(std::size_t i) const { return m_vectorPrefix[i]; }
     std::size_t size() const { return m_vectorPrefix.size(); }
-    // Estimated seconds of motion before program index i.
+    // Estimated seconds of motion before program index i, at 100 %.
     double timeBefore(std::size_t i) const { return m_timePrefix[i]; }
+    // Estimated seconds the unit takes from program index `from` to `to` at the feed override.
+    double runS(std::size_t from, std::size_t to) const;
 
     // The largest packet: the unit's queue less one (or CoreOptions::maxPacketCommands).
     int maxPacket() const;
@@ -70,6 +72,7 @@ public:
 
 private:
     void estimateDurations();
+    double rate() const; // program seconds per second of the unit's time
 
     CoreHost &m_host;
     const machine::UnitProgram &m_program;

@@ -22,16 +22,23 @@ double Poller::nextTime() const
     default:
         break;
     }
-    if (!m_job.streaming(m_host.now()) || m_job.queueFullSeen())
+    // Waiting for room in the unit's full queue is part of the stream: polls at the full rate
+    // with F and the inputs there (three round trips, 100 ms on a GVE84 at 16 ms) held back the
+    // packet the draining queue needed, and the unit ran dry.
+    if (!m_job.feeding())
         return m_lastPoll + m_host.options().pollIntervalS;
     // A poll costs a round trip of the link. Plenty of motion queued and the motion ahead slower
-    // than the wire: the stream has time to spare, poll at the full rate. Otherwise every round
+    // than the wire: the stream has time to spare, poll at the full rate, but never take more
+    // than streamPollShare of the link's time on the position read (at 9 600 Bd it takes 47 ms
+    // of the 50: the stream's next commands waited behind polls until the unit ran dry; the F
+    // and inputs reads come every few polls). Otherwise every round
     // trip spent on polls is missing from the stream: keep them to wireBoundPollShare of the
     // link's time (the last poll's cost over that share), at least every maxPollGapS.
     const double buffered = m_job.pace().leadS();
-    if (!m_job.pace().wireBoundAhead() && buffered >= std::max(0.25, 10 * m_rttS))
-        return m_lastPoll + m_host.options().pollIntervalS;
     const double cost = m_lastPollTransactions * m_rttS;
+    if (!m_job.pace().wireBoundAhead() && buffered >= std::max(0.25, 10 * m_rttS))
+        return m_lastPoll + std::max(m_host.options().pollIntervalS,
+                                     m_rttS / std::max(1e-3, m_host.options().streamPollShare));
     const double share = std::max(1e-3, m_host.options().wireBoundPollShare);
     // A poll that also read F and the inputs delays the next one by its extra cost.
     return m_lastPoll +
@@ -58,7 +65,8 @@ void Poller::start(double now)
     // Where the stream is wire-bound or the unit holds little, the position alone, F every 8th
     // time and the inputs at another (a poll of position, F and inputs is three or four round
     // trips, longer than a GVE84's short queue lasts on a dense raster: two stops there).
-    const bool stream = m_job.streaming(m_host.now());
+    // Waiting for room in a full queue counts as streaming: the room comes within the poll.
+    const bool stream = m_job.feeding();
     const bool lean = stream && (m_job.pace().wireBoundAhead() ||
                                  m_job.pace().leadS() < std::max(0.25, 10 * m_rttS));
     const bool flags = !stream || m_pollCount % (lean ? 8 : 4) == (lean ? 7 : 0);

@@ -403,6 +403,13 @@ JobOutcome runJob(const RandomJob &job)
         fail(o, "did not connect: " + firstError);
         return o;
     }
+    if (job.overridePercent != 100) {
+        if (const auto refused = core.setOverride(job.overridePercent, runner.now())) {
+            fail(o, "override refused: " + refused->message);
+            return o;
+        }
+        runner.runUntil([&] { return core.state().overridePercent == job.overridePercent; }, 10);
+    }
     if (const auto refused = core.run(p.program, runner.now())) {
         fail(o, "run refused: " + refused->message);
         return o;

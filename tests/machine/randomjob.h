@@ -34,6 +34,7 @@ struct RandomJob
     driver::WireOptions wire;
     std::string program; // G-code text
     std::string summary; // one line: what was drawn
+    int overridePercent = 100; // the operator's feed override (XM), set before the run
 };
 
 // Draws a job; maxLines bounds the program's size (the property test keeps it small).

@@ -184,6 +184,39 @@ TEST(StreamPace, AStairRasterSharesOneAccelerationAndNeverRunsDry)
     expectKeepsThePace(job);
 }
 
+// The operator's feed override above 100 % (XM) runs the unit faster than the plan: the driver's
+// estimate of what the unit holds must follow it, or the unit runs dry. A raster of 3 mm
+// segments at F3000 on a GVE64 at 9 600 Bd: 16 vectors/s at 100 %, within the wire's 50 at
+// 150 % and 200 %; before, 1 starvation stop (and 2 brake violations at 150 %).
+TEST(StreamPace, AFeedOverrideAboveHundredKeepsTheUnitFed)
+{
+    std::string program = "G21 G90 G17 G94 G64\nG0 X10 Y10\nG1 Z-6 F300\nF3000\n";
+    char line[96];
+    for (int row = 0; row < 20; ++row) {
+        for (int j = 0; j < 30; ++j) {
+            const int t = row % 2 == 0 ? j : 30 - j;
+            std::snprintf(line, sizeof line, "G1 X%.4f Y%.4f\n", 10.0 + 3 * t,
+                          10 + row * 0.5 + 0.05 * (j % 2));
+            program += line;
+        }
+    }
+    program += "G0 Z-1\nM2\n";
+    for (const int percent : {150, 200}) {
+        for (const int baud : {9600, 19200}) {
+            SCOPED_TRACE(std::to_string(percent) + " % at " + std::to_string(baud) + " Bd");
+            RandomJob job;
+            job.config = frezka::machine::defaultMachineConfig(frezka::protocol::Variant::Gve64);
+            job.config.link.baud = baud;
+            job.config.link.latencyMs = 8;
+            job.wire.baud = baud;
+            job.wire.latencyS = 0.008;
+            job.program = program;
+            job.overridePercent = percent;
+            expectKeepsThePace(job);
+        }
+    }
+}
+
 // Issue 12's raster: 12 000 segments of 0.1 mm over a wavy surface at F12000, three times the
 // bundled GVE64 and GVE84 profiles' 4000 mm/min, at 1, 8 and 16 ms (tests/bench/link/overfeed.sh
 // runs the same through frezka-cli). Before the fixes it sent a V before nearly every vector and
