@@ -22,6 +22,9 @@ using detail::refusal;
 namespace {
 // Motion kept in the unit beyond two round trips when a packet is sized to what it holds, s.
 constexpr double kDryReserveS = 0.02;
+// ... and this share of what it holds: the estimate of a second and more of queued motion is off
+// by a percent or two (a 1.5 s packet after a spin-up arrived 11 ms after the unit ran dry).
+constexpr double kHeldDriftShare = 0.05;
 // Below this much wire time to spare the unit runs dry whatever the packet: send a full one.
 constexpr double kMinPacedWireS = 0.005;
 } // namespace
@@ -56,7 +59,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     m_program = std::move(program);
     m_active = true;
     m_cursor = {};
-    m_streamBlocked = m_queueFullSeen = false;
+    m_streamBlocked = m_queueFullSeen = m_afterRest = false;
     m_check.reset();
     m_guard.reset();
     m_waitUntil = -1;
@@ -105,6 +108,15 @@ void Job::streamStep(double now)
 {
     if (m_check.pending())
         return;
+    if (m_afterRest) {
+        // The dwell is over and nothing was sent during it: the unit holds nothing, and the
+        // estimate's clock starts now (it counted the dwell, a spin-up of seconds, as motion run
+        // and took the unit for empty while the chain after it began, so its first packet was
+        // as long as the queue and came too late).
+        m_afterRest = false;
+        m_cursor.exec = m_cursor.next;
+        m_cursor.execAt = now;
+    }
     if (m_cursor.next >= m_program.commands.size()) {
         m_streamBlocked = true;
         m_host.afterJobIdle([this] { finishWithPosition(); });
@@ -149,8 +161,9 @@ void Job::sendPacket(double now)
     const std::size_t shortEnd = m_pace.slowMotionPacketEnd();
     const bool keepShort = shortEnd > m_cursor.next;
     const double held = m_pace.leadS(); // the packet must arrive before the last vector brakes
-    const double budget = held - std::min(2 * m_host.rttS() + kDryReserveS, 0.5 * held);
-    const bool paced = held > 0 && budget >= kMinPacedWireS && !m_pace.wireBoundAhead();
+    const double budget =
+        held - std::min(2 * m_host.rttS() + kDryReserveS + kHeldDriftShare * held, 0.5 * held);
+    const bool paced = held > 0 && budget >= kMinPacedWireS;
     while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
         const UnitOp op = cmds[end].op;
         if (op != UnitOp::Vector && op != UnitOp::Brake)
@@ -299,8 +312,14 @@ void Job::atRest(std::size_t index, std::function<void()> then)
         if (m_cursor.next != index)
             return;
         m_guard.checkAtRest(index, [this, index, then = std::move(then)] {
-            if (m_cursor.next == index)
-                then();
+            if (m_cursor.next != index)
+                return;
+            // The machine stands here: everything before ran, and the clock of the estimate
+            // starts again now (it counted the rest, a spin-up of seconds, as motion run, and
+            // took the unit for empty when the chain after it began).
+            m_cursor.exec = index;
+            m_cursor.execAt = m_host.now();
+            then();
         });
     });
 }
@@ -320,6 +339,7 @@ void Job::handlePcOp(const machine::UnitCommand &c)
         atRest(index, [this, index, ms = c.value] {
             acceptUpTo(index + 1);
             m_waitUntil = m_host.now() + static_cast<double>(ms) / 1000.0;
+            m_afterRest = true;
             m_streamBlocked = false;
         });
         return;

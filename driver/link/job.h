@@ -94,6 +94,7 @@ private:
     JobCursor m_cursor;
     bool m_streamBlocked = false; // waiting for idle / operator / verification
     bool m_queueFullSeen = false; // last C/packet hit a full queue
+    bool m_afterRest = false;     // a PC-side wait (dwell) ended: the unit holds nothing
     double m_waitUntil = -1;      // a dwell or back-off: nothing from the job before this time
     int m_packetLimit = 1;        // adaptive packet size (commands)
     JobReport m_report;

@@ -217,6 +217,38 @@ TEST(StreamPace, AFeedOverrideAboveHundredKeepsTheUnitFed)
     }
 }
 
+// The spindle's spin-up is a dwell on the PC side. The driver's estimate of the unit's queue
+// counted those seconds as motion run, took the unit for empty when the raster after it began,
+// and sent its first packet as long as the GVE114's queue (2 047 commands, 2.4 s on the wire)
+// after two short ones: the unit ran dry mid-chain at 12704,12000 (the bundled surface program,
+// 1 starvation stop and 1 brake violation at 1 and 8 ms).
+TEST(StreamPace, AChainAfterTheSpinUpIsFedFromItsStart)
+{
+    std::string program = "G21 G90 G17 G94 G64\nM3 S12000\nG0 Z-1\nG0 X30 Y30\nG1 Z-5 F300\nF3500\n";
+    char line[96];
+    for (int j = 0; j < 6000; ++j) {
+        const double x = 30 + 0.04 * (j % 1000 < 500 ? j % 500 : 500 - j % 500);
+        const double y = 30 + 0.5 * (j / 500);
+        std::snprintf(line, sizeof line, "G1 X%.4f Y%.4f Z%.4f\n", x, y,
+                      -3.6 - 0.2 * std::sin(x * 0.7));
+        program += line;
+    }
+    program += "G0 Z-1\nM5\nM2\n";
+    const auto loaded = frezka::machine::loadMachineConfig(std::string(FREZKA_SOURCE_DIR) +
+                                                           "/resources/machines/gve114.json");
+    ASSERT_TRUE(loaded.config);
+    for (const double ms : {1.0, 8.0}) {
+        SCOPED_TRACE(std::to_string(ms) + " ms");
+        RandomJob job;
+        job.config = *loaded.config;
+        job.config.link.latencyMs = ms;
+        job.wire.baud = job.config.link.baud;
+        job.wire.latencyS = ms / 1000.0;
+        job.program = program;
+        expectKeepsThePace(job);
+    }
+}
+
 // Issue 12's raster: 12 000 segments of 0.1 mm over a wavy surface at F12000, three times the
 // bundled GVE64 and GVE84 profiles' 4000 mm/min, at 1, 8 and 16 ms (tests/bench/link/overfeed.sh
 // runs the same through frezka-cli). Before the fixes it sent a V before nearly every vector and
