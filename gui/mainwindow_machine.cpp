@@ -290,7 +290,7 @@ void MainWindow::onState(const driver::MachineState &state)
     };
     m_outputs->showState(state.spindleOn, on(machine::OutputFunction::Coolant),
                          on(machine::OutputFunction::AirBlow), std::uint8_t(~state.outputs));
-    m_outputs->showFeedOverride(state.overridePercent);
+    m_outputs->showFeedOverride(state.overridePercent, state.overrideCeilingPercent);
     m_jog->setMpgOn(state.mpgOn);
     m_jog->setHomedAxes(state.homedAxes, isConnected(state.mode));
     m_connection->setText(connectionText(state));

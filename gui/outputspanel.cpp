@@ -49,8 +49,7 @@ OutputsPanel::OutputsPanel(QWidget *parent)
     m_feed->setPageStep(10);
     m_feedValue = new QLabel(QStringLiteral("100 %"), this);
     m_feedValue->setMinimumWidth(QFontMetrics(font()).horizontalAdvance(QStringLiteral("200 %")));
-    connect(m_feed, &QSlider::valueChanged, this,
-            [this](int v) { m_feedValue->setText(QStringLiteral("%1 %").arg(v)); });
+    connect(m_feed, &QSlider::valueChanged, this, [this](int v) { showFeedValue(v); });
     connect(m_feed, &QSlider::sliderReleased, this,
             [this] { emit feedOverrideRequested(m_feed->value()); });
     connect(m_feed, &QSlider::actionTriggered, this, [this](int action) {
@@ -128,13 +127,29 @@ void OutputsPanel::showState(bool spindleOn, bool coolantOn, bool airOn, std::ui
         b->setChecked(outputsOn & bit);
 }
 
-void OutputsPanel::showFeedOverride(int percent)
+void OutputsPanel::showFeedOverride(int percent, int linkPercent)
 {
+    m_linkPercent = linkPercent;
     if (m_feed->isSliderDown())
         return;
     const QSignalBlocker block(m_feed);
     m_feed->setValue(percent);
-    m_feedValue->setText(QStringLiteral("%1 %").arg(percent));
+    showFeedValue(percent);
+}
+
+// The operator's percentage, and beside it what the unit runs while the link cannot feed more.
+void OutputsPanel::showFeedValue(int percent)
+{
+    const bool held = m_linkPercent > 0 && m_linkPercent < percent;
+    m_feedValue->setText(held ? tr("%1 % (runs %2 %)").arg(percent).arg(m_linkPercent)
+                              : QStringLiteral("%1 %").arg(percent));
+    m_feedValue->setStyleSheet(held ? QStringLiteral("color: #b35900;") : QString());
+    m_feedValue->setToolTip(
+        held ? tr("The serial link cannot carry the program's motion at %1 %: the unit runs %2 % "
+                  "until the motion ahead is slow enough, so that it never runs dry.")
+                   .arg(percent)
+                   .arg(m_linkPercent)
+             : QString());
 }
 
 int OutputsPanel::feedOverride() const
@@ -165,6 +180,7 @@ void OutputsPanel::retranslate()
     m_feed->setToolTip(tr("Feed override in percent of the programmed feed (XM)"));
     m_feedUp->setToolTip(tr("Raise every queued speed by 6.25 % (XU)"));
     m_feedDown->setToolTip(tr("Lower every queued speed by 6.25 % (XD)"));
+    showFeedValue(m_feed->value());
 }
 
 } // namespace frezka::gui

@@ -27,7 +27,9 @@ public:
     void setExtraOutputs(const std::vector<std::pair<QString, std::uint8_t>> &outputs);
     // Reflects the unit's state without emitting requests.
     void showState(bool spindleOn, bool coolantOn, bool airOn, std::uint8_t outputsOn);
-    void showFeedOverride(int percent);
+    // linkPercent > 0: the link holds the unit at that override
+    // (MachineState::overrideCeilingPercent).
+    void showFeedOverride(int percent, int linkPercent = 0);
     int feedOverride() const;
     double spindleRpm() const;
 
@@ -44,7 +46,9 @@ protected:
 
 private:
     void retranslate();
+    void showFeedValue(int percent);
 
+    int m_linkPercent = 0;
     QPushButton *m_spindle, *m_coolant, *m_air;
     QDoubleSpinBox *m_rpm;
     QLabel *m_rpmLabel, *m_feedLabel, *m_feedValue;

@@ -2762,6 +2762,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Lower every queued speed by 6.25 % (XD)</source>
         <translation>Snížit všechny rychlosti ve frontě o 6,25 % (XD)</translation>
     </message>
+    <message>
+        <source>%1 % (runs %2 %)</source>
+        <translation>%1 % (běží %2 %)</translation>
+    </message>
+    <message>
+        <source>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</source>
+        <translation>Sériová linka nestačí přenášet pohyb programu při %1 %: jednotka běží na %2 %, dokud pohyb před ní není dost pomalý, aby se jí fronta nikdy nevyprázdnila.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::Plan</name>

@@ -2757,6 +2757,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Lower every queued speed by 6.25 % (XD)</source>
         <translation>Lower every queued speed by 6.25 % (XD)</translation>
     </message>
+    <message>
+        <source>%1 % (runs %2 %)</source>
+        <translation>%1 % (runs %2 %)</translation>
+    </message>
+    <message>
+        <source>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</source>
+        <translation>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::Plan</name>

@@ -503,6 +503,10 @@ void printReport(const Outcome &o, const machine::UnitProgram &program,
     }
     j[QStringLiteral("spindle_on_at_end")] =
         o.spindleOnAtEnd ? QJsonValue(*o.spindleOnAtEnd) : QJsonValue(QJsonValue::Null);
+    // The feed override the link could not feed was held down to this (null: never).
+    j[QStringLiteral("override_link_min")] = r.overrideLinkMinPercent
+                                                 ? QJsonValue(r.overrideLinkMinPercent)
+                                                 : QJsonValue(QJsonValue::Null);
     j[QStringLiteral("resent")] = static_cast<qint64>(r.resent);
     j[QStringLiteral("recovered")] = static_cast<qint64>(r.recovered);
     j[QStringLiteral("path_faults")] = static_cast<qint64>(r.pathFaults);

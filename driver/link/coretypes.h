@@ -50,6 +50,8 @@ struct JobReport
     std::int64_t returnMoves = 0; // L moves that took the machine back to the path
     double firstVectorAckS = -1;  // when the unit accepted the first / last motion command
     double lastVectorAckS = -1;
+    int overrideLinkMinPercent =
+        0;                 // the lowest XM the link held the operator's override to (0: never)
     bool finished = false; // reached ProgramEnd / the end of the program
     friend bool operator==(const JobReport &, const JobReport &) = default;
 };

@@ -78,6 +78,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     detail::setHold(state, HoldReason::None, {}, 0);
     state.lastError.reset();
     m_host.setMode(MachineMode::Running);
+    limitOverride();
     return std::nullopt;
 }
 
@@ -435,9 +436,45 @@ void Job::finish(bool ok)
     m_host.markDirty();
     if (state.mode == MachineMode::Running)
         m_host.setMode(MachineMode::Idle);
+    limitOverride(); // the operator's override again
     m_host.log(ok ? "job finished" : "job ended");
     m_host.publish(); // the final state before the news that the job ended
     m_host.jobFinished(ok);
+}
+
+int Job::overrideToSend(int asked) const
+{
+    if (!m_active || asked <= 100)
+        return asked;
+    // In steps of 5 %, raised again only two steps up: each XM is a round trip outside the
+    // packets, and the ceiling wavers by a step as the window moves (160/165 % in turn).
+    const int ceiling = m_pace.overrideCeiling() / 5 * 5;
+    const int sent = m_host.liveState().overrideSentPercent;
+    return std::min(asked, ceiling < sent || ceiling >= sent + 10 ? ceiling : sent);
+}
+
+void Job::limitOverride()
+{
+    MachineState &state = m_host.liveState();
+    if (!state.features.vlVkXmNa)
+        return;
+    const int want = overrideToSend(state.overridePercent);
+    const int held = want < state.overridePercent ? want : 0;
+    if (held > 0 && m_active)
+        m_report.overrideLinkMinPercent = m_report.overrideLinkMinPercent
+                                              ? std::min(m_report.overrideLinkMinPercent, held)
+                                              : held;
+    if (state.overrideCeilingPercent != held) {
+        state.overrideCeilingPercent = held;
+        m_host.markDirty();
+    }
+    if (want != state.overrideSentPercent) {
+        m_host.send(cmd::multiplier(want), [this](const Outcome &o) {
+            m_host.unitError(o, "keeping the feed override within the link (XM)",
+                             MachineMode::Alarm);
+        });
+        state.overrideSentPercent = want; // the reply confirms it (noteOutputsAccepted)
+    }
 }
 
 void Job::abandon()
@@ -447,6 +484,7 @@ void Job::abandon()
     m_streamBlocked = false;
     m_check.cancel();
     m_guard.clearFault();
+    limitOverride();
 }
 
 void Job::pollStarted(double now)
@@ -526,6 +564,7 @@ void Job::positionRead()
     // Vector i began that share of its time ago (a long plunge read half way holds half its
     // time, not all of it: the packet after it was sized to arrive when it had already ended).
     m_cursor.execAt = m_host.now() - (i < limit ? done * m_pace.runS(i, i + 1) : 0.0);
+    limitOverride();
 }
 
 // F answered RUN = 0: the unit's queue is empty, so every command accepted before F was sent

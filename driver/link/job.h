@@ -47,6 +47,11 @@ public:
     bool streaming(double now) const;
     // Commands are left to send and only the unit's full queue holds them back (if at all).
     bool feeding() const;
+    // The unit runs the operator's override only as far as the link can feed it: XM lowered to
+    // the pace's ceiling over what the unit holds and the next packets, raised again after.
+    void limitOverride();
+    // The XM to send for the operator's override: the pace's ceiling while a job streams.
+    int overrideToSend(int askedPercent) const;
     void streamStep(double now);
     double waitUntil() const { return m_waitUntil; }
     bool queueFullSeen() const { return m_queueFullSeen; }

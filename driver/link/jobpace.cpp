@@ -5,10 +5,12 @@
 #include "driver/link/corehost.h"
 #include "driver/link/coretypes.h"
 #include "driver/link/machinecore_internal.h"
+#include "machine/chainparts.h"
 #include "machine/unitmodel.h"
 #include "machine/unitwire.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace frezka::driver {
 
@@ -80,7 +82,7 @@ std::size_t JobPace::executingAtFull() const
 // the unit holds more than it does (XM scales cruise only; the motion is at most that slower).
 double JobPace::rate() const
 {
-    return std::max(1.0, m_host.liveState().overridePercent / 100.0);
+    return std::max(1.0, m_host.liveState().overrideSentPercent / 100.0);
 }
 
 double JobPace::runS(std::size_t from, std::size_t to) const
@@ -138,6 +140,32 @@ bool JobPace::wireBoundAhead() const
     const double wire =
         m_host.link().wireTime(static_cast<std::size_t>(m_bytePrefix[end] - m_bytePrefix[next]));
     return motion < wire + m_host.rttS();
+}
+
+int JobPace::overrideCeiling() const
+{
+    const std::size_t size = m_program.commands.size();
+    const std::size_t span = static_cast<std::size_t>(maxPacket());
+    const std::size_t from = std::min(m_cursor.exec, m_cursor.next);
+    const std::size_t last = std::min(size, m_cursor.next + span);
+    double ratio = kOverrideMaxPercent / 100.0;
+    for (std::size_t s = from; s < last && ratio > 1.0; ++s) {
+        const std::size_t e = std::min(size, s + span);
+        if (m_vectorPrefix[e] == m_vectorPrefix[s])
+            continue;
+        // XM scales cruise only: at p % the motion takes at least its 100 % time / p. The wire
+        // needs the planner's steady margin (packets sized to what the unit holds bring more
+        // than they cost only while t - w leaves 2 w RTT / t from kSteadyHeldS on: without it
+        // the packets shrank to two vectors and the unit ran dry at 131 %).
+        const double motion = m_timePrefix[e] - m_timePrefix[s];
+        const double bytes =
+            m_host.link().wireTime(static_cast<std::size_t>(m_bytePrefix[e] - m_bytePrefix[s]));
+        const double wire =
+            bytes * (1 + 2 * m_host.rttS() / machine::detail::LinkTiming::kSteadyHeldS) +
+            m_host.rttS();
+        ratio = std::min(ratio, motion / wire);
+    }
+    return std::clamp(static_cast<int>(std::floor(ratio * 100.0)), 100, kOverrideMaxPercent);
 }
 
 std::int64_t JobPace::queuedAfter(double ahead) const

@@ -64,6 +64,10 @@ public:
     std::int64_t queuedAfter(double aheadS) const;
     // The motion of the next queue-full runs faster than the wire can carry it.
     bool wireBoundAhead() const;
+    // The highest feed override (percent, at least 100) at which the wire still carries every
+    // queue-full of motion from the executing command to a queue-full past the next to send:
+    // XM scales speeds, so a stretch paced to the wire at 100 % runs dry above it.
+    int overrideCeiling() const;
     // Where a packet ends to keep polls at their rate where the motion is slow (next = no cap).
     std::size_t slowMotionPacketEnd() const;
     // The unit reported a full queue: the executing command is at most a queue-full back.

@@ -43,6 +43,8 @@ bool noteOutputsAccepted(MachineState &state, const protocol::Command &c,
     const auto changed = [&] {
         return was != std::make_tuple(state.outputs, state.spindlePermille, state.spindleOn);
     };
+    if (c.op == Op::Multiplier)
+        state.overrideSentPercent = static_cast<int>(c.args[0]);
     if (c.op == Op::SpindleSpeed && c.address == 7) {
         state.spindlePermille = static_cast<int>(c.args[0]);
         state.spindleRpm = config.spindle.maxRpm * static_cast<double>(c.args[0]) / 1000.0;

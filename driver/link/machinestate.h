@@ -129,9 +129,13 @@ struct MachineState
     std::uint8_t outputs = 0xFF; // port 0 (active low): bit0 OUT0, bit1 OUT3, bit2 OUT1, bit3 OUT2
     int spindlePermille = 0;     // last !7V (GVE84: as the buttons asked for it)
     double spindleRpm = 0;
-    bool spindleOn = false;   // the spindle turns: !7V > 0 with OUT0 on, or the GVE84's relay on
-    bool outputsHeld = false; // a hold switched the spindle / coolant off: they go on again first
-    int overridePercent = 100;
+    bool spindleOn = false;    // the spindle turns: !7V > 0 with OUT0 on, or the GVE84's relay on
+    bool outputsHeld = false;  // a hold switched the spindle / coolant off: they go on again first
+    int overridePercent = 100; // the operator's feed override (XM asked for)
+    // While a job streams: the override the unit runs because the link cannot feed the operator's
+    // over the unit's queue and the next packets (0 = the operator's; issue 14 item 5).
+    int overrideCeilingPercent = 0;
+    int overrideSentPercent = 100; // the last XM the unit accepted
     bool mpgOn = false;
 
     // job

@@ -83,10 +83,13 @@ std::optional<MachineError> UnitControls::setOverride(int percent)
                    ? refusal(DriverCode::OverrideNeedsFirmware,
                              {std::to_string(state().firmwareVersion)})
                    : refusal(DriverCode::NoOverride);
-    m_host.send(cmd::multiplier(percent), [this, percent](const Outcome &o) {
+    // During a job the unit runs it only as far as the link can feed it (Job::limitOverride).
+    const int sent = m_job.overrideToSend(percent);
+    m_host.send(cmd::multiplier(sent), [this, percent, sent](const Outcome &o) {
         if (m_host.unitError(o, "setting the feed override (XM)", MachineMode::Alarm))
             return;
         state().overridePercent = percent;
+        state().overrideCeilingPercent = sent < percent ? sent : 0;
         m_host.markDirty();
     });
     return std::nullopt;

@@ -217,6 +217,41 @@ TEST(StreamPace, AFeedOverrideAboveHundredKeepsTheUnitFed)
     }
 }
 
+// An override the wire cannot carry: 1 mm segments at F3000 on a GVE64 at 9 600 Bd, which the
+// plan paces to the wire at 100 %. XM200 doubled those speeds and the unit ran dry (1 stop and 1
+// brake violation, the job 34 % longer than at 100 %). The driver now lowers XM to what the link
+// can feed (Job::limitOverride), and the job takes no longer than at 100 %.
+TEST(StreamPace, AFeedOverrideIsKeptWithinWhatTheLinkCanFeed)
+{
+    std::string program = "G21 G90 G17 G94 G64\nG0 X10 Y10\nG1 Z-6 F300\nF3000\n";
+    char line[96];
+    for (int row = 0; row < 10; ++row) {
+        for (int j = 0; j < 60; ++j) {
+            const int t = row % 2 == 0 ? j : 60 - j;
+            std::snprintf(line, sizeof line, "G1 X%.4f Y%.4f\n", 10.0 + t,
+                          10 + row * 0.5 + 0.02 * (j % 2));
+            program += line;
+        }
+    }
+    program += "G0 Z-1\nM2\n";
+    RandomJob job;
+    job.config = frezka::machine::defaultMachineConfig(frezka::protocol::Variant::Gve64);
+    job.config.link.baud = 9600;
+    job.config.link.latencyMs = 8;
+    job.wire.baud = 9600;
+    job.wire.latencyS = 0.008;
+    job.program = program;
+    const JobOutcome plain = runJob(job);
+    ASSERT_TRUE(plain.wrong.empty()) << list(plain.wrong);
+    ASSERT_EQ(plain.starvationStops, 0) << list(plain.pace);
+    for (const int percent : {150, 200}) {
+        SCOPED_TRACE(std::to_string(percent) + " %");
+        job.overridePercent = percent;
+        expectKeepsThePace(job);
+        EXPECT_LE(runJob(job).jobS, plain.jobS * 1.01);
+    }
+}
+
 // The spindle's spin-up is a dwell on the PC side. The driver's estimate of the unit's queue
 // counted those seconds as motion run, took the unit for empty when the raster after it began,
 // and sent its first packet as long as the GVE114's queue (2 047 commands, 2.4 s on the wire)
@@ -224,7 +259,8 @@ TEST(StreamPace, AFeedOverrideAboveHundredKeepsTheUnitFed)
 // 1 starvation stop and 1 brake violation at 1 and 8 ms).
 TEST(StreamPace, AChainAfterTheSpinUpIsFedFromItsStart)
 {
-    std::string program = "G21 G90 G17 G94 G64\nM3 S12000\nG0 Z-1\nG0 X30 Y30\nG1 Z-5 F300\nF3500\n";
+    std::string program =
+        "G21 G90 G17 G94 G64\nM3 S12000\nG0 Z-1\nG0 X30 Y30\nG1 Z-5 F300\nF3500\n";
     char line[96];
     for (int j = 0; j < 6000; ++j) {
         const double x = 30 + 0.04 * (j % 1000 < 500 ? j % 500 : 500 - j % 500);

@@ -1,6 +1,7 @@
 // MachineCore on the in-process emulator (virtual clock): connect, stream, operations.
 
 #include "simfixture.h"
+#include "wiretap.h"
 
 #include "gcode/interpreter.h"
 #include "gcode/toolpath.h"
@@ -673,6 +674,54 @@ TEST(MachineCore, FeedOverrideIsCappedByTheAxisMaxima)
     EXPECT_TRUE(sim.finished.front()) << sim.lastLog();
     EXPECT_GT(peak, 10000.0) << "the job ran at speed";
     EXPECT_LE(peak, vl[0] * 1.02) << "X over its maximum with XM" << kOverrideMaxPercent;
+    EXPECT_EQ(sim.port.unit().position()[0], program.commands.back().endSteps[0]);
+}
+
+// An override the link cannot feed: 9 600 Bd carries a 120-step vector in about as long as the
+// unit runs it at 4 000 pulses/s, so XM200 would run the queue dry. The driver holds XM at what
+// the link can feed while the job streams, shows that ceiling beside the operator's 200 %, and
+// sends the operator's XM again when the job has ended.
+TEST(MachineCore, AnOverrideTheLinkCannotFeedIsHeldToWhatItCan)
+{
+    Sim sim(protocol::Variant::Gve64, WireOptions{.baud = 9600});
+    sim.config.link.baud = 9600;
+    sim.core.setConfig(sim.config);
+    WireTap tap(sim.port);
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    const auto program = denseProgram(400, 3, 4000, 4000, 300);
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil(
+        [&] { return sim.port.unit().stats().motion.vectorsExecuted > 20; }, 30));
+    const std::size_t before = tap.size();
+    ASSERT_FALSE(sim.core.setOverride(200, sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return sim.core.state().overridePercent == 200; }, 5));
+    int lowest = 0, highest = 0;
+    while (sim.finished.empty() && sim.runner.now() < 120) {
+        const driver::MachineState &s = sim.core.state();
+        EXPECT_EQ(s.overridePercent, 200) << "the operator's word is kept";
+        if (s.overrideCeilingPercent > 0) {
+            lowest = lowest ? std::min(lowest, s.overrideCeilingPercent) : s.overrideCeilingPercent;
+            highest = std::max(highest, s.overrideCeilingPercent);
+        }
+        sim.runner.runFor(0.05);
+    }
+    ASSERT_FALSE(sim.finished.empty()) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front()) << sim.lastLog();
+    EXPECT_GT(lowest, 100) << "the link feeds more than 100 % here";
+    EXPECT_LT(highest, 200) << "the link cannot feed XM200 here";
+    const auto xm = tap.matching("!0XM", before);
+    ASSERT_GE(xm.size(), 2u);
+    for (std::size_t i = 0; i + 1 < xm.size(); ++i) {
+        const int percent = std::stoi(xm[i].substr(4));
+        EXPECT_GE(percent, lowest) << xm[i];
+        EXPECT_LE(percent, highest) << xm[i];
+    }
+    EXPECT_LE(xm.size(), 8u) << "XM follows the ceiling without a command storm";
+    sim.runner.runFor(0.5);
+    EXPECT_EQ(tap.matching("!0XM", before).back(), "!0XM200") << "the operator's XM after the job";
+    EXPECT_EQ(sim.core.state().overrideCeilingPercent, 0);
+    EXPECT_EQ(sim.port.unit().stats().motion.starvationStops, 0);
+    EXPECT_EQ(sim.port.unit().stats().motion.brakeViolations, 0);
     EXPECT_EQ(sim.port.unit().position()[0], program.commands.back().endSteps[0]);
 }
 
