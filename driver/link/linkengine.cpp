@@ -177,7 +177,9 @@ void LinkEngine::sendAux(const Command &c, State next, double now)
     const std::string bytes = encode(c, m_checksums);
     m_out += bytes;
     m_stats.bytesOut += static_cast<std::int64_t>(bytes.size());
-    log(LinkLogKind::Recovery, encodeBody(c));
+    // Learning the index before the first command is routine, not a recovery: logged as sent.
+    log(m_presync && m_state != State::Settle ? LinkLogKind::Sent : LinkLogKind::Recovery,
+        encodeBody(c));
     m_state = next;
     m_deadline = now + timeoutFor(c, bytes.size(), now);
 }
@@ -290,7 +292,10 @@ void LinkEngine::onIndexReply(const Line &line, double now)
         return;
     }
     const int unitIndex = static_cast<int>(*reply->decimal());
-    log(LinkLogKind::Recovery, "index " + std::to_string(unitIndex));
+    if (m_presync)
+        log(LinkLogKind::Received, line.text);
+    else
+        log(LinkLogKind::Recovery, "index " + std::to_string(unitIndex));
     if (m_presync) {
         m_presync = false;
         m_index = m_indexBefore = unitIndex;

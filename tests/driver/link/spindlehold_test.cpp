@@ -3,6 +3,7 @@
 // and by what the emulated unit did (its spindle, outputs, counters and safety counters).
 
 #include "simfixture.h"
+#include "wiretap.h"
 
 #include "gcode/interpreter.h"
 #include "machine/planner.h"
@@ -281,6 +282,98 @@ TEST(SpindleHold, ProgramStopFollowsTheProfile)
     w.sim.runner.runFor(1);
     EXPECT_TRUE(w.unit().spindleTurning());
     EXPECT_EQ(w.find("!7V0"), std::string::npos);
+}
+
+// With the shipped profile (spindle.stopAtProgramStop on), M0 switches the spindle off on the
+// wire, and Continue switches it on again and waits its spin-up before the next cut.
+TEST(SpindleHold, ProgramStopSwitchesTheSpindleOffByDefault)
+{
+    Wire w;
+    ASSERT_TRUE(w.sim.config.spindle.stopAtProgramStop);
+    const UnitProgram program = planText(
+        "G21 G90\nM3 S12000\nG0 X10 Y10\nG0 Z-1\nM0\nG1 X20 F600\nG0 Z0\nM5\nM2\n", w.sim.config);
+    ASSERT_TRUE(w.sim.connect());
+    ASSERT_FALSE(w.sim.core.run(program, w.sim.runner.now()));
+    ASSERT_TRUE(w.until([&] {
+        return w.state().hold == HoldReason::OperatorStop && !w.state().spindleOn;
+    })) << w.sim.lastLog();
+    EXPECT_NE(w.find("!7V0"), std::string::npos) << "M0 switches the spindle off on the wire";
+    EXPECT_FALSE(w.unit().spindleTurning());
+    w.sim.runner.runFor(3);
+    const std::size_t before = w.sent.size();
+    ASSERT_FALSE(w.sim.core.resume(w.sim.runner.now()));
+    ASSERT_TRUE(w.until([&] { return w.unit().position()[0] > 2400; })) << w.sim.lastLog();
+    const std::size_t on = w.find("!7V500", before);
+    ASSERT_NE(on, std::string::npos);
+    // The first command after the spin-up that is not a poll: the job's next motion.
+    std::size_t cut = on + 1;
+    while (cut < w.sent.size() && (w.sent[cut].text == "!0P4" || w.sent[cut].text == "!0F" ||
+                                   w.sent[cut].text.rfind("!0I", 0) == 0))
+        ++cut;
+    ASSERT_LT(cut, w.sent.size());
+    EXPECT_LT(on, cut);
+    EXPECT_GE(w.sent[cut].t - w.sent[on].t, kSpinUpS)
+        << "the cut only once the spindle is at speed";
+    w.expectCleanEnd(program);
+}
+
+// Lift and Lower at an M6 hold: the spindle M6 switched off stays off while the tool is up and
+// comes on at its speed, spun up, before Z goes down into the work; the job then ends exact.
+TEST(SpindleHold, LowerAfterAToolChangeSpinsUpBeforeTheToolGoesDown)
+{
+    Wire w;
+    const UnitProgram program =
+        planText("G21 G90\nM3 S12000\nG0 X10 Y10\nG1 Z-10 F600\nG1 X30 F600\nT2 M6\n"
+                 "G1 X10 F600\nG0 Z0\nM5\nM2\n",
+                 w.sim.config);
+    ASSERT_TRUE(w.sim.connect());
+    ASSERT_FALSE(w.sim.core.run(program, w.sim.runner.now()));
+    ASSERT_TRUE(w.until([&] {
+        return w.state().mode == MachineMode::Paused && w.state().hold == HoldReason::OperatorStop;
+    })) << w.sim.lastLog();
+    ASSERT_FALSE(w.sim.core.toolLift(true, w.sim.runner.now())) << w.sim.lastLog();
+    ASSERT_TRUE(w.until([&] { return w.state().mode == MachineMode::ToolLifted; }))
+        << w.sim.lastLog();
+    EXPECT_FALSE(w.unit().spindleTurning());
+    w.sim.runner.runFor(5);
+    EXPECT_FALSE(w.unit().spindleTurning()) << "off while the tool is changed";
+    const std::size_t lower = w.sent.size();
+    ASSERT_FALSE(w.sim.core.toolLower(0, w.sim.runner.now()));
+    ASSERT_TRUE(w.until([&] { return w.state().mode == MachineMode::Paused; })) << w.sim.lastLog();
+    const std::size_t on = w.find("!7V500", lower);
+    const std::size_t down = w.find("!0L0,0,-", lower);
+    ASSERT_NE(on, std::string::npos);
+    ASSERT_NE(down, std::string::npos);
+    EXPECT_LT(on, down);
+    EXPECT_GE(w.sent[down].t - w.sent[on].t, kSpinUpS) << "Z goes down only at speed";
+    ASSERT_FALSE(w.sim.core.resume(w.sim.runner.now()));
+    w.expectCleanEnd(program);
+}
+
+// On a clean link the driver asks the unit for its command index (@) once, before the first
+// command, and logs it as an ordinary command (the console showed it as a recovery); none follow
+// through a pause, a tool lift, the lowering and the resume (one resume once logged 858).
+TEST(SpindleHold, ACleanLinkNeedsNoIndexQueriesThroughALift)
+{
+    Wire w;
+    WireTap tap(w.sim.port);
+    const UnitProgram program = planText(kCut, w.sim.config);
+    w.startCut(program);
+    EXPECT_EQ(tap.matching("!0@").size(), 1u) << "the index is learnt once, on connecting";
+    for (const std::string &line : w.sim.log)
+        EXPECT_NE(line.rfind("! ", 0), 0u) << "a recovery logged on a clean link: " << line;
+    ASSERT_FALSE(w.sim.core.pause(w.sim.runner.now(), true));
+    ASSERT_TRUE(w.until([&] { return w.state().mode == MachineMode::Paused; }));
+    ASSERT_FALSE(w.sim.core.toolLift(true, w.sim.runner.now()));
+    ASSERT_TRUE(w.until([&] { return w.state().mode == MachineMode::ToolLifted; }));
+    ASSERT_FALSE(w.sim.core.toolLower(0, w.sim.runner.now()));
+    ASSERT_TRUE(w.until([&] { return w.state().mode == MachineMode::Paused; })) << w.sim.lastLog();
+    ASSERT_FALSE(w.sim.core.resume(w.sim.runner.now()));
+    w.expectCleanEnd(program);
+    EXPECT_GT(tap.matching("!0R").size(), 0u) << "the tap reads the wire";
+    EXPECT_EQ(tap.matching("!0@").size(), 1u) << "index queries on a clean link";
+    for (const std::string &line : w.sim.log)
+        EXPECT_NE(line.rfind("! ", 0), 0u) << "a recovery logged on a clean link: " << line;
 }
 
 } // namespace
