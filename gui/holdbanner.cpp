@@ -86,8 +86,8 @@ void HoldBanner::showHold(Kind kind, int line, const QString &detail)
     m_stopSpindle->setVisible(held && kind != Kind::PathFault);
     m_lowerContinue->setVisible(lifted);
     m_lowerOnly->setVisible(lifted);
-    m_feedLabel->setVisible(lifted);
-    m_feed->setVisible(lifted);
+    m_feedLabel->setVisible(lifted && m_newFeed);
+    m_feed->setVisible(lifted && m_newFeed);
     retranslate();
 }
 
@@ -119,6 +119,15 @@ void HoldBanner::setStopSpindle(bool on)
 double HoldBanner::newFeedMmPerMin() const
 {
     return m_feed->value();
+}
+
+void HoldBanner::setNewFeedAvailable(bool available)
+{
+    m_newFeed = available;
+    m_feedLabel->setVisible(available && m_lowerOnly->isVisibleTo(this));
+    m_feed->setVisible(available && m_lowerOnly->isVisibleTo(this));
+    if (!available)
+        m_feed->setValue(0);
 }
 
 void HoldBanner::setNewFeedMmPerMin(double feed)
@@ -193,6 +202,7 @@ void HoldBanner::retranslate()
         tr("While the job is held: the spindle and coolant off (ticked) or on again (unticked). "
            "Ticked, a pause stops them as soon as the machine stands."));
     m_feedLabel->setText(tr("New feed (0 = unchanged):"));
+    m_feed->setToolTip(tr("The feed from here on, as the feed override for the rest of the job"));
     m_continue->setText(tr("Continue"));
     m_lift->setText(tr("Lift tool"));
     m_lowerContinue->setText(tr("Lower and continue"));

@@ -34,6 +34,8 @@ public:
     // New feed for the rest of the job, mm/min; 0 = unchanged.
     double newFeedMmPerMin() const;
     void setNewFeedMmPerMin(double feed);
+    // A new feed needs XM (it is the override for the rest of the job): hidden on units without.
+    void setNewFeedAvailable(bool available);
 
 signals:
     void continueRequested();
@@ -55,6 +57,7 @@ private:
     QString m_detail;
     bool m_spindleOn = false;
     bool m_heldOff = false;
+    bool m_newFeed = true;
     double m_spinUpS = 0;
     QLabel *m_title, *m_text, *m_spindle, *m_feedLabel;
     QCheckBox *m_stopSpindle;

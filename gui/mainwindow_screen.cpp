@@ -129,6 +129,7 @@ void MainWindow::updateHold(const driver::MachineState &state)
         }
     }
     m_hold->setOutputs(state.spindleOn, state.outputsHeld, profile().spindle.spinUpMs / 1000.0);
+    m_hold->setNewFeedAvailable(state.features.vlVkXmNa);
     const int line = kind == K::None ? 0 : int(shownLine(state));
     const QString detail = kind == K::None ? QString() : holdDetail(state);
     if (kind == m_hold->kind() && line == m_holdLine && detail == m_holdDetail)

@@ -1101,6 +1101,22 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>Keep clear of the tool.</source>
         <translation>Nesahejte k nástroji.</translation>
     </message>
+    <message>
+        <source>This unit has no axis speed limits (VL): above 100 % an axis could run over its maximum</source>
+        <translation>Tato jednotka nemá omezení rychlosti os (VL): nad 100 % by osa mohla překročit svou maximální rychlost</translation>
+    </message>
+    <message>
+        <source>Raise the feed in the program instead.</source>
+        <translation>Zvyšte raději posuv v programu.</translation>
+    </message>
+    <message>
+        <source>This unit has no XM: a new feed would change only the queued vectors</source>
+        <translation>Tato jednotka nemá XM: nový posuv by změnil jen vektory ve frontě</translation>
+    </message>
+    <message>
+        <source>Lower the tool with the feed unchanged, then use the feed buttons (XD), which change the rest of the job.</source>
+        <translation>Spusťte nástroj bez změny posuvu a pak použijte tlačítka posuvu (XD), která změní celý zbytek práce.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>
@@ -2408,6 +2424,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>While the job is held: the spindle and coolant off (ticked) or on again (unticked). Ticked, a pause stops them as soon as the machine stands.</source>
         <translation>Během zastavené úlohy: vřeteno a chlazení vypnout (zaškrtnuto) nebo znovu zapnout (nezaškrtnuto). Zaškrtnuto: pauza je vypne, jakmile stroj stojí.</translation>
+    </message>
+    <message>
+        <source>The feed from here on, as the feed override for the rest of the job</source>
+        <translation>Posuv od tohoto místa, jako korekce posuvu pro zbytek práce</translation>
     </message>
 </context>
 <context>

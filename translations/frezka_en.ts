@@ -1101,6 +1101,22 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>Keep clear of the tool.</source>
         <translation>Keep clear of the tool.</translation>
     </message>
+    <message>
+        <source>This unit has no axis speed limits (VL): above 100 % an axis could run over its maximum</source>
+        <translation>This unit has no axis speed limits (VL): above 100 % an axis could run over its maximum</translation>
+    </message>
+    <message>
+        <source>Raise the feed in the program instead.</source>
+        <translation>Raise the feed in the program instead.</translation>
+    </message>
+    <message>
+        <source>This unit has no XM: a new feed would change only the queued vectors</source>
+        <translation>This unit has no XM: a new feed would change only the queued vectors</translation>
+    </message>
+    <message>
+        <source>Lower the tool with the feed unchanged, then use the feed buttons (XD), which change the rest of the job.</source>
+        <translation>Lower the tool with the feed unchanged, then use the feed buttons (XD), which change the rest of the job.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>
@@ -2407,6 +2423,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>While the job is held: the spindle and coolant off (ticked) or on again (unticked). Ticked, a pause stops them as soon as the machine stands.</source>
         <translation>While the job is held: the spindle and coolant off (ticked) or on again (unticked). Ticked, a pause stops them as soon as the machine stands.</translation>
+    </message>
+    <message>
+        <source>The feed from here on, as the feed override for the rest of the job</source>
+        <translation>The feed from here on, as the feed override for the rest of the job</translation>
     </message>
 </context>
 <context>

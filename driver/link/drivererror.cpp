@@ -133,6 +133,17 @@ constexpr CodeInfo kCodes[] = {
     {C::JogTooShort, "JogTooShort",
      QT_TRANSLATE_NOOP("frezka::driver", "The jog is shorter than one step"),
      QT_TRANSLATE_NOOP("frezka::driver", "Choose a larger jog step.")},
+    {C::OverrideAboveWithoutVl, "OverrideAboveWithoutVl",
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "This unit has no axis speed limits (VL): above 100 % an axis could run "
+                       "over its maximum"),
+     QT_TRANSLATE_NOOP("frezka::driver", "Raise the feed in the program instead.")},
+    {C::NewFeedNeedsXm, "NewFeedNeedsXm",
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "This unit has no XM: a new feed would change only the queued vectors"),
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "Lower the tool with the feed unchanged, then use the feed buttons (XD), "
+                       "which change the rest of the job.")},
     {C::ToolStillMoving, "ToolStillMoving",
      QT_TRANSLATE_NOOP("frezka::driver", "The lifted tool is still moving"),
      QT_TRANSLATE_NOOP("frezka::driver", "Wait until it stands, then try again.")},

@@ -55,6 +55,8 @@ enum class DriverCode : std::uint16_t {
     JogBeyondLimits = 131,        // %1 target mm, %2 soft minimum, %3 soft maximum
     JogTooShort = 132,            //
     ToolStillMoving = 133,        //
+    OverrideAboveWithoutVl = 134, //
+    NewFeedNeedsXm = 135,         //
     // The unit and the link (2xx)
     UnitAnswered = 200,       // %1 the action, %2 the unit's reply
     LinkFailed = 201,         // %1 the action, %2 why

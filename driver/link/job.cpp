@@ -40,7 +40,24 @@ Job::Job(CoreHost &host)
 // The one mapping of machine/unitwire.h (shared with the plan CLI). PC-side ops are never sent.
 Command Job::toCommand(const machine::UnitCommand &c) const
 {
+    if (c.op == machine::UnitOp::Speed && m_speedScale != 1.0) {
+        machine::UnitCommand scaled = c;
+        scaled.value =
+            std::clamp<std::int64_t>(std::llround(static_cast<double>(c.value) * m_speedScale), 10,
+                                     m_host.config().unit.maxPulseRate);
+        return machine::wireCommand(scaled, m_program.axisCount).value_or(cmd::flag());
+    }
     return machine::wireCommand(c, m_program.axisCount).value_or(cmd::flag());
+}
+
+std::int64_t Job::plannedSpeedNow() const
+{
+    const std::size_t from = std::min(m_cursor.exec, m_program.commands.size());
+    for (std::size_t i = from + 1; i-- > 0;) {
+        if (i < m_program.commands.size() && m_program.commands[i].op == machine::UnitOp::Speed)
+            return m_program.commands[i].value;
+    }
+    return 0;
 }
 
 std::optional<MachineError> Job::start(machine::UnitProgram program, double now)

@@ -52,6 +52,12 @@ public:
     void limitOverride();
     // The XM to send for the operator's override: the pace's ceiling while a job streams.
     int overrideToSend(int askedPercent) const;
+    // Units without XM: XU/XD change the queued speeds only, so the job scales every V it
+    // streams after them by the same factor (the operator's override, exact; 1 = as planned).
+    void setSpeedScale(double scale) { m_speedScale = scale; }
+    double speedScale() const { return m_speedScale; }
+    // The planned V (pulses/s) in effect at the command the unit executes (0: none yet).
+    std::int64_t plannedSpeedNow() const;
     void streamStep(double now);
     double waitUntil() const { return m_waitUntil; }
     bool queueFullSeen() const { return m_queueFullSeen; }
@@ -107,6 +113,7 @@ private:
     std::int64_t m_resentAtStart = 0;
     std::int64_t m_recoveredAtStart = 0;
     JobPace m_pace;
+    double m_speedScale = 1.0;
     ProgressCheck m_check;
     PathGuard m_guard;
     ProbeMove m_probe;

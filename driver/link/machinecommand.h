@@ -51,8 +51,9 @@ struct ToolLift
     bool stopSpindle = true; // the operator's box, for the log; the lift stops the spindle anyway
     friend bool operator==(const ToolLift &, const ToolLift &) = default;
 };
-// Spindle and coolant on again (the spin-up waited), back to the lift point, Z down, R, optional
-// new speed (V + XA) when speedPulsesPerS > 0.
+// Spindle and coolant on again (the spin-up waited), back to the lift point, Z down, R; a new
+// feed when speedPulsesPerS > 0: the feed override (XM) from here on, that speed over the
+// planned one at the tool (units with XM only).
 struct ToolLower
 {
     int speedPulsesPerS = 0;

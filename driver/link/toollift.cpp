@@ -1,4 +1,4 @@
-// ToolLift: K, L up, spindle off, [hand moves], spindle on, back, L down, R, [V, XA] in a held
+// ToolLift: K, L up, spindle off, [hand moves], spindle on, back, L down, R, [XM] in a held
 // job. See toollift.h.
 
 #include "toollift.h"
@@ -141,15 +141,26 @@ std::optional<MachineError> ToolLift::lower(int speedPulsesPerS)
         return notNow("Lowering the tool", state().mode);
     if (m_moving)
         return refusal(DriverCode::ToolStillMoving);
+    // A new feed is the feed override from here on (XM, for the rest of the job as the window
+    // shows it): XA after V would change only the queued vectors, and set them all to one speed.
+    int newPercent = 0;
     if (speedPulsesPerS > 0) {
         if (auto bad = validate(cmd::speed(speedPulsesPerS), config.unit.variant,
                                 config.unit.maxPulseRate))
             return refusal(DriverCode::SpeedInvalid, {bad.message});
+        if (!state().features.vlVkXmNa)
+            return refusal(DriverCode::NewFeedNeedsXm);
+        const std::int64_t planned = m_job.plannedSpeedNow();
+        if (planned <= 0)
+            return refusal(DriverCode::SpeedInvalid, {"no planned speed here"});
+        newPercent = std::clamp(
+            static_cast<int>(std::lround(100.0 * speedPulsesPerS / static_cast<double>(planned))),
+            kOverrideMinPercent, kOverrideMaxPercent);
     }
     m_host.setMode(MachineMode::Stopping);
     detail::setHold(state(), state().hold, {DriverCode::HoldToolLowering}, state().holdLine);
     // The spindle at speed before anything moves toward the work again.
-    m_spindle.restore([this, speedPulsesPerS] {
+    m_spindle.restore([this, overridePercent = newPercent] {
         if (!m_active)
             return;
         const machine::Steps4 from = state().positionSteps;
@@ -171,27 +182,27 @@ std::optional<MachineError> ToolLift::lower(int speedPulsesPerS)
             });
             m_jogged = true;
         }
-        moveBack(0, speedPulsesPerS);
+        moveBack(0, overridePercent);
     });
     return std::nullopt;
 }
 
 // Each L from rest to rest, then the counters must read the lift point exactly.
-void ToolLift::moveBack(std::size_t k, int speedPulsesPerS)
+void ToolLift::moveBack(std::size_t k, int overridePercent)
 {
     if (!m_active)
         return;
     if (k < m_moves.size()) {
         m_host.send(
-            lineFor(m_moves[k], state().axisCount), [this, k, speedPulsesPerS](const Outcome &o) {
+            lineFor(m_moves[k], state().axisCount), [this, k, overridePercent](const Outcome &o) {
                 if (!m_active ||
                     m_host.unitError(o, "moving back to the lift point", MachineMode::Alarm))
                     return;
-                m_host.afterIdle([this, k, speedPulsesPerS] { moveBack(k + 1, speedPulsesPerS); });
+                m_host.afterIdle([this, k, overridePercent] { moveBack(k + 1, overridePercent); });
             });
         return;
     }
-    m_host.whenStill([this, speedPulsesPerS] {
+    m_host.whenStill([this, overridePercent] {
         if (!m_active)
             return;
         for (int a = 0; a < state().axisCount; ++a) {
@@ -205,45 +216,42 @@ void ToolLift::moveBack(std::size_t k, int speedPulsesPerS)
             }
         }
         if (!m_jogged) {
-            down(speedPulsesPerS);
+            down(overridePercent);
             return;
         }
         // A hand move set its own V: the job's speed settings again before its queue runs on.
         m_jogged = false;
-        m_job.progress().resendModals([this, speedPulsesPerS] { down(speedPulsesPerS); });
+        m_job.progress().resendModals([this, overridePercent] { down(overridePercent); });
     });
 }
 
-void ToolLift::down(int speedPulsesPerS)
+void ToolLift::down(int overridePercent)
 {
     if (!m_active)
         return;
     const Command l = lineFor({0, 0, -m_liftSteps, 0}, state().axisCount);
-    m_host.send(l, [this, speedPulsesPerS](const Outcome &o) {
+    m_host.send(l, [this, overridePercent](const Outcome &o) {
         if (!m_active || m_host.unitError(o, "lowering the tool", MachineMode::Alarm))
             return;
-        m_host.afterIdle([this, speedPulsesPerS] {
+        m_host.afterIdle([this, overridePercent] {
             if (!m_active)
                 return;
-            m_host.sendFront(cmd::restore(), [this, speedPulsesPerS](const Outcome &r) {
+            m_host.sendFront(cmd::restore(), [this, overridePercent](const Outcome &r) {
                 if (m_host.unitError(r, "restoring the queue (R)", MachineMode::Alarm))
                     return;
                 m_kept = false;
-                restored(speedPulsesPerS);
+                restored(overridePercent);
             });
         });
     });
 }
 
-void ToolLift::restored(int speedPulsesPerS)
+void ToolLift::restored(int overridePercent)
 {
-    if (speedPulsesPerS > 0) {
-        m_host.send(cmd::speed(speedPulsesPerS), [this](const Outcome &v) {
-            m_host.unitError(v, "setting the new speed", MachineMode::Alarm);
-        });
-        m_host.send(cmd::exchangeAll(), [this](const Outcome &x) {
-            m_host.unitError(x, "applying the new speed (XA)", MachineMode::Alarm);
-        });
+    if (overridePercent > 0) {
+        state().overridePercent = overridePercent;
+        m_job.limitOverride(); // XM, within what the link can feed
+        m_host.markDirty();
     }
     m_host.send(cmd::flag(), [this](const Outcome &f) {
         if (m_host.unitError(f, "status", MachineMode::Alarm))

@@ -49,6 +49,8 @@ public:
     // coolant go off for a lifted tool in any case.
     std::optional<MachineError> lift(bool stopSpindle);
     std::optional<MachineError> jog(int axis, double distanceMm, double speedMmPerMin);
+    // speedPulsesPerS > 0: the operator's new feed, applied as the override for the rest of the
+    // job.
     std::optional<MachineError> lower(int speedPulsesPerS);
     bool active() const { return m_active; }
     bool kept() const { return m_kept; }
@@ -58,9 +60,10 @@ public:
 private:
     MachineState &state();
     void lifted();
-    void moveBack(std::size_t k, int speedPulsesPerS);
-    void down(int speedPulsesPerS);
-    void restored(int speedPulsesPerS);
+    // overridePercent > 0: the operator's new feed, as the override from here on.
+    void moveBack(std::size_t k, int overridePercent);
+    void down(int overridePercent);
+    void restored(int overridePercent);
     int handSpeed(double mmPerMin) const; // pulses/s, at most the slowest axis's maximum
 
     CoreHost &m_host;

@@ -104,13 +104,20 @@ std::optional<MachineError> UnitControls::overrideStep(bool up)
         return setOverride(std::clamp(static_cast<int>(std::lround(next)), kOverrideMinPercent,
                                       kOverrideMaxPercent));
     }
-    m_host.send(up ? cmd::exchangeUp() : cmd::exchangeDown(), [this, up](const Outcome &o) {
+    // Without VL nothing keeps an axis under its maximum above the planned speeds.
+    const double scale = m_job.speedScale() * (up ? 17.0 : 15.0) / 16.0;
+    if (up && scale > 1.0 + 1e-9)
+        return refusal(DriverCode::OverrideAboveWithoutVl);
+    if (scale * 100.0 < kOverrideMinPercent)
+        return std::nullopt; // at the slider's bottom already
+    m_host.send(up ? cmd::exchangeUp() : cmd::exchangeDown(), [this, up, scale](const Outcome &o) {
         if (m_host.unitError(o, up ? "raising queued speeds (XU)" : "lowering queued speeds (XD)",
                              MachineMode::Alarm))
             return;
-        // XU/XD change the queued vectors by 1/16 of their speed; shown as an approximation.
-        state().overridePercent =
-            static_cast<int>(std::lround(state().overridePercent * (up ? 17.0 : 15.0) / 16.0));
+        // XU/XD change the queued vectors by 1/16 of their speed; the job streams every later V
+        // scaled alike, so the whole rest of the job runs at the percentage shown.
+        m_job.setSpeedScale(scale);
+        state().overridePercent = static_cast<int>(std::lround(scale * 100.0));
         m_host.markDirty();
     });
     return std::nullopt;

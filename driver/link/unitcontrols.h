@@ -23,7 +23,7 @@ class Job;
 class UnitControls
 {
 public:
-    UnitControls(CoreHost &host, const Job &job)
+    UnitControls(CoreHost &host, Job &job)
         : m_host(host)
         , m_job(job)
     {}
@@ -40,7 +40,7 @@ private:
     MachineState &state();
 
     CoreHost &m_host;
-    const Job &m_job;
+    Job &m_job;
 };
 
 } // namespace frezka::driver

@@ -133,6 +133,107 @@ TEST(MachineCore, ToolLiftKeepRestoreEndsExact)
     EXPECT_EQ(sim.port.unit().stats().motion.vectorsExecuted, 300 + 2); // + lift and lower
 }
 
+// X steps a second over `seconds` of the emulator's time (the job's vectors run along X).
+double xRate(Sim &sim, double seconds)
+{
+    const auto from = sim.port.unit().position()[0];
+    sim.runner.runFor(seconds);
+    return static_cast<double>(sim.port.unit().position()[0] - from) / seconds;
+}
+
+// A new feed given when the tool is lowered is the feed override from there on (issue 14): XM
+// on the wire, no XA (which set only the queued vectors, all to one speed, and let the vectors
+// streamed after them run at the planned speed again while the window showed the new one).
+TEST(MachineCore, ANewFeedAfterALiftHoldsForTheRestOfTheJob)
+{
+    Sim sim;
+    WireTap tap(sim.port);
+    ASSERT_TRUE(sim.connect());
+    const auto program = slowProgram(300); // X 400 steps a vector at V4000
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    sim.runner.runFor(3.0);
+    EXPECT_NEAR(xRate(sim, 1.0), 4000, 200);
+    ASSERT_FALSE(sim.core.pause(sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Paused));
+    ASSERT_FALSE(sim.core.toolLift(false, sim.runner.now())) << sim.lastLog();
+    ASSERT_TRUE(sim.until(MachineMode::ToolLifted)) << sim.lastLog();
+    const std::size_t lower = tap.size();
+    ASSERT_FALSE(sim.core.toolLower(2000, sim.runner.now()));
+    ASSERT_TRUE(sim.until(MachineMode::Paused)) << sim.lastLog();
+    EXPECT_EQ(sim.core.state().overridePercent, 50);
+    EXPECT_EQ(tap.matching("!0XA", lower).size(), 0u);
+    ASSERT_EQ(tap.matching("!0XM", lower).size(), 1u);
+    EXPECT_EQ(tap.matching("!0XM", lower)[0], "!0XM50");
+    ASSERT_FALSE(sim.core.resume(sim.runner.now())) << sim.lastLog();
+    sim.runner.runFor(1.0);
+    EXPECT_NEAR(xRate(sim, 1.0), 2000, 100) << "the queued vectors at the new feed";
+    sim.runner.runFor(8.0); // well past what the unit held when the tool was lowered
+    EXPECT_NEAR(xRate(sim, 1.0), 2000, 100) << "the vectors streamed later at the new feed too";
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 600)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front());
+    expectAt(sim, endOf(program));
+    EXPECT_EQ(sim.core.state().overridePercent, 50) << "the window shows what the unit runs";
+}
+
+// A program whose V changes after more than the GVE64's queue holds: 500 vectors at V3000, then
+// 150 at V4000.
+machine::UnitProgram twoSpeedProgram()
+{
+    ProgramBuilder b(3);
+    b.add(machine::UnitOp::Accel, 200);
+    b.add(machine::UnitOp::Brake, 4000);
+    for (const auto [v, n] : {std::pair{3000, 500}, std::pair{4000, 150}}) {
+        b.add(machine::UnitOp::Speed, v);
+        for (int i = 0; i < n; ++i)
+            b.add(machine::UnitOp::Vector, 0, {400, 0, 0, 0}, static_cast<std::uint32_t>(10 + i));
+    }
+    b.add(machine::UnitOp::ProgramEnd, 0);
+    return b.program;
+}
+
+// A unit without XM (GVE64 before v19): XD lowers only the queued speeds, so the driver streams
+// every later V lowered alike and the percentage shown is what the rest of the job runs; above 100
+// % nothing would keep the axes under their maxima (no VL), so XU stops there; a new feed at the
+// tool's lowering is refused with the reason.
+TEST(MachineCore, OverrideStepsWithoutXmHoldForTheRestOfTheJob)
+{
+    Sim sim(protocol::Variant::Gve64, {}, {}, false, "IP64MPG v18 1.2.2010");
+    sim.config.unit.firmwareVersion = 18;
+    sim.core.setConfig(sim.config);
+    WireTap tap(sim.port);
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    ASSERT_FALSE(sim.core.state().features.vlVkXmNa);
+    const auto refusedUp = sim.core.overrideStep(true, sim.runner.now());
+    ASSERT_TRUE(refusedUp.has_value());
+    EXPECT_EQ(refusedUp->reason.code, DriverCode::OverrideAboveWithoutVl);
+    const auto program = twoSpeedProgram();
+    ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
+    sim.runner.runFor(2.0);
+    EXPECT_NEAR(xRate(sim, 1.0), 3000, 150);
+    const std::size_t before = tap.size();
+    for (int i = 0; i < 2; ++i) {
+        ASSERT_FALSE(sim.core.overrideStep(false, sim.runner.now())) << sim.lastLog();
+        sim.runner.runFor(0.2);
+    }
+    EXPECT_EQ(tap.matching("!0XD", before).size(), 2u);
+    EXPECT_EQ(sim.core.state().overridePercent, 88); // (15/16)^2 = 87.9 %
+    EXPECT_NEAR(xRate(sim, 1.0), 3000 * 225.0 / 256.0, 150);
+    // The second V is streamed after the XD: lowered alike (4000 x 225/256 = 3516).
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !tap.matching("!0V", before).empty(); }, 300));
+    EXPECT_EQ(tap.matching("!0V", before)[0], "!0V3516");
+    ASSERT_TRUE(
+        sim.runner.runUntil([&] { return sim.port.unit().position()[0] > 510 * 400; }, 300));
+    const double r = xRate(sim, 1.0);
+    EXPECT_NEAR(r, 3516, 150) << "the later vectors at the percentage shown";
+    ASSERT_FALSE(sim.core.overrideStep(true, sim.runner.now()));
+    sim.runner.runFor(0.2);
+    EXPECT_EQ(sim.core.state().overridePercent, 93);
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 600)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front());
+    EXPECT_EQ(sim.port.unit().position()[0], program.commands.back().endSteps[0]);
+    EXPECT_EQ(sim.port.unit().stats().motion.brakeViolations, 0);
+}
+
 TEST(MachineCore, AbortStopsAndDropsTheQueue)
 {
     Sim sim;
