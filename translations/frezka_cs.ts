@@ -1117,6 +1117,22 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>Lower the tool with the feed unchanged, then use the feed buttons (XD), which change the rest of the job.</source>
         <translation>Spusťte nástroj bez změny posuvu a pak použijte tlačítka posuvu (XD), která změní celý zbytek práce.</translation>
     </message>
+    <message>
+        <source>Y+ is not sent: the unit&apos;s reports come unasked, in a form the manuals do not give, and would be taken for replies</source>
+        <translation>Y+ se neposílá: hlášení jednotky přicházejí bez vyžádání, ve tvaru, který manuály neuvádějí, a byla by považována za odpovědi</translation>
+    </message>
+    <message>
+        <source>Use Y&amp; (the MPG on, silent); the position is read with P4/PF.</source>
+        <translation>Použijte Y&amp; (MPG zapnuto, bez hlášení); poloha se čte příkazy P4/PF.</translation>
+    </message>
+    <message>
+        <source>While the tool is lifted it moves by steps only</source>
+        <translation>Se zvednutým nástrojem se pojíždí jen po krocích</translation>
+    </message>
+    <message>
+        <source>Choose a jog step (0.01 to 10 mm) and press the axis button; the tool returns to the lift point before it is lowered.</source>
+        <translation>Zvolte krok (0,01 až 10 mm) a stiskněte tlačítko osy; nástroj se před spuštěním vrátí do bodu zvednutí.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>

@@ -1117,6 +1117,22 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>Lower the tool with the feed unchanged, then use the feed buttons (XD), which change the rest of the job.</source>
         <translation>Lower the tool with the feed unchanged, then use the feed buttons (XD), which change the rest of the job.</translation>
     </message>
+    <message>
+        <source>Y+ is not sent: the unit&apos;s reports come unasked, in a form the manuals do not give, and would be taken for replies</source>
+        <translation>Y+ is not sent: the unit&apos;s reports come unasked, in a form the manuals do not give, and would be taken for replies</translation>
+    </message>
+    <message>
+        <source>Use Y&amp; (the MPG on, silent); the position is read with P4/PF.</source>
+        <translation>Use Y&amp; (the MPG on, silent); the position is read with P4/PF.</translation>
+    </message>
+    <message>
+        <source>While the tool is lifted it moves by steps only</source>
+        <translation>While the tool is lifted it moves by steps only</translation>
+    </message>
+    <message>
+        <source>Choose a jog step (0.01 to 10 mm) and press the axis button; the tool returns to the lift point before it is lowered.</source>
+        <translation>Choose a jog step (0.01 to 10 mm) and press the axis button; the tool returns to the lift point before it is lowered.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>

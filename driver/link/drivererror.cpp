@@ -144,6 +144,17 @@ constexpr CodeInfo kCodes[] = {
      QT_TRANSLATE_NOOP("frezka::driver",
                        "Lower the tool with the feed unchanged, then use the feed buttons (XD), "
                        "which change the rest of the job.")},
+    {C::MpgReportsUnsupported, "MpgReportsUnsupported",
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "Y+ is not sent: the unit's reports come unasked, in a form the manuals do "
+                       "not give, and would be taken for replies"),
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "Use Y& (the MPG on, silent); the position is read with P4/PF.")},
+    {C::ContinuousJogWhileLifted, "ContinuousJogWhileLifted",
+     QT_TRANSLATE_NOOP("frezka::driver", "While the tool is lifted it moves by steps only"),
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "Choose a jog step (0.01 to 10 mm) and press the axis button; the tool "
+                       "returns to the lift point before it is lowered.")},
     {C::ToolStillMoving, "ToolStillMoving",
      QT_TRANSLATE_NOOP("frezka::driver", "The lifted tool is still moving"),
      QT_TRANSLATE_NOOP("frezka::driver", "Wait until it stands, then try again.")},

@@ -80,6 +80,8 @@ std::optional<MachineError> Jog::step(int axis, double distanceMm, double speedM
 std::optional<MachineError> Jog::continuous(int axis, int direction, double speedMmPerMin)
 {
     const MachineState &state = m_host.liveState();
+    if (state.mode == MachineMode::ToolLifted)
+        return refusal(DriverCode::ContinuousJogWhileLifted); // docs/gui.md, the tool lift
     if (state.mode != MachineMode::Idle)
         return notNow("Jogging", state.mode);
     if (axis < 0 || axis >= state.axisCount || direction == 0)

@@ -139,6 +139,11 @@ std::optional<MachineError> UnitControls::sendRaw(const std::string &text)
             validate(p.command, m_host.config().unit.variant, m_host.config().unit.maxPulseRate))
         return refusal(DriverCode::NotACommand, {text, bad.message});
     const Op op = p.command.op;
+    // Y+ makes the unit send reports unasked, in a form the manuals do not give, on a link where
+    // every line from the unit is taken as the reply to the last command (docs/gve-protocol.md
+    // §13).
+    if (op == Op::MpgReporting)
+        return refusal(DriverCode::MpgReportsUnsupported);
     if (m_job.active() && (op == Op::Line || op == Op::Vector || op == Op::Delete ||
                            op == Op::Keep || op == Op::Restore || op == Op::Jump ||
                            op == Op::ZeroAll || op == Op::SetCounter || op == Op::Home))

@@ -446,6 +446,10 @@ TEST(MachineCore, MpgRawCommandAndOverrideSteps)
     EXPECT_TRUE(sim.core.sendRaw("!0Z", sim.runner.now()).has_value());    // unknown
     EXPECT_TRUE(sim.core.sendRaw("!0T99", sim.runner.now()).has_value());  // out of range
     EXPECT_TRUE(sim.core.sendRaw("!0L1,2", sim.runner.now()).has_value()); // syntax
+    // Y+: reports unasked, in no documented form, would be taken for replies (issue 14).
+    const auto reports = sim.core.sendRaw("Y+", sim.runner.now());
+    ASSERT_TRUE(reports.has_value());
+    EXPECT_EQ(reports->reason.code, DriverCode::MpgReportsUnsupported);
 
     ASSERT_FALSE(sim.core.overrideStep(true, sim.runner.now()));
     sim.runner.runFor(0.2);

@@ -180,6 +180,11 @@ TEST(SpindleHold, JogWhileLiftedReturnsToTheLiftPointBeforeLowering)
     ASSERT_FALSE(w.sim.core.toolLift(true, w.sim.runner.now()));
     ASSERT_TRUE(w.until([&] { return w.state().mode == MachineMode::ToolLifted; }));
     const auto liftPoint = w.unit().position();
+    const std::size_t sentBefore = w.sent.size();
+    const auto continuous = w.sim.core.jogContinuous(0, 1, 1200, w.sim.runner.now());
+    ASSERT_TRUE(continuous.has_value()) << "a continuous jog's stop would need H and D beside K";
+    EXPECT_EQ(continuous->reason.code, DriverCode::ContinuousJogWhileLifted);
+    EXPECT_EQ(w.sent.size(), sentBefore) << "nothing sent";
     auto jog = [&](int axis, double mm) {
         const auto before = w.unit().position();
         ASSERT_FALSE(w.sim.core.jogStep(axis, mm, 1200, w.sim.runner.now())) << w.sim.lastLog();
