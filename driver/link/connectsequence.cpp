@@ -125,12 +125,12 @@ void ConnectSequence::setupAfterIdentify()
                                            : cmd::velocityLimit(vl[0], vl[1], vl[2]),
                     check("setting the axis speed limits (VL)"));
         // The override the window shows, also on a unit that kept another one or was reset.
-        const int xm = m_job.overrideToSend(state().overridePercent);
+        const int xm = m_job.feedOverride().toSend(state().overridePercent, m_job.active());
         m_host.send(cmd::multiplier(xm), check("setting the override (XM)"));
         state().overrideSentPercent = xm;
     } else {
         state().overridePercent = 100; // XU/XD changed queues that are gone now
-        m_job.setSpeedScale(1.0);
+        m_job.feedOverride().setSpeedScale(1.0);
     }
     const machine::EepromConfig &ee = m_host.config().eeprom;
     m_host.send(cmd::statusWrite(0, ee.interruptEnable), check("setting the interrupt mask"));

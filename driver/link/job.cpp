@@ -40,24 +40,14 @@ Job::Job(CoreHost &host)
 // The one mapping of machine/unitwire.h (shared with the plan CLI). PC-side ops are never sent.
 Command Job::toCommand(const machine::UnitCommand &c) const
 {
-    if (c.op == machine::UnitOp::Speed && m_speedScale != 1.0) {
+    if (c.op == machine::UnitOp::Speed && m_override.speedScale() != 1.0) {
         machine::UnitCommand scaled = c;
-        scaled.value =
-            std::clamp<std::int64_t>(std::llround(static_cast<double>(c.value) * m_speedScale), 10,
-                                     m_host.config().unit.maxPulseRate);
+        scaled.value = std::clamp<std::int64_t>(
+            std::llround(static_cast<double>(c.value) * m_override.speedScale()), 10,
+            m_host.config().unit.maxPulseRate);
         return machine::wireCommand(scaled, m_program.axisCount).value_or(cmd::flag());
     }
     return machine::wireCommand(c, m_program.axisCount).value_or(cmd::flag());
-}
-
-std::int64_t Job::plannedSpeedNow() const
-{
-    const std::size_t from = std::min(m_cursor.exec, m_program.commands.size());
-    for (std::size_t i = from + 1; i-- > 0;) {
-        if (i < m_program.commands.size() && m_program.commands[i].op == machine::UnitOp::Speed)
-            return m_program.commands[i].value;
-    }
-    return 0;
 }
 
 std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
@@ -95,7 +85,8 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     detail::setHold(state, HoldReason::None, {}, 0);
     state.lastError.reset();
     m_host.setMode(MachineMode::Running);
-    limitOverride();
+    m_override.resetLinkMin();
+    m_override.follow(true);
     return std::nullopt;
 }
 
@@ -453,45 +444,11 @@ void Job::finish(bool ok)
     m_host.markDirty();
     if (state.mode == MachineMode::Running)
         m_host.setMode(MachineMode::Idle);
-    limitOverride(); // the operator's override again
+    m_report.overrideLinkMinPercent = m_override.linkMinPercent();
+    m_override.follow(false); // the operator's override again
     m_host.log(ok ? "job finished" : "job ended");
     m_host.publish(); // the final state before the news that the job ended
     m_host.jobFinished(ok);
-}
-
-int Job::overrideToSend(int asked) const
-{
-    if (!m_active || asked <= 100)
-        return asked;
-    // In steps of 5 %, raised again only two steps up: each XM is a round trip outside the
-    // packets, and the ceiling wavers by a step as the window moves (160/165 % in turn).
-    const int ceiling = m_pace.overrideCeiling() / 5 * 5;
-    const int sent = m_host.liveState().overrideSentPercent;
-    return std::min(asked, ceiling < sent || ceiling >= sent + 10 ? ceiling : sent);
-}
-
-void Job::limitOverride()
-{
-    MachineState &state = m_host.liveState();
-    if (!state.features.vlVkXmNa)
-        return;
-    const int want = overrideToSend(state.overridePercent);
-    const int held = want < state.overridePercent ? want : 0;
-    if (held > 0 && m_active)
-        m_report.overrideLinkMinPercent = m_report.overrideLinkMinPercent
-                                              ? std::min(m_report.overrideLinkMinPercent, held)
-                                              : held;
-    if (state.overrideCeilingPercent != held) {
-        state.overrideCeilingPercent = held;
-        m_host.markDirty();
-    }
-    if (want != state.overrideSentPercent) {
-        m_host.send(cmd::multiplier(want), [this](const Outcome &o) {
-            m_host.unitError(o, "keeping the feed override within the link (XM)",
-                             MachineMode::Alarm);
-        });
-        state.overrideSentPercent = want; // the reply confirms it (noteOutputsAccepted)
-    }
 }
 
 void Job::abandon()
@@ -501,7 +458,7 @@ void Job::abandon()
     m_streamBlocked = false;
     m_check.cancel();
     m_guard.clearFault();
-    limitOverride();
+    m_override.follow(false);
 }
 
 void Job::pollStarted(double now)
@@ -581,7 +538,7 @@ void Job::positionRead()
     // Vector i began that share of its time ago (a long plunge read half way holds half its
     // time, not all of it: the packet after it was sized to arrive when it had already ended).
     m_cursor.execAt = m_host.now() - (i < limit ? done * m_pace.runS(i, i + 1) : 0.0);
-    limitOverride();
+    m_override.follow(m_active);
 }
 
 // F answered RUN = 0: the unit's queue is empty, so every command accepted before F was sent

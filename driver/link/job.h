@@ -15,6 +15,7 @@
 // waits on time itself: it tells the core the earliest time it may send again (waitUntil).
 
 #include "driver/link/coretypes.h"
+#include "driver/link/joboverride.h"
 #include "driver/link/jobpace.h"
 #include "driver/link/machinestate.h"
 #include "driver/link/pathguard.h"
@@ -47,17 +48,8 @@ public:
     bool streaming(double now) const;
     // Commands are left to send and only the unit's full queue holds them back (if at all).
     bool feeding() const;
-    // The unit runs the operator's override only as far as the link can feed it: XM lowered to
-    // the pace's ceiling over what the unit holds and the next packets, raised again after.
-    void limitOverride();
-    // The XM to send for the operator's override: the pace's ceiling while a job streams.
-    int overrideToSend(int askedPercent) const;
-    // Units without XM: XU/XD change the queued speeds only, so the job scales every V it
-    // streams after them by the same factor (the operator's override, exact; 1 = as planned).
-    void setSpeedScale(double scale) { m_speedScale = scale; }
-    double speedScale() const { return m_speedScale; }
-    // The planned V (pulses/s) in effect at the command the unit executes (0: none yet).
-    std::int64_t plannedSpeedNow() const;
+    // The feed override as the unit runs it (the link's ceiling, XU/XD without XM).
+    JobOverride &feedOverride() { return m_override; }
     void streamStep(double now);
     double waitUntil() const { return m_waitUntil; }
     bool queueFullSeen() const { return m_queueFullSeen; }
@@ -113,7 +105,7 @@ private:
     std::int64_t m_resentAtStart = 0;
     std::int64_t m_recoveredAtStart = 0;
     JobPace m_pace;
-    double m_speedScale = 1.0;
+    JobOverride m_override{m_host, m_pace};
     ProgressCheck m_check;
     PathGuard m_guard;
     ProbeMove m_probe;

@@ -168,6 +168,16 @@ int JobPace::overrideCeiling() const
     return std::clamp(static_cast<int>(std::floor(ratio * 100.0)), 100, kOverrideMaxPercent);
 }
 
+std::int64_t JobPace::plannedSpeedNow() const
+{
+    const std::size_t from = std::min(m_cursor.exec, m_program.commands.size());
+    for (std::size_t i = from + 1; i-- > 0;) {
+        if (i < m_program.commands.size() && m_program.commands[i].op == machine::UnitOp::Speed)
+            return m_program.commands[i].value;
+    }
+    return 0;
+}
+
 std::int64_t JobPace::queuedAfter(double ahead) const
 {
     const std::size_t next = m_cursor.next;

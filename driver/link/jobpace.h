@@ -68,6 +68,8 @@ public:
     // queue-full of motion from the executing command to a queue-full past the next to send:
     // XM scales speeds, so a stretch paced to the wire at 100 % runs dry above it.
     int overrideCeiling() const;
+    // The planned V (pulses/s) in effect at the command the unit executes (0: none yet).
+    std::int64_t plannedSpeedNow() const;
     // Where a packet ends to keep polls at their rate where the motion is slow (next = no cap).
     std::size_t slowMotionPacketEnd() const;
     // The unit reported a full queue: the executing command is at most a queue-full back.

@@ -150,7 +150,7 @@ std::optional<MachineError> ToolLift::lower(int speedPulsesPerS)
             return refusal(DriverCode::SpeedInvalid, {bad.message});
         if (!state().features.vlVkXmNa)
             return refusal(DriverCode::NewFeedNeedsXm);
-        const std::int64_t planned = m_job.plannedSpeedNow();
+        const std::int64_t planned = m_job.pace().plannedSpeedNow();
         if (planned <= 0)
             return refusal(DriverCode::SpeedInvalid, {"no planned speed here"});
         newPercent = std::clamp(
@@ -250,7 +250,7 @@ void ToolLift::restored(int overridePercent)
 {
     if (overridePercent > 0) {
         state().overridePercent = overridePercent;
-        m_job.limitOverride(); // XM, within what the link can feed
+        m_job.feedOverride().follow(true); // XM, within what the link can feed
         m_host.markDirty();
     }
     m_host.send(cmd::flag(), [this](const Outcome &f) {

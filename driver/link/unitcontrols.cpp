@@ -83,8 +83,8 @@ std::optional<MachineError> UnitControls::setOverride(int percent)
                    ? refusal(DriverCode::OverrideNeedsFirmware,
                              {std::to_string(state().firmwareVersion)})
                    : refusal(DriverCode::NoOverride);
-    // During a job the unit runs it only as far as the link can feed it (Job::limitOverride).
-    const int sent = m_job.overrideToSend(percent);
+    // During a job the unit runs it only as far as the link can feed it (JobOverride::follow).
+    const int sent = m_job.feedOverride().toSend(percent, m_job.active());
     m_host.send(cmd::multiplier(sent), [this, percent, sent](const Outcome &o) {
         if (m_host.unitError(o, "setting the feed override (XM)", MachineMode::Alarm))
             return;
@@ -105,7 +105,7 @@ std::optional<MachineError> UnitControls::overrideStep(bool up)
                                       kOverrideMaxPercent));
     }
     // Without VL nothing keeps an axis under its maximum above the planned speeds.
-    const double scale = m_job.speedScale() * (up ? 17.0 : 15.0) / 16.0;
+    const double scale = m_job.feedOverride().speedScale() * (up ? 17.0 : 15.0) / 16.0;
     if (up && scale > 1.0 + 1e-9)
         return refusal(DriverCode::OverrideAboveWithoutVl);
     if (scale * 100.0 < kOverrideMinPercent)
@@ -116,7 +116,7 @@ std::optional<MachineError> UnitControls::overrideStep(bool up)
             return;
         // XU/XD change the queued vectors by 1/16 of their speed; the job streams every later V
         // scaled alike, so the whole rest of the job runs at the percentage shown.
-        m_job.setSpeedScale(scale);
+        m_job.feedOverride().setSpeedScale(scale);
         state().overridePercent = static_cast<int>(std::lround(scale * 100.0));
         m_host.markDirty();
     });

@@ -220,7 +220,7 @@ TEST(StreamPace, AFeedOverrideAboveHundredKeepsTheUnitFed)
 // An override the wire cannot carry: 1 mm segments at F3000 on a GVE64 at 9 600 Bd, which the
 // plan paces to the wire at 100 %. XM200 doubled those speeds and the unit ran dry (1 stop and 1
 // brake violation, the job 34 % longer than at 100 %). The driver now lowers XM to what the link
-// can feed (Job::limitOverride), and the job takes no longer than at 100 %.
+// can feed (JobOverride::follow), and the job takes no longer than at 100 %.
 TEST(StreamPace, AFeedOverrideIsKeptWithinWhatTheLinkCanFeed)
 {
     std::string program = "G21 G90 G17 G94 G64\nG0 X10 Y10\nG1 Z-6 F300\nF3000\n";
