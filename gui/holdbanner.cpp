@@ -123,7 +123,10 @@ double HoldBanner::newFeedMmPerMin() const
 
 void HoldBanner::setNewFeedAvailable(bool available)
 {
+    if (available == m_newFeed)
+        return;
     m_newFeed = available;
+    retranslate();
     m_feedLabel->setVisible(available && m_lowerOnly->isVisibleTo(this));
     m_feed->setVisible(available && m_lowerOnly->isVisibleTo(this));
     if (!available)
@@ -182,9 +185,12 @@ void HoldBanner::retranslate()
             tr("The spindle and coolant are off. Change, measure or clean the tool; you may jog "
                "the machine away by steps. Lowering switches the spindle and coolant on again as "
                "they were, waits %1 s for the spindle to reach its speed, returns exactly to where "
-               "the tool was lifted, lowers it into the work and continues — at a new feed if you "
-               "enter one. Abort ends the job here with the tool up.")
-                .arg(m_spinUpS, 0, 'f', 1));
+               "the tool was lifted, lowers it into the work and continues. Abort ends the job "
+               "here with the tool up.")
+                .arg(m_spinUpS, 0, 'f', 1) +
+            (m_newFeed ? QLatin1Char(' ') + tr("A new feed entered below is the feed override "
+                                               "for the rest of the job.")
+                       : QString()));
         break;
     }
     if (m_kind == Kind::None || m_kind == Kind::ToolLifted)

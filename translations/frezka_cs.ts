@@ -1115,7 +1115,7 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
     <message>
         <source>Lower the tool with the feed unchanged, then use the feed buttons (XD), which change the rest of the job.</source>
-        <translation>Spusťte nástroj bez změny posuvu a pak použijte tlačítka posuvu (XD), která změní celý zbytek práce.</translation>
+        <translation>Spusťte nástroj bez změny posuvu a pak použijte tlačítka posuvu (XD), která změní celý zbytek úlohy.</translation>
     </message>
     <message>
         <source>Y+ is not sent: the unit&apos;s reports come unasked, in a form the manuals do not give, and would be taken for replies</source>
@@ -2422,10 +2422,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Stroj zabrzdil po rampě a zbytek úlohy si drží. Pokračujte, nebo zvedněte nástroj k výměně či očištění (při zvednutém nástroji se vřeteno a chlazení vypnou).</translation>
     </message>
     <message>
-        <source>The spindle and coolant are off. Change, measure or clean the tool; you may jog the machine away by steps. Lowering switches the spindle and coolant on again as they were, waits %1 s for the spindle to reach its speed, returns exactly to where the tool was lifted, lowers it into the work and continues — at a new feed if you enter one. Abort ends the job here with the tool up.</source>
-        <translation>Vřeteno a chlazení jsou vypnuté. Vyměňte, změřte nebo očistěte nástroj; stroj můžete krokově odjet. Spuštění nástroje zapne vřeteno a chlazení tak, jak byly, počká %1 s, než vřeteno dosáhne otáček, vrátí se přesně do místa zvednutí, spustí nástroj do materiálu a pokračuje — s novým posuvem, pokud jej zadáte. Přerušení zde úlohu ukončí se zvednutým nástrojem.</translation>
-    </message>
-    <message>
         <source>The spindle and coolant are off for the hold. Continue switches them on again and waits %1 s for the spindle before the tool moves.</source>
         <translation>Vřeteno a chlazení jsou po dobu zastavení vypnuté. Pokračovat je znovu zapne a počká %1 s na vřeteno, než se nástroj pohne.</translation>
     </message>
@@ -2443,7 +2439,15 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     </message>
     <message>
         <source>The feed from here on, as the feed override for the rest of the job</source>
-        <translation>Posuv od tohoto místa, jako korekce posuvu pro zbytek práce</translation>
+        <translation>Posuv od tohoto místa, jako korekce posuvu pro zbytek úlohy</translation>
+    </message>
+    <message>
+        <source>The spindle and coolant are off. Change, measure or clean the tool; you may jog the machine away by steps. Lowering switches the spindle and coolant on again as they were, waits %1 s for the spindle to reach its speed, returns exactly to where the tool was lifted, lowers it into the work and continues. Abort ends the job here with the tool up.</source>
+        <translation>Vřeteno a chlazení jsou vypnuté. Vyměňte, změřte nebo očistěte nástroj; stroj můžete krokově odjet. Spuštění nástroje zapne vřeteno a chlazení tak, jak byly, počká %1 s, než vřeteno dosáhne otáček, vrátí se přesně do místa zvednutí, spustí nástroj do materiálu a pokračuje. Přerušení zde úlohu ukončí se zvednutým nástrojem.</translation>
+    </message>
+    <message>
+        <source>A new feed entered below is the feed override for the rest of the job.</source>
+        <translation>Nový posuv zadaný níže platí jako korekce posuvu pro zbytek úlohy.</translation>
     </message>
 </context>
 <context>

@@ -2421,10 +2421,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>The machine has stopped along its ramp and keeps the rest of the job. Continue, or lift the tool to change or clean it (the spindle and coolant go off for a lifted tool).</translation>
     </message>
     <message>
-        <source>The spindle and coolant are off. Change, measure or clean the tool; you may jog the machine away by steps. Lowering switches the spindle and coolant on again as they were, waits %1 s for the spindle to reach its speed, returns exactly to where the tool was lifted, lowers it into the work and continues — at a new feed if you enter one. Abort ends the job here with the tool up.</source>
-        <translation>The spindle and coolant are off. Change, measure or clean the tool; you may jog the machine away by steps. Lowering switches the spindle and coolant on again as they were, waits %1 s for the spindle to reach its speed, returns exactly to where the tool was lifted, lowers it into the work and continues — at a new feed if you enter one. Abort ends the job here with the tool up.</translation>
-    </message>
-    <message>
         <source>The spindle and coolant are off for the hold. Continue switches them on again and waits %1 s for the spindle before the tool moves.</source>
         <translation>The spindle and coolant are off for the hold. Continue switches them on again and waits %1 s for the spindle before the tool moves.</translation>
     </message>
@@ -2443,6 +2439,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>The feed from here on, as the feed override for the rest of the job</source>
         <translation>The feed from here on, as the feed override for the rest of the job</translation>
+    </message>
+    <message>
+        <source>The spindle and coolant are off. Change, measure or clean the tool; you may jog the machine away by steps. Lowering switches the spindle and coolant on again as they were, waits %1 s for the spindle to reach its speed, returns exactly to where the tool was lifted, lowers it into the work and continues. Abort ends the job here with the tool up.</source>
+        <translation>The spindle and coolant are off. Change, measure or clean the tool; you may jog the machine away by steps. Lowering switches the spindle and coolant on again as they were, waits %1 s for the spindle to reach its speed, returns exactly to where the tool was lifted, lowers it into the work and continues. Abort ends the job here with the tool up.</translation>
+    </message>
+    <message>
+        <source>A new feed entered below is the feed override for the rest of the job.</source>
+        <translation>A new feed entered below is the feed override for the rest of the job.</translation>
     </message>
 </context>
 <context>
