@@ -570,14 +570,6 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>Zkontrolujte nastavení reference osy v profilu stroje.</translation>
     </message>
     <message>
-        <source>Line %1: %2</source>
-        <translation>Řádek %1: %2</translation>
-    </message>
-    <message>
-        <source>Check the cable and that the unit is on; the job is kept: reconnect, then continue.</source>
-        <translation>Zkontrolujte kabel a zda je jednotka zapnutá; úloha je uchována: znovu se připojte a pokračujte.</translation>
-    </message>
-    <message>
         <source>Line %1: the probe input is already in the state the probe move waits for</source>
         <translation>Řádek %1: vstup sondy už je ve stavu, na který pohyb sondy čeká</translation>
     </message>
@@ -1132,6 +1124,54 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     <message>
         <source>Choose a jog step (0.01 to 10 mm) and press the axis button; the tool returns to the lift point before it is lowered.</source>
         <translation>Zvolte krok (0,01 až 10 mm) a stiskněte tlačítko osy; nástroj se před spuštěním vrátí do bodu zvednutí.</translation>
+    </message>
+    <message>
+        <source>%1: %2 got no valid answer (%3%4); gave up after %5 attempts</source>
+        <translation>%1: na %2 nepřišla platná odpověď (%3%4); vzdáno po %5 pokusech</translation>
+    </message>
+    <message>
+        <source>Check the cable and that the unit is on, then connect again; a job is kept and continues after the reconnect.</source>
+        <translation>Zkontrolujte kabel a zda je jednotka zapnutá, pak se znovu připojte; rozpracovaná úloha zůstává a po připojení pokračuje.</translation>
+    </message>
+    <message>
+        <source>%1: the reply to %2 was lost and the unit&apos;s command index was unknown</source>
+        <translation>%1: odpověď na %2 se ztratila a index příkazů jednotky nebyl známý</translation>
+    </message>
+    <message>
+        <source>%1: after %2 the unit&apos;s command index is %3, expected %4 or %5</source>
+        <translation>%1: po %2 je index příkazů jednotky %3, očekáván %4 nebo %5</translation>
+    </message>
+    <message>
+        <source>incomplete reply</source>
+        <translation>neúplná odpověď</translation>
+    </message>
+    <message>
+        <source>garbled reply</source>
+        <translation>poškozená odpověď</translation>
+    </message>
+    <message>
+        <source>doubtful reply</source>
+        <translation>nejistá odpověď</translation>
+    </message>
+    <message>
+        <source>garbled reply to &apos;@&apos;</source>
+        <translation>poškozená odpověď na &apos;@&apos;</translation>
+    </message>
+    <message>
+        <source>garbled repeated reply</source>
+        <translation>poškozená opakovaná odpověď</translation>
+    </message>
+    <message>
+        <source>doubtful repeated reply</source>
+        <translation>nejistá opakovaná odpověď</translation>
+    </message>
+    <message>
+        <source>no reply to recovery query</source>
+        <translation>žádná odpověď na dotaz obnovy</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>řádek %1</translation>
     </message>
 </context>
 <context>

@@ -570,14 +570,6 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>Check the axis&apos;s homing settings in the machine profile.</translation>
     </message>
     <message>
-        <source>Line %1: %2</source>
-        <translation>Line %1: %2</translation>
-    </message>
-    <message>
-        <source>Check the cable and that the unit is on; the job is kept: reconnect, then continue.</source>
-        <translation>Check the cable and that the unit is on; the job is kept: reconnect, then continue.</translation>
-    </message>
-    <message>
         <source>Line %1: the probe input is already in the state the probe move waits for</source>
         <translation>Line %1: the probe input is already in the state the probe move waits for</translation>
     </message>
@@ -1132,6 +1124,54 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     <message>
         <source>Choose a jog step (0.01 to 10 mm) and press the axis button; the tool returns to the lift point before it is lowered.</source>
         <translation>Choose a jog step (0.01 to 10 mm) and press the axis button; the tool returns to the lift point before it is lowered.</translation>
+    </message>
+    <message>
+        <source>%1: %2 got no valid answer (%3%4); gave up after %5 attempts</source>
+        <translation>%1: %2 got no valid answer (%3%4); gave up after %5 attempts</translation>
+    </message>
+    <message>
+        <source>Check the cable and that the unit is on, then connect again; a job is kept and continues after the reconnect.</source>
+        <translation>Check the cable and that the unit is on, then connect again; a job is kept and continues after the reconnect.</translation>
+    </message>
+    <message>
+        <source>%1: the reply to %2 was lost and the unit&apos;s command index was unknown</source>
+        <translation>%1: the reply to %2 was lost and the unit&apos;s command index was unknown</translation>
+    </message>
+    <message>
+        <source>%1: after %2 the unit&apos;s command index is %3, expected %4 or %5</source>
+        <translation>%1: after %2 the unit&apos;s command index is %3, expected %4 or %5</translation>
+    </message>
+    <message>
+        <source>incomplete reply</source>
+        <translation>incomplete reply</translation>
+    </message>
+    <message>
+        <source>garbled reply</source>
+        <translation>garbled reply</translation>
+    </message>
+    <message>
+        <source>doubtful reply</source>
+        <translation>doubtful reply</translation>
+    </message>
+    <message>
+        <source>garbled reply to &apos;@&apos;</source>
+        <translation>garbled reply to &apos;@&apos;</translation>
+    </message>
+    <message>
+        <source>garbled repeated reply</source>
+        <translation>garbled repeated reply</translation>
+    </message>
+    <message>
+        <source>doubtful repeated reply</source>
+        <translation>doubtful repeated reply</translation>
+    </message>
+    <message>
+        <source>no reply to recovery query</source>
+        <translation>no reply to recovery query</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>line %1</translation>
     </message>
 </context>
 <context>

@@ -220,10 +220,24 @@ constexpr CodeInfo kCodes[] = {
     {C::HomingInvalid, "HomingInvalid", QT_TRANSLATE_NOOP("frezka::driver", "Homing axis %1: %2"),
      QT_TRANSLATE_NOOP("frezka::driver",
                        "Check the axis's homing settings in the machine profile.")},
-    {C::LinkFailedAtLine, "LinkFailedAtLine", QT_TRANSLATE_NOOP("frezka::driver", "Line %1: %2"),
-     QT_TRANSLATE_NOOP(
-         "frezka::driver",
-         "Check the cable and that the unit is on; the job is kept: reconnect, then continue.")},
+    {C::LinkGaveUp, "LinkGaveUp",
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "%1: %2 got no valid answer (%3%4); gave up after %5 attempts"),
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "Check the cable and that the unit is on, then connect again; a job is "
+                       "kept and continues after the reconnect.")},
+    {C::LinkIndexUnknown, "LinkIndexUnknown",
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "%1: the reply to %2 was lost and the unit's command index was unknown"),
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "Check the cable and that the unit is on, then connect again; a job is "
+                       "kept and continues after the reconnect.")},
+    {C::LinkIndexUnexpected, "LinkIndexUnexpected",
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "%1: after %2 the unit's command index is %3, expected %4 or %5"),
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "Check the cable and that the unit is on, then connect again; a job is "
+                       "kept and continues after the reconnect.")},
     {C::HomingLegStopped, "HomingLegStopped",
      QT_TRANSLATE_NOOP("frezka::driver",
                        "Homing axis %1: stopped before the end of its search leg (an input "
@@ -397,9 +411,17 @@ constexpr CodeInfo kCodes[] = {
     QT_TRANSLATE_NOOP("frezka::driver", "Paused"),
     QT_TRANSLATE_NOOP("frezka::driver", "Tool lifted"),
     QT_TRANSLATE_NOOP("frezka::driver", "Alarm"), QT_TRANSLATE_NOOP("frezka::driver", "Link lost"),
-    // link reasons
+    // link reasons (LinkEngine's phrases)
     QT_TRANSLATE_NOOP("frezka::driver", "the link was closed"),
-    QT_TRANSLATE_NOOP("frezka::driver", "no reply"), QT_TRANSLATE_NOOP("frezka::driver", "setup")};
+    QT_TRANSLATE_NOOP("frezka::driver", "incomplete reply"),
+    QT_TRANSLATE_NOOP("frezka::driver", "garbled reply"),
+    QT_TRANSLATE_NOOP("frezka::driver", "doubtful reply"),
+    QT_TRANSLATE_NOOP("frezka::driver", "garbled reply to '@'"),
+    QT_TRANSLATE_NOOP("frezka::driver", "garbled repeated reply"),
+    QT_TRANSLATE_NOOP("frezka::driver", "doubtful repeated reply"),
+    QT_TRANSLATE_NOOP("frezka::driver", "no reply to recovery query"),
+    QT_TRANSLATE_NOOP("frezka::driver", "line %1"), QT_TRANSLATE_NOOP("frezka::driver", "no reply"),
+    QT_TRANSLATE_NOOP("frezka::driver", "setup")};
 
 const CodeInfo *info(DriverCode code)
 {
@@ -487,6 +509,11 @@ QString translatedPhrase(const std::string &phrase)
 {
     if (phrase.empty())
         return {};
+    // "line 12" (detail::lineText): the one phrase with a number in it.
+    if (phrase.rfind("line ", 0) == 0 && phrase.size() > 5 &&
+        phrase.find_first_not_of("0123456789", 5) == std::string::npos)
+        return QCoreApplication::translate("frezka::driver", "line %1")
+            .arg(QString::fromStdString(phrase.substr(5)));
     return QCoreApplication::translate("frezka::driver", phrase.c_str());
 }
 

@@ -71,9 +71,12 @@ enum class DriverCode : std::uint16_t {
     UnknownOperation = 208,   // %1 line
     HomeSwitchNotFound = 209, // %1 axis
     HomingInvalid = 210,      // %1 axis, %2 why
-    LinkFailedAtLine = 211,   // %1 line, %2 why
-    HomingLegStopped = 212,   // %1 axis
-    LiftPointMissed = 213,    // %1 the counters, %2 the lift point
+    // 211 retired (LinkFailedAtLine: the link's reasons are LinkGaveUp ... with "line N")
+    HomingLegStopped = 212,    // %1 axis
+    LiftPointMissed = 213,     // %1 the counters, %2 the lift point
+    LinkGaveUp = 214,          // %1 action, %2 command, %3 what went wrong, %4 reply, %5 attempts
+    LinkIndexUnknown = 215,    // %1 action, %2 command
+    LinkIndexUnexpected = 216, // %1 action, %2 command, %3 the unit's index, %4/%5 expected
     // The job (3xx)
     ProbeAlreadyTripped = 300,   // %1 line
     ProbeNotTripped = 301,       // %1 line

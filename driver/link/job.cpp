@@ -289,8 +289,7 @@ void Job::onCommandOutcome(const Outcome &o, std::size_t index, double now)
             m_check.verify("outcome unknown: " + o.error);
         } else {
             m_check.require();
-            m_host.fail({DriverCode::LinkFailedAtLine, {detail::lineArg(c), o.error}}, &o,
-                        MachineMode::LinkLost);
+            m_host.fail(detail::linkFailure(detail::lineText(c), o), &o, MachineMode::LinkLost);
         }
         return;
     }

@@ -71,6 +71,12 @@ std::string LinkEngine::describe() const
            encodeBody(m_commands.front()) + "'";
 }
 
+std::string LinkEngine::commandArg() const
+{
+    const std::string first = "'" + encodeBody(m_commands.front()) + "'";
+    return m_packet ? first + " (+" + std::to_string(m_commands.size() - 1) + ")" : first;
+}
+
 // Time from now until a reply to `c` is overdue. Counted from when our bytes have left (they may
 // queue behind earlier ones), plus the longest reply, plus the class's allowance.
 double LinkEngine::timeoutFor(const Command &c, std::size_t bytes, double now)
@@ -256,7 +262,7 @@ void LinkEngine::onMainReply(const Line &line, double now)
             log(LinkLogKind::Recovery, describe() + ": garbled line '" + line.text + "', waiting");
             return;
         }
-        recover("garbled reply '" + line.text + "'" + (err.empty() ? "" : ": " + err), now);
+        recover("garbled reply", line.text, err.empty() ? "" : ": " + err, now);
         return;
     }
     // Possibly damaged on the way in (code 4 = bad checksum) or cut short (code 2): the index
@@ -276,7 +282,8 @@ void LinkEngine::onMainReply(const Line &line, double now)
     }
     if (doubtful && !m_syncing && (m_indexBefore || !exact())) {
         m_lastRaw = line.text;
-        recover("reply '" + line.text + "' (" + std::string(replyCodeText(reply->code)) + ")", now);
+        recover("doubtful reply", line.text, " (" + std::string(replyCodeText(reply->code)) + ")",
+                now);
         return;
     }
     finishOk(*reply, line.text);
@@ -288,7 +295,7 @@ void LinkEngine::onIndexReply(const Line &line, double now)
     const auto reply = line.overlong ? std::nullopt : decodeFor(cmd::index(), line.text, err);
     if (!reply || !reply->ok()) {
         ++m_stats.garbledLines;
-        retryAux("garbled reply to '@': '" + line.text + "'", now);
+        retryAux("garbled reply to '@'", line.text, now);
         return;
     }
     const int unitIndex = static_cast<int>(*reply->decimal());
@@ -306,7 +313,8 @@ void LinkEngine::onIndexReply(const Line &line, double now)
         // We did not know the index before this transaction: we cannot tell whether it
         // arrived. Learn it and report the transaction failed (the caller decides).
         m_index = unitIndex;
-        finishFailed(describe() + ": reply lost and the unit's command index was unknown");
+        finishFailed(describe() + ": reply lost and the unit's command index was unknown",
+                     LinkFailure::IndexUnknown, {commandArg()});
         return;
     }
     if (unitIndex == indexAfter()) {
@@ -323,8 +331,11 @@ void LinkEngine::onIndexReply(const Line &line, double now)
     }
     m_index = unitIndex;
     finishFailed(describe() + ": the unit's command index is " + std::to_string(unitIndex) +
-                 ", expected " + std::to_string(*m_indexBefore) + " or " +
-                 std::to_string(indexAfter()));
+                     ", expected " + std::to_string(*m_indexBefore) + " or " +
+                     std::to_string(indexAfter()),
+                 LinkFailure::IndexUnexpected,
+                 {commandArg(), std::to_string(unitIndex), std::to_string(*m_indexBefore),
+                  std::to_string(indexAfter())});
 }
 
 void LinkEngine::onRepeatReply(const Line &line, double now)
@@ -333,7 +344,7 @@ void LinkEngine::onRepeatReply(const Line &line, double now)
     const auto reply = line.overlong ? std::nullopt : decodeFor(mainCommand(), line.text, err);
     if (!reply) {
         ++m_stats.garbledLines;
-        retryAux("garbled repeated reply '" + line.text + "'", now);
+        retryAux("garbled repeated reply", line.text, now);
         return;
     }
     // '>' itself may arrive damaged: the unit then complains about it (4 = bad checksum, 2 = cut
@@ -345,7 +356,7 @@ void LinkEngine::onRepeatReply(const Line &line, double now)
                           reply->code == ReplyCode::Watchdog;
     if (doubtful && (m_packet || line.text != m_lastRepeat)) {
         m_lastRepeat = line.text;
-        retryAux("doubtful repeated reply '" + line.text + "'", now);
+        retryAux("doubtful repeated reply", line.text, now);
         return;
     }
     ++m_recovered;
@@ -353,23 +364,37 @@ void LinkEngine::onRepeatReply(const Line &line, double now)
     finishOk(*reply, line.text);
 }
 
-void LinkEngine::recover(const std::string &why, double now)
+namespace {
+std::string whyText(const char *phrase, const std::string &raw, const std::string &extra)
 {
-    settleThenRetry(describe() + ": " + why, why, now);
+    return phrase + (raw.empty() ? std::string() : " '" + raw + "'") + extra;
+}
+} // namespace
+
+void LinkEngine::recover(const char *phrase, const std::string &raw, const std::string &extra,
+                         double now)
+{
+    const std::string why = whyText(phrase, raw, extra);
+    settleThenRetry(describe() + ": " + why, phrase, raw, why, now);
 }
 
-void LinkEngine::retryAux(const std::string &why, double now)
+void LinkEngine::retryAux(const char *phrase, const std::string &raw, double now)
 {
     // Both '@' and '>' are harmless to repeat.
-    settleThenRetry(why, why, now);
+    const std::string why = whyText(phrase, raw, "");
+    settleThenRetry(why, phrase, raw, why, now);
 }
 
-void LinkEngine::settleThenRetry(const std::string &logText, const std::string &why, double now)
+void LinkEngine::settleThenRetry(const std::string &logText, const char *phrase,
+                                 const std::string &raw, const std::string &why, double now)
 {
     log(LinkLogKind::Recovery, logText);
     if (++m_attempts > m_options.maxAttempts) {
         finishFailed(describe() + ": " + why + "; gave up after " +
-                     std::to_string(m_options.maxAttempts) + " attempts");
+                         std::to_string(m_options.maxAttempts) + " attempts",
+                     LinkFailure::GaveUp,
+                     {commandArg(), phrase, raw.empty() ? "" : " '" + raw + "'",
+                      std::to_string(m_options.maxAttempts)});
         return;
     }
     // A settle pause drops broken bytes. Our own bytes may still be on the wire (a long packet):
@@ -391,14 +416,15 @@ void LinkEngine::onTime(double now)
         ++m_stats.timeouts;
         if (!m_decoder.pending().empty())
             m_lastRaw = m_decoder.pending();
-        recover(m_decoder.pending().empty() ? std::string("no reply")
-                                            : "incomplete reply '" + m_decoder.pending() + "'",
-                now);
+        if (m_decoder.pending().empty())
+            recover("no reply", "", "", now);
+        else
+            recover("incomplete reply", m_decoder.pending(), "", now);
         return;
     case State::AwaitIndex:
     case State::AwaitRepeat:
         ++m_stats.timeouts;
-        retryAux("no reply to recovery query", now);
+        retryAux("no reply to recovery query", "", now);
         return;
     case State::Settle:
         m_decoder.clear();
@@ -453,10 +479,13 @@ void LinkEngine::finishOk(const Reply &r, const std::string &raw)
         onOutcome(o);
 }
 
-void LinkEngine::finishFailed(const std::string &why)
+void LinkEngine::finishFailed(const std::string &why, LinkFailure failure,
+                              std::vector<std::string> failureArgs)
 {
     Outcome o;
     o.status = OutcomeStatus::Failed;
+    o.failure = failure;
+    o.failureArgs = std::move(failureArgs);
     o.commands = std::move(m_commands);
     o.packet = m_packet;
     o.raw = m_lastRaw;

@@ -67,6 +67,10 @@ enum class OutcomeStatus : std::uint8_t {
     Failed, // no usable reply after maxAttempts, or the unit's index contradicts ours
 };
 
+// Why a transaction failed, for the front ends to word (DriverCode LinkGaveUp, ...); the
+// Outcome's English `error` says the same for the log.
+enum class LinkFailure : std::uint8_t { None, GaveUp, IndexUnknown, IndexUnexpected };
+
 struct Outcome
 {
     OutcomeStatus status = OutcomeStatus::Ok;
@@ -76,6 +80,12 @@ struct Outcome
     int accepted = 0;      // packet: commands the unit accepted (all when reply.code == Ok)
     std::string raw;       // the raw reply line, or the last garbled one
     std::string error;     // Failed: English, names the command and what came back
+    LinkFailure failure = LinkFailure::None;
+    // GaveUp: the command, what went wrong (a fixed phrase: "no reply", "garbled reply", ...),
+    // the last reply quoted after a space (or ""), the attempts; IndexUnknown: the command; IndexUnexpected:
+    // the command, the unit's index, the two it could have been. A packet's command is its first
+    // with the count of the rest: "'!0C5,0,0' (+41)".
+    std::vector<std::string> failureArgs;
     int resent = 0;        // times the transaction was sent again (unit did not get it)
     int recovered = 0;     // times a lost or garbled reply was recovered with '@' / '>'
     std::uint64_t tag = 0; // the caller's tag from start()
@@ -153,12 +163,16 @@ private:
     // Decodes a reply to `c`; nullopt (and raw/err set) when garbled or not fitting.
     std::optional<protocol::Reply> decodeFor(const protocol::Command &c, const std::string &line,
                                              std::string &err);
-    void recover(const std::string &why, double now);
-    void retryAux(const std::string &why, double now);
+    // phrase: what went wrong, a fixed phrase (linkFailurePhrases); raw: the reply as it came
+    // ("" for none); extra: English detail for the log only.
+    void recover(const char *phrase, const std::string &raw, const std::string &extra, double now);
+    void retryAux(const char *phrase, const std::string &raw, double now);
     // Counts an attempt (failing past maxAttempts), then settles before the next one.
-    void settleThenRetry(const std::string &logText, const std::string &why, double now);
+    void settleThenRetry(const std::string &logText, const char *phrase, const std::string &raw,
+                         const std::string &why, double now);
     void finishOk(const protocol::Reply &r, const std::string &raw);
-    void finishFailed(const std::string &why);
+    void finishFailed(const std::string &why, LinkFailure failure,
+                      std::vector<std::string> failureArgs);
     void finish();
     void log(LinkLogKind kind, const std::string &text);
     int indexAfter() const; // the unit's index once this transaction has arrived
@@ -166,6 +180,7 @@ private:
     double timeoutFor(const protocol::Command &c, std::size_t bytes, double now);
     const protocol::Command &mainCommand() const;
     std::string describe() const;
+    std::string commandArg() const; // language-neutral: "'!0F'", "'!0C5,0,0' (+41)"
 
     LinkOptions m_options;
     State m_state = State::Idle;

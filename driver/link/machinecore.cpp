@@ -2,6 +2,8 @@
 
 #include "machinecore.h"
 
+#include "driver/link/machinecore_internal.h"
+
 #include <algorithm>
 #include <cmath>
 #include <variant>
@@ -117,7 +119,7 @@ bool MachineCore::unitError(const Outcome &o, const std::string &what, MachineMo
     if (o.status == OutcomeStatus::Ok && o.reply.ok())
         return false;
     if (o.status == OutcomeStatus::Failed) {
-        fail({DriverCode::LinkFailed, {what, o.error}}, &o, MachineMode::LinkLost);
+        fail(detail::linkFailure(what, o), &o, MachineMode::LinkLost);
         m_steps.clear();
         return true;
     }

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by MachineCore and its activities (not part of the driver's API).
 
+#include "driver/link/linkengine.h"
 #include "driver/link/machinestate.h"
 #include "machine/unitprogram.h"
 
@@ -53,6 +54,26 @@ inline MachineError refusal(DriverCode code, std::vector<std::string> args = {})
     e.reason = DriverMessage{code, std::move(args)};
     e.message = englishText(e.reason, true);
     return e;
+}
+
+// A transaction the link gave up on, while doing `action` (a phrase, or lineText()): the
+// engine's reason as a code with arguments, so that the front ends word it in the user's
+// language (the English Outcome::error stays for the log).
+inline DriverMessage linkFailure(const std::string &action, const Outcome &o)
+{
+    std::vector<std::string> args{action};
+    args.insert(args.end(), o.failureArgs.begin(), o.failureArgs.end());
+    switch (o.failure) {
+    case LinkFailure::GaveUp:
+        return {DriverCode::LinkGaveUp, std::move(args)};
+    case LinkFailure::IndexUnknown:
+        return {DriverCode::LinkIndexUnknown, std::move(args)};
+    case LinkFailure::IndexUnexpected:
+        return {DriverCode::LinkIndexUnexpected, std::move(args)};
+    case LinkFailure::None:
+        break;
+    }
+    return {DriverCode::LinkFailed, {action, o.error}};
 }
 
 inline MachineError notNow(const char *what, MachineMode mode)

@@ -1,6 +1,8 @@
 // The driver's code table (driver/link/drivererror.h): every code has a name, an English text
 // and a "what to do", both translated into Czech in the shipped catalogue (and present in the
 // English one); arguments are filled in; fixed phrases inside arguments are translated too.
+#include "simfixture.h"
+
 #include "driver/link/drivererror.h"
 #include "driver/link/machinestate.h"
 
@@ -81,6 +83,35 @@ private slots:
             const char *name = machineModeName(MachineMode(m));
             QVERIFY2(cs.translate("frezka::driver", name) != QString(), name);
         }
+    }
+
+    // A link that gives up (the cable cut in the middle of a job): the error names what the
+    // driver was doing, the command, what went wrong and the attempts, and in Czech nothing of
+    // it is English (it was "čtení polohy: linka selhala: '!0P4': no reply; gave up after 10
+    // attempts").
+    void aLinkThatGivesUpIsWordedInTheUsersLanguage()
+    {
+        test::Sim sim;
+        QVERIFY(sim.connect());
+        QVERIFY(!sim.core.run(test::slowProgram(200), sim.runner.now()));
+        sim.runner.runFor(2.0);
+        sim.port.tamper = [](std::string_view) { return std::string(); }; // the cable is cut
+        QVERIFY(sim.runner.runUntil([&] { return !sim.errors.empty(); }, 120));
+        const MachineError &e = sim.errors.front();
+        QCOMPARE(e.reason.code, DriverCode::LinkGaveUp);
+        QVERIFY2(e.message.find("no reply") != std::string::npos, e.message.c_str());
+        QVERIFY2(e.message.find("gave up after 10 attempts") != std::string::npos,
+                 e.message.c_str());
+        QTranslator cs;
+        QVERIFY(cs.load(QStringLiteral(":/i18n/frezka_cs.qm")));
+        QCoreApplication::installTranslator(&cs);
+        const QString czech = translatedText(e.reason, true);
+        QCoreApplication::removeTranslator(&cs);
+        for (const char *english : {"no reply", "gave up", "line", "attempts", "Check", "got no"})
+            QVERIFY2(!czech.contains(QLatin1String(english)), qPrintable(czech));
+        QVERIFY2(czech.contains(QStringLiteral("vzdáno po 10 pokusech")), qPrintable(czech));
+        QVERIFY2(czech.contains(QStringLiteral("(bez odpovědi)")), qPrintable(czech));
+        QVERIFY2(czech.contains(QLatin1String("'!0")), qPrintable(czech)); // the command itself
     }
 
     void numbersWithoutTrailingZeros()
