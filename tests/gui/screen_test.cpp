@@ -21,6 +21,7 @@
 
 #include "driver/link/machinecontroller.h"
 
+#include <QDockWidget>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -305,6 +306,53 @@ private slots:
         QVERIFY(m_window->speedPlot()->actual().size() > 10);
         for (const SpeedSample &s : m_window->speedPlot()->actual())
             QVERIFY2(s.speedMmPerMin <= reach + 1e-6, qPrintable(QString::number(s.speedMmPerMin)));
+    }
+
+    // The speed plot's top label (its highest speed) is drawn whole (issue 14: "its top label
+    // is cut off"): at the size the main window gives the plot and at the plot's smallest
+    // height, for speeds of four to six digits, the label's box lies inside the widget and no
+    // pixel of it is drawn on the widget's top row (a label whose ascent went above y = 0 would
+    // be cut there).
+    void speedPlotTopLabelIsWhole()
+    {
+        auto *dock = m_window->findChild<QDockWidget *>(QStringLiteral("plotDock"));
+        QVERIFY(dock);
+        dock->raise();
+        SpeedPlot *inWindow = m_window->speedPlot();
+        QTRY_VERIFY(inWindow->isVisible() && inWindow->height() >= inWindow->minimumHeight());
+        const std::vector<SpeedSample> kept = inWindow->planned();
+        const auto restore = qScopeGuard([&] {
+            inWindow->setPlanned(kept);
+            m_window->findChild<QDockWidget *>(QStringLiteral("consoleDock"))->raise();
+        });
+        SpeedPlot small;
+        small.resize(inWindow->width(), small.minimumHeight());
+        for (SpeedPlot *plot : {inWindow, &small}) {
+            for (double top : {4000.0, 57300.0, 123456.0}) {
+                plot->setPlanned({{0, 0, 1}, {50, top, 2}, {100, 0, 3}});
+                const QString where =
+                    QStringLiteral("%1x%2, top %3").arg(plot->width()).arg(plot->height()).arg(top);
+                const QRect label = plot->topLabelRect();
+                QVERIFY2(plot->rect().contains(label),
+                         qPrintable(where + QStringLiteral(": label at %1,%2 %3x%4")
+                                                .arg(label.x())
+                                                .arg(label.y())
+                                                .arg(label.width())
+                                                .arg(label.height())));
+                // What is drawn: the label's pixels, none on the top row.
+                const QImage image = plot->grab().toImage();
+                const QRgb background = image.pixel(0, image.height() / 2);
+                int labelPixels = 0;
+                for (int y = label.top(); y <= label.bottom(); ++y)
+                    for (int x = label.left(); x <= label.right(); ++x)
+                        labelPixels += image.pixel(x, y) != background ? 1 : 0;
+                QVERIFY2(labelPixels > 0, qPrintable(where + QStringLiteral(": no label drawn")));
+                for (int x = 0; x < image.width(); ++x)
+                    QVERIFY2(image.pixel(x, 0) == background,
+                             qPrintable(where +
+                                        QStringLiteral(": drawn on the top row at x %1").arg(x)));
+            }
+        }
     }
 
     // The EEPROM dialog asks before "Write differences" writes: nothing goes to the unit until
