@@ -27,9 +27,13 @@
 #include <QCheckBox>
 #include <QDir>
 #include <QLabel>
+#include <QMessageBox>
+#include <QPointer>
 #include <QProcess>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QRegularExpression>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
@@ -80,6 +84,44 @@ private:
         return state().mode == MachineMode::Idle;
     }
 
+    // Records every command the driver puts on the wire ("> " lines of its log), in order.
+    struct WireTap
+    {
+        QStringList sent;
+        QMetaObject::Connection connection;
+        ~WireTap() { QObject::disconnect(connection); }
+        // The first / last command that the pattern matches whole (-1: none).
+        int first(const QRegularExpression &re) const { return int(sent.indexOf(re)); }
+        int last(const QRegularExpression &re) const { return int(sent.lastIndexOf(re)); }
+    };
+    void tapWire(WireTap &tap)
+    {
+        tap.connection = connect(m_window->controller(), &driver::MachineController::logLine, this,
+                                 [&tap](const QString &line) {
+                                     if (line.startsWith(QLatin1String("> ")))
+                                         tap.sent << line.mid(2);
+                                 });
+    }
+
+    // Steps of a position in mm, as the planner rounds them.
+    std::int64_t steps(int axis, double mm) const
+    {
+        return std::llround(mm * m_window->profile().axes[std::size_t(axis)].stepsPerMm);
+    }
+
+    // What gve-emu received on its pty ("pc>" lines of --verbose), joined.
+    QByteArray emulatorReceived()
+    {
+        m_emuLog += m_emu.readAllStandardError();
+        QByteArray in;
+        for (const QByteArray &line : m_emuLog.split('\n')) {
+            const int at = line.indexOf(" pc> ");
+            if (at >= 0)
+                in += line.mid(at + 5).replace("\\r", "\r");
+        }
+        return in;
+    }
+
 private slots:
     void initTestCase()
     {
@@ -89,14 +131,16 @@ private slots:
         QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
         QCoreApplication::setOrganizationName(QStringLiteral("FrezkaWorkflowTest"));
         machine::MachineConfig profile = machine::defaultMachineConfig(protocol::Variant::Gve64);
-        if (qgetenv("FREZKA_WORKFLOW_UNIT") == "pty") {
+        m_pty = qgetenv("FREZKA_WORKFLOW_UNIT") == "pty";
+        if (m_pty) {
             // gve-emu with home switches where a GVE64 mill has them, on a pty opened by its
             // path like hardware.
             m_emu.setProgram(QStringLiteral(FREZKA_GVE_EMU));
             m_emu.setArguments({QStringLiteral("--variant"), QStringLiteral("gve64"),
                                 QStringLiteral("--home"), QStringLiteral("X=0"),
                                 QStringLiteral("--home"), QStringLiteral("Y=0"),
-                                QStringLiteral("--home"), QStringLiteral("Z=0,+")});
+                                QStringLiteral("--home"), QStringLiteral("Z=0,+"),
+                                QStringLiteral("--verbose")}); // what it receives, on stderr
             m_emu.start();
             QVERIFY(m_emu.waitForStarted());
             QTRY_VERIFY_WITH_TIMEOUT(m_emu.canReadLine(), 10000);
@@ -116,6 +160,54 @@ private slots:
         m_window->show();
         QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Idle, 20000);
         QVERIFY(!state().firmware.empty());
+    }
+
+    // Before homing the soft limits refer to nothing (issue 14: "with the shipped profiles (X min
+    // 0, Z max 0) the machine cannot be jogged X/Y negative or Z up until it has been homed"):
+    // the jog panel says the limits are off, and the X- and Z+ jog buttons move the unit from 0
+    // past those limits: the L goes on the wire and the unit's counters end there exactly.
+    void unhomedJogIgnoresTheSoftLimits()
+    {
+        QVERIFY(waitIdle());
+        QCOMPARE(int(state().homedAxes), 0);
+        const auto &axes = m_window->profile().axes;
+        QCOMPARE(axes[0].softMinMm, 0.0); // the shipped GVE64 profile
+        QCOMPARE(axes[2].softMaxMm, 0.0);
+        auto *limitsOff = m_window->jogPanel()->findChild<QLabel *>(QStringLiteral("limitsOff"));
+        QTRY_VERIFY(limitsOff->isVisible());
+        QVERIFY2(limitsOff->text().startsWith(QStringLiteral("XYZ not homed")),
+                 qPrintable(limitsOff->text()));
+        QCOMPARE(m_window->jogPanel()->stepMm(), 1.0);
+        for (const auto &[axis, name, mm] :
+             {std::tuple{0, "jogXMinus", -1.0}, std::tuple{2, "jogZPlus", 1.0}}) {
+            QVERIFY(waitIdle());
+            const std::int64_t from = state().positionSteps[std::size_t(axis)];
+            QCOMPARE(from, std::int64_t(0));
+            WireTap wire;
+            tapWire(wire);
+            button(m_window->jogPanel(), name)->click();
+            QTRY_VERIFY2_WITH_TIMEOUT(
+                state().positionSteps[std::size_t(axis)] == steps(axis, mm),
+                qPrintable(describe() + QLatin1Char(' ') + QLatin1String(name)), kMachineTimeoutMs);
+            QVERIFY(waitIdle());
+            QVERIFY2(m_window->lastError().isEmpty(), qPrintable(m_window->lastError()));
+            std::array<std::int64_t, 3> d{};
+            d[std::size_t(axis)] = steps(axis, mm);
+            const QString jog = QStringLiteral("!0L%1,%2,%3").arg(d[0]).arg(d[1]).arg(d[2]);
+            QVERIFY2(
+                wire.first(QRegularExpression(jog + QStringLiteral("(,0)?(,[0-9A-F]{2})?"))) >= 0,
+                qPrintable(jog + QStringLiteral(" not in ") + wire.sent.join(QLatin1Char('|'))));
+            if (m_pty)
+                QVERIFY(emulatorReceived().contains(jog.toLatin1()));
+        }
+        QVERIFY(limitsOff->isVisible());
+        // Back to 0 for the workflows after this one.
+        button(m_window->jogPanel(), "jogXPlus")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().positionSteps[0] == 0, kMachineTimeoutMs);
+        QVERIFY(waitIdle());
+        button(m_window->jogPanel(), "jogZMinus")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().positionSteps[2] == 0, kMachineTimeoutMs);
+        QVERIFY(waitIdle());
     }
 
     void openCheckHomeRunToTheEnd()
@@ -636,6 +728,8 @@ M30
 private:
     QTemporaryDir m_dir;
     QProcess m_emu;
+    QByteArray m_emuLog; // gve-emu's --verbose log read so far
+    bool m_pty = false;  // the unit is gve-emu on a pty
     std::unique_ptr<MainWindow> m_window;
 };
 
