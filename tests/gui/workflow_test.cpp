@@ -122,6 +122,15 @@ private:
         return in;
     }
 
+    bool homedMarksShown(std::uint8_t axes) const
+    {
+        for (int a = 0; a < 3; ++a) {
+            if (m_window->dro()->homedShown(a) != bool((axes >> a) & 1))
+                return false;
+        }
+        return true;
+    }
+
 private slots:
     void initTestCase()
     {
@@ -208,6 +217,32 @@ private slots:
         button(m_window->jogPanel(), "jogZMinus")->click();
         QTRY_VERIFY_WITH_TIMEOUT(state().positionSteps[2] == 0, kMachineTimeoutMs);
         QVERIFY(waitIdle());
+    }
+
+    // "Homed" belongs to one link's unit: homed marks are shown once homed, and after Disconnect
+    // and Connect (a new link; a fresh unit on the built-in emulator) no axis is marked homed and
+    // the limits are off again (issue 14: "The 'homed' marks stay green after Disconnect and
+    // Connect to a fresh, unhomed unit").
+    void homedMarksAreClearedOnANewLink()
+    {
+        QVERIFY(waitIdle());
+        if (!state().homed) {
+            button(m_window->jogPanel(), "homeAll")->click();
+            QTRY_VERIFY_WITH_TIMEOUT(state().homed && state().mode == MachineMode::Idle,
+                                     kMachineTimeoutMs);
+        }
+        auto *limitsOff = m_window->jogPanel()->findChild<QLabel *>(QStringLiteral("limitsOff"));
+        QTRY_VERIFY(homedMarksShown(0b111));
+        QTRY_VERIFY(!limitsOff->isVisible());
+        m_window->disconnectFromUnit();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Disconnected, 10000);
+        m_window->connectToUnit();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Idle, 20000);
+        QVERIFY(!state().firmware.empty());
+        QTRY_VERIFY(homedMarksShown(0));
+        QTRY_VERIFY(limitsOff->isVisible());
+        QVERIFY(!state().homed);
+        QCOMPARE(int(state().homedAxes), 0);
     }
 
     void openCheckHomeRunToTheEnd()
