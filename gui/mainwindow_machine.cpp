@@ -18,7 +18,6 @@
 
 #include <QAbstractButton>
 #include <QFileInfo>
-#include <QGuiApplication>
 #include <QLabel>
 #include <QMessageBox>
 #include <QSettings>
@@ -229,17 +228,17 @@ void MainWindow::connectControls()
             &session::ConsoleSession::execute);
 }
 
-// A run asked before homing: home, then run - or not (never modal under offscreen tests).
+// A run asked before homing: home, then run - or not. The question is a window-modal box that
+// does not block (open(), as the EEPROM dialog's), so tests answer it offscreen too.
 void MainWindow::askToHome()
 {
     const QString text = tr("The machine is not homed: its soft limits refer to nothing yet. "
                             "Home all axes now and then run the program?");
     m_console->appendInfo(text);
     statusBar()->showMessage(text, 15000);
-    if (QGuiApplication::platformName() == QLatin1String("offscreen"))
-        return;
     auto *box = new QMessageBox(QMessageBox::Question, tr("Frezka"), text,
                                 QMessageBox::Yes | QMessageBox::Cancel, this);
+    box->setObjectName(QStringLiteral("askToHome"));
     box->button(QMessageBox::Yes)->setText(tr("Home and run"));
     box->setAttribute(Qt::WA_DeleteOnClose);
     connect(box, &QMessageBox::accepted, m_workflow, &session::RunWorkflow::homeThenRun);

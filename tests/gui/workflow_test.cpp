@@ -219,6 +219,107 @@ private slots:
         QVERIFY(waitIdle());
     }
 
+    // Run before homing with the profile's default (motion.runBeforeHoming false) asks to home
+    // first (issue 14: "a program can be run before homing with no word of warning"). Cancel:
+    // nothing of the job (nor homing) goes on the wire and the unit stays; "Home and run": the
+    // homing legs (W) go on the wire and reach the unit before any vector of the job, and the
+    // job ends with the unit's counters exactly at the program's end.
+    void runBeforeHomingAsksToHomeFirst()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(!m_window->profile().motion.runBeforeHoming);
+        QVERIFY(!state().homed);
+        QVERIFY(load(writeProgram(QStringLiteral("homefirst.nc"), "G21 G90\n"
+                                                                  "G1 X10 Y10 Z-2 F1200\n"
+                                                                  "G1 X22.5 Y17.25\n"
+                                                                  "G1 Z-1\n"
+                                                                  "M30\n")));
+        QVERIFY(m_window->program()->program().runnable());
+        // The driver logs a packet of vectors (C, and B between them) as "packet of ...".
+        const QRegularExpression homing(QStringLiteral("!0W.*"));
+        const QRegularExpression vector(QStringLiteral("(!0C|packet of ).*"));
+        const auto start = state().positionSteps;
+        const QByteArray emuBefore = m_pty ? emulatorReceived() : QByteArray();
+        auto ask = [this]() -> QMessageBox * {
+            QMessageBox *box = nullptr;
+            (void)QTest::qWaitFor(
+                [&] {
+                    box = m_window->findChild<QMessageBox *>(QStringLiteral("askToHome"));
+                    return box && box->isVisible();
+                },
+                5000);
+            return box && box->isVisible() ? box : nullptr;
+        };
+        QPushButton *run = button(m_window->runPanel(), "run");
+        {
+            WireTap wire;
+            tapWire(wire);
+            run->click();
+            QPointer<QMessageBox> box = ask();
+            QVERIFY(box);
+            QCOMPARE(box->button(QMessageBox::Yes)->text(), MainWindow::tr("Home and run"));
+            box->button(QMessageBox::Cancel)->click();
+            QTRY_VERIFY(!box || !box->isVisible());
+            QSignalSpy polls(m_window->controller(), &driver::MachineController::stateChanged);
+            QTRY_VERIFY(polls.count() >= 5); // the link runs on: the job would have been sent
+            QCOMPARE(state().mode, MachineMode::Idle);
+            QVERIFY(!state().jobActive);
+            QCOMPARE(state().positionSteps, start);
+            // Only the polls (position, flags, inputs) went on the wire.
+            const QRegularExpression poll(QRegularExpression::anchoredPattern(
+                QStringLiteral("!0(P|PF|P4|F|I1|I2|SR6)(,[0-9A-F]{2})?")));
+            QVERIFY(!wire.sent.isEmpty());
+            for (const QString &command : std::as_const(wire.sent))
+                QVERIFY2(poll.match(command).hasMatch(), qPrintable(command));
+            if (m_pty)
+                QCOMPARE(emulatorReceived().mid(emuBefore.size()).indexOf("!0W"), -1);
+        }
+        WireTap wire;
+        tapWire(wire);
+        QSignalSpy started(m_window->workflow(), &session::RunWorkflow::jobStarted);
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        int sentAtStart = -1;
+        auto mark = connect(m_window->workflow(), &session::RunWorkflow::jobStarted, this,
+                            [&] { sentAtStart = int(wire.sent.size()); });
+        const auto unmark = qScopeGuard([&] { disconnect(mark); });
+        run->click();
+        QPointer<QMessageBox> box = ask();
+        QVERIFY(box);
+        box->button(QMessageBox::Yes)->click();
+        QVERIFY2(finished.wait(kMachineTimeoutMs), qPrintable(describe()));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QVERIFY(waitIdle());
+        QCOMPARE(started.size(), 1);
+        // On the wire: homing legs, then the job's vectors, none of them before the last leg.
+        const int firstW = wire.first(homing), lastW = wire.last(homing);
+        const int firstVector = wire.first(vector);
+        QVERIFY2(firstW >= 0 && firstVector > lastW && sentAtStart > lastW,
+                 qPrintable(QStringLiteral("W %1..%2, first vector %3, job started at %4: %5")
+                                .arg(firstW)
+                                .arg(lastW)
+                                .arg(firstVector)
+                                .arg(sentAtStart)
+                                .arg(wire.sent.join(QLatin1Char('|')))));
+        if (m_pty) {
+            // The unit received them in that order too.
+            const QByteArray in = emulatorReceived().mid(emuBefore.size());
+            const qsizetype w = in.lastIndexOf("!0W");
+            QVERIFY2(w >= 0 && in.indexOf("!0*S") > w, in.right(2000).constData());
+        }
+        QVERIFY(state().homed);
+        // The unit's counters at the program's end, exactly.
+        const auto &plan = m_window->program()->program().unitProgram;
+        QVERIFY(plan && !plan->commands.empty());
+        const machine::Steps4 end = plan->commands.back().endSteps;
+        QCOMPARE(end[0], steps(0, 22.5));
+        QCOMPARE(end[1], steps(1, 17.25));
+        QCOMPARE(end[2], steps(2, -1));
+        QTRY_VERIFY2_WITH_TIMEOUT(state().positionSteps[0] == end[0] &&
+                                      state().positionSteps[1] == end[1] &&
+                                      state().positionSteps[2] == end[2],
+                                  qPrintable(describe()), 10000);
+    }
+
     // "Homed" belongs to one link's unit: homed marks are shown once homed, and after Disconnect
     // and Connect (a new link; a fresh unit on the built-in emulator) no axis is marked homed and
     // the limits are off again (issue 14: "The 'homed' marks stay green after Disconnect and
