@@ -6,6 +6,7 @@
 // driver error are Czech in the Czech interface; the EEPROM dialog asks before it writes.
 // Never sleeps on a guess: every wait is on the machine's own state.
 #include "gui/consolewidget.h"
+#include "gui/eepromdecode.h"
 #include "gui/holdbanner.h"
 #include "gui/mainwindow.h"
 #include "gui/programlisting.h"
@@ -24,8 +25,10 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QMessageBox>
+#include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScopeGuard>
 #include <QSettings>
 #include <QStandardPaths>
@@ -41,7 +44,8 @@ using driver::MachineMode;
 
 namespace {
 constexpr int kMachineTimeoutMs = 60000;
-}
+constexpr char kPtyFirmware[] = "IP64MPG v19 26.11.2026"; // gve-emu's, not the built-in's
+} // namespace
 
 class ScreenTest : public QObject
 {
@@ -83,6 +87,45 @@ private:
     {
         return QTest::qWaitFor([&] { return state().mode == MachineMode::Idle; },
                                kMachineTimeoutMs);
+    }
+
+    // gve-emu on a pty of its own (started once), with a firmware text the built-in emulator
+    // does not have; its path, empty when it cannot be started (QSKIP then).
+    QString ptyUnit()
+    {
+#ifdef FREZKA_GVE_EMU
+        if (m_pty.isEmpty()) {
+            m_emu.setProgram(QStringLiteral(FREZKA_GVE_EMU));
+            m_emu.setArguments({QStringLiteral("--variant"), QStringLiteral("gve64"),
+                                QStringLiteral("--firmware"), QLatin1String(kPtyFirmware),
+                                QStringLiteral("--verbose")});
+            m_emu.start();
+            if (!m_emu.waitForStarted() ||
+                !QTest::qWaitFor([this] { return m_emu.canReadLine(); }, 10000))
+                return {};
+            m_pty = QString::fromLocal8Bit(m_emu.readLine()).trimmed();
+        }
+#endif
+        return m_pty;
+    }
+
+    // What gve-emu has received so far ("pc>" lines of its --verbose log), joined.
+    QByteArray ptyReceived()
+    {
+        m_emuLog += m_emu.readAllStandardError();
+        QByteArray in;
+        for (const QByteArray &line : m_emuLog.split('\n')) {
+            const int at = int(line.indexOf(" pc> "));
+            if (at >= 0)
+                in += line.mid(at + 5).replace("\\r", "\r");
+        }
+        return in;
+    }
+
+    bool connectedTo(const QString &port) const
+    {
+        return state().mode == MachineMode::Idle && connectionText().contains(port) &&
+               state().firmware == kPtyFirmware;
     }
 
     // Line k (3 .. 42) of the stepped program cuts X from 2(k-3) to 2(k-2) mm past its start.
@@ -460,6 +503,106 @@ private slots:
         QTRY_COMPARE(button(m_window->runPanel(), "run")->text(), QStringLiteral("Run"));
     }
 
+    // The EEPROM differences found on connecting are in the console once each, in the user's
+    // words, with plain numbers (issue 14: "EEPROM differences are logged twice, once in each
+    // language, with values like 'profile 10.000000'"), in English and again in Czech: a unit
+    // (gve-emu on a pty, its EEPROM as shipped) that differs from the profile in Y's steps per mm
+    // and the STEP/DIR polarity.
+    void eepromDifferencesAreLoggedOncePerConnect()
+    {
+        const QString pty = ptyUnit();
+        if (pty.isEmpty())
+            QSKIP("gve-emu is not available");
+        QVERIFY(waitIdle());
+        const machine::MachineConfig original = m_window->profile();
+        machine::MachineConfig differs = original;
+        differs.link.port = pty.toStdString();
+        differs.axes[1].stepsPerMm = 250;
+        differs.eeprom.polarity = 0x5A;
+        const auto restore = qScopeGuard([&] {
+            SettingsDialog *settings = m_window->openSettings();
+            settings->chooseLanguage(QStringLiteral("en"));
+            settings->close();
+            m_window->applyProfile(original, m_window->profilePath());
+            (void)QTest::qWaitFor(
+                [&] { return connectionText().contains(QStringLiteral("built-in")); }, 20000);
+        });
+        // The entries of the two settings changed here.
+        machine::EepromEntry stepsY, polarity;
+        for (const machine::EepromEntry &e : machine::eepromEntries(differs)) {
+            if (e.what == "steps per mm Y")
+                stepsY = e;
+            if (e.kind == machine::EepromKind::Byte && e.value == 0x5A)
+                polarity = e;
+        }
+        QVERIFY(!stepsY.what.empty() && !polarity.what.empty());
+        // Each difference the unit reported, once, in console entries from `from` on; the two
+        // made here with their captions and values as the unit shows them (a byte in hex).
+        auto told = [&](std::size_t from, const QString &prefix, bool czech) {
+            const auto &differences = state().eepromDifferences;
+            QStringList problems;
+            if (differences.size() < 2)
+                problems << QStringLiteral("%1 differences").arg(differences.size());
+            const auto &log = m_window->console()->entries();
+            QStringList lines;
+            for (std::size_t i = from; i < log.size(); ++i) {
+                const QString e = QString::fromUtf8(log[i].bytes);
+                if (e.contains(QStringLiteral("EEPROM")) &&
+                    !(log[i].direction == LogDirection::Sent ||
+                      log[i].direction == LogDirection::Received))
+                    lines << e;
+            }
+            if (lines.size() != int(differences.size()))
+                problems << QStringLiteral("%1 EEPROM lines for %2 differences")
+                                .arg(lines.size())
+                                .arg(differences.size());
+            static const QRegularExpression kLong(QStringLiteral("\\d\\.\\d{5}"));
+            static const QRegularExpression kEnglish(QStringLiteral("\\b(unit|profile|steps)\\b"),
+                                                     QRegularExpression::CaseInsensitiveOption);
+            for (const QString &line : std::as_const(lines)) {
+                if (!line.startsWith(prefix))
+                    problems << QStringLiteral("not in the user's words: ") + line;
+                if (line.contains(kLong))
+                    problems << QStringLiteral("long number: ") + line;
+                if (czech && line.contains(kEnglish))
+                    problems << QStringLiteral("English words: ") + line;
+            }
+            const auto variant = differs.unit.variant;
+            const QStringList y = lines.filter(eepromLabel(variant, stepsY.address));
+            if (y.size() != 1 || !y.front().contains(QStringLiteral("250")))
+                problems << QStringLiteral("steps per mm Y (250) not told once");
+            const QStringList p = lines.filter(eepromLabel(variant, polarity.address));
+            if (p.size() != 1 || !p.front().contains(QStringLiteral("5A")) ||
+                p.front().contains(QStringLiteral("90")))
+                problems << QStringLiteral("polarity 5A not told once in hex");
+            return problems.isEmpty() ? QString()
+                                      : problems.join(QLatin1Char('\n')) + QStringLiteral("\n") +
+                                            lines.join(QLatin1Char('\n'));
+        };
+        std::size_t from = m_window->console()->entries().size();
+        m_window->applyProfile(differs, m_window->profilePath());
+        QTRY_VERIFY_WITH_TIMEOUT(connectedTo(pty), 20000);
+        QTRY_VERIFY(!state().eepromDifferences.empty());
+        QTest::qWait(0);
+        QString problems =
+            told(from, QStringLiteral("Unit EEPROM differs from the profile: "), false);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems));
+        // Again in Czech, on a new connect.
+        SettingsDialog *settings = m_window->openSettings();
+        settings->chooseLanguage(QStringLiteral("cs"));
+        settings->close();
+        QTRY_COMPARE(button(m_window->runPanel(), "run")->text(), QStringLiteral("Spustit"));
+        m_window->disconnectFromUnit();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Disconnected, 10000);
+        from = m_window->console()->entries().size();
+        m_window->connectToUnit();
+        QTRY_VERIFY_WITH_TIMEOUT(connectedTo(pty), 20000);
+        QTRY_VERIFY(!state().eepromDifferences.empty());
+        QTest::qWait(0);
+        problems = told(from, QStringLiteral("EEPROM jednotky se liší od profilu: "), true);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems));
+    }
+
     // A multi-line error is shown on console lines, not with a literal "\n"; a good file clears
     // the previous file's error; after an abort no progress is left shown.
     void staleErrorsAndProgressAreCleared()
@@ -527,11 +670,19 @@ private slots:
         }
     }
 
-    void cleanupTestCase() { m_window.reset(); }
+    void cleanupTestCase()
+    {
+        m_window.reset();
+        m_emu.terminate();
+        m_emu.waitForFinished(5000);
+    }
 
 private:
     QTemporaryDir m_dir;
     std::unique_ptr<MainWindow> m_window;
+    QProcess m_emu;      // gve-emu, once a test asks for the pty unit
+    QString m_pty;       // its pty
+    QByteArray m_emuLog; // its --verbose log read so far
 };
 
 QTEST_MAIN(ScreenTest)
