@@ -281,6 +281,9 @@ void MainWindow::connectToUnit()
                                   .arg(last, QString::fromStdString(config.link.port)));
         config.link.port = last.toStdString();
         config.link.baud = settings.value(QStringLiteral("link/baud"), config.link.baud).toInt();
+        // The window's profile names the port in use, so the settings show it and applying
+        // another port (the saved profile's too) connects that one; the file is not changed.
+        m_workflow->setProfile(config);
     }
     m_connectedOnce = true;
     settings.setValue(QStringLiteral("link/port"), QString::fromStdString(config.link.port));

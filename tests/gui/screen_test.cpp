@@ -89,6 +89,14 @@ private:
                                kMachineTimeoutMs);
     }
 
+    MainWindowOptions windowOptions() const
+    {
+        MainWindowOptions options;
+        options.view = MainWindowOptions::View::Software;
+        options.restoreLayout = false;
+        return options;
+    }
+
     // gve-emu on a pty of its own (started once), with a firmware text the built-in emulator
     // does not have; its path, empty when it cannot be started (QSKIP then).
     QString ptyUnit()
@@ -603,6 +611,49 @@ private slots:
         QVERIFY2(problems.isEmpty(), qPrintable(problems));
     }
 
+    // A port set with Apply is connected at once on a serial line like the hardware's (gve-emu
+    // on a pty, opened by its path): the pty's unit is read (its own firmware text) and Ready;
+    // after a restart of the window with the same settings the pty is connected again (issue
+    // 14: "after a restart the application silently uses the built-in emulator instead of the
+    // last port; a new port set with Apply does not reconnect").
+    void appliedPtyPortIsConnectedAndUsedAfterARestart()
+    {
+        const QString pty = ptyUnit();
+        if (pty.isEmpty())
+            QSKIP("gve-emu is not available");
+        QVERIFY(waitIdle());
+        QVERIFY2(connectionText().contains(QStringLiteral("built-in emulator")),
+                 qPrintable(connectionText()));
+        QCOMPARE(m_window->profile().link.port, std::string("emulator"));
+        machine::MachineConfig config = m_window->profile();
+        config.link.port = pty.toStdString();
+        const qsizetype heard = ptyReceived().size();
+        m_window->applyProfile(config, m_window->profilePath());
+        QTRY_VERIFY2_WITH_TIMEOUT(connectedTo(pty), qPrintable(connectionText()), 20000);
+        QVERIFY2(connectionText().contains(QStringLiteral("Ready")), qPrintable(connectionText()));
+        QVERIFY(ptyReceived().mid(heard).contains("!0?")); // the unit on the pty was asked
+        QCOMPARE(QSettings().value(QStringLiteral("link/port")).toString(), pty);
+        // A restart: the saved profile still says the built-in emulator.
+        m_window.reset();
+        const qsizetype heardBefore = ptyReceived().size();
+        m_window = std::make_unique<MainWindow>(windowOptions());
+        m_window->show();
+        QTRY_VERIFY2_WITH_TIMEOUT(connectedTo(pty), qPrintable(connectionText()), 20000);
+        QVERIFY(ptyReceived().mid(heardBefore).contains("!0?"));
+        QCOMPARE(m_window->profile().link.port, pty.toStdString()); // what the settings show
+        // Applying the saved profile's port (the built-in emulator) connects it.
+        const machine::ConfigResult saved =
+            machine::loadMachineConfig(m_window->profilePath().toStdString());
+        QVERIFY(saved.config);
+        QCOMPARE(saved.config->link.port, std::string("emulator"));
+        m_window->applyProfile(*saved.config, m_window->profilePath());
+        QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Idle &&
+                                      connectionText().contains(QStringLiteral("built-in")),
+                                  qPrintable(connectionText()), 20000);
+        QCOMPARE(QSettings().value(QStringLiteral("link/port")).toString(),
+                 QStringLiteral("emulator"));
+    }
+
     // A multi-line error is shown on console lines, not with a literal "\n"; a good file clears
     // the previous file's error; after an abort no progress is left shown.
     void staleErrorsAndProgressAreCleared()
@@ -659,7 +710,12 @@ private slots:
         for (const LogEntry &e : m_window->console()->entries())
             told = told || QString::fromUtf8(e.bytes).contains(QStringLiteral("port used last"));
         QVERIFY(told);
-        QCOMPARE(m_window->profile().link.port, std::string("emulator")); // the profile as saved
+        // The window's profile names the port in use; the saved profile is unchanged.
+        QCOMPARE(m_window->profile().link.port, std::string("/nonexistent/ttyLAST"));
+        const machine::ConfigResult saved =
+            machine::loadMachineConfig(m_window->profilePath().toStdString());
+        QVERIFY(saved.config);
+        QCOMPARE(saved.config->link.port, std::string("emulator"));
     }
 
     void cleanup()
