@@ -97,6 +97,11 @@ void DroWidget::setHomed(const std::array<bool, 4> &homed)
         m_name[i]->setStyleSheet(homed[i] ? QStringLiteral("color: #2a2") : QString());
 }
 
+bool DroWidget::homedShown(int axis) const
+{
+    return !m_name[axis]->styleSheet().isEmpty();
+}
+
 QString DroWidget::workText(int axis) const
 {
     return m_work[axis]->text();

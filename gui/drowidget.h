@@ -23,6 +23,8 @@ public:
     void setPositions(const std::array<double, 4> &machineMm, const std::array<double, 4> &workMm);
     void setActiveOffset(int index); // 0 = G54 .. 8 = G59.3
     void setHomed(const std::array<bool, 4> &homed);
+    // Whether the axis is shown as homed (its name in green; tests).
+    bool homedShown(int axis) const;
     // Shown text of an axis (tests).
     QString workText(int axis) const;
     QString machineText(int axis) const;

@@ -3,6 +3,7 @@
 
 #include "consolewidget.h"
 #include "drowidget.h"
+#include "eepromdecode.h"
 #include "holdbanner.h"
 #include "iopanel.h"
 #include "jogpanel.h"
@@ -18,7 +19,6 @@
 
 #include <QAbstractButton>
 #include <QFileInfo>
-#include <QGuiApplication>
 #include <QLabel>
 #include <QMessageBox>
 #include <QSettings>
@@ -153,12 +153,35 @@ void MainWindow::onChecked(bool ok)
     emit programChecked(ok);
 }
 
+// One EEPROM difference in the user's words: the setting's caption and both values as the unit
+// shows them (bytes in hex). The driver reports "<what>: unit <reply>, profile <value>" in
+// English (driver/link/eepromsync.cpp); an entry of the profile is found by its <what>.
+QString MainWindow::eepromDifferenceText(const std::string &difference) const
+{
+    const QString d = QString::fromStdString(difference);
+    for (const machine::EepromEntry &e : machine::eepromEntries(profile())) {
+        const QString head = QString::fromStdString(e.what) + QStringLiteral(": unit ");
+        const auto comma = d.indexOf(QStringLiteral(", profile "));
+        if (!d.startsWith(head) || comma < head.size())
+            continue;
+        const QString reply = d.mid(head.size(), comma - head.size());
+        bool ok = false;
+        const double unit = e.kind == machine::EepromKind::Byte ? double(reply.toUInt(&ok, 16))
+                                                                : reply.toDouble(&ok);
+        if (!ok)
+            break;
+        return tr("Unit EEPROM differs from the profile: %1 is %2 in the unit, %3 in the profile")
+            .arg(eepromLabel(m_controller->state().variant, e.address),
+                 eepromValueText(e.kind, unit), eepromValueText(e.kind, e.value));
+    }
+    return tr("Unit EEPROM differs from the profile: %1").arg(d);
+}
+
 void MainWindow::onConnected()
 {
     // Once, in the user's words (the driver's own English log line of each is not shown).
     for (const auto &d : m_controller->state().eepromDifferences)
-        m_console->appendInfo(
-            tr("Unit EEPROM differs from the profile: %1").arg(QString::fromStdString(d)));
+        m_console->appendInfo(eepromDifferenceText(d));
 }
 
 void MainWindow::connectControls()
@@ -229,17 +252,17 @@ void MainWindow::connectControls()
             &session::ConsoleSession::execute);
 }
 
-// A run asked before homing: home, then run - or not (never modal under offscreen tests).
+// A run asked before homing: home, then run - or not. The question is a window-modal box that
+// does not block (open(), as the EEPROM dialog's), so tests answer it offscreen too.
 void MainWindow::askToHome()
 {
     const QString text = tr("The machine is not homed: its soft limits refer to nothing yet. "
                             "Home all axes now and then run the program?");
     m_console->appendInfo(text);
     statusBar()->showMessage(text, 15000);
-    if (QGuiApplication::platformName() == QLatin1String("offscreen"))
-        return;
     auto *box = new QMessageBox(QMessageBox::Question, tr("Frezka"), text,
                                 QMessageBox::Yes | QMessageBox::Cancel, this);
+    box->setObjectName(QStringLiteral("askToHome"));
     box->button(QMessageBox::Yes)->setText(tr("Home and run"));
     box->setAttribute(Qt::WA_DeleteOnClose);
     connect(box, &QMessageBox::accepted, m_workflow, &session::RunWorkflow::homeThenRun);
@@ -258,6 +281,9 @@ void MainWindow::connectToUnit()
                                   .arg(last, QString::fromStdString(config.link.port)));
         config.link.port = last.toStdString();
         config.link.baud = settings.value(QStringLiteral("link/baud"), config.link.baud).toInt();
+        // The window's profile names the port in use, so the settings show it and applying
+        // another port (the saved profile's too) connects that one; the file is not changed.
+        m_workflow->setProfile(config);
     }
     m_connectedOnce = true;
     settings.setValue(QStringLiteral("link/port"), QString::fromStdString(config.link.port));

@@ -92,6 +92,16 @@ QRectF SpeedPlot::plotRect() const
     return QRectF(left, top, width() - left - 4, height() - top - fm.height() - 4);
 }
 
+QRect SpeedPlot::topLabelRect() const
+{
+    const QRectF r = plotRect();
+    const QFontMetrics fm = fontMetrics();
+    const QRect box =
+        QRectF(0, r.top() - fm.height() / 2.0, r.left() - 4, fm.height()).toAlignedRect();
+    return fm.boundingRect(box, Qt::AlignRight | Qt::AlignVCenter,
+                           QString::number(m_maxSpeed, 'f', 0));
+}
+
 void SpeedPlot::paintEvent(QPaintEvent *)
 {
     QPainter p(this);
@@ -100,9 +110,8 @@ void SpeedPlot::paintEvent(QPaintEvent *)
     p.setPen(QColor(90, 90, 90));
     p.drawRect(r);
     p.setPen(QColor(200, 200, 200));
-    const int lineH = fontMetrics().height();
-    p.drawText(QRectF(0, r.top() - lineH / 2.0, r.left() - 4, lineH),
-               Qt::AlignRight | Qt::AlignVCenter, QString::number(m_maxSpeed, 'f', 0));
+    p.drawText(topLabelRect(), Qt::AlignRight | Qt::AlignVCenter,
+               QString::number(m_maxSpeed, 'f', 0));
     p.drawText(QRectF(0, r.bottom() - 16, r.left() - 4, 16), Qt::AlignRight, QStringLiteral("0"));
     p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), 20), Qt::AlignLeft,
                tr("mm/min along the path (%1 mm)").arg(m_maxDistance, 0, 'f', 0));

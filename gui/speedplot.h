@@ -36,6 +36,9 @@ public:
     const std::vector<SpeedSample> &planned() const { return m_planned; }
     const std::vector<SpeedSample> &actual() const { return m_actual; }
     QSize sizeHint() const override { return {400, 120}; }
+    // Where the top speed label (the plot's highest speed) is drawn, in widget coordinates: the
+    // box its text takes, ascent to descent, never cut by the widget's edges or its own box.
+    QRect topLabelRect() const;
 
 protected:
     void paintEvent(QPaintEvent *event) override;

@@ -2736,6 +2736,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>EEPROM jednotky se liší od profilu: %1</translation>
     </message>
     <message>
+        <source>Unit EEPROM differs from the profile: %1 is %2 in the unit, %3 in the profile</source>
+        <translation>EEPROM jednotky se liší od profilu: %1 je v jednotce %2, v profilu %3</translation>
+    </message>
+    <message>
         <source>The unit reported a problem: %1</source>
         <translation>Jednotka hlásí problém: %1</translation>
     </message>

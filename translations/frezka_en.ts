@@ -2731,6 +2731,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>Unit EEPROM differs from the profile: %1</translation>
     </message>
     <message>
+        <source>Unit EEPROM differs from the profile: %1 is %2 in the unit, %3 in the profile</source>
+        <translation>Unit EEPROM differs from the profile: %1 is %2 in the unit, %3 in the profile</translation>
+    </message>
+    <message>
         <source>The unit reported a problem: %1</source>
         <translation>The unit reported a problem: %1</translation>
     </message>

@@ -6,6 +6,7 @@
 // driver error are Czech in the Czech interface; the EEPROM dialog asks before it writes.
 // Never sleeps on a guess: every wait is on the machine's own state.
 #include "gui/consolewidget.h"
+#include "gui/eepromdecode.h"
 #include "gui/holdbanner.h"
 #include "gui/mainwindow.h"
 #include "gui/programlisting.h"
@@ -21,10 +22,13 @@
 
 #include "driver/link/machinecontroller.h"
 
+#include <QDockWidget>
 #include <QLabel>
 #include <QMessageBox>
+#include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScopeGuard>
 #include <QSettings>
 #include <QStandardPaths>
@@ -40,7 +44,8 @@ using driver::MachineMode;
 
 namespace {
 constexpr int kMachineTimeoutMs = 60000;
-}
+constexpr char kPtyFirmware[] = "IP64MPG v19 26.11.2026"; // gve-emu's, not the built-in's
+} // namespace
 
 class ScreenTest : public QObject
 {
@@ -82,6 +87,53 @@ private:
     {
         return QTest::qWaitFor([&] { return state().mode == MachineMode::Idle; },
                                kMachineTimeoutMs);
+    }
+
+    MainWindowOptions windowOptions() const
+    {
+        MainWindowOptions options;
+        options.view = MainWindowOptions::View::Software;
+        options.restoreLayout = false;
+        return options;
+    }
+
+    // gve-emu on a pty of its own (started once), with a firmware text the built-in emulator
+    // does not have; its path, empty when it cannot be started (QSKIP then).
+    QString ptyUnit()
+    {
+#ifdef FREZKA_GVE_EMU
+        if (m_pty.isEmpty()) {
+            m_emu.setProgram(QStringLiteral(FREZKA_GVE_EMU));
+            m_emu.setArguments({QStringLiteral("--variant"), QStringLiteral("gve64"),
+                                QStringLiteral("--firmware"), QLatin1String(kPtyFirmware),
+                                QStringLiteral("--verbose")});
+            m_emu.start();
+            if (!m_emu.waitForStarted() ||
+                !QTest::qWaitFor([this] { return m_emu.canReadLine(); }, 10000))
+                return {};
+            m_pty = QString::fromLocal8Bit(m_emu.readLine()).trimmed();
+        }
+#endif
+        return m_pty;
+    }
+
+    // What gve-emu has received so far ("pc>" lines of its --verbose log), joined.
+    QByteArray ptyReceived()
+    {
+        m_emuLog += m_emu.readAllStandardError();
+        QByteArray in;
+        for (const QByteArray &line : m_emuLog.split('\n')) {
+            const int at = int(line.indexOf(" pc> "));
+            if (at >= 0)
+                in += line.mid(at + 5).replace("\\r", "\r");
+        }
+        return in;
+    }
+
+    bool connectedTo(const QString &port) const
+    {
+        return state().mode == MachineMode::Idle && connectionText().contains(port) &&
+               state().firmware == kPtyFirmware;
     }
 
     // Line k (3 .. 42) of the stepped program cuts X from 2(k-3) to 2(k-2) mm past its start.
@@ -307,6 +359,53 @@ private slots:
             QVERIFY2(s.speedMmPerMin <= reach + 1e-6, qPrintable(QString::number(s.speedMmPerMin)));
     }
 
+    // The speed plot's top label (its highest speed) is drawn whole (issue 14: "its top label
+    // is cut off"): at the size the main window gives the plot and at the plot's smallest
+    // height, for speeds of four to six digits, the label's box lies inside the widget and no
+    // pixel of it is drawn on the widget's top row (a label whose ascent went above y = 0 would
+    // be cut there).
+    void speedPlotTopLabelIsWhole()
+    {
+        auto *dock = m_window->findChild<QDockWidget *>(QStringLiteral("plotDock"));
+        QVERIFY(dock);
+        dock->raise();
+        SpeedPlot *inWindow = m_window->speedPlot();
+        QTRY_VERIFY(inWindow->isVisible() && inWindow->height() >= inWindow->minimumHeight());
+        const std::vector<SpeedSample> kept = inWindow->planned();
+        const auto restore = qScopeGuard([&] {
+            inWindow->setPlanned(kept);
+            m_window->findChild<QDockWidget *>(QStringLiteral("consoleDock"))->raise();
+        });
+        SpeedPlot small;
+        small.resize(inWindow->width(), small.minimumHeight());
+        for (SpeedPlot *plot : {inWindow, &small}) {
+            for (double top : {4000.0, 57300.0, 123456.0}) {
+                plot->setPlanned({{0, 0, 1}, {50, top, 2}, {100, 0, 3}});
+                const QString where =
+                    QStringLiteral("%1x%2, top %3").arg(plot->width()).arg(plot->height()).arg(top);
+                const QRect label = plot->topLabelRect();
+                QVERIFY2(plot->rect().contains(label),
+                         qPrintable(where + QStringLiteral(": label at %1,%2 %3x%4")
+                                                .arg(label.x())
+                                                .arg(label.y())
+                                                .arg(label.width())
+                                                .arg(label.height())));
+                // What is drawn: the label's pixels, none on the top row.
+                const QImage image = plot->grab().toImage();
+                const QRgb background = image.pixel(0, image.height() / 2);
+                int labelPixels = 0;
+                for (int y = label.top(); y <= label.bottom(); ++y)
+                    for (int x = label.left(); x <= label.right(); ++x)
+                        labelPixels += image.pixel(x, y) != background ? 1 : 0;
+                QVERIFY2(labelPixels > 0, qPrintable(where + QStringLiteral(": no label drawn")));
+                for (int x = 0; x < image.width(); ++x)
+                    QVERIFY2(image.pixel(x, 0) == background,
+                             qPrintable(where +
+                                        QStringLiteral(": drawn on the top row at x %1").arg(x)));
+            }
+        }
+    }
+
     // The EEPROM dialog asks before "Write differences" writes: nothing goes to the unit until
     // the operator says yes; Cancel writes nothing.
     void eepromWriteAsksFirst()
@@ -412,6 +511,149 @@ private slots:
         QTRY_COMPARE(button(m_window->runPanel(), "run")->text(), QStringLiteral("Run"));
     }
 
+    // The EEPROM differences found on connecting are in the console once each, in the user's
+    // words, with plain numbers (issue 14: "EEPROM differences are logged twice, once in each
+    // language, with values like 'profile 10.000000'"), in English and again in Czech: a unit
+    // (gve-emu on a pty, its EEPROM as shipped) that differs from the profile in Y's steps per mm
+    // and the STEP/DIR polarity.
+    void eepromDifferencesAreLoggedOncePerConnect()
+    {
+        const QString pty = ptyUnit();
+        if (pty.isEmpty())
+            QSKIP("gve-emu is not available");
+        QVERIFY(waitIdle());
+        const machine::MachineConfig original = m_window->profile();
+        machine::MachineConfig differs = original;
+        differs.link.port = pty.toStdString();
+        differs.axes[1].stepsPerMm = 250;
+        differs.eeprom.polarity = 0x5A;
+        const auto restore = qScopeGuard([&] {
+            SettingsDialog *settings = m_window->openSettings();
+            settings->chooseLanguage(QStringLiteral("en"));
+            settings->close();
+            m_window->applyProfile(original, m_window->profilePath());
+            (void)QTest::qWaitFor(
+                [&] { return connectionText().contains(QStringLiteral("built-in")); }, 20000);
+        });
+        // The entries of the two settings changed here.
+        machine::EepromEntry stepsY, polarity;
+        for (const machine::EepromEntry &e : machine::eepromEntries(differs)) {
+            if (e.what == "steps per mm Y")
+                stepsY = e;
+            if (e.kind == machine::EepromKind::Byte && e.value == 0x5A)
+                polarity = e;
+        }
+        QVERIFY(!stepsY.what.empty() && !polarity.what.empty());
+        // Each difference the unit reported, once, in console entries from `from` on; the two
+        // made here with their captions and values as the unit shows them (a byte in hex).
+        auto told = [&](std::size_t from, const QString &prefix, bool czech) {
+            const auto &differences = state().eepromDifferences;
+            QStringList problems;
+            if (differences.size() < 2)
+                problems << QStringLiteral("%1 differences").arg(differences.size());
+            const auto &log = m_window->console()->entries();
+            QStringList lines;
+            for (std::size_t i = from; i < log.size(); ++i) {
+                const QString e = QString::fromUtf8(log[i].bytes);
+                if (e.contains(QStringLiteral("EEPROM")) &&
+                    !(log[i].direction == LogDirection::Sent ||
+                      log[i].direction == LogDirection::Received))
+                    lines << e;
+            }
+            if (lines.size() != int(differences.size()))
+                problems << QStringLiteral("%1 EEPROM lines for %2 differences")
+                                .arg(lines.size())
+                                .arg(differences.size());
+            static const QRegularExpression kLong(QStringLiteral("\\d\\.\\d{5}"));
+            static const QRegularExpression kEnglish(QStringLiteral("\\b(unit|profile|steps)\\b"),
+                                                     QRegularExpression::CaseInsensitiveOption);
+            for (const QString &line : std::as_const(lines)) {
+                if (!line.startsWith(prefix))
+                    problems << QStringLiteral("not in the user's words: ") + line;
+                if (line.contains(kLong))
+                    problems << QStringLiteral("long number: ") + line;
+                if (czech && line.contains(kEnglish))
+                    problems << QStringLiteral("English words: ") + line;
+            }
+            const auto variant = differs.unit.variant;
+            const QStringList y = lines.filter(eepromLabel(variant, stepsY.address));
+            if (y.size() != 1 || !y.front().contains(QStringLiteral("250")))
+                problems << QStringLiteral("steps per mm Y (250) not told once");
+            const QStringList p = lines.filter(eepromLabel(variant, polarity.address));
+            if (p.size() != 1 || !p.front().contains(QStringLiteral("5A")) ||
+                p.front().contains(QStringLiteral("90")))
+                problems << QStringLiteral("polarity 5A not told once in hex");
+            return problems.isEmpty() ? QString()
+                                      : problems.join(QLatin1Char('\n')) + QStringLiteral("\n") +
+                                            lines.join(QLatin1Char('\n'));
+        };
+        std::size_t from = m_window->console()->entries().size();
+        m_window->applyProfile(differs, m_window->profilePath());
+        QTRY_VERIFY_WITH_TIMEOUT(connectedTo(pty), 20000);
+        QTRY_VERIFY(!state().eepromDifferences.empty());
+        QTest::qWait(0);
+        QString problems =
+            told(from, QStringLiteral("Unit EEPROM differs from the profile: "), false);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems));
+        // Again in Czech, on a new connect.
+        SettingsDialog *settings = m_window->openSettings();
+        settings->chooseLanguage(QStringLiteral("cs"));
+        settings->close();
+        QTRY_COMPARE(button(m_window->runPanel(), "run")->text(), QStringLiteral("Spustit"));
+        m_window->disconnectFromUnit();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Disconnected, 10000);
+        from = m_window->console()->entries().size();
+        m_window->connectToUnit();
+        QTRY_VERIFY_WITH_TIMEOUT(connectedTo(pty), 20000);
+        QTRY_VERIFY(!state().eepromDifferences.empty());
+        QTest::qWait(0);
+        problems = told(from, QStringLiteral("EEPROM jednotky se liší od profilu: "), true);
+        QVERIFY2(problems.isEmpty(), qPrintable(problems));
+    }
+
+    // A port set with Apply is connected at once on a serial line like the hardware's (gve-emu
+    // on a pty, opened by its path): the pty's unit is read (its own firmware text) and Ready;
+    // after a restart of the window with the same settings the pty is connected again (issue
+    // 14: "after a restart the application silently uses the built-in emulator instead of the
+    // last port; a new port set with Apply does not reconnect").
+    void appliedPtyPortIsConnectedAndUsedAfterARestart()
+    {
+        const QString pty = ptyUnit();
+        if (pty.isEmpty())
+            QSKIP("gve-emu is not available");
+        QVERIFY(waitIdle());
+        QVERIFY2(connectionText().contains(QStringLiteral("built-in emulator")),
+                 qPrintable(connectionText()));
+        QCOMPARE(m_window->profile().link.port, std::string("emulator"));
+        machine::MachineConfig config = m_window->profile();
+        config.link.port = pty.toStdString();
+        const qsizetype heard = ptyReceived().size();
+        m_window->applyProfile(config, m_window->profilePath());
+        QTRY_VERIFY2_WITH_TIMEOUT(connectedTo(pty), qPrintable(connectionText()), 20000);
+        QVERIFY2(connectionText().contains(QStringLiteral("Ready")), qPrintable(connectionText()));
+        QVERIFY(ptyReceived().mid(heard).contains("!0?")); // the unit on the pty was asked
+        QCOMPARE(QSettings().value(QStringLiteral("link/port")).toString(), pty);
+        // A restart: the saved profile still says the built-in emulator.
+        m_window.reset();
+        const qsizetype heardBefore = ptyReceived().size();
+        m_window = std::make_unique<MainWindow>(windowOptions());
+        m_window->show();
+        QTRY_VERIFY2_WITH_TIMEOUT(connectedTo(pty), qPrintable(connectionText()), 20000);
+        QVERIFY(ptyReceived().mid(heardBefore).contains("!0?"));
+        QCOMPARE(m_window->profile().link.port, pty.toStdString()); // what the settings show
+        // Applying the saved profile's port (the built-in emulator) connects it.
+        const machine::ConfigResult saved =
+            machine::loadMachineConfig(m_window->profilePath().toStdString());
+        QVERIFY(saved.config);
+        QCOMPARE(saved.config->link.port, std::string("emulator"));
+        m_window->applyProfile(*saved.config, m_window->profilePath());
+        QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Idle &&
+                                      connectionText().contains(QStringLiteral("built-in")),
+                                  qPrintable(connectionText()), 20000);
+        QCOMPARE(QSettings().value(QStringLiteral("link/port")).toString(),
+                 QStringLiteral("emulator"));
+    }
+
     // A multi-line error is shown on console lines, not with a literal "\n"; a good file clears
     // the previous file's error; after an abort no progress is left shown.
     void staleErrorsAndProgressAreCleared()
@@ -468,7 +710,12 @@ private slots:
         for (const LogEntry &e : m_window->console()->entries())
             told = told || QString::fromUtf8(e.bytes).contains(QStringLiteral("port used last"));
         QVERIFY(told);
-        QCOMPARE(m_window->profile().link.port, std::string("emulator")); // the profile as saved
+        // The window's profile names the port in use; the saved profile is unchanged.
+        QCOMPARE(m_window->profile().link.port, std::string("/nonexistent/ttyLAST"));
+        const machine::ConfigResult saved =
+            machine::loadMachineConfig(m_window->profilePath().toStdString());
+        QVERIFY(saved.config);
+        QCOMPARE(saved.config->link.port, std::string("emulator"));
     }
 
     void cleanup()
@@ -479,11 +726,19 @@ private slots:
         }
     }
 
-    void cleanupTestCase() { m_window.reset(); }
+    void cleanupTestCase()
+    {
+        m_window.reset();
+        m_emu.terminate();
+        m_emu.waitForFinished(5000);
+    }
 
 private:
     QTemporaryDir m_dir;
     std::unique_ptr<MainWindow> m_window;
+    QProcess m_emu;      // gve-emu, once a test asks for the pty unit
+    QString m_pty;       // its pty
+    QByteArray m_emuLog; // its --verbose log read so far
 };
 
 QTEST_MAIN(ScreenTest)

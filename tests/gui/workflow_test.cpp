@@ -27,9 +27,13 @@
 #include <QCheckBox>
 #include <QDir>
 #include <QLabel>
+#include <QMessageBox>
+#include <QPointer>
 #include <QProcess>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QRegularExpression>
+#include <QScopeGuard>
 #include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
@@ -80,6 +84,53 @@ private:
         return state().mode == MachineMode::Idle;
     }
 
+    // Records every command the driver puts on the wire ("> " lines of its log), in order.
+    struct WireTap
+    {
+        QStringList sent;
+        QMetaObject::Connection connection;
+        ~WireTap() { QObject::disconnect(connection); }
+        // The first / last command that the pattern matches whole (-1: none).
+        int first(const QRegularExpression &re) const { return int(sent.indexOf(re)); }
+        int last(const QRegularExpression &re) const { return int(sent.lastIndexOf(re)); }
+    };
+    void tapWire(WireTap &tap)
+    {
+        tap.connection = connect(m_window->controller(), &driver::MachineController::logLine, this,
+                                 [&tap](const QString &line) {
+                                     if (line.startsWith(QLatin1String("> ")))
+                                         tap.sent << line.mid(2);
+                                 });
+    }
+
+    // Steps of a position in mm, as the planner rounds them.
+    std::int64_t steps(int axis, double mm) const
+    {
+        return std::llround(mm * m_window->profile().axes[std::size_t(axis)].stepsPerMm);
+    }
+
+    // What gve-emu received on its pty ("pc>" lines of --verbose), joined.
+    QByteArray emulatorReceived()
+    {
+        m_emuLog += m_emu.readAllStandardError();
+        QByteArray in;
+        for (const QByteArray &line : m_emuLog.split('\n')) {
+            const int at = line.indexOf(" pc> ");
+            if (at >= 0)
+                in += line.mid(at + 5).replace("\\r", "\r");
+        }
+        return in;
+    }
+
+    bool homedMarksShown(std::uint8_t axes) const
+    {
+        for (int a = 0; a < 3; ++a) {
+            if (m_window->dro()->homedShown(a) != bool((axes >> a) & 1))
+                return false;
+        }
+        return true;
+    }
+
 private slots:
     void initTestCase()
     {
@@ -89,14 +140,16 @@ private slots:
         QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
         QCoreApplication::setOrganizationName(QStringLiteral("FrezkaWorkflowTest"));
         machine::MachineConfig profile = machine::defaultMachineConfig(protocol::Variant::Gve64);
-        if (qgetenv("FREZKA_WORKFLOW_UNIT") == "pty") {
+        m_pty = qgetenv("FREZKA_WORKFLOW_UNIT") == "pty";
+        if (m_pty) {
             // gve-emu with home switches where a GVE64 mill has them, on a pty opened by its
             // path like hardware.
             m_emu.setProgram(QStringLiteral(FREZKA_GVE_EMU));
             m_emu.setArguments({QStringLiteral("--variant"), QStringLiteral("gve64"),
                                 QStringLiteral("--home"), QStringLiteral("X=0"),
                                 QStringLiteral("--home"), QStringLiteral("Y=0"),
-                                QStringLiteral("--home"), QStringLiteral("Z=0,+")});
+                                QStringLiteral("--home"), QStringLiteral("Z=0,+"),
+                                QStringLiteral("--verbose")}); // what it receives, on stderr
             m_emu.start();
             QVERIFY(m_emu.waitForStarted());
             QTRY_VERIFY_WITH_TIMEOUT(m_emu.canReadLine(), 10000);
@@ -116,6 +169,181 @@ private slots:
         m_window->show();
         QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Idle, 20000);
         QVERIFY(!state().firmware.empty());
+    }
+
+    // Before homing the soft limits refer to nothing (issue 14: "with the shipped profiles (X min
+    // 0, Z max 0) the machine cannot be jogged X/Y negative or Z up until it has been homed"):
+    // the jog panel says the limits are off, and the X- and Z+ jog buttons move the unit from 0
+    // past those limits: the L goes on the wire and the unit's counters end there exactly.
+    void unhomedJogIgnoresTheSoftLimits()
+    {
+        QVERIFY(waitIdle());
+        QCOMPARE(int(state().homedAxes), 0);
+        const auto &axes = m_window->profile().axes;
+        QCOMPARE(axes[0].softMinMm, 0.0); // the shipped GVE64 profile
+        QCOMPARE(axes[2].softMaxMm, 0.0);
+        auto *limitsOff = m_window->jogPanel()->findChild<QLabel *>(QStringLiteral("limitsOff"));
+        QTRY_VERIFY(limitsOff->isVisible());
+        QVERIFY2(limitsOff->text().startsWith(QStringLiteral("XYZ not homed")),
+                 qPrintable(limitsOff->text()));
+        QCOMPARE(m_window->jogPanel()->stepMm(), 1.0);
+        for (const auto &[axis, name, mm] :
+             {std::tuple{0, "jogXMinus", -1.0}, std::tuple{2, "jogZPlus", 1.0}}) {
+            QVERIFY(waitIdle());
+            const std::int64_t from = state().positionSteps[std::size_t(axis)];
+            QCOMPARE(from, std::int64_t(0));
+            WireTap wire;
+            tapWire(wire);
+            button(m_window->jogPanel(), name)->click();
+            QTRY_VERIFY2_WITH_TIMEOUT(
+                state().positionSteps[std::size_t(axis)] == steps(axis, mm),
+                qPrintable(describe() + QLatin1Char(' ') + QLatin1String(name)), kMachineTimeoutMs);
+            QVERIFY(waitIdle());
+            QVERIFY2(m_window->lastError().isEmpty(), qPrintable(m_window->lastError()));
+            std::array<std::int64_t, 3> d{};
+            d[std::size_t(axis)] = steps(axis, mm);
+            const QString jog = QStringLiteral("!0L%1,%2,%3").arg(d[0]).arg(d[1]).arg(d[2]);
+            QVERIFY2(
+                wire.first(QRegularExpression(jog + QStringLiteral("(,0)?(,[0-9A-F]{2})?"))) >= 0,
+                qPrintable(jog + QStringLiteral(" not in ") + wire.sent.join(QLatin1Char('|'))));
+            if (m_pty)
+                QVERIFY(emulatorReceived().contains(jog.toLatin1()));
+        }
+        QVERIFY(limitsOff->isVisible());
+        // Back to 0 for the workflows after this one.
+        button(m_window->jogPanel(), "jogXPlus")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().positionSteps[0] == 0, kMachineTimeoutMs);
+        QVERIFY(waitIdle());
+        button(m_window->jogPanel(), "jogZMinus")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().positionSteps[2] == 0, kMachineTimeoutMs);
+        QVERIFY(waitIdle());
+    }
+
+    // Run before homing with the profile's default (motion.runBeforeHoming false) asks to home
+    // first (issue 14: "a program can be run before homing with no word of warning"). Cancel:
+    // nothing of the job (nor homing) goes on the wire and the unit stays; "Home and run": the
+    // homing legs (W) go on the wire and reach the unit before any vector of the job, and the
+    // job ends with the unit's counters exactly at the program's end.
+    void runBeforeHomingAsksToHomeFirst()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(!m_window->profile().motion.runBeforeHoming);
+        QVERIFY(!state().homed);
+        QVERIFY(load(writeProgram(QStringLiteral("homefirst.nc"), "G21 G90\n"
+                                                                  "G1 X10 Y10 Z-2 F1200\n"
+                                                                  "G1 X22.5 Y17.25\n"
+                                                                  "G1 Z-1\n"
+                                                                  "M30\n")));
+        QVERIFY(m_window->program()->program().runnable());
+        // The driver logs a packet of vectors (C, and B between them) as "packet of ...".
+        const QRegularExpression homing(QStringLiteral("!0W.*"));
+        const QRegularExpression vector(QStringLiteral("(!0C|packet of ).*"));
+        const auto start = state().positionSteps;
+        const QByteArray emuBefore = m_pty ? emulatorReceived() : QByteArray();
+        auto ask = [this]() -> QMessageBox * {
+            QMessageBox *box = nullptr;
+            (void)QTest::qWaitFor(
+                [&] {
+                    box = m_window->findChild<QMessageBox *>(QStringLiteral("askToHome"));
+                    return box && box->isVisible();
+                },
+                5000);
+            return box && box->isVisible() ? box : nullptr;
+        };
+        QPushButton *run = button(m_window->runPanel(), "run");
+        {
+            WireTap wire;
+            tapWire(wire);
+            run->click();
+            QPointer<QMessageBox> box = ask();
+            QVERIFY(box);
+            QCOMPARE(box->button(QMessageBox::Yes)->text(), MainWindow::tr("Home and run"));
+            box->button(QMessageBox::Cancel)->click();
+            QTRY_VERIFY(!box || !box->isVisible());
+            QSignalSpy polls(m_window->controller(), &driver::MachineController::stateChanged);
+            QTRY_VERIFY(polls.count() >= 5); // the link runs on: the job would have been sent
+            QCOMPARE(state().mode, MachineMode::Idle);
+            QVERIFY(!state().jobActive);
+            QCOMPARE(state().positionSteps, start);
+            // Only the polls (position, flags, inputs) went on the wire.
+            const QRegularExpression poll(QRegularExpression::anchoredPattern(
+                QStringLiteral("!0(P|PF|P4|F|I1|I2|SR6)(,[0-9A-F]{2})?")));
+            QVERIFY(!wire.sent.isEmpty());
+            for (const QString &command : std::as_const(wire.sent))
+                QVERIFY2(poll.match(command).hasMatch(), qPrintable(command));
+            if (m_pty)
+                QCOMPARE(emulatorReceived().mid(emuBefore.size()).indexOf("!0W"), -1);
+        }
+        WireTap wire;
+        tapWire(wire);
+        QSignalSpy started(m_window->workflow(), &session::RunWorkflow::jobStarted);
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        int sentAtStart = -1;
+        auto mark = connect(m_window->workflow(), &session::RunWorkflow::jobStarted, this,
+                            [&] { sentAtStart = int(wire.sent.size()); });
+        const auto unmark = qScopeGuard([&] { disconnect(mark); });
+        run->click();
+        QPointer<QMessageBox> box = ask();
+        QVERIFY(box);
+        box->button(QMessageBox::Yes)->click();
+        QVERIFY2(finished.wait(kMachineTimeoutMs), qPrintable(describe()));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QVERIFY(waitIdle());
+        QCOMPARE(started.size(), 1);
+        // On the wire: homing legs, then the job's vectors, none of them before the last leg.
+        const int firstW = wire.first(homing), lastW = wire.last(homing);
+        const int firstVector = wire.first(vector);
+        QVERIFY2(firstW >= 0 && firstVector > lastW && sentAtStart > lastW,
+                 qPrintable(QStringLiteral("W %1..%2, first vector %3, job started at %4: %5")
+                                .arg(firstW)
+                                .arg(lastW)
+                                .arg(firstVector)
+                                .arg(sentAtStart)
+                                .arg(wire.sent.join(QLatin1Char('|')))));
+        if (m_pty) {
+            // The unit received them in that order too.
+            const QByteArray in = emulatorReceived().mid(emuBefore.size());
+            const qsizetype w = in.lastIndexOf("!0W");
+            QVERIFY2(w >= 0 && in.indexOf("!0*S") > w, in.right(2000).constData());
+        }
+        QVERIFY(state().homed);
+        // The unit's counters at the program's end, exactly.
+        const auto &plan = m_window->program()->program().unitProgram;
+        QVERIFY(plan && !plan->commands.empty());
+        const machine::Steps4 end = plan->commands.back().endSteps;
+        QCOMPARE(end[0], steps(0, 22.5));
+        QCOMPARE(end[1], steps(1, 17.25));
+        QCOMPARE(end[2], steps(2, -1));
+        QTRY_VERIFY2_WITH_TIMEOUT(state().positionSteps[0] == end[0] &&
+                                      state().positionSteps[1] == end[1] &&
+                                      state().positionSteps[2] == end[2],
+                                  qPrintable(describe()), 10000);
+    }
+
+    // "Homed" belongs to one link's unit: homed marks are shown once homed, and after Disconnect
+    // and Connect (a new link; a fresh unit on the built-in emulator) no axis is marked homed and
+    // the limits are off again (issue 14: "The 'homed' marks stay green after Disconnect and
+    // Connect to a fresh, unhomed unit").
+    void homedMarksAreClearedOnANewLink()
+    {
+        QVERIFY(waitIdle());
+        if (!state().homed) {
+            button(m_window->jogPanel(), "homeAll")->click();
+            QTRY_VERIFY_WITH_TIMEOUT(state().homed && state().mode == MachineMode::Idle,
+                                     kMachineTimeoutMs);
+        }
+        auto *limitsOff = m_window->jogPanel()->findChild<QLabel *>(QStringLiteral("limitsOff"));
+        QTRY_VERIFY(homedMarksShown(0b111));
+        QTRY_VERIFY(!limitsOff->isVisible());
+        m_window->disconnectFromUnit();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Disconnected, 10000);
+        m_window->connectToUnit();
+        QTRY_COMPARE_WITH_TIMEOUT(state().mode, MachineMode::Idle, 20000);
+        QVERIFY(!state().firmware.empty());
+        QTRY_VERIFY(homedMarksShown(0));
+        QTRY_VERIFY(limitsOff->isVisible());
+        QVERIFY(!state().homed);
+        QCOMPARE(int(state().homedAxes), 0);
     }
 
     void openCheckHomeRunToTheEnd()
@@ -636,6 +864,8 @@ M30
 private:
     QTemporaryDir m_dir;
     QProcess m_emu;
+    QByteArray m_emuLog; // gve-emu's --verbose log read so far
+    bool m_pty = false;  // the unit is gve-emu on a pty
     std::unique_ptr<MainWindow> m_window;
 };
 
