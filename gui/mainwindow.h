@@ -149,7 +149,7 @@ private:
     void onJobFinished(bool ok);
     void onChecked(bool ok);
     void onConnected();
-    QString eepromDifferenceText(const std::string &difference) const;
+    QString eepromDifferenceText(const driver::EepromDifference &difference) const;
     void updateRunPhase();
     bool jogKey(QKeyEvent *event, bool pressed);
 

@@ -154,27 +154,13 @@ void MainWindow::onChecked(bool ok)
 }
 
 // One EEPROM difference in the user's words: the setting's caption and both values as the unit
-// shows them (bytes in hex). The driver reports "<what>: unit <reply>, profile <value>" in
-// English (driver/link/eepromsync.cpp); an entry of the profile is found by its <what>.
-QString MainWindow::eepromDifferenceText(const std::string &difference) const
+// shows them (bytes in hex).
+QString MainWindow::eepromDifferenceText(const driver::EepromDifference &d) const
 {
-    const QString d = QString::fromStdString(difference);
-    for (const machine::EepromEntry &e : machine::eepromEntries(profile())) {
-        const QString head = QString::fromStdString(e.what) + QStringLiteral(": unit ");
-        const auto comma = d.indexOf(QStringLiteral(", profile "));
-        if (!d.startsWith(head) || comma < head.size())
-            continue;
-        const QString reply = d.mid(head.size(), comma - head.size());
-        bool ok = false;
-        const double unit = e.kind == machine::EepromKind::Byte ? double(reply.toUInt(&ok, 16))
-                                                                : reply.toDouble(&ok);
-        if (!ok)
-            break;
-        return tr("Unit EEPROM differs from the profile: %1 is %2 in the unit, %3 in the profile")
-            .arg(eepromLabel(m_controller->state().variant, e.address),
-                 eepromValueText(e.kind, unit), eepromValueText(e.kind, e.value));
-    }
-    return tr("Unit EEPROM differs from the profile: %1").arg(d);
+    return tr("Unit EEPROM differs from the profile: %1 is %2 in the unit, %3 in the profile")
+        .arg(eepromLabel(m_controller->state().variant, d.entry.address),
+             eepromValueText(d.entry.kind, d.unitValue),
+             eepromValueText(d.entry.kind, d.entry.value));
 }
 
 void MainWindow::onConnected()

@@ -7,10 +7,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace frezka::driver {
 
 using namespace frezka::protocol;
+
+namespace {
+// A value as the unit shows it: a byte in two hex digits, a number without trailing zeros.
+std::string valueText(machine::EepromKind kind, double value)
+{
+    if (kind != machine::EepromKind::Byte)
+        return numberText(value);
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "%02X", static_cast<unsigned>(std::lround(value)) & 0xFFu);
+    return hex;
+}
+} // namespace
 
 MachineState &EepromSync::state()
 {
@@ -48,9 +61,9 @@ void EepromSync::compare()
                                          ? 1e-4 * std::max(1.0, std::abs(e.value))
                                          : 0.0;
             if (std::abs(have - e.value) > tolerance) {
-                const std::string text = e.what + ": unit " + o.reply.values.front() +
-                                         ", profile " + numberText(e.value);
-                state().eepromDifferences.push_back(text);
+                const std::string text = e.what + ": unit " + valueText(e.kind, have) +
+                                         ", profile " + valueText(e.kind, e.value);
+                state().eepromDifferences.push_back({e, have, text});
                 m_host.markDirty();
                 m_host.log("EEPROM differs: " + text);
             }

@@ -82,9 +82,9 @@ struct Outcome
     std::string error;     // Failed: English, names the command and what came back
     LinkFailure failure = LinkFailure::None;
     // GaveUp: the command, what went wrong (a fixed phrase: "no reply", "garbled reply", ...),
-    // the last reply quoted after a space (or ""), the attempts; IndexUnknown: the command; IndexUnexpected:
-    // the command, the unit's index, the two it could have been. A packet's command is its first
-    // with the count of the rest: "'!0C5,0,0' (+41)".
+    // the last reply quoted after a space (or ""), the attempts; IndexUnknown: the command;
+    // IndexUnexpected: the command, the unit's index, the two it could have been. A packet's
+    // command is its first with the count of the rest: "'!0C5,0,0' (+41)".
     std::vector<std::string> failureArgs;
     int resent = 0;        // times the transaction was sent again (unit did not get it)
     int recovered = 0;     // times a lost or garbled reply was recovered with '@' / '>'

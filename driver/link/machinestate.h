@@ -59,6 +59,17 @@ enum class MachineActivity : std::uint8_t {
 // English name ("Return to path"), for logs and tests.
 const char *machineActivityName(MachineActivity activity);
 
+// A setting whose EEPROM value in the unit differs from the profile's: the entry (address, kind,
+// the profile's value, its English name), the unit's value, and the English line for the log
+// ("steps per mm X: unit 200, profile 400"; bytes in hex: "polarity: unit 00, profile 5A").
+struct EepromDifference
+{
+    machine::EepromEntry entry;
+    double unitValue = 0;
+    std::string text;
+    friend bool operator==(const EepromDifference &, const EepromDifference &) = default;
+};
+
 struct MachineState;
 // The unit accepted `c`: the spindle and port 0 as it drives them now (docs/gve-protocol.md §9:
 // !7V0 also switches OUT0 off, !7V1..1000 on; a GVE84 switches its spindle with the profile's
@@ -108,7 +119,7 @@ struct MachineState
     std::string unitId;          // reply to 'Q'
     bool checksums = false;
     int axisCount = 3;
-    std::vector<std::string> eepromDifferences; // "steps per mm X: unit 200, profile 400"
+    std::vector<EepromDifference> eepromDifferences; // found on connecting (EepromSync)
 
     // position (instantaneous counters, polled)
     std::array<std::int64_t, 4> positionSteps{};
