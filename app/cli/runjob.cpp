@@ -120,6 +120,21 @@ QString scriptedHold(const RunArgs &a, session::SimLink &link, session::RunWorkf
     return {};
 }
 
+// The connection of --port: the in-process emulator in real time (sim), or a serial port / pty.
+driver::ConnectionSettings connectionSettings(const RunArgs &a, int baud)
+{
+    driver::ConnectionSettings settings;
+    const bool sim = a.port == QLatin1String("sim");
+    settings.kind = sim ? driver::ConnectionSettings::Kind::Emulator
+                        : driver::ConnectionSettings::Kind::SerialPort;
+    settings.portName = a.port;
+    settings.baud = baud;
+    settings.latencyMs = a.latencyMs;
+    settings.faultRate = a.faults;
+    settings.seed = a.seed;
+    return settings;
+}
+
 } // namespace
 
 RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
@@ -219,15 +234,7 @@ RunOutcome runReal(const RunArgs &a, const machine::MachineConfig &config,
                          if (s.jobActive)
                              progress.show(s);
                      });
-    driver::ConnectionSettings settings;
-    const bool sim = a.port == QLatin1String("sim");
-    settings.kind = sim ? driver::ConnectionSettings::Kind::Emulator
-                        : driver::ConnectionSettings::Kind::SerialPort;
-    settings.portName = a.port;
-    settings.baud = options.link.baud;
-    settings.latencyMs = a.latencyMs;
-    settings.faultRate = a.faults;
-    settings.seed = a.seed;
+    const driver::ConnectionSettings settings = connectionSettings(a, options.link.baud);
     QTimer::singleShot(0, &worker, [&] { workflow.start(settings, a.home); });
     loop.exec();
     progress.show(link.state(), true);
