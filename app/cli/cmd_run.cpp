@@ -26,58 +26,26 @@
 // the program's highest feed level as the top of the work (docs/emulator.md).
 #include "cli.h"
 
-#include "driver/link/emulatorport.h"
-#include "driver/link/emulatortransport.h"
-#include "driver/link/linkworker.h"
+#include "runjob.h"
+
 #include "gcode/interpreter.h"
 #include "machine/planner.h"
 #include "session/programplanner.h"
-#include "session/qtmachinelink.h"
-#include "session/runworkflow.h"
-#include "session/simlink.h"
 
 #include <QCoreApplication>
-#include <QEventLoop>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QTimer>
 
-#include <cmath>
 #include <optional>
-#include <unistd.h>
 
 namespace {
 
 using namespace frezka;
-
-// The run command's messages (Czech and English in translations/).
-struct RunCli
-{
-    Q_DECLARE_TR_FUNCTIONS(RunCli)
-};
-
-struct RunArgs
-{
-    QString file;
-    QString machine;
-    QString port = QStringLiteral("sim");
-    int baud = 0; // 0 = the profile's
-    double latencyMs = 0;
-    double faults = 0;
-    quint32 seed = 1;
-    bool virtualClock = true;
-    bool clockGiven = false;
-    bool home = false;
-    bool returnToPath = false;
-    int feedOverride = 0; // 0 = unchanged
-    int holdAtLine = 0;   // 0 = no scripted hold
-    bool lift = false;
-};
-
-// The scripted operator's wait while the job is held (--hold-at-line).
-constexpr double kScriptedHoldS = 5.0;
+using cli::RunArgs;
+using cli::RunCli;
+using cli::RunOutcome;
 
 int usage()
 {
@@ -214,235 +182,6 @@ std::optional<Prepared> prepare(const RunArgs &a)
     return Prepared{config, std::move(*p.program), p.stats, workTop(*g.toolpath)};
 }
 
-// Progress bar on a terminal (stderr), at most every 0.2 s of wall time.
-class Progress
-{
-public:
-    Progress()
-        : m_tty(isatty(2) != 0)
-    {
-        m_wall.start();
-    }
-    void show(const driver::MachineState &s, bool force = false)
-    {
-        if (!m_tty || (!force && m_wall.elapsed() < 200))
-            return;
-        m_wall.restart();
-        const int width = 30;
-        const int filled = static_cast<int>(std::lround(s.progress * width));
-        QString bar = QString(filled, QLatin1Char('#')) + QString(width - filled, QLatin1Char('.'));
-        QString eta = s.etaS < 0 ? QStringLiteral("--:--")
-                                 : QStringLiteral("%1:%2")
-                                       .arg(static_cast<int>(s.etaS) / 60)
-                                       .arg(static_cast<int>(s.etaS) % 60, 2, 10, QLatin1Char('0'));
-        cli::err(RunCli::tr("\r[%1] %2% line %3 ETA %4 ")
-                     .arg(bar)
-                     .arg(s.progress * 100, 5, 'f', 1)
-                     .arg(s.sourceLine)
-                     .arg(eta));
-    }
-    void done()
-    {
-        if (m_tty)
-            cli::err(QStringLiteral("\n"));
-    }
-
-private:
-    bool m_tty;
-    QElapsedTimer m_wall;
-};
-
-struct Outcome
-{
-    bool ok = false;
-    driver::JobReport report;
-    std::array<std::int64_t, 4> finalSteps{};
-    std::optional<emulator::Stats> unitStats;
-    std::optional<bool> spindleOnAtEnd; // the emulator's spindle when the job ended
-    QString error;
-};
-
-// The scripted operator of --hold-at-line: pause with the spindle stop at line N, (lift), wait,
-// (lower), continue. The workflow would end the run at a hold: it waits meanwhile. Empty when
-// all went as asked, else why not.
-QString scriptedHold(const RunArgs &a, session::SimLink &link, session::RunWorkflow &workflow)
-{
-    using driver::MachineMode;
-    const driver::MachineState &s = link.liveState();
-    auto until = [&](const std::function<bool()> &done, const char *what) {
-        return link.runUntil([&] { return done() || workflow.hasEnded(); }, 3600) &&
-                       !workflow.hasEnded()
-                   ? QString()
-                   : RunCli::tr("the scripted hold at line %1 failed %2: %3")
-                         .arg(a.holdAtLine)
-                         .arg(QString::fromLatin1(what),
-                              QString::fromStdString(s.lastError ? s.lastError->message
-                                                                 : std::string("(no error)")));
-    };
-    if (QString e = until(
-            [&] {
-                return s.mode == MachineMode::Running &&
-                       s.sourceLine >= std::uint32_t(a.holdAtLine);
-            },
-            "reaching the line");
-        !e.isEmpty())
-        return e;
-    workflow.setEndOnHold(false);
-    link.execute(driver::op::Pause{true});
-    if (QString e = until([&] { return s.mode == MachineMode::Paused && !s.spindleOn; }, "pausing");
-        !e.isEmpty())
-        return e;
-    if (a.lift) {
-        link.execute(driver::op::ToolLift{true});
-        if (QString e = until([&] { return s.mode == MachineMode::ToolLifted; }, "lifting");
-            !e.isEmpty())
-            return e;
-    }
-    link.runFor(kScriptedHoldS);
-    if (a.lift) {
-        link.execute(driver::op::ToolLower{0});
-        if (QString e = until(
-                [&] {
-                    return s.mode == MachineMode::Paused &&
-                           s.activity != driver::MachineActivity::ToolLift;
-                },
-                "lowering");
-            !e.isEmpty())
-            return e;
-    }
-    link.execute(driver::op::Resume{});
-    if (QString e = until([&] { return s.mode == MachineMode::Running; }, "continuing");
-        !e.isEmpty())
-        return e;
-    workflow.setEndOnHold(true);
-    return {};
-}
-
-// The in-process emulator on a virtual clock (SimLink), the run workflow turning it.
-Outcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
-                   const machine::UnitProgram &program, std::optional<double> workTopMm)
-{
-    Outcome out;
-    driver::WireOptions wire;
-    wire.baud = a.baud > 0 ? a.baud : config.link.baud;
-    wire.latencyS = a.latencyMs / 1000.0;
-    wire.byteErrorRate = a.faults;
-    wire.replyLossRate = a.faults;
-    wire.seed = a.seed;
-    driver::CoreOptions options;
-    options.returnToPathAutomatically = a.returnToPath;
-    options.link.baud = wire.baud;
-    emulator::UnitOptions unit = driver::unitOptionsFor(config);
-    if (workTopMm) { // the program starts at the machine's zero: its Z is the counter's
-        unit.machine.hasWorkSurface = true;
-        unit.machine.workSurfaceZSteps = std::llround(*workTopMm * config.axes[2].stepsPerMm);
-    }
-    session::SimLink link(config, unit, wire, options);
-    session::RunWorkflow workflow(link);
-    workflow.setProfile(config);
-    workflow.setEndOnHold(true); // nobody at the machine to answer a hold
-    workflow.setProgram(std::make_shared<const machine::UnitProgram>(program), {}, a.file);
-    bool ended = false;
-    QObject::connect(&workflow, &session::RunWorkflow::runEnded, [&](bool ok) { ended = ok; });
-    Progress progress;
-    workflow.start(session::RunWorkflow::connectionFor(config), a.home);
-    if (a.feedOverride > 0) {
-        link.runUntil([&] { return link.liveState().jobActive || workflow.hasEnded(); }, 600);
-        link.execute(driver::op::SetOverride{a.feedOverride});
-    }
-    if (a.holdAtLine > 0) {
-        if (QString e = scriptedHold(a, link, workflow); !e.isEmpty()) {
-            out.error = e;
-            out.unitStats = link.port().unit().stats();
-            return out;
-        }
-    }
-    while (!workflow.hasEnded()) {
-        link.runFor(0.25);
-        if (link.liveState().jobActive)
-            progress.show(link.liveState());
-        if (link.liveState().mode == driver::MachineMode::Connecting && link.now() > 120) {
-            out.error = RunCli::tr("could not connect to the emulator");
-            return out;
-        }
-    }
-    progress.show(link.liveState(), true);
-    progress.done();
-    out.ok = ended;
-    out.error = workflow.error();
-    out.report = link.jobReport();
-    out.finalSteps = link.liveState().positionSteps;
-    out.unitStats = link.port().unit().stats();
-    out.spindleOnAtEnd = link.port().unit().spindleTurning();
-    return out;
-}
-
-// A serial port / pty, or the emulator in real time: the link worker on this thread's event
-// loop, exactly as the GUI drives it (without the extra thread), the run workflow driving it.
-Outcome runReal(const RunArgs &a, const machine::MachineConfig &config,
-                const machine::UnitProgram &program)
-{
-    Outcome out;
-    driver::LinkWorker worker;
-    driver::CoreOptions options;
-    options.returnToPathAutomatically = a.returnToPath;
-    options.link.baud = a.baud > 0 ? a.baud : config.link.baud;
-    worker.setCoreOptions(options);
-    driver::EmulatorTransport *emulated = nullptr;
-    worker.setTransportFactory([&](const driver::ConnectionSettings &s,
-                                   const machine::MachineConfig &c, QObject *parent,
-                                   QString *error) -> driver::Transport * {
-        driver::Transport *t = driver::createTransport(s, c, parent, error);
-        emulated = qobject_cast<driver::EmulatorTransport *>(t);
-        return t;
-    });
-    session::QtMachineLink<driver::LinkWorker> link(worker);
-    session::RunWorkflow workflow(link);
-    workflow.setProfile(config);
-    workflow.setEndOnHold(true);
-    workflow.setProgram(std::make_shared<const machine::UnitProgram>(program), {}, a.file);
-    std::optional<bool> finished;
-    QEventLoop loop;
-    Progress progress;
-    QObject::connect(&workflow, &session::RunWorkflow::runEnded, &loop, [&](bool ok) {
-        finished = ok;
-        loop.quit();
-    });
-    bool overrideSent = a.feedOverride == 0;
-    QObject::connect(&link, &session::MachineLink::stateChanged, &loop,
-                     [&](const driver::MachineState &s) {
-                         if (s.jobActive && !overrideSent) {
-                             overrideSent = true;
-                             link.execute(driver::op::SetOverride{a.feedOverride});
-                         }
-                         if (s.jobActive)
-                             progress.show(s);
-                     });
-    driver::ConnectionSettings settings;
-    const bool sim = a.port == QLatin1String("sim");
-    settings.kind = sim ? driver::ConnectionSettings::Kind::Emulator
-                        : driver::ConnectionSettings::Kind::SerialPort;
-    settings.portName = a.port;
-    settings.baud = options.link.baud;
-    settings.latencyMs = a.latencyMs;
-    settings.faultRate = a.faults;
-    settings.seed = a.seed;
-    QTimer::singleShot(0, &worker, [&] { workflow.start(settings, a.home); });
-    loop.exec();
-    progress.show(link.state(), true);
-    progress.done();
-    out.ok = finished.value_or(false);
-    out.error = workflow.error();
-    out.report = worker.jobReport();
-    out.finalSteps = link.state().positionSteps;
-    if (emulated) {
-        out.unitStats = emulated->unit().stats();
-        out.spindleOnAtEnd = emulated->unit().spindleTurning();
-    }
-    worker.disconnectFromUnit();
-    return out;
-}
-
 double bytesPerVector(const machine::UnitProgram &program, bool checksums)
 {
     double bytes = 0;
@@ -467,7 +206,7 @@ QJsonArray steps(const std::array<std::int64_t, 4> &s, int axes)
     return a;
 }
 
-void printReport(const Outcome &o, const machine::UnitProgram &program,
+void printReport(const RunOutcome &o, const machine::UnitProgram &program,
                  const machine::PlanStats &stats, int baud)
 {
     const int axes = program.axisCount;
@@ -523,8 +262,8 @@ int runRun(const QStringList &args)
     if (!prepared)
         return 1;
     const auto &[config, program, stats, top] = *prepared;
-    const Outcome o =
-        a->virtualClock ? runVirtual(*a, config, program, top) : runReal(*a, config, program);
+    const RunOutcome o = a->virtualClock ? cli::runVirtual(*a, config, program, top)
+                                         : cli::runReal(*a, config, program);
     const int baud = a->baud > 0 ? a->baud : config.link.baud;
     if (!o.ok) {
         cli::err(

@@ -1,0 +1,65 @@
+#pragma once
+// frezka-cli run, internal: the parsed arguments, and the job run by the session's run workflow
+// on the emulator's virtual clock or on a real link (runjob.cpp); cmd_run.cpp parses, plans and
+// reports.
+
+#include "driver/link/coretypes.h"
+#include "driver/link/emulatorport.h"
+#include "machine/machineconfig.h"
+#include "machine/unitprogram.h"
+
+#include <QCoreApplication>
+#include <QString>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+namespace frezka::cli {
+
+// The run command's messages (Czech and English in translations/).
+struct RunCli
+{
+    Q_DECLARE_TR_FUNCTIONS(RunCli)
+};
+
+// The command line of frezka-cli run, as parseArgs (cmd_run.cpp) reads it.
+struct RunArgs
+{
+    QString file;
+    QString machine;
+    QString port = QStringLiteral("sim");
+    int baud = 0; // 0 = the profile's
+    double latencyMs = 0;
+    double faults = 0;
+    quint32 seed = 1;
+    bool virtualClock = true;
+    bool clockGiven = false;
+    bool home = false;
+    bool returnToPath = false;
+    int feedOverride = 0; // 0 = unchanged
+    int holdAtLine = 0;   // 0 = no scripted hold
+    bool lift = false;
+};
+
+// What a run came to: the driver's job report and the unit's end state (emulator: its counters).
+struct RunOutcome
+{
+    bool ok = false;
+    driver::JobReport report;
+    std::array<std::int64_t, 4> finalSteps{};
+    std::optional<emulator::Stats> unitStats;
+    std::optional<bool> spindleOnAtEnd; // the emulator's spindle when the job ended
+    QString error;
+};
+
+// The in-process emulator on a virtual clock (SimLink), the run workflow turning it; workTopMm:
+// the highest Z a feed move reaches (the emulator's work surface), if any.
+RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
+                      const machine::UnitProgram &program, std::optional<double> workTopMm);
+// A serial port / pty, or the emulator in real time: the link worker on this thread's event
+// loop, exactly as the GUI drives it (without the extra thread), the run workflow driving it.
+RunOutcome runReal(const RunArgs &a, const machine::MachineConfig &config,
+                   const machine::UnitProgram &program);
+
+} // namespace frezka::cli

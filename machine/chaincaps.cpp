@@ -1,0 +1,148 @@
+// The chain planner's vertex caps (junction deviation, curvature, the axes' speed steps) and
+// the plan's vertex statistics (docs/planner.md §3). Part of RunPlanner (chainplanner_internal.h).
+#include "machine/chainplanner_internal.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace frezka::machine::detail {
+
+// Junction-deviation and curvature caps of the path speed at the vertex after move k, mm/s.
+void RunPlanner::pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double &jd,
+                          double &curv) const
+{
+    const double cosTheta = -dot(u0, u1);
+    jd = kInf;
+    curv = kInf;
+    if (cosTheta < -0.999999)
+        return; // straight on
+    if (cosTheta > 0.999999) {
+        jd = curv = 0; // reversal
+        return;
+    }
+    Vec4 j{};
+    for (int i = 0; i < 4; ++i)
+        j[i] = u1[i] - u0[i];
+    j = normalized(j);
+    double aj = kInf;
+    for (int i = 0; i < 4; ++i) {
+        if (std::abs(j[i]) > 1e-12)
+            aj = std::min(aj,
+                          m_config.axes[static_cast<std::size_t>(i)].accelMmPerS2 / std::abs(j[i]));
+    }
+    const double sinHalfTheta = std::sqrt(0.5 * (1 - cosTheta));
+    jd = std::sqrt(aj * m_moves[k + 1].junctionDeviationMm * sinHalfTheta / (1 - sinHalfTheta));
+    const double sinHalfPhi = std::sqrt(0.5 * (1 + cosTheta)); // φ: the turn angle
+    const double chord = std::min(m_d[k].pathLengthMm, m_d[k + 1].pathLengthMm);
+    curv = std::sqrt(aj * chord / (2 * sinHalfPhi));
+}
+
+// Per-axis speed step at the vertex after move k, per unit of the scalar speed there.
+double RunPlanner::jumpPerUnit(std::size_t k, int i) const
+{
+    return std::abs(m_d[k].uStep[i] / m_d[k].f - m_d[k + 1].uStep[i] / m_d[k + 1].f);
+}
+
+void RunPlanner::vertexCaps(std::size_t k)
+{
+    const Derived &a = m_d[k];
+    const Derived &b = m_d[k + 1];
+    if (m_moves[k].stopAfter)
+        return; // caps stay 0: the program asks for a stop here
+    boundCap(k);
+    if (m_options.strategy == PlanStrategy::ExactStop)
+        return;
+    const double fMin = std::min(a.f, b.f);
+    double units = static_cast<double>(std::min(a.speed, b.speed));
+    double jd = 0, curv = 0;
+    // grbl's own caps, unless the baseline is asked to keep every limit of the full plan
+    // (then it differs from the full plan only by its short lookahead).
+    const bool grbl =
+        m_options.strategy == PlanStrategy::GrblJunction && !m_options.grblKeepsAllLimits;
+    if (grbl) {
+        pathCaps(k, a.uStep, b.uStep, jd, curv); // grbl: geometry of the steps, no curvature
+        units = std::min(units, jd * fMin);
+    } else {
+        pathCaps(k, a.uPath, b.uPath, jd, curv);
+        units = std::min({units, jd * fMin, curv * fMin});
+    }
+    for (int i = 0; i < 4 && !grbl; ++i) {
+        const double per = jumpPerUnit(k, i);
+        if (per > 1e-15)
+            units = std::min(units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
+    }
+    units = std::min({units, a.wireCap, b.wireCap});   // the link's pace (infinite: off)
+    units = std::min({units, a.speedCap, b.speedCap}); // V above a vector's own cap
+    m_capUnits[k] = static_cast<std::int64_t>(floorUnits(units));
+}
+
+// The bound's cap at the vertex after move k: the same limits on a continuous path speed.
+void RunPlanner::boundCap(std::size_t k)
+{
+    const Derived &a = m_d[k];
+    const Derived &b = m_d[k + 1];
+    double jd = 0, curv = 0;
+    pathCaps(k, a.uPath, b.uPath, jd, curv);
+    double mm = std::min({a.vMm, b.vMm, jd, curv});
+    for (int i = 0; i < 4; ++i) {
+        const double per = std::abs(a.uStep[i] - b.uStep[i]);
+        if (per > 1e-15)
+            mm = std::min(mm, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
+    }
+    m_capMm[k] = mm;
+}
+
+// True when passing the vertex after move k at the smallest speed (10 pulses/s) keeps every
+// axis's speed step within its limit; else the queue must drain there (a real stop).
+bool RunPlanner::softStopAllowed(std::size_t k) const
+{
+    for (int i = 0; i < 4; ++i) {
+        if (kMinSpeed * jumpPerUnit(k, i) >
+            m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS)
+            return false;
+    }
+    return true;
+}
+
+void RunPlanner::jumpStats()
+{
+    for (std::size_t k = 0; k + 1 < m_out.vectors.size(); ++k) {
+        const PlannedVector &v = m_out.vectors[k];
+        if (v.chainEnd)
+            continue;
+        bool over = false;
+        for (int i = 0; i < 4; ++i) {
+            const double jump = static_cast<double>(v.brake) * jumpPerUnit(k, i);
+            const double limit = m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS;
+            m_out.maxJumpMmPerS = std::max(m_out.maxJumpMmPerS, jump);
+            // A jump below a nanometre per second is rounding noise, not a step (limit 0: none
+            // allowed).
+            const double ratio = limit > 0 ? jump / limit : (jump > 1e-9 ? kInf : 0);
+            m_out.maxJumpRatio = std::max(m_out.maxJumpRatio, ratio);
+            over = over || ratio > 1 + 1e-9;
+        }
+        m_out.jumpOverLimit += over ? 1 : 0;
+        curveStats(k, static_cast<double>(v.brake));
+    }
+}
+
+// The axes' acceleration through the turn at the vertex after move k, as the intended path
+// turns: each axis's speed changes by v·Δu_i over the time between the two segments'
+// middles, (L_k + L_k+1) / 2v. On a chorded arc that is v²/r per unit of turn direction.
+void RunPlanner::curveStats(std::size_t k, double brake)
+{
+    const Derived &a = m_d[k];
+    const Derived &b = m_d[k + 1];
+    const double v = brake / std::min(a.f, b.f); // the faster side of the vertex, mm/s
+    const double span = 0.5 * (a.pathLengthMm + b.pathLengthMm);
+    bool over = false;
+    for (int i = 0; i < 4; ++i) {
+        const double accel = v * v * std::abs(b.uPath[i] - a.uPath[i]) / span;
+        const double ratio = accel / m_config.axes[static_cast<std::size_t>(i)].accelMmPerS2;
+        m_out.maxCurveAccelRatio = std::max(m_out.maxCurveAccelRatio, ratio);
+        over = over || ratio > 1 + 1e-6;
+    }
+    m_out.curveAccelOverLimit += over ? 1 : 0;
+}
+
+} // namespace frezka::machine::detail

@@ -1,0 +1,79 @@
+#pragma once
+// Internal to frezka_machine: the chain planner of one run of moves (RunPlanner), in three parts:
+// chainplanner.cpp (the run, the figures derived from each move, the integer passes and the
+// bound), chaincaps.cpp (the vertex caps and the plan's vertex statistics) and chainpace.cpp
+// (the link's pace); and the vector arithmetic they share (docs/planner.md §3-§5).
+
+#include "machine/chainparts.h"
+#include "machine/chainplanner.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace frezka::machine::detail {
+
+double dot(const Vec4 &a, const Vec4 &b);
+// v scaled to length 1 (all zero stays all zero).
+Vec4 normalized(const Vec4 &v);
+
+class RunPlanner
+{
+public:
+    RunPlanner(const std::vector<Move> &moves, const MachineConfig &config,
+               const PlanOptions &options, bool vk)
+        : m_moves(moves)
+        , m_config(config)
+        , m_options(options)
+        , m_link(config, options)
+        , m_vk(vk)
+    {}
+
+    // Plans the run (chainplanner.cpp).
+    RunOutcome run();
+
+private:
+    static constexpr int kWirePasses = 5;         // plans again at most this often
+    static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
+
+    // chainplanner.cpp
+    void planOnce();
+    void derive();
+    void deriveOne(const Move &m, Derived &r);
+    void chain(std::size_t first, std::size_t last);
+    void fullPasses(std::size_t first, std::vector<std::int64_t> &b) const;
+    void windowedPasses(std::size_t first, std::vector<std::int64_t> &b) const;
+    void bound();
+
+    // chaincaps.cpp
+    void pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double &jd, double &curv) const;
+    double jumpPerUnit(std::size_t k, int i) const;
+    void vertexCaps(std::size_t k);
+    void boundCap(std::size_t k);
+    bool softStopAllowed(std::size_t k) const;
+    void jumpStats();
+    void curveStats(std::size_t k, double brake);
+
+    // chainpace.cpp
+    void wirePace();
+    void sharePacedSpeeds(const std::vector<bool> &lowered);
+    void flattenTightCaps();
+
+    const std::vector<Move> &m_moves;
+    const MachineConfig &m_config;
+    const PlanOptions &m_options;
+    LinkTiming m_link;
+    bool m_vk;
+    std::vector<Derived> m_d;
+    std::vector<Derived> m_derived;         // m_d before the link's pace (derive())
+    std::vector<std::uint32_t> m_slowLines; // derive(): lines below the unit's slowest speed
+    FeedCap m_firstFeedCap;                 // derive(): the first move whose feed is capped
+    std::size_t m_feedCapLines = 0;         // ... and how many lines are
+    std::uint32_t m_lastCappedLine = 0;
+    std::vector<double> m_extraS; // link time of the B, V, A commands before move k (last plan)
+    std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
+    std::vector<double> m_capMm;          // the bound's cap there, mm/s
+    RunOutcome m_out;
+};
+
+} // namespace frezka::machine::detail
