@@ -147,12 +147,16 @@ std::optional<MachineError> Hold::abort()
         m_needsGo = false;
         state().inta = false;
         detail::setHold(state(), HoldReason::None, {}, 0);
-        m_host.setMode(MachineMode::Idle);
-        if (wasJob) {
-            m_job.report().endS = m_host.now();
-            m_host.publish();
-            m_host.jobFinished(false);
-        }
+        // Idle with the counters where the machine stopped: a console line planned right after
+        // Abort started from the last poll's position, short of it, and the path guard held it.
+        m_host.readPositionAndStatus([this, wasJob] {
+            m_host.setMode(MachineMode::Idle);
+            if (wasJob) {
+                m_job.report().endS = m_host.now();
+                m_host.publish();
+                m_host.jobFinished(false);
+            }
+        });
     });
     return std::nullopt;
 }

@@ -245,6 +245,9 @@ TEST(MachineCore, AbortStopsAndDropsTheQueue)
     ASSERT_EQ(sim.finished.size(), 1u);
     EXPECT_FALSE(sim.finished.front());
     const auto stopped = sim.port.unit().position();
+    // Idle with the counters where the machine stopped, before any poll: what the next console
+    // line or jog is planned from (one was planned from the last poll's, short of it).
+    EXPECT_EQ(sim.core.state().positionSteps, stopped);
     sim.runner.runFor(2.0);
     EXPECT_EQ(sim.port.unit().position(), stopped);
     EXPECT_EQ(sim.port.unit().queueLength(), 0u);

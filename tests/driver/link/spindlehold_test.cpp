@@ -107,6 +107,10 @@ TEST(SpindleHold, ProgramOutputsShowInTheState)
     w.expectCleanEnd(program);
     EXPECT_FALSE(w.state().spindleOn);
     EXPECT_EQ(w.state().outputs, 0xFF);
+    // Idle with the counters where the machine stopped, before any poll: what the next console
+    // line or jog is planned from.
+    for (std::size_t a = 0; a < 3; ++a)
+        EXPECT_EQ(w.state().positionSteps[a], w.unit().position()[a]) << "axis " << a;
 }
 
 TEST(SpindleHold, PauseWithSpindleStopThenResumeSpinsUpBeforeTheCut)
