@@ -9,6 +9,7 @@
 #include "gui/eepromdecode.h"
 #include "gui/holdbanner.h"
 #include "gui/mainwindow.h"
+#include "gui/outputspanel.h"
 #include "gui/programlisting.h"
 #include "gui/programsession.h"
 #include "gui/runpanel.h"
@@ -31,6 +32,7 @@
 #include <QRegularExpression>
 #include <QScopeGuard>
 #include <QSettings>
+#include <QSlider>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -338,6 +340,91 @@ private slots:
         QCOMPARE(m_window->runPanel()->findChild<QLabel *>(QStringLiteral("eta"))->text(), eta);
         QVERIFY(!m_window->statusBar()->currentMessage().contains(QStringLiteral("finished")));
         m_window->executeManualLine(QStringLiteral("G90"));
+    }
+
+    // An override the serial link cannot feed (issue 14 item 5: "an override that would outrun
+    // the wire is capped and the GUI says so"): 1 mm segments at F3000 on the built-in emulator
+    // at 9 600 Bd, planned at the link's pace. With the slider at 200 % the label says what the
+    // unit runs and why, every XM the driver sent while the job streamed is below 200, and the
+    // operator's 200 % is sent again when the job has ended.
+    void anOverrideTheLinkCannotFeedIsShownAsHeld()
+    {
+        QVERIFY(waitIdle());
+        const machine::MachineConfig fast = m_window->profile();
+        machine::MachineConfig slow = fast;
+        slow.link.baud = 9600;
+        // Idle again on the new link (the old one is Idle until the reconnect begins).
+        auto reconnect = [&](const machine::MachineConfig &profile) {
+            bool connecting = false;
+            const auto watch =
+                connect(m_window->controller(), &driver::MachineController::stateChanged, this,
+                        [&connecting](const driver::MachineState &s) {
+                            connecting = connecting || s.mode == MachineMode::Connecting;
+                        });
+            m_window->applyProfile(profile, m_window->profilePath());
+            const bool idle = QTest::qWaitFor(
+                [&] { return connecting && state().mode == MachineMode::Idle; }, 20000);
+            disconnect(watch);
+            return idle;
+        };
+        QVERIFY(reconnect(slow));
+        QByteArray program = "G21 G90\nG0 X10 Y10\nG1 Z-1 F300\nF3000\n";
+        for (int row = 0; row < 6; ++row) {
+            for (int j = 0; j <= 60; ++j) {
+                const int t = row % 2 == 0 ? j : 60 - j;
+                program += QStringLiteral("G1 X%1 Y%2\n")
+                               .arg(10 + t)
+                               .arg(10 + row * 0.5 + 0.02 * (j % 2), 0, 'f', 2)
+                               .toLatin1();
+            }
+        }
+        program += "G0 Z0\nM30\n";
+        QVERIFY(load(writeProgram(QStringLiteral("paced.nc"), program)));
+        QStringList xm;
+        const auto tap = connect(m_window->controller(), &driver::MachineController::logLine, this,
+                                 [&xm](const QString &line) {
+                                     if (line.startsWith(QLatin1String("> !0XM")))
+                                         xm << line.mid(6);
+                                 });
+        const auto untap = qScopeGuard([&] { disconnect(tap); });
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->runProgram();
+        QTest::qWaitFor([&] { return state().jobActive && state().positionMm[0] > 20; },
+                        kMachineTimeoutMs);
+        QVERIFY2(state().jobActive && state().positionMm[0] > 20,
+                 qPrintable(QStringLiteral("%1 job %2 X %3 error %4")
+                                .arg(QLatin1String(driver::machineModeName(state().mode)))
+                                .arg(state().jobActive)
+                                .arg(state().positionMm[0])
+                                .arg(m_window->lastError())));
+        auto *slider =
+            m_window->outputsPanel()->findChild<QSlider *>(QStringLiteral("feedOverride"));
+        slider->setValue(200);
+        emit slider->sliderReleased();
+        QTRY_COMPARE_WITH_TIMEOUT(state().overridePercent, 200, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(state().overrideCeilingPercent > 0, 10000);
+        QLabel *value = nullptr;
+        for (QLabel *l : m_window->outputsPanel()->findChildren<QLabel *>())
+            value = l->text().startsWith(QStringLiteral("200 %")) ? l : value;
+        QVERIFY(value);
+        QTRY_VERIFY_WITH_TIMEOUT(value->text().contains(QStringLiteral("runs")), 5000);
+        QVERIFY2(value->text().contains(QString::number(state().overrideCeilingPercent)),
+                 qPrintable(value->text()));
+        QVERIFY(value->toolTip().contains(QStringLiteral("serial link")));
+        QVERIFY(finished.wait(120000));
+        QCOMPARE(finished.at(0).at(0).toBool(), true);
+        QVERIFY(waitIdle());
+        QVERIFY(!xm.isEmpty());
+        for (qsizetype i = 0; i + 1 < xm.size(); ++i)
+            QVERIFY2(xm[i].toInt() < 200, qPrintable(xm.join(QLatin1Char(' '))));
+        QTRY_COMPARE_WITH_TIMEOUT(xm.last(), QStringLiteral("200"), 5000); // the operator's again
+        QTRY_COMPARE(value->text(), QStringLiteral("200 %"));
+        button(m_window->outputsPanel(), "feedReset")->click();
+        QTRY_COMPARE_WITH_TIMEOUT(state().overridePercent, 100, 10000);
+        QVERIFY(reconnect(fast));
+        m_window->executeManualLine(QStringLiteral("G90 G0 X0 Y0 Z0"));
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Idle && !state().jobActive,
+                                 kMachineTimeoutMs);
     }
 
     // The actual-speed plot never shows a speed the machine cannot reach.
@@ -687,9 +774,15 @@ private slots:
         QVERIFY(waitIdle());
         QCOMPARE(progress(), 0);
         QCOMPARE(statusLine(), QString());
-        m_window->executeManualLine(QStringLiteral("G91 G1 Z1 F600")); // the stepped plunge back
-        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Idle && !state().jobActive,
-                                 kMachineTimeoutMs);
+        // The stepped plunge back, planned from where the abort left the machine (it was planned
+        // from the last poll's counters and the path guard held it).
+        const double z0 = state().positionMm[2];
+        QSignalSpy lineDone(m_window->controller(), &driver::MachineController::jobFinished);
+        m_window->executeManualLine(QStringLiteral("G91 G1 Z1 F600"));
+        QVERIFY(lineDone.wait(kMachineTimeoutMs));
+        QCOMPARE(lineDone.at(0).at(0).toBool(), true);
+        QVERIFY(waitIdle());
+        QVERIFY(std::abs(state().positionMm[2] - (z0 + 1)) < 1e-3);
         m_window->executeManualLine(QStringLiteral("G90"));
     }
 
