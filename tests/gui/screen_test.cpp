@@ -422,9 +422,10 @@ private slots:
         button(m_window->outputsPanel(), "feedReset")->click();
         QTRY_COMPARE_WITH_TIMEOUT(state().overridePercent, 100, 10000);
         QVERIFY(reconnect(fast));
+        QSignalSpy home(m_window->controller(), &driver::MachineController::jobFinished);
         m_window->executeManualLine(QStringLiteral("G90 G0 X0 Y0 Z0"));
-        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Idle && !state().jobActive,
-                                 kMachineTimeoutMs);
+        QVERIFY(home.wait(kMachineTimeoutMs));
+        QVERIFY(waitIdle());
     }
 
     // The actual-speed plot never shows a speed the machine cannot reach.
@@ -441,7 +442,11 @@ private slots:
         QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
         m_window->runProgram();
         QVERIFY(finished.wait(kMachineTimeoutMs));
-        QVERIFY(m_window->speedPlot()->actual().size() > 10);
+        QVERIFY2(m_window->speedPlot()->actual().size() > 10,
+                 qPrintable(QStringLiteral("%1 samples, job %2, %3")
+                                .arg(m_window->speedPlot()->actual().size())
+                                .arg(finished.at(0).at(0).toBool())
+                                .arg(m_window->lastError())));
         for (const SpeedSample &s : m_window->speedPlot()->actual())
             QVERIFY2(s.speedMmPerMin <= reach + 1e-6, qPrintable(QString::number(s.speedMmPerMin)));
     }
