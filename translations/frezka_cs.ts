@@ -2732,10 +2732,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Spojení s jednotkou bylo ztraceno. Poloha v úloze je uchována: připojte se znovu a pak stiskněte Pokračovat.</translation>
     </message>
     <message>
-        <source>Unit EEPROM differs from the profile: %1</source>
-        <translation>EEPROM jednotky se liší od profilu: %1</translation>
-    </message>
-    <message>
         <source>Unit EEPROM differs from the profile: %1 is %2 in the unit, %3 in the profile</source>
         <translation>EEPROM jednotky se liší od profilu: %1 je v jednotce %2, v profilu %3</translation>
     </message>

@@ -2727,10 +2727,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>The link to the unit was lost. The job position is kept: reconnect, then Resume.</translation>
     </message>
     <message>
-        <source>Unit EEPROM differs from the profile: %1</source>
-        <translation>Unit EEPROM differs from the profile: %1</translation>
-    </message>
-    <message>
         <source>Unit EEPROM differs from the profile: %1 is %2 in the unit, %3 in the profile</source>
         <translation>Unit EEPROM differs from the profile: %1 is %2 in the unit, %3 in the profile</translation>
     </message>
