@@ -16,6 +16,8 @@
 // axes' maxima. Profiles: every variant and pulse rate, steps/mm, speeds, accelerations and jump
 // limits drawn per axis across their schema ranges (docs/machine-profile.md), VK/VN/auto, packets
 // on and off. Links: the variant's baud rates, 0-16 ms latency, clean or 1 byte error in 1000.
+// The operator: one job in four at a feed override (XM) of 50 to 200 %, set before the run (the
+// estimate is the plan's at 100 %, so those jobs are judged on everything but their time).
 
 #include "driver/link/emulatorport.h"
 #include "machine/machineconfig.h"
@@ -34,7 +36,7 @@ struct RandomJob
     driver::WireOptions wire;
     std::string program; // G-code text
     std::string summary; // one line: what was drawn
-    int overridePercent = 100; // the operator's feed override (XM), set before the run
+    int overridePercent = 100; // the operator's feed override (XM), set before the run (drawn)
 };
 
 // Draws a job; maxLines bounds the program's size (the property test keeps it small).
