@@ -30,6 +30,9 @@ UnitProgram planText(const char *text, const machine::MachineConfig &config)
 const char *kCut = "G21 G90\nM3 S12000\nM8\nG0 X10 Y10\nG0 Z-8\nG1 Z-10 F600\nG1 X60 F300\n"
                    "G1 Y40\nG1 X10\nG1 Y10\nG0 Z0\nM9\nM5\nM2\n";
 
+constexpr std::uint8_t kCoolantBit = 0x04; // OUT1, active low
+constexpr double kSpinUpS = 2.0;           // the default profile's spindle.spinUpMs
+
 // The core on the emulator of the default GVE64 profile (spin-up 2 s, axis maxima, switches),
 // every command sent recorded with its time.
 struct Wire
@@ -73,6 +76,23 @@ struct Wire
         ASSERT_TRUE(until([&] { return unit().position()[0] > 2400; })) << sim.lastLog();
         ASSERT_TRUE(unit().spindleTurning());
     }
+    // Lowers the lifted tool: the spindle on again (!7V500) and spun up before Z goes down into
+    // the work; the index in `sent` where the lowering began.
+    std::size_t lowerAtSpeed()
+    {
+        const std::size_t lower = sent.size();
+        EXPECT_FALSE(sim.core.toolLower(0, sim.runner.now()));
+        EXPECT_TRUE(until([&] { return state().mode == MachineMode::Paused; })) << sim.lastLog();
+        const std::size_t on = find("!7V500", lower);
+        const std::size_t down = find("!0L0,0,-", lower);
+        EXPECT_NE(on, std::string::npos);
+        EXPECT_NE(down, std::string::npos);
+        if (on != std::string::npos && down != std::string::npos) {
+            EXPECT_LT(on, down);
+            EXPECT_GE(sent[down].t - sent[on].t, kSpinUpS) << "Z goes down only at speed";
+        }
+        return lower;
+    }
     void expectCleanEnd(const UnitProgram &program)
     {
         ASSERT_TRUE(until([&] { return !sim.finished.empty(); }, 600)) << sim.lastLog();
@@ -91,9 +111,6 @@ struct Wire
     Sim sim;
     std::vector<Sent> sent;
 };
-
-constexpr std::uint8_t kCoolantBit = 0x04; // OUT1, active low
-constexpr double kSpinUpS = 2.0;           // the default profile's spindle.spinUpMs
 
 TEST(SpindleHold, ProgramOutputsShowInTheState)
 {
@@ -160,16 +177,8 @@ TEST(SpindleHold, ToolLiftStopsTheSpindleAndLowersOnlyAtSpeed)
     EXPECT_FALSE(w.unit().spindleTurning()) << "the tool stands lifted, the spindle off";
     EXPECT_EQ(w.unit().outputs() & kCoolantBit, kCoolantBit);
     w.sim.runner.runFor(5);
-    const std::size_t lower = w.sent.size();
-    ASSERT_FALSE(w.sim.core.toolLower(0, w.sim.runner.now()));
-    ASSERT_TRUE(w.until([&] { return w.state().mode == MachineMode::Paused; })) << w.sim.lastLog();
-    const std::size_t on = w.find("!7V500", lower);
-    const std::size_t down = w.find("!0L0,0,-", lower);
-    ASSERT_NE(on, std::string::npos);
-    ASSERT_NE(down, std::string::npos);
-    EXPECT_LT(on, down);
-    EXPECT_GE(w.sent[down].t - w.sent[on].t, kSpinUpS) << "Z goes down only at speed";
-    EXPECT_LT(down, w.find("!0R", lower));
+    const std::size_t lower = w.lowerAtSpeed();
+    EXPECT_LT(w.find("!0L0,0,-", lower), w.find("!0R", lower));
     ASSERT_FALSE(w.sim.core.resume(w.sim.runner.now()));
     w.expectCleanEnd(program);
 }
@@ -346,15 +355,7 @@ TEST(SpindleHold, LowerAfterAToolChangeSpinsUpBeforeTheToolGoesDown)
     EXPECT_FALSE(w.unit().spindleTurning());
     w.sim.runner.runFor(5);
     EXPECT_FALSE(w.unit().spindleTurning()) << "off while the tool is changed";
-    const std::size_t lower = w.sent.size();
-    ASSERT_FALSE(w.sim.core.toolLower(0, w.sim.runner.now()));
-    ASSERT_TRUE(w.until([&] { return w.state().mode == MachineMode::Paused; })) << w.sim.lastLog();
-    const std::size_t on = w.find("!7V500", lower);
-    const std::size_t down = w.find("!0L0,0,-", lower);
-    ASSERT_NE(on, std::string::npos);
-    ASSERT_NE(down, std::string::npos);
-    EXPECT_LT(on, down);
-    EXPECT_GE(w.sent[down].t - w.sent[on].t, kSpinUpS) << "Z goes down only at speed";
+    w.lowerAtSpeed();
     ASSERT_FALSE(w.sim.core.resume(w.sim.runner.now()));
     w.expectCleanEnd(program);
 }
