@@ -283,9 +283,7 @@ void RunWorkflow::watchStartInput(const driver::MachineState &s)
         m_startActive = -1;
         return;
     }
-    const bool level = ((s.inputs1 >> input) & 1) != 0;
-    const bool activeHigh = ((m_profile.eeprom.polarity >> input) & 1) != 0;
-    const int active = level == activeHigh ? 1 : 0;
+    const int active = s.inputActive(m_profile, input) ? 1 : 0;
     const int was = std::exchange(m_startActive, active);
     if (was == 0 && active == 1)
         startPressed();
