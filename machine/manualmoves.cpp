@@ -2,6 +2,7 @@
 
 #include "machine/manualmoves.h"
 
+#include "machine/pathcheck.h"
 #include "machine/steps.h"
 
 #include <algorithm>
@@ -106,11 +107,7 @@ ProbeOutcome probeOutcome(const UnitProgram &program, std::size_t index, const S
 {
     if (!tripped && mustTrip)
         return ProbeOutcome::NotTripped;
-    const UnitCommand &c = program.commands[index];
-    bool atEnd = true;
-    for (std::size_t a = 0; a < static_cast<std::size_t>(program.axisCount); ++a)
-        atEnd = atEnd && stoppedAt[a] == c.endSteps[a];
-    if (atEnd)
+    if (sameSteps(stoppedAt, program.commands[index].endSteps, program.axisCount))
         return ProbeOutcome::AtEnd;
     const bool motionFollows = std::any_of(
         program.commands.begin() + static_cast<std::ptrdiff_t>(index) + 1, program.commands.end(),

@@ -7,6 +7,7 @@
 #include "driver/link/machinecore_internal.h"
 #include "driver/link/pathguard.h"
 #include "machine/manualmoves.h"
+#include "machine/pathcheck.h"
 #include "machine/steps.h"
 
 #include <algorithm>
@@ -82,12 +83,10 @@ void ReturnToPath::arrived()
     const std::size_t g = std::min(m_guard.verified(), program.commands.size());
     const machine::Steps4 &target = m_guard.plannedBefore(g);
     MachineState &state = m_host.liveState();
-    for (int a = 0; a < program.axisCount; ++a) {
-        if (state.positionSteps[a] != target[a]) {
-            m_host.log("not back on the planned path: trying again");
-            start(m_attempt + 1);
-            return;
-        }
+    if (!machine::sameSteps(state.positionSteps, target, program.axisCount)) {
+        m_host.log("not back on the planned path: trying again");
+        start(m_attempt + 1);
+        return;
     }
     // Everything sent from g on goes again (accepted, or in flight when the job stopped); g may
     // also lie beyond the accepted commands (the unit was seen running one in flight).

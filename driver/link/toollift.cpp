@@ -8,6 +8,7 @@
 #include "driver/link/machinecore_internal.h"
 #include "driver/link/spindlehold.h"
 #include "machine/manualmoves.h"
+#include "machine/pathcheck.h"
 #include "machine/steps.h"
 
 #include <algorithm>
@@ -185,15 +186,12 @@ void ToolLift::moveBack(std::size_t k, int overridePercent)
     m_host.whenStill([this, overridePercent] {
         if (!m_active)
             return;
-        for (int a = 0; a < state().axisCount; ++a) {
-            if (state().positionSteps[static_cast<std::size_t>(a)] !=
-                m_liftPoint[static_cast<std::size_t>(a)]) {
-                m_host.fail({DriverCode::LiftPointMissed,
-                             {stepsText(state().positionSteps, state().axisCount),
-                              stepsText(m_liftPoint, state().axisCount)}},
-                            nullptr, MachineMode::Alarm);
-                return;
-            }
+        if (!machine::sameSteps(state().positionSteps, m_liftPoint, state().axisCount)) {
+            m_host.fail({DriverCode::LiftPointMissed,
+                         {stepsText(state().positionSteps, state().axisCount),
+                          stepsText(m_liftPoint, state().axisCount)}},
+                        nullptr, MachineMode::Alarm);
+            return;
         }
         if (!m_jogged) {
             down(overridePercent);
