@@ -399,10 +399,10 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
         {F::CoverLock, QT_TR_NOOP("Cover lock")},
         {F::ToolRelease, QT_TR_NOOP("Tool release")},
         {F::ToolCoverOpen, QT_TR_NOOP("Tool cover")}};
-    std::vector<std::pair<QString, std::uint8_t>> extra;
+    std::vector<std::pair<QString, machine::OutputFunction>> extra;
     for (const auto &[function, name] : kExtra) {
-        if (const std::uint8_t bit = machine::outputBit(config, function))
-            extra.emplace_back(tr(name), bit);
+        if (machine::outputBit(config, function) != 0) // an output carries it
+            extra.emplace_back(tr(name), function);
     }
     m_outputs->setExtraOutputs(extra);
     SceneBounds travel;

@@ -33,14 +33,6 @@ namespace {
 
 using driver::MachineMode;
 
-// Output n (OUT0..OUT3) is on in port 0 (active low; bit0 OUT0, bit1 OUT3, bit2 OUT1, bit3 OUT2).
-std::uint8_t logicalOutputs(std::uint8_t port)
-{
-    const std::uint8_t on = std::uint8_t(~port);
-    return std::uint8_t((on & 0x01) | ((on & 0x04) ? 0x02 : 0) | ((on & 0x08) ? 0x04 : 0) |
-                        ((on & 0x02) ? 0x08 : 0));
-}
-
 bool isConnected(MachineMode m)
 {
     return m != MachineMode::Disconnected && m != MachineMode::Connecting &&
@@ -220,8 +212,7 @@ void MainWindow::connectControls()
             [outputFunction](bool on) { outputFunction(machine::OutputFunction::Coolant, on); });
     connect(m_outputs, &OutputsPanel::airRequested, this,
             [outputFunction](bool on) { outputFunction(machine::OutputFunction::AirBlow, on); });
-    connect(m_outputs, &OutputsPanel::outputRequested, this,
-            [this](std::uint8_t bit, bool on) { m_controller->setOutputs(bit, on ? bit : 0); });
+    connect(m_outputs, &OutputsPanel::outputRequested, this, outputFunction);
     connect(m_outputs, &OutputsPanel::feedOverrideRequested, m_controller,
             &driver::MachineController::setOverride);
     connect(m_outputs, &OutputsPanel::feedStepRequested, this, [this](int direction) {
@@ -291,17 +282,11 @@ void MainWindow::onState(const driver::MachineState &state)
     m_dro->setHomed({homed(0), homed(1), homed(2), homed(3)});
     m_view->model()->setToolPosition(QVector3D(
         float(state.positionMm[0]), float(state.positionMm[1]), float(state.positionMm[2])));
-    const std::uint16_t inputs = std::uint16_t(state.inputs1 | ((state.inputs2 & 0xC0) << 8));
-    // !7V1..1000 switches OUT0 on in the unit as well (docs/gve-protocol.md §9).
-    const std::uint8_t outputs =
-        std::uint8_t(logicalOutputs(state.outputs) | (state.spindleOn ? 0x01 : 0));
-    m_io->setIo(inputs, outputs, state.run, state.inta);
-    auto on = [&](machine::OutputFunction f) {
-        const std::uint8_t bit = machine::outputBit(profile(), f);
-        return bit && !(state.outputs & bit);
-    };
-    m_outputs->showState(state.spindleOn, on(machine::OutputFunction::Coolant),
-                         on(machine::OutputFunction::AirBlow), std::uint8_t(~state.outputs));
+    // The driver decodes the ports (MachineState::inputLevels, outputsOn, outputOn).
+    m_io->setIo(state.inputLevels(), state.outputsOn(), state.run, state.inta);
+    m_outputs->showState(state.spindleOn, [&state, this](machine::OutputFunction f) {
+        return state.outputOn(profile(), f);
+    });
     m_outputs->showFeedOverride(state.overridePercent, state.overrideCeilingPercent);
     m_jog->setMpgOn(state.mpgOn);
     m_jog->setHomedAxes(state.homedAxes, isConnected(state.mode));

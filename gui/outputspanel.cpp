@@ -101,30 +101,32 @@ void OutputsPanel::setMaxRpm(double rpm)
     m_rpm->setRange(0, rpm);
 }
 
-void OutputsPanel::setExtraOutputs(const std::vector<std::pair<QString, std::uint8_t>> &outputs)
+void OutputsPanel::setExtraOutputs(
+    const std::vector<std::pair<QString, machine::OutputFunction>> &outputs)
 {
-    for (auto &[b, bit] : m_extra)
+    for (auto &[b, function] : m_extra)
         delete b;
     m_extra.clear();
-    for (const auto &[caption, bit] : outputs) {
+    for (const auto &[caption, function] : outputs) {
         auto *b = new QPushButton(caption, this);
         b->setCheckable(true);
-        b->setObjectName(QStringLiteral("output%1").arg(bit));
-        const std::uint8_t theBit = bit;
+        b->setObjectName(QStringLiteral("output%1").arg(int(function)));
+        const machine::OutputFunction f = function;
         connect(b, &QPushButton::clicked, this,
-                [this, theBit](bool on) { emit outputRequested(theBit, on); });
+                [this, f](bool on) { emit outputRequested(f, on); });
         m_extraBox->addWidget(b);
-        m_extra.emplace_back(b, bit);
+        m_extra.emplace_back(b, function);
     }
 }
 
-void OutputsPanel::showState(bool spindleOn, bool coolantOn, bool airOn, std::uint8_t outputsOn)
+void OutputsPanel::showState(bool spindleOn,
+                             const std::function<bool(machine::OutputFunction)> &isOn)
 {
     m_spindle->setChecked(spindleOn);
-    m_coolant->setChecked(coolantOn);
-    m_air->setChecked(airOn);
-    for (auto &[b, bit] : m_extra)
-        b->setChecked(outputsOn & bit);
+    m_coolant->setChecked(isOn(machine::OutputFunction::Coolant));
+    m_air->setChecked(isOn(machine::OutputFunction::AirBlow));
+    for (auto &[b, function] : m_extra)
+        b->setChecked(isOn(function));
 }
 
 void OutputsPanel::showFeedOverride(int percent, int linkPercent)

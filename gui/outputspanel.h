@@ -2,9 +2,12 @@
 // OutputsPanel: spindle on/off and speed, coolant, air blow and the profile's other outputs,
 // and the feed override (XM slider, XU/XD buttons for +/- 6.25 %).
 
+#include "machine/machineconfig.h"
+
 #include <QWidget>
 
-#include <cstdint>
+#include <functional>
+#include <utility>
 #include <vector>
 
 class QCheckBox;
@@ -23,10 +26,11 @@ class OutputsPanel : public QWidget
 public:
     explicit OutputsPanel(QWidget *parent = nullptr);
     void setMaxRpm(double rpm);
-    // Extra outputs offered as toggles: caption and port-0 bit.
-    void setExtraOutputs(const std::vector<std::pair<QString, std::uint8_t>> &outputs);
-    // Reflects the unit's state without emitting requests.
-    void showState(bool spindleOn, bool coolantOn, bool airOn, std::uint8_t outputsOn);
+    // Extra outputs offered as toggles: caption and the function of the output.
+    void setExtraOutputs(const std::vector<std::pair<QString, machine::OutputFunction>> &outputs);
+    // Reflects the unit's state without emitting requests: the spindle, and whether the output
+    // of each function (coolant, air blow, the extra ones) is on.
+    void showState(bool spindleOn, const std::function<bool(machine::OutputFunction)> &isOn);
     // linkPercent > 0: the link holds the unit at that override
     // (MachineState::overrideCeilingPercent).
     void showFeedOverride(int percent, int linkPercent = 0);
@@ -37,7 +41,7 @@ signals:
     void spindleRequested(bool on, double rpm);
     void coolantRequested(bool on);
     void airRequested(bool on);
-    void outputRequested(std::uint8_t bit, bool on);
+    void outputRequested(machine::OutputFunction function, bool on);
     void feedOverrideRequested(int percent);
     void feedStepRequested(int direction); // +1 = XU, -1 = XD
 
@@ -55,7 +59,7 @@ private:
     QSlider *m_feed;
     QPushButton *m_feedUp, *m_feedDown, *m_feedReset;
     QVBoxLayout *m_extraBox;
-    std::vector<std::pair<QPushButton *, std::uint8_t>> m_extra;
+    std::vector<std::pair<QPushButton *, machine::OutputFunction>> m_extra;
 };
 
 } // namespace frezka::gui

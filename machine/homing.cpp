@@ -11,7 +11,7 @@ namespace {
 
 std::int64_t pulses(double mmPerS, double stepsPerMm, int maxRate)
 {
-    return std::clamp<std::int64_t>(std::llround(mmPerS * stepsPerMm), 10, maxRate);
+    return speedPulses(mmPerS * stepsPerMm, maxRate);
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 #include "machine/unitwire.h"
 
+#include "machine/steps.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -94,10 +96,9 @@ std::array<std::int64_t, 4> axisSpeedLimits(const MachineConfig &config)
     const auto rate = static_cast<std::int64_t>(config.unit.maxPulseRate);
     for (std::size_t i = 0; i < limits.size(); ++i) {
         const AxisConfig &a = config.axes[i];
-        const double pulses = a.maxSpeedMmPerMin / 60.0 * a.stepsPerMm;
-        limits[i] = a.present ? std::clamp(static_cast<std::int64_t>(std::floor(pulses)),
-                                           std::int64_t{10}, rate)
-                              : rate;
+        limits[i] = a.present
+                        ? speedPulsesAtMost(pulseRateOf(a.maxSpeedMmPerMin, a.stepsPerMm), rate)
+                        : rate;
     }
     return limits;
 }

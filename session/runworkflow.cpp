@@ -1,5 +1,7 @@
 #include "runworkflow.h"
 
+#include "machine/steps.h"
+
 #include <cmath>
 #include <utility>
 
@@ -234,7 +236,8 @@ void RunWorkflow::lowerTool(double newFeedMmPerMin, bool thenContinue)
     // tool goes down (K/R and the new speed are its too); continue once it is held again, down.
     int pulses = 0;
     if (newFeedMmPerMin > 0)
-        pulses = int(std::lround(newFeedMmPerMin / 60.0 * m_profile.axes[0].stepsPerMm));
+        pulses =
+            int(std::llround(machine::pulseRateOf(newFeedMmPerMin, m_profile.axes[0].stepsPerMm)));
     m_continueAfterLower = thenContinue;
     m_link.toolLower(pulses);
 }
@@ -280,9 +283,7 @@ void RunWorkflow::watchStartInput(const driver::MachineState &s)
         m_startActive = -1;
         return;
     }
-    const bool level = ((s.inputs1 >> input) & 1) != 0;
-    const bool activeHigh = ((m_profile.eeprom.polarity >> input) & 1) != 0;
-    const int active = level == activeHigh ? 1 : 0;
+    const int active = s.inputActive(m_profile, input) ? 1 : 0;
     const int was = std::exchange(m_startActive, active);
     if (was == 0 && active == 1)
         startPressed();

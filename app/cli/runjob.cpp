@@ -7,6 +7,7 @@
 
 #include "driver/link/emulatortransport.h"
 #include "driver/link/linkworker.h"
+#include "machine/steps.h"
 #include "session/qtmachinelink.h"
 #include "session/runworkflow.h"
 #include "session/simlink.h"
@@ -153,7 +154,7 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     emulator::UnitOptions unit = driver::unitOptionsFor(config);
     if (workTopMm) { // the program starts at the machine's zero: its Z is the counter's
         unit.machine.hasWorkSurface = true;
-        unit.machine.workSurfaceZSteps = std::llround(*workTopMm * config.axes[2].stepsPerMm);
+        unit.machine.workSurfaceZSteps = machine::stepsOf(*workTopMm, config.axes[2].stepsPerMm);
     }
     session::SimLink link(config, unit, wire, options);
     session::RunWorkflow workflow(link);

@@ -75,7 +75,6 @@ public:
     virtual const machine::MachineConfig &config() const = 0;
     virtual const CoreOptions &options() const = 0;
     virtual LinkEngine &link() = 0;
-    virtual std::int64_t stepsFromMm(int axis, double mm) const = 0; // the profile's rounding
 
 protected:
     ~CoreHost() = default;

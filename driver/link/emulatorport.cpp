@@ -1,5 +1,7 @@
 #include "emulatorport.h"
 
+#include "machine/steps.h"
+
 #include <cmath>
 
 namespace frezka::driver {
@@ -14,14 +16,14 @@ emulator::UnitOptions unitOptionsFor(const machine::MachineConfig &config)
         if (!ax.present || ax.homing.order <= 0)
             continue;
         const int d = ax.homing.direction < 0 ? -1 : 1;
-        o.switches.push_back({a, a, d * std::llround(5.0 * ax.stepsPerMm), d});
+        o.switches.push_back({a, a, d * machine::stepsOf(5.0, ax.stepsPerMm), d});
     }
     // The machine behind it, for the counters of what must never happen (issue 14).
     o.machine.spindleSpinUpS = config.spindle.spinUpMs / 1000.0;
     for (std::size_t a = 0; a < 4; ++a) {
         const machine::AxisConfig &ax = config.axes[a];
         o.machine.axisMaxPulsesPerS[a] =
-            ax.present ? ax.maxSpeedMmPerMin / 60.0 * ax.stepsPerMm : 0;
+            ax.present ? machine::pulseRateOf(ax.maxSpeedMmPerMin, ax.stepsPerMm) : 0;
     }
     // The built-in unit was configured for this machine, as the vendor's tool would have done:
     // its EEPROM holds the profile's settings, so connecting reports no differences.

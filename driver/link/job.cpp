@@ -6,6 +6,7 @@
 #include "driver/link/machinecore_internal.h"
 #include "driver/link/programcheck.h"
 #include "gcode/toolpath.h"
+#include "machine/steps.h"
 #include "machine/unitwire.h"
 
 #include <algorithm>
@@ -42,9 +43,8 @@ Command Job::toCommand(const machine::UnitCommand &c) const
 {
     if (c.op == machine::UnitOp::Speed && m_override.speedScale() != 1.0) {
         machine::UnitCommand scaled = c;
-        scaled.value = std::clamp<std::int64_t>(
-            std::llround(static_cast<double>(c.value) * m_override.speedScale()), 10,
-            m_host.config().unit.maxPulseRate);
+        scaled.value = machine::speedPulses(static_cast<double>(c.value) * m_override.speedScale(),
+                                            m_host.config().unit.maxPulseRate);
         return machine::wireCommand(scaled, m_program.axisCount).value_or(cmd::flag());
     }
     return machine::wireCommand(c, m_program.axisCount).value_or(cmd::flag());

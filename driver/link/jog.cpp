@@ -5,6 +5,7 @@
 #include "driver/link/corehost.h"
 #include "driver/link/machinecore_internal.h"
 #include "machine/softlimits.h"
+#include "machine/steps.h"
 
 #include <algorithm>
 #include <array>
@@ -35,8 +36,8 @@ std::optional<MachineError> Jog::send(int axis, const machine::JogMove &m)
     case machine::JogVerdict::NoMove:
         return refusal(DriverCode::JogTooShort);
     }
-    const double rate = m.speedMmPerMin / 60.0 * ax.stepsPerMm;
-    const auto pulses = std::clamp<std::int64_t>(std::llround(rate), 10, config.unit.maxPulseRate);
+    const std::int64_t pulses = machine::speedPulses(
+        machine::pulseRateOf(m.speedMmPerMin, ax.stepsPerMm), config.unit.maxPulseRate);
     std::array<std::int64_t, 4> d{};
     d[static_cast<std::size_t>(axis)] = m.deltaSteps;
     const Command l =

@@ -488,11 +488,6 @@ MachineCore::Result MachineCore::startHoming(unsigned axisMask, double now)
     return std::nullopt;
 }
 
-std::int64_t MachineCore::stepsFromMm(int axis, double mm) const
-{
-    return std::llround(mm * m_config.axes[static_cast<std::size_t>(axis)].stepsPerMm);
-}
-
 double MachineCore::mmFromSteps(int axis, std::int64_t steps) const
 {
     return static_cast<double>(steps) / m_config.axes[static_cast<std::size_t>(axis)].stepsPerMm;

@@ -183,7 +183,6 @@ private:
     void restartPollCount() override { m_poller.restartCount(); }
     const CoreOptions &options() const override { return m_options; }
     LinkEngine &link() override { return m_engine; }
-    std::int64_t stepsFromMm(int axis, double mm) const override;
 
     // scheduling (machinecore.cpp)
     void pump(double now);

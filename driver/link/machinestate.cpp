@@ -1,4 +1,5 @@
-// The English names of the modes and activities (machinestate.h).
+// The English names of the modes and activities, the outputs as accepted, the logical inputs and
+// outputs (machinestate.h).
 
 #include "machinestate.h"
 
@@ -68,6 +69,33 @@ bool noteOutputsAccepted(MachineState &state, const protocol::Command &c,
         state.spindleOn = state.spindlePermille > 0 && !(state.outputs & 0x01);
     }
     return changed();
+}
+
+std::uint16_t MachineState::inputLevels() const
+{
+    return static_cast<std::uint16_t>(inputs1 | ((inputs2 & 0xC0) << 8));
+}
+
+bool MachineState::inputActive(const machine::MachineConfig &config, int n) const
+{
+    const bool level = ((inputLevels() >> n) & 1) != 0;
+    const unsigned polarity = config.eeprom.polarity | (config.eeprom.polarityHigh << 8);
+    return level == (((polarity >> n) & 1) != 0);
+}
+
+std::uint8_t MachineState::outputsOn() const
+{
+    const auto on = static_cast<std::uint8_t>(~outputs);
+    return static_cast<std::uint8_t>((on & 0x01) | ((on & 0x04) ? 0x02 : 0) |
+                                     ((on & 0x08) ? 0x04 : 0) | ((on & 0x02) ? 0x08 : 0) |
+                                     (spindleOn ? 0x01 : 0));
+}
+
+bool MachineState::outputOn(const machine::MachineConfig &config,
+                            machine::OutputFunction function) const
+{
+    const std::uint8_t bit = machine::outputBit(config, function);
+    return bit != 0 && (outputs & bit) == 0;
 }
 
 const char *machineActivityName(MachineActivity activity)

@@ -167,6 +167,21 @@ struct MachineState
     std::array<std::int64_t, 4> probeSteps{};
 
     std::optional<MachineError> lastError;
+
+    // Logical inputs and outputs, decoded from the unit's ports here so that the front ends
+    // never read port bits (issue 13 item 3).
+    // Bit n: input INn (n = 0..7, 14, 15) at its high level as the unit last read it (I1, I2).
+    std::uint16_t inputLevels() const;
+    // Whether input INn is in its active state: its level against the profile's polarity
+    // (eeprom.polarity for IN0..7, polarityHigh for IN14 and IN15).
+    bool inputActive(const machine::MachineConfig &config, int n) const;
+    // Bit n: output OUTn (n = 0..3) on. Port 0 is active low (bit0 OUT0, bit1 OUT3, bit2 OUT1,
+    // bit3 OUT2); OUT0 is on while the spindle turns too (!7V1..1000 switches it in the unit,
+    // docs/gve-protocol.md §9).
+    std::uint8_t outputsOn() const;
+    // Whether the output that carries `function` in `config` is on (false when none carries it).
+    bool outputOn(const machine::MachineConfig &config, machine::OutputFunction function) const;
+
     friend bool operator==(const MachineState &, const MachineState &) = default;
 };
 

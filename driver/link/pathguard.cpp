@@ -5,14 +5,13 @@
 #include "driver/link/corehost.h"
 #include "driver/link/job.h"
 #include "driver/link/machinecore_internal.h"
+#include "machine/pathcheck.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace frezka::driver {
 
 using namespace frezka::protocol;
-using detail::isMotion;
 using detail::stepsText;
 using machine::UnitOp;
 
@@ -30,15 +29,13 @@ void PathGuard::reset()
 
 const machine::Steps4 &PathGuard::plannedBefore(std::size_t index) const
 {
-    const machine::UnitProgram &program = m_job.program();
-    return index == 0 ? program.startSteps
-                      : program.commands[std::min(index, program.commands.size()) - 1].endSteps;
+    return machine::plannedBefore(m_job.program(), index);
 }
 
 bool PathGuard::onPlannedPath()
 {
-    const auto &cmds = m_job.program().commands;
-    const int axes = m_job.program().axisCount;
+    const machine::UnitProgram &program = m_job.program();
+    const auto &cmds = program.commands;
     const auto &p = m_host.liveState().positionSteps;
     const JobCursor &cursor = m_job.cursor();
     // A probe move runs before it counts as accepted (the job waits at it): include it.
@@ -46,38 +43,13 @@ bool PathGuard::onPlannedPath()
     const std::size_t hi =
         std::min(std::max(cursor.next + (probing ? 1 : 0), cursor.inflightEnd), cmds.size());
     const std::size_t lo = std::min(m_verified, hi);
-    bool atStart = true;
-    for (int a = 0; a < axes; ++a)
-        atStart = atStart && p[a] == plannedBefore(lo)[a];
-    if (atStart)
+    if (machine::sameSteps(p, plannedBefore(lo), program.axisCount))
         return true;
-    constexpr double kTolerance = 1.0 + 1e-9; // steps, per axis
-    for (std::size_t i = lo; i < hi; ++i) {
-        const machine::UnitCommand &c = cmds[i];
-        if (!isMotion(c.op) && c.op != UnitOp::Probe)
-            continue;
-        // The part t of the segment (0..1) where every axis is within a step of the line.
-        double t0 = 0, t1 = 1;
-        for (int a = 0; a < axes && t0 <= t1; ++a) {
-            const double d = c.d[a];
-            const double off = static_cast<double>(p[a] - (c.endSteps[a] - c.d[a]));
-            if (d == 0) {
-                if (std::abs(off) > kTolerance)
-                    t0 = 2;
-                continue;
-            }
-            double u0 = (off - kTolerance) / d, u1 = (off + kTolerance) / d;
-            if (u0 > u1)
-                std::swap(u0, u1);
-            t0 = std::max(t0, u0);
-            t1 = std::min(t1, u1);
-        }
-        if (t0 <= t1) {
-            m_verified = std::max(m_verified, i);
-            return true;
-        }
-    }
-    return false;
+    const std::optional<std::size_t> i = machine::segmentHolding(program, lo, hi, p);
+    if (!i)
+        return false;
+    m_verified = std::max(m_verified, *i);
+    return true;
 }
 
 void PathGuard::checkAtRest(std::size_t index, std::function<void()> then)
@@ -93,10 +65,7 @@ void PathGuard::checkAtRest(std::size_t index, std::function<void()> then)
         const int axes = m_job.program().axisCount;
         const auto &at = m_host.liveState().positionSteps;
         const machine::Steps4 &want = plannedBefore(index);
-        bool same = true;
-        for (int a = 0; a < axes; ++a)
-            same = same && at[a] == want[a];
-        if (same) {
+        if (machine::sameSteps(at, want, axes)) {
             m_verified = std::max(m_verified, index);
             then();
             return;

@@ -17,7 +17,8 @@
 // until ReturnToPath (on resume, or at once with CoreOptions::returnToPathAutomatically) has
 // brought the machine back to the start of the last verified command and the job streams on
 // from there, so that it ends at exactly the planned counters. A probe that stopped short
-// switches the guard off for the rest of the job (the rest was planned from elsewhere).
+// switches the guard off for the rest of the job (the rest was planned from elsewhere). The
+// geometry (the planned position, a position on a segment within a step) is machine/pathcheck.h.
 
 #include "driver/link/returntopath.h"
 #include "machine/unitprogram.h"

@@ -6,30 +6,22 @@
 #include "driver/link/job.h"
 #include "driver/link/machinecore_internal.h"
 #include "gcode/toolpath.h"
-
-#include <algorithm>
+#include "machine/manualmoves.h"
 
 namespace frezka::driver {
 
 using namespace frezka::protocol;
-using machine::UnitOp;
 
 void ProbeMove::start(std::size_t index)
 {
     const machine::UnitCommand c = m_job.program().commands[index];
-    const auto kind = static_cast<gcode::ProbeKind>(c.aux);
-    const bool toward =
-        kind == gcode::ProbeKind::TowardErrorIfNoContact || kind == gcode::ProbeKind::Toward;
-    const bool mustTrip = kind == gcode::ProbeKind::TowardErrorIfNoContact ||
-                          kind == gcode::ProbeKind::AwayErrorIfNoLoss;
-    const machine::EepromConfig &ee = m_host.config().eeprom;
-    const std::uint8_t contactHigh = ee.polarityHigh & 0x80; // IN15 level that means contact
-    const auto armPolarity = static_cast<std::uint8_t>(
-        (ee.polarityHigh & 0x7F) | (toward ? contactHigh : (contactHigh ^ 0x80)));
-    m_host.send(cmd::input2(), [this, index, armPolarity](const Outcome &o) {
+    const machine::ProbeArming arming =
+        machine::probeArming(m_host.config().eeprom, static_cast<gcode::ProbeKind>(c.aux));
+    const bool mustTrip = arming.mustTrip;
+    m_host.send(cmd::input2(), [this, index, arming](const Outcome &o) {
         if (m_host.unitError(o, "reading the probe input", MachineMode::Alarm))
             return;
-        if ((*o.reply.hexValue() & 0x80) == (armPolarity & 0x80)) {
+        if (machine::probeAlreadyTripped(arming, *o.reply.hexValue())) {
             m_host.clearSteps();
             m_job.finish(false);
             m_host.fail({DriverCode::ProbeAlreadyTripped,
@@ -37,11 +29,11 @@ void ProbeMove::start(std::size_t index)
                         &o, MachineMode::Alarm);
         }
     });
-    auto arming = [this](const Outcome &o) {
+    auto armed = [this](const Outcome &o) {
         m_host.unitError(o, "arming the probe input", MachineMode::Alarm);
     };
-    m_host.send(cmd::statusWrite(1, ee.interruptEnableHigh | 0x80), arming);
-    m_host.send(cmd::statusWrite(3, armPolarity), arming);
+    m_host.send(cmd::statusWrite(1, arming.interruptEnableHigh), armed);
+    m_host.send(cmd::statusWrite(3, arming.polarityHigh), armed);
     m_host.send(m_job.toCommand({machine::UnitOp::Line, c.d}),
                 [this, index, mustTrip](const Outcome &o) {
                     if (m_host.unitError(o, "probe move", MachineMode::Alarm))
@@ -59,7 +51,7 @@ void ProbeMove::start(std::size_t index)
                 });
 }
 
-// Long for the four outcomes it tells apart (no trip, short with motion after, short, at end).
+// The probe read back, the move dropped and disarmed, then the outcome (machine::probeOutcome).
 void ProbeMove::end(std::size_t index, bool mustTrip)
 {
     m_host.send(cmd::statusRead(5), [this](const Outcome &o) {
@@ -85,24 +77,19 @@ void ProbeMove::end(std::size_t index, bool mustTrip)
         state.inta = false;
         const auto &program = m_job.program();
         const machine::UnitCommand &c = program.commands[index];
-        bool atEnd = true;
-        for (int a = 0; a < program.axisCount; ++a)
-            atEnd = atEnd && state.positionSteps[a] == c.endSteps[a];
-        if (!state.probeTripped && mustTrip) {
+        using machine::ProbeOutcome;
+        const ProbeOutcome outcome = machine::probeOutcome(program, index, state.positionSteps,
+                                                           state.probeTripped, mustTrip);
+        if (outcome == ProbeOutcome::NotTripped) {
             state.hold = HoldReason::ProbeFailed;
             m_job.finish(false);
             m_host.fail({DriverCode::ProbeNotTripped, {detail::lineArg(c)}}, nullptr,
                         MachineMode::Alarm);
             return;
         }
-        const bool motionFollows = std::any_of(
-            program.commands.begin() + static_cast<std::ptrdiff_t>(index) + 1,
-            program.commands.end(), [](const machine::UnitCommand &u) {
-                return u.op == UnitOp::Vector || u.op == UnitOp::Line || u.op == UnitOp::Probe;
-            });
-        if (!atEnd)
+        if (outcome != ProbeOutcome::AtEnd)
             m_job.guard().switchOff(); // the rest was planned from the probe's programmed end
-        if (!atEnd && motionFollows) {
+        if (outcome == ProbeOutcome::StoppedShortMotion) {
             m_job.finish(false);
             m_host.fail({DriverCode::ProbeTrippedElsewhere,
                          {detail::lineArg(c), detail::stepsText(state.probeSteps, 3)}},

@@ -9,7 +9,8 @@
 // input disarmed. A G38.2/.4 that did not trip fails the job. The planner planned the rest of
 // the program from the probe's programmed end, so when the probe stops short the path guard is
 // switched off, and when motion follows the job ends there (to be planned again from the trip
-// point) rather than run displaced; otherwise the job's stream runs on.
+// point) rather than run displaced; otherwise the job's stream runs on. The arming and the
+// reading of the outcome are machine/manualmoves.h's (probeArming, probeOutcome).
 
 #include <cstddef>
 

@@ -6,9 +6,11 @@
 #include "driver/link/job.h"
 #include "driver/link/machinecore_internal.h"
 #include "driver/link/pathguard.h"
+#include "machine/manualmoves.h"
+#include "machine/pathcheck.h"
+#include "machine/steps.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace frezka::driver {
 
@@ -31,12 +33,8 @@ void ReturnToPath::start(int attempt)
     const int axes = m_job.program().axisCount;
     const std::size_t g = std::min(m_guard.verified(), m_job.program().commands.size());
     // At the slowest axis's maximum feed, so that no axis exceeds its own in either speed mode.
-    double rate = config.unit.maxPulseRate;
-    for (int a = 0; a < axes; ++a) {
-        const machine::AxisConfig &ax = config.axes[static_cast<std::size_t>(a)];
-        rate = std::min(rate, ax.maxSpeedMmPerMin / 60.0 * ax.stepsPerMm);
-    }
-    const auto pulses = std::clamp<std::int64_t>(std::llround(rate), 10, config.unit.maxPulseRate);
+    const std::int64_t pulses =
+        machine::speedPulses(machine::slowestAxisPulseRate(config, axes), config.unit.maxPulseRate);
     m_host.log("returning to the planned path at command " + std::to_string(g) + ": " +
                stepsText(state.positionSteps, axes) + " -> " +
                stepsText(m_guard.plannedBefore(g), axes));
@@ -51,24 +49,9 @@ void ReturnToPath::start(int attempt)
 // Z travels above both ends by the tool-lift height, never beyond its upper soft limit.
 std::vector<machine::Steps4> ReturnToPath::planMoves() const
 {
-    const machine::MachineConfig &config = m_host.config();
-    const int axes = m_job.program().axisCount;
     const std::size_t g = std::min(m_guard.verified(), m_job.program().commands.size());
-    const machine::Steps4 target = m_guard.plannedBefore(g);
-    const machine::Steps4 from = m_host.liveState().positionSteps;
-    const std::int64_t top = m_host.stepsFromMm(2, config.axes[2].softMaxMm);
-    const std::int64_t high = std::max(from[2], target[2]);
-    const std::int64_t travelZ = std::max(
-        high, std::min(top, high + m_host.stepsFromMm(2, std::max(0.0, config.motion.toolLiftMm))));
-    std::vector<machine::Steps4> moves;
-    auto add = [&](machine::Steps4 d) {
-        if (std::any_of(d.begin(), d.end(), [](std::int64_t v) { return v != 0; }))
-            moves.push_back(d);
-    };
-    add({0, 0, travelZ - from[2], 0});
-    add({target[0] - from[0], target[1] - from[1], 0, axes == 4 ? target[3] - from[3] : 0});
-    add({0, 0, target[2] - travelZ, 0});
-    return moves;
+    return machine::returnToPathMoves(m_host.config(), m_host.liveState().positionSteps,
+                                      m_guard.plannedBefore(g), m_job.program().axisCount);
 }
 
 // Each L from rest to rest: the next one only when the machine stands (L needs an empty queue).
@@ -100,12 +83,10 @@ void ReturnToPath::arrived()
     const std::size_t g = std::min(m_guard.verified(), program.commands.size());
     const machine::Steps4 &target = m_guard.plannedBefore(g);
     MachineState &state = m_host.liveState();
-    for (int a = 0; a < program.axisCount; ++a) {
-        if (state.positionSteps[a] != target[a]) {
-            m_host.log("not back on the planned path: trying again");
-            start(m_attempt + 1);
-            return;
-        }
+    if (!machine::sameSteps(state.positionSteps, target, program.axisCount)) {
+        m_host.log("not back on the planned path: trying again");
+        start(m_attempt + 1);
+        return;
     }
     // Everything sent from g on goes again (accepted, or in flight when the job stopped); g may
     // also lie beyond the accepted commands (the unit was seen running one in flight).

@@ -8,7 +8,8 @@
 // everything sent from that command on is counted as not sent, the modal settings in force
 // there are sent again, and the job's stream runs on from it; otherwise it tries again, and
 // after three attempts it is an alarm. The mode is Running meanwhile, with the path fault kept
-// so that neither the stream nor the guard act.
+// so that neither the stream nor the guard act. The moves and the speed are computed in
+// machine/manualmoves.h (returnToPathMoves, slowestAxisPulseRate).
 
 #include "machine/unitprogram.h"
 

@@ -7,6 +7,9 @@
 #include "driver/link/job.h"
 #include "driver/link/machinecore_internal.h"
 #include "driver/link/spindlehold.h"
+#include "machine/manualmoves.h"
+#include "machine/pathcheck.h"
+#include "machine/steps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,10 +44,7 @@ std::optional<MachineError> ToolLift::lift(bool stopSpindle)
     if (liftMm <= 0)
         return refusal(DriverCode::NoLiftHeight);
     // Up is toward the upper soft limit of Z, never beyond it.
-    const machine::AxisConfig &z = config.axes[2];
-    const std::int64_t now_z = state().positionSteps[2];
-    const std::int64_t top = m_host.stepsFromMm(2, z.softMaxMm);
-    m_liftSteps = std::min(m_host.stepsFromMm(2, liftMm), std::max<std::int64_t>(0, top - now_z));
+    m_liftSteps = machine::toolLiftSteps(config, state().positionSteps[2]);
     if (m_liftSteps == 0)
         return refusal(DriverCode::LiftAtLimit);
     if (!stopSpindle && state().spindleOn)
@@ -88,15 +88,9 @@ void ToolLift::lifted()
 int ToolLift::handSpeed(double mmPerMin) const
 {
     const machine::MachineConfig &config = m_host.config();
-    double rate = config.unit.maxPulseRate;
-    for (int a = 0; a < m_host.liveState().axisCount; ++a) {
-        const machine::AxisConfig &ax = config.axes[static_cast<std::size_t>(a)];
-        rate = std::min(rate, ax.maxSpeedMmPerMin / 60.0 * ax.stepsPerMm);
-        if (mmPerMin > 0)
-            rate = std::min(rate, mmPerMin / 60.0 * ax.stepsPerMm);
-    }
-    return static_cast<int>(
-        std::clamp<long long>(std::llround(std::floor(rate)), 10, config.unit.maxPulseRate));
+    return static_cast<int>(machine::speedPulsesAtMost(
+        machine::slowestAxisPulseRate(config, m_host.liveState().axisCount, mmPerMin),
+        config.unit.maxPulseRate));
 }
 
 std::optional<MachineError> ToolLift::jog(int axis, double distanceMm, double speedMmPerMin)
@@ -107,15 +101,10 @@ std::optional<MachineError> ToolLift::jog(int axis, double distanceMm, double sp
         return refusal(DriverCode::ToolStillMoving);
     if (axis < 0 || axis >= state().axisCount)
         return refusal(DriverCode::NoSuchAxis);
-    const machine::AxisConfig &ax = m_host.config().axes[static_cast<std::size_t>(axis)];
-    const std::int64_t at = state().positionSteps[static_cast<std::size_t>(axis)];
-    const std::int64_t target =
-        std::clamp(at + m_host.stepsFromMm(axis, distanceMm),
-                   m_host.stepsFromMm(axis, ax.softMinMm), m_host.stepsFromMm(axis, ax.softMaxMm));
-    if (target == at)
+    const machine::Steps4 d = machine::liftedJogMove(
+        m_host.config(), axis, state().positionSteps[static_cast<std::size_t>(axis)], distanceMm);
+    if (d[static_cast<std::size_t>(axis)] == 0)
         return refusal(DriverCode::JogAtLimit);
-    machine::Steps4 d{};
-    d[static_cast<std::size_t>(axis)] = target - at;
     m_moving = m_jogged = true;
     m_host.markDirty();
     m_host.send(cmd::speed(handSpeed(speedMmPerMin)), [this](const Outcome &o) {
@@ -165,15 +154,7 @@ std::optional<MachineError> ToolLift::lower(int speedPulsesPerS)
             return;
         const machine::Steps4 from = state().positionSteps;
         const machine::Steps4 &to = m_liftPoint;
-        const std::int64_t high = std::max(from[2], to[2]);
-        m_moves.clear();
-        auto add = [this](machine::Steps4 d) {
-            if (std::any_of(d.begin(), d.end(), [](std::int64_t v) { return v != 0; }))
-                m_moves.push_back(d);
-        };
-        add({0, 0, high - from[2], 0});
-        add({to[0] - from[0], to[1] - from[1], 0, to[3] - from[3]});
-        add({0, 0, to[2] - high, 0});
+        m_moves = machine::backToLiftPoint(from, to, state().axisCount);
         if (!m_moves.empty()) {
             m_host.log("back to the lift point: " + stepsText(from, state().axisCount) + " -> " +
                        stepsText(to, state().axisCount));
@@ -205,15 +186,12 @@ void ToolLift::moveBack(std::size_t k, int overridePercent)
     m_host.whenStill([this, overridePercent] {
         if (!m_active)
             return;
-        for (int a = 0; a < state().axisCount; ++a) {
-            if (state().positionSteps[static_cast<std::size_t>(a)] !=
-                m_liftPoint[static_cast<std::size_t>(a)]) {
-                m_host.fail({DriverCode::LiftPointMissed,
-                             {stepsText(state().positionSteps, state().axisCount),
-                              stepsText(m_liftPoint, state().axisCount)}},
-                            nullptr, MachineMode::Alarm);
-                return;
-            }
+        if (!machine::sameSteps(state().positionSteps, m_liftPoint, state().axisCount)) {
+            m_host.fail({DriverCode::LiftPointMissed,
+                         {stepsText(state().positionSteps, state().axisCount),
+                          stepsText(m_liftPoint, state().axisCount)}},
+                        nullptr, MachineMode::Alarm);
+            return;
         }
         if (!m_jogged) {
             down(overridePercent);

@@ -15,7 +15,8 @@
 // leaves the job Paused, to be resumed with G. abandon() (abort) ends it where it is. active()
 // from the accepted lift() to the end of lower(): the core's activity is ToolLift meanwhile;
 // kept() while the unit holds the job's queue aside, when neither the job's idle waits nor the
-// path guard's polls apply.
+// path guard's polls apply. The moves and their speeds are computed in machine/manualmoves.h
+// (toolLiftSteps, liftedJogMove, backToLiftPoint); this class sequences them with the unit.
 //
 // The vendor's example switches the interrupt masks for this manual phase (!0SW0,1A !0SW1,3F,
 // then !0SW0,A2 !0SW1,78). Those values are its machine's: which inputs may stop a move is this
