@@ -24,7 +24,8 @@
 //   ConnectSequence (+ EepromSync)  connecting          MachineActivity::Connecting
 //   HomingCycle                     homing in legs of W  Homing
 //   Jog                             jogging             Jogging
-//   Job (+ JobPace)                 streaming a job     Job
+//   Job (+ JobPace, JobOverride,    streaming a job     Job
+//        JobTracker, JobFigures)
 //     ProgressCheck                 progress from the counters after an unknown outcome
 //                                                       CheckingProgress
 //     ProbeMove                     a G38 move          Probing
