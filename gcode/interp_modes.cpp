@@ -13,6 +13,9 @@ void Interpreter::event(EventKind kind, double value, double p, double q)
     m_toolpath.appendEvent({kind, value, p, q}, m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
 }
 
+// The non-motion words of a block in rs274ngc's order of execution (G93/G94, F, S, T, M6, M3-M5,
+// M7-M9, G4): kept whole (over 60 lines) so that the order, which the result depends on, reads
+// top to bottom as in the NGC manual's table.
 bool Interpreter::executeModes(Error *error)
 {
     const Block &b = m_block;

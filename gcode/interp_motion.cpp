@@ -62,6 +62,21 @@ std::string fmt4(double v)
     return buf;
 }
 
+// The length of an arc from (su, sv) to (eu, ev) around (cu, cv) in its plane, `turns` times
+// around (G2: clockwise, motion 20), with `dw` along the plane's third axis: what an inverse-time
+// feed (G93) is for.
+double arcLength(int motion, double su, double sv, double eu, double ev, double cu, double cv,
+                 int turns, double dw)
+{
+    const double r = std::hypot(su - cu, sv - cv);
+    const double a0 = std::atan2(sv - cv, su - cu), a1 = std::atan2(ev - cv, eu - cu);
+    double sweep = motion == 30 ? a1 - a0 : a0 - a1;
+    while (sweep <= 1e-12)
+        sweep += 2 * std::numbers::pi;
+    sweep += 2 * std::numbers::pi * (turns - 1);
+    return std::hypot(r * sweep, dw);
+}
+
 } // namespace
 
 Interpreter::Target Interpreter::targetOf(bool machineCoords) const
@@ -232,16 +247,9 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
     axisRef(info.centre, ax.v) = cv + offset(ax.v);
 
     double feed = m_feed * unit();
-    if (m_inverseTime) {
-        const double r = std::hypot(su - cu, sv - cv);
-        const double a0 = std::atan2(sv - cv, su - cu), a1 = std::atan2(ev - cv, eu - cu);
-        double sweep = motion == 30 ? a1 - a0 : a0 - a1;
-        while (sweep <= 1e-12)
-            sweep += 2 * std::numbers::pi;
-        sweep += 2 * std::numbers::pi * (turns - 1);
-        const double dw = axisOf(end, ax.w) - axisOf(m_pos, ax.w);
-        feed = feedFor(std::hypot(r * sweep, dw));
-    }
+    if (m_inverseTime)
+        feed = feedFor(arcLength(motion, su, sv, eu, ev, cu, cv, turns,
+                                 axisOf(end, ax.w) - axisOf(m_pos, ax.w)));
     m_toolpath.appendArc(end, info, feed, m_line);
     moveTo(target);
     return true;
@@ -376,6 +384,8 @@ bool Interpreter::cycleWords(int motion, CycleWords *w, Error *error) const
     return true;
 }
 
+// LinuxCNC's convert_cycle_xy/_yz/_zx in one, its variables (aa, bb, cc, r, old_cc, current_cc)
+// under their names: kept whole (over 60 lines) so that it reads side by side with rs274ngc's.
 bool Interpreter::cycle(int motion, Error *error)
 {
     const Block &b = m_block;

@@ -109,6 +109,40 @@ const char *eventName(EventKind k)
     return "event";
 }
 
+// The fields of an event entry after its type, and the closing brace.
+char *writeEvent(char *p, const Event &e)
+{
+    p = writeLiteral(p, ",\"event\":\"");
+    p = writeText(p, eventName(e.kind));
+    p = writeLiteral(p, "\",\"value\":");
+    p = writeFixed4(p, e.value);
+    if (e.kind == EventKind::PathMode) {
+        p = writeLiteral(p, ",\"p\":");
+        p = writeFixed4(p, e.p);
+        p = writeLiteral(p, ",\"q\":");
+        p = writeFixed4(p, e.q);
+    }
+    *p++ = '}';
+    return p;
+}
+
+// An arc's centre, plane and turns.
+char *writeArc(char *p, const ArcInfo &arc)
+{
+    p = writeLiteral(p, ",\"cx\":");
+    p = writeFixed4(p, arc.centre.x);
+    p = writeLiteral(p, ",\"cy\":");
+    p = writeFixed4(p, arc.centre.y);
+    p = writeLiteral(p, ",\"cz\":");
+    p = writeFixed4(p, arc.centre.z);
+    p = writeLiteral(p, ",\"plane\":\"");
+    p = writeText(p, arc.plane == Plane::XY ? "XY" : arc.plane == Plane::XZ ? "XZ" : "YZ");
+    p = writeLiteral(p, "\",\"turns\":");
+    if (arc.turns < 0)
+        *p++ = '-';
+    return writeUInt(p, static_cast<std::uint64_t>(std::abs(arc.turns)));
+}
+
 // Writes entry i at p (at most kMaxEntryChars); returns p unchanged for a skipped event.
 char *writeEntry(char *p, const Toolpath &tp, std::size_t i, bool withEvents)
 {
@@ -121,21 +155,8 @@ char *writeEntry(char *p, const Toolpath &tp, std::size_t i, bool withEvents)
     p = writeLiteral(p, ",\"type\":\"");
     p = writeText(p, kTypes[static_cast<int>(kind)]);
     *p++ = '"';
-    if (kind == MotionKind::Event) {
-        const Event &e = tp.event(i);
-        p = writeLiteral(p, ",\"event\":\"");
-        p = writeText(p, eventName(e.kind));
-        p = writeLiteral(p, "\",\"value\":");
-        p = writeFixed4(p, e.value);
-        if (e.kind == EventKind::PathMode) {
-            p = writeLiteral(p, ",\"p\":");
-            p = writeFixed4(p, e.p);
-            p = writeLiteral(p, ",\"q\":");
-            p = writeFixed4(p, e.q);
-        }
-        *p++ = '}';
-        return p;
-    }
+    if (kind == MotionKind::Event)
+        return writeEvent(p, tp.event(i));
     const Point4 e = tp.end(i);
     p = writeLiteral(p, ",\"x\":");
     p = writeFixed4(p, e.x);
@@ -148,19 +169,7 @@ char *writeEntry(char *p, const Toolpath &tp, std::size_t i, bool withEvents)
     p = writeLiteral(p, ",\"f\":");
     p = writeFixed4(p, tp.feedMmPerMin(i));
     if (kind == MotionKind::Arc) {
-        const ArcInfo arc = tp.arc(i);
-        p = writeLiteral(p, ",\"cx\":");
-        p = writeFixed4(p, arc.centre.x);
-        p = writeLiteral(p, ",\"cy\":");
-        p = writeFixed4(p, arc.centre.y);
-        p = writeLiteral(p, ",\"cz\":");
-        p = writeFixed4(p, arc.centre.z);
-        p = writeLiteral(p, ",\"plane\":\"");
-        p = writeText(p, arc.plane == Plane::XY ? "XY" : arc.plane == Plane::XZ ? "XZ" : "YZ");
-        p = writeLiteral(p, "\",\"turns\":");
-        if (arc.turns < 0)
-            *p++ = '-';
-        p = writeUInt(p, static_cast<std::uint64_t>(std::abs(arc.turns)));
+        p = writeArc(p, tp.arc(i));
     } else if (kind == MotionKind::Dwell) {
         p = writeLiteral(p, ",\"seconds\":");
         p = writeFixed4(p, tp.event(i).value);

@@ -147,6 +147,33 @@ void HoldBanner::changeEvent(QEvent *event)
 
 void HoldBanner::retranslate()
 {
+    retranslateHold();
+    if (m_kind == Kind::None || m_kind == Kind::ToolLifted)
+        m_spindle->clear();
+    else if (m_heldOff)
+        m_spindle->setText(tr("The spindle and coolant are off for the hold. Continue switches "
+                              "them on again and waits %1 s for the spindle before the tool moves.")
+                               .arg(m_spinUpS, 0, 'f', 1));
+    else if (m_spindleOn)
+        m_spindle->setText(tr("The spindle is running."));
+    else
+        m_spindle->setText(tr("The spindle is off."));
+    m_stopSpindle->setText(tr("Stop the spindle"));
+    m_stopSpindle->setToolTip(
+        tr("While the job is held: the spindle and coolant off (ticked) or on again (unticked). "
+           "Ticked, a pause stops them as soon as the machine stands."));
+    m_feedLabel->setText(tr("New feed (0 = unchanged):"));
+    m_feed->setToolTip(tr("The feed from here on, as the feed override for the rest of the job"));
+    m_continue->setText(tr("Continue"));
+    m_lift->setText(tr("Lift tool"));
+    m_lowerContinue->setText(tr("Lower and continue"));
+    m_lowerOnly->setText(tr("Lower, stay paused"));
+    m_abort->setText(tr("Abort job"));
+}
+
+// The title and the text of the hold's kind, one case per kind.
+void HoldBanner::retranslateHold()
+{
     const QString where = m_line > 0 ? tr("at line %1").arg(m_line) : QString();
     switch (m_kind) {
     case Kind::None:
@@ -193,27 +220,6 @@ void HoldBanner::retranslate()
                        : QString()));
         break;
     }
-    if (m_kind == Kind::None || m_kind == Kind::ToolLifted)
-        m_spindle->clear();
-    else if (m_heldOff)
-        m_spindle->setText(tr("The spindle and coolant are off for the hold. Continue switches "
-                              "them on again and waits %1 s for the spindle before the tool moves.")
-                               .arg(m_spinUpS, 0, 'f', 1));
-    else if (m_spindleOn)
-        m_spindle->setText(tr("The spindle is running."));
-    else
-        m_spindle->setText(tr("The spindle is off."));
-    m_stopSpindle->setText(tr("Stop the spindle"));
-    m_stopSpindle->setToolTip(
-        tr("While the job is held: the spindle and coolant off (ticked) or on again (unticked). "
-           "Ticked, a pause stops them as soon as the machine stands."));
-    m_feedLabel->setText(tr("New feed (0 = unchanged):"));
-    m_feed->setToolTip(tr("The feed from here on, as the feed override for the rest of the job"));
-    m_continue->setText(tr("Continue"));
-    m_lift->setText(tr("Lift tool"));
-    m_lowerContinue->setText(tr("Lower and continue"));
-    m_lowerOnly->setText(tr("Lower, stay paused"));
-    m_abort->setText(tr("Abort job"));
 }
 
 } // namespace frezka::gui

@@ -51,6 +51,7 @@ protected:
 
 private:
     void retranslate();
+    void retranslateHold(); // the title and text of m_kind
 
     Kind m_kind = Kind::None;
     int m_line = 0;

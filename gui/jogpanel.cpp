@@ -20,6 +20,29 @@ constexpr double kSteps[] = {0.01, 0.1, 1, 10};
 JogPanel::JogPanel(QWidget *parent)
     : QWidget(parent)
 {
+    QGridLayout *grid = createJogButtons();
+    QHBoxLayout *steps = createStepChoice();
+    QHBoxLayout *feedRow = createFeedRow();
+
+    m_limits = new QLabel(this);
+    m_limits->setObjectName(QStringLiteral("limitsOff"));
+    m_limits->setWordWrap(true);
+    m_limits->setStyleSheet(QStringLiteral("color: #b35900; font-weight: bold;"));
+    m_limits->hide();
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addWidget(m_limits);
+    layout->addLayout(grid);
+    layout->addLayout(steps);
+    layout->addLayout(feedRow);
+    layout->addStretch();
+    retranslate();
+}
+
+// The jog buttons (minus, home, plus) per axis and Home all below them.
+QGridLayout *JogPanel::createJogButtons()
+{
     auto *grid = new QGridLayout;
     for (int axis = 0; axis < 4; ++axis) {
         for (int d = 0; d < 2; ++d) {
@@ -52,7 +75,12 @@ JogPanel::JogPanel(QWidget *parent)
     m_homeAll->setFocusPolicy(Qt::NoFocus);
     connect(m_homeAll, &QPushButton::clicked, this, [this] { emit homeRequested(-1); });
     grid->addWidget(m_homeAll, 4, 0, 1, 3);
+    return grid;
+}
 
+// Continuous or one of the steps (1 mm checked).
+QHBoxLayout *JogPanel::createStepChoice()
+{
     auto *steps = new QHBoxLayout;
     m_stepLabel = new QLabel(this);
     steps->addWidget(m_stepLabel);
@@ -68,6 +96,12 @@ JogPanel::JogPanel(QWidget *parent)
         steps->addWidget(r);
     }
     m_steps->button(3)->setChecked(true);
+    return steps;
+}
+
+// The jog feed and the MPG switch.
+QHBoxLayout *JogPanel::createFeedRow()
+{
     auto *feedRow = new QHBoxLayout;
     m_feedLabel = new QLabel(this);
     m_feed = new QDoubleSpinBox(this);
@@ -82,21 +116,7 @@ JogPanel::JogPanel(QWidget *parent)
     feedRow->addWidget(m_feedLabel);
     feedRow->addWidget(m_feed, 1);
     feedRow->addWidget(m_mpg);
-
-    m_limits = new QLabel(this);
-    m_limits->setObjectName(QStringLiteral("limitsOff"));
-    m_limits->setWordWrap(true);
-    m_limits->setStyleSheet(QStringLiteral("color: #b35900; font-weight: bold;"));
-    m_limits->hide();
-
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(2, 2, 2, 2);
-    layout->addWidget(m_limits);
-    layout->addLayout(grid);
-    layout->addLayout(steps);
-    layout->addLayout(feedRow);
-    layout->addStretch();
-    retranslate();
+    return feedRow;
 }
 
 void JogPanel::setAxisCount(int count)

@@ -11,6 +11,8 @@
 class QButtonGroup;
 class QCheckBox;
 class QDoubleSpinBox;
+class QGridLayout;
+class QHBoxLayout;
 class QLabel;
 class QPushButton;
 class QRadioButton;
@@ -48,6 +50,10 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    // The constructor's parts, in the order the widgets are created (the focus chain).
+    QGridLayout *createJogButtons();
+    QHBoxLayout *createStepChoice();
+    QHBoxLayout *createFeedRow();
     void retranslate();
     void showLimits();
 

@@ -16,6 +16,35 @@ namespace frezka::gui {
 OutputsPanel::OutputsPanel(QWidget *parent)
     : QWidget(parent)
 {
+    createOutputs();
+    createFeedOverride();
+
+    auto *grid = new QGridLayout;
+    grid->addWidget(m_spindle, 0, 0);
+    grid->addWidget(m_rpmLabel, 0, 1);
+    grid->addWidget(m_rpm, 0, 2);
+    grid->addWidget(m_coolant, 1, 0);
+    grid->addWidget(m_air, 1, 1);
+    auto *feedRow = new QHBoxLayout;
+    feedRow->addWidget(m_feedLabel);
+    feedRow->addWidget(m_feedDown);
+    feedRow->addWidget(m_feed, 1);
+    feedRow->addWidget(m_feedUp);
+    feedRow->addWidget(m_feedValue);
+    feedRow->addWidget(m_feedReset);
+    m_extraBox = new QVBoxLayout;
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addLayout(grid);
+    layout->addLayout(m_extraBox);
+    layout->addLayout(feedRow);
+    layout->addStretch();
+    retranslate();
+}
+
+// The spindle (with its speed), coolant and air buttons.
+void OutputsPanel::createOutputs()
+{
     auto toggle = [this](const char *name) {
         auto *b = new QPushButton(this);
         b->setObjectName(QLatin1String(name));
@@ -40,7 +69,11 @@ OutputsPanel::OutputsPanel(QWidget *parent)
     });
     connect(m_coolant, &QPushButton::clicked, this, &OutputsPanel::coolantRequested);
     connect(m_air, &QPushButton::clicked, this, &OutputsPanel::airRequested);
+}
 
+// The feed override: the slider, its value, the steps and 100 %.
+void OutputsPanel::createFeedOverride()
+{
     m_feedLabel = new QLabel(this);
     m_feed = new QSlider(Qt::Horizontal, this);
     m_feed->setObjectName(QStringLiteral("feedOverride"));
@@ -72,28 +105,6 @@ OutputsPanel::OutputsPanel(QWidget *parent)
         m_feed->setValue(100);
         emit feedOverrideRequested(100);
     });
-
-    auto *grid = new QGridLayout;
-    grid->addWidget(m_spindle, 0, 0);
-    grid->addWidget(m_rpmLabel, 0, 1);
-    grid->addWidget(m_rpm, 0, 2);
-    grid->addWidget(m_coolant, 1, 0);
-    grid->addWidget(m_air, 1, 1);
-    auto *feedRow = new QHBoxLayout;
-    feedRow->addWidget(m_feedLabel);
-    feedRow->addWidget(m_feedDown);
-    feedRow->addWidget(m_feed, 1);
-    feedRow->addWidget(m_feedUp);
-    feedRow->addWidget(m_feedValue);
-    feedRow->addWidget(m_feedReset);
-    m_extraBox = new QVBoxLayout;
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(2, 2, 2, 2);
-    layout->addLayout(grid);
-    layout->addLayout(m_extraBox);
-    layout->addLayout(feedRow);
-    layout->addStretch();
-    retranslate();
 }
 
 void OutputsPanel::setMaxRpm(double rpm)

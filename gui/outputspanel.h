@@ -49,6 +49,9 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    // The constructor's parts, in the order the widgets are created (the focus chain).
+    void createOutputs();
+    void createFeedOverride();
     void retranslate();
     void showFeedValue(int percent);
 

@@ -37,6 +37,98 @@ double pathLength(const gcode::Toolpath &path)
     return total;
 }
 
+// What one load works with, copied into its worker thread.
+struct LoadJob
+{
+    QString path;
+    std::shared_ptr<std::atomic_bool> cancel;
+    std::shared_ptr<std::atomic_int> progress; // permille
+    std::shared_ptr<std::atomic_int> stage;    // as ProgramSession::m_stage
+    InterpretFn interpret;
+    AnalyseFn analyse;
+    session::OffsetState offsets;
+    std::array<double, 4> startMm{};
+    std::size_t maxSegments = 0;
+    bool glVertices = false;
+};
+
+// The view of an interpreted program: its scene, length and the entry of each source line.
+void showToolpath(const LoadJob &job, const gcode::Toolpath &tp, LoadedProgram &result)
+{
+    std::atomic_int *progress = job.progress.get();
+    SceneOptions options;
+    options.maxSegments = job.maxSegments;
+    options.glVertices = job.glVertices;
+    auto scene = std::make_shared<ToolpathScene>(buildScene(
+        tp, options,
+        [&](std::size_t d, std::size_t t) {
+            progress->store(int(d * 1000 / std::max<std::size_t>(1, t)));
+        },
+        job.cancel.get()));
+    result.scene = scene;
+    result.lengthMm = pathLength(tp);
+    std::uint32_t maxLine = 0;
+    for (std::size_t i = 0; i < tp.size(); ++i)
+        maxLine = std::max(maxLine, tp.line(i));
+    result.lineToEntry.assign(std::size_t(maxLine) + 1, gcode::Toolpath::kNone);
+    for (std::size_t i = 0; i < tp.size(); ++i)
+        result.lineToEntry[tp.line(i)] = std::uint32_t(i);
+}
+
+// The worker thread's load, stage by stage: read, index the lines, interpret, show, analyse.
+// False when cancelled (nothing to report); else `result` and `failure` are what the window gets.
+bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
+{
+    const std::atomic_bool *cancelFlag = job.cancel.get();
+    std::atomic_int *progress = job.progress.get();
+    std::atomic_int *stage = job.stage.get();
+    QFile file(job.path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        failure = ProgramSession::tr("Cannot open %1: %2").arg(job.path, file.errorString());
+        return true;
+    }
+    QByteArray data = file.readAll();
+    stage->store(1);
+    auto text = std::make_shared<ProgramText>(
+        data, [&](qint64 d, qint64 t) { progress->store(int(d * 1000 / std::max<qint64>(1, t))); },
+        job.cancel.get());
+    result.text = text;
+    if (cancelFlag->load())
+        return false;
+    stage->store(2);
+    progress->store(0);
+    if (!job.interpret) {
+        result.errors.push_back(
+            {0, 0,
+             ProgramSession::tr(
+                 "This build has no G-code interpreter; the program cannot be checked.")});
+        return true;
+    }
+    InterpretRequest req;
+    req.text = data;
+    req.fileName = QFileInfo(job.path).fileName();
+    req.offsets = job.offsets;
+    req.startMm = job.startMm;
+    req.cancel = job.cancel.get();
+    req.progress = [&](double f) { progress->store(int(f * 1000)); };
+    InterpretOutcome outcome = job.interpret(req);
+    result.errors = std::move(outcome.errors);
+    if (cancelFlag->load())
+        return false;
+    if (outcome.toolpath) {
+        stage->store(3);
+        progress->store(0);
+        showToolpath(job, *outcome.toolpath, result);
+        result.toolpath = std::move(outcome.toolpath);
+        if (result.errors.empty() && job.analyse) {
+            stage->store(4);
+            progress->store(0);
+            job.analyse(result, job.cancel.get());
+        }
+    }
+    return !cancelFlag->load();
+}
+
 } // namespace
 
 std::uint32_t LoadedProgram::entryOfLine(std::uint32_t line) const
@@ -94,93 +186,31 @@ void ProgramSession::load(const QString &path)
     m_cancel = std::make_shared<std::atomic_bool>(false);
     m_progress = std::make_shared<std::atomic_int>(0);
     m_stage = std::make_shared<std::atomic_int>(0);
-    auto cancelFlag = m_cancel;
-    auto progress = m_progress;
-    auto stage = m_stage;
-    const InterpretFn interpret = m_interpret;
-    const AnalyseFn analyse = m_analyse;
-    const session::OffsetState offsets = m_offsets;
-    const std::array<double, 4> startMm = m_startMm;
-    const std::size_t maxSegments = m_maxSegments;
-    const bool glVertices = m_glVertices;
+    const LoadJob job{.path = path,
+                      .cancel = m_cancel,
+                      .progress = m_progress,
+                      .stage = m_stage,
+                      .interpret = m_interpret,
+                      .analyse = m_analyse,
+                      .offsets = m_offsets,
+                      .startMm = m_startMm,
+                      .maxSegments = m_maxSegments,
+                      .glVertices = m_glVertices};
     emit loadStarted(path);
 
     m_thread = QThread::create([=, this] {
         auto result = std::make_shared<LoadedProgram>();
         result->path = path;
         QString failure;
-        auto done = [&] {
-            QMetaObject::invokeMethod(
-                this,
-                [this, generation, result, failure] {
-                    if (generation == m_generation)
-                        finish(result, failure);
-                },
-                Qt::QueuedConnection);
-        };
-        QFile file(path);
-        if (!file.open(QIODevice::ReadOnly)) {
-            failure = tr("Cannot open %1: %2").arg(path, file.errorString());
-            return done();
-        }
-        QByteArray data = file.readAll();
-        stage->store(1);
-        auto text = std::make_shared<ProgramText>(
-            data,
-            [&](qint64 d, qint64 t) { progress->store(int(d * 1000 / std::max<qint64>(1, t))); },
-            cancelFlag.get());
-        result->text = text;
-        if (cancelFlag->load())
-            return;
-        stage->store(2);
-        progress->store(0);
-        if (!interpret) {
-            result->errors.push_back(
-                {0, 0, tr("This build has no G-code interpreter; the program cannot be checked.")});
-            return done();
-        }
-        InterpretRequest req;
-        req.text = data;
-        req.fileName = QFileInfo(path).fileName();
-        req.offsets = offsets;
-        req.startMm = startMm;
-        req.cancel = cancelFlag.get();
-        req.progress = [&](double f) { progress->store(int(f * 1000)); };
-        InterpretOutcome outcome = interpret(req);
-        result->errors = std::move(outcome.errors);
-        if (cancelFlag->load())
-            return;
-        if (outcome.toolpath) {
-            stage->store(3);
-            progress->store(0);
-            SceneOptions options;
-            options.maxSegments = maxSegments;
-            options.glVertices = glVertices;
-            auto scene = std::make_shared<ToolpathScene>(buildScene(
-                *outcome.toolpath, options,
-                [&](std::size_t d, std::size_t t) {
-                    progress->store(int(d * 1000 / std::max<std::size_t>(1, t)));
-                },
-                cancelFlag.get()));
-            result->scene = scene;
-            result->lengthMm = pathLength(*outcome.toolpath);
-            const auto &tp = *outcome.toolpath;
-            std::uint32_t maxLine = 0;
-            for (std::size_t i = 0; i < tp.size(); ++i)
-                maxLine = std::max(maxLine, tp.line(i));
-            result->lineToEntry.assign(std::size_t(maxLine) + 1, gcode::Toolpath::kNone);
-            for (std::size_t i = 0; i < tp.size(); ++i)
-                result->lineToEntry[tp.line(i)] = std::uint32_t(i);
-            result->toolpath = std::move(outcome.toolpath);
-            if (result->errors.empty() && analyse) {
-                stage->store(4);
-                progress->store(0);
-                analyse(*result, cancelFlag.get());
-            }
-        }
-        if (cancelFlag->load())
-            return;
-        done();
+        if (!loadInThread(job, *result, failure))
+            return; // cancelled
+        QMetaObject::invokeMethod(
+            this,
+            [this, generation, result, failure] {
+                if (generation == m_generation)
+                    finish(result, failure);
+            },
+            Qt::QueuedConnection);
     });
     m_thread->start();
     m_poll.start();

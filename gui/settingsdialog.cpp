@@ -26,6 +26,27 @@ SettingsDialog::SettingsDialog(const machine::MachineConfig &config, const QStri
 {
     setObjectName(QStringLiteral("settingsDialog"));
     m_tabs = new QTabWidget(this);
+    m_tabs->addTab(createProfilePage(config), QString());
+    m_tabs->addTab(createApplicationPage(), QString());
+
+    m_message = new QLabel(this);
+    m_message->setWordWrap(true);
+    m_buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    m_apply = m_buttons->addButton(QString(), QDialogButtonBox::ApplyRole);
+    connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
+    connect(m_apply, &QPushButton::clicked, this, &SettingsDialog::apply);
+    connectProfileButtons();
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_tabs, 1);
+    layout->addWidget(m_message);
+    layout->addWidget(m_buttons);
+    resize(760, 640);
+    retranslate();
+}
+
+// The machine profile's editor and its file buttons.
+QWidget *SettingsDialog::createProfilePage(const machine::MachineConfig &config)
+{
     auto *profilePage = new QWidget;
     m_editor = new ProfileEditor(profilePage);
     m_editor->setConfig(config);
@@ -45,8 +66,12 @@ SettingsDialog::SettingsDialog(const machine::MachineConfig &config, const QStri
     auto *profileLayout = new QVBoxLayout(profilePage);
     profileLayout->addWidget(m_editor, 1);
     profileLayout->addLayout(fileRow);
-    m_tabs->addTab(profilePage, QString());
+    return profilePage;
+}
 
+// The application's own settings: the language and reconnecting by itself.
+QWidget *SettingsDialog::createApplicationPage()
+{
     auto *appPage = new QWidget;
     auto *appForm = new QFormLayout(appPage);
     m_languageLabel = new QLabel(appPage);
@@ -65,14 +90,12 @@ SettingsDialog::SettingsDialog(const machine::MachineConfig &config, const QStri
             [](bool on) { QSettings().setValue(QStringLiteral("link/autoReconnect"), on); });
     appForm->addRow(m_languageLabel, m_language);
     appForm->addRow(m_reconnect);
-    m_tabs->addTab(appPage, QString());
+    return appPage;
+}
 
-    m_message = new QLabel(this);
-    m_message->setWordWrap(true);
-    m_buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    m_apply = m_buttons->addButton(QString(), QDialogButtonBox::ApplyRole);
-    connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
-    connect(m_apply, &QPushButton::clicked, this, &SettingsDialog::apply);
+// Save, Export, Load and Defaults of the profile page.
+void SettingsDialog::connectProfileButtons()
+{
     connect(m_save, &QPushButton::clicked, this, [this] { saveTo(m_path); });
     connect(m_export, &QPushButton::clicked, this, [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export profile"), m_path,
@@ -90,12 +113,6 @@ SettingsDialog::SettingsDialog(const machine::MachineConfig &config, const QStri
         m_editor->setConfig(machine::defaultMachineConfig(m_editor->config().unit.variant));
         showMessage(tr("Defaults of the unit type loaded; Apply or Save to use them."), false);
     });
-    auto *layout = new QVBoxLayout(this);
-    layout->addWidget(m_tabs, 1);
-    layout->addWidget(m_message);
-    layout->addWidget(m_buttons);
-    resize(760, 640);
-    retranslate();
 }
 
 void SettingsDialog::showMessage(const QString &text, bool error)

@@ -44,6 +44,10 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    // The constructor's parts (the pages in the order of their tabs).
+    QWidget *createProfilePage(const machine::MachineConfig &config);
+    QWidget *createApplicationPage();
+    void connectProfileButtons();
     void retranslate();
     void apply();
     void showMessage(const QString &text, bool error);

@@ -47,6 +47,8 @@ std::optional<Reply> Unit::Impl::executeLink(std::string_view body)
     return std::nullopt;
 }
 
+// One command of the unit: link commands, packets, what older firmware lacks, then one case per
+// command letter; a dispatch table, kept whole (over 60 lines) so that every command is found here.
 Reply Unit::Impl::execute(int address, std::string_view body)
 {
     if (address == 7 && address != options.address)

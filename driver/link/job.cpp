@@ -74,12 +74,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     m_packetLimit = m_pace.maxPacket();
     m_cursor.execAt = now;
     m_host.restartPollCount();
-    m_report = {};
-    m_report.startS = now;
-    const LinkStats &stats = m_host.link().stats();
-    m_bytesAtStart = stats.bytesIn + stats.bytesOut;
-    m_resentAtStart = stats.resent;
-    m_recoveredAtStart = stats.recovered;
+    m_figures.start(now, m_host.link().stats());
     state.jobActive = true;
     state.commandsTotal = static_cast<std::int64_t>(m_program.commands.size());
     detail::setHold(state, HoldReason::None, {}, 0);
@@ -215,7 +210,7 @@ void Job::sendPacket(double now)
         return;
     }
     const std::size_t n = packet.size();
-    ++m_report.packets;
+    ++m_figures.report().packets;
     m_host.startPacket(std::move(packet), [this, first, n](const Outcome &o) {
         onPacketOutcome(o, first, n, m_host.now());
     });
@@ -224,14 +219,10 @@ void Job::sendPacket(double now)
 void Job::acceptUpTo(std::size_t end)
 {
     for (; m_cursor.next < end; ++m_cursor.next) {
-        if (isMotion(m_program.commands[m_cursor.next].op)) {
+        const bool motion = isMotion(m_program.commands[m_cursor.next].op);
+        if (motion)
             ++m_cursor.vectorsAcked;
-            ++m_report.vectors;
-            if (m_report.firstVectorAckS < 0)
-                m_report.firstVectorAckS = m_host.now();
-            m_report.lastVectorAckS = m_host.now();
-        }
-        ++m_report.commands;
+        m_figures.accepted(motion, m_host.now());
     }
     MachineState &state = m_host.liveState();
     state.commandsAcked = static_cast<std::int64_t>(m_cursor.next);
@@ -267,7 +258,7 @@ void Job::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, do
     case ReplyCode::Syntax:   // a line damaged on the way (bad checksum) or lost
     case ReplyCode::Watchdog: // the packet came in too slowly: none of the rest ran
         m_packetLimit = std::max(4, m_packetLimit / 2);
-        m_report.resent += static_cast<std::int64_t>(n - accepted);
+        m_figures.report().resent += static_cast<std::int64_t>(n - accepted);
         return;
     default:
         m_host.fail({DriverCode::UnitRefused,
@@ -430,12 +421,7 @@ void Job::finish(bool ok)
         return;
     m_active = false;
     m_streamBlocked = false;
-    const LinkStats &stats = m_host.link().stats();
-    m_report.finished = ok;
-    m_report.endS = m_host.now();
-    m_report.linkBytes = stats.bytesIn + stats.bytesOut - m_bytesAtStart;
-    m_report.resent += stats.resent - m_resentAtStart;
-    m_report.recovered = stats.recovered - m_recoveredAtStart;
+    m_figures.finish(ok, m_host.now(), m_host.link().stats());
     MachineState &state = m_host.liveState();
     state.jobActive = false;
     state.progress = ok ? 1.0 : state.progress;
@@ -443,7 +429,7 @@ void Job::finish(bool ok)
     m_host.markDirty();
     if (state.mode == MachineMode::Running)
         m_host.setMode(MachineMode::Idle);
-    m_report.overrideLinkMinPercent = m_override.linkMinPercent();
+    m_figures.report().overrideLinkMinPercent = m_override.linkMinPercent();
     m_override.follow(false); // the operator's override again
     m_host.log(ok ? "job finished" : "job ended");
     m_host.publish(); // the final state before the news that the job ended
@@ -462,16 +448,9 @@ void Job::abandon()
 
 void Job::pollStarted(double now)
 {
-    ++m_report.polls;
-    if (m_cursor.next < m_program.commands.size() &&
-        m_pace.vectorsBefore(m_pace.size() - 1) > m_pace.vectorsBefore(m_cursor.next)) {
-        ++m_report.streamPolls;
-        const double since = m_report.streamPolls > 1 ? m_report.lastStreamPollS : m_report.startS;
-        m_report.maxStreamPollGapS = std::max(m_report.maxStreamPollGapS, now - since);
-        if (m_report.streamPolls == 1)
-            m_report.firstStreamPollS = now;
-        m_report.lastStreamPollS = now;
-    }
+    m_figures.pollStarted(now, m_cursor.next < m_program.commands.size() &&
+                                   m_pace.vectorsBefore(m_pace.size() - 1) >
+                                       m_pace.vectorsBefore(m_cursor.next));
 }
 
 // While progress is re-established from the counters a position on the path still verifies
@@ -485,72 +464,6 @@ void Job::checkPolledPosition(bool kept)
                   detail::stepsText(m_host.liveState().positionSteps, m_program.axisCount) +
                   " steps, on no segment of the path "
                   "sent to it");
-}
-
-// The executing command from the polled position: the first motion command from the last one
-// seen executing on whose box (from its start to its end position) holds the position and which
-// has not ended. A position on none of them (the tool lifted, the machine off the path) says
-// nothing about progress: the line, progress and ETA stay where they were.
-void Job::positionRead()
-{
-    const auto &cmds = m_program.commands;
-    const int axes = m_program.axisCount;
-    MachineState &state = m_host.liveState();
-    const auto &pos = state.positionSteps;
-    std::size_t i = m_cursor.exec;
-    const std::size_t limit = std::min(m_cursor.next, cmds.size());
-    bool onPath = false; // inside a box, or at the end of the last motion sent
-    double done = 0;     // the share of vector i's longest axis already run
-    for (int guard = 0; i < limit && guard < 100000; ++i, ++guard) {
-        if (!isMotion(cmds[i].op))
-            continue;
-        const machine::Steps4 &end = cmds[i].endSteps;
-        bool atEnd = true;
-        bool inside = true;
-        for (int a = 0; a < axes; ++a) {
-            const std::int64_t start = end[a] - cmds[i].d[a];
-            atEnd = atEnd && pos[a] == end[a];
-            inside =
-                inside && pos[a] >= std::min(start, end[a]) && pos[a] <= std::max(start, end[a]);
-        }
-        onPath = atEnd;
-        if (inside && !atEnd) {
-            onPath = true;
-            int longest = 0;
-            for (int a = 1; a < axes; ++a)
-                longest = std::abs(cmds[i].d[a]) > std::abs(cmds[i].d[longest]) ? a : longest;
-            const std::int64_t left = std::abs(end[longest] - pos[longest]);
-            const std::int64_t length = std::abs(cmds[i].d[longest]);
-            done = length > 0 ? 1.0 - static_cast<double>(left) / static_cast<double>(length) : 0;
-            break;
-        }
-    }
-    if (!onPath && i > m_cursor.exec)
-        return;
-    m_cursor.exec = i;
-    const std::size_t shown = std::min(i, cmds.empty() ? 0 : cmds.size() - 1);
-    state.sourceLine = cmds.empty() ? 0 : cmds[shown].sourceLine;
-    state.progress = cmds.empty() ? 0 : static_cast<double>(i) / static_cast<double>(cmds.size());
-    const double elapsed = m_host.now() - m_report.startS;
-    state.etaS =
-        i > 0 ? elapsed * static_cast<double>(cmds.size() - i) / static_cast<double>(i) : -1;
-    // Vector i began that share of its time ago (a long plunge read half way holds half its
-    // time, not all of it: the packet after it was sized to arrive when it had already ended).
-    m_cursor.execAt = m_host.now() - (i < limit ? done * m_pace.runS(i, i + 1) : 0.0);
-    m_override.follow(m_active);
-}
-
-// F answered RUN = 0: the unit's queue is empty, so every command accepted before F was sent
-// (all of them: one transaction at a time) has run. The counters alone cannot always tell: where
-// the path comes back over itself, a standing position may lie inside the box of an earlier,
-// longer vector, and the executing command read from it would stay there for good; the job
-// would then take the unit's queue for full for ever and never send again.
-void Job::unitStands()
-{
-    if (m_cursor.exec >= m_cursor.next)
-        return;
-    m_cursor.exec = m_cursor.next;
-    m_cursor.execAt = m_host.now();
 }
 
 void Job::linkOpened()

@@ -9,14 +9,17 @@
 // or the next single command on the wire, or waits: for an empty queue (L), for the machine to
 // stand (WaitIdle, Dwell, M0/M1/M6, ProgramEnd, probe), for the operator, for a check. Progress
 // is the index of the next command to send (the cursor): everything before it was accepted.
+// JobTracker reads where the unit is from its counters, JobFigures counts for the report.
 // An unknown outcome hands over to ProgressCheck (the counters tell how far the unit got), a
 // position off the planned path to PathGuard, a G38 move to ProbeMove; each of those owns its
 // own fields and gives the job back by unblocking the stream. The job never blocks and never
 // waits on time itself: it tells the core the earliest time it may send again (waitUntil).
 
 #include "driver/link/coretypes.h"
+#include "driver/link/jobfigures.h"
 #include "driver/link/joboverride.h"
 #include "driver/link/jobpace.h"
+#include "driver/link/jobtracker.h"
 #include "driver/link/machinestate.h"
 #include "driver/link/pathguard.h"
 #include "driver/link/probemove.h"
@@ -54,16 +57,21 @@ public:
     double waitUntil() const { return m_waitUntil; }
     bool queueFullSeen() const { return m_queueFullSeen; }
     const JobPace &pace() const { return m_pace; }
-    const JobReport &report() const { return m_report; }
-    JobReport &report() { return m_report; }
+    const JobReport &report() const { return m_figures.report(); }
+    JobReport &report() { return m_figures.report(); }
     const machine::UnitProgram &program() const { return m_program; }
-    void pollStarted(double now);        // counts the job's polls
-    void positionRead();                 // the executing command from the new counters
-    void unitStands();                   // F read RUN = 0: everything accepted has run
-    void checkPolledPosition(bool kept); // the path guard's check of a poll
-    void linkOpened();                   // a wait in progress is taken up again
-    void linkLost();                     // progress must be re-established afterwards
-    bool resumeAfterReconnect();         // connected again: true when a check starts
+    void pollStarted(double now); // counts the job's polls
+    // The executing command from the new counters (JobTracker), then the override's ceiling there.
+    void positionRead()
+    {
+        if (m_tracker.positionRead(m_figures.report().startS))
+            m_override.follow(m_active);
+    }
+    void unitStands() { m_tracker.unitStands(); } // F read RUN = 0: everything accepted has run
+    void checkPolledPosition(bool kept);          // the path guard's check of a poll
+    void linkOpened();                            // a wait in progress is taken up again
+    void linkLost();                              // progress must be re-established afterwards
+    bool resumeAfterReconnect();                  // connected again: true when a check starts
     bool verifying() const { return m_check.pending(); }
     bool offPath() const { return m_guard.faulted(); }
     bool probing() const;
@@ -100,12 +108,10 @@ private:
     bool m_afterRest = false;     // a PC-side wait (dwell) ended: the unit holds nothing
     double m_waitUntil = -1;      // a dwell or back-off: nothing from the job before this time
     int m_packetLimit = 1;        // adaptive packet size (commands)
-    JobReport m_report;
-    std::int64_t m_bytesAtStart = 0;
-    std::int64_t m_resentAtStart = 0;
-    std::int64_t m_recoveredAtStart = 0;
+    JobFigures m_figures;
     JobPace m_pace;
     JobOverride m_override{m_host, m_pace};
+    JobTracker m_tracker{m_host, m_program, m_cursor, m_pace};
     ProgressCheck m_check;
     PathGuard m_guard;
     ProbeMove m_probe;

@@ -92,19 +92,8 @@ void MachineCore::publish()
 
 void MachineCore::fail(const DriverMessage &reason, const Outcome *o, MachineMode mode)
 {
-    MachineError e;
-    e.reason = reason;
-    e.message = englishText(reason, true);
+    const MachineError e = detail::failure(reason, o);
     const std::string &message = e.message;
-    if (o) {
-        if (!o->commands.empty())
-            e.command = o->packet ? encodeBody(o->commands.front()) + " (packet of " +
-                                        std::to_string(o->commands.size()) + ")"
-                                  : encodeBody(o->commands.front());
-        e.reply = o->raw;
-        if (o->status == OutcomeStatus::Ok)
-            e.unitCode = static_cast<int>(o->reply.code);
-    }
     m_state.lastError = e;
     m_dirty = true;
     log("error: " + message + (e.command.empty() ? "" : " [" + e.command + "]") +
@@ -164,8 +153,7 @@ double MachineCore::deadline() const
     double d = m_engine.deadline();
     if (!m_open)
         return d;
-    for (const auto &t : m_timers)
-        d = std::min(d, t.first);
+    d = m_waits.nextTime(d);
     if (m_engine.idle()) {
         d = std::min(d, m_haltPending ? kNoDeadline : m_poller.nextTime());
         if (m_job.waitUntil() > m_now)
@@ -188,23 +176,9 @@ void MachineCore::onTime(double now)
     pump(now);
 }
 
-void MachineCore::runDueTimers()
-{
-    for (;;) {
-        auto due = std::find_if(m_timers.begin(), m_timers.end(),
-                                [this](const auto &t) { return t.first <= m_now; });
-        if (due == m_timers.end())
-            return;
-        std::function<void()> then = std::move(due->second);
-        m_timers.erase(due);
-        if (then)
-            then();
-    }
-}
-
 void MachineCore::afterDelay(double seconds, std::function<void()> then)
 {
-    m_timers.emplace_back(m_now + std::max(0.0, seconds), std::move(then));
+    m_waits.addTimer(m_now + std::max(0.0, seconds), std::move(then));
 }
 
 void MachineCore::heldAtOperatorStop(machine::StopReason reason)
@@ -216,7 +190,7 @@ void MachineCore::pump(double now)
 {
     m_now = now;
     if (m_open)
-        runDueTimers();
+        m_waits.runDue(m_now);
     while (m_open && m_engine.idle()) {
         if (!m_steps.empty()) {
             Step s = std::move(m_steps.front());
@@ -258,10 +232,7 @@ void MachineCore::applyPosition(const Reply &r)
 void MachineCore::applyFlags(std::uint8_t flags)
 {
     const bool wasInta = m_state.inta;
-    m_state.flags = flags;
-    m_state.run = (flags & 0x40) != 0;
-    m_state.inta = (flags & 0x80) != 0;
-    m_state.queueFull = (flags & 0x20) != 0;
+    detail::setFlags(m_state, flags);
     m_dirty = true;
     // A running unit that stands has run everything accepted; one held by H, an interrupt or a
     // tool lift (INTA set, or not Running) stands with its queue kept.
@@ -277,7 +248,7 @@ void MachineCore::applyFlags(std::uint8_t flags)
 
 void MachineCore::afterIdle(std::function<void()> then)
 {
-    m_idleWaiters.push_back(std::move(then));
+    m_waits.addIdle(std::move(then));
     send(cmd::flag(), [this](const Outcome &o) {
         if (o.status != OutcomeStatus::Ok || !o.reply.ok())
             return (void)unitError(o, "status", MachineMode::Alarm);
@@ -287,39 +258,25 @@ void MachineCore::afterIdle(std::function<void()> then)
 
 void MachineCore::afterJobIdle(std::function<void()> then)
 {
-    m_jobIdleWaiters.push_back(std::move(then));
+    m_waits.addJobIdle(std::move(then));
     afterIdle(nullptr);
 }
 
 void MachineCore::afterStopOrInterrupt(std::function<void()> then)
 {
-    m_stopWaiters.push_back(std::move(then));
+    m_waits.addStop(std::move(then));
     afterIdle(nullptr);
 }
 
 void MachineCore::checkIdleWaiters()
 {
-    if ((m_state.inta || !m_state.run) && !m_stopWaiters.empty()) {
-        auto stop = std::move(m_stopWaiters);
-        m_stopWaiters.clear();
-        for (auto &w : stop)
-            w();
-    }
+    if (m_state.inta || !m_state.run)
+        m_waits.stopped();
     if (m_state.run)
         return;
-    auto waiters = std::move(m_idleWaiters);
-    m_idleWaiters.clear();
     // The job's own waits (WaitIdle, M0, ProgramEnd, ...) count only while it runs: a queue
     // kept by K or a pause is not the job's end.
-    if (m_state.mode == MachineMode::Running && !m_toolLift.kept()) {
-        for (auto &w : m_jobIdleWaiters)
-            waiters.push_back(std::move(w));
-        m_jobIdleWaiters.clear();
-    }
-    for (auto &w : waiters) {
-        if (w)
-            w();
-    }
+    m_waits.idle(m_state.mode == MachineMode::Running && !m_toolLift.kept());
 }
 
 // ---- CoreHost ---------------------------------------------------------------------------
@@ -338,10 +295,10 @@ void MachineCore::startPacket(std::vector<Command> packet, Then then)
 
 void MachineCore::dropPending()
 {
-    m_timers.clear();
+    m_waits.clearTimers();
     m_steps.clear();
-    m_idleWaiters.clear();
-    m_jobIdleWaiters.clear();
+    m_waits.clearIdle();
+    m_waits.clearJobIdle();
 }
 
 void MachineCore::jobFinished(bool ok)
@@ -384,10 +341,7 @@ void MachineCore::readPositionAndStatus(std::function<void()> then)
     send(cmd::flag(), [this, then = std::move(then)](const Outcome &o) {
         if (unitError(o, "reading the status", MachineMode::Alarm))
             return;
-        m_state.flags = *o.reply.hexValue();
-        m_state.run = (m_state.flags & 0x40) != 0;
-        m_state.inta = (m_state.flags & 0x80) != 0;
-        m_state.queueFull = (m_state.flags & 0x20) != 0;
+        detail::setFlags(m_state, *o.reply.hexValue());
         m_poller.restartAt(m_now);
         if (then)
             then();
@@ -396,20 +350,10 @@ void MachineCore::readPositionAndStatus(std::function<void()> then)
 
 // ---- operations ----------------------------------------------------------------------------
 
-namespace {
-template<class... F>
-struct Overloaded : F...
-{
-    using F::operator()...;
-};
-template<class... F>
-Overloaded(F...) -> Overloaded<F...>;
-} // namespace
-
 MachineCore::Result MachineCore::execute(MachineCommand command, double now)
 {
     return std::visit(
-        Overloaded{
+        detail::Overloaded{
             [&](op::Run &c) {
                 return moving([&] { return runJob(std::move(c.program), now); }, now);
             },
@@ -501,12 +445,12 @@ void MachineCore::linkOpened(double now)
     m_open = true;
     m_engine.reset();
     m_steps.clear();
-    m_idleWaiters.clear();
+    m_waits.clearIdle();
     m_inFlight = nullptr;
     m_haltPending = false;
-    m_jobIdleWaiters.clear();
-    m_stopWaiters.clear();
-    m_timers.clear();
+    m_waits.clearJobIdle();
+    m_waits.clearStop();
+    m_waits.clearTimers();
     m_job.linkOpened();
     m_inputHoming.linkOpened();
     setMode(MachineMode::Connecting);
@@ -521,8 +465,8 @@ void MachineCore::linkClosed(const std::string &why, double now)
     m_open = false;
     m_engine.reset();
     m_steps.clear();
-    m_idleWaiters.clear();
-    m_timers.clear();
+    m_waits.clearIdle();
+    m_waits.clearTimers();
     m_inFlight = nullptr;
     m_haltPending = false;
     if (m_job.active()) {

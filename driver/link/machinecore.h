@@ -18,13 +18,14 @@
 //      wait for the machine to stop (F: RUN = 0).
 //
 // The core itself is only that scheduler, the published MachineState, the waits on the unit's
-// status and the error reporting (CoreHost, what its parts may use). What to do next is decided
-// by its parts, each in its own file pair with its own fields and a contract at its top:
+// status (CoreWaits) and the error reporting (CoreHost, what its parts may use). What to do next is
+// decided by its parts, each in its own file pair with its own fields and a contract at its top:
 //
 //   ConnectSequence (+ EepromSync)  connecting          MachineActivity::Connecting
 //   HomingCycle                     homing in legs of W  Homing
 //   Jog                             jogging             Jogging
-//   Job (+ JobPace)                 streaming a job     Job
+//   Job (+ JobPace, JobOverride,    streaming a job     Job
+//        JobTracker, JobFigures)
 //     ProgressCheck                 progress from the counters after an unknown outcome
 //                                                       CheckingProgress
 //     ProbeMove                     a G38 move          Probing
@@ -44,6 +45,7 @@
 #include "driver/link/connectsequence.h"
 #include "driver/link/corehost.h"
 #include "driver/link/coretypes.h"
+#include "driver/link/corewaits.h"
 #include "driver/link/eepromsync.h"
 #include "driver/link/hold.h"
 #include "driver/link/homingcycle.h"
@@ -158,7 +160,7 @@ private:
     void startPacket(std::vector<protocol::Command> packet, Then then) override;
     void afterIdle(std::function<void()> then) override;
     void afterJobIdle(std::function<void()> then) override;
-    void clearJobIdleWaiters() override { m_jobIdleWaiters.clear(); }
+    void clearJobIdleWaiters() override { m_waits.clearJobIdle(); }
     void dropPending() override;
     // Runs `then` when F shows RUN = 0 or INTA = 1 (an interrupt braking a move).
     void afterStopOrInterrupt(std::function<void()> then) override;
@@ -190,7 +192,6 @@ private:
     bool streaming() const { return m_job.streaming(m_now); }
     MachineActivity currentActivity() const;
     void checkIdleWaiters();
-    void runDueTimers();
 
     void readPositionAndStatus(std::function<void()> then) override;
 
@@ -207,12 +208,9 @@ private:
     MachineState m_state;
     bool m_dirty = false;
     double m_now = 0;
-    std::deque<Step> m_steps;                         // operation steps, before polls and the job
-    Then m_inFlight;                                  // continuation of the transaction in flight
-    std::vector<std::function<void()>> m_idleWaiters; // run when F shows RUN = 0
-    std::vector<std::function<void()>> m_jobIdleWaiters; // the same, only while the job runs
-    std::vector<std::function<void()>> m_stopWaiters;    // RUN = 0 or INTA = 1
-    std::vector<std::pair<double, std::function<void()>>> m_timers; // afterDelay: (when, what)
+    std::deque<Step> m_steps; // operation steps, before polls and the job
+    Then m_inFlight;          // continuation of the transaction in flight
+    CoreWaits m_waits;        // afterIdle, afterJobIdle, afterStopOrInterrupt, afterDelay
     bool m_open = false;
 
     // polling

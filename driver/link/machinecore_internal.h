@@ -76,6 +76,26 @@ inline DriverMessage linkFailure(const std::string &action, const Outcome &o)
     return {DriverCode::LinkFailed, {action, o.error}};
 }
 
+// An operation that failed (MachineCore::fail): the reason with its English text and hint, and
+// what the outcome `o` (if any) says: the command (a packet's first, with its size), the reply as
+// it came and the unit's code.
+inline MachineError failure(const DriverMessage &reason, const Outcome *o)
+{
+    MachineError e;
+    e.reason = reason;
+    e.message = englishText(reason, true);
+    if (o) {
+        if (!o->commands.empty())
+            e.command = o->packet ? protocol::encodeBody(o->commands.front()) + " (packet of " +
+                                        std::to_string(o->commands.size()) + ")"
+                                  : protocol::encodeBody(o->commands.front());
+        e.reply = o->raw;
+        if (o->status == OutcomeStatus::Ok)
+            e.unitCode = static_cast<int>(o->reply.code);
+    }
+    return e;
+}
+
 inline MachineError notNow(const char *what, MachineMode mode)
 {
     return refusal(DriverCode::NotNow, {what, machineModeName(mode)});
@@ -97,5 +117,23 @@ inline void setHold(MachineState &state, HoldReason reason, DriverMessage messag
     state.holdMessage = std::move(message);
     state.holdLine = line;
 }
+
+// The unit's status byte (F) into the state: RUN, INTA and queue full.
+inline void setFlags(MachineState &state, std::uint8_t flags)
+{
+    state.flags = flags;
+    state.run = (flags & 0x40) != 0;
+    state.inta = (flags & 0x80) != 0;
+    state.queueFull = (flags & 0x20) != 0;
+}
+
+// The visitor of several lambdas (MachineCore::execute over a MachineCommand).
+template<class... F>
+struct Overloaded : F...
+{
+    using F::operator()...;
+};
+template<class... F>
+Overloaded(F...) -> Overloaded<F...>;
 
 } // namespace frezka::driver::detail

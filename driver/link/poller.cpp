@@ -47,10 +47,11 @@ double Poller::nextTime() const
                           m_lastPollTransactions);
 }
 
-void Poller::start(double now)
+// Polls keep their schedule: one that had to wait for a packet's reply does not push the next
+// one back, so the rate stays at pollIntervalS where the link has room for it. Counts the poll
+// (the rate shown, the job's figures).
+void Poller::schedule(double now)
 {
-    // Polls keep their schedule: one that had to wait for a packet's reply does not push the
-    // next one back, so the rate stays at pollIntervalS where the link has room for it.
     const double due = nextTime();
     m_lastPoll = due <= now && now - due < m_host.options().pollIntervalS ? due : now;
     m_pollTimes.push_back(now);
@@ -59,6 +60,11 @@ void Poller::start(double now)
     m_host.liveState().pollHz = static_cast<double>(m_pollTimes.size());
     if (m_job.active())
         m_job.pollStarted(now);
+}
+
+void Poller::start(double now)
+{
+    schedule(now);
     const Command pos = m_host.positionCommand();
     // While streaming, every reply carries INTA (interrupts) and packet replies carry queue
     // full: F and the inputs are read less often there, to leave the wire to the job.

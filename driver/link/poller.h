@@ -41,6 +41,8 @@ public:
     double rttS() const { return m_rttS; }
 
 private:
+    void schedule(double now); // the poll's place in the schedule, counted
+
     CoreHost &m_host;
     Job &m_job;
     const ToolLift &m_toolLift;
