@@ -27,6 +27,7 @@
 // The engine knows the unit's command index after syncIndex() (or the first recovery that
 // learns it): it is advanced for every command except '@' and '>' (adopted reading §8).
 
+#include "driver/link/linkrules.h"
 #include "protocol/command.h"
 #include "protocol/reply.h"
 
@@ -206,14 +207,5 @@ private:
     std::optional<int> m_indexBefore;
     LinkStats m_stats;
 };
-
-// How far a packet of n commands advances the unit's index once its *E has arrived: every line
-// (*S, the commands, *E) is a command (adopted reading §8). One place, to change with hardware.
-int packetIndexAdvance(int commandCount);
-// Commands whose repetition would change what the machine does (motion, XU/XD, K/R, G, W, J,
-// packets): recovered through the index. All others are resent as they are after a lost reply.
-bool mustArriveOnce(protocol::Op op);
-// Whether a command advances the unit's index (all but '@' and '>').
-bool advancesIndex(protocol::Op op);
 
 } // namespace frezka::driver
