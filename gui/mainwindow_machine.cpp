@@ -162,6 +162,8 @@ void MainWindow::onConnected()
         m_console->appendInfo(eepromDifferenceText(d));
 }
 
+// One connect per control, panel by panel: a wiring table, kept whole so that every control's
+// path to the workflow or the driver reads in one place.
 void MainWindow::connectControls()
 {
     // Operator controls.
