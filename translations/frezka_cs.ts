@@ -1173,6 +1173,10 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>line %1</source>
         <translation>řádek %1</translation>
     </message>
+    <message>
+        <source>no planned speed where the tool stands</source>
+        <translation>v místě nástroje není naplánovaná rychlost</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>

@@ -1173,6 +1173,10 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>line %1</source>
         <translation>line %1</translation>
     </message>
+    <message>
+        <source>no planned speed where the tool stands</source>
+        <translation>no planned speed where the tool stands</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>

@@ -141,7 +141,7 @@ std::optional<MachineError> ToolLift::lower(int speedPulsesPerS)
             return refusal(DriverCode::NewFeedNeedsXm);
         const std::int64_t planned = m_job.pace().plannedSpeedNow();
         if (planned <= 0)
-            return refusal(DriverCode::SpeedInvalid, {"no planned speed here"});
+            return refusal(DriverCode::SpeedInvalid, {"no planned speed where the tool stands"});
         newPercent = std::clamp(
             static_cast<int>(std::lround(100.0 * speedPulsesPerS / static_cast<double>(planned))),
             kOverrideMinPercent, kOverrideMaxPercent);
