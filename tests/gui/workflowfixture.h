@@ -78,10 +78,11 @@ protected:
 
     bool waitIdle()
     {
-        QTest::qWaitFor([&] { return state().mode == MachineMode::Idle; }, kMachineTimeoutMs);
-        if (state().mode != MachineMode::Idle)
+        const bool idle =
+            QTest::qWaitFor([&] { return state().mode == MachineMode::Idle; }, kMachineTimeoutMs);
+        if (!idle)
             qWarning("not idle: %s", qPrintable(describe()));
-        return state().mode == MachineMode::Idle;
+        return idle;
     }
 
     // Records every command the driver puts on the wire ("> " lines of its log), in order.

@@ -64,7 +64,7 @@ machine::UnitProgram twoSpeedProgram()
     ProgramBuilder b(3);
     b.add(machine::UnitOp::Accel, 200);
     b.add(machine::UnitOp::Brake, 4000);
-    for (const auto [v, n] : {std::pair{3000, 500}, std::pair{4000, 150}}) {
+    for (const auto &[v, n] : {std::pair{3000, 500}, std::pair{4000, 150}}) {
         b.add(machine::UnitOp::Speed, v);
         for (int i = 0; i < n; ++i)
             b.add(machine::UnitOp::Vector, 0, {400, 0, 0, 0}, static_cast<std::uint32_t>(10 + i));
