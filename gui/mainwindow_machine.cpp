@@ -289,7 +289,7 @@ void MainWindow::onState(const driver::MachineState &state)
     m_outputs->showState(state.spindleOn, [&state, this](machine::OutputFunction f) {
         return state.outputOn(profile(), f);
     });
-    m_outputs->showFeedOverride(state.overridePercent, state.overrideCeilingPercent);
+    m_outputs->showFeedOverride(state.overridePercent, state.overrideHeldPercent());
     m_jog->setMpgOn(state.mpgOn);
     m_jog->setHomedAxes(state.homedAxes, isConnected(state.mode));
     m_connection->setText(connectionText(state));

@@ -32,7 +32,7 @@ public:
     // of each function (coolant, air blow, the extra ones) is on.
     void showState(bool spindleOn, const std::function<bool(machine::OutputFunction)> &isOn);
     // linkPercent > 0: the link holds the unit at that override
-    // (MachineState::overrideCeilingPercent).
+    // (MachineState::overrideHeldPercent).
     void showFeedOverride(int percent, int linkPercent = 0);
     int feedOverride() const;
     double spindleRpm() const;

@@ -7,23 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace frezka::driver {
 
 using namespace frezka::protocol;
-
-namespace {
-// A value as the unit shows it: a byte in two hex digits, a number without trailing zeros.
-std::string valueText(machine::EepromKind kind, double value)
-{
-    if (kind != machine::EepromKind::Byte)
-        return numberText(value);
-    char hex[8];
-    std::snprintf(hex, sizeof hex, "%02X", static_cast<unsigned>(std::lround(value)) & 0xFFu);
-    return hex;
-}
-} // namespace
 
 MachineState &EepromSync::state()
 {
@@ -61,11 +48,9 @@ void EepromSync::compare()
                                          ? 1e-4 * std::max(1.0, std::abs(e.value))
                                          : 0.0;
             if (std::abs(have - e.value) > tolerance) {
-                const std::string text = e.what + ": unit " + valueText(e.kind, have) +
-                                         ", profile " + valueText(e.kind, e.value);
-                state().eepromDifferences.push_back({e, have, text});
+                const EepromDifference &d = state().eepromDifferences.emplace_back(e, have);
                 m_host.markDirty();
-                m_host.log("EEPROM differs: " + text);
+                m_host.log("EEPROM differs: " + d.text());
             }
         });
     }

@@ -29,18 +29,14 @@ void JobOverride::follow(bool streaming)
     if (!state.features.vlVkXmNa)
         return;
     const int want = toSend(state.overridePercent, streaming);
-    const int held = want < state.overridePercent ? want : 0;
-    if (held > 0 && streaming)
-        m_linkMin = m_linkMin ? std::min(m_linkMin, held) : held;
-    if (state.overrideCeilingPercent != held) {
-        state.overrideCeilingPercent = held;
-        m_host.markDirty();
-    }
+    if (want < state.overridePercent && streaming)
+        m_linkMin = m_linkMin ? std::min(m_linkMin, want) : want;
     if (want != state.overrideSentPercent) {
         m_host.send(cmd::multiplier(want), [this](const Outcome &o) {
             m_host.unitError(o, "keeping the feed override within the link (XM)",
                              MachineMode::Alarm);
         });
+        m_host.markDirty(); // the override held (MachineState::overrideHeldPercent) changes
         state.overrideSentPercent = want; // the reply confirms it (noteOutputsAccepted)
     }
 }

@@ -7,7 +7,7 @@
 // motion from the executing command to a queue-full past the next to send (JobPace::
 // overrideCeiling; XM scales speeds, so a stretch the plan paced to the wire at 100 % runs dry
 // above it): lowered at once, raised again two steps of 5 % up, the operator's XM again when
-// the job ends; what it holds shows in MachineState::overrideCeilingPercent. Without XM (a GVE64
+// the job ends; what it holds shows in MachineState::overrideHeldPercent(). Without XM (a GVE64
 // before v19) XU/XD change only the queued speeds, so the job streams every later V times
 // speedScale(). Estimates only decide how fast, never where: the path is the plan's.
 

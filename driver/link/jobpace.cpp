@@ -170,10 +170,10 @@ int JobPace::overrideCeiling() const
 
 std::int64_t JobPace::plannedSpeedNow() const
 {
-    const std::size_t from = std::min(m_cursor.exec, m_program.commands.size());
-    for (std::size_t i = from + 1; i-- > 0;) {
-        if (i < m_program.commands.size() && m_program.commands[i].op == machine::UnitOp::Speed)
-            return m_program.commands[i].value;
+    const auto &cmds = m_program.commands;
+    for (std::size_t i = std::min(m_cursor.exec + 1, cmds.size()); i-- > 0;) {
+        if (cmds[i].op == machine::UnitOp::Speed)
+            return cmds[i].value;
     }
     return 0;
 }

@@ -130,9 +130,10 @@ void LinkEngine::beginTransaction(double now)
         transmitMain(now);
         return;
     }
-    // Without the unit's index a lost reply could not be resolved: learn it first.
+    // Without the unit's index a lost reply could not be resolved: learn it first (routine, not a
+    // recovery: logged as sent).
     m_presync = true;
-    sendAux(cmd::index(), State::AwaitIndex, now);
+    sendAux(cmd::index(), State::AwaitIndex, now, LinkLogKind::Sent);
 }
 
 void LinkEngine::transmitMain(double now)
@@ -148,14 +149,12 @@ void LinkEngine::transmitMain(double now)
     m_deadline = now + timeoutFor(mainCommand(), m_wire.size(), now);
 }
 
-void LinkEngine::sendAux(const Command &c, State next, double now)
+void LinkEngine::sendAux(const Command &c, State next, double now, LinkLogKind kind)
 {
     const std::string bytes = encode(c, m_checksums);
     m_out += bytes;
     m_stats.bytesOut += static_cast<std::int64_t>(bytes.size());
-    // Learning the index before the first command is routine, not a recovery: logged as sent.
-    log(m_presync && m_state != State::Settle ? LinkLogKind::Sent : LinkLogKind::Recovery,
-        encodeBody(c));
+    log(kind, encodeBody(c));
     m_state = next;
     m_deadline = now + timeoutFor(c, bytes.size(), now);
 }
@@ -269,16 +268,14 @@ void LinkEngine::onIndexReply(const Line &line, double now)
         return;
     }
     const int unitIndex = static_cast<int>(*reply->decimal());
-    if (m_presync)
-        log(LinkLogKind::Received, line.text);
-    else
-        log(LinkLogKind::Recovery, "index " + std::to_string(unitIndex));
     if (m_presync) {
+        log(LinkLogKind::Received, line.text);
         m_presync = false;
         m_index = m_indexBefore = unitIndex;
         transmitMain(now);
         return;
     }
+    log(LinkLogKind::Recovery, "index " + std::to_string(unitIndex));
     if (!m_indexBefore) {
         // We did not know the index before this transaction: we cannot tell whether it
         // arrived. Learn it and report the transaction failed (the caller decides).

@@ -156,7 +156,8 @@ private:
 
     void beginTransaction(double now);
     void transmitMain(double now);
-    void sendAux(const protocol::Command &c, State next, double now);
+    void sendAux(const protocol::Command &c, State next, double now,
+                 LinkLogKind kind = LinkLogKind::Recovery);
     void handleLine(const protocol::Line &line, double now);
     void onMainReply(const protocol::Line &line, double now);
     void onIndexReply(const protocol::Line &line, double now);

@@ -3,6 +3,8 @@
 
 #include "machinestate.h"
 
+#include <cmath>
+#include <cstdio>
 #include <tuple>
 
 namespace frezka::driver {
@@ -40,10 +42,12 @@ bool noteOutputsAccepted(MachineState &state, const protocol::Command &c,
                          const machine::MachineConfig &config)
 {
     using protocol::Op;
-    const auto was = std::make_tuple(state.outputs, state.spindlePermille, state.spindleOn);
-    const auto changed = [&] {
-        return was != std::make_tuple(state.outputs, state.spindlePermille, state.spindleOn);
+    const auto now = [&] {
+        return std::make_tuple(state.outputs, state.spindlePermille, state.spindleOn,
+                               state.overrideSentPercent);
     };
+    const auto was = now();
+    const auto changed = [&] { return was != now(); };
     if (c.op == Op::Multiplier)
         state.overrideSentPercent = static_cast<int>(c.args[0]);
     if (c.op == Op::SpindleSpeed && c.address == 7) {
@@ -69,6 +73,24 @@ bool noteOutputsAccepted(MachineState &state, const protocol::Command &c,
         state.spindleOn = state.spindlePermille > 0 && !(state.outputs & 0x01);
     }
     return changed();
+}
+
+namespace {
+// A value as the unit shows it: a byte in two hex digits, a number without trailing zeros.
+std::string valueText(machine::EepromKind kind, double value)
+{
+    if (kind != machine::EepromKind::Byte)
+        return numberText(value);
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "%02X", static_cast<unsigned>(std::lround(value)) & 0xFFu);
+    return hex;
+}
+} // namespace
+
+std::string EepromDifference::text() const
+{
+    return entry.what + ": unit " + valueText(entry.kind, unitValue) + ", profile " +
+           valueText(entry.kind, entry.value);
 }
 
 std::uint16_t MachineState::inputLevels() const

@@ -60,13 +60,14 @@ enum class MachineActivity : std::uint8_t {
 const char *machineActivityName(MachineActivity activity);
 
 // A setting whose EEPROM value in the unit differs from the profile's: the entry (address, kind,
-// the profile's value, its English name), the unit's value, and the English line for the log
-// ("steps per mm X: unit 200, profile 400"; bytes in hex: "polarity: unit 00, profile 5A").
+// the profile's value, its English name) and the unit's value.
 struct EepromDifference
 {
     machine::EepromEntry entry;
     double unitValue = 0;
-    std::string text;
+    // The English line for the log: "steps per mm X: unit 200, profile 400"; bytes in hex as the
+    // unit shows them: "polarity: unit 00, profile 5A".
+    std::string text() const;
     friend bool operator==(const EepromDifference &, const EepromDifference &) = default;
 };
 
@@ -143,10 +144,13 @@ struct MachineState
     bool spindleOn = false;    // the spindle turns: !7V > 0 with OUT0 on, or the GVE84's relay on
     bool outputsHeld = false;  // a hold switched the spindle / coolant off: they go on again first
     int overridePercent = 100; // the operator's feed override (XM asked for)
-    // While a job streams: the override the unit runs because the link cannot feed the operator's
-    // over the unit's queue and the next packets (0 = the operator's; issue 14 item 5).
-    int overrideCeilingPercent = 0;
-    int overrideSentPercent = 100; // the last XM the unit accepted
+    int overrideSentPercent = 100; // the last XM sent to the unit (JobOverride, the connect)
+    // The override the unit runs where it is below the operator's: while a job streams, what the
+    // link can feed (JobOverride; issue 14 item 5); 0 = the operator's.
+    int overrideHeldPercent() const
+    {
+        return overrideSentPercent < overridePercent ? overrideSentPercent : 0;
+    }
     bool mpgOn = false;
 
     // job

@@ -85,11 +85,10 @@ std::optional<MachineError> UnitControls::setOverride(int percent)
                    : refusal(DriverCode::NoOverride);
     // During a job the unit runs it only as far as the link can feed it (JobOverride::follow).
     const int sent = m_job.feedOverride().toSend(percent, m_job.active());
-    m_host.send(cmd::multiplier(sent), [this, percent, sent](const Outcome &o) {
+    m_host.send(cmd::multiplier(sent), [this, percent](const Outcome &o) {
         if (m_host.unitError(o, "setting the feed override (XM)", MachineMode::Alarm))
             return;
         state().overridePercent = percent;
-        state().overrideCeilingPercent = sent < percent ? sent : 0;
         m_host.markDirty();
     });
     return std::nullopt;

@@ -223,13 +223,13 @@ private slots:
         slider->setValue(200);
         emit slider->sliderReleased();
         QTRY_COMPARE_WITH_TIMEOUT(state().overridePercent, 200, 10000);
-        QTRY_VERIFY_WITH_TIMEOUT(state().overrideCeilingPercent > 0, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(state().overrideHeldPercent() > 0, 10000);
         QLabel *value = nullptr;
         for (QLabel *l : m_window->outputsPanel()->findChildren<QLabel *>())
             value = l->text().startsWith(QStringLiteral("200 %")) ? l : value;
         QVERIFY(value);
         QTRY_VERIFY_WITH_TIMEOUT(value->text().contains(QStringLiteral("runs")), 5000);
-        QVERIFY2(value->text().contains(QString::number(state().overrideCeilingPercent)),
+        QVERIFY2(value->text().contains(QString::number(state().overrideHeldPercent())),
                  qPrintable(value->text()));
         QVERIFY(value->toolTip().contains(QStringLiteral("serial link")));
         QVERIFY(finished.wait(120000));

@@ -7,6 +7,7 @@
 
 #include <QByteArray>
 #include <QFile>
+#include <QProcess>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -35,6 +36,20 @@ inline bool openAndWait(MainWindow *window, const QString &path)
 inline QPushButton *button(QWidget *parent, const char *name)
 {
     return parent->findChild<QPushButton *>(QLatin1String(name));
+}
+
+// What gve-emu has received so far: the "pc>" lines of its --verbose log on stderr (read into
+// `log` as they come), joined.
+inline QByteArray emulatorReceived(QProcess &emu, QByteArray &log)
+{
+    log += emu.readAllStandardError();
+    QByteArray in;
+    for (const QByteArray &line : log.split('\n')) {
+        const auto at = line.indexOf(" pc> ");
+        if (at >= 0)
+            in += line.mid(at + 5).replace("\\r", "\r");
+    }
+    return in;
 }
 
 } // namespace frezka::gui::test

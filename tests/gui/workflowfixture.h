@@ -111,17 +111,7 @@ protected:
     }
 
     // What gve-emu received on its pty ("pc>" lines of --verbose), joined.
-    QByteArray emulatorReceived()
-    {
-        m_emuLog += m_emu.readAllStandardError();
-        QByteArray in;
-        for (const QByteArray &line : m_emuLog.split('\n')) {
-            const int at = line.indexOf(" pc> ");
-            if (at >= 0)
-                in += line.mid(at + 5).replace("\\r", "\r");
-        }
-        return in;
-    }
+    QByteArray emulatorReceived() { return test::emulatorReceived(m_emu, m_emuLog); }
 
     bool homedMarksShown(std::uint8_t axes) const
     {

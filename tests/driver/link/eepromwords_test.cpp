@@ -24,7 +24,7 @@ TEST(EepromWords, DifferencesInPlainNumbers)
     for (const EepromDifference &d : differences) {
         const bool isByte = d.entry.kind == machine::EepromKind::Byte;
         sawByte = sawByte || isByte;
-        EXPECT_TRUE(std::regex_match(d.text, isByte ? byte : plain)) << d.text;
+        EXPECT_TRUE(std::regex_match(d.text(), isByte ? byte : plain)) << d.text();
     }
     EXPECT_TRUE(sawByte) << "the emulator's defaults differ in a byte too";
 }

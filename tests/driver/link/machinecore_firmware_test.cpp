@@ -16,7 +16,7 @@ TEST(MachineCore, BuiltInEmulatorHoldsTheProfilesEeprom)
         Sim sim(v, {}, {}, true);
         ASSERT_TRUE(sim.connect());
         EXPECT_TRUE(sim.core.state().eepromDifferences.empty())
-            << sim.core.state().eepromDifferences.front().text;
+            << sim.core.state().eepromDifferences.front().text();
     }
 }
 
@@ -32,7 +32,7 @@ TEST(MachineCore, EepromComparedOnConnectWrittenOnlyWhenAsked)
     ASSERT_FALSE(sim.core.writeEeprom(sim.runner.now()));
     sim.runner.runFor(2.0);
     EXPECT_TRUE(sim.core.state().eepromDifferences.empty())
-        << sim.core.state().eepromDifferences.front().text;
+        << sim.core.state().eepromDifferences.front().text();
     EXPECT_TRUE(sim.errors.empty()) << sim.errors.front().message;
 }
 
@@ -143,7 +143,7 @@ TEST(MachineCore, Gve114FastBaudRangeIsCheckedAndWrittenWhenAsked)
     EXPECT_EQ(sim.port.unit().eepromByte(0x0D), 0xFF);
     bool named = false;
     for (const EepromDifference &d : sim.core.state().eepromDifferences)
-        named = named || d.text.find("baud range") != std::string::npos;
+        named = named || d.text().find("baud range") != std::string::npos;
     EXPECT_TRUE(named) << sim.lastLog();
     ASSERT_FALSE(sim.core.writeEeprom(sim.runner.now()));
     sim.runner.runFor(2.0);
