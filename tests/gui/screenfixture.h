@@ -98,10 +98,10 @@ protected:
     }
 
     // gve-emu on a pty of its own (started once), with a firmware text the built-in emulator
-    // does not have; its path, empty when it cannot be started (QSKIP then).
+    // does not have; its path, or empty with m_emuError saying why it could not be started (a
+    // failure: gve-emu is built with every tree).
     QString ptyUnit()
     {
-#ifdef FREZKA_GVE_EMU
         if (m_pty.isEmpty()) {
             m_emu.setProgram(QStringLiteral(FREZKA_GVE_EMU));
             m_emu.setArguments({QStringLiteral("--variant"), QStringLiteral("gve64"),
@@ -109,26 +109,18 @@ protected:
                                 QStringLiteral("--verbose")});
             m_emu.start();
             if (!m_emu.waitForStarted() ||
-                !QTest::qWaitFor([this] { return m_emu.canReadLine(); }, 10000))
+                !QTest::qWaitFor([this] { return m_emu.canReadLine(); }, 10000)) {
+                m_emuError = QStringLiteral("gve-emu (%1) did not start: %2")
+                                 .arg(QStringLiteral(FREZKA_GVE_EMU), m_emu.errorString());
                 return {};
+            }
             m_pty = QString::fromLocal8Bit(m_emu.readLine()).trimmed();
         }
-#endif
         return m_pty;
     }
 
     // What gve-emu has received so far ("pc>" lines of its --verbose log), joined.
-    QByteArray ptyReceived()
-    {
-        m_emuLog += m_emu.readAllStandardError();
-        QByteArray in;
-        for (const QByteArray &line : m_emuLog.split('\n')) {
-            const int at = int(line.indexOf(" pc> "));
-            if (at >= 0)
-                in += line.mid(at + 5).replace("\\r", "\r");
-        }
-        return in;
-    }
+    QByteArray ptyReceived() { return test::emulatorReceived(m_emu, m_emuLog); }
 
     bool connectedTo(const QString &port) const
     {
@@ -190,5 +182,6 @@ protected:
     std::unique_ptr<MainWindow> m_window;
     QProcess m_emu;      // gve-emu, once a test asks for the pty unit
     QString m_pty;       // its pty
+    QString m_emuError;  // why it could not be started
     QByteArray m_emuLog; // its --verbose log read so far
 };
