@@ -168,9 +168,9 @@ TEST(MachineCore, AnOverrideTheLinkCannotFeedIsHeldToWhatItCan)
     while (sim.finished.empty() && sim.runner.now() < 120) {
         const driver::MachineState &s = sim.core.state();
         EXPECT_EQ(s.overridePercent, 200) << "the operator's word is kept";
-        if (s.overrideCeilingPercent > 0) {
-            lowest = lowest ? std::min(lowest, s.overrideCeilingPercent) : s.overrideCeilingPercent;
-            highest = std::max(highest, s.overrideCeilingPercent);
+        if (s.overrideHeldPercent() > 0) {
+            lowest = lowest ? std::min(lowest, s.overrideHeldPercent()) : s.overrideHeldPercent();
+            highest = std::max(highest, s.overrideHeldPercent());
         }
         sim.runner.runFor(0.05);
     }
@@ -188,10 +188,41 @@ TEST(MachineCore, AnOverrideTheLinkCannotFeedIsHeldToWhatItCan)
     EXPECT_LE(xm.size(), 8u) << "XM follows the ceiling without a command storm";
     sim.runner.runFor(0.5);
     EXPECT_EQ(tap.matching("!0XM", before).back(), "!0XM200") << "the operator's XM after the job";
-    EXPECT_EQ(sim.core.state().overrideCeilingPercent, 0);
+    EXPECT_EQ(sim.core.state().overrideHeldPercent(), 0);
     EXPECT_EQ(sim.port.unit().stats().motion.starvationStops, 0);
     EXPECT_EQ(sim.port.unit().stats().motion.brakeViolations, 0);
     EXPECT_EQ(sim.port.unit().position()[0], program.commands.back().endSteps[0]);
+}
+
+// Connecting sends the XM the window shows: a unit whose multiplier was changed behind the
+// window's back (another program, a console XM, a reset to XM100) runs the operator's 150 % again,
+// not what it had while the slider says 150. Read from the wire and from the emulator's speed.
+TEST(MachineCore, ConnectingSendsTheOverrideShown)
+{
+    Sim sim;
+    WireTap tap(sim.port);
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    ASSERT_FALSE(sim.core.setOverride(150, sim.runner.now()));
+    ASSERT_TRUE(sim.runner.runUntil([&] { return sim.core.state().overridePercent == 150; }, 5));
+    ASSERT_FALSE(sim.core.sendRaw("XM100", sim.runner.now()));
+    sim.runner.runFor(0.2);
+    sim.runner.unplug("cable pulled");
+    const std::size_t before = tap.size();
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    EXPECT_EQ(tap.matching("!0XM", before), std::vector<std::string>{"!0XM150"});
+    EXPECT_EQ(sim.core.state().overridePercent, 150);
+    ProgramBuilder b(3); // long X vectors at V3000: they cruise at V times the multiplier
+    b.add(machine::UnitOp::Accel, 200);
+    b.add(machine::UnitOp::Speed, 3000);
+    b.add(machine::UnitOp::Brake, 3000);
+    for (int i = 0; i < 4; ++i)
+        b.add(machine::UnitOp::Vector, 0, {6000, 0, 0, 0}, static_cast<std::uint32_t>(10 + i));
+    b.add(machine::UnitOp::ProgramEnd, 0);
+    ASSERT_FALSE(sim.core.run(b.program, sim.runner.now()));
+    sim.runner.runFor(1.0);
+    EXPECT_NEAR(xRate(sim, 1.0), 4500, 150) << "the unit runs 150 %";
+    ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 60)) << sim.lastLog();
+    EXPECT_TRUE(sim.finished.front());
 }
 
 // With XM the ± steps are exact multipliers (1/16 each way) that stay within the slider's range.
