@@ -106,8 +106,8 @@ namespace {
     QT_TRANSLATE_NOOP("frezka::driver", "no reply to recovery query"),
     QT_TRANSLATE_NOOP("frezka::driver", "line %1"),
     // refusals' reasons
-    QT_TRANSLATE_NOOP("frezka::driver", "no planned speed where the tool stands"), QT_TRANSLATE_NOOP("frezka::driver", "no reply"),
-    QT_TRANSLATE_NOOP("frezka::driver", "setup")};
+    QT_TRANSLATE_NOOP("frezka::driver", "no planned speed where the tool stands"),
+    QT_TRANSLATE_NOOP("frezka::driver", "no reply"), QT_TRANSLATE_NOOP("frezka::driver", "setup")};
 
 // %1 .. %9 replaced by the arguments (a missing one by nothing), left to right.
 std::string fill(const std::string &pattern, const std::vector<std::string> &args)
