@@ -312,10 +312,10 @@ RandomJob drawJob(std::uint64_t seed, int maxLines)
     // Drawn last, so that the program, the profile and the link of a seed stay as they were.
     if (std::uniform_int_distribution<int>(0, 3)(rng) == 0)
         job.overridePercent = std::uniform_int_distribution<int>(10, 40)(rng) * 5;
-    job.summary = describe(job.config, job.wire) + ", " + std::to_string(w.count()) + " lines" +
-                  (job.overridePercent != 100
-                       ? ", override " + std::to_string(job.overridePercent) + " %"
-                       : std::string());
+    job.summary =
+        describe(job.config, job.wire) + ", " + std::to_string(w.count()) + " lines" +
+        (job.overridePercent != 100 ? ", override " + std::to_string(job.overridePercent) + " %"
+                                    : std::string());
     return job;
 }
 

@@ -34,8 +34,8 @@ struct RandomJob
     std::uint64_t seed = 0;
     MachineConfig config; // link.baud/latencyMs/packets as the wire below
     driver::WireOptions wire;
-    std::string program; // G-code text
-    std::string summary; // one line: what was drawn
+    std::string program;       // G-code text
+    std::string summary;       // one line: what was drawn
     int overridePercent = 100; // the operator's feed override (XM), set before the run (drawn)
 };
 
