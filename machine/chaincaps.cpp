@@ -76,20 +76,27 @@ void RunPlanner::vertexCaps(std::size_t k)
     m_capUnits[k] = static_cast<std::int64_t>(floorUnits(units));
 }
 
-// The bound's cap at the vertex after move k: the same limits on a continuous path speed.
+// The bound's cap at the vertex after move k: the same limits on a continuous speed in the
+// unit's own speed units (the scalar the unit carries across a vertex), without the plan's
+// integers, its V sharing or its flattening (docs/planner.md §7).
 void RunPlanner::boundCap(std::size_t k)
 {
     const Derived &a = m_d[k];
     const Derived &b = m_d[k + 1];
     double jd = 0, curv = 0;
     pathCaps(k, a.uPath, b.uPath, jd, curv);
-    double mm = std::min({a.vMm, b.vMm, jd, curv});
+    double units = std::min({a.vMm * a.f, b.vMm * b.f, std::min(jd, curv) * std::min(a.f, b.f)});
     for (int i = 0; i < 4; ++i) {
-        const double per = std::abs(a.uStep[i] - b.uStep[i]);
+        const double per = jumpPerUnit(k, i);
         if (per > 1e-15)
-            mm = std::min(mm, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
+            units = std::min(units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
     }
-    m_capMm[k] = mm;
+    // The unit moves at 10 pulses/s at least: a corner whose geometric caps lie below that is
+    // passed at that speed where the jump limits allow it, by any plan (planOnce's soft stop);
+    // a crawl below it is no plan this unit can run (property seed 72 lay 8 % above the plan).
+    if (units < kMinSpeed && softStopAllowed(k))
+        units = kMinSpeed;
+    m_capBound[k] = units;
 }
 
 // True when passing the vertex after move k at the smallest speed (10 pulses/s) keeps every

@@ -105,7 +105,7 @@ void RunPlanner::planOnce()
     wirePace();
     const std::size_t n = m_moves.size();
     m_capUnits.assign(n, 0);
-    m_capMm.assign(n, 0);
+    m_capBound.assign(n, 0);
     for (std::size_t k = 0; k + 1 < n; ++k)
         vertexCaps(k);
     flattenTightCaps();
@@ -245,11 +245,14 @@ void RunPlanner::windowedPasses(std::size_t first, std::vector<std::int64_t> &b)
     }
 }
 
-// Continuous backward/forward passes in mm/s with the bound's caps; closed-form times. The
-// acceleration is each segment's own limit as the unit can take it: A is whole thousands of
-// pulses/s², so an axis at 17 steps/mm and 59 mm/s² gets A 0.99 -> at least 1, and one that
-// allows A 1.9 gets 1 (no plan can do better; property seed 5 was 8 % above a bound that
-// took the fractions).
+// Continuous backward/forward passes over the bound's caps; closed-form times. The speed is
+// the unit's own scalar (speed units: VK step length, VN major-axis steps, per second), which
+// the unit carries across a vertex whatever the two vectors' units per mm: a continuous speed
+// in mm is not what it can do with unequal axis scales (property seed 127: such a "bound" lay
+// 31 % above the plan the unit ran). The acceleration is each segment's own limit as the unit
+// can take it: A is whole thousands of pulses/s², so an axis at 17 steps/mm and 59 mm/s² gets
+// A 0.99 -> at least 1, and one that allows A 1.9 gets 1 (no plan can do better; property seed
+// 5 was 8 % above a bound that took the fractions).
 void RunPlanner::bound()
 {
     const std::size_t n = m_moves.size();
@@ -258,21 +261,20 @@ void RunPlanner::bound()
     std::vector<double> a(n);
     for (std::size_t k = 0; k < n; ++k) {
         const Derived &r = m_d[k];
-        const double whole = std::clamp(std::floor(r.aMm * r.f / 1000.0 + 1e-9), 1.0,
-                                        static_cast<double>(kMaxAccel));
-        a[k] = whole * 1000.0 / r.f;
+        a[k] = 1000.0 * std::clamp(std::floor(r.aMm * r.f / 1000.0 + 1e-9), 1.0,
+                                   static_cast<double>(kMaxAccel));
     }
-    std::vector<double> x(m_capMm);
+    std::vector<double> x(m_capBound);
     x[n - 1] = 0;
     for (std::size_t k = n - 1; k > 0; --k) {
-        const double entry = std::sqrt(x[k] * x[k] + 2 * a[k] * m_d[k].lengthMm);
+        const double entry = std::sqrt(x[k] * x[k] + 2 * a[k] * m_d[k].units);
         x[k - 1] = std::min(x[k - 1], entry);
     }
     double e = 0;
     for (std::size_t k = 0; k < n; ++k) {
         const Derived &r = m_d[k];
-        x[k] = std::min(x[k], std::sqrt(e * e + 2 * a[k] * r.lengthMm));
-        m_out.boundS += runVector(e, r.vMm, x[k], a[k], r.lengthMm).timeS;
+        x[k] = std::min(x[k], std::sqrt(e * e + 2 * a[k] * r.units));
+        m_out.boundS += runVector(e, r.vMm * r.f, x[k], a[k], r.units).timeS;
         e = x[k];
     }
 }

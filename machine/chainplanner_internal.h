@@ -72,7 +72,7 @@ private:
     std::uint32_t m_lastCappedLine = 0;
     std::vector<double> m_extraS; // link time of the B, V, A commands before move k (last plan)
     std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
-    std::vector<double> m_capMm;          // the bound's cap there, mm/s
+    std::vector<double> m_capBound;       // the bound's cap there, speed units
     RunOutcome m_out;
 };
 

@@ -84,7 +84,8 @@ gcode::Toolpath randomPath(std::mt19937 &rng)
 // Safety on every machine; time-optimality (1.02 of the bound) where the axes share one scale.
 // With different scales the unit's one speed scalar, carried from vector to vector, changes
 // the path speed at every vertex by the ratio of the two vectors' steps per mm, and the plan
-// must slow down for that (docs/planner.md §6): measured up to 7 % above the bound here.
+// must slow down for that (docs/planner.md §6): measured up to 5.3 % above the bound here (the
+// bound in the unit's own speed units, §7). On every machine no plan beats the bound.
 void checkSeeds(bool equalScales)
 {
     for (unsigned seed = 1; seed <= 40; ++seed) {
@@ -110,6 +111,7 @@ void checkSeeds(bool equalScales)
         // The emulator here is fed without a link: the plan's model without the link's rests.
         EXPECT_NEAR(run.jobS + r.stats.linkWaitS, r.stats.estimatedS, 1e-6 * run.jobS)
             << "seed " << seed;
+        EXPECT_GE(r.stats.estimatedS, r.stats.boundS) << "seed " << seed;
         if (equalScales)
             EXPECT_LE(run.jobS + r.stats.linkWaitS, 1.02 * r.stats.boundS) << "seed " << seed;
     }

@@ -338,8 +338,10 @@ void judgePlan(const PlanResult &p, JobOutcome &o)
                     std::to_string(s.maxJumpRatio) + " x)");
     if (s.brakeViolations > 0)
         fail(o, std::to_string(s.brakeViolations) + " brake violations in the plan's model");
+    // The bound is a lower bound of any plan this unit can run (docs/planner.md §7): an estimate
+    // below it is a plan faster than the machine's limits allow, or a wrong bound.
     if (s.estimatedS < s.boundS * (1 - 1e-9))
-        slow(o, "estimate " + std::to_string(s.estimatedS) + " s below the bound " +
+        fail(o, "estimate " + std::to_string(s.estimatedS) + " s below the bound " +
                     std::to_string(s.boundS) + " s");
     else if (s.estimatedS > 1.02 * s.boundS)
         slow(o, "estimate " + std::to_string(s.estimatedS) + " s more than 1.02 x the bound " +

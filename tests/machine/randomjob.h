@@ -58,10 +58,12 @@ struct JobOutcome
     std::int64_t pathFaults = 0;
     double resendShare = 0; // resent commands / commands sent in the job
     // What broke, in two groups. wrong: the job ended somewhere the program does not (counters,
-    // a vector run twice or never), or the plan breaks a limit of the machine: never acceptable.
-    // pace: the link did not keep the unit fed (starvation stops and the brake violations they
-    // cause), the job took more than 2 % longer or shorter than the estimate, or the estimate is
-    // below the bound; a job that stopped with a named error (safe, resumable).
+    // a vector run twice or never), the plan breaks a limit of the machine, or its estimate lies
+    // below the time-optimal bound (a plan faster than the limits allow, or a wrong bound): never
+    // acceptable. pace: the link did not keep the unit fed (starvation stops and the brake
+    // violations they cause), the job took more than 2 % longer or shorter than the estimate, or
+    // the estimate is more than 1.02 x the bound; a job that stopped with a named error (safe,
+    // resumable).
     std::vector<std::string> wrong;
     std::vector<std::string> pace;
     bool ok() const { return wrong.empty() && pace.empty(); }

@@ -8,6 +8,8 @@
 //   stream_soak [CASES (default 3000)] [FIRST_SEED (default 1)] [MAX_LINES (default 1200)]
 //   stream_soak --one PROGRAM.nc PROFILE.json   one given job (the profile's baud, latency,
 //                                                packets) on a clean link
+//   stream_soak --dump SEED MAX_LINES DIR       writes that case's program and profile (its link
+//                                                in link.baud/latencyMs/packets) to DIR/seed-N.*
 //   STREAM_SOAK_VERBOSE=1 also lists every case off the link's pace (else only those that
 //   stopped with an error on a clean link, which it must never do).
 #include "randomjob.h"
@@ -52,12 +54,28 @@ int runOne(const char *programPath, const char *profilePath)
     return o.wrong.empty() ? 0 : 1;
 }
 
+// Writes one drawn case as files that --one (or frezka-cli) can take.
+int dumpOne(std::uint64_t seed, int maxLines, const std::string &dir)
+{
+    RandomJob job = drawJob(seed, maxLines);
+    job.config.link.baud = job.wire.baud;
+    job.config.link.latencyMs = job.wire.latencyS * 1000.0;
+    const std::string base = dir + "/seed-" + std::to_string(seed);
+    std::ofstream(base + ".nc") << job.program;
+    frezka::machine::saveMachineConfig(job.config, base + ".json");
+    std::printf("%s\n%s.nc %s.json (byte error rate %g, override %d %%)\n", job.summary.c_str(),
+                base.c_str(), base.c_str(), job.wire.byteErrorRate, job.overridePercent);
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
 {
     if (argc == 4 && std::string(argv[1]) == "--one")
         return runOne(argv[2], argv[3]);
+    if (argc == 5 && std::string(argv[1]) == "--dump")
+        return dumpOne(std::strtoull(argv[2], nullptr, 10), std::atoi(argv[3]), argv[4]);
     const long cases = argc > 1 ? std::atol(argv[1]) : 3000;
     const long first = argc > 2 ? std::atol(argv[2]) : 1;
     const int maxLines = argc > 3 ? std::atoi(argv[3]) : 1200;
