@@ -7,7 +7,7 @@
 
 namespace frezka::gui {
 namespace {
-constexpr int kInputBits[] = {0, 1, 2, 3, 4, 5, 6, 7, 14, 15};
+constexpr int kInputs[] = {0, 1, 2, 3, 4, 5, 6, 7, 14, 15}; // the inputs' numbers (INn)
 }
 
 // The status bar holds the connection, the unit and the state before this strip: at 1366 px the
@@ -25,9 +25,9 @@ IoPanel::IoPanel(QWidget *parent)
     row->addWidget(m_inta);
     row->addSpacing(6);
     row->addWidget(new QLabel(QStringLiteral("IN"), this));
-    for (int bit : kInputBits) {
-        auto *led = new LedWidget(QString::number(bit), QColor(250, 200, 40), this);
-        led->setToolTip(QStringLiteral("IN%1").arg(bit));
+    for (int n : kInputs) {
+        auto *led = new LedWidget(QString::number(n), QColor(250, 200, 40), this);
+        led->setToolTip(QStringLiteral("IN%1").arg(n));
         m_inputs.push_back(led);
         row->addWidget(led);
     }
@@ -41,12 +41,13 @@ IoPanel::IoPanel(QWidget *parent)
     }
 }
 
-void IoPanel::setIo(std::uint16_t inputs, std::uint8_t outputs, bool run, bool inta)
+void IoPanel::setIo(const std::function<bool(int)> &inputOn,
+                    const std::function<bool(int)> &outputOn, bool run, bool inta)
 {
     for (std::size_t i = 0; i < m_inputs.size(); ++i)
-        m_inputs[i]->setOn(inputs & (1u << kInputBits[i]));
+        m_inputs[i]->setOn(inputOn(kInputs[i]));
     for (std::size_t i = 0; i < m_outputs.size(); ++i)
-        m_outputs[i]->setOn(outputs & (1u << i));
+        m_outputs[i]->setOn(outputOn(int(i)));
     m_run->setOn(run);
     m_inta->setOn(inta);
 }
@@ -63,7 +64,7 @@ void IoPanel::setRelayCount(int count)
 bool IoPanel::inputLed(int n) const
 {
     for (std::size_t i = 0; i < m_inputs.size(); ++i) {
-        if (kInputBits[i] == n)
+        if (kInputs[i] == n)
             return m_inputs[i]->isOn();
     }
     return false;

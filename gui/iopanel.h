@@ -3,7 +3,7 @@
 
 #include <QWidget>
 
-#include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace frezka::gui {
@@ -16,8 +16,10 @@ class IoPanel : public QWidget
 
 public:
     explicit IoPanel(QWidget *parent = nullptr);
-    // inputs: bit n = INn active (n = 0..15); outputs: bit n = OUTn on (n = 0..3).
-    void setIo(std::uint16_t inputs, std::uint8_t outputs, bool run, bool inta);
+    // Lights each input INn (n = 0..7, 14, 15) as inputOn(n) says and each output OUTn
+    // (n = 0..3) as outputOn(n) says (the machine state's logical I/O: no port bits here).
+    void setIo(const std::function<bool(int)> &inputOn, const std::function<bool(int)> &outputOn,
+               bool run, bool inta);
     void setRelayCount(int count); // GVE84: 1 relay, GVE64/114: 4 outputs
     bool inputLed(int n) const;
     bool outputLed(int n) const;

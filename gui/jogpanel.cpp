@@ -170,9 +170,9 @@ void JogPanel::setMpgOn(bool on)
     m_mpg->setChecked(on);
 }
 
-void JogPanel::setHomedAxes(std::uint8_t homedAxes, bool connected)
+void JogPanel::setHomedAxes(const std::array<bool, 4> &homed, bool connected)
 {
-    m_homedAxes = homedAxes;
+    m_homed = homed;
     m_connected = connected;
     showLimits();
 }
@@ -183,7 +183,7 @@ void JogPanel::showLimits()
 {
     QString axes;
     for (int axis = 0; axis < m_axisCount; ++axis) {
-        if (!((m_homedAxes >> axis) & 1))
+        if (!m_homed[std::size_t(axis)])
             axes += QLatin1Char(kAxes[axis]);
     }
     m_limits->setVisible(m_connected && !axes.isEmpty());

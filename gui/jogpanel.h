@@ -35,7 +35,8 @@ public:
     void setPerAxisHoming(bool available);
     void setMpgOn(bool on);
     // Shows "X Y not homed: soft limits off, slow jog" while connected with axes not homed.
-    void setHomedAxes(std::uint8_t homedAxes, bool connected);
+    // Which axes (X, Y, Z, A) have been homed since connecting.
+    void setHomedAxes(const std::array<bool, 4> &homed, bool connected);
     // Jog as if the button of axis (0..3) in direction (+1/-1) was clicked (keyboard).
     void jogKey(int axis, int direction, bool pressed);
 
@@ -66,7 +67,7 @@ private:
     QLabel *m_feedLabel, *m_stepLabel;
     QCheckBox *m_mpg;
     QLabel *m_limits = nullptr;
-    std::uint8_t m_homedAxes = 0;
+    std::array<bool, 4> m_homed{};
     bool m_connected = false;
     int m_axisCount = 4;
     bool m_perAxisHoming = true;

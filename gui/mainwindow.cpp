@@ -2,16 +2,14 @@
 
 #include "consolewidget.h"
 #include "drowidget.h"
-#include "interpreteradapter.h"
 #include "iopanel.h"
 #include "jogpanel.h"
 #include "language.h"
 #include "loadprogress.h"
 #include "outputspanel.h"
-#include "planneradapter.h"
 #include "profilestore.h"
 #include "programlisting.h"
-#include "programsession.h"
+#include "programview.h"
 #include "runpanel.h"
 #include "settingsdialog.h"
 #include "unitconfigdialog.h"
@@ -57,9 +55,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     buildCentral();
     m_program = new ProgramSession(this);
     m_offsets = new session::WorkOffsets(this);
-    m_program->setMaxSceneSegments(m_view->preferredMaxSegments());
-    m_program->setSceneGlVertices(m_view->usesOpenGl());
-    m_program->setInterpreter(gcodeInterpreter());
+    m_program->setViewBuilder(sceneBuilder(m_view->preferredMaxSegments(), m_view->usesOpenGl()));
 
     buildDocks();
     buildMenus();
@@ -273,7 +269,7 @@ void MainWindow::openDialog()
 void MainWindow::openProgram(const QString &path)
 {
     // The renderer may only now know what it runs on (GL initialises on first show).
-    m_program->setMaxSceneSegments(m_view->preferredMaxSegments());
+    m_program->setViewBuilder(sceneBuilder(m_view->preferredMaxSegments(), m_view->usesOpenGl()));
     m_program->load(path);
 }
 
@@ -316,7 +312,7 @@ void MainWindow::connectProgram()
         m_loadProgress->setVisible(false);
         const LoadedProgram &p = m_program->program();
         m_listing->setText(p.text);
-        m_view->model()->setScene(p.scene);
+        m_view->model()->setScene(sceneOf(p));
         if (p.errors.empty()) { // a good file: the previous file's error is no longer news
             m_lastError.clear();
             statusBar()->clearMessage();
@@ -372,8 +368,9 @@ UnitConfigDialog *MainWindow::openUnitConfig()
 
 void MainWindow::applyProfile(const machine::MachineConfig &config, const QString &path)
 {
-    const bool newLink = m_connectedOnce && (config.link.port != profile().link.port ||
-                                             config.link.baud != profile().link.baud);
+    const bool newLink =
+        m_workflow->connectionAsked() &&
+        (config.link.port != profile().link.port || config.link.baud != profile().link.baud);
     m_workflow->setProfile(config); // the controller's too
     if (newLink) {
         // A new port (or rate) set with Apply is used now, unless a job is on the machine.
@@ -401,7 +398,7 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
         {F::ToolCoverOpen, QT_TR_NOOP("Tool cover")}};
     std::vector<std::pair<QString, machine::OutputFunction>> extra;
     for (const auto &[function, name] : kExtra) {
-        if (machine::outputBit(config, function) != 0) // an output carries it
+        if (machine::outputNumber(config, function) >= 0) // an output carries it
             extra.emplace_back(tr(name), function);
     }
     m_outputs->setExtraOutputs(extra);
@@ -413,7 +410,7 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
         travel.max[i] = float(a.softMaxMm);
     }
     m_view->model()->setTravelBox(travel);
-    m_program->setAnalyser(plannerAnalyser(config));
+    m_program->setProfile(config);
     if (m_unitConfig)
         m_unitConfig->setProfile(config);
     if (!m_program->program().path.isEmpty())
@@ -424,7 +421,7 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
 
 void MainWindow::checkProgramLimits()
 {
-    const auto &scene = m_program->program().scene;
+    const auto scene = sceneOf(m_program->program());
     if (!scene || !scene->bounds.valid) {
         m_view->model()->setBoundsOutsideLimits(false);
         return;

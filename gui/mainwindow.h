@@ -9,7 +9,7 @@
 
 #include "driver/link/machinestate.h"
 #include "machine/machineconfig.h"
-#include "programsession.h"
+#include "programview.h"
 
 #include "session/consolesession.h"
 #include "session/runworkflow.h"
@@ -39,7 +39,6 @@ class JogPanel;
 class LoadProgress;
 class OutputsPanel;
 class ProgramListing;
-class ProgramSession;
 class RunPanel;
 class SpeedPlot;
 class ToolpathView;
@@ -180,7 +179,6 @@ private:
     ActualSpeed m_speed;
     int m_holdLine = 0;
     QString m_holdDetail;
-    bool m_connectedOnce = false; // the first connect may use the port used last
     QString m_lastError;
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;

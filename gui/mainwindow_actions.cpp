@@ -3,7 +3,6 @@
 
 #include "consolewidget.h"
 #include "drowidget.h"
-#include "planneradapter.h"
 #include "speedplot.h"
 #include "toolpathview.h"
 
@@ -55,7 +54,7 @@ void MainWindow::jogStep(int axis, double deltaMm, double feedMmPerMin)
 {
     const auto &st = m_controller->state();
     const auto &a = profile().axes[std::size_t(axis)];
-    const bool homed = ((st.homedAxes >> axis) & 1) != 0;
+    const bool homed = st.axisHomed(axis);
     const machine::JogMove move = machine::jogStep(
         profile(), axis, st.positionSteps[std::size_t(axis)], deltaMm, feedMmPerMin, homed);
     static const char kAxes[] = "XYZA";

@@ -8,7 +8,6 @@
 #include "iopanel.h"
 #include "jogpanel.h"
 #include "outputspanel.h"
-#include "planneradapter.h"
 #include "programlisting.h"
 #include "runpanel.h"
 #include "speedplot.h"
@@ -202,13 +201,13 @@ void MainWindow::connectControls()
     connect(m_outputs, &OutputsPanel::spindleRequested, this,
             [this](bool on, double rpm) { m_controller->setSpindleRpm(on ? rpm : 0.0); });
     auto outputFunction = [this](machine::OutputFunction f, bool on) {
-        const std::uint8_t bit = machine::outputBit(profile(), f);
-        if (!bit) {
+        const int output = machine::outputNumber(profile(), f);
+        if (output < 0) {
             showError(tr("No output of this machine is set up for that function; assign one in "
                          "Settings › Machine profile › Outputs."));
             return;
         }
-        m_controller->setOutputs(bit, on ? bit : 0);
+        m_controller->setOutput(output, on);
     };
     connect(m_outputs, &OutputsPanel::coolantRequested, this,
             [outputFunction](bool on) { outputFunction(machine::OutputFunction::Coolant, on); });
@@ -255,7 +254,8 @@ void MainWindow::connectToUnit()
     // After a restart the port used last (set with Apply, perhaps never saved in the profile)
     // is used again, and the console says so.
     const QString last = settings.value(QStringLiteral("link/port")).toString();
-    if (!m_connectedOnce && !last.isEmpty() && last.toStdString() != config.link.port) {
+    if (!m_workflow->connectionAsked() && !last.isEmpty() &&
+        last.toStdString() != config.link.port) {
         m_console->appendInfo(tr("Using the port used last, %1 (the machine profile says %2).")
                                   .arg(last, QString::fromStdString(config.link.port)));
         config.link.port = last.toStdString();
@@ -264,7 +264,6 @@ void MainWindow::connectToUnit()
         // another port (the saved profile's too) connects that one; the file is not changed.
         m_workflow->setProfile(config);
     }
-    m_connectedOnce = true;
     settings.setValue(QStringLiteral("link/port"), QString::fromStdString(config.link.port));
     settings.setValue(QStringLiteral("link/baud"), config.link.baud);
     m_workflow->setAutoReconnect(
@@ -280,18 +279,20 @@ void MainWindow::disconnectFromUnit()
 void MainWindow::onState(const driver::MachineState &state)
 {
     m_dro->setPositions(state.positionMm, m_offsets->workPosition(state.positionMm));
-    const auto homed = [&state](int axis) { return ((state.homedAxes >> axis) & 1) != 0; };
-    m_dro->setHomed({homed(0), homed(1), homed(2), homed(3)});
+    const std::array<bool, 4> homed{state.axisHomed(0), state.axisHomed(1), state.axisHomed(2),
+                                    state.axisHomed(3)};
+    m_dro->setHomed(homed);
     m_view->model()->setToolPosition(QVector3D(
         float(state.positionMm[0]), float(state.positionMm[1]), float(state.positionMm[2])));
-    // The driver decodes the ports (MachineState::inputLevels, outputsOn, outputOn).
-    m_io->setIo(state.inputLevels(), state.outputsOn(), state.run, state.inta);
+    // The driver decodes the ports (MachineState::inputHigh, outputIsOn, outputOn).
+    m_io->setIo([&state](int n) { return state.inputHigh(n); },
+                [&state](int n) { return state.outputIsOn(n); }, state.run, state.inta);
     m_outputs->showState(state.spindleOn, [&state, this](machine::OutputFunction f) {
         return state.outputOn(profile(), f);
     });
     m_outputs->showFeedOverride(state.overridePercent, state.overrideHeldPercent());
     m_jog->setMpgOn(state.mpgOn);
-    m_jog->setHomedAxes(state.homedAxes, isConnected(state.mode));
+    m_jog->setHomedAxes(homed, isConnected(state.mode));
     m_connection->setText(connectionText(state));
     m_connection->setStyleSheet(isConnected(state.mode) ? QString()
                                                         : QStringLiteral("color: #c00;"));

@@ -6,7 +6,7 @@
 #include "consolewidget.h"
 #include "holdbanner.h"
 #include "programlisting.h"
-#include "programtext.h"
+#include "programview.h"
 #include "runpanel.h"
 #include "speedplot.h"
 #include "toolpathview.h"

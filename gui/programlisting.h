@@ -4,7 +4,7 @@
 // per line (item views keep per-row layout or header data), so a file of millions of lines
 // opens and scrolls at once.
 
-#include "programtext.h"
+#include "programview.h"
 
 #include <QAbstractScrollArea>
 

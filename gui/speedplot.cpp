@@ -9,35 +9,6 @@
 
 namespace frezka::gui {
 
-std::vector<SpeedSample> decimateSpeed(const std::vector<SpeedSample> &in, std::size_t maxPoints)
-{
-    if (in.size() <= maxPoints || maxPoints < 4)
-        return in;
-    std::vector<SpeedSample> out;
-    out.reserve(maxPoints);
-    const std::size_t buckets = maxPoints / 2;
-    const double per = double(in.size()) / double(buckets);
-    for (std::size_t b = 0; b < buckets; ++b) {
-        const auto from = std::size_t(double(b) * per);
-        const auto to = std::min(in.size(), std::size_t(double(b + 1) * per));
-        if (from >= to)
-            continue;
-        auto [lo, hi] = std::minmax_element(in.begin() + long(from), in.begin() + long(to),
-                                            [](const SpeedSample &a, const SpeedSample &c) {
-                                                return a.speedMmPerMin < c.speedMmPerMin;
-                                            });
-        if (lo->distanceMm <= hi->distanceMm) {
-            out.push_back(*lo);
-            if (hi != lo)
-                out.push_back(*hi);
-        } else {
-            out.push_back(*hi);
-            out.push_back(*lo);
-        }
-    }
-    return out;
-}
-
 SpeedPlot::SpeedPlot(QWidget *parent)
     : QWidget(parent)
 {

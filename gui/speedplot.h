@@ -4,6 +4,8 @@
 // at that point so the user sees where the machine slows down and why (corner, arc, short
 // segments, axis limit).
 
+#include "session/plannedspeed.h"
+
 #include <QWidget>
 
 #include <cstdint>
@@ -11,17 +13,7 @@
 
 namespace frezka::gui {
 
-struct SpeedSample
-{
-    double distanceMm = 0;
-    double speedMmPerMin = 0;
-    std::uint32_t line = 0;
-    friend bool operator==(const SpeedSample &, const SpeedSample &) = default;
-};
-
-// Keeps at most maxPoints samples, preserving the minimum and maximum of each bucket so dips
-// stay visible.
-std::vector<SpeedSample> decimateSpeed(const std::vector<SpeedSample> &in, std::size_t maxPoints);
+using session::SpeedSample;
 
 class SpeedPlot : public QWidget
 {

@@ -244,17 +244,29 @@ int wireAxisCount(const MachineConfig &config)
 
 std::uint8_t outputBit(const MachineConfig &config, OutputFunction function)
 {
+    return outputPortBit(config.unit.variant, outputNumber(config, function));
+}
+
+int outputNumber(const MachineConfig &config, OutputFunction function)
+{
     if (function == OutputFunction::Unused)
-        return 0;
-    // Port 0 bits: bit0 OUT0, bit1 OUT3, bit2 OUT1, bit3 OUT2 (§10). GVE84: its relay is bit0.
+        return -1;
     if (config.unit.variant == protocol::Variant::Gve84)
-        return config.outputs.out[0] == function ? 0x01 : 0;
-    static constexpr std::uint8_t bits[3] = {0x04, 0x08, 0x02};
+        return config.outputs.out[0] == function ? 0 : -1;
     for (std::size_t i = 0; i < 3; ++i) {
         if (config.outputs.out[i] == function)
-            return bits[i];
+            return static_cast<int>(i) + 1;
     }
-    return 0;
+    return -1;
+}
+
+std::uint8_t outputPortBit(protocol::Variant variant, int output)
+{
+    // Port 0 bits: bit0 OUT0, bit1 OUT3, bit2 OUT1, bit3 OUT2 (§10). GVE84: its relay is bit0.
+    static constexpr std::uint8_t bits[4] = {0x01, 0x04, 0x08, 0x02};
+    if (output < 0 || output > (variant == protocol::Variant::Gve84 ? 0 : 3))
+        return 0;
+    return bits[output];
 }
 
 } // namespace frezka::machine

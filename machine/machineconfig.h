@@ -213,6 +213,12 @@ int wireAxisCount(const MachineConfig &config);
 // ---- Outputs (docs/gve-protocol.md §10: port 0, active low) ----
 // Bit of port 0 that drives the output carrying the function; 0 when no output carries it.
 std::uint8_t outputBit(const MachineConfig &config, OutputFunction function);
+// The output OUTn (its number n) that carries the function: outputs.out1..out3 are OUT1..OUT3,
+// a GVE84's relay (outputs.out1) is OUT0; -1 when no output carries it.
+int outputNumber(const MachineConfig &config, OutputFunction function);
+// Bit of port 0 that drives output OUTn of the variant (bit0 OUT0, bit1 OUT3, bit2 OUT1, bit3
+// OUT2; a GVE84 has only OUT0, its relay); 0 for an output the unit does not have.
+std::uint8_t outputPortBit(protocol::Variant variant, int output);
 inline constexpr std::uint8_t kSpindleOutputBit = 0x01; // OUT0 (GVE64/114, driven by !7V too)
 
 // ---- EEPROM (docs/gve-protocol.md §12) ----

@@ -163,7 +163,9 @@ bool allowedInPacket(Op op);
 // allowed in a packet or the span is empty (check with validatePacket first).
 std::string encodePacket(std::span<const Command> commands, bool checksums);
 
-// Why a command cannot be sent to a unit (English text from message(); a Qt layer translates).
+// Why a command cannot be sent to a unit: the kind (CommandError, which reply code a unit gives)
+// and exactly what is wrong (CommandProblem with its values), so that a Qt layer words it in the
+// user's language (the driver's code table); `message` is the same in English, for logs.
 enum class CommandError : std::uint8_t {
     None,
     BadAddress,   // address not 0..7, or the command does not exist on that address
@@ -174,13 +176,40 @@ enum class CommandError : std::uint8_t {
     EmptyPacket,
 };
 
+// What CommandCheck's values mean for each problem (command = the body, "!0XM0").
+enum class CommandProblem : std::uint8_t {
+    None,
+    AddressRange,      // the address is not 0..7
+    NoSpindleAddress,  // unit has no address 7 (spindle)
+    NotOnAddress7,     // the command is not one of address 7
+    SpindleOnAddress7, // the spindle speed goes to address 7
+    AddressZeroOnly,   // unit answers on address 0 only
+    ComponentCount,    // value components; unit takes 3 (high: 3) or 3 or 4 (high: 4)
+    ValueOutOfRange,   // argument `what` is `value`, outside low..high
+    NotFinite,         // the value is not a finite number
+    ZeroTravel,        // the travel toward the switch is 0
+    NoSuchAxis,        // unit has no axis `what` (its letter)
+    NoSuchCommand,     // unit has no command `what` (its mnemonic)
+    NotInPacket,       // only C and B belong in a packet
+    EmptyPacket,       // a packet needs at least one command
+};
+
 struct CommandCheck
 {
     CommandError error = CommandError::None;
-    std::string message; // English, names the command and the bad value
+    std::string message; // English, names the command and the bad value (commandProblemText)
+    CommandProblem problem = CommandProblem::None;
+    std::string command; // the command's body ("!0XM0"); empty for an empty packet
+    std::string unit;    // the variant's name, where the problem names it
+    std::string what;    // the argument's English name ("speed"), an axis letter or a mnemonic
+    std::int64_t value = 0, low = 0, high = 0;
     explicit operator bool() const { return error != CommandError::None; }
     friend bool operator==(const CommandCheck &, const CommandCheck &) = default;
 };
+
+// The English text of a check's problem, from its values ("'!0XM0': multiplier (%) 0 is
+// outside 1..2147483647").
+std::string commandProblemText(const CommandCheck &check);
 
 // Checks a command against the variant table before it is sent. maxPulseRate: the unit's
 // ordered maximum (pulses/s); 0 = the highest rate the variant can be ordered with.

@@ -70,7 +70,8 @@ constexpr std::array<Mnemonic, 48> kMnemonics{{
 struct ArgError
 {
     ReplyCode code;
-    std::string message;
+    ParseProblem problem;
+    std::string field; // the parameter it names, if any
 };
 
 class Args
@@ -101,24 +102,24 @@ private:
 std::optional<ArgError> decimal(std::string_view s, std::int64_t &out)
 {
     if (s.empty())
-        return ArgError{ReplyCode::Syntax, "missing number"};
+        return ArgError{ReplyCode::Syntax, ParseProblem::MissingNumber, {}};
     std::string_view d = s.front() == '+' ? s.substr(1) : s;
     auto [ptr, ec] = std::from_chars(d.data(), d.data() + d.size(), out);
     if (ec == std::errc::result_out_of_range)
-        return ArgError{ReplyCode::OutOfRange, "number out of range: " + std::string(s)};
+        return ArgError{ReplyCode::OutOfRange, ParseProblem::NumberTooLarge, std::string(s)};
     if (ec != std::errc() || ptr != d.data() + d.size() || d.empty())
-        return ArgError{ReplyCode::Syntax, "not a decimal number: " + std::string(s)};
+        return ArgError{ReplyCode::Syntax, ParseProblem::NotDecimal, std::string(s)};
     return std::nullopt;
 }
 
 std::optional<ArgError> hex(std::string_view s, std::int64_t &out)
 {
     if (s.empty() || s.size() > 2)
-        return ArgError{ReplyCode::Syntax, "not a hex byte: " + std::string(s)};
+        return ArgError{ReplyCode::Syntax, ParseProblem::NotHexByte, std::string(s)};
     unsigned v = 0;
     auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v, 16);
     if (ec != std::errc() || ptr != s.data() + s.size())
-        return ArgError{ReplyCode::Syntax, "not a hex byte: " + std::string(s)};
+        return ArgError{ReplyCode::Syntax, ParseProblem::NotHexByte, std::string(s)};
     out = v;
     return std::nullopt;
 }
@@ -128,7 +129,7 @@ std::optional<ArgError> real(std::string_view s, double &out)
     std::string_view d = !s.empty() && s.front() == '+' ? s.substr(1) : s;
     auto [ptr, ec] = std::from_chars(d.data(), d.data() + d.size(), out);
     if (d.empty() || ec != std::errc() || ptr != d.data() + d.size())
-        return ArgError{ReplyCode::Syntax, "not a number: " + std::string(s)};
+        return ArgError{ReplyCode::Syntax, ParseProblem::NotANumber, std::string(s)};
     return std::nullopt;
 }
 
@@ -136,7 +137,7 @@ std::optional<ArgError> count(const std::vector<std::string_view> &f, std::size_
                               std::size_t hi)
 {
     if (f.size() < lo || f.size() > hi)
-        return ArgError{ReplyCode::Syntax, "wrong number of parameters"};
+        return ArgError{ReplyCode::Syntax, ParseProblem::ParameterCount, {}};
     return std::nullopt;
 }
 
@@ -214,7 +215,7 @@ std::optional<ArgError> parseArgs(Command &c, std::string_view text)
     case Op::Home: {
         const auto axis = text.empty() ? std::nullopt : axisFrom(text.front());
         if (!axis)
-            return ArgError{ReplyCode::Syntax, "W needs an axis X, Y, Z or A"};
+            return ArgError{ReplyCode::Syntax, ParseProblem::HomeNeedsAxis, {}};
         c.axis = *axis;
         text.remove_prefix(1);
         if (!text.empty() && text.front() == ',') // GVE114 prints it without this comma
@@ -231,7 +232,7 @@ std::optional<ArgError> parseArgs(Command &c, std::string_view text)
         return addressed(c, text, true, false);
     case Op::Output:
         if (text.empty() || text.front() != ',')
-            return ArgError{ReplyCode::Syntax, "O0 needs ',hh'"};
+            return ArgError{ReplyCode::Syntax, ParseProblem::OutputNeedsByte, {}};
         c.argCount = 1;
         return hex(text.substr(1), c.args[0]);
     case Op::StatusRead:
@@ -240,18 +241,22 @@ std::optional<ArgError> parseArgs(Command &c, std::string_view text)
         return addressed(c, text, true, true);
     default:
         if (!text.empty())
-            return ArgError{ReplyCode::Syntax, "unexpected parameters"};
+            return ArgError{ReplyCode::Syntax, ParseProblem::UnexpectedParameters, {}};
         return std::nullopt;
     }
 }
 
-ParsedCommand failure(std::uint8_t address, ReplyCode code, std::string message)
+ParsedCommand failure(std::string_view line, std::uint8_t address, ReplyCode code,
+                      ParseProblem problem, std::string field = {})
 {
     ParsedCommand p;
     p.status = ParseStatus::Error;
     p.address = address;
     p.code = code;
-    p.message = std::move(message);
+    p.problem = problem;
+    p.line = std::string(line);
+    p.field = std::move(field);
+    p.message = parseProblemText(p);
     return p;
 }
 
@@ -259,8 +264,11 @@ ParsedCommand failure(std::uint8_t address, ReplyCode code, std::string message)
 
 ParsedCommand parseCommand(std::string_view line, bool checksums)
 {
-    if (line.size() < 2 || line[0] != '!' || line[1] < '0' || line[1] > '7')
-        return {};
+    if (line.size() < 2 || line[0] != '!' || line[1] < '0' || line[1] > '7') {
+        ParsedCommand p;
+        p.line = std::string(line);
+        return p;
+    }
     const auto address = static_cast<std::uint8_t>(line[1] - '0');
     std::string_view body = line;
     if (checksums) {
@@ -269,7 +277,7 @@ ParsedCommand parseCommand(std::string_view line, bool checksums)
                              ? std::nullopt
                              : parseHexByte(body.substr(comma + 1));
         if (!sum || *sum != checksum(body.substr(0, comma + 1))) {
-            ParsedCommand p = failure(address, ReplyCode::Syntax, "missing or wrong checksum");
+            ParsedCommand p = failure(line, address, ReplyCode::Syntax, ParseProblem::BadChecksum);
             p.checksumFailed = true;
             return p;
         }
@@ -288,15 +296,49 @@ ParsedCommand parseCommand(std::string_view line, bool checksums)
         if (c.op == Op::ZeroAll && !args.empty() && axisFrom(args.front()))
             c.op = Op::SetCounter;
         if (auto e = parseArgs(c, args))
-            return failure(address, e->code, "'" + std::string(line) + "': " + e->message);
+            return failure(line, address, e->code, e->problem, e->field);
         ParsedCommand p;
         p.status = ParseStatus::Ok;
         p.address = address;
         p.command = c;
+        p.problem = ParseProblem::None;
+        p.line = std::string(line);
         return p;
     }
-    return failure(address, ReplyCode::UnknownCommand,
-                   "unknown command '" + std::string(line) + "'");
+    return failure(line, address, ReplyCode::UnknownCommand, ParseProblem::UnknownCommand);
+}
+
+std::string parseProblemText(const ParsedCommand &p)
+{
+    const std::string at = "'" + p.line + "': ";
+    switch (p.problem) {
+    case ParseProblem::None:
+    case ParseProblem::NoAddress:
+        return {};
+    case ParseProblem::BadChecksum:
+        return at + "missing or wrong checksum";
+    case ParseProblem::UnknownCommand:
+        return "unknown command '" + p.line + "'";
+    case ParseProblem::MissingNumber:
+        return at + "missing number";
+    case ParseProblem::NumberTooLarge:
+        return at + "number out of range: " + p.field;
+    case ParseProblem::NotDecimal:
+        return at + "not a decimal number: " + p.field;
+    case ParseProblem::NotHexByte:
+        return at + "not a hex byte: " + p.field;
+    case ParseProblem::NotANumber:
+        return at + "not a number: " + p.field;
+    case ParseProblem::ParameterCount:
+        return at + "wrong number of parameters";
+    case ParseProblem::HomeNeedsAxis:
+        return at + "W needs an axis X, Y, Z or A";
+    case ParseProblem::OutputNeedsByte:
+        return at + "O0 needs ',hh'";
+    case ParseProblem::UnexpectedParameters:
+        return at + "unexpected parameters";
+    }
+    return {};
 }
 
 ReplyCode unitCheck(const Command &c, Variant variant, int maxPulseRate)

@@ -12,9 +12,21 @@ namespace {
 constexpr std::int64_t kStepsMax = 2147483647; // counters and components: +-(2^31 - 1)
 constexpr std::int64_t kUint32Max = 4294967295;
 
-CommandCheck fail(CommandError e, const Command &c, const std::string &what)
+using P = CommandProblem;
+
+// A refusal of `c`: its kind, the problem and the values the problem names; the English message
+// from them.
+CommandCheck fail(CommandError e, P problem, const Command &c, std::string unit = {},
+                  std::string what = {})
 {
-    return {e, "'" + encodeBody(c) + "': " + what};
+    CommandCheck check;
+    check.error = e;
+    check.problem = problem;
+    check.command = encodeBody(c);
+    check.unit = std::move(unit);
+    check.what = std::move(what);
+    check.message = commandProblemText(check);
+    return check;
 }
 
 CommandCheck range(const Command &c, std::int64_t v, std::int64_t lo, std::int64_t hi,
@@ -22,9 +34,16 @@ CommandCheck range(const Command &c, std::int64_t v, std::int64_t lo, std::int64
 {
     if (v >= lo && v <= hi)
         return {};
-    return fail(CommandError::OutOfRange, c,
-                std::string(name) + " " + std::to_string(v) + " is outside " + std::to_string(lo) +
-                    ".." + std::to_string(hi));
+    CommandCheck check;
+    check.error = CommandError::OutOfRange;
+    check.problem = P::ValueOutOfRange;
+    check.command = encodeBody(c);
+    check.what = name;
+    check.value = v;
+    check.low = lo;
+    check.high = hi;
+    check.message = commandProblemText(check);
+    return check;
 }
 
 bool allowedOnAddress7(Op op)
@@ -53,21 +72,20 @@ bool allowedOnAddress7(Op op)
 CommandCheck checkAddress(const Command &c, const VariantInfo &info)
 {
     if (c.address > 7)
-        return fail(CommandError::BadAddress, c, "address must be 0..7");
+        return fail(CommandError::BadAddress, P::AddressRange, c);
     if (c.address == 7) {
         if (!info.hasSpindleAddress7)
-            return fail(CommandError::NotOnVariant, c,
-                        std::string(info.displayName) + " has no address 7 (spindle)");
+            return fail(CommandError::NotOnVariant, P::NoSpindleAddress, c,
+                        std::string(info.displayName));
         if (!allowedOnAddress7(c.op))
-            return fail(CommandError::BadAddress, c, "not a command of address 7");
+            return fail(CommandError::BadAddress, P::NotOnAddress7, c);
         return {};
     }
     if (c.op == Op::SpindleSpeed)
-        return fail(CommandError::BadAddress, c, "the spindle speed goes to address 7");
+        return fail(CommandError::BadAddress, P::SpindleOnAddress7, c);
     // Several GVE114 units may share one line, each on its own address; the others have 0.
     if (c.address != 0 && info.variant != Variant::Gve114)
-        return fail(CommandError::BadAddress, c,
-                    std::string(info.displayName) + " answers on address 0 only");
+        return fail(CommandError::BadAddress, P::AddressZeroOnly, c, std::string(info.displayName));
     return {};
 }
 
@@ -75,10 +93,15 @@ CommandCheck checkComponents(const Command &c, const VariantInfo &info, std::int
                              std::int64_t hi)
 {
     // Adopted reading (§4): 3 components everywhere, the 4th (A) only on 4-axis units.
-    if (c.argCount < 3 || c.argCount > info.axisCount)
-        return fail(CommandError::AxisCount, c,
-                    std::to_string(c.argCount) + " components, " + std::string(info.displayName) +
-                        " takes 3" + (info.axisCount == 4 ? " or 4" : ""));
+    if (c.argCount < 3 || c.argCount > info.axisCount) {
+        CommandCheck check =
+            fail(CommandError::AxisCount, P::ComponentCount, c, std::string(info.displayName));
+        check.value = c.argCount;
+        check.low = 3;
+        check.high = info.axisCount;
+        check.message = commandProblemText(check);
+        return check;
+    }
     for (int i = 0; i < c.argCount; ++i) {
         if (auto r = range(c, c.args[i], lo, hi, "component"))
             return r;
@@ -89,8 +112,8 @@ CommandCheck checkComponents(const Command &c, const VariantInfo &info, std::int
 CommandCheck checkAxis(const Command &c, const VariantInfo &info)
 {
     if (static_cast<int>(c.axis) >= info.axisCount)
-        return fail(CommandError::NotOnVariant, c,
-                    std::string(info.displayName) + " has no axis " + axisLetter(c.axis));
+        return fail(CommandError::NotOnVariant, P::NoSuchAxis, c, std::string(info.displayName),
+                    std::string(1, axisLetter(c.axis)));
     return {};
 }
 
@@ -98,8 +121,8 @@ CommandCheck needs(bool has, const Command &c, const VariantInfo &info)
 {
     if (has)
         return {};
-    return fail(CommandError::NotOnVariant, c,
-                std::string(info.displayName) + " has no command " + std::string(mnemonic(c.op)));
+    return fail(CommandError::NotOnVariant, P::NoSuchCommand, c, std::string(info.displayName),
+                std::string(mnemonic(c.op)));
 }
 
 CommandCheck checkEeprom(const Command &c, const VariantInfo &info)
@@ -115,7 +138,7 @@ CommandCheck checkEeprom(const Command &c, const VariantInfo &info)
     if (c.op == Op::EepromWriteUint)
         return range(c, c.args[1], 0, kUint32Max, "value");
     if (c.op == Op::EepromWriteFloat && !std::isfinite(c.real))
-        return fail(CommandError::OutOfRange, c, "value is not a finite number");
+        return fail(CommandError::OutOfRange, P::NotFinite, c);
     return {};
 }
 
@@ -124,7 +147,7 @@ CommandCheck checkHome(const Command &c, const VariantInfo &info, std::int64_t m
     if (auto r = checkAxis(c, info))
         return r;
     if (c.args[0] == 0)
-        return fail(CommandError::OutOfRange, c, "travel toward the switch must not be 0");
+        return fail(CommandError::OutOfRange, P::ZeroTravel, c);
     if (auto r = range(c, c.args[0], -kStepsMax, kStepsMax, "travel"))
         return r;
     if (auto r = range(c, c.args[1], 10, maxRate, "speed toward the switch"))
@@ -210,6 +233,44 @@ CommandCheck checkArgs(const Command &c, const VariantInfo &info, std::int64_t m
 
 } // namespace
 
+std::string commandProblemText(const CommandCheck &k)
+{
+    const std::string at = "'" + k.command + "': ";
+    switch (k.problem) {
+    case P::None:
+        return {};
+    case P::AddressRange:
+        return at + "address must be 0..7";
+    case P::NoSpindleAddress:
+        return at + k.unit + " has no address 7 (spindle)";
+    case P::NotOnAddress7:
+        return at + "not a command of address 7";
+    case P::SpindleOnAddress7:
+        return at + "the spindle speed goes to address 7";
+    case P::AddressZeroOnly:
+        return at + k.unit + " answers on address 0 only";
+    case P::ComponentCount:
+        return at + std::to_string(k.value) + " components, " + k.unit + " takes 3" +
+               (k.high == 4 ? " or 4" : "");
+    case P::ValueOutOfRange:
+        return at + k.what + " " + std::to_string(k.value) + " is outside " +
+               std::to_string(k.low) + ".." + std::to_string(k.high);
+    case P::NotFinite:
+        return at + "value is not a finite number";
+    case P::ZeroTravel:
+        return at + "travel toward the switch must not be 0";
+    case P::NoSuchAxis:
+        return at + k.unit + " has no axis " + k.what;
+    case P::NoSuchCommand:
+        return at + k.unit + " has no command " + k.what;
+    case P::NotInPacket:
+        return at + "only C and B belong in a packet";
+    case P::EmptyPacket:
+        return "a packet needs at least one command";
+    }
+    return {};
+}
+
 CommandCheck validate(const Command &c, Variant variant, int maxPulseRate)
 {
     const VariantInfo &info = variantInfo(variant);
@@ -221,11 +282,16 @@ CommandCheck validate(const Command &c, Variant variant, int maxPulseRate)
 
 CommandCheck validatePacket(std::span<const Command> commands, Variant variant, int maxPulseRate)
 {
-    if (commands.empty())
-        return {CommandError::EmptyPacket, "a packet needs at least one command"};
+    if (commands.empty()) {
+        CommandCheck check;
+        check.error = CommandError::EmptyPacket;
+        check.problem = P::EmptyPacket;
+        check.message = commandProblemText(check);
+        return check;
+    }
     for (const Command &c : commands) {
         if (!allowedInPacket(c.op))
-            return fail(CommandError::NotInPacket, c, "only C and B belong in a packet");
+            return fail(CommandError::NotInPacket, P::NotInPacket, c);
         if (auto r = validate(c, variant, maxPulseRate))
             return r;
     }

@@ -77,6 +77,7 @@ void RunWorkflow::setProfile(const machine::MachineConfig &config)
 void RunWorkflow::connectToUnit(const driver::ConnectionSettings &settings)
 {
     m_userDisconnected = false;
+    m_connectionAsked = true;
     m_settings = settings;
     m_link.setMachineConfig(m_profile);
     const bool emulator = settings.kind == driver::ConnectionSettings::Kind::Emulator;

@@ -49,6 +49,9 @@ public:
     void setProfile(const machine::MachineConfig &config);
     // The connection asked for last (the built-in emulator or which port).
     const driver::ConnectionSettings &connection() const { return m_settings; }
+    // Whether a connection has been asked for since the start (a front end's first connect may
+    // choose the port used before a restart; a new port applied later reconnects).
+    bool connectionAsked() const { return m_connectionAsked; }
     const machine::MachineConfig &profile() const { return m_profile; }
 
     // ---- connection
@@ -126,6 +129,7 @@ private:
     bool m_homeFirst = false;
     bool m_endOnHold = false;
     bool m_autoReconnect = false;
+    bool m_connectionAsked = false;
     bool m_userDisconnected = false;
     bool m_continueAfterLower = false;
     bool m_runAfterHoming = false; // homeThenRun(): run once homed

@@ -1174,8 +1174,204 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>řádek %1</translation>
     </message>
     <message>
-        <source>no planned speed where the tool stands</source>
-        <translation>v místě nástroje není naplánovaná rychlost</translation>
+        <source>The new feed cannot be set: no speed is planned where the tool stands</source>
+        <translation>Nový posuv nelze nastavit: tam, kde nástroj stojí, není naplánovaná žádná rychlost</translation>
+    </message>
+    <message>
+        <source>Lower the tool with the feed unchanged.</source>
+        <translation>Spusťte nástroj s nezměněným posuvem.</translation>
+    </message>
+    <message>
+        <source>This unit has no output OUT%1</source>
+        <translation>Tato jednotka nemá výstup OUT%1</translation>
+    </message>
+    <message>
+        <source>Switch one of the outputs the unit has (a GVE84 has its relay only).</source>
+        <translation>Přepněte některý z výstupů, které jednotka má (GVE84 má jen své relé).</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: address must be 0..7</source>
+        <translation>&apos;%1&apos;: adresa musí být 0..7</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 has no address 7 (spindle)</source>
+        <translation>&apos;%1&apos;: %2 nemá adresu 7 (vřeteno)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: not a command of address 7</source>
+        <translation>&apos;%1&apos;: takový příkaz adresa 7 nemá</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the spindle speed goes to address 7</source>
+        <translation>&apos;%1&apos;: otáčky vřetena patří na adresu 7</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 answers on address 0 only</source>
+        <translation>&apos;%1&apos;: %2 odpovídá jen na adrese 0</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 components, %3 takes 3</source>
+        <translation>&apos;%1&apos;: %2 složek, %3 bere 3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 components, %3 takes 3 or 4</source>
+        <translation>&apos;%1&apos;: %2 složek, %3 bere 3 nebo 4</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 %3 is outside %4..%5</source>
+        <translation>&apos;%1&apos;: %2 %3 je mimo rozsah %4..%5</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: value is not a finite number</source>
+        <translation>&apos;%1&apos;: hodnota není konečné číslo</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: travel toward the switch must not be 0</source>
+        <translation>&apos;%1&apos;: dráha ke spínači nesmí být 0</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 has no axis %3</source>
+        <translation>&apos;%1&apos;: %2 nemá osu %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 has no command %3</source>
+        <translation>&apos;%1&apos;: %2 nemá příkaz %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: only C and B belong in a packet</source>
+        <translation>&apos;%1&apos;: do paketu patří jen C a B</translation>
+    </message>
+    <message>
+        <source>a packet needs at least one command</source>
+        <translation>paket potřebuje aspoň jeden příkaz</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: not a unit command (it starts with &apos;!&apos; and an address 0..7)</source>
+        <translation>&apos;%1&apos;: to není příkaz jednotky (ten začíná znakem &apos;!&apos; a adresou 0..7)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: missing or wrong checksum</source>
+        <translation>&apos;%1&apos;: kontrolní součet chybí nebo nesouhlasí</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>neznámý příkaz &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: missing number</source>
+        <translation>&apos;%1&apos;: chybí číslo</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: number out of range: %2</source>
+        <translation>&apos;%1&apos;: číslo mimo rozsah: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: not a decimal number: %2</source>
+        <translation>&apos;%1&apos;: není desítkové číslo: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: not a hex byte: %2</source>
+        <translation>&apos;%1&apos;: není šestnáctkový bajt: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: not a number: %2</source>
+        <translation>&apos;%1&apos;: není číslo: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: wrong number of parameters</source>
+        <translation>&apos;%1&apos;: nesprávný počet parametrů</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: W needs an axis X, Y, Z or A</source>
+        <translation>&apos;%1&apos;: W potřebuje osu X, Y, Z nebo A</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: O0 needs &apos;,hh&apos;</source>
+        <translation>&apos;%1&apos;: O0 potřebuje &apos;,hh&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: unexpected parameters</source>
+        <translation>&apos;%1&apos;: nečekané parametry</translation>
+    </message>
+    <message>
+        <source>component</source>
+        <translation>složka</translation>
+    </message>
+    <message>
+        <source>pause (ms)</source>
+        <translation>pauza (ms)</translation>
+    </message>
+    <message>
+        <source>SHORT threshold</source>
+        <translation>práh SHORT</translation>
+    </message>
+    <message>
+        <source>acceleration</source>
+        <translation>zrychlení</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>rychlost</translation>
+    </message>
+    <message>
+        <source>brake speed</source>
+        <translation>brzdná rychlost</translation>
+    </message>
+    <message>
+        <source>multiplier (%)</source>
+        <translation>násobitel (%)</translation>
+    </message>
+    <message>
+        <source>counter</source>
+        <translation>čítač</translation>
+    </message>
+    <message>
+        <source>travel</source>
+        <translation>dráha</translation>
+    </message>
+    <message>
+        <source>speed toward the switch</source>
+        <translation>rychlost ke spínači</translation>
+    </message>
+    <message>
+        <source>back-off travel</source>
+        <translation>dráha odjezdu ze spínače</translation>
+    </message>
+    <message>
+        <source>speed off the switch</source>
+        <translation>rychlost od spínače</translation>
+    </message>
+    <message>
+        <source>EEPROM address</source>
+        <translation>adresa v EEPROM</translation>
+    </message>
+    <message>
+        <source>byte</source>
+        <translation>bajt</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>hodnota</translation>
+    </message>
+    <message>
+        <source>output byte</source>
+        <translation>bajt výstupů</translation>
+    </message>
+    <message>
+        <source>status number</source>
+        <translation>číslo stavového registru</translation>
+    </message>
+    <message>
+        <source>status byte</source>
+        <translation>bajt stavového registru</translation>
+    </message>
+    <message>
+        <source>packet command count</source>
+        <translation>počet příkazů paketu</translation>
+    </message>
+    <message>
+        <source>spindle (per mille)</source>
+        <translation>vřeteno (promile)</translation>
     </message>
 </context>
 <context>
@@ -3390,37 +3586,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     </message>
 </context>
 <context>
-    <name>frezka::gui::ProgramSession</name>
-    <message>
-        <source>Reading</source>
-        <translation>Čtení</translation>
-    </message>
-    <message>
-        <source>Indexing lines</source>
-        <translation>Indexování řádků</translation>
-    </message>
-    <message>
-        <source>Interpreting</source>
-        <translation>Interpretace</translation>
-    </message>
-    <message>
-        <source>Preparing the view</source>
-        <translation>Příprava zobrazení</translation>
-    </message>
-    <message>
-        <source>Planning</source>
-        <translation>Plánování</translation>
-    </message>
-    <message>
-        <source>Cannot open %1: %2</source>
-        <translation>%1 nelze otevřít: %2</translation>
-    </message>
-    <message>
-        <source>This build has no G-code interpreter; the program cannot be checked.</source>
-        <translation>Toto sestavení nemá interpret G-kódu; program nelze zkontrolovat.</translation>
-    </message>
-</context>
-<context>
     <name>frezka::gui::RunPanel</name>
     <message>
         <source>Elapsed %1</source>
@@ -4118,6 +4283,33 @@ Volby:
     <message>
         <source>Manual: %1 (%2)</source>
         <translation>Ručně: %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session::ProgramSession</name>
+    <message>
+        <source>Reading</source>
+        <translation>Čtení</translation>
+    </message>
+    <message>
+        <source>Indexing lines</source>
+        <translation>Indexování řádků</translation>
+    </message>
+    <message>
+        <source>Interpreting</source>
+        <translation>Interpretace</translation>
+    </message>
+    <message>
+        <source>Preparing the view</source>
+        <translation>Příprava zobrazení</translation>
+    </message>
+    <message>
+        <source>Planning</source>
+        <translation>Plánování</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 nelze otevřít: %2</translation>
     </message>
 </context>
 <context>

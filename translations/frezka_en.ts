@@ -1174,8 +1174,204 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>line %1</translation>
     </message>
     <message>
-        <source>no planned speed where the tool stands</source>
-        <translation>no planned speed where the tool stands</translation>
+        <source>The new feed cannot be set: no speed is planned where the tool stands</source>
+        <translation>The new feed cannot be set: no speed is planned where the tool stands</translation>
+    </message>
+    <message>
+        <source>Lower the tool with the feed unchanged.</source>
+        <translation>Lower the tool with the feed unchanged.</translation>
+    </message>
+    <message>
+        <source>This unit has no output OUT%1</source>
+        <translation>This unit has no output OUT%1</translation>
+    </message>
+    <message>
+        <source>Switch one of the outputs the unit has (a GVE84 has its relay only).</source>
+        <translation>Switch one of the outputs the unit has (a GVE84 has its relay only).</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: address must be 0..7</source>
+        <translation>&apos;%1&apos;: address must be 0..7</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 has no address 7 (spindle)</source>
+        <translation>&apos;%1&apos;: %2 has no address 7 (spindle)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: not a command of address 7</source>
+        <translation>&apos;%1&apos;: not a command of address 7</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the spindle speed goes to address 7</source>
+        <translation>&apos;%1&apos;: the spindle speed goes to address 7</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 answers on address 0 only</source>
+        <translation>&apos;%1&apos;: %2 answers on address 0 only</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 components, %3 takes 3</source>
+        <translation>&apos;%1&apos;: %2 components, %3 takes 3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 components, %3 takes 3 or 4</source>
+        <translation>&apos;%1&apos;: %2 components, %3 takes 3 or 4</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 %3 is outside %4..%5</source>
+        <translation>&apos;%1&apos;: %2 %3 is outside %4..%5</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: value is not a finite number</source>
+        <translation>&apos;%1&apos;: value is not a finite number</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: travel toward the switch must not be 0</source>
+        <translation>&apos;%1&apos;: travel toward the switch must not be 0</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 has no axis %3</source>
+        <translation>&apos;%1&apos;: %2 has no axis %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: %2 has no command %3</source>
+        <translation>&apos;%1&apos;: %2 has no command %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: only C and B belong in a packet</source>
+        <translation>&apos;%1&apos;: only C and B belong in a packet</translation>
+    </message>
+    <message>
+        <source>a packet needs at least one command</source>
+        <translation>a packet needs at least one command</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: not a unit command (it starts with &apos;!&apos; and an address 0..7)</source>
+        <translation>&apos;%1&apos;: not a unit command (it starts with &apos;!&apos; and an address 0..7)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: missing or wrong checksum</source>
+        <translation>&apos;%1&apos;: missing or wrong checksum</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unknown command &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: missing number</source>
+        <translation>&apos;%1&apos;: missing number</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: number out of range: %2</source>
+        <translation>&apos;%1&apos;: number out of range: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: not a decimal number: %2</source>
+        <translation>&apos;%1&apos;: not a decimal number: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: not a hex byte: %2</source>
+        <translation>&apos;%1&apos;: not a hex byte: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: not a number: %2</source>
+        <translation>&apos;%1&apos;: not a number: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: wrong number of parameters</source>
+        <translation>&apos;%1&apos;: wrong number of parameters</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: W needs an axis X, Y, Z or A</source>
+        <translation>&apos;%1&apos;: W needs an axis X, Y, Z or A</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: O0 needs &apos;,hh&apos;</source>
+        <translation>&apos;%1&apos;: O0 needs &apos;,hh&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: unexpected parameters</source>
+        <translation>&apos;%1&apos;: unexpected parameters</translation>
+    </message>
+    <message>
+        <source>component</source>
+        <translation>component</translation>
+    </message>
+    <message>
+        <source>pause (ms)</source>
+        <translation>pause (ms)</translation>
+    </message>
+    <message>
+        <source>SHORT threshold</source>
+        <translation>SHORT threshold</translation>
+    </message>
+    <message>
+        <source>acceleration</source>
+        <translation>acceleration</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>speed</translation>
+    </message>
+    <message>
+        <source>brake speed</source>
+        <translation>brake speed</translation>
+    </message>
+    <message>
+        <source>multiplier (%)</source>
+        <translation>multiplier (%)</translation>
+    </message>
+    <message>
+        <source>counter</source>
+        <translation>counter</translation>
+    </message>
+    <message>
+        <source>travel</source>
+        <translation>travel</translation>
+    </message>
+    <message>
+        <source>speed toward the switch</source>
+        <translation>speed toward the switch</translation>
+    </message>
+    <message>
+        <source>back-off travel</source>
+        <translation>back-off travel</translation>
+    </message>
+    <message>
+        <source>speed off the switch</source>
+        <translation>speed off the switch</translation>
+    </message>
+    <message>
+        <source>EEPROM address</source>
+        <translation>EEPROM address</translation>
+    </message>
+    <message>
+        <source>byte</source>
+        <translation>byte</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>value</translation>
+    </message>
+    <message>
+        <source>output byte</source>
+        <translation>output byte</translation>
+    </message>
+    <message>
+        <source>status number</source>
+        <translation>status number</translation>
+    </message>
+    <message>
+        <source>status byte</source>
+        <translation>status byte</translation>
+    </message>
+    <message>
+        <source>packet command count</source>
+        <translation>packet command count</translation>
+    </message>
+    <message>
+        <source>spindle (per mille)</source>
+        <translation>spindle (per mille)</translation>
     </message>
 </context>
 <context>
@@ -3384,37 +3580,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
 </context>
 <context>
-    <name>frezka::gui::ProgramSession</name>
-    <message>
-        <source>Reading</source>
-        <translation>Reading</translation>
-    </message>
-    <message>
-        <source>Indexing lines</source>
-        <translation>Indexing lines</translation>
-    </message>
-    <message>
-        <source>Interpreting</source>
-        <translation>Interpreting</translation>
-    </message>
-    <message>
-        <source>Preparing the view</source>
-        <translation>Preparing the view</translation>
-    </message>
-    <message>
-        <source>Planning</source>
-        <translation>Planning</translation>
-    </message>
-    <message>
-        <source>Cannot open %1: %2</source>
-        <translation>Cannot open %1: %2</translation>
-    </message>
-    <message>
-        <source>This build has no G-code interpreter; the program cannot be checked.</source>
-        <translation>This build has no G-code interpreter; the program cannot be checked.</translation>
-    </message>
-</context>
-<context>
     <name>frezka::gui::RunPanel</name>
     <message>
         <source>Elapsed %1</source>
@@ -4107,6 +4272,33 @@ Options:
     <message>
         <source>Manual: %1 (%2)</source>
         <translation>Manual: %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session::ProgramSession</name>
+    <message>
+        <source>Reading</source>
+        <translation>Reading</translation>
+    </message>
+    <message>
+        <source>Indexing lines</source>
+        <translation>Indexing lines</translation>
+    </message>
+    <message>
+        <source>Interpreting</source>
+        <translation>Interpreting</translation>
+    </message>
+    <message>
+        <source>Preparing the view</source>
+        <translation>Preparing the view</translation>
+    </message>
+    <message>
+        <source>Planning</source>
+        <translation>Planning</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>Cannot open %1: %2</translation>
     </message>
 </context>
 <context>

@@ -3,7 +3,7 @@
 
 #include "gui/language.h"
 #include "gui/mainwindow.h"
-#include "gui/programsession.h"
+#include "gui/programview.h"
 
 #include "driver/link/machinecontroller.h"
 

@@ -106,19 +106,40 @@ namespace {
     QT_TRANSLATE_NOOP("frezka::driver", "no reply to recovery query"),
     QT_TRANSLATE_NOOP("frezka::driver", "line %1"),
     // refusals' reasons
-    QT_TRANSLATE_NOOP("frezka::driver", "no planned speed where the tool stands"),
-    QT_TRANSLATE_NOOP("frezka::driver", "no reply"), QT_TRANSLATE_NOOP("frezka::driver", "setup")};
+    QT_TRANSLATE_NOOP("frezka::driver", "no reply"), QT_TRANSLATE_NOOP("frezka::driver", "setup"),
+    // the arguments the protocol's check names (protocol/validate.cpp)
+    QT_TRANSLATE_NOOP("frezka::driver", "component"),
+    QT_TRANSLATE_NOOP("frezka::driver", "pause (ms)"),
+    QT_TRANSLATE_NOOP("frezka::driver", "SHORT threshold"),
+    QT_TRANSLATE_NOOP("frezka::driver", "acceleration"),
+    QT_TRANSLATE_NOOP("frezka::driver", "speed"),
+    QT_TRANSLATE_NOOP("frezka::driver", "brake speed"),
+    QT_TRANSLATE_NOOP("frezka::driver", "multiplier (%)"),
+    QT_TRANSLATE_NOOP("frezka::driver", "counter"), QT_TRANSLATE_NOOP("frezka::driver", "travel"),
+    QT_TRANSLATE_NOOP("frezka::driver", "speed toward the switch"),
+    QT_TRANSLATE_NOOP("frezka::driver", "back-off travel"),
+    QT_TRANSLATE_NOOP("frezka::driver", "speed off the switch"),
+    QT_TRANSLATE_NOOP("frezka::driver", "EEPROM address"),
+    QT_TRANSLATE_NOOP("frezka::driver", "byte"), QT_TRANSLATE_NOOP("frezka::driver", "value"),
+    QT_TRANSLATE_NOOP("frezka::driver", "output byte"),
+    QT_TRANSLATE_NOOP("frezka::driver", "status number"),
+    QT_TRANSLATE_NOOP("frezka::driver", "status byte"),
+    QT_TRANSLATE_NOOP("frezka::driver", "packet command count"),
+    QT_TRANSLATE_NOOP("frezka::driver", "spindle (per mille)")};
 
-// %1 .. %9 replaced by the arguments (a missing one by nothing), left to right.
-std::string fill(const std::string &pattern, const std::vector<std::string> &args)
+// %1 .. %9 replaced by the arguments (a missing one by nothing), left to right; the one after
+// the last argument by the detail's text when there is one.
+std::string fill(const std::string &pattern, const DriverMessage &m)
 {
     std::string out;
     for (std::size_t i = 0; i < pattern.size(); ++i) {
         if (pattern[i] == '%' && i + 1 < pattern.size() && pattern[i + 1] >= '1' &&
             pattern[i + 1] <= '9') {
             const auto n = static_cast<std::size_t>(pattern[i + 1] - '1');
-            if (n < args.size())
-                out += args[n];
+            if (n < m.args.size())
+                out += m.args[n];
+            else if (n == m.args.size() && !m.detail.empty())
+                out += englishText(m.detail.front());
             ++i;
         } else {
             out += pattern[i];
@@ -127,8 +148,9 @@ std::string fill(const std::string &pattern, const std::vector<std::string> &arg
     return out;
 }
 
-// The same in the user's language: each argument through the phrase catalogue.
-QString fill(const QString &pattern, const std::vector<std::string> &args)
+// The same in the user's language: each argument through the phrase catalogue, the detail
+// worded in the user's language too.
+QString fill(const QString &pattern, const DriverMessage &m)
 {
     QString out;
     for (qsizetype i = 0; i < pattern.size(); ++i) {
@@ -136,8 +158,10 @@ QString fill(const QString &pattern, const std::vector<std::string> &args)
         if (c == QLatin1Char('%') && i + 1 < pattern.size() && pattern[i + 1] >= QLatin1Char('1') &&
             pattern[i + 1] <= QLatin1Char('9')) {
             const auto n = static_cast<std::size_t>(pattern[i + 1].unicode() - '1');
-            if (n < args.size())
-                out += translatedPhrase(args[n]);
+            if (n < m.args.size())
+                out += translatedPhrase(m.args[n]);
+            else if (n == m.args.size() && !m.detail.empty())
+                out += translatedText(m.detail.front());
             ++i;
         } else {
             out += c;
@@ -150,9 +174,9 @@ QString fill(const QString &pattern, const std::vector<std::string> &args)
 
 std::string englishText(const DriverMessage &message, bool withHint)
 {
-    std::string text = fill(std::string(driverTemplate(message.code)), message.args);
+    std::string text = fill(std::string(driverTemplate(message.code)), message);
     if (withHint && *driverHint(message.code))
-        text += ". " + fill(std::string(driverHint(message.code)), message.args);
+        text += ". " + fill(std::string(driverHint(message.code)), message);
     return text;
 }
 
@@ -170,12 +194,12 @@ QString translatedPhrase(const std::string &phrase)
 
 QString translatedText(const DriverMessage &message, bool withHint)
 {
-    QString text = fill(QCoreApplication::translate("frezka::driver", driverTemplate(message.code)),
-                        message.args);
+    QString text =
+        fill(QCoreApplication::translate("frezka::driver", driverTemplate(message.code)), message);
     const char *hint = driverHint(message.code);
     if (withHint && *hint)
         text += QStringLiteral(". ") +
-                fill(QCoreApplication::translate("frezka::driver", hint), message.args);
+                fill(QCoreApplication::translate("frezka::driver", hint), message);
     return text;
 }
 

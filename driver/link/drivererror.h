@@ -36,7 +36,7 @@ enum class DriverCode : std::uint16_t {
     ProgramFourAxes = 112,          // %1 the unit's name
     ProgramStartsElsewhere = 113,   // %1 planned steps, %2 axis, %3 steps now
     ProgramNeedsVk = 114,           // %1 line, %2 firmware version
-    InvalidCommand = 115,           // %1 line, %2 why (the protocol's check)
+    InvalidCommand = 115,           // %1 line, %2 why (detail: a 5xx code)
     LiftOffPath = 116,              //
     NoLiftHeight = 117,             //
     LiftAtLimit = 118,              //
@@ -44,11 +44,11 @@ enum class DriverCode : std::uint16_t {
     NoMpg = 120,                    //
     SpindleOutOfRange = 121,        // %1 rpm asked, %2 the profile's maximum
     NoOverride = 122,               //
-    OverrideInvalid = 123,          // %1 why
+    OverrideInvalid = 123,          // %1 why (detail: a 5xx code)
     EmptyCommand = 124,             //
-    NotACommand = 125,              // %1 the text, %2 why
+    NotACommand = 125,              // %1 the text, %2 why (detail: a 5xx code)
     CommandDisturbsJob = 126,       // %1 the text
-    SpeedInvalid = 127,             // %1 why
+    SpeedInvalid = 127,             // %1 why (detail: a 5xx code)
     OverrideNeedsFirmware = 128,    // %1 firmware version
     HomingNeedsFirmware = 129,      // %1 firmware version (W needs IP64MPG v10)
     SpindleStarting = 130,          //
@@ -59,6 +59,8 @@ enum class DriverCode : std::uint16_t {
     NewFeedNeedsXm = 135,           //
     MpgReportsUnsupported = 136,    //
     ContinuousJogWhileLifted = 137, //
+    NoPlannedSpeed = 138,           //
+    NoSuchOutput = 139,             // %1 the output's number
     // The unit and the link (2xx)
     UnitAnswered = 200,       // %1 the action, %2 the unit's reply
     LinkFailed = 201,         // %1 the action, %2 why
@@ -70,7 +72,7 @@ enum class DriverCode : std::uint16_t {
     FirmwareTooOld = 207,     // %1 the unit's version, %2 the profile's version
     UnknownOperation = 208,   // %1 line
     HomeSwitchNotFound = 209, // %1 axis
-    HomingInvalid = 210,      // %1 axis, %2 why
+    HomingInvalid = 210,      // %1 axis, %2 why (detail: a 5xx code)
     // 211 retired (LinkFailedAtLine: the link's reasons are LinkGaveUp ... with "line N")
     HomingLegStopped = 212,    // %1 axis
     LiftPointMissed = 213,     // %1 the counters, %2 the lift point
@@ -99,9 +101,39 @@ enum class DriverCode : std::uint16_t {
     HoldLinkRestored = 410,    //
     HoldSpindleStarting = 411, //
     HoldToolLowering = 412,    //
+    // Why a command cannot be sent (5xx): the protocol's check (protocol::CommandProblem) and
+    // parse (protocol::ParseProblem) as the detail of a refusal; %1 is the command or line
+    CommandAddressRange = 500,      //
+    CommandNoSpindleAddress = 501,  // %2 unit
+    CommandNotOnAddress7 = 502,     //
+    CommandSpindleOnAddress7 = 503, //
+    CommandAddressZeroOnly = 504,   // %2 unit
+    CommandComponents3 = 505,       // %2 components, %3 unit
+    CommandComponents34 = 506,      // %2 components, %3 unit
+    CommandOutOfRange = 507,        // %2 the argument, %3 value, %4 lowest, %5 highest
+    CommandNotFinite = 508,         //
+    CommandZeroTravel = 509,        //
+    CommandNoSuchAxis = 510,        // %2 unit, %3 axis
+    CommandNoSuchCommand = 511,     // %2 unit, %3 mnemonic
+    CommandNotInPacket = 512,       //
+    CommandEmptyPacket = 513,       //
+    LineNoAddress = 520,            //
+    LineBadChecksum = 521,          //
+    LineUnknownCommand = 522,       //
+    LineMissingNumber = 523,        //
+    LineNumberTooLarge = 524,       // %2 the parameter
+    LineNotDecimal = 525,           // %2 the parameter
+    LineNotHexByte = 526,           // %2 the parameter
+    LineNotANumber = 527,           // %2 the parameter
+    LineParameterCount = 528,       //
+    LineHomeNeedsAxis = 529,        //
+    LineOutputNeedsByte = 530,      //
+    LineUnexpectedParameters = 531, //
 };
 
-// A code with its arguments: a hold reason, a refusal, an error.
+// A code with its arguments: a hold reason, a refusal, an error. A refusal whose reason is a
+// message of its own (why the protocol's check refuses a command) carries it as `detail`,
+// worded in place of the argument after the last of `args`.
 struct DriverMessage
 {
     DriverMessage() = default;
@@ -109,8 +141,14 @@ struct DriverMessage
         : code(c)
         , args(std::move(a))
     {}
+    DriverMessage(DriverCode c, std::vector<std::string> a, DriverMessage why)
+        : code(c)
+        , args(std::move(a))
+        , detail{std::move(why)}
+    {}
     DriverCode code = DriverCode::None;
     std::vector<std::string> args;
+    std::vector<DriverMessage> detail; // none or one
     bool empty() const { return code == DriverCode::None; }
     friend bool operator==(const DriverMessage &, const DriverMessage &) = default;
 };

@@ -67,9 +67,10 @@ bool HomingCycle::validMoves() const
             cmd::home(axis, m.travelSteps, m.towardPulsesPerS, m.backOffSteps, m.offPulsesPerS);
         if (auto bad = validate(w, config.unit.variant, config.unit.maxPulseRate)) {
             m_host.clearSteps();
-            m_host.fail(
-                {DriverCode::HomingInvalid, {std::string(1, axisLetter(axis)), bad.message}},
-                nullptr, MachineMode::Alarm);
+            m_host.fail({DriverCode::HomingInvalid,
+                         {std::string(1, axisLetter(axis))},
+                         commandCheckMessage(bad)},
+                        nullptr, MachineMode::Alarm);
             return false;
         }
     }

@@ -67,7 +67,7 @@ public slots:
     void jogStop() { execute(op::JogStop{}); }
     void setMpg(bool on) { execute(op::SetMpg{on}); }
     void setSpindleRpm(double rpm) { execute(op::SetSpindleRpm{rpm}); }
-    void setOutputs(quint8 mask, quint8 activeHigh) { execute(op::SetOutputs{mask, activeHigh}); }
+    void setOutput(int output, bool on) { execute(op::SetOutput{output, on}); }
     void setOverride(int percent) { execute(op::SetOverride{percent}); }
     void overrideUp() { execute(op::OverrideStep{true}); }
     void overrideDown() { execute(op::OverrideStep{false}); }

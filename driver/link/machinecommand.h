@@ -95,11 +95,11 @@ struct SetSpindleRpm // !7V, per mille of the profile's maximum
     double rpm = 0;
     friend bool operator==(const SetSpindleRpm &, const SetSpindleRpm &) = default;
 };
-struct SetOutputs // port 0 bits in mask set to activeHigh (1 = on), others kept
+struct SetOutput // output OUTn on or off (the driver finds its port bit), the others kept
 {
-    std::uint8_t mask = 0;
-    std::uint8_t activeHigh = 0;
-    friend bool operator==(const SetOutputs &, const SetOutputs &) = default;
+    int output = 0;
+    bool on = false;
+    friend bool operator==(const SetOutput &, const SetOutput &) = default;
 };
 struct SetOverride // XM
 {
@@ -127,7 +127,7 @@ struct WriteEeprom // the profile's EEPROM settings to the unit, then compared a
 using MachineCommand =
     std::variant<op::Run, op::Pause, op::Resume, op::Abort, op::ToolLift, op::ToolLower, op::Home,
                  op::JogStep, op::JogContinuous, op::JogStop, op::SetMpg, op::SetSpindleRpm,
-                 op::SetOutputs, op::SetOverride, op::OverrideStep, op::SendRaw, op::WriteEeprom,
+                 op::SetOutput, op::SetOverride, op::OverrideStep, op::SendRaw, op::WriteEeprom,
                  op::HoldSpindle>;
 
 } // namespace frezka::driver

@@ -104,9 +104,9 @@ void MachineController::setSpindleRpm(double rpm)
 {
     execute(op::SetSpindleRpm{rpm});
 }
-void MachineController::setOutputs(quint8 mask, quint8 activeHigh)
+void MachineController::setOutput(int output, bool on)
 {
-    execute(op::SetOutputs{mask, activeHigh});
+    execute(op::SetOutput{output, on});
 }
 void MachineController::setOverride(int percent)
 {

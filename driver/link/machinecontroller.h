@@ -11,7 +11,7 @@
 //   implemented and tested on the emulator: connectTo (serial port / pty path, built-in
 //     emulator), disconnectFromUnit, run, pause, resume, abort, toolLift / toolLower (KEEP /
 //     RESTORE, optional spindle stop, optional new speed V + XA), home, jogStep, jogContinuous /
-//     jogStop (clipped to the soft limits), setSpindleRpm, setOutputs, setOverride; the STOP
+//     jogStop (clipped to the soft limits), setSpindleRpm, setOutput, setOverride; the STOP
 //     input and other enabled interrupts hold the job (state.hold == Interrupt); link loss keeps
 //     the job and re-establishes its progress from the counters after reconnecting.
 //   implemented, no dedicated test yet: setMpg, overrideUp / overrideDown, sendRaw.
@@ -91,11 +91,11 @@ public slots:
     void jogStop();
     void setMpg(bool on);
 
-    void setSpindleRpm(double rpm);                  // !7V, per mille from the profile's max rpm
-    void setOutputs(quint8 mask, quint8 activeHigh); // bits per §10 (1 = on), others kept
-    void setOverride(int percent);                   // XM
-    void overrideUp();                               // XU
-    void overrideDown();                             // XD
+    void setSpindleRpm(double rpm);      // !7V, per mille from the profile's max rpm
+    void setOutput(int output, bool on); // OUTn (0..3) on or off, others kept
+    void setOverride(int percent);       // XM
+    void overrideUp();                   // XU
+    void overrideDown();                 // XD
     // A raw command for the console, e.g. "!0PF" or "PF" (address 0 assumed). Validated
     // against the variant; the reply comes as a logLine.
     void sendRaw(const QString &text);

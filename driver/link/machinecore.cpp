@@ -383,9 +383,7 @@ MachineCore::Result MachineCore::execute(MachineCommand command, double now)
             [&](op::JogStop &) { return accepted(m_jog.stop(), now); },
             [&](op::SetMpg &c) { return accepted(m_controls.setMpg(c.on), now); },
             [&](op::SetSpindleRpm &c) { return accepted(m_controls.setSpindleRpm(c.rpm), now); },
-            [&](op::SetOutputs &c) {
-                return accepted(m_controls.setOutputs(c.mask, c.activeHigh), now);
-            },
+            [&](op::SetOutput &c) { return accepted(m_controls.setOutput(c.output, c.on), now); },
             [&](op::SetOverride &c) { return accepted(m_controls.setOverride(c.percent), now); },
             [&](op::OverrideStep &c) { return accepted(m_controls.overrideStep(c.up), now); },
             [&](op::SendRaw &c) { return accepted(m_controls.sendRaw(c.text), now); },

@@ -118,9 +118,9 @@ public:
     Result jogStop(double now) { return execute(op::JogStop{}, now); }
     Result setMpg(bool on, double now) { return execute(op::SetMpg{on}, now); }
     Result setSpindleRpm(double rpm, double now) { return execute(op::SetSpindleRpm{rpm}, now); }
-    Result setOutputs(std::uint8_t mask, std::uint8_t activeHigh, double now)
+    Result setOutput(int output, bool on, double now)
     {
-        return execute(op::SetOutputs{mask, activeHigh}, now);
+        return execute(op::SetOutput{output, on}, now);
     }
     Result setOverride(int percent, double now) { return execute(op::SetOverride{percent}, now); }
     Result overrideStep(bool up, double now) { return execute(op::OverrideStep{up}, now); }

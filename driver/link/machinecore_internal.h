@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by MachineCore and its activities (not part of the driver's API).
 
+#include "driver/link/commandrefusal.h"
 #include "driver/link/linkengine.h"
 #include "driver/link/machinestate.h"
 #include "machine/unitprogram.h"
@@ -52,6 +53,16 @@ inline MachineError refusal(DriverCode code, std::vector<std::string> args = {})
 {
     MachineError e;
     e.reason = DriverMessage{code, std::move(args)};
+    e.message = englishText(e.reason, true);
+    return e;
+}
+
+// The same with the protocol's reason as its detail (commandrefusal.h), worded in place of the
+// argument after the last of `args`.
+inline MachineError refusal(DriverCode code, std::vector<std::string> args, DriverMessage why)
+{
+    MachineError e;
+    e.reason = DriverMessage{code, std::move(args), std::move(why)};
     e.message = englishText(e.reason, true);
     return e;
 }

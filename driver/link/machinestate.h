@@ -183,6 +183,15 @@ struct MachineState
     // bit3 OUT2); OUT0 is on while the spindle turns too (!7V1..1000 switches it in the unit,
     // docs/gve-protocol.md §9).
     std::uint8_t outputsOn() const;
+    // Whether input INn is at its high level (n = 0..7, 14, 15).
+    bool inputHigh(int n) const { return n >= 0 && n < 16 && ((inputLevels() >> n) & 1) != 0; }
+    // Whether output OUTn (n = 0..3) is on.
+    bool outputIsOn(int n) const { return n >= 0 && n < 4 && ((outputsOn() >> n) & 1) != 0; }
+    // Whether axis a (X = 0 .. A = 3) has been homed since connecting.
+    bool axisHomed(int axis) const
+    {
+        return axis >= 0 && axis < 4 && ((homedAxes >> axis) & 1) != 0;
+    }
     // Whether the output that carries `function` in `config` is on (false when none carries it).
     bool outputOn(const machine::MachineConfig &config, machine::OutputFunction function) const;
 

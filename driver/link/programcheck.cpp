@@ -51,7 +51,8 @@ std::optional<MachineError> checkProgram(machine::UnitProgram &program, const Ma
         if (c.op == UnitOp::Spindle && !info.hasSpindleAddress7)
             wire = cmd::output(c.value ? 0xFE : 0xFF); // GVE84: the relay
         if (auto bad = validate(wire, config.unit.variant, config.unit.maxPulseRate)) {
-            auto e = refusal(DriverCode::InvalidCommand, {detail::lineArg(c), bad.message});
+            auto e =
+                refusal(DriverCode::InvalidCommand, {detail::lineArg(c)}, commandCheckMessage(bad));
             e.command = encodeBody(wire);
             return e;
         }

@@ -136,12 +136,12 @@ std::optional<MachineError> ToolLift::lower(int speedPulsesPerS)
     if (speedPulsesPerS > 0) {
         if (auto bad = validate(cmd::speed(speedPulsesPerS), config.unit.variant,
                                 config.unit.maxPulseRate))
-            return refusal(DriverCode::SpeedInvalid, {bad.message});
+            return refusal(DriverCode::SpeedInvalid, {}, commandCheckMessage(bad));
         if (!state().features.vlVkXmNa)
             return refusal(DriverCode::NewFeedNeedsXm);
         const std::int64_t planned = m_job.pace().plannedSpeedNow();
         if (planned <= 0)
-            return refusal(DriverCode::SpeedInvalid, {"no planned speed where the tool stands"});
+            return refusal(DriverCode::NoPlannedSpeed);
         newPercent = std::clamp(
             static_cast<int>(std::lround(100.0 * speedPulsesPerS / static_cast<double>(planned))),
             kOverrideMinPercent, kOverrideMaxPercent);

@@ -60,11 +60,16 @@ std::optional<MachineError> UnitControls::setSpindleRpm(double rpm)
     return std::nullopt;
 }
 
-std::optional<MachineError> UnitControls::setOutputs(std::uint8_t mask, std::uint8_t activeHigh)
+std::optional<MachineError> UnitControls::setOutput(int output, bool on)
 {
     if (state().mode == MachineMode::Disconnected || state().mode == MachineMode::LinkLost)
         return notNow("Switching outputs", state().mode);
-    const auto value = static_cast<std::uint8_t>((state().outputs & ~mask) | (~activeHigh & mask));
+    const std::uint8_t bit = machine::outputPortBit(m_host.config().unit.variant, output);
+    if (bit == 0)
+        return refusal(DriverCode::NoSuchOutput, {std::to_string(output)});
+    // Port 0 is active low: the output is on while its bit is 0.
+    const auto value =
+        static_cast<std::uint8_t>(on ? state().outputs & ~bit : state().outputs | bit);
     m_host.send(cmd::output(value), [this, value](const Outcome &o) {
         if (m_host.unitError(o, "switching outputs", MachineMode::Alarm))
             return;
@@ -77,7 +82,7 @@ std::optional<MachineError> UnitControls::setOutputs(std::uint8_t mask, std::uin
 std::optional<MachineError> UnitControls::setOverride(int percent)
 {
     if (auto bad = validate(cmd::multiplier(percent), m_host.config().unit.variant))
-        return refusal(DriverCode::OverrideInvalid, {bad.message});
+        return refusal(DriverCode::OverrideInvalid, {}, commandCheckMessage(bad));
     if (!state().features.vlVkXmNa)
         return variantInfo(m_host.config().unit.variant).hasVlVkXmNa
                    ? refusal(DriverCode::OverrideNeedsFirmware,
@@ -133,10 +138,10 @@ std::optional<MachineError> UnitControls::sendRaw(const std::string &text)
         line = "!0" + line;
     const ParsedCommand p = parseCommand(line, false);
     if (p.status != ParseStatus::Ok)
-        return refusal(DriverCode::NotACommand, {text, p.message});
+        return refusal(DriverCode::NotACommand, {text}, parseProblemMessage(p));
     if (auto bad =
             validate(p.command, m_host.config().unit.variant, m_host.config().unit.maxPulseRate))
-        return refusal(DriverCode::NotACommand, {text, bad.message});
+        return refusal(DriverCode::NotACommand, {text}, commandCheckMessage(bad));
     const Op op = p.command.op;
     // Y+ makes the unit send reports unasked, in a form the manuals do not give, on a link where
     // every line from the unit is taken as the reply to the last command (docs/gve-protocol.md

@@ -31,7 +31,8 @@ public:
     // Each: nullopt when accepted, else why not.
     std::optional<MachineError> setMpg(bool on);
     std::optional<MachineError> setSpindleRpm(double rpm);
-    std::optional<MachineError> setOutputs(std::uint8_t mask, std::uint8_t activeHigh);
+    // Output OUTn on or off (O0 with its port bit changed, the other outputs as they are).
+    std::optional<MachineError> setOutput(int output, bool on);
     std::optional<MachineError> setOverride(int percent);
     std::optional<MachineError> overrideStep(bool up);
     std::optional<MachineError> sendRaw(const std::string &text);

@@ -1,7 +1,7 @@
 // What the screen says in words (issue 14 item 6, issue 13 item 4), on the whole main window
 // (screenfixture.h): the EEPROM dialog asks before it writes; a hold banner and a driver error
-// are Czech in the Czech interface; the EEPROM differences found on connecting are logged once,
-// in the user's language, with plain numbers.
+// are Czech in the Czech interface, the protocol's reasons in a refusal too; the EEPROM differences
+// found on connecting are logged once, in the user's language, with plain numbers.
 
 #include "screenfixture.h"
 
@@ -113,6 +113,48 @@ private slots:
         back->chooseLanguage(QStringLiteral("en"));
         back->close();
         QTRY_COMPARE(button(m_window->runPanel(), "run")->text(), QStringLiteral("Run"));
+    }
+
+    // The driver's refusals that carry the protocol's reason (issue 13: they passed its English
+    // text along) are Czech end to end in the Czech interface: a console command out of range,
+    // one malformed, and a feed override the unit cannot take.
+    void czechProtocolRefusals()
+    {
+        QVERIFY(waitIdle());
+        SettingsDialog *settings = m_window->openSettings();
+        settings->chooseLanguage(QStringLiteral("cs"));
+        settings->close();
+        const auto restore = qScopeGuard([&] {
+            SettingsDialog *back = m_window->openSettings();
+            back->chooseLanguage(QStringLiteral("en"));
+            back->close();
+        });
+        QTRY_COMPARE(button(m_window->runPanel(), "run")->text(), QStringLiteral("Spustit"));
+        QSignalSpy errors(m_window.get(), &MainWindow::errorShown);
+        const auto refusal = [&](const std::function<void()> &action) {
+            const qsizetype before = errors.size();
+            action();
+            return QTest::qWaitFor([&] { return errors.size() > before; }, 10000)
+                       ? m_window->lastError()
+                       : QStringLiteral("(no error shown)");
+        };
+        const QString range =
+            refusal([&] { emit m_window->console()->manualLineEntered(QStringLiteral("!0V5")); });
+        const QString malformed =
+            refusal([&] { emit m_window->console()->manualLineEntered(QStringLiteral("!0V1x")); });
+        const QString multiplier = refusal([&] { m_window->controller()->setOverride(0); });
+        QVERIFY2(range.contains(QStringLiteral("'!0V5': rychlost 5 je mimo rozsah 10..")),
+                 qPrintable(range));
+        QVERIFY2(malformed.contains(QStringLiteral("není desítkové číslo: 1x")),
+                 qPrintable(malformed));
+        QVERIFY2(multiplier.contains(QStringLiteral("'!0XM0': násobitel (%) 0 je mimo rozsah")),
+                 qPrintable(multiplier));
+        for (const QString &error : {range, malformed, multiplier}) {
+            for (const char *english :
+                 {"speed", "outside", "not a", "decimal", "multiplier", "cannot", "command",
+                  "override", "See the", "Choose", "value", "unit"})
+                QVERIFY2(!error.contains(QLatin1String(english)), qPrintable(error));
+        }
     }
 
     // The EEPROM differences found on connecting are in the console once each, in the user's

@@ -11,7 +11,7 @@
 #include "gui/holdbanner.h"
 #include "gui/mainwindow.h"
 #include "gui/programlisting.h"
-#include "gui/programsession.h"
+#include "gui/programview.h"
 #include "gui/runpanel.h"
 #include "gui/settingsdialog.h"
 #include "gui/speedplot.h"

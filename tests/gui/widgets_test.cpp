@@ -4,7 +4,7 @@
 #include "gui/drowidget.h"
 #include "gui/holdbanner.h"
 #include "gui/jogpanel.h"
-#include "gui/programtext.h"
+#include "gui/programview.h"
 #include "gui/runpanel.h"
 #include "gui/speedplot.h"
 

@@ -3,7 +3,7 @@
 // temporary directory, opened in the window, and a button found by its object name.
 
 #include "gui/mainwindow.h"
-#include "gui/programsession.h"
+#include "gui/programview.h"
 
 #include <QByteArray>
 #include <QFile>

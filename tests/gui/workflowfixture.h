@@ -14,7 +14,7 @@
 #include "gui/jogpanel.h"
 #include "gui/mainwindow.h"
 #include "gui/outputspanel.h"
-#include "gui/programsession.h"
+#include "gui/programview.h"
 #include "gui/runpanel.h"
 #include "gui/settingsdialog.h"
 #include "gui/toolpathview.h"

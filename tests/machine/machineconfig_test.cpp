@@ -175,6 +175,27 @@ TEST(MachineConfig, OutputBitsFollowPortZero)
     EXPECT_EQ(outputBit(g84, OutputFunction::Coolant), 0x00);
 }
 
+// The outputs by number: which OUTn carries a function, and OUTn's bit of port 0.
+TEST(MachineConfig, OutputNumbersAndTheirPortBits)
+{
+    const MachineConfig c = defaultMachineConfig(protocol::Variant::Gve64);
+    EXPECT_EQ(outputNumber(c, OutputFunction::Coolant), 1);
+    EXPECT_EQ(outputNumber(c, OutputFunction::AirBlow), 2);
+    EXPECT_EQ(outputNumber(c, OutputFunction::Brake), 3);
+    EXPECT_EQ(outputNumber(c, OutputFunction::Laser), -1);
+    EXPECT_EQ(outputNumber(c, OutputFunction::Unused), -1);
+    using protocol::Variant;
+    const std::uint8_t bits[4] = {0x01, 0x04, 0x08, 0x02};
+    for (int n = 0; n < 4; ++n)
+        EXPECT_EQ(outputPortBit(Variant::Gve64, n), bits[n]) << "OUT" << n;
+    EXPECT_EQ(outputPortBit(Variant::Gve64, 4), 0);
+    EXPECT_EQ(outputPortBit(Variant::Gve64, -1), 0);
+    const MachineConfig g84 = defaultMachineConfig(Variant::Gve84);
+    EXPECT_EQ(outputNumber(g84, OutputFunction::Spindle), 0); // its relay
+    EXPECT_EQ(outputPortBit(Variant::Gve84, 0), 0x01);
+    EXPECT_EQ(outputPortBit(Variant::Gve84, 1), 0); // a GVE84 has its relay only
+}
+
 TEST(MachineConfig, EepromImageCarriesAxisSettings)
 {
     MachineConfig c = defaultMachineConfig(protocol::Variant::Gve64);

@@ -213,7 +213,9 @@ TEST(RunWorkflow, ReconnectsByItselfAfterALostLinkButNotAfterADisconnect)
     int lost = 0;
     QObject::connect(&h.workflow, &RunWorkflow::linkLost, [&] { ++lost; });
     h.workflow.setAutoReconnect(true, 0);
+    EXPECT_FALSE(h.workflow.connectionAsked());
     h.workflow.connectToUnit(RunWorkflow::connectionFor(h.config));
+    EXPECT_TRUE(h.workflow.connectionAsked()); // the window's first connect is behind it
     ASSERT_TRUE(h.until(MachineMode::Idle));
     h.link.unplug("USB adapter unplugged");
     ASSERT_TRUE(h.until(MachineMode::LinkLost));

@@ -4,7 +4,7 @@
 // toolpath view takes afterwards. Prints the figures; not run by ctest.
 //   bench_gui_load [lines] [--gl]   (offscreen by default: QT_QPA_PLATFORM=offscreen)
 #include "gui/mainwindow.h"
-#include "gui/programsession.h"
+#include "gui/programview.h"
 #include "gui/toolpathview.h"
 
 #include <QApplication>
@@ -102,9 +102,9 @@ int main(int argc, char **argv)
             const double frameMs = double(frame.nsecsElapsed()) / 1e6;
             const auto &p = window.program()->program();
             std::printf("load+interpret+plan: %.2f s (errors: %zu)\n", loadS, p.errors.size());
+            const auto scene = frezka::gui::sceneOf(p);
             std::printf("scene segments drawn: %zu of %zu toolpath entries (%s view)\n",
-                        p.scene ? p.scene->segments.size() : 0,
-                        p.scene ? p.scene->sourceEntries : 0,
+                        scene ? scene->segments.size() : 0, scene ? scene->sourceEntries : 0,
                         window.toolpathView()->usesOpenGl() ? "OpenGL" : "software");
             std::printf("largest event-loop stall while loading: %lld ms\n",
                         static_cast<long long>(maxGapMs));

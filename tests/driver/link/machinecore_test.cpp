@@ -238,12 +238,34 @@ TEST(MachineCore, HomingOneAxisLeavesTheOthers)
     EXPECT_TRUE(sim.errors.empty());
 }
 
+// Outputs go by their number (OUTn); the driver finds the port bit: OUT2 is bit3 of port 0,
+// and a GVE84, which has its relay only, refuses OUT1.
+TEST(MachineCore, OutputsByNumber)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect());
+    ASSERT_FALSE(sim.core.setOutput(2, true, sim.runner.now()));
+    sim.runner.runFor(0.5);
+    EXPECT_EQ(sim.port.unit().outputs(), 0xF7);
+    EXPECT_TRUE(sim.core.state().outputIsOn(2));
+    ASSERT_FALSE(sim.core.setOutput(2, false, sim.runner.now()));
+    sim.runner.runFor(0.5);
+    EXPECT_EQ(sim.port.unit().outputs(), 0xFF);
+    Sim g84(protocol::Variant::Gve84);
+    ASSERT_TRUE(g84.connect());
+    const auto refused = g84.core.setOutput(1, true, g84.runner.now());
+    ASSERT_TRUE(refused);
+    EXPECT_EQ(refused->reason.code, DriverCode::NoSuchOutput);
+    EXPECT_EQ(refused->message, "This unit has no output OUT1. Switch one of the outputs the unit "
+                                "has (a GVE84 has its relay only).");
+}
+
 TEST(MachineCore, SpindleOutputsOverride)
 {
     Sim sim;
     ASSERT_TRUE(sim.connect());
     ASSERT_FALSE(sim.core.setSpindleRpm(sim.config.spindle.maxRpm * 0.3, sim.runner.now()));
-    ASSERT_FALSE(sim.core.setOutputs(0x04, 0x04, sim.runner.now())); // coolant (OUT1) on
+    ASSERT_FALSE(sim.core.setOutput(1, true, sim.runner.now())); // coolant (OUT1) on
     ASSERT_FALSE(sim.core.setOverride(150, sim.runner.now()));
     sim.runner.runFor(0.5);
     EXPECT_EQ(sim.port.unit().spindlePermille(), 300);

@@ -41,5 +41,27 @@ TEST(MachineStateIo, OutputsByNumberAndFunction)
     EXPECT_FALSE(s.outputOn(c, machine::OutputFunction::Laser)); // no output carries it
 }
 
+// What the window's lamps and the jog panel read, one input, output or axis at a time.
+TEST(MachineStateIo, InputsOutputsAndHomedAxesOneByOne)
+{
+    MachineState s;
+    s.inputs1 = 0x09; // IN0, IN3
+    s.inputs2 = 0x80; // IN15
+    for (int n = 0; n < 16; ++n)
+        EXPECT_EQ(s.inputHigh(n), n == 0 || n == 3 || n == 15) << "IN" << n;
+    EXPECT_FALSE(s.inputHigh(-1));
+    EXPECT_FALSE(s.inputHigh(16));
+    s.outputs = static_cast<std::uint8_t>(~0x0A & 0xFF); // bit1 OUT3, bit3 OUT2
+    for (int n = 0; n < 4; ++n)
+        EXPECT_EQ(s.outputIsOn(n), n == 2 || n == 3) << "OUT" << n;
+    EXPECT_FALSE(s.outputIsOn(4));
+    s.homedAxes = 0b0101; // X and Z
+    EXPECT_TRUE(s.axisHomed(0));
+    EXPECT_FALSE(s.axisHomed(1));
+    EXPECT_TRUE(s.axisHomed(2));
+    EXPECT_FALSE(s.axisHomed(3));
+    EXPECT_FALSE(s.axisHomed(4));
+}
+
 } // namespace
 } // namespace frezka::driver

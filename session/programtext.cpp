@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-namespace frezka::gui {
+namespace frezka::session {
 
 ProgramText::ProgramText(QByteArray data, const std::function<void(qint64, qint64)> &progress,
                          const std::atomic_bool *cancel)
@@ -66,4 +66,4 @@ QString ProgramText::comment(int line) const
     return parts.join(QStringLiteral("; "));
 }
 
-} // namespace frezka::gui
+} // namespace frezka::session

@@ -1,11 +1,40 @@
-#include "planneradapter.h"
+// The planned speed and line times of a unit program. See plannedspeed.h.
 
-#include <QCoreApplication>
-#include <QFileInfo>
+#include "plannedspeed.h"
 
+#include <algorithm>
 #include <cmath>
 
-namespace frezka::gui {
+namespace frezka::session {
+
+std::vector<SpeedSample> decimateSpeed(const std::vector<SpeedSample> &in, std::size_t maxPoints)
+{
+    if (in.size() <= maxPoints || maxPoints < 4)
+        return in;
+    std::vector<SpeedSample> out;
+    out.reserve(maxPoints);
+    const std::size_t buckets = maxPoints / 2;
+    const double per = double(in.size()) / double(buckets);
+    for (std::size_t b = 0; b < buckets; ++b) {
+        const auto from = std::size_t(double(b) * per);
+        const auto to = std::min(in.size(), std::size_t(double(b + 1) * per));
+        if (from >= to)
+            continue;
+        auto [lo, hi] = std::minmax_element(in.begin() + long(from), in.begin() + long(to),
+                                            [](const SpeedSample &a, const SpeedSample &c) {
+                                                return a.speedMmPerMin < c.speedMmPerMin;
+                                            });
+        if (lo->distanceMm <= hi->distanceMm) {
+            out.push_back(*lo);
+            if (hi != lo)
+                out.push_back(*hi);
+        } else {
+            out.push_back(*hi);
+            out.push_back(*lo);
+        }
+    }
+    return out;
+}
 
 std::vector<SpeedSample> plannedSpeed(const machine::UnitProgram &program,
                                       const machine::MachineConfig &config, bool speedModeVk)
@@ -43,8 +72,7 @@ std::vector<SpeedSample> plannedSpeed(const machine::UnitProgram &program,
     return out;
 }
 
-std::vector<float> plannedLineTimes(const machine::UnitProgram &program,
-                                    const machine::MachineConfig &config, bool speedModeVk,
+std::vector<float> plannedLineTimes(const machine::UnitProgram &program, bool speedModeVk,
                                     double totalS)
 {
     std::uint32_t maxLine = 0;
@@ -77,29 +105,7 @@ std::vector<float> plannedLineTimes(const machine::UnitProgram &program,
             last = atLine[i] * scale;
         out[i] = float(last);
     }
-    Q_UNUSED(config);
     return out;
 }
 
-AnalyseFn plannerAnalyser(const machine::MachineConfig &config, double feedOverride)
-{
-    return [config, feedOverride](LoadedProgram &program, const std::atomic_bool *) {
-        const session::PlanOutcome result = session::planProgram(
-            *program.toolpath, config, QFileInfo(program.path).fileName(), feedOverride);
-        program.errors.insert(program.errors.end(), result.errors.begin(), result.errors.end());
-        program.warnings.insert(program.warnings.end(), result.warnings.begin(),
-                                result.warnings.end());
-        if (!result.ok())
-            return;
-        program.estimatedS = result.stats.estimatedS;
-        // Decimated here, off the GUI thread (min and max of each bucket survive).
-        program.speed =
-            decimateSpeed(plannedSpeed(*result.program, config, result.stats.speedModeVk), 4000);
-        program.lineEndS = plannedLineTimes(*result.program, config, result.stats.speedModeVk,
-                                            result.stats.estimatedS);
-        program.unitProgram = result.program;
-        program.planStats = result.stats;
-    };
-}
-
-} // namespace frezka::gui
+} // namespace frezka::session

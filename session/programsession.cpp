@@ -1,3 +1,5 @@
+// The program's loading thread and its stages. See programsession.h.
+
 #include "programsession.h"
 
 #include <QCoreApplication>
@@ -5,7 +7,10 @@
 #include <QFileInfo>
 #include <QThread>
 
-namespace frezka::gui {
+#include <algorithm>
+#include <cmath>
+
+namespace frezka::session {
 namespace {
 
 QString stageName(int stage)
@@ -44,28 +49,16 @@ struct LoadJob
     std::shared_ptr<std::atomic_bool> cancel;
     std::shared_ptr<std::atomic_int> progress; // permille
     std::shared_ptr<std::atomic_int> stage;    // as ProgramSession::m_stage
-    InterpretFn interpret;
-    AnalyseFn analyse;
-    session::OffsetState offsets;
+    ViewBuilder buildView;
+    std::optional<machine::MachineConfig> profile;
+    double feedOverride = 1.0;
+    OffsetState offsets;
     std::array<double, 4> startMm{};
-    std::size_t maxSegments = 0;
-    bool glVertices = false;
 };
 
-// The view of an interpreted program: its scene, length and the entry of each source line.
-void showToolpath(const LoadJob &job, const gcode::Toolpath &tp, LoadedProgram &result)
+// The toolpath's length and the entry of each source line.
+void indexToolpath(const gcode::Toolpath &tp, LoadedProgram &result)
 {
-    std::atomic_int *progress = job.progress.get();
-    SceneOptions options;
-    options.maxSegments = job.maxSegments;
-    options.glVertices = job.glVertices;
-    auto scene = std::make_shared<ToolpathScene>(buildScene(
-        tp, options,
-        [&](std::size_t d, std::size_t t) {
-            progress->store(int(d * 1000 / std::max<std::size_t>(1, t)));
-        },
-        job.cancel.get()));
-    result.scene = scene;
     result.lengthMm = pathLength(tp);
     std::uint32_t maxLine = 0;
     for (std::size_t i = 0; i < tp.size(); ++i)
@@ -75,13 +68,35 @@ void showToolpath(const LoadJob &job, const gcode::Toolpath &tp, LoadedProgram &
         result.lineToEntry[tp.line(i)] = std::uint32_t(i);
 }
 
-// The worker thread's load, stage by stage: read, index the lines, interpret, show, analyse.
-// False when cancelled (nothing to report); else `result` and `failure` are what the window gets.
+// The plan for the profile: its errors and warnings, the unit program, the planned speed
+// (decimated here, off the front end's thread: min and max of each bucket survive) and the
+// planned time to each line for the ETA.
+void planLoaded(const LoadJob &job, LoadedProgram &result)
+{
+    const PlanOutcome plan = planProgram(*result.toolpath, *job.profile,
+                                         QFileInfo(job.path).fileName(), job.feedOverride);
+    result.errors.insert(result.errors.end(), plan.errors.begin(), plan.errors.end());
+    result.warnings.insert(result.warnings.end(), plan.warnings.begin(), plan.warnings.end());
+    if (!plan.ok())
+        return;
+    result.estimatedS = plan.stats.estimatedS;
+    result.speed =
+        decimateSpeed(plannedSpeed(*plan.program, *job.profile, plan.stats.speedModeVk), 4000);
+    result.lineEndS =
+        plannedLineTimes(*plan.program, plan.stats.speedModeVk, plan.stats.estimatedS);
+    result.unitProgram = plan.program;
+    result.planStats = plan.stats;
+}
+
+// The worker thread's load, stage by stage: read, index the lines, interpret, view, plan.
+// False when cancelled (nothing to report); else `result` and `failure` are what the front end
+// gets.
 bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
 {
     const std::atomic_bool *cancelFlag = job.cancel.get();
     std::atomic_int *progress = job.progress.get();
     std::atomic_int *stage = job.stage.get();
+    const auto fraction = [progress](double f) { progress->store(int(f * 1000)); };
     QFile file(job.path);
     if (!file.open(QIODevice::ReadOnly)) {
         failure = ProgramSession::tr("Cannot open %1: %2").arg(job.path, file.errorString());
@@ -89,42 +104,35 @@ bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
     }
     QByteArray data = file.readAll();
     stage->store(1);
-    auto text = std::make_shared<ProgramText>(
+    result.text = std::make_shared<ProgramText>(
         data, [&](qint64 d, qint64 t) { progress->store(int(d * 1000 / std::max<qint64>(1, t))); },
-        job.cancel.get());
-    result.text = text;
+        cancelFlag);
     if (cancelFlag->load())
         return false;
     stage->store(2);
     progress->store(0);
-    if (!job.interpret) {
-        result.errors.push_back(
-            {0, 0,
-             ProgramSession::tr(
-                 "This build has no G-code interpreter; the program cannot be checked.")});
-        return true;
-    }
     InterpretRequest req;
     req.text = data;
     req.fileName = QFileInfo(job.path).fileName();
     req.offsets = job.offsets;
     req.startMm = job.startMm;
-    req.cancel = job.cancel.get();
-    req.progress = [&](double f) { progress->store(int(f * 1000)); };
-    InterpretOutcome outcome = job.interpret(req);
+    req.cancel = cancelFlag;
+    req.progress = fraction;
+    InterpretOutcome outcome = interpretProgram(req);
     result.errors = std::move(outcome.errors);
-    if (cancelFlag->load())
-        return false;
-    if (outcome.toolpath) {
+    if (cancelFlag->load() || !outcome.toolpath)
+        return !cancelFlag->load();
+    indexToolpath(*outcome.toolpath, result);
+    if (job.buildView) {
         stage->store(3);
         progress->store(0);
-        showToolpath(job, *outcome.toolpath, result);
-        result.toolpath = std::move(outcome.toolpath);
-        if (result.errors.empty() && job.analyse) {
-            stage->store(4);
-            progress->store(0);
-            job.analyse(result, job.cancel.get());
-        }
+        result.view = job.buildView(*outcome.toolpath, fraction, cancelFlag);
+    }
+    result.toolpath = std::move(outcome.toolpath);
+    if (result.errors.empty() && job.profile && !cancelFlag->load()) {
+        stage->store(4);
+        progress->store(0);
+        planLoaded(job, result);
     }
     return !cancelFlag->load();
 }
@@ -173,6 +181,12 @@ void ProgramSession::cancel()
     ++m_generation;
 }
 
+void ProgramSession::setProfile(const machine::MachineConfig &config, double feedOverride)
+{
+    m_profile = config;
+    m_feedOverride = feedOverride;
+}
+
 void ProgramSession::reload()
 {
     if (!m_program.path.isEmpty())
@@ -190,12 +204,11 @@ void ProgramSession::load(const QString &path)
                       .cancel = m_cancel,
                       .progress = m_progress,
                       .stage = m_stage,
-                      .interpret = m_interpret,
-                      .analyse = m_analyse,
+                      .buildView = m_buildView,
+                      .profile = m_profile,
+                      .feedOverride = m_feedOverride,
                       .offsets = m_offsets,
-                      .startMm = m_startMm,
-                      .maxSegments = m_maxSegments,
-                      .glVertices = m_glVertices};
+                      .startMm = m_startMm};
     emit loadStarted(path);
 
     m_thread = QThread::create([=, this] {
@@ -233,4 +246,4 @@ void ProgramSession::finish(std::shared_ptr<LoadedProgram> result, QString failu
     emit loaded();
 }
 
-} // namespace frezka::gui
+} // namespace frezka::session

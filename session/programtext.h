@@ -9,7 +9,7 @@
 #include <functional>
 #include <vector>
 
-namespace frezka::gui {
+namespace frezka::session {
 
 class ProgramText
 {
@@ -33,4 +33,4 @@ private:
     std::vector<qint64> m_starts;
 };
 
-} // namespace frezka::gui
+} // namespace frezka::session

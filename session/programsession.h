@@ -1,18 +1,23 @@
 #pragma once
-// ProgramSession: the loaded program — its text, its toolpath, the display scene, the planned
-// speed profile and every error — and loading it in a worker thread so that even a
-// multi-million-line file never stalls the window. Progress is polled every 50 ms from an
-// atomic counter (no signal flood); the result arrives by a queued call.
+// ProgramSession: the loaded program — its text, its toolpath, its plan, every error and
+// warning — and loading it in a worker thread so that even a multi-million-line file never
+// stalls a front end. One load reads the file, indexes its lines, checks it (interpretProgram:
+// every error with line and column, from the work offsets and the machine's position), lets the
+// front end derive its view of the toolpath (the GUI's 3-D scene, setViewBuilder), and plans it
+// for the profile at the feed override (planProgram, with the planned speed and line times).
+// reload() does it all again: after the offsets, the profile or the machine's position changed.
+// Progress is polled every 100 ms from an atomic counter (no signal flood); the result arrives
+// by a queued call. Qt Core only; the GUI renders program() and its view.
 
-#include "programtext.h"
-#include "speedplot.h"
-#include "toolpathscene.h"
+#include "session/plannedspeed.h"
+#include "session/programplanner.h"
+#include "session/programtext.h"
+#include "session/workoffsets.h"
 
 #include "gcode/toolpath.h"
+#include "machine/machineconfig.h"
 #include "machine/planner.h"
 #include "machine/unitprogram.h"
-#include "session/programplanner.h"
-#include "session/workoffsets.h"
 
 #include <QObject>
 #include <QString>
@@ -22,24 +27,34 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <optional>
 
 class QThread;
 
-namespace frezka::gui {
+namespace frezka::session {
 
-using session::ProgramMessage;
+// What a front end derives from the toolpath while the program loads (the GUI: its scene).
+struct ProgramView
+{
+    virtual ~ProgramView() = default;
+};
+
+// Builds the view in the loading thread: progress(fraction 0..1); cancel aborts.
+using ViewBuilder = std::function<std::shared_ptr<const ProgramView>(
+    const gcode::Toolpath &, const std::function<void(double)> &progress,
+    const std::atomic_bool *cancel)>;
 
 struct LoadedProgram
 {
     QString path;
     std::shared_ptr<const ProgramText> text;
     std::shared_ptr<const gcode::Toolpath> toolpath;
-    std::shared_ptr<const ToolpathScene> scene;
+    std::shared_ptr<const ProgramView> view;                 // the front end's, or null
     std::vector<ProgramMessage> errors;                      // non-empty: nothing runs
     std::vector<ProgramMessage> warnings;                    // runs, but the user should know
     std::shared_ptr<const machine::UnitProgram> unitProgram; // planned for the active profile
     machine::PlanStats planStats;
-    std::vector<SpeedSample> speed; // planned speed along the path
+    std::vector<SpeedSample> speed; // planned speed along the path (at most 4000 samples)
     double estimatedS = -1;         // planner's exact duration, < 0 = unknown
     double lengthMm = 0;
     bool ok() const { return errors.empty() && toolpath != nullptr; }
@@ -53,14 +68,6 @@ struct LoadedProgram
     double remainingS(std::uint32_t line) const;
 };
 
-using session::InterpretOutcome;
-using session::InterpretRequest;
-
-// The interpreter step, set by whoever links the G-code interpreter (defaultInterpreter()).
-using InterpretFn = std::function<InterpretOutcome(const InterpretRequest &)>;
-// Analysis after interpretation (planner: speed profile, duration, soft-limit check).
-using AnalyseFn = std::function<void(LoadedProgram &, const std::atomic_bool *cancel)>;
-
 class ProgramSession : public QObject
 {
     Q_OBJECT
@@ -69,18 +76,19 @@ public:
     explicit ProgramSession(QObject *parent = nullptr);
     ~ProgramSession() override;
 
-    void setInterpreter(InterpretFn fn) { m_interpret = std::move(fn); }
-    void setAnalyser(AnalyseFn fn) { m_analyse = std::move(fn); }
-    void setMaxSceneSegments(std::size_t n) { m_maxSegments = n; }
-    void setSceneGlVertices(bool on) { m_glVertices = on; }
-    void setWorkOffsets(const session::OffsetState &offsets) { m_offsets = offsets; }
+    // Plans every load for this profile at this feed override (fraction); without a profile a
+    // program is only checked.
+    void setProfile(const machine::MachineConfig &config, double feedOverride = 1.0);
+    void setViewBuilder(ViewBuilder build) { m_buildView = std::move(build); }
+    void setWorkOffsets(const OffsetState &offsets) { m_offsets = offsets; }
     // Machine position the next interpretation starts from (mm X Y Z A).
     void setStartPosition(const std::array<double, 4> &mm) { m_startMm = mm; }
-    const session::OffsetState &workOffsets() const { return m_offsets; }
+    const OffsetState &workOffsets() const { return m_offsets; }
 
     // Loads (replacing any load in progress). loaded() or loadFailed() follows.
     void load(const QString &path);
-    // Re-interprets the current file (after a work-offset change).
+    // Loads the current file again: checked from the offsets and position, planned for the
+    // profile as they are now.
     void reload();
     void cancel();
     bool isLoading() const { return m_thread != nullptr; }
@@ -91,24 +99,23 @@ signals:
     void loadStarted(const QString &path);
     void loadProgress(double fraction, const QString &stage);
     void loaded();                       // program() holds the result (maybe with errors)
-    void loadFailed(const QString &why); // file unreadable, cancelled
+    void loadFailed(const QString &why); // file unreadable
 
 private:
     void finish(std::shared_ptr<LoadedProgram> result, QString failure);
 
-    InterpretFn m_interpret;
-    AnalyseFn m_analyse;
-    std::size_t m_maxSegments = 1'500'000;
-    bool m_glVertices = false;
-    session::OffsetState m_offsets;
+    ViewBuilder m_buildView;
+    std::optional<machine::MachineConfig> m_profile;
+    double m_feedOverride = 1.0;
+    OffsetState m_offsets;
     std::array<double, 4> m_startMm{};
     LoadedProgram m_program;
     QThread *m_thread = nullptr;
     std::shared_ptr<std::atomic_bool> m_cancel;
     std::shared_ptr<std::atomic_int> m_progress; // permille
-    std::shared_ptr<std::atomic_int> m_stage;    // 0 read, 1 index, 2 interpret, 3 scene, 4 plan
+    std::shared_ptr<std::atomic_int> m_stage;    // 0 read, 1 index, 2 interpret, 3 view, 4 plan
     QTimer m_poll;
     quint64 m_generation = 0;
 };
 
-} // namespace frezka::gui
+} // namespace frezka::session
