@@ -104,8 +104,11 @@ void RunPlanner::boundCap(std::size_t k)
 bool RunPlanner::softStopAllowed(std::size_t k) const
 {
     for (int i = 0; i < 4; ++i) {
-        if (kMinSpeed * jumpPerUnit(k, i) >
-            m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS)
+        // As vertexCaps: a speed step of rounding size is none (collinear vectors of different
+        // lengths give 1e-19, and an axis whose jump limit is 0 would rest there).
+        const double per = jumpPerUnit(k, i);
+        if (per > 1e-15 &&
+            kMinSpeed * per > m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS)
             return false;
     }
     return true;

@@ -2,6 +2,7 @@
 // speeds the pace shares, and flat caps where B commands would cost the link as much as the
 // vectors (docs/planner.md §4). Part of RunPlanner (chainplanner_internal.h).
 #include "machine/chainplanner_internal.h"
+#include "machine/modalchoice.h"
 
 #include <algorithm>
 #include <cmath>
@@ -99,6 +100,138 @@ void RunPlanner::sharePacedSpeeds(const std::vector<bool> &lowered)
             r.vMm = std::min(r.vMm, static_cast<double>(level) / r.f); // the bound follows
         }
     }
+}
+
+// Where V or A changes inside a chain, the packets stop while the change's own round trip goes
+// out (V and A cannot travel in a packet, docs/gve-protocol.md §2.2), then the packet with the
+// next vectors follows: meanwhile the unit runs on what it holds (the job streams before it
+// polls, and the pace's margins pay for the polls, §4). At a chain's start it holds only what went
+// out since the rest, so a chain of a few short vectors with a V or an A between them ran dry at
+// nearly every change (property seed 4, GVE84 at 9.6 ms: V4925, V9230 and V3220 over three vectors
+// of a Z plunge, 24 starvation stops in the job). The walk follows the motion the unit holds (each
+// vector at least its cruise time, units / V; the link's pace keeps it at least its wire time) and
+// where a change would find too little, the stretch before it runs slower, by just the time
+// missing; the queue holds at most its capacity of vectors. The cost is bounded by the round trips
+// per change, and only where a stretch is shorter than them.
+void RunPlanner::paceModalChanges()
+{
+    if (!m_options.wireLimited || m_config.link.baud <= 0 ||
+        m_options.strategy != PlanStrategy::Full)
+        return;
+    const std::size_t n = m_d.size();
+    const std::size_t queue = m_link.queueVectors();
+    std::vector<double> timeS(n + 1, 0.0); // prefix sums of the vectors' cruise times
+    auto cruise = [this](std::size_t j) {
+        return m_d[j].units / static_cast<double>(std::max<std::int64_t>(m_d[j].speed, 1));
+    };
+    double held = 0; // motion the unit holds when stretch [first, k) has gone out
+    std::size_t first = 0;
+    for (std::size_t k = 0; k <= n; ++k) {
+        if (k < n)
+            timeS[k + 1] = timeS[k] + cruise(k);
+        const bool chainStart = k < n && k > 0 && !softStopAllowed(k - 1);
+        const bool changes = k < n && k > 0 &&
+                             (m_d[k].speed != m_d[k - 1].speed || m_d[k].accel != m_d[k - 1].accel);
+        if (k > first && (k == n || chainStart || changes)) {
+            // Stretch [first, k) has gone out: the unit gained its motion less its wire time,
+            // and the packet cut short at the change costs a round trip of its own.
+            double wire = m_link.roundTripS();
+            for (std::size_t j = first; j < k; ++j)
+                wire += m_link.bareVectorWireS(m_d[j].wireBytes);
+            const std::size_t from = k > queue ? k - queue : 0;
+            held = std::min(held + (timeS[k] - timeS[first]) - wire, timeS[k] - timeS[from]);
+            held = std::max(held, 0.0);
+            if (k < n && changes && !chainStart) {
+                const int commands = (m_d[k].speed != m_d[k - 1].speed ? 1 : 0) +
+                                     (m_d[k].accel != m_d[k - 1].accel ? 1 : 0);
+                // The packet after the change must arrive (its B and C on the wire and a round
+                // trip), and the driver sizes it to half of what the unit holds at most
+                // (driver/link/job.cpp, sendPacket): its first B and C must fit in that.
+                const double wireBc = (m_d[k].wireBytes + kBrakeBytes) * 10.0 / m_config.link.baud;
+                const double lead = std::max(2 * std::max(kPacedWireS, wireBc),
+                                             m_link.nonPacketS(m_d[k].wireBytes + kBrakeBytes));
+                const double need = commands * m_link.modalChangeS() + lead;
+                if (held < need) {
+                    // Either the stretch before runs slower by the time missing, or the two
+                    // stretches share one V and A (no change to send): whichever costs less.
+                    if (mergeCostS(first, k) <= need - held) {
+                        mergeStretches(first, k);
+                        for (std::size_t j = first; j <= k; ++j)
+                            timeS[j + 1] = timeS[j] + cruise(j);
+                        continue; // one stretch now, going on past k
+                    }
+                    held += slowStretch(first, k, need - held);
+                    for (std::size_t j = first; j < k; ++j)
+                        timeS[j + 1] = timeS[j] + cruise(j);
+                }
+                held = std::max(0.0, held - commands * m_link.modalChangeS()); // spent on them
+            }
+            first = k;
+        }
+        if (chainStart)
+            held = 0;
+    }
+}
+
+// The end of the stretch that begins at k: the vectors after it with its V and A, within the
+// chain.
+std::size_t RunPlanner::stretchEnd(std::size_t k) const
+{
+    std::size_t end = k + 1;
+    while (end < m_d.size() && softStopAllowed(end - 1) && m_d[end].speed == m_d[k].speed &&
+           m_d[end].accel == m_d[k].accel)
+        ++end;
+    return end;
+}
+
+// What running the stretches [first, k) and the one from k at one V and one A (the lesser of
+// each) costs in time: cruise at the lower V, and for a lower A the estimate of chooseAccels
+// (each vector as if all acceleration, t ~ 1/sqrt(A)), an over-estimate.
+double RunPlanner::mergeCostS(std::size_t first, std::size_t k) const
+{
+    const std::size_t end = stretchEnd(k);
+    const double v = static_cast<double>(std::min(m_d[first].speed, m_d[k].speed));
+    const double a = static_cast<double>(std::min(m_d[first].accel, m_d[k].accel));
+    double cost = 0;
+    for (std::size_t j = first; j < end; ++j) {
+        const Derived &r = m_d[j];
+        const double own = r.units / static_cast<double>(r.speed);
+        const double slower = r.units / v;
+        cost += slower * std::sqrt(static_cast<double>(r.accel) / a) - own;
+    }
+    return cost;
+}
+
+void RunPlanner::mergeStretches(std::size_t first, std::size_t k)
+{
+    const std::size_t end = stretchEnd(k);
+    const std::int64_t v = std::min(m_d[first].speed, m_d[k].speed);
+    const std::int64_t a = std::min(m_d[first].accel, m_d[k].accel);
+    for (std::size_t j = first; j < end; ++j) {
+        m_d[j].speed = v;
+        if (m_d[j].accel != a)
+            setAccel(m_d[j], a, m_options);
+    }
+}
+
+// Lowers the V of vectors [first, last) so that they last `missingS` longer at cruise; returns
+// the time gained (less where V reaches the unit's smallest speed).
+double RunPlanner::slowStretch(std::size_t first, std::size_t last, double missingS)
+{
+    double units = 0, now = 0;
+    for (std::size_t j = first; j < last; ++j) {
+        units += m_d[j].units;
+        now += m_d[j].units / static_cast<double>(m_d[j].speed);
+    }
+    const std::int64_t level = std::max<std::int64_t>(
+        kMinSpeed, static_cast<std::int64_t>(std::floor(units / (now + missingS))));
+    double gained = -now;
+    for (std::size_t j = first; j < last; ++j) {
+        Derived &r = m_d[j];
+        r.speed = std::min(r.speed, level);
+        gained += r.units / static_cast<double>(r.speed);
+    }
+    return std::max(0.0, gained);
 }
 
 // Where the vectors are about as short as their bytes on the wire, a B that changes at every

@@ -69,6 +69,8 @@ public:
     // Wire time of a vector of `bytes` in a packet (or alone, with packets off), with its share
     // of the packet's round trip; seconds.
     double vectorWireS(double bytes) const;
+    // The same without the pace's margins: what the vector takes of the link on average.
+    double bareVectorWireS(double bytes) const;
     // The vectors of a packet that costs one round trip, as the pace counts them.
     double packetVectors() const;
     double roundTripS() const { return 2 * m_config.link.latencyMs / 1000.0 + kReplyS; }

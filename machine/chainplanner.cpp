@@ -103,6 +103,7 @@ void RunPlanner::planOnce()
     m_out.feedCapLines = m_feedCapLines;
     m_d = m_derived;
     wirePace();
+    paceModalChanges();
     const std::size_t n = m_moves.size();
     m_capUnits.assign(n, 0);
     m_capBound.assign(n, 0);

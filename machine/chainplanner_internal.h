@@ -35,6 +35,8 @@ public:
 private:
     static constexpr int kWirePasses = 5;         // plans again at most this often
     static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
+    static constexpr double kBrakeBytes = 12;     // paceModalChanges: a B command's bytes, about
+    static constexpr double kPacedWireS = 0.005;  // ... the driver's least packet budget
 
     // chainplanner.cpp
     void planOnce();
@@ -57,6 +59,11 @@ private:
     // chainpace.cpp
     void wirePace();
     void sharePacedSpeeds(const std::vector<bool> &lowered);
+    void paceModalChanges();
+    double slowStretch(std::size_t first, std::size_t last, double missingS);
+    std::size_t stretchEnd(std::size_t k) const;
+    double mergeCostS(std::size_t first, std::size_t k) const;
+    void mergeStretches(std::size_t first, std::size_t k);
     void flattenTightCaps();
 
     const std::vector<Move> &m_moves;

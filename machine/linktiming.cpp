@@ -40,6 +40,13 @@ double LinkTiming::vectorWireS(double bytes) const
     return std::max(wire * m_options.wireMargin + roundTripS() / packetVectors(), steady);
 }
 
+double LinkTiming::bareVectorWireS(double bytes) const
+{
+    if (!m_config.link.packets)
+        return nonPacketS(bytes);
+    return bytes * 10.0 / m_config.link.baud + roundTripS() / packetVectors();
+}
+
 double LinkTiming::nonPacketS(double bytes) const
 {
     if (m_config.link.baud <= 0)

@@ -167,14 +167,17 @@ void chooseAccels(std::vector<Derived> &d, const PlanOptions &options, const Lin
                 least = lo, most = hi, rootSum = s, timeSum = t, ++end;
             }
         }
-        for (; k < end; ++k) {
-            Derived &r = d[k];
-            r.accel = least;
-            const double whole = std::floor(r.units + 1e-9);
-            const double usable = std::max(whole - options.brakeMarginSteps, whole / 2);
-            r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * r.accel * 1000.0 * usable));
-        }
+        for (; k < end; ++k)
+            setAccel(d[k], least, options);
     }
+}
+
+void setAccel(Derived &r, std::int64_t accel, const PlanOptions &options)
+{
+    r.accel = accel;
+    const double whole = std::floor(r.units + 1e-9);
+    const double usable = std::max(whole - options.brakeMarginSteps, whole / 2);
+    r.twoAU = static_cast<std::int64_t>(std::floor(2.0 * r.accel * 1000.0 * usable));
 }
 
 bool quick(const std::vector<Derived> &d, std::size_t k, const PlanOptions &options)

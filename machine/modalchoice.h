@@ -16,6 +16,8 @@ void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const Lin
 // share one A while their caps lie within PlanOptions::accelTolerance, or while the time the
 // lower A costs them stays below what an A command costs the link.
 void chooseAccels(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link);
+// Sets a vector's A (thousands of pulses/s²) and the usable 2·A·distance that follows from it.
+void setAccel(Derived &r, std::int64_t accel, const PlanOptions &options);
 // The A cap of vector k, thousands of pulses/s².
 std::int64_t accelCap(const std::vector<Derived> &d, std::size_t k, const PlanOptions &options);
 // True when vector k passes in under PlanOptions::accelKeepS at its V.

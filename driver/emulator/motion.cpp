@@ -184,8 +184,11 @@ void MotionEngine::step(double dt)
             return;
         m_started = true;
         const MotionVector &head = m_queue.front();
-        if (!head.isLine && !head.isHoming && m_prevEndedDry)
+        if (!head.isLine && !head.isHoming && m_prevEndedDry) {
             ++m_stats.starvationStops;
+            if (m_stats.starvationAtS.size() < MotionStats::kStarvationTimes)
+                m_stats.starvationAtS.push_back(m_now);
+        }
         m_prevEndedDry = false;
         record();
         if (onVectorStart)

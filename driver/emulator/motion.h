@@ -53,10 +53,12 @@ struct TracePoint
 
 struct MotionStats
 {
+    static constexpr std::size_t kStarvationTimes = 256;
     std::int64_t vectorsExecuted = 0;      // L and C vectors completed (homing travel not counted)
     std::int64_t brakeViolations = 0;      // vectors that arrived faster than their exit speed
     double worstBrakeExcessPulsesPerS = 0; // largest arrival speed above the allowed exit speed
     std::int64_t starvationStops = 0;      // C stopped because the queue ran dry, then a C followed
+    std::vector<double> starvationAtS;     // when the first kStarvationTimes of them restarted
     std::array<double, kMaxAxes> peakAxisSpeedPulsesPerS{};
     double movingTimeS = 0;       // time with a vector executing (dwell excluded)
     std::int64_t axisOverMax = 0; // vectors in which an axis ran above its maximum (setAxisMax)

@@ -176,7 +176,9 @@ void Job::sendPacket(double now)
             break;
         Command c = toCommand(cmds[end]);
         const std::size_t size = encode(c, link.checksums()).size();
-        if (paced && !packet.empty() && link.wireTime(bytes + size) > budget)
+        // At least one vector whatever the budget: a packet of its B alone was taken for a full
+        // queue, and the job waited a poll interval while the unit ran dry (property seed 100).
+        if (paced && vectors > 0 && link.wireTime(bytes + size) > budget)
             break;
         if (op == UnitOp::Vector &&
             m_pace.queuedAfter(link.wireTime(bytes + size)) + vectors + 1 > capacity)

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+#include <set>
 
 namespace frezka::machine::test {
 
@@ -450,6 +451,32 @@ JobOutcome runJob(const RandomJob &job)
     for (int i = 0; i < 4; ++i)
         o.exact = o.exact && pos[i] == end[i];
     if (std::getenv("FREZKA_PROPERTY_TRACE")) {
+        // Restarts after a planned rest begin where the plan drains the queue; the others are
+        // the starvation stops.
+        std::set<Steps4> restPoints;
+        Steps4 at{};
+        for (const UnitCommand &c : p.program.commands) {
+            if (c.op == UnitOp::Vector || c.op == UnitOp::Line)
+                at = c.endSteps;
+            else if (c.op > UnitOp::Spindle)
+                restPoints.insert(at);
+        }
+        const auto &trace = port.unit().trace();
+        for (double t : port.unit().stats().motion.starvationAtS) {
+            auto it = std::upper_bound(
+                trace.begin(), trace.end(), t,
+                [](double v, const emulator::TracePoint &p) { return v < p.timeS; });
+            Steps4 stood{};
+            if (it != trace.begin())
+                for (int i = 0; i < 4; ++i)
+                    stood[i] = std::prev(it)->position[static_cast<std::size_t>(i)];
+            if (!restPoints.contains(stood))
+                std::fprintf(
+                    stderr,
+                    "%.6f STARVATION: the unit restarts after running dry at %lld,%lld,%lld\n", t,
+                    static_cast<long long>(stood[0]), static_cast<long long>(stood[1]),
+                    static_cast<long long>(stood[2]));
+        }
         for (const emulator::TracePoint &t : port.unit().trace()) // where the machine stood
             if (t.pathSpeedPulsesPerS == 0)
                 std::fprintf(stderr, "%.6f unit at rest at %lld,%lld,%lld\n", t.timeS,

@@ -184,6 +184,38 @@ TEST(StreamPace, AStairRasterSharesOneAccelerationAndNeverRunsDry)
     expectKeepsThePace(job);
 }
 
+// Property seed 4's failure, built by hand: on a GVE84 at 38 400 Bd and 9.6 ms, a Z axis of
+// 1 784 steps/mm whose jump limit is 0 plunges and rises in waves of three or four segments
+// (every reversal a rest). The link's pace gave each segment its own V: a chain of three
+// vectors sent V, packet, V, packet, V, packet, and the unit, holding one short vector each
+// time, ran dry at nearly every change (24 stops in the job). The stretch before a change now
+// runs slower by the time the change costs, or shares the next stretch's V.
+TEST(StreamPace, AShortChainWithASpeedPerVectorNeverRunsDry)
+{
+    RandomJob job;
+    job.config = frezka::machine::defaultMachineConfig(frezka::protocol::Variant::Gve84);
+    job.config.unit.maxPulseRate = 50000;
+    job.config.motion.speedMode = frezka::machine::SpeedModeChoice::Vk;
+    frezka::machine::AxisConfig &z = job.config.axes[2];
+    z.stepsPerMm = 1784.242;
+    z.maxSpeedMmPerMin = 1292;
+    z.accelMmPerS2 = 1408.78;
+    z.maxJumpMmPerS = 0;
+    job.config.link.baud = 38400;
+    job.config.link.latencyMs = 9.6;
+    job.wire.baud = job.config.link.baud;
+    job.wire.latencyS = job.config.link.latencyMs / 1000.0;
+    const double wave[] = {-12.0695, -12.2474, -12.3710, -12.4131, -12.3645, -12.2359, -12.0555,
+                           -12.0142, -12.2008, -12.3432, -12.4103, -12.3873, -12.2793, -12.1099};
+    std::string program = "G21 G90 G17 G94 G64\nG0 X40 Y30 Z-12\nF1331\n";
+    for (int i = 0; i < 20; ++i)
+        for (const double zAt : wave)
+            program += "G1 Z" + std::to_string(zAt - 0.002 * i) + "\n";
+    program += "G0 Z-1\nM2\n";
+    job.program = program;
+    expectKeepsThePace(job);
+}
+
 // The operator's feed override above 100 % (XM) runs the unit faster than the plan: the driver's
 // estimate of what the unit holds must follow it, or the unit runs dry. A raster of 3 mm
 // segments at F3000 on a GVE64 at 9 600 Bd: 16 vectors/s at 100 %, within the wire's 50 at

@@ -83,3 +83,35 @@ TEST(SlowLine, TheOptionsBaudWinsOverTheProfiles)
     fromProfile.core.setConfig(SlowLine::withBaud(fromProfile.config, 19200));
     EXPECT_EQ(fromProfile.core.engine().options().baud, 19200);
 }
+
+// Where the unit holds little, the job sizes a packet to half of what it holds. A packet whose
+// first command is a B then ended before its C, the job took "no C in the packet" for a full
+// queue and waited a poll interval, and the unit ran dry (property seed 100, 38 400 Bd at
+// 0.5 ms: a V before each short vector; here 2 stops). Each vector lasts 15-45 ms, longer than its
+// V, its packet and a poll on this line take: the unit never runs dry.
+TEST(SlowLine, APacketAfterASpeedChangeCarriesItsVector)
+{
+    SlowLine line(Variant::Gve64, 38400, 0.0005);
+    line.runner.open();
+    ASSERT_TRUE(line.runner.runUntil(
+        [&] { return line.core.state().mode != MachineMode::Connecting; }, 60));
+    ASSERT_EQ(line.core.state().mode, MachineMode::Idle);
+    using machine::UnitOp;
+    ProgramBuilder b(3);
+    b.add(UnitOp::Accel, 200, {});
+    std::int64_t steps = 0;
+    for (int i = 0; i < 60; ++i) {
+        const std::int64_t speed = 2000 + 40 * (i % 7); // pulses/s: a V of its own each time
+        const int length = static_cast<int>(speed * (0.015 + 0.0005 * i)); // 15-45 ms
+        b.add(UnitOp::Speed, speed, {});
+        b.add(UnitOp::Brake, 1000, {});
+        b.add(UnitOp::Vector, 0, {length, 0, 0, 0});
+        steps += length;
+    }
+    b.add(UnitOp::ProgramEnd, 0, {});
+    ASSERT_FALSE(line.core.run(b.program, line.runner.now()));
+    ASSERT_TRUE(line.runner.runUntil([&] { return !line.finished.empty(); }, 600));
+    EXPECT_TRUE(line.finished.front()) << (line.errors.empty() ? "" : line.errors.front());
+    EXPECT_EQ(line.port.unit().position()[0], steps);
+    EXPECT_EQ(line.port.unit().stats().motion.starvationStops, 0);
+}
