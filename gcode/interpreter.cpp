@@ -51,6 +51,21 @@ bool Interpreter::failAt(ErrorCode code, std::uint32_t pos, std::string detail, 
     return false;
 }
 
+void Interpreter::warnAt(ErrorCode code, std::uint32_t pos, std::string detail)
+{
+    warn(code, m_line, m_parser.columnAt(pos), std::move(detail));
+}
+
+void Interpreter::warn(ErrorCode code, std::uint32_t line, std::uint32_t column, std::string detail)
+{
+    const int limit = severity(code) == Severity::Note ? 1 : 10;
+    if (m_warnings.size() >= m_options.maxWarnings || ++m_warningCount[int(code)] > limit) {
+        ++m_warningsNotShown;
+        return;
+    }
+    m_warnings.push_back({code, line, column, std::move(detail)});
+}
+
 double Interpreter::offset(int axis) const
 {
     return m_origin[m_coord][axis] + m_g92[axis] + (axis == 2 ? m_toolZ : 0.0);
@@ -143,6 +158,11 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
             result.errors.push_back({ErrorCode::FileEndedWithoutEnd, std::max(m_line, 1u), 1, {}});
         }
     }
+    std::stable_sort(m_warnings.begin(), m_warnings.end(), [](const Error &a, const Error &b) {
+        return a.line != b.line ? a.line < b.line : a.column < b.column;
+    });
+    result.warnings = std::move(m_warnings);
+    result.warningsNotShown = m_warningsNotShown;
     result.linesRead = m_line;
     result.ended = m_ended;
     result.toolpath = std::move(m_toolpath);

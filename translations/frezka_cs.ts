@@ -1800,6 +1800,30 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</source>
         <translation>použití: frezka-cli check SOUBOR [--rapid MM_ZA_MIN] [--machine PROFIL]</translation>
     </message>
+    <message>
+        <source>F%1 was read in %2 (line %3) before this change of units: the feed moves after it run at %1 %2 (%4 %5), as in LinuxCNC, not at %1 %5 (%6 %2)</source>
+        <translation>F%1 bylo načteno v %2 (řádek %3) před touto změnou jednotek: pracovní posuvy za ní jedou %1 %2 (%4 %5) jako v LinuxCNC, ne %1 %5 (%6 %2)</translation>
+    </message>
+    <message>
+        <source>LinuxCNC reads F before G20/G21, also on the same line; if %1 %5 was meant, give F again after the change of units.</source>
+        <translation>LinuxCNC čte F před G20/G21, i na tomtéž řádku; bylo-li míněno %1 %5, zadejte F znovu až po změně jednotek.</translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>varování: </translation>
+    </message>
+    <message>
+        <source>note: </source>
+        <translation>poznámka: </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n more warning(s) not shown</source>
+        <translation>
+            <numerusform>%1: %n další varování nezobrazeno</numerusform>
+            <numerusform>%1: %n další varování nezobrazena</numerusform>
+            <numerusform>%1: %n dalších varování nezobrazeno</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

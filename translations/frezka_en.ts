@@ -1799,6 +1799,29 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</source>
         <translation>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</translation>
     </message>
+    <message>
+        <source>F%1 was read in %2 (line %3) before this change of units: the feed moves after it run at %1 %2 (%4 %5), as in LinuxCNC, not at %1 %5 (%6 %2)</source>
+        <translation>F%1 was read in %2 (line %3) before this change of units: the feed moves after it run at %1 %2 (%4 %5), as in LinuxCNC, not at %1 %5 (%6 %2)</translation>
+    </message>
+    <message>
+        <source>LinuxCNC reads F before G20/G21, also on the same line; if %1 %5 was meant, give F again after the change of units.</source>
+        <translation>LinuxCNC reads F before G20/G21, also on the same line; if %1 %5 was meant, give F again after the change of units.</translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>warning: </translation>
+    </message>
+    <message>
+        <source>note: </source>
+        <translation>note: </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n more warning(s) not shown</source>
+        <translation>
+            <numerusform>%1: %n more warning not shown</numerusform>
+            <numerusform>%1: %n more warnings not shown</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

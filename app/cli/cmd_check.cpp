@@ -110,6 +110,7 @@ int runCheck(const QStringList &args)
     gcode::Options options;
     options.collectAllErrors = true;
     const gcode::Result result = gcode::interpretFile(file.toStdString(), options);
+    cli::printGcodeWarnings(file, result);
     if (!result.ok()) {
         for (const gcode::Error &e : result.errors)
             cli::err(gcode::formatError(file, e) + QLatin1Char('\n'));

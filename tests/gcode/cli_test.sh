@@ -39,6 +39,12 @@ grep -q "moves: 19 (rapid 5, feed 10, arc 4, probe 0), dwells: 0" "$tmp/out" || 
 grep -q "bounds (machine, mm): X 0.0000 .. 30.0000, Y 0.0000 .. 25.0000, Z -1.0000 .. 5.0000" \
     "$tmp/out" || fail "bounds: $(cat "$tmp/out")"
 
+# warnings go to stderr as FILE:LINE:COL: warning: ..., and the program still checks OK.
+"$cli" check "$data/good/units_feed_spindle.nc" >"$tmp/out" 2>"$tmp/err" || fail "check warnings exit $?"
+grep -q "units_feed_spindle.nc:5:1: warning: F6 was read in mm/min (line 4) before this change of units" \
+    "$tmp/err" || fail "units warning: $(cat "$tmp/err")"
+grep -q "units_feed_spindle.nc: OK" "$tmp/out" || fail "check with warnings: $(cat "$tmp/out")"
+
 # a missing file and a usage error
 "$cli" check "$tmp/missing.nc" 2>"$tmp/err"
 [ $? -eq 1 ] || fail "missing file must exit 1"

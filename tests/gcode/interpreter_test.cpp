@@ -175,3 +175,50 @@ TEST(Interpreter, StartsFromTheGivenMachineStateOptions)
     EXPECT_EQ(r.toolpath.end(0), (Point4{100, 2, 3, 0}));
     EXPECT_EQ(r.toolpath.end(1), (Point4{0, 2, 3, 0}));
 }
+
+// LinuxCNC executes F before G20/G21 and its canon keeps the physical feed across a units change
+// (rs274: SET_FEED_RATE(6.0000) in mm, then USE_LENGTH_UNITS(INCHES)); the user is warned at the
+// units change, with both readings, when a feed move then runs on the old F.
+TEST(Interpreter, FeedKeepsItsRateAcrossAUnitsChangeWithAWarning)
+{
+    const Result r = run("G21\nF6\nG20\nG1 X1\nM2\n");
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    EXPECT_DOUBLE_EQ(r.toolpath.feedMmPerMin(0), 6); // not 6 in/min = 152.4 mm/min
+    ASSERT_EQ(r.warnings.size(), 1u);
+    const Error &w = r.warnings[0];
+    EXPECT_EQ(w.code, ErrorCode::FeedUnitsChanged);
+    EXPECT_EQ(severity(w.code), Severity::Warning);
+    EXPECT_EQ(w.line, 3u);
+    EXPECT_EQ(w.column, 1u);
+    EXPECT_EQ(englishMessage(w),
+              "F6 was read in mm/min (line 2) before this change of units: the feed moves after "
+              "it run at 6 mm/min (0.2362 in/min), as in LinuxCNC, not at 6 in/min (152.4 "
+              "mm/min). LinuxCNC reads F before G20/G21, also on the same line; if 6 in/min was "
+              "meant, give F again after the change of units.");
+}
+
+TEST(Interpreter, FeedOnTheLineOfAUnitsChangeIsReadInTheOldUnits)
+{
+    const Result r = run("G1 X1 G20 F6\nM2\n");
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    EXPECT_DOUBLE_EQ(r.toolpath.feedMmPerMin(0), 6);
+    EXPECT_EQ(r.toolpath.end(0).x, 25.4);
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_EQ(r.warnings[0].line, 1u);
+    EXPECT_EQ(r.warnings[0].column, 7u); // the G20
+    // #<_feed> reads the F as programmed, as in rs274.
+    const Result p = run("G21 F6\nG20\nG1 X#<_feed>\nM2\n");
+    ASSERT_TRUE(p.ok());
+    EXPECT_DOUBLE_EQ(p.toolpath.end(0).x, 6 * 25.4);
+}
+
+TEST(Interpreter, FeedRestatedAfterAUnitsChangeGivesNoWarning)
+{
+    const Result r = run("G21 F6\nG20\nF6\nG1 X1\nG21\nG20\nG1 X2\nM2\n");
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    EXPECT_DOUBLE_EQ(r.toolpath.feedMmPerMin(0), 152.4);
+    EXPECT_DOUBLE_EQ(r.toolpath.feedMmPerMin(1), 152.4);
+    EXPECT_TRUE(r.warnings.empty());
+    // Rapids alone need no feed: no warning either.
+    EXPECT_TRUE(run("G21 F6\nG20\nG0 X1\nM2\n").warnings.empty());
+}
