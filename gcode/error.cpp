@@ -59,6 +59,22 @@ constexpr ErrorInfo kErrors[] = {
     {ErrorCode::LineTooLong, "LineTooLong",
      QT_TRANSLATE_NOOP("frezka::gcode", "Line is too long (%1 characters)"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Split the line; at most 65535 characters are allowed.")},
+    {ErrorCode::GrblHoming, "GrblHoming",
+     QT_TRANSLATE_NOOP("frezka::gcode", "$H is grbl's homing command, not G-code"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Home the machine from Frezka (Home all) before starting the program, and "
+                       "delete this line.")},
+    {ErrorCode::GrblCommand, "GrblCommand",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 is a grbl system command, not G-code"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Delete the line; grbl's $ settings and commands have no meaning here (set "
+                       "the machine up in Frezka's machine profile, home and jog from Frezka).")},
+    {ErrorCode::SlashComment, "SlashComment",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "'//' comments are not RS274/NGC G-code (they come from other "
+                       "controllers' dialects, e.g. Beckhoff TwinCAT)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Write the comment in parentheses ( ) or after a semicolon ;.")},
     {ErrorCode::UnknownGCode, "UnknownGCode",
      QT_TRANSLATE_NOOP("frezka::gcode", "Unknown G code %1"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Check the number; see the list of supported codes.")},
@@ -123,6 +139,12 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode", "Value of %1 is out of range"),
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "Values must be finite and below 1e12 in size; check the expression.")},
+    {ErrorCode::FanucRigidTapping, "FanucRigidTapping",
+     QT_TRANSLATE_NOOP("frezka::gcode", "M29 is the rigid tapping code of Fanuc-style controllers"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Frezka has no spindle-synchronised tapping (the GVE units have no spindle "
+                       "encoder): tap with a floating tap holder or by hand, and post the program "
+                       "without M29 and G84.")},
     {ErrorCode::ZeroFeedRate, "ZeroFeedRate",
      QT_TRANSLATE_NOOP("frezka::gcode", "%1 with zero feed rate"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Set a feed rate with F before the first feed move.")},
@@ -274,6 +296,24 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "LinuxCNC reads F before G20/G21, also on the same line; if %1 %5 was "
                        "meant, give F again after the change of units.")},
+    {ErrorCode::ImpliedProgramEnd, "ImpliedProgramEnd",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "The file ends without M2, M30 or %: the program is taken to end here, "
+                       "with the spindle and coolant switched off as at M2"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Check that the file is complete (not cut short when it was copied); "
+                       "end the program with M2 or M30.")},
+    {ErrorCode::DwellLooksLikeMilliseconds, "DwellLooksLikeMilliseconds",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "G4 P%1 dwells %1 seconds (%2), as in LinuxCNC; if the post meant "
+                       "milliseconds (as Mach3 and UCCNC can), that is %3 s"),
+     QT_TRANSLATE_NOOP("frezka::gcode", "Frezka reads P in seconds; write P%3 if %3 s was meant.")},
+    {ErrorCode::IgnoredArcWord, "IgnoredArcWord",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "%1 has no effect on an arc in the %2 plane and is ignored"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Some posts (e.g. FreeCAD's grbl post) write it; LinuxCNC refuses it, and "
+                       "any value other than 0 is an error.")},
 };
 
 const ErrorInfo *info(ErrorCode code)

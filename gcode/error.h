@@ -28,6 +28,9 @@ enum class ErrorCode : std::uint16_t {
     FileEndedWithoutEnd = 109,
     FileEndedWithoutPercent = 110,
     LineTooLong = 111,
+    GrblHoming = 112,
+    GrblCommand = 113,
+    SlashComment = 114,
     // Codes and modal groups (2xx)
     UnknownGCode = 200,
     UnsupportedGCode = 201,
@@ -48,6 +51,7 @@ enum class ErrorCode : std::uint16_t {
     G10BadP = 216,
     UnsupportedRotation = 217,
     ValueOutOfRange = 218,
+    FanucRigidTapping = 219,
     // Motion (3xx)
     ZeroFeedRate = 300,
     InverseTimeFeedMissing = 301,
@@ -96,6 +100,10 @@ enum class ErrorCode : std::uint16_t {
     TooManyBlocks = 509,
     // Warnings (6xx): the program runs as LinuxCNC runs it; the user should check it.
     FeedUnitsChanged = 600,
+    ImpliedProgramEnd = 601,
+    DwellLooksLikeMilliseconds = 602,
+    // Notes (7xx): a word of another dialect with no effect was accepted.
+    IgnoredArcWord = 700,
 };
 
 enum class Severity : std::uint8_t { Error, Warning, Note };

@@ -111,8 +111,15 @@ bool Interpreter::executeModes(Error *error)
                        : EventKind::CoolantOff);
     }
     if (b.hasG(kGNonModal) && b.g[kGNonModal] == 40) {
-        if (b.get('p') < 0)
+        const double p = b.get('p');
+        if (p < 0)
             return fail(ErrorCode::NegativeValue, 'p', "P", error);
+        // Mach3/UCCNC posts may mean milliseconds: a whole P of 100 s or more is suspect.
+        if (p >= 100 && p == std::floor(p)) {
+            const char sep = kDetailSeparator;
+            warnAt(ErrorCode::DwellLooksLikeMilliseconds, b.col('p'),
+                   feedText(p) + sep + feedText(p / 60) + " min" + sep + feedText(p / 1000));
+        }
         m_toolpath.appendEvent({EventKind::Dwell, b.get('p'), 0, 0}, feedMm(), m_line);
     }
     return executeModalGroups(error);

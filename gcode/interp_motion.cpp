@@ -214,8 +214,13 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
     if (!m_inverseTime && m_feed == 0)
         return failAt(ErrorCode::ZeroFeedRate, col, name, error);
     if (ijk) {
-        if (b.has(ax.bad))
+        if (b.has(ax.bad) && b.get(ax.bad) != 0)
             return fail(ErrorCode::ArcWrongPlaneWord, ax.bad, std::string(1, ax.bad - 32), error);
+        if (b.has(ax.bad)) { // K0 on a G17 arc (FreeCAD's grbl post): no effect
+            const char *plane = m_plane == 180 ? "XZ" : m_plane == 190 ? "YZ" : "XY";
+            warnAt(ErrorCode::IgnoredArcWord, b.col(ax.bad),
+                   std::string(1, ax.bad - 32) + "0" + kDetailSeparator + plane);
+        }
         if (m_arcAbsolute && (!b.has(ax.ou) || !b.has(ax.ov))) {
             const char missing = b.has(ax.ou) ? ax.ov : ax.ou;
             return failAt(ErrorCode::ArcMissingAbsoluteCentre, col, std::string(1, missing - 32),

@@ -151,6 +151,10 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
             const char *what = f.kind == FrameKind::Call ? "call" : "o";
             result.errors.push_back(
                 {ErrorCode::OwordNotClosed, f.line + 1, 1, std::string(what) + " " + f.label});
+        } else if (m_options.acceptMissingEnd) {
+            const std::uint32_t last = std::max(m_line, 1u);
+            warn(ErrorCode::ImpliedProgramEnd, last, 1, {});
+            m_toolpath.appendEvent({EventKind::ProgramEnd, 0, 0, 0}, feedMm(), last);
         } else if (m_percentStarted) {
             result.errors.push_back(
                 {ErrorCode::FileEndedWithoutPercent, std::max(m_line, 1u), 1, {}});

@@ -36,6 +36,10 @@ struct Options
 {
     bool collectAllErrors = false; // check mode: report every bad block and go on
     bool blockDelete = false;      // skip lines starting with '/' (LinuxCNC's default is off)
+    // The end of the text without M2/M30/% ends the program (warning ImpliedProgramEnd and a
+    // ProgramEnd event, as every grbl sender runs such files); false: FileEndedWithoutEnd /
+    // FileEndedWithoutPercent errors, as LinuxCNC (the console's MDI lines, which never end).
+    bool acceptMissingEnd = true;
     std::uint64_t maxBlocks = 200'000'000; // executed lines before TooManyBlocks (endless loops)
     std::size_t maxErrors = 1000;          // check mode stops after this many
     std::size_t maxWarnings = 100;         // warnings and notes kept (the rest are counted)
@@ -58,7 +62,7 @@ struct Result
     std::vector<Error> warnings;
     std::size_t warningsNotShown = 0;
     std::uint64_t linesRead = 0;
-    bool ended = false; // reached M2/M30 or the closing %
+    bool ended = false; // reached M2/M30 or the closing % (not an implied end)
     bool ok() const { return errors.empty(); }
 };
 
