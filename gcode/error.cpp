@@ -139,6 +139,13 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode", "Value of %1 is out of range"),
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "Values must be finite and below 1e12 in size; check the expression.")},
+    {ErrorCode::CutterCompensation, "CutterCompensation",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1: cutter radius compensation is not supported yet"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Post the program again from the CAM with the compensation computed there "
+                       "(the path already offset by the tool radius, no G41/G42 and no D). "
+                       "Deleting G41/G42 alone would leave the cut off its path by the tool "
+                       "radius.")},
     {ErrorCode::FanucRigidTapping, "FanucRigidTapping",
      QT_TRANSLATE_NOOP("frezka::gcode", "M29 is the rigid tapping code of Fanuc-style controllers"),
      QT_TRANSLATE_NOOP("frezka::gcode",

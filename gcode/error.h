@@ -52,6 +52,7 @@ enum class ErrorCode : std::uint16_t {
     UnsupportedRotation = 217,
     ValueOutOfRange = 218,
     FanucRigidTapping = 219,
+    CutterCompensation = 220,
     // Motion (3xx)
     ZeroFeedRate = 300,
     InverseTimeFeedMissing = 301,

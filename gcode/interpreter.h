@@ -41,7 +41,7 @@ struct Options
     // FileEndedWithoutPercent errors, as LinuxCNC (the console's MDI lines, which never end).
     bool acceptMissingEnd = true;
     std::uint64_t maxBlocks = 200'000'000; // executed lines before TooManyBlocks (endless loops)
-    std::size_t maxErrors = 1000;          // check mode stops after this many
+    std::size_t maxErrors = 1000;          // check mode keeps this many (the rest are counted)
     std::size_t maxWarnings = 100;         // warnings and notes kept (the rest are counted)
     std::map<int, double> toolLengthMm;    // G43 Hn; tools not listed have length 0
     // State at the start of the program (added for the GUI: persisted work offsets and the
@@ -56,7 +56,10 @@ struct Options
 struct Result
 {
     Toolpath toolpath;
-    std::vector<Error> errors; // the first error, or all of them in check mode
+    // The first error, or in check mode every one in file order (an error repeated by a loop
+    // or a call once), at most Options::maxErrors; errorsNotShown counts the others.
+    std::vector<Error> errors;
+    std::size_t errorsNotShown = 0;
     // Warnings (6xx) and notes (7xx) in file order: the program runs, but the user should know.
     // Each note is kept once and each warning code ten times; the others are counted.
     std::vector<Error> warnings;
@@ -100,6 +103,12 @@ private:
 
     // Blocks.
     bool processLine(std::string_view raw, Error *error);
+    // Check mode, after an error in a block: the state the block would have set (its modes
+    // without the unsupported codes, its end point), so that later blocks give no follow-on
+    // errors (an arc checked from a point the program never meant). A motion that failed is
+    // stood in for by a straight move to its end point (nothing runs when there are errors).
+    void recoverBlock();
+    void adoptTarget();
     bool executeBlock(Error *error);
     bool checkWords(int motion, Error *error);
     int motionToBe(Error *error);
@@ -191,6 +200,7 @@ private:
     bool m_percentStarted = false;
     bool m_sawContent = false;
     bool m_ended = false;
+    bool m_parsed = false; // the current line was parsed (an error came from executing it)
 
     std::vector<Error> m_warnings;
     std::size_t m_warningsNotShown = 0;

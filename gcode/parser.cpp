@@ -168,8 +168,18 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
                             c == 'n' ? "N (line numbers go first)" : "O (O-words go first)", error);
             if (c == 'b' || c == 'c' || c == 'u' || c == 'v' || c == 'w')
                 return fail(ErrorCode::UnsupportedAxis, at, std::string(1, c - 32), error);
-            if (c == 'd' || c == 'e')
+            if (c == 'd' || c == 'e') {
+                if (m_skipUnsupported) {
+                    ++m_pos;
+                    double ignored = 0;
+                    if (!readRealValue(&ignored, error))
+                        return false;
+                    continue;
+                }
+                if (c == 'd') // only cutter radius compensation uses D
+                    return fail(ErrorCode::CutterCompensation, at, "D", error);
                 return fail(ErrorCode::UnsupportedWord, at, std::string(1, c - 32), error);
+            }
             const std::uint32_t bit = 1u << (c - 'a');
             if (block.letters & bit)
                 return fail(ErrorCode::RepeatedWord, at, std::string(1, c - 32), error);
@@ -194,6 +204,15 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
         }
     }
     return true;
+}
+
+bool Parser::parseSkippingUnsupported(Block &block, std::vector<Assignment> &assignments,
+                                      Error *error)
+{
+    m_skipUnsupported = true;
+    const bool ok = parse(block, assignments, error);
+    m_skipUnsupported = false;
+    return ok;
 }
 
 bool Parser::readGCode(Block &block, Error *error)
@@ -221,6 +240,10 @@ bool Parser::readGCode(Block &block, Error *error)
     const int group = gGroup(code, &supported, &reason);
     if (group < 0)
         return fail(ErrorCode::UnknownGCode, at, gName(code), error);
+    if (!supported && m_skipUnsupported)
+        return true;
+    if (!supported && group == kGCutterComp)
+        return fail(ErrorCode::CutterCompensation, at, gName(code), error);
     if (!supported)
         return fail(ErrorCode::UnsupportedGCode, at, gName(code) + " (" + reason + ")", error);
     if (block.hasG(group)) {
@@ -256,14 +279,15 @@ bool Parser::readMCode(Block &block, Error *error)
     if (code < 0)
         return fail(ErrorCode::UnknownMCode, at, name, error);
     if (code == 29)
-        return fail(ErrorCode::FanucRigidTapping, at, name, error);
+        return m_skipUnsupported || fail(ErrorCode::FanucRigidTapping, at, name, error);
     bool supported = true;
     const char *reason = "";
     const int group = mGroup(code, &supported, &reason);
     if (group < 0)
         return fail(ErrorCode::UnknownMCode, at, name, error);
     if (!supported)
-        return fail(ErrorCode::UnsupportedMCode, at, name + " (" + reason + ")", error);
+        return m_skipUnsupported ||
+               fail(ErrorCode::UnsupportedMCode, at, name + " (" + reason + ")", error);
     if (block.hasM(group))
         return fail(ErrorCode::ModalGroupConflict, at, name, error);
     block.mMask |= 1u << group;

@@ -33,6 +33,13 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     InterpretOutcome out;
     for (const auto &e : result.errors)
         out.errors.push_back({int(e.line), int(e.column), gcode::formatError(req.fileName, e)});
+    if (result.errorsNotShown > 0) {
+        out.errors.push_back(
+            {0, 0,
+             QCoreApplication::translate("frezka::gcode", "%1: %n more error(s) not shown", "",
+                                         int(result.errorsNotShown))
+                 .arg(req.fileName)});
+    }
     for (const auto &w : result.warnings)
         out.warnings.push_back({int(w.line), int(w.column), gcode::formatError(req.fileName, w)});
     if (result.warningsNotShown > 0) {

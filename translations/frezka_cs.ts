@@ -1880,6 +1880,22 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>Home the machine from Frezka (Home all) before starting the program, and delete this line.</source>
         <translation>Před spuštěním programu najeďte strojem do reference z Frezky (Reference všech os) a tento řádek smažte.</translation>
     </message>
+    <message>
+        <source>%1: cutter radius compensation is not supported yet</source>
+        <translation>%1: korekce poloměru nástroje zatím není podporována</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n more error(s) not shown</source>
+        <translation>
+            <numerusform>%1: %n další chyba nezobrazena</numerusform>
+            <numerusform>%1: %n další chyby nezobrazeny</numerusform>
+            <numerusform>%1: %n dalších chyb nezobrazeno</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</source>
+        <translation>Vygenerujte program z CAM znovu s korekcí spočtenou v CAM (dráha už posunutá o poloměr nástroje, bez G41/G42 a bez D). Pouhé smazání G41/G42 by posunulo řez mimo dráhu o poloměr nástroje.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

@@ -1878,6 +1878,21 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>Home the machine from Frezka (Home all) before starting the program, and delete this line.</source>
         <translation>Home the machine from Frezka (Home all) before starting the program, and delete this line.</translation>
     </message>
+    <message>
+        <source>%1: cutter radius compensation is not supported yet</source>
+        <translation>%1: cutter radius compensation is not supported yet</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n more error(s) not shown</source>
+        <translation>
+            <numerusform>%1: %n more error not shown</numerusform>
+            <numerusform>%1: %n more errors not shown</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</source>
+        <translation>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

@@ -33,7 +33,7 @@ TEST(Interpreter, FirstErrorStopsWithLineAndColumn)
 {
     const Result r = run("G0 X1\nG1 X2 F10 G41\nG0 X3\nM2\n");
     ASSERT_EQ(r.errors.size(), 1u);
-    EXPECT_EQ(r.errors[0].code, ErrorCode::UnsupportedGCode);
+    EXPECT_EQ(r.errors[0].code, ErrorCode::CutterCompensation);
     EXPECT_EQ(r.errors[0].line, 2u);
     EXPECT_EQ(r.errors[0].column, 11u);
 }
@@ -54,7 +54,7 @@ TEST(Interpreter, CheckModeCollectsEveryError)
     ASSERT_EQ(r.errors.size(), 3u); // three bad blocks (the missing end is a warning)
     EXPECT_EQ(r.errors[0].code, ErrorCode::WordNotUsed);
     EXPECT_EQ(r.errors[1].code, ErrorCode::ArcRadiusTooSmall);
-    EXPECT_EQ(r.errors[2].code, ErrorCode::UnsupportedGCode);
+    EXPECT_EQ(r.errors[2].code, ErrorCode::CutterCompensation);
     EXPECT_EQ(r.errors[2].line, 5u);
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_EQ(r.warnings[0].code, ErrorCode::ImpliedProgramEnd);
@@ -305,4 +305,69 @@ TEST(Interpreter, DwellThatLooksLikeMillisecondsGivesAWarning)
               "G4 P4000 dwells 4000 seconds (66.6667 min), as in LinuxCNC; if the post meant "
               "milliseconds (as Mach3 and UCCNC can), that is 4 s. Frezka reads P in seconds; "
               "write P4 if 4 s was meant.");
+}
+
+// After an unsupported G41 line the arcs that follow are checked from the point the program
+// meant, not from where the skipped block left off: one error, not one per arc.
+TEST(Interpreter, NoFollowOnErrorsAfterASkippedBlock)
+{
+    Options options;
+    options.collectAllErrors = true;
+    const char *text = "G21 G90 F100\nG0 X0 Y0\nG41 D3 G1 X10 Y0\nG2 X20 Y0 I5 J0\n"
+                       "G3 X10 Y0 I-5 J0\nG40 G1 X0\nM2\n";
+    const Result r = interpretText(text, options);
+    ASSERT_EQ(r.errors.size(), 1u) << englishMessage(r.errors.back());
+    EXPECT_EQ(r.errors[0].code, ErrorCode::CutterCompensation);
+    EXPECT_EQ(r.errors[0].line, 3u);
+    // An arc that fails still sets G2 and its end point: the next arc block (axis and centre
+    // words only) is read as an arc from there.
+    const Result a = interpretText("G21 F100\nG2 X10 Y0 I3 J0\nX20 Y0 I5 J0\nM2\n", options);
+    ASSERT_EQ(a.errors.size(), 1u) << englishMessage(a.errors.back());
+    EXPECT_EQ(a.errors[0].code, ErrorCode::ArcRadiusMismatch);
+    ASSERT_EQ(a.toolpath.kind(0), MotionKind::Feed); // a straight stand-in for the bad arc
+    EXPECT_EQ(a.toolpath.end(0), (Point4{10, 0, 0, 0}));
+    ASSERT_EQ(a.toolpath.kind(1), MotionKind::Arc);
+    EXPECT_EQ(a.toolpath.arc(1).centre, (Point4{15, 0, 0, 0}));
+}
+
+TEST(Interpreter, ErrorsComeInFileOrderOnceEach)
+{
+    Options options;
+    options.collectAllErrors = true;
+    const Result r = interpretText("F10\no<s> call\nG1 X1 Q2\no<s> call\nM2\n"
+                                   "o<s> sub\nG91 G2 X5 Y0 R1\no<s> endsub\n",
+                                   options);
+    ASSERT_EQ(r.errors.size(), 2u);
+    EXPECT_EQ(r.errors[0].line, 3u); // executed after line 7
+    EXPECT_EQ(r.errors[0].code, ErrorCode::WordNotUsed);
+    EXPECT_EQ(r.errors[1].line, 7u); // twice executed, once reported
+    EXPECT_EQ(r.errors[1].code, ErrorCode::ArcRadiusTooSmall);
+}
+
+TEST(Interpreter, ErrorsBeyondTheLimitAreCounted)
+{
+    Options options;
+    options.collectAllErrors = true;
+    options.maxErrors = 3;
+    std::string text;
+    for (int i = 0; i < 10; ++i)
+        text += "G1 X1 Q2\n";
+    text += "M2\n";
+    const Result r = interpretText(text, options);
+    EXPECT_EQ(r.errors.size(), 3u);
+    EXPECT_EQ(r.errorsNotShown, 7u);
+    EXPECT_EQ(r.errors[2].line, 3u);
+}
+
+// The advice for G41/G42 keeps the part safe: deleting them alone would cut off the path.
+TEST(Interpreter, CutterCompensationAdviceKeepsThePartSafe)
+{
+    for (const char *text : {"G42 G1 X1 F10\nM2\n", "G1 X1 D2 F10\nM2\n", "G41.1 D4\nM2\n"}) {
+        const Result r = run(text);
+        ASSERT_EQ(r.errors.size(), 1u) << text;
+        EXPECT_EQ(r.errors[0].code, ErrorCode::CutterCompensation) << text;
+        const std::string m = englishMessage(r.errors[0]);
+        EXPECT_NE(m.find("Post the program again from the CAM"), std::string::npos) << m;
+        EXPECT_EQ(m.find("Remove it"), std::string::npos) << m;
+    }
 }
