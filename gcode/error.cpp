@@ -2,8 +2,11 @@
 
 #include <QCoreApplication>
 
+#include <QStringList>
+
 #include <array>
 #include <cstring>
+#include <vector>
 
 namespace frezka::gcode {
 
@@ -56,6 +59,22 @@ constexpr ErrorInfo kErrors[] = {
     {ErrorCode::LineTooLong, "LineTooLong",
      QT_TRANSLATE_NOOP("frezka::gcode", "Line is too long (%1 characters)"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Split the line; at most 65535 characters are allowed.")},
+    {ErrorCode::GrblHoming, "GrblHoming",
+     QT_TRANSLATE_NOOP("frezka::gcode", "$H is grbl's homing command, not G-code"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Home the machine from Frezka (Home all) before starting the program, and "
+                       "delete this line.")},
+    {ErrorCode::GrblCommand, "GrblCommand",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 is a grbl system command, not G-code"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Delete the line; grbl's $ settings and commands have no meaning here (set "
+                       "the machine up in Frezka's machine profile, home and jog from Frezka).")},
+    {ErrorCode::SlashComment, "SlashComment",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "'//' comments are not RS274/NGC G-code (they come from other "
+                       "controllers' dialects, e.g. Beckhoff TwinCAT)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Write the comment in parentheses ( ) or after a semicolon ;.")},
     {ErrorCode::UnknownGCode, "UnknownGCode",
      QT_TRANSLATE_NOOP("frezka::gcode", "Unknown G code %1"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Check the number; see the list of supported codes.")},
@@ -120,6 +139,19 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode", "Value of %1 is out of range"),
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "Values must be finite and below 1e12 in size; check the expression.")},
+    {ErrorCode::CutterCompensation, "CutterCompensation",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1: cutter radius compensation is not supported yet"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Post the program again from the CAM with the compensation computed there "
+                       "(the path already offset by the tool radius, no G41/G42 and no D). "
+                       "Deleting G41/G42 alone would leave the cut off its path by the tool "
+                       "radius.")},
+    {ErrorCode::FanucRigidTapping, "FanucRigidTapping",
+     QT_TRANSLATE_NOOP("frezka::gcode", "M29 is the rigid tapping code of Fanuc-style controllers"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Frezka has no spindle-synchronised tapping (the GVE units have no spindle "
+                       "encoder): tap with a floating tap holder or by hand, and post the program "
+                       "without M29 and G84.")},
     {ErrorCode::ZeroFeedRate, "ZeroFeedRate",
      QT_TRANSLATE_NOOP("frezka::gcode", "%1 with zero feed rate"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Set a feed rate with F before the first feed move.")},
@@ -264,6 +296,31 @@ constexpr ErrorInfo kErrors[] = {
     {ErrorCode::TooManyBlocks, "TooManyBlocks",
      QT_TRANSLATE_NOOP("frezka::gcode", "The program executes more than %1 blocks"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Check the loops; one of them may never end.")},
+    {ErrorCode::FeedUnitsChanged, "FeedUnitsChanged",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "F%1 was read in %2 (line %3) before this change of units: the feed moves "
+                       "after it run at %1 %2 (%4 %5), as in LinuxCNC, not at %1 %5 (%6 %2)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "LinuxCNC reads F before G20/G21, also on the same line; if %1 %5 was "
+                       "meant, give F again after the change of units.")},
+    {ErrorCode::ImpliedProgramEnd, "ImpliedProgramEnd",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "The file ends without M2, M30 or %: the program is taken to end here, "
+                       "with the spindle and coolant switched off as at M2"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Check that the file is complete (not cut short when it was copied); "
+                       "end the program with M2 or M30.")},
+    {ErrorCode::DwellLooksLikeMilliseconds, "DwellLooksLikeMilliseconds",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "G4 P%1 dwells %1 seconds (%2), as in LinuxCNC; if the post meant "
+                       "milliseconds (as Mach3 and UCCNC can), that is %3 s"),
+     QT_TRANSLATE_NOOP("frezka::gcode", "Frezka reads P in seconds; write P%3 if %3 s was meant.")},
+    {ErrorCode::IgnoredArcWord, "IgnoredArcWord",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "%1 has no effect on an arc in the %2 plane and is ignored"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Some posts (e.g. FreeCAD's grbl post) write it; LinuxCNC refuses it, and "
+                       "any value other than 0 is an error.")},
 };
 
 const ErrorInfo *info(ErrorCode code)
@@ -306,35 +363,89 @@ const char *errorHint(ErrorCode code)
     return e ? e->hint : "";
 }
 
+Severity severity(ErrorCode code)
+{
+    const int n = static_cast<int>(code);
+    return n >= 700 ? Severity::Note : n >= 600 ? Severity::Warning : Severity::Error;
+}
+
+namespace {
+
+// Replaces %1..%9 in one pass (a value that contains "%2" is not filled again).
+char16_t charAt(const std::string &s, std::size_t i)
+{
+    return static_cast<unsigned char>(s[i]);
+}
+
+char16_t charAt(const QString &s, std::size_t i)
+{
+    return s.at(static_cast<qsizetype>(i)).unicode();
+}
+
+template<typename Str, typename Parts>
+Str fillArgs(const Str &text, const Parts &parts)
+{
+    Str out;
+    const auto n = static_cast<std::size_t>(text.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        const char16_t next = i + 1 < n ? charAt(text, i + 1) : 0;
+        if (charAt(text, i) == '%' && next >= '1' && next <= '9') {
+            const auto k = static_cast<std::size_t>(next - '1');
+            if (k < static_cast<std::size_t>(parts.size())) {
+                out += parts[static_cast<decltype(parts.size())>(k)];
+                ++i;
+                continue;
+            }
+        }
+        out += text[static_cast<decltype(text.size())>(i)];
+    }
+    return out;
+}
+
+std::vector<std::string> detailParts(const std::string &detail)
+{
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t end = detail.find(kDetailSeparator, start);
+        parts.push_back(detail.substr(start, end - start));
+        if (end == std::string::npos)
+            return parts;
+        start = end + 1;
+    }
+}
+
+} // namespace
+
 std::string englishMessage(const Error &error)
 {
-    std::string text = errorTemplate(error.code);
-    const auto pos = text.find("%1");
-    if (pos != std::string::npos)
-        text.replace(pos, 2, error.detail);
+    const std::vector<std::string> parts = detailParts(error.detail);
+    std::string text = fillArgs(std::string(errorTemplate(error.code)), parts);
     text += ". ";
-    text += errorHint(error.code);
+    text += fillArgs(std::string(errorHint(error.code)), parts);
     return text;
 }
 
 QString translatedMessage(const Error &error)
 {
-    QString text = QCoreApplication::translate("frezka::gcode", errorTemplate(error.code));
-    if (text.contains(QLatin1String("%1")))
-        text = text.arg(QString::fromStdString(error.detail));
-    return text + QStringLiteral(". ") +
-           QCoreApplication::translate("frezka::gcode", errorHint(error.code));
+    const QString text = QCoreApplication::translate("frezka::gcode", errorTemplate(error.code));
+    QStringList parts;
+    for (const std::string &p : detailParts(error.detail))
+        parts << QString::fromStdString(p);
+    return fillArgs(text, parts) + QStringLiteral(". ") +
+           fillArgs(QCoreApplication::translate("frezka::gcode", errorHint(error.code)), parts);
 }
 
 QString formatError(const QString &file, const Error &error)
 {
+    QString message = translatedMessage(error);
+    if (severity(error.code) == Severity::Warning)
+        message = QCoreApplication::translate("frezka::gcode", "warning: ") + message;
+    else if (severity(error.code) == Severity::Note)
+        message = QCoreApplication::translate("frezka::gcode", "note: ") + message;
     if (error.line == 0)
-        return QStringLiteral("%1: %2").arg(file, translatedMessage(error));
-    return QStringLiteral("%1:%2:%3: %4")
-        .arg(file)
-        .arg(error.line)
-        .arg(error.column)
-        .arg(translatedMessage(error));
+        return QStringLiteral("%1: %2").arg(file, message);
+    return QStringLiteral("%1:%2:%3: %4").arg(file).arg(error.line).arg(error.column).arg(message);
 }
 
 } // namespace frezka::gcode

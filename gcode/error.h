@@ -1,8 +1,11 @@
 #pragma once
-// G-code errors: a stable code, where it happened (1-based line and column of the offending word)
-// and a detail (the word, the value). The English template of each code is marked with
+// G-code errors, warnings and notes: a stable code, where it happened (1-based line and column of
+// the offending word) and a detail (the word, the value; several values separated by
+// kDetailSeparator fill %1, %2, ...). The English template of each code is marked with
 // QT_TRANSLATE_NOOP("frezka::gcode", ...) so lupdate finds it; translatedMessage() returns the
 // user's language. The table of codes is documented in docs/gcode.md; never renumber a code.
+// Codes 6xx are warnings (the program runs, but the user should know), 7xx notes (a word of
+// another dialect that has no effect was accepted).
 
 #include <QString>
 
@@ -25,6 +28,9 @@ enum class ErrorCode : std::uint16_t {
     FileEndedWithoutEnd = 109,
     FileEndedWithoutPercent = 110,
     LineTooLong = 111,
+    GrblHoming = 112,
+    GrblCommand = 113,
+    SlashComment = 114,
     // Codes and modal groups (2xx)
     UnknownGCode = 200,
     UnsupportedGCode = 201,
@@ -45,6 +51,8 @@ enum class ErrorCode : std::uint16_t {
     G10BadP = 216,
     UnsupportedRotation = 217,
     ValueOutOfRange = 218,
+    FanucRigidTapping = 219,
+    CutterCompensation = 220,
     // Motion (3xx)
     ZeroFeedRate = 300,
     InverseTimeFeedMissing = 301,
@@ -91,7 +99,19 @@ enum class ErrorCode : std::uint16_t {
     BreakOutsideLoop = 507,
     ReturnOutsideSub = 508,
     TooManyBlocks = 509,
+    // Warnings (6xx): the program runs as LinuxCNC runs it; the user should check it.
+    FeedUnitsChanged = 600,
+    ImpliedProgramEnd = 601,
+    DwellLooksLikeMilliseconds = 602,
+    // Notes (7xx): a word of another dialect with no effect was accepted.
+    IgnoredArcWord = 700,
 };
+
+enum class Severity : std::uint8_t { Error, Warning, Note };
+Severity severity(ErrorCode code);
+
+// Separates the values of a detail that fill %1, %2, ... of a template.
+inline constexpr char kDetailSeparator = '\x1f';
 
 struct Error
 {
@@ -113,7 +133,8 @@ const char *errorHint(ErrorCode code);
 std::string englishMessage(const Error &error);
 // The same in the user's language (QCoreApplication::translate, context "frezka::gcode").
 QString translatedMessage(const Error &error);
-// "FILE:LINE:COL: message" in the user's language ("FILE: message" without a line).
+// "FILE:LINE:COL: message" in the user's language ("FILE: message" without a line); warnings and
+// notes say so ("FILE:LINE:COL: warning: message").
 QString formatError(const QString &file, const Error &error);
 
 } // namespace frezka::gcode

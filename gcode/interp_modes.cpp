@@ -5,12 +5,46 @@
 #include "interpreter.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace frezka::gcode {
 
 void Interpreter::event(EventKind kind, double value, double p, double q)
 {
-    m_toolpath.appendEvent({kind, value, p, q}, m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
+    m_toolpath.appendEvent({kind, value, p, q}, feedMm(), m_line);
+}
+
+namespace {
+
+// "6", "0.2362", "152.4": a feed in a message.
+std::string feedText(double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.4f", v);
+    std::string s = buf;
+    while (s.back() == '0')
+        s.pop_back();
+    if (s.back() == '.')
+        s.pop_back();
+    return s;
+}
+
+} // namespace
+
+void Interpreter::checkFeedUnits()
+{
+    if (m_inverseTime || m_feedUnitsWarned || m_feed == 0 || m_feedMetric == m_metric)
+        return;
+    m_feedUnitsWarned = true;
+    const char *setIn = m_feedMetric ? "mm/min" : "in/min";
+    const char *now = m_metric ? "mm/min" : "in/min";
+    const double inNow = m_feedMm / unit(); // the same feed in the new units
+    const double meantMm = m_feed * unit(); // F read in the new units, in mm/min
+    const double meantInSet = meantMm / (m_feedMetric ? 1.0 : 25.4);
+    const char sep = kDetailSeparator;
+    warn(ErrorCode::FeedUnitsChanged, m_unitsLine, m_unitsColumn,
+         feedText(m_feed) + sep + setIn + sep + std::to_string(m_feedLine) + sep + feedText(inNow) +
+             sep + now + sep + feedText(meantInSet));
 }
 
 // The non-motion words of a block in rs274ngc's order of execution (G93/G94, F, S, T, M6, M3-M5,
@@ -23,11 +57,17 @@ bool Interpreter::executeModes(Error *error)
         // rs274ngc: any G93/G94 word resets the feed rate (an F on the same line sets it again).
         m_inverseTime = b.g[kGFeedMode] == 930;
         m_feed = 0;
+        m_feedMm = 0;
     }
     if (b.has('f')) {
         if (b.get('f') < 0)
             return fail(ErrorCode::NegativeValue, 'f', "F", error);
+        // In the units in force before this block's G20/G21, which LinuxCNC executes later.
         m_feed = b.get('f');
+        m_feedMm = m_feed * unit();
+        m_feedMetric = m_metric;
+        m_feedLine = m_line;
+        m_feedUnitsWarned = false;
     }
     if (b.has('s')) {
         if (b.get('s') < 0)
@@ -71,10 +111,16 @@ bool Interpreter::executeModes(Error *error)
                        : EventKind::CoolantOff);
     }
     if (b.hasG(kGNonModal) && b.g[kGNonModal] == 40) {
-        if (b.get('p') < 0)
+        const double p = b.get('p');
+        if (p < 0)
             return fail(ErrorCode::NegativeValue, 'p', "P", error);
-        m_toolpath.appendEvent({EventKind::Dwell, b.get('p'), 0, 0},
-                               m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
+        // Mach3/UCCNC posts may mean milliseconds: a whole P of 100 s or more is suspect.
+        if (p >= 100 && p == std::floor(p)) {
+            const char sep = kDetailSeparator;
+            warnAt(ErrorCode::DwellLooksLikeMilliseconds, b.col('p'),
+                   feedText(p) + sep + feedText(p / 60) + " min" + sep + feedText(p / 1000));
+        }
+        m_toolpath.appendEvent({EventKind::Dwell, b.get('p'), 0, 0}, feedMm(), m_line);
     }
     return executeModalGroups(error);
 }
@@ -84,8 +130,11 @@ bool Interpreter::executeModalGroups(Error *error)
     const Block &b = m_block;
     if (b.hasG(kGPlane))
         m_plane = b.g[kGPlane];
-    if (b.hasG(kGUnits))
+    if (b.hasG(kGUnits) && m_metric != (b.g[kGUnits] == 210)) {
         m_metric = b.g[kGUnits] == 210;
+        m_unitsLine = m_line;
+        m_unitsColumn = m_parser.columnAt(b.gColumn[kGUnits]);
+    }
     if (b.hasG(kGToolLength)) {
         const auto before = offsets();
         if (b.g[kGToolLength] == 490) {
@@ -209,7 +258,7 @@ bool Interpreter::homeMove(bool g30, Error *error)
     // Rapid to the intermediate point (program coordinates, G90/G91 honoured), then to the
     // stored position: all axes when none is given, else only the given ones.
     const Target mid = targetOf(false);
-    m_toolpath.appendRapid(mid.machine, m_feed * unit(), m_line);
+    m_toolpath.appendRapid(mid.machine, feedMm(), m_line);
     moveTo(mid);
     const std::array<double, 4> &home = g30 ? m_g30 : m_g28;
     const bool all = !(m_block.letters & kAxisBits);
@@ -221,7 +270,7 @@ bool Interpreter::homeMove(bool g30, Error *error)
             prog[i] = home[i] - offset(i);
         }
     }
-    m_toolpath.appendRapid(m_pos, m_feed * unit(), m_line);
+    m_toolpath.appendRapid(m_pos, feedMm(), m_line);
     return true;
 }
 

@@ -106,13 +106,15 @@ void Interpreter::moveTo(const Target &target)
 
 double Interpreter::feedFor(double lengthMm) const
 {
-    return m_inverseTime ? m_feed * lengthMm : m_feed * unit();
+    return m_inverseTime ? m_feed * lengthMm : m_feedMm;
 }
 
 bool Interpreter::executeMotion(int motion, Error *error)
 {
     const bool g53 = m_block.hasG(kGNonModal) && m_block.g[kGNonModal] == 530;
     bool ok = true;
+    if (motion != 0)
+        checkFeedUnits();
     if (motion == 0 || motion == 10)
         ok = straight(motion, targetOf(g53), error);
     else if (motion == 20 || motion == 30)
@@ -133,7 +135,7 @@ bool Interpreter::straight(int motion, const Target &target, Error *error)
     const Point4 &end = target.machine;
     const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
     if (motion == 0) {
-        m_toolpath.appendRapid(end, m_feed * (m_inverseTime ? 0.0 : unit()), m_line);
+        m_toolpath.appendRapid(end, feedMm(), m_line);
         moveTo(target);
         return true;
     }
@@ -212,8 +214,13 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
     if (!m_inverseTime && m_feed == 0)
         return failAt(ErrorCode::ZeroFeedRate, col, name, error);
     if (ijk) {
-        if (b.has(ax.bad))
+        if (b.has(ax.bad) && b.get(ax.bad) != 0)
             return fail(ErrorCode::ArcWrongPlaneWord, ax.bad, std::string(1, ax.bad - 32), error);
+        if (b.has(ax.bad)) { // K0 on a G17 arc (FreeCAD's grbl post): no effect
+            const char *plane = m_plane == 180 ? "XZ" : m_plane == 190 ? "YZ" : "XY";
+            warnAt(ErrorCode::IgnoredArcWord, b.col(ax.bad),
+                   std::string(1, ax.bad - 32) + "0" + kDetailSeparator + plane);
+        }
         if (m_arcAbsolute && (!b.has(ax.ou) || !b.has(ax.ov))) {
             const char missing = b.has(ax.ou) ? ax.ov : ax.ou;
             return failAt(ErrorCode::ArcMissingAbsoluteCentre, col, std::string(1, missing - 32),
@@ -246,7 +253,7 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
     axisRef(info.centre, ax.u) = cu + offset(ax.u);
     axisRef(info.centre, ax.v) = cv + offset(ax.v);
 
-    double feed = m_feed * unit();
+    double feed = m_feedMm;
     if (m_inverseTime)
         feed = feedFor(arcLength(motion, su, sv, eu, ev, cu, cv, turns,
                                  axisOf(end, ax.w) - axisOf(m_pos, ax.w)));
@@ -265,7 +272,7 @@ bool Interpreter::probe(int motion, const Target &target, Error *error)
         return failAt(ErrorCode::ZeroFeedRate, col, gName(motion), error);
     if (end == m_pos)
         return failAt(ErrorCode::ProbeNoMotion, col, {}, error);
-    m_toolpath.appendProbe(end, static_cast<ProbeKind>(motion - 382), m_feed * unit(), m_line);
+    m_toolpath.appendProbe(end, static_cast<ProbeKind>(motion - 382), m_feedMm, m_line);
     moveTo(target);
     m_probe = m_prog;
     m_probed = true;
@@ -281,7 +288,7 @@ void Interpreter::cycleTraverse(int plane, double aa, double bb, double cc)
     axisRef(t.prog, ax.w) = cc;
     for (int i : {ax.u, ax.v, ax.w})
         axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
-    m_toolpath.appendRapid(t.machine, m_feed * unit(), m_line);
+    m_toolpath.appendRapid(t.machine, m_feedMm, m_line);
     moveTo(t);
 }
 
@@ -294,7 +301,7 @@ void Interpreter::cycleFeed(int plane, double aa, double bb, double cc)
     axisRef(t.prog, ax.w) = cc;
     for (int i : {ax.u, ax.v, ax.w})
         axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
-    m_toolpath.appendFeed(t.machine, m_feed * unit(), m_line);
+    m_toolpath.appendFeed(t.machine, m_feedMm, m_line);
     moveTo(t);
 }
 

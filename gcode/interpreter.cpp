@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <set>
+#include <tuple>
 
 #ifdef __linux__
 #include <sys/mman.h>
@@ -49,6 +51,21 @@ bool Interpreter::failAt(ErrorCode code, std::uint32_t pos, std::string detail, 
 {
     *error = {code, m_line, m_parser.columnAt(pos), std::move(detail)};
     return false;
+}
+
+void Interpreter::warnAt(ErrorCode code, std::uint32_t pos, std::string detail)
+{
+    warn(code, m_line, m_parser.columnAt(pos), std::move(detail));
+}
+
+void Interpreter::warn(ErrorCode code, std::uint32_t line, std::uint32_t column, std::string detail)
+{
+    const int limit = severity(code) == Severity::Note ? 1 : 10;
+    if (m_warnings.size() >= m_options.maxWarnings || ++m_warningCount[int(code)] > limit) {
+        ++m_warningsNotShown;
+        return;
+    }
+    m_warnings.push_back({code, line, column, std::move(detail)});
 }
 
 double Interpreter::offset(int axis) const
@@ -109,6 +126,15 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
     m_toolpath.reserve(lines + 16);
     m_toolpath.setOrigin(m_pos);
 
+    std::set<std::tuple<std::uint32_t, std::uint32_t, int>> seen; // an error repeated by a loop
+    auto report = [&](Error e) {
+        if (!seen.insert({e.line, e.column, int(e.code)}).second)
+            return;
+        if (result.errors.size() < m_options.maxErrors)
+            result.errors.push_back(std::move(e));
+        else
+            ++result.errorsNotShown;
+    };
     std::string_view raw;
     Error error;
     while (!m_ended && nextLine(&raw)) {
@@ -119,30 +145,42 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
         if (m_options.progress && (m_line & 0xFFFF) == 0)
             m_options.progress(m_next, text.size());
         if (++m_executed > m_options.maxBlocks) {
-            result.errors.push_back(
-                {ErrorCode::TooManyBlocks, m_line, 1, std::to_string(m_options.maxBlocks)});
+            report({ErrorCode::TooManyBlocks, m_line, 1, std::to_string(m_options.maxBlocks)});
             break;
         }
         if (processLine(raw, &error))
             continue;
-        result.errors.push_back(error);
-        if (!m_options.collectAllErrors || result.errors.size() >= m_options.maxErrors)
+        report(error);
+        if (!m_options.collectAllErrors)
             break;
+        recoverBlock();
     }
     const bool stopped = !result.errors.empty() && !m_options.collectAllErrors;
-    if (!m_ended && !stopped && result.errors.size() < m_options.maxErrors) {
+    if (!m_ended && !stopped && m_executed <= m_options.maxBlocks) {
         if (!m_frames.empty()) {
             const Frame &f = m_frames.back();
             const char *what = f.kind == FrameKind::Call ? "call" : "o";
-            result.errors.push_back(
-                {ErrorCode::OwordNotClosed, f.line + 1, 1, std::string(what) + " " + f.label});
+            report({ErrorCode::OwordNotClosed, f.line + 1, 1, std::string(what) + " " + f.label});
+        } else if (m_options.acceptMissingEnd) {
+            const std::uint32_t last = std::max(m_line, 1u);
+            warn(ErrorCode::ImpliedProgramEnd, last, 1, {});
+            m_toolpath.appendEvent({EventKind::ProgramEnd, 0, 0, 0}, feedMm(), last);
         } else if (m_percentStarted) {
-            result.errors.push_back(
-                {ErrorCode::FileEndedWithoutPercent, std::max(m_line, 1u), 1, {}});
+            report({ErrorCode::FileEndedWithoutPercent, std::max(m_line, 1u), 1, {}});
         } else {
-            result.errors.push_back({ErrorCode::FileEndedWithoutEnd, std::max(m_line, 1u), 1, {}});
+            report({ErrorCode::FileEndedWithoutEnd, std::max(m_line, 1u), 1, {}});
         }
     }
+    // File order (a subroutine defined below its call reports its errors when called).
+    std::stable_sort(result.errors.begin(), result.errors.end(),
+                     [](const Error &a, const Error &b) {
+                         return a.line != b.line ? a.line < b.line : a.column < b.column;
+                     });
+    std::stable_sort(m_warnings.begin(), m_warnings.end(), [](const Error &a, const Error &b) {
+        return a.line != b.line ? a.line < b.line : a.column < b.column;
+    });
+    result.warnings = std::move(m_warnings);
+    result.warningsNotShown = m_warningsNotShown;
     result.linesRead = m_line;
     result.ended = m_ended;
     result.toolpath = std::move(m_toolpath);
@@ -152,6 +190,7 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
 
 bool Interpreter::processLine(std::string_view raw, Error *error)
 {
+    m_parsed = false;
     if (!m_parser.normalize(raw, m_line, error))
         return false;
     if (m_parser.isPercent()) {
@@ -176,7 +215,45 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
         return false;
     if (m_block.oKind != OKind::None)
         return executeOword(error);
+    m_parsed = true;
     return executeBlock(error);
+}
+
+void Interpreter::recoverBlock()
+{
+    Error ignored;
+    if (!m_parsed) {
+        // A parse error: the line again without its unsupported codes and words (G41 D1 ...),
+        // executed with its errors dropped (the first one was reported).
+        if (m_parser.isEmpty() ||
+            !m_parser.parseSkippingUnsupported(m_block, m_assignments, &ignored) ||
+            m_block.oKind != OKind::None)
+            return; // the block cannot be read: its state is unknown
+        if (executeBlock(&ignored))
+            return;
+    }
+    adoptTarget();
+}
+
+void Interpreter::adoptTarget()
+{
+    const int mode0 = m_block.hasG(kGNonModal) ? m_block.g[kGNonModal] : -1;
+    const int mode1 = m_block.hasG(kGMotion) ? m_block.g[kGMotion] : -1;
+    const int motion = mode1 >= 0 ? mode1 : m_motion;
+    const bool plain =
+        motion == 0 || motion == 10 || isArc(motion) || (motion >= 382 && motion <= 385);
+    if (!plain || mode0 == 100 || mode0 == 280 || mode0 == 300 || mode0 == 920)
+        return; // a cycle or G10/G28/G30/G92: where it would end is not the axis words
+    m_motion = motion;
+    if (!(m_block.letters & kAxisBits))
+        return;
+    // A straight stand-in keeps the toolpath continuous (it is not run: the program has errors).
+    const Target target = targetOf(mode0 == 530);
+    if (motion == 0)
+        m_toolpath.appendRapid(target.machine, feedMm(), m_line);
+    else
+        m_toolpath.appendFeed(target.machine, feedMm(), m_line);
+    moveTo(target);
 }
 
 // ---- block checks --------------------------------------------------------------------------

@@ -36,8 +36,13 @@ struct Options
 {
     bool collectAllErrors = false; // check mode: report every bad block and go on
     bool blockDelete = false;      // skip lines starting with '/' (LinuxCNC's default is off)
+    // The end of the text without M2/M30/% ends the program (warning ImpliedProgramEnd and a
+    // ProgramEnd event, as every grbl sender runs such files); false: FileEndedWithoutEnd /
+    // FileEndedWithoutPercent errors, as LinuxCNC (the console's MDI lines, which never end).
+    bool acceptMissingEnd = true;
     std::uint64_t maxBlocks = 200'000'000; // executed lines before TooManyBlocks (endless loops)
-    std::size_t maxErrors = 1000;          // check mode stops after this many
+    std::size_t maxErrors = 1000;          // check mode keeps this many (the rest are counted)
+    std::size_t maxWarnings = 100;         // warnings and notes kept (the rest are counted)
     std::map<int, double> toolLengthMm;    // G43 Hn; tools not listed have length 0
     // State at the start of the program (added for the GUI: persisted work offsets and the
     // machine position the program starts from).
@@ -51,9 +56,16 @@ struct Options
 struct Result
 {
     Toolpath toolpath;
-    std::vector<Error> errors; // the first error, or all of them in check mode
+    // The first error, or in check mode every one in file order (an error repeated by a loop
+    // or a call once), at most Options::maxErrors; errorsNotShown counts the others.
+    std::vector<Error> errors;
+    std::size_t errorsNotShown = 0;
+    // Warnings (6xx) and notes (7xx) in file order: the program runs, but the user should know.
+    // Each note is kept once and each warning code ten times; the others are counted.
+    std::vector<Error> warnings;
+    std::size_t warningsNotShown = 0;
     std::uint64_t linesRead = 0;
-    bool ended = false; // reached M2/M30 or the closing %
+    bool ended = false; // reached M2/M30 or the closing % (not an implied end)
     bool ok() const { return errors.empty(); }
 };
 
@@ -91,6 +103,12 @@ private:
 
     // Blocks.
     bool processLine(std::string_view raw, Error *error);
+    // Check mode, after an error in a block: the state the block would have set (its modes
+    // without the unsupported codes, its end point), so that later blocks give no follow-on
+    // errors (an arc checked from a point the program never meant). A motion that failed is
+    // stood in for by a straight move to its end point (nothing runs when there are errors).
+    void recoverBlock();
+    void adoptTarget();
     bool executeBlock(Error *error);
     bool checkWords(int motion, Error *error);
     int motionToBe(Error *error);
@@ -152,6 +170,12 @@ private:
     double unit() const { return m_metric ? 1.0 : 25.4; }
     double lengthWord(char c) const { return m_block.get(c) * unit(); }
     bool fail(ErrorCode code, char word, std::string detail, Error *error) const;
+    // Records a warning or note at pos of the current line (0: the block start).
+    void warnAt(ErrorCode code, std::uint32_t pos, std::string detail);
+    void warn(ErrorCode code, std::uint32_t line, std::uint32_t column, std::string detail);
+    // A feed move runs at a feed set before a change of units (FeedUnitsChanged, once per F).
+    void checkFeedUnits();
+    double feedMm() const { return m_inverseTime ? 0.0 : m_feedMm; } // modal feed, mm/min
     // pos: offset into the normalized line (Block's word positions), 0 for the block start.
     bool failAt(ErrorCode code, std::uint32_t pos, std::string detail, Error *error) const;
 
@@ -176,6 +200,11 @@ private:
     bool m_percentStarted = false;
     bool m_sawContent = false;
     bool m_ended = false;
+    bool m_parsed = false; // the current line was parsed (an error came from executing it)
+
+    std::vector<Error> m_warnings;
+    std::size_t m_warningsNotShown = 0;
+    std::unordered_map<int, int> m_warningCount; // per code
 
     // Control flow.
     std::vector<Frame> m_frames;
@@ -203,8 +232,15 @@ private:
     bool m_metric = true;
     bool m_retractToR = true; // G99 (rs274ngc starts in G99)
     double m_feed = 0;        // F as programmed (units/min or 1/min in G93)
-    double m_speed = 0;       // S, rpm
-    int m_spindle = 0;        // 0 off, 1 cw, -1 ccw
+    // The physical feed: F in the units in force when F was executed (LinuxCNC's canon keeps
+    // it across a later G20/G21). Where F and the units change were, for FeedUnitsChanged.
+    double m_feedMm = 0;
+    bool m_feedMetric = true;
+    bool m_feedUnitsWarned = false;
+    std::uint32_t m_feedLine = 0;
+    std::uint32_t m_unitsLine = 0, m_unitsColumn = 0;
+    double m_speed = 0; // S, rpm
+    int m_spindle = 0;  // 0 off, 1 cw, -1 ccw
     int m_tool = 0, m_selectedTool = 0;
     bool m_mist = false, m_flood = false;
     int m_pathMode = 2;                                             // 0 G61, 1 G61.1, 2 G64

@@ -136,6 +136,20 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
         return false;
     if (m_pos < n && m_text[m_pos] == 'o')
         return readOword(block, error);
+    if (m_pos < n && m_text[m_pos] == '$') { // grbl's system commands ($H, $X, $$, $J=...)
+        if (m_text.size() == m_pos + 2 && m_text[m_pos + 1] == 'h')
+            return fail(ErrorCode::GrblHoming, m_pos, {}, error);
+        std::string command = "$";
+        for (std::size_t i = m_pos + 1; i < n && i < m_pos + 12; ++i)
+            command += static_cast<char>(m_text[i] >= 'a' && m_text[i] <= 'z' ? m_text[i] - 32
+                                                                              : m_text[i]);
+        return fail(ErrorCode::GrblCommand, m_pos, command, error);
+    }
+    if (m_blockDelete && m_pos == 0 && n > 0 && m_text[0] == '/') { // "//" at the line start
+        fail(ErrorCode::SlashComment, 0, {}, error);
+        error->column -= 1;
+        return false;
+    }
     while (m_pos < n) {
         const char c = m_text[m_pos];
         if (c == 'g') {
@@ -154,8 +168,18 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
                             c == 'n' ? "N (line numbers go first)" : "O (O-words go first)", error);
             if (c == 'b' || c == 'c' || c == 'u' || c == 'v' || c == 'w')
                 return fail(ErrorCode::UnsupportedAxis, at, std::string(1, c - 32), error);
-            if (c == 'd' || c == 'e')
+            if (c == 'd' || c == 'e') {
+                if (m_skipUnsupported) {
+                    ++m_pos;
+                    double ignored = 0;
+                    if (!readRealValue(&ignored, error))
+                        return false;
+                    continue;
+                }
+                if (c == 'd') // only cutter radius compensation uses D
+                    return fail(ErrorCode::CutterCompensation, at, "D", error);
                 return fail(ErrorCode::UnsupportedWord, at, std::string(1, c - 32), error);
+            }
             const std::uint32_t bit = 1u << (c - 'a');
             if (block.letters & bit)
                 return fail(ErrorCode::RepeatedWord, at, std::string(1, c - 32), error);
@@ -173,11 +197,22 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
             block.letters |= bit;
             block.value[c - 'a'] = v;
             block.column[c - 'a'] = static_cast<std::uint32_t>(at);
+        } else if (c == '/' && m_pos + 1 < n && m_text[m_pos + 1] == '/') {
+            return fail(ErrorCode::SlashComment, m_pos, {}, error);
         } else {
             return fail(ErrorCode::BadCharacter, m_pos, std::string(1, c), error);
         }
     }
     return true;
+}
+
+bool Parser::parseSkippingUnsupported(Block &block, std::vector<Assignment> &assignments,
+                                      Error *error)
+{
+    m_skipUnsupported = true;
+    const bool ok = parse(block, assignments, error);
+    m_skipUnsupported = false;
+    return ok;
 }
 
 bool Parser::readGCode(Block &block, Error *error)
@@ -205,10 +240,22 @@ bool Parser::readGCode(Block &block, Error *error)
     const int group = gGroup(code, &supported, &reason);
     if (group < 0)
         return fail(ErrorCode::UnknownGCode, at, gName(code), error);
+    if (!supported && m_skipUnsupported)
+        return true;
+    if (!supported && group == kGCutterComp)
+        return fail(ErrorCode::CutterCompensation, at, gName(code), error);
     if (!supported)
         return fail(ErrorCode::UnsupportedGCode, at, gName(code) + " (" + reason + ")", error);
-    if (block.hasG(group))
-        return fail(ErrorCode::ModalGroupConflict, at, gName(code), error);
+    if (block.hasG(group)) {
+        // LinuxCNC ignores G80 in a block with another motion code (the Fanuc-style safety line
+        // "G00 G17 G21 G40 G49 G80 G90"); Frezka does so beside G0..G3, not beside a cycle.
+        const int other = block.g[group];
+        const auto plainMotion = [](int g) { return g == 0 || g == 10 || g == 20 || g == 30; };
+        if (group == kGMotion && code == 800 && plainMotion(other))
+            return true;
+        if (group != kGMotion || other != 800 || !plainMotion(code))
+            return fail(ErrorCode::ModalGroupConflict, at, gName(code), error);
+    }
     block.gMask |= 1u << group;
     block.g[group] = static_cast<std::int16_t>(code);
     block.gColumn[group] = static_cast<std::uint32_t>(at);
@@ -231,13 +278,16 @@ bool Parser::readMCode(Block &block, Error *error)
     const std::string name = "M" + std::to_string(code);
     if (code < 0)
         return fail(ErrorCode::UnknownMCode, at, name, error);
+    if (code == 29)
+        return m_skipUnsupported || fail(ErrorCode::FanucRigidTapping, at, name, error);
     bool supported = true;
     const char *reason = "";
     const int group = mGroup(code, &supported, &reason);
     if (group < 0)
         return fail(ErrorCode::UnknownMCode, at, name, error);
     if (!supported)
-        return fail(ErrorCode::UnsupportedMCode, at, name + " (" + reason + ")", error);
+        return m_skipUnsupported ||
+               fail(ErrorCode::UnsupportedMCode, at, name + " (" + reason + ")", error);
     if (block.hasM(group))
         return fail(ErrorCode::ModalGroupConflict, at, name, error);
     block.mMask |= 1u << group;

@@ -118,6 +118,9 @@ public:
 
     // Reads the normalized line into block and assignments (cleared first).
     bool parse(Block &block, std::vector<Assignment> &assignments, Error *error);
+    // After an error in check mode: the line again, its unsupported codes and words skipped, so
+    // that the interpreter can take the state the block would have set (no follow-on errors).
+    bool parseSkippingUnsupported(Block &block, std::vector<Assignment> &assignments, Error *error);
 
     // Only the O word of the normalized line (no expression evaluated): for skipping.
     // False when the line has no O word; error only for a malformed O word.
@@ -161,6 +164,7 @@ private:
     std::uint32_t m_line = 0;
     std::size_t m_pos = 0;
     bool m_blockDelete = false;
+    bool m_skipUnsupported = false;
 };
 
 // Modal group of G code (10 x number), -1 if unknown; *supported false for known codes that

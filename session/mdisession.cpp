@@ -81,6 +81,7 @@ void MdiSession::reset()
 bool MdiSession::start(const Axes4 &machineMm, const OffsetState &offsets)
 {
     gcode::Options options;
+    options.acceptMissingEnd = false; // a console line is no program: it never ends
     options.workOffsetsMm = offsets.systems;
     options.coordinateSystem = offsets.active;
     options.startMm = {machineMm[0], machineMm[1], machineMm[2], machineMm[3]};

@@ -4,6 +4,8 @@
 
 #include "gcode/interpreter.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 
 namespace frezka::session {
@@ -31,6 +33,22 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     InterpretOutcome out;
     for (const auto &e : result.errors)
         out.errors.push_back({int(e.line), int(e.column), gcode::formatError(req.fileName, e)});
+    if (result.errorsNotShown > 0) {
+        out.errors.push_back(
+            {0, 0,
+             QCoreApplication::translate("frezka::gcode", "%1: %n more error(s) not shown", "",
+                                         int(result.errorsNotShown))
+                 .arg(req.fileName)});
+    }
+    for (const auto &w : result.warnings)
+        out.warnings.push_back({int(w.line), int(w.column), gcode::formatError(req.fileName, w)});
+    if (result.warningsNotShown > 0) {
+        out.warnings.push_back(
+            {0, 0,
+             QCoreApplication::translate("frezka::gcode", "%1: %n more warning(s) not shown", "",
+                                         int(result.warningsNotShown))
+                 .arg(req.fileName)});
+    }
     out.toolpath = std::make_shared<gcode::Toolpath>(std::move(result.toolpath));
     return out;
 }

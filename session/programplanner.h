@@ -45,6 +45,9 @@ struct InterpretOutcome
 {
     std::shared_ptr<gcode::Toolpath> toolpath;
     std::vector<ProgramMessage> errors;
+    // The interpreter's warnings and notes (the program runs; "FILE:LINE:COL: warning: ..."),
+    // the last one saying how many more were not shown.
+    std::vector<ProgramMessage> warnings;
 };
 
 InterpretOutcome interpretProgram(const InterpretRequest &request);

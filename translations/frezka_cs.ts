@@ -1996,6 +1996,102 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</source>
         <translation>použití: frezka-cli check SOUBOR [--rapid MM_ZA_MIN] [--machine PROFIL]</translation>
     </message>
+    <message>
+        <source>F%1 was read in %2 (line %3) before this change of units: the feed moves after it run at %1 %2 (%4 %5), as in LinuxCNC, not at %1 %5 (%6 %2)</source>
+        <translation>F%1 bylo načteno v %2 (řádek %3) před touto změnou jednotek: pracovní posuvy za ní jedou %1 %2 (%4 %5) jako v LinuxCNC, ne %1 %5 (%6 %2)</translation>
+    </message>
+    <message>
+        <source>LinuxCNC reads F before G20/G21, also on the same line; if %1 %5 was meant, give F again after the change of units.</source>
+        <translation>LinuxCNC čte F před G20/G21, i na tomtéž řádku; bylo-li míněno %1 %5, zadejte F znovu až po změně jednotek.</translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>varování: </translation>
+    </message>
+    <message>
+        <source>note: </source>
+        <translation>poznámka: </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n more warning(s) not shown</source>
+        <translation>
+            <numerusform>%1: %n další varování nezobrazeno</numerusform>
+            <numerusform>%1: %n další varování nezobrazena</numerusform>
+            <numerusform>%1: %n dalších varování nezobrazeno</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>$H is grbl&apos;s homing command, not G-code</source>
+        <translation>$H je příkaz grbl pro najetí do reference, ne G-kód</translation>
+    </message>
+    <message>
+        <source>%1 is a grbl system command, not G-code</source>
+        <translation>%1 je systémový příkaz grbl, ne G-kód</translation>
+    </message>
+    <message>
+        <source>Delete the line; grbl&apos;s $ settings and commands have no meaning here (set the machine up in Frezka&apos;s machine profile, home and jog from Frezka).</source>
+        <translation>Řádek smažte; nastavení a příkazy $ systému grbl tu nemají význam (stroj nastavte v profilu stroje ve Frezce, referenci a ruční posuvy ovládejte z Frezky).</translation>
+    </message>
+    <message>
+        <source>&apos;//&apos; comments are not RS274/NGC G-code (they come from other controllers&apos; dialects, e.g. Beckhoff TwinCAT)</source>
+        <translation>Komentáře &apos;//&apos; nejsou G-kód RS274/NGC (pocházejí z dialektů jiných řídicích systémů, např. Beckhoff TwinCAT)</translation>
+    </message>
+    <message>
+        <source>Write the comment in parentheses ( ) or after a semicolon ;.</source>
+        <translation>Napište komentář do kulatých závorek ( ) nebo za středník ;.</translation>
+    </message>
+    <message>
+        <source>M29 is the rigid tapping code of Fanuc-style controllers</source>
+        <translation>M29 je kód tuhého řezání závitů řídicích systémů typu Fanuc</translation>
+    </message>
+    <message>
+        <source>Frezka has no spindle-synchronised tapping (the GVE units have no spindle encoder): tap with a floating tap holder or by hand, and post the program without M29 and G84.</source>
+        <translation>Frezka neumí řezat závity synchronně s vřetenem (jednotky GVE nemají snímač otáček vřetena): řežte závity v plovoucím držáku nebo ručně a vygenerujte program bez M29 a G84.</translation>
+    </message>
+    <message>
+        <source>The file ends without M2, M30 or %: the program is taken to end here, with the spindle and coolant switched off as at M2</source>
+        <translation>Soubor končí bez M2, M30 nebo %: program se považuje za ukončený zde a vřeteno i chlazení se vypnou jako při M2</translation>
+    </message>
+    <message>
+        <source>Check that the file is complete (not cut short when it was copied); end the program with M2 or M30.</source>
+        <translation>Zkontrolujte, že je soubor úplný (nebyl při kopírování zkrácen); program ukončete kódem M2 nebo M30.</translation>
+    </message>
+    <message>
+        <source>G4 P%1 dwells %1 seconds (%2), as in LinuxCNC; if the post meant milliseconds (as Mach3 and UCCNC can), that is %3 s</source>
+        <translation>G4 P%1 čeká %1 sekund (%2) jako v LinuxCNC; pokud postprocesor myslel milisekundy (jak to umí Mach3 a UCCNC), jde o %3 s</translation>
+    </message>
+    <message>
+        <source>Frezka reads P in seconds; write P%3 if %3 s was meant.</source>
+        <translation>Frezka čte P v sekundách; bylo-li míněno %3 s, napište P%3.</translation>
+    </message>
+    <message>
+        <source>%1 has no effect on an arc in the %2 plane and is ignored</source>
+        <translation>%1 nemá na oblouk v rovině %2 žádný vliv a přeskakuje se</translation>
+    </message>
+    <message>
+        <source>Some posts (e.g. FreeCAD&apos;s grbl post) write it; LinuxCNC refuses it, and any value other than 0 is an error.</source>
+        <translation>Některé postprocesory (např. postprocesor grbl ve FreeCADu) jej zapisují; LinuxCNC jej odmítá a každá jiná hodnota než 0 je chyba.</translation>
+    </message>
+    <message>
+        <source>Home the machine from Frezka (Home all) before starting the program, and delete this line.</source>
+        <translation>Před spuštěním programu najeďte strojem do reference z Frezky (Reference všech os) a tento řádek smažte.</translation>
+    </message>
+    <message>
+        <source>%1: cutter radius compensation is not supported yet</source>
+        <translation>%1: korekce poloměru nástroje zatím není podporována</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n more error(s) not shown</source>
+        <translation>
+            <numerusform>%1: %n další chyba nezobrazena</numerusform>
+            <numerusform>%1: %n další chyby nezobrazeny</numerusform>
+            <numerusform>%1: %n dalších chyb nezobrazeno</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</source>
+        <translation>Vygenerujte program z CAM znovu s korekcí spočtenou v CAM (dráha už posunutá o poloměr nástroje, bez G41/G42 a bez D). Pouhé smazání G41/G42 by posunulo řez mimo dráhu o poloměr nástroje.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

@@ -1995,6 +1995,100 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</source>
         <translation>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</translation>
     </message>
+    <message>
+        <source>F%1 was read in %2 (line %3) before this change of units: the feed moves after it run at %1 %2 (%4 %5), as in LinuxCNC, not at %1 %5 (%6 %2)</source>
+        <translation>F%1 was read in %2 (line %3) before this change of units: the feed moves after it run at %1 %2 (%4 %5), as in LinuxCNC, not at %1 %5 (%6 %2)</translation>
+    </message>
+    <message>
+        <source>LinuxCNC reads F before G20/G21, also on the same line; if %1 %5 was meant, give F again after the change of units.</source>
+        <translation>LinuxCNC reads F before G20/G21, also on the same line; if %1 %5 was meant, give F again after the change of units.</translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>warning: </translation>
+    </message>
+    <message>
+        <source>note: </source>
+        <translation>note: </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n more warning(s) not shown</source>
+        <translation>
+            <numerusform>%1: %n more warning not shown</numerusform>
+            <numerusform>%1: %n more warnings not shown</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>$H is grbl&apos;s homing command, not G-code</source>
+        <translation>$H is grbl&apos;s homing command, not G-code</translation>
+    </message>
+    <message>
+        <source>%1 is a grbl system command, not G-code</source>
+        <translation>%1 is a grbl system command, not G-code</translation>
+    </message>
+    <message>
+        <source>Delete the line; grbl&apos;s $ settings and commands have no meaning here (set the machine up in Frezka&apos;s machine profile, home and jog from Frezka).</source>
+        <translation>Delete the line; grbl&apos;s $ settings and commands have no meaning here (set the machine up in Frezka&apos;s machine profile, home and jog from Frezka).</translation>
+    </message>
+    <message>
+        <source>&apos;//&apos; comments are not RS274/NGC G-code (they come from other controllers&apos; dialects, e.g. Beckhoff TwinCAT)</source>
+        <translation>&apos;//&apos; comments are not RS274/NGC G-code (they come from other controllers&apos; dialects, e.g. Beckhoff TwinCAT)</translation>
+    </message>
+    <message>
+        <source>Write the comment in parentheses ( ) or after a semicolon ;.</source>
+        <translation>Write the comment in parentheses ( ) or after a semicolon ;.</translation>
+    </message>
+    <message>
+        <source>M29 is the rigid tapping code of Fanuc-style controllers</source>
+        <translation>M29 is the rigid tapping code of Fanuc-style controllers</translation>
+    </message>
+    <message>
+        <source>Frezka has no spindle-synchronised tapping (the GVE units have no spindle encoder): tap with a floating tap holder or by hand, and post the program without M29 and G84.</source>
+        <translation>Frezka has no spindle-synchronised tapping (the GVE units have no spindle encoder): tap with a floating tap holder or by hand, and post the program without M29 and G84.</translation>
+    </message>
+    <message>
+        <source>The file ends without M2, M30 or %: the program is taken to end here, with the spindle and coolant switched off as at M2</source>
+        <translation>The file ends without M2, M30 or %: the program is taken to end here, with the spindle and coolant switched off as at M2</translation>
+    </message>
+    <message>
+        <source>Check that the file is complete (not cut short when it was copied); end the program with M2 or M30.</source>
+        <translation>Check that the file is complete (not cut short when it was copied); end the program with M2 or M30.</translation>
+    </message>
+    <message>
+        <source>G4 P%1 dwells %1 seconds (%2), as in LinuxCNC; if the post meant milliseconds (as Mach3 and UCCNC can), that is %3 s</source>
+        <translation>G4 P%1 dwells %1 seconds (%2), as in LinuxCNC; if the post meant milliseconds (as Mach3 and UCCNC can), that is %3 s</translation>
+    </message>
+    <message>
+        <source>Frezka reads P in seconds; write P%3 if %3 s was meant.</source>
+        <translation>Frezka reads P in seconds; write P%3 if %3 s was meant.</translation>
+    </message>
+    <message>
+        <source>%1 has no effect on an arc in the %2 plane and is ignored</source>
+        <translation>%1 has no effect on an arc in the %2 plane and is ignored</translation>
+    </message>
+    <message>
+        <source>Some posts (e.g. FreeCAD&apos;s grbl post) write it; LinuxCNC refuses it, and any value other than 0 is an error.</source>
+        <translation>Some posts (e.g. FreeCAD&apos;s grbl post) write it; LinuxCNC refuses it, and any value other than 0 is an error.</translation>
+    </message>
+    <message>
+        <source>Home the machine from Frezka (Home all) before starting the program, and delete this line.</source>
+        <translation>Home the machine from Frezka (Home all) before starting the program, and delete this line.</translation>
+    </message>
+    <message>
+        <source>%1: cutter radius compensation is not supported yet</source>
+        <translation>%1: cutter radius compensation is not supported yet</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n more error(s) not shown</source>
+        <translation>
+            <numerusform>%1: %n more error not shown</numerusform>
+            <numerusform>%1: %n more errors not shown</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</source>
+        <translation>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

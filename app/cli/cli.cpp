@@ -41,6 +41,18 @@ QString planMessage(const QString &file, const machine::PlanError &error, const 
            QString::fromStdString(what) + QLatin1Char('\n');
 }
 
+void printGcodeWarnings(const QString &file, const gcode::Result &result)
+{
+    for (const gcode::Error &w : result.warnings)
+        err(gcode::formatError(file, w) + QLatin1Char('\n'));
+    if (result.warningsNotShown > 0) {
+        err(QCoreApplication::translate("frezka::gcode", "%1: %n more warning(s) not shown", "",
+                                        static_cast<int>(result.warningsNotShown))
+                .arg(file) +
+            QLatin1Char('\n'));
+    }
+}
+
 void printConfigNotes(const machine::ConfigResult &result)
 {
     const QString note = QCoreApplication::translate("frezka::cli", "note: ");

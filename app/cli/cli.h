@@ -10,6 +10,7 @@
 
 #include <QStringList>
 
+#include "gcode/interpreter.h"
 #include "machine/machineconfig.h"
 #include "machine/planner.h"
 
@@ -35,6 +36,9 @@ void out(const QString &text);
 void err(const QString &text);
 // "FILE:LINE: KIND<message>\n" for a plan error or warning (its own "line N: " prefix dropped).
 QString planMessage(const QString &file, const machine::PlanError &error, const QString &kind);
+// Prints the interpreter's warnings and notes ("FILE:LINE:COL: warning: ...") and how many were
+// not shown, to stderr.
+void printGcodeWarnings(const QString &file, const gcode::Result &result);
 // Prints what became of a profile's retired keys ("note: ..."), one line each, to stderr.
 void printConfigNotes(const machine::ConfigResult &result);
 

@@ -110,10 +110,16 @@ int runCheck(const QStringList &args)
     gcode::Options options;
     options.collectAllErrors = true;
     const gcode::Result result = gcode::interpretFile(file.toStdString(), options);
+    cli::printGcodeWarnings(file, result);
     if (!result.ok()) {
         for (const gcode::Error &e : result.errors)
             cli::err(gcode::formatError(file, e) + QLatin1Char('\n'));
-        const int count = static_cast<int>(result.errors.size());
+        if (result.errorsNotShown > 0)
+            cli::err(QCoreApplication::translate("frezka::gcode", "%1: %n more error(s) not shown",
+                                                 "", static_cast<int>(result.errorsNotShown))
+                         .arg(file) +
+                     QLatin1Char('\n'));
+        const int count = static_cast<int>(result.errors.size() + result.errorsNotShown);
         cli::err(
             QCoreApplication::translate("frezka::gcode", "%1: %n error(s)", "", count).arg(file) +
             QLatin1Char('\n'));

@@ -166,6 +166,8 @@ std::optional<Prepared> prepare(const RunArgs &a)
     request.text = file.readAll();
     request.fileName = a.file;
     const session::InterpretOutcome g = session::interpretProgram(request);
+    for (const session::ProgramMessage &w : g.warnings)
+        cli::err(w.text + QLatin1Char('\n'));
     if (!g.errors.empty()) {
         for (const session::ProgramMessage &e : g.errors)
             cli::err(e.text + QLatin1Char('\n'));

@@ -38,6 +38,7 @@ int runToolpath(const QStringList &args)
         return usage();
     }
     const gcode::Result result = gcode::interpretFile(file.toStdString());
+    cli::printGcodeWarnings(file, result);
     if (!result.ok()) {
         for (const gcode::Error &e : result.errors)
             cli::err(gcode::formatError(file, e) + QLatin1Char('\n'));

@@ -33,11 +33,27 @@ grep -q "zero_feed.nc:4:1: G1 with zero feed rate" "$tmp/err" || fail "toolpath 
 grep -q "arc_radius_mismatch.nc:5:1: Arc end point is not on the circle" "$tmp/err" ||
     fail "check error: $(cat "$tmp/err")"
 
+# check with more errors than it keeps: the rest are counted.
+i=0
+: >"$tmp/many.nc"
+while [ $i -lt 1005 ]; do echo "G1 X1 Q2" >>"$tmp/many.nc"; i=$((i + 1)); done
+echo "M2" >>"$tmp/many.nc"
+"$cli" check "$tmp/many.nc" >"$tmp/out" 2>"$tmp/err"
+[ $? -eq 1 ] || fail "check on many errors must exit 1"
+grep -q "many.nc: 5 more error" "$tmp/err" || fail "errors not shown: $(tail -2 "$tmp/err")"
+grep -q "many.nc: 1005 error" "$tmp/err" || fail "error count: $(tail -1 "$tmp/err")"
+
 # check on a good program: the summary.
 "$cli" check "$data/good/estlcam.nc" >"$tmp/out" 2>"$tmp/err" || fail "check good exit $?"
 grep -q "moves: 19 (rapid 5, feed 10, arc 4, probe 0), dwells: 0" "$tmp/out" || fail "summary"
 grep -q "bounds (machine, mm): X 0.0000 .. 30.0000, Y 0.0000 .. 25.0000, Z -1.0000 .. 5.0000" \
     "$tmp/out" || fail "bounds: $(cat "$tmp/out")"
+
+# warnings go to stderr as FILE:LINE:COL: warning: ..., and the program still checks OK.
+"$cli" check "$data/good/units_feed_spindle.nc" >"$tmp/out" 2>"$tmp/err" || fail "check warnings exit $?"
+grep -q "units_feed_spindle.nc:5:1: warning: F6 was read in mm/min (line 4) before this change of units" \
+    "$tmp/err" || fail "units warning: $(cat "$tmp/err")"
+grep -q "units_feed_spindle.nc: OK" "$tmp/out" || fail "check with warnings: $(cat "$tmp/out")"
 
 # a missing file and a usage error
 "$cli" check "$tmp/missing.nc" 2>"$tmp/err"

@@ -88,6 +88,8 @@ Rs274Run runRs274(const std::string &file)
     double unit = 1;
     std::array<double, 6> g5x{}, g92{};
     double toolZ = 0;
+    double feedMm = 0, rpm = 0;
+    int spindleDir = 0;
     Plane plane = Plane::XY;
     std::string line;
     bool expectErrorLine = false;
@@ -128,6 +130,13 @@ Rs274Run runRs274(const std::string &file)
             for (int i = 0; i < 3; ++i)
                 o[i] *= unit;
         };
+        auto push = [&](CanonMove m) {
+            m.unitMm = unit;
+            m.call = call;
+            m.feedMmPerMin = feedMm;
+            m.spindleRpm = spindleDir * rpm;
+            run.moves.push_back(m);
+        };
         if (name == "USE_LENGTH_UNITS") {
             unit = call.find("INCHES") != std::string::npos ? 25.4 : 1.0;
         } else if (name == "SET_G5X_OFFSET" && v.size() >= 7) {
@@ -150,17 +159,13 @@ Rs274Run runRs274(const std::string &file)
                      : name == "STRAIGHT_FEED"   ? MotionKind::Feed
                                                  : MotionKind::Probe;
             m.end = machine(v[0], v[1], v[2], v[3]);
-            m.unitMm = unit;
-            m.call = call;
-            run.moves.push_back(m);
+            push(m);
         } else if (name == "ARC_FEED" && v.size() >= 7) {
             // ARC_FEED(first_end, second_end, first_axis, second_axis, rotation, axis_end, a..)
             CanonMove m;
             m.kind = MotionKind::Arc;
             m.plane = plane;
             m.turns = static_cast<int>(v[4]);
-            m.unitMm = unit;
-            m.call = call;
             double e[3] = {0, 0, 0}, c[3] = {0, 0, 0};
             const int u = plane == Plane::XY ? 0 : plane == Plane::XZ ? 2 : 1;
             const int w = plane == Plane::XY ? 2 : plane == Plane::XZ ? 1 : 0;
@@ -172,16 +177,30 @@ Rs274Run runRs274(const std::string &file)
             c[vv] = v[3];
             m.end = machine(e[0], e[1], e[2], v[6]);
             m.centre = machine(c[0], c[1], c[2], 0);
-            run.moves.push_back(m);
-        } else if (name == "DWELL") {
+            push(m);
+        } else if (name == "DWELL" && !v.empty()) {
             CanonMove m;
             m.kind = MotionKind::Dwell;
-            m.call = call;
-            m.unitMm = unit;
-            run.moves.push_back(m);
+            m.dwellSeconds = v[0];
+            push(m);
+        } else if (name == "SET_FEED_RATE" && !v.empty()) {
+            feedMm = v[0] * unit;
+        } else if (name == "SET_SPINDLE_SPEED" && v.size() >= 2) {
+            rpm = v[1];
+        } else if (name == "START_SPINDLE_CLOCKWISE") {
+            spindleDir = 1;
+        } else if (name == "START_SPINDLE_COUNTERCLOCKWISE") {
+            spindleDir = -1;
+        } else if (name == "STOP_SPINDLE_TURNING") {
+            spindleDir = 0;
         }
     }
     return run;
+}
+
+bool Rs274Run::endedWithoutEnd() const
+{
+    return error == "File ended with no percent sign or program end";
 }
 
 namespace {
@@ -192,12 +211,34 @@ bool near(const Point4 &p, const Point4 &q, double tol)
            std::fabs(p.z - q.z) <= tol && std::fabs(p.a - q.a) <= 1e-4;
 }
 
+// The spindle speed in force after each entry of the toolpath (rpm; + M3, - M4, 0 stopped).
+std::vector<double> spindleInForce(const Toolpath &tp)
+{
+    std::vector<double> out(tp.size());
+    double rpm = 0;
+    for (std::size_t i = 0; i < tp.size(); ++i) {
+        if (tp.kind(i) == MotionKind::Event) {
+            const Event &e = tp.event(i);
+            if (e.kind == EventKind::SpindleCw)
+                rpm = e.value;
+            else if (e.kind == EventKind::SpindleCcw)
+                rpm = -e.value;
+            else if (e.kind == EventKind::SpindleOff)
+                rpm = 0;
+            else if (e.kind == EventKind::SpindleSpeed)
+                rpm = rpm < 0 ? -e.value : e.value;
+        }
+        out[i] = rpm;
+    }
+    return out;
+}
+
 } // namespace
 
-testing::AssertionResult matchesRs274(const std::string &file)
+testing::AssertionResult matchesRs274(const std::string &file, const std::string &rs274File)
 {
-    const Rs274Run ref = runRs274(file);
-    if (!ref.error.empty())
+    const Rs274Run ref = runRs274(rs274File.empty() ? file : rs274File);
+    if (!ref.error.empty() && !ref.endedWithoutEnd())
         return testing::AssertionFailure() << "rs274: " << ref.error << " at: " << ref.errorLine;
     const Result r = interpretFile(file);
     if (!r.ok())
@@ -205,6 +246,7 @@ testing::AssertionResult matchesRs274(const std::string &file)
                << "frezka: " << r.errors[0].line << ":" << r.errors[0].column << ": "
                << englishMessage(r.errors[0]);
     const Toolpath &tp = r.toolpath;
+    const std::vector<double> spindle = spindleInForce(tp);
     std::vector<std::size_t> ours;
     for (std::size_t i = 0; i < tp.size(); ++i) {
         if (tp.kind(i) != MotionKind::Event)
@@ -222,11 +264,20 @@ testing::AssertionResult matchesRs274(const std::string &file)
         };
         if (tp.kind(i) != m.kind)
             return failure("kind");
-        if (m.kind == MotionKind::Dwell)
+        if (std::fabs(spindle[i] - m.spindleRpm) > 1e-4 + 1e-9 * std::fabs(m.spindleRpm))
+            return failure("spindle speed");
+        if (m.kind == MotionKind::Dwell) {
+            if (std::fabs(tp.event(i).value - m.dwellSeconds) > 1e-4)
+                return failure("dwell time");
             continue;
+        }
         const double tol = 1e-4 * m.unitMm + 1e-9; // 4 decimals in program units
         if (!near(tp.end(i), m.end, tol))
             return failure("end point");
+        // rs274 prints the rate with 4 decimals in the units of the SET_FEED_RATE call.
+        if (m.kind != MotionKind::Rapid &&
+            std::fabs(tp.feedMmPerMin(i) - m.feedMmPerMin) > 1e-4 * 25.4 + 1e-9 * m.feedMmPerMin)
+            return failure("feed");
         if (m.kind != MotionKind::Arc)
             continue;
         const ArcInfo arc = tp.arc(i);

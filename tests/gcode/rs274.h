@@ -21,7 +21,13 @@ struct CanonMove
     Plane plane = Plane::XY;
     int turns = 0;
     double unitMm = 1; // 25.4 when the program was in G20 at this move
-    std::string call;  // the canonical line, for messages
+    // The feed in force (SET_FEED_RATE in the units of its call, in mm/min: LinuxCNC's canon
+    // keeps the physical rate across a units change), the dwell time (s) and the spindle speed
+    // in force (rpm; + M3, - M4, 0 when stopped).
+    double feedMmPerMin = 0;
+    double dwellSeconds = 0;
+    double spindleRpm = 0;
+    std::string call; // the canonical line, for messages
 };
 
 struct Rs274Run
@@ -30,13 +36,19 @@ struct Rs274Run
     std::vector<CanonMove> moves;
     std::string error;     // rs274's error message, empty when none
     std::string errorLine; // the program line rs274 quoted with the error
+    // rs274's error is only that the file ended without M2/M30/% (which Frezka accepts with a
+    // warning): the motions before it are complete.
+    bool endedWithoutEnd() const;
 };
 
 std::string rs274Path(); // empty when not installed
 Rs274Run runRs274(const std::string &file);
 
 // Runs the file through both interpreters: same motion and dwell sequence, kinds, end points and
-// arc centres within 1e-4 program units (rs274 prints 4 decimals), same arc planes and turns.
-testing::AssertionResult matchesRs274(const std::string &file);
+// arc centres within 1e-4 program units (rs274 prints 4 decimals), same arc planes and turns,
+// the same feed (mm/min) on every feed, arc and probe move, the same dwell times and the same
+// spindle speed in force at every motion and dwell. rs274 sees rs274File when given (a copy
+// edited to LinuxCNC's dialect, e.g. without the K0 words Frezka accepts and rs274 refuses).
+testing::AssertionResult matchesRs274(const std::string &file, const std::string &rs274File = {});
 
 } // namespace frezka::gcode::test

@@ -66,7 +66,8 @@ TEST(MdiSession, FeedAndMotionModeCarryOver)
 TEST(MdiSession, FollowsTheMachineAfterAJogAndKeepsItsModes)
 {
     Console c;
-    c.line("G91 G20 G1 X1 F10");
+    c.line("G20"); // F on the line of a G20 would be read in mm first, as in LinuxCNC
+    c.line("G91 G1 X1 F10");
     c.machine = {100, -20, -5, 0}; // jogged elsewhere between lines
     const auto o = c.line("X1");
     EXPECT_DOUBLE_EQ(o.toolpath.origin().x, 100.0);

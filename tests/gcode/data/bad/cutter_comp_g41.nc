@@ -1,4 +1,4 @@
-; expect: UnsupportedGCode 4:4
+; expect: CutterCompensation 4:4
 ; Cutter radius compensation is refused, never skipped.
 G21 G90 F100
 G0 G41 D1 X10

@@ -1,0 +1,16 @@
+%
+( Fanuc-style post: a safety line with G80 beside G00 first, as many posts write it )
+N1 G00 G17 G21 G40 G49 G80 G90
+N2 G54 G00 X10. Y10.
+N3 S12000 M03
+N4 G00 Z5.
+N5 G01 Z-1. F300.
+N6 G01 X40. F800.
+N7 G02 X50. Y20. I0. J10.
+N8 G01 Y40.
+N9 G80 G00 Z5.
+N10 G01 G80 Z2. F500.
+N11 M05
+N12 G00 G17 G21 G40 G49 G80 G90 X0. Y0.
+N13 M30
+%
