@@ -46,6 +46,7 @@ struct Derived
     std::int64_t accel = 0; // A (thousands)
     std::int64_t twoAU = 0; // 2 · A · usable distance, integer pulses²/s², floored
     bool isShort = false;
+    bool restBefore = false;   // the unit stands when it begins (the run's start, a forced rest)
     double wireBytes = 0;      // the C command on the serial line, bytes
     double wireCap = kInf;     // B cap at both its ends so that it keeps the link's pace, units
     double speedCap = kInf;    // B cap at both its ends where V lies above its own cap, units

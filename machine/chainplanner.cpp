@@ -133,6 +133,8 @@ void RunPlanner::derive()
     m_d.resize(m_moves.size());
     for (std::size_t k = 0; k < m_moves.size(); ++k)
         deriveOne(m_moves[k], m_d[k]);
+    for (std::size_t k = 0; k < m_moves.size(); ++k)
+        m_d[k].restBefore = k == 0 || m_moves[k - 1].stopAfter || !softStopAllowed(k - 1);
     chooseSpeeds(m_d, m_options, m_link);
     chooseAccels(m_d, m_options, m_link);
     m_derived = m_d;

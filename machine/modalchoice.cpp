@@ -193,12 +193,14 @@ std::int64_t accelCap(const std::vector<Derived> &d, std::size_t k, const PlanOp
     const Derived &r = d[k];
     double a = r.aMm; // r.aMm stays the limit itself: the bound uses it
     double reach = r.units < w ? 0 : w;
-    for (std::size_t j = k; j > 0 && reach < w; --j) {
+    // Not across a rest: there the direction starts anew (a rapid's Y-bound acceleration held a
+    // one-step X vector after it at a quarter of X's, property seed 45).
+    for (std::size_t j = k; j > 0 && reach < w && !d[j].restBefore; --j) {
         a = std::min(a, d[j - 1].aMm);
         reach += d[j - 1].units;
     }
     reach = r.units < w ? 0 : w;
-    for (std::size_t j = k + 1; j < n && reach < w; ++j) {
+    for (std::size_t j = k + 1; j < n && reach < w && !d[j].restBefore; ++j) {
         a = std::min(a, d[j].aMm);
         reach += d[j].units;
     }

@@ -10,9 +10,13 @@
 //                                                packets) on a clean link
 //   stream_soak --dump SEED MAX_LINES DIR       writes that case's program and profile (its link
 //                                                in link.baud/latencyMs/packets) to DIR/seed-N.*
+//   stream_soak --ratios CASES FIRST_SEED MAX_LINES  each case's estimate / bound as planned,
+//                                                without V and A sharing, without the link's pace
 //   STREAM_SOAK_VERBOSE=1 also lists every case off the link's pace (else only those that
 //   stopped with an error on a clean link, which it must never do).
 #include "randomjob.h"
+
+#include "gcode/interpreter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,6 +58,33 @@ int runOne(const char *programPath, const char *profilePath)
     return o.wrong.empty() ? 0 : 1;
 }
 
+// Where a case's estimate lies above its bound: the plan's estimate and bound with the link's
+// pace as planned, without V and A sharing (speedChangeCost 0), and without the link's pace.
+int ratios(long cases, long first, int maxLines)
+{
+    for (long i = 0; i < cases; ++i) {
+        const RandomJob job = drawJob(static_cast<std::uint64_t>(first + i), maxLines);
+        const auto toolpath = frezka::gcode::interpretText(job.program).toolpath;
+        std::printf("seed %ld:", first + i);
+        for (int variant = 0; variant < 3; ++variant) {
+            frezka::machine::PlanOptions o;
+            o.speedChangeCost = variant == 1 ? 0.0 : 1.0;
+            o.wireLimited = variant != 2;
+            if (const char *w = std::getenv("SOAK_ACCEL_WINDOW"))
+                o.accelWindowSteps = std::atof(w);
+            const auto p = frezka::machine::plan(toolpath, job.config, o);
+            std::printf(" %s %.3f/%.3f=%.4f",
+                        variant == 0   ? "plan"
+                        : variant == 1 ? "noshare"
+                                       : "nopace",
+                        p.stats.estimatedS, p.stats.boundS,
+                        p.stats.boundS > 0 ? p.stats.estimatedS / p.stats.boundS : 0.0);
+        }
+        std::printf("  %s\n", job.summary.c_str());
+    }
+    return 0;
+}
+
 // Writes one drawn case as files that --one (or frezka-cli) can take.
 int dumpOne(std::uint64_t seed, int maxLines, const std::string &dir)
 {
@@ -74,6 +105,8 @@ int main(int argc, char **argv)
 {
     if (argc == 4 && std::string(argv[1]) == "--one")
         return runOne(argv[2], argv[3]);
+    if (argc == 5 && std::string(argv[1]) == "--ratios")
+        return ratios(std::atol(argv[2]), std::atol(argv[3]), std::atoi(argv[4]));
     if (argc == 5 && std::string(argv[1]) == "--dump")
         return dumpOne(std::strtoull(argv[2], nullptr, 10), std::atoi(argv[3]), argv[4]);
     const long cases = argc > 1 ? std::atol(argv[1]) : 3000;
