@@ -139,7 +139,11 @@ void RunPlanner::paceModalChanges()
             for (std::size_t j = first; j < k; ++j)
                 wire += m_link.bareVectorWireS(m_d[j].wireBytes);
             const std::size_t from = k > queue ? k - queue : 0;
-            held = std::min(held + (timeS[k] - timeS[first]) - wire, timeS[k] - timeS[from]);
+            // From rest the first stretch takes at least its acceleration (cruise alone
+            // under-counts it, and the stretch was slowed more than it needed).
+            const double own = m_d[first].restBefore ? fromRestS(timeS[k] - timeS[first], first, k)
+                                                     : timeS[k] - timeS[first];
+            held = std::min(held + own - wire, timeS[k] - timeS[from]);
             held = std::max(held, 0.0);
             if (k < n && changes && !chainStart) {
                 const int commands = (m_d[k].speed != m_d[k - 1].speed ? 1 : 0) +
@@ -212,6 +216,20 @@ void RunPlanner::mergeStretches(std::size_t first, std::size_t k)
         if (m_d[j].accel != a)
             setAccel(m_d[j], a, m_options);
     }
+}
+
+// The time of vectors [first, last), one V and one A, from rest: at least the time to cover their
+// distance accelerating at A toward V (cruiseS: at V throughout).
+double RunPlanner::fromRestS(double cruiseS, std::size_t first, std::size_t last) const
+{
+    double units = 0;
+    for (std::size_t j = first; j < last; ++j)
+        units += m_d[j].units;
+    const double a = 1000.0 * static_cast<double>(std::max<std::int64_t>(m_d[first].accel, 1));
+    const double v = static_cast<double>(std::max<std::int64_t>(m_d[first].speed, 1));
+    const double ramp = v * v / (2 * a); // units covered reaching V
+    const double t = units < ramp ? std::sqrt(2 * units / a) : v / a + (units - ramp) / v;
+    return std::max(cruiseS, t);
 }
 
 // Lowers the V of vectors [first, last) so that they last `missingS` longer at cruise; returns

@@ -61,6 +61,7 @@ private:
     void sharePacedSpeeds(const std::vector<bool> &lowered);
     void paceModalChanges();
     double slowStretch(std::size_t first, std::size_t last, double missingS);
+    double fromRestS(double cruiseS, std::size_t first, std::size_t last) const;
     std::size_t stretchEnd(std::size_t k) const;
     double mergeCostS(std::size_t first, std::size_t k) const;
     void mergeStretches(std::size_t first, std::size_t k);
