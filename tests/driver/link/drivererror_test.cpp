@@ -236,7 +236,8 @@ private slots:
     // The refusals that carry the protocol's reason, from the driver core itself: the feed
     // override (XM0), a console command out of range and one malformed, a new feed out of range
     // when the lifted tool is lowered, a unit program with a speed the unit refuses; each in
-    // English as before, and in Czech without a word of English.
+    // English as before, and in Czech without a word of English. Long: the five refusals share
+    // one connected core and one language switch, and each is a few lines of setup and checks.
     void protocolRefusalsAreCzechEndToEnd()
     {
         test::Sim sim;
