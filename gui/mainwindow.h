@@ -12,6 +12,7 @@
 #include "programview.h"
 
 #include "session/consolesession.h"
+#include "session/remainingtime.h"
 #include "session/runworkflow.h"
 #include "session/workoffsets.h"
 
@@ -177,6 +178,7 @@ private:
     session::ConsoleSession *m_consoleSession = nullptr;
     // Rendering of the running job: the actual speed from the live position; the hold shown.
     ActualSpeed m_speed;
+    session::RemainingTime m_remaining; // the planner's time left, from the job's start
     int m_holdLine = 0;
     QString m_holdDetail;
     QString m_lastError;

@@ -27,6 +27,8 @@ void MainWindow::onJobStarted()
     m_view->model()->setCutEntry(ToolpathViewModel::kNoneCut);
     m_plot->clearActual();
     m_speed.reset();
+    const LoadedProgram &p = m_program->program();
+    m_remaining = session::RemainingTime(p.lineEndS, p.estimatedS);
 }
 
 void MainWindow::checkProgram()

@@ -70,9 +70,10 @@ void MainWindow::showJob(const driver::MachineState &state)
 void MainWindow::updateProgress(const driver::MachineState &state)
 {
     const double elapsed = m_workflow->jobElapsedS();
-    // ETA from the planner's model at the line being cut; the driver's own figure otherwise.
+    // ETA from the planner's model at the line being cut (counting down through the line, a
+    // dwell too); the driver's own figure otherwise.
     const LoadedProgram &p = m_program->program();
-    const double planned = p.remainingS(state.sourceLine);
+    const double planned = m_remaining.at(state.sourceLine, elapsed);
     if (planned >= 0 && p.estimatedS > 0)
         m_run->setProgress(1.0 - planned / p.estimatedS, elapsed, planned);
     else

@@ -32,6 +32,7 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     for (const auto &e : result.errors)
         out.errors.push_back({int(e.line), int(e.column), gcode::formatError(req.fileName, e)});
     out.toolpath = std::make_shared<gcode::Toolpath>(std::move(result.toolpath));
+    out.linesRead = result.linesRead;
     return out;
 }
 

@@ -45,6 +45,7 @@ struct InterpretOutcome
 {
     std::shared_ptr<gcode::Toolpath> toolpath;
     std::vector<ProgramMessage> errors;
+    std::uint64_t linesRead = 0;
 };
 
 InterpretOutcome interpretProgram(const InterpretRequest &request);
