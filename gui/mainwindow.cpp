@@ -12,6 +12,7 @@
 #include "programview.h"
 #include "runpanel.h"
 #include "settingsdialog.h"
+#include "statuspanel.h"
 #include "unitconfigdialog.h"
 
 #include "driver/link/machinecontroller.h"
@@ -119,6 +120,8 @@ void MainWindow::buildDocks()
     m_listing = new ProgramListing(this);
     m_console = new ConsoleWidget(this);
     m_plot = new SpeedPlot(this);
+    m_status = new StatusPanel(this);
+    m_statusDock = dock(m_status, "statusDock", Qt::RightDockWidgetArea);
     m_droDock = dock(m_dro, "droDock", Qt::LeftDockWidgetArea);
     m_runDock = dock(m_run, "runDock", Qt::LeftDockWidgetArea);
     m_jogDock = dock(m_jog, "jogDock", Qt::LeftDockWidgetArea);
@@ -126,6 +129,7 @@ void MainWindow::buildDocks()
     tabifyDockWidget(m_jogDock, m_outputsDock);
     m_jogDock->raise();
     m_programDock = dock(m_listing, "programDock", Qt::RightDockWidgetArea);
+    splitDockWidget(m_statusDock, m_programDock, Qt::Vertical);
     m_consoleDock = dock(m_console, "consoleDock", Qt::BottomDockWidgetArea);
     m_plotDock = dock(m_plot, "plotDock", Qt::BottomDockWidgetArea);
     tabifyDockWidget(m_consoleDock, m_plotDock);
@@ -156,8 +160,8 @@ void MainWindow::buildMenus()
     m_unitConfigAction = m_machineMenu->addAction(QString(), this, [this] { openUnitConfig(); });
 
     m_viewMenu = menuBar()->addMenu(QString());
-    for (auto *d :
-         {m_droDock, m_runDock, m_jogDock, m_outputsDock, m_programDock, m_consoleDock, m_plotDock})
+    for (auto *d : {m_statusDock, m_droDock, m_runDock, m_jogDock, m_outputsDock, m_programDock,
+                    m_consoleDock, m_plotDock})
         m_viewMenu->addAction(d->toggleViewAction());
     m_viewMenu->addSeparator();
     m_resetLayoutAction =
@@ -188,6 +192,7 @@ void MainWindow::retranslate()
     setWindowTitle(m_program->program().path.isEmpty()
                        ? tr("Frezka")
                        : tr("Frezka — %1").arg(QFileInfo(m_program->program().path).fileName()));
+    m_statusDock->setWindowTitle(tr("Status"));
     m_droDock->setWindowTitle(tr("Position"));
     m_runDock->setWindowTitle(tr("Program run"));
     m_jogDock->setWindowTitle(tr("Jog and homing"));

@@ -306,6 +306,7 @@ void MainWindow::onState(const driver::MachineState &state)
     showJob(state);
     updateHold(state);
     updateRunPhase();
+    updateStatus(state);
 }
 
 void MainWindow::onLogLine(const QString &line)

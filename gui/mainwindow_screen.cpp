@@ -86,6 +86,8 @@ void MainWindow::updateProgress(const driver::MachineState &state)
                        ? profile().axes[a].maxSpeedMmPerMin * profile().axes[a].maxSpeedMmPerMin
                        : 0.0;
     m_speed.setCeiling(std::sqrt(ceiling) * std::max(100, state.overridePercent) / 100.0);
+    m_panelSpeed.setCeiling(m_speed.ceiling());
+    m_panelSpeed.add(elapsed, state.positionMm);
     if (m_speed.add(elapsed, state.positionMm) || state.mode == MachineMode::Running) {
         m_plot->addActual({m_speed.distanceMm(), m_speed.speed(), state.sourceLine});
         m_plot->setCursorDistance(m_speed.distanceMm());

@@ -3114,6 +3114,18 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Home and run</source>
         <translation>Reference a spustit</translation>
     </message>
+    <message>
+        <source>Status</source>
+        <translation>Stav</translation>
+    </message>
+    <message>
+        <source>Coolant</source>
+        <translation>Chlazení</translation>
+    </message>
+    <message>
+        <source>Air blow</source>
+        <translation>Ofuk</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3942,6 +3954,89 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>%1 mm/min at %2 mm, line %3</source>
         <translation>%1 mm/min na %2 mm, řádek %3</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::StatusPanel</name>
+    <message>
+        <source>%1 mm/min</source>
+        <translation>%1 mm/min</translation>
+    </message>
+    <message>
+        <source>%1 % (runs %2 %)</source>
+        <translation>%1 % (běží %2 %)</translation>
+    </message>
+    <message>
+        <source>override %1</source>
+        <translation>korekce %1</translation>
+    </message>
+    <message>
+        <source>programmed %1 mm/min × %2</source>
+        <translation>programováno %1 mm/min × %2</translation>
+    </message>
+    <message>
+        <source>clockwise (M3)</source>
+        <translation>vpravo (M3)</translation>
+    </message>
+    <message>
+        <source>counter-clockwise (M4)</source>
+        <translation>vlevo (M4)</translation>
+    </message>
+    <message>
+        <source>on · %1 rpm</source>
+        <translation>zapnuto · %1 ot/min</translation>
+    </message>
+    <message>
+        <source>on · %1 · %2 rpm</source>
+        <translation>zapnuto · %1 · %2 ot/min</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>vypnuto</translation>
+    </message>
+    <message>
+        <source>none (T0)</source>
+        <translation>žádný (T0)</translation>
+    </message>
+    <message>
+        <source>%1 on</source>
+        <translation>%1 zap.</translation>
+    </message>
+    <message>
+        <source>%1 off</source>
+        <translation>%1 vyp.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>žádná</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Posuv</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Vřeteno</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Nástroj</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Výstupy</translation>
+    </message>
+    <message>
+        <source>Modes</source>
+        <translation>Režimy</translation>
+    </message>
+    <message>
+        <source>Homed</source>
+        <translation>V referenci</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Spojení</translation>
     </message>
 </context>
 <context>

@@ -3109,6 +3109,18 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Home and run</source>
         <translation>Home and run</translation>
     </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Coolant</source>
+        <translation>Coolant</translation>
+    </message>
+    <message>
+        <source>Air blow</source>
+        <translation>Air blow</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3936,6 +3948,89 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>%1 mm/min at %2 mm, line %3</source>
         <translation>%1 mm/min at %2 mm, line %3</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::StatusPanel</name>
+    <message>
+        <source>%1 mm/min</source>
+        <translation>%1 mm/min</translation>
+    </message>
+    <message>
+        <source>%1 % (runs %2 %)</source>
+        <translation>%1 % (runs %2 %)</translation>
+    </message>
+    <message>
+        <source>override %1</source>
+        <translation>override %1</translation>
+    </message>
+    <message>
+        <source>programmed %1 mm/min × %2</source>
+        <translation>programmed %1 mm/min × %2</translation>
+    </message>
+    <message>
+        <source>clockwise (M3)</source>
+        <translation>clockwise (M3)</translation>
+    </message>
+    <message>
+        <source>counter-clockwise (M4)</source>
+        <translation>counter-clockwise (M4)</translation>
+    </message>
+    <message>
+        <source>on · %1 rpm</source>
+        <translation>on · %1 rpm</translation>
+    </message>
+    <message>
+        <source>on · %1 · %2 rpm</source>
+        <translation>on · %1 · %2 rpm</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>off</translation>
+    </message>
+    <message>
+        <source>none (T0)</source>
+        <translation>none (T0)</translation>
+    </message>
+    <message>
+        <source>%1 on</source>
+        <translation>%1 on</translation>
+    </message>
+    <message>
+        <source>%1 off</source>
+        <translation>%1 off</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Feed</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Spindle</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Tool</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Outputs</translation>
+    </message>
+    <message>
+        <source>Modes</source>
+        <translation>Modes</translation>
+    </message>
+    <message>
+        <source>Homed</source>
+        <translation>Homed</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Connection</translation>
     </message>
 </context>
 <context>
