@@ -12,6 +12,7 @@
 #include "programview.h"
 #include "runpanel.h"
 #include "settingsdialog.h"
+#include "shortcuts.h"
 #include "statuspanel.h"
 #include "unitconfigdialog.h"
 
@@ -180,6 +181,9 @@ void MainWindow::buildMenus()
 #endif
     m_toolsMenu->menuAction()->setVisible(m_grinderAction != nullptr);
     m_helpMenu = menuBar()->addMenu(QString());
+    m_shortcutsAction =
+        m_helpMenu->addAction(QString(), this, [this] { showShortcutsDialog(this); });
+    m_shortcutsAction->setObjectName(QStringLiteral("keyboardShortcuts"));
     m_aboutAction = m_helpMenu->addAction(QString(), this, [this] {
         QMessageBox::about(this, tr("About Frezka"),
                            tr("<b>Frezka %1</b><br>Runs CNC mills through GVE interpolators.")
@@ -215,6 +219,7 @@ void MainWindow::retranslate()
     if (m_grinderAction)
         m_grinderAction->setText(tr("&Grinder transfer (ANC/K51)…"));
     m_helpMenu->setTitle(tr("&Help"));
+    m_shortcutsAction->setText(tr("&Keyboard shortcuts"));
     m_aboutAction->setText(tr("&About Frezka"));
     if (m_program->program().path.isEmpty())
         m_file->setText(tr("No program"));

@@ -44,6 +44,7 @@ class ProgramListing;
 class RunPanel;
 class SpeedPlot;
 class StatusPanel;
+enum class OperatorAction;
 class ToolpathView;
 class HoldBanner;
 class SettingsDialog;
@@ -157,6 +158,8 @@ private:
     QString eepromDifferenceText(const driver::EepromDifference &difference) const;
     void updateRunPhase();
     bool jogKey(QKeyEvent *event, bool pressed);
+    void installShortcuts();
+    void operatorKey(OperatorAction action);
 
     ToolpathView *m_view;
     DroWidget *m_dro;
@@ -174,7 +177,8 @@ private:
         *m_consoleDock, *m_plotDock;
     QMenu *m_fileMenu, *m_recentMenu, *m_machineMenu, *m_viewMenu, *m_toolsMenu, *m_helpMenu;
     QAction *m_openAction, *m_quitAction, *m_connectAction, *m_disconnectAction, *m_settingsAction,
-        *m_unitConfigAction, *m_aboutAction, *m_grinderAction = nullptr, *m_resetLayoutAction;
+        *m_unitConfigAction, *m_aboutAction, *m_shortcutsAction, *m_grinderAction = nullptr,
+                                                                 *m_resetLayoutAction;
     ProgramSession *m_program;
     driver::MachineController *m_controller = nullptr;
     HoldBanner *m_hold = nullptr;

@@ -3126,6 +3126,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Air blow</source>
         <translation>Ofuk</translation>
     </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>&amp;Klávesové zkratky</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3943,6 +3947,69 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Reconnect automatically after a lost link</source>
         <translation>Po ztrátě spojení se automaticky znovu připojit</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::Shortcuts</name>
+    <message>
+        <source>Run the program</source>
+        <translation>Spustit program</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastavit</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Pokračovat</translation>
+    </message>
+    <message>
+        <source>Stop: brake along the ramp and hold the job (resumable)</source>
+        <translation>Zastavit: zabrzdit po rampě a podržet úlohu (lze pokračovat)</translation>
+    </message>
+    <message>
+        <source>Abort: brake and drop the job</source>
+        <translation>Přerušit: zabrzdit a zahodit úlohu</translation>
+    </message>
+    <message>
+        <source>Tool lift</source>
+        <translation>Zvednout nástroj</translation>
+    </message>
+    <message>
+        <source>Feed override up (6.25 %)</source>
+        <translation>Korekce posuvu nahoru (6,25 %)</translation>
+    </message>
+    <message>
+        <source>Feed override down (6.25 %)</source>
+        <translation>Korekce posuvu dolů (6,25 %)</translation>
+    </message>
+    <message>
+        <source>Feed override 100 %</source>
+        <translation>Korekce posuvu 100 %</translation>
+    </message>
+    <message>
+        <source>Home all axes</source>
+        <translation>Najet všechny osy do reference</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Klávesové zkratky</translation>
+    </message>
+    <message>
+        <source>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
+        <translation>Klávesy hlavního okna. Ruční posuv šipkami (X, Y) a klávesami Page Up/Down (Z). Textové pole s fokusem si písmena napsaná do něj ponechá; žádná klávesa nestiskne tlačítko jen proto, že má fokus.</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Akce</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Klávesa</translation>
+    </message>
+    <message>
+        <source>LinuxCNC AXIS</source>
+        <translation>LinuxCNC AXIS</translation>
     </message>
 </context>
 <context>

@@ -3121,6 +3121,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Air blow</source>
         <translation>Air blow</translation>
     </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>&amp;Keyboard shortcuts</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3937,6 +3941,69 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Reconnect automatically after a lost link</source>
         <translation>Reconnect automatically after a lost link</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::Shortcuts</name>
+    <message>
+        <source>Run the program</source>
+        <translation>Run the program</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Resume</translation>
+    </message>
+    <message>
+        <source>Stop: brake along the ramp and hold the job (resumable)</source>
+        <translation>Stop: brake along the ramp and hold the job (resumable)</translation>
+    </message>
+    <message>
+        <source>Abort: brake and drop the job</source>
+        <translation>Abort: brake and drop the job</translation>
+    </message>
+    <message>
+        <source>Tool lift</source>
+        <translation>Tool lift</translation>
+    </message>
+    <message>
+        <source>Feed override up (6.25 %)</source>
+        <translation>Feed override up (6.25 %)</translation>
+    </message>
+    <message>
+        <source>Feed override down (6.25 %)</source>
+        <translation>Feed override down (6.25 %)</translation>
+    </message>
+    <message>
+        <source>Feed override 100 %</source>
+        <translation>Feed override 100 %</translation>
+    </message>
+    <message>
+        <source>Home all axes</source>
+        <translation>Home all axes</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Keyboard shortcuts</translation>
+    </message>
+    <message>
+        <source>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
+        <translation>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Action</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Key</translation>
+    </message>
+    <message>
+        <source>LinuxCNC AXIS</source>
+        <translation>LinuxCNC AXIS</translation>
     </message>
 </context>
 <context>
