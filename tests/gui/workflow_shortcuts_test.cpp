@@ -2,8 +2,8 @@
 // (workflowfixture.h): listed in Help › Keyboard shortcuts; each key does what its button does
 // when its button would, asserted on the wire and on the machine (R runs, P pauses with H, S
 // resumes, + / - / 0 set the feed override XM, L lifts the tool while paused, Esc holds,
-// Shift+Esc drops the job with D, Ctrl+Home homes with W); a key never acts through the focus (no machine button takes it, a text field
-// keeps its letters).
+// Shift+Esc drops the job with D, Ctrl+Home homes with W); a key never acts through the focus
+// (no machine button takes it, a text field keeps its letters).
 
 #include "workflowfixture.h"
 
