@@ -73,7 +73,8 @@ void MainWindow::updateProgress(const driver::MachineState &state)
     // ETA from the planner's model at the line being cut (counting down through the line, a
     // dwell too); the driver's own figure otherwise.
     const LoadedProgram &p = m_program->program();
-    const double planned = m_remaining.at(state.sourceLine, elapsed);
+    const double planned =
+        m_remaining.at(state.sourceLine, elapsed, state.mode == driver::MachineMode::Running);
     if (planned >= 0 && p.estimatedS > 0)
         m_run->setProgress(1.0 - planned / p.estimatedS, elapsed, planned);
     else

@@ -44,6 +44,7 @@ StatusPanel::StatusPanel(QWidget *parent)
     m_connection->setWordWrap(true);
     grid->setColumnStretch(1, 1);
     grid->setRowStretch(9, 1);
+    grid->setSizeConstraint(QLayout::SetMinimumSize); // its dock never squeezes the rows together
     retranslate();
 }
 

@@ -23,8 +23,9 @@ public:
     RemainingTime(std::vector<float> lineEndS, double totalS);
 
     // Seconds left when the job shows `line` (0 = none yet) at nowS on the job's clock (s, any
-    // origin, not decreasing); -1 when nothing was planned.
-    double at(std::uint32_t line, double nowS);
+    // origin, not decreasing); -1 when nothing was planned. While the job is held (running
+    // false: paused, tool lifted, an operator stop) the time on the line does not count.
+    double at(std::uint32_t line, double nowS, bool running = true);
 
 private:
     double endOf(std::uint32_t line) const;
@@ -32,7 +33,8 @@ private:
     std::vector<float> m_lineEndS;
     double m_totalS = -1;
     std::uint32_t m_line = 0;
-    double m_lineSinceS = 0; // when m_line was first shown
+    double m_onLineS = 0; // running time since m_line was first shown
+    double m_lastS = 0;   // the clock at the last call
 };
 
 } // namespace frezka::session

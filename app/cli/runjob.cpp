@@ -46,7 +46,8 @@ public:
     // nowS: the job's clock (virtual or wall seconds).
     void show(const driver::MachineState &s, double nowS, bool force = false)
     {
-        const double planned = m_remaining.at(s.sourceLine, nowS);
+        const double planned =
+            m_remaining.at(s.sourceLine, nowS, s.mode == driver::MachineMode::Running);
         if (!m_tty || (!force && m_wall.elapsed() < 200))
             return;
         m_wall.restart();

@@ -25,6 +25,8 @@ TEST(RemainingTime, CountsDownThroughALineAndStopsAtItsEnd)
     EXPECT_DOUBLE_EQ(r.at(2, 130), 15.0);
     EXPECT_DOUBLE_EQ(r.at(4, 140), 5.0);
     EXPECT_DOUBLE_EQ(r.at(4, 143), 2.0);
+    EXPECT_DOUBLE_EQ(r.at(4, 150, false), 2.0) << "held: the time on the line does not count";
+    EXPECT_DOUBLE_EQ(r.at(4, 151), 1.0);
     EXPECT_DOUBLE_EQ(RemainingTime().at(3, 1), -1.0);
 }
 
