@@ -26,6 +26,11 @@ bool ActualSpeed::add(double timeS, const std::array<double, 4> &positionMm)
     m_last = positionMm;
     m_haveLast = true;
     m_distance += d;
+    // A snapshot with the position unchanged while moving carries no new reading (a status poll
+    // between two position polls): its later time would stretch the window and read low. Once
+    // nothing has moved for a window the machine stands, and that is a reading too.
+    if (d == 0 && m_haveLast && !m_readings.empty() && timeS < m_readings.back().t + m_windowS)
+        return false;
     if (!m_readings.empty() && timeS <= m_readings.back().t) {
         m_readings.back().distance = m_distance; // the same instant: the later reading counts
         return d > 0;

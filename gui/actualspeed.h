@@ -4,9 +4,11 @@
 // Contract: add() takes each position with the time it was seen; speed() is the path length
 // travelled over the last window (at least windowS, and at least two readings) divided by the
 // time it took, so that uneven poll intervals (a snapshot late, the next early) do not show as
-// spikes; the result never exceeds the ceiling (what the machine can reach: its axes' maximum
-// speeds combined, times the feed override). reset() at the start of a job. Pure: no Qt, no
-// clock of its own.
+// spikes; a snapshot whose position did not change is no reading until a window has passed
+// without motion (a status poll between position polls would stretch the window and read low;
+// a machine that stands reads 0 within two windows); the result never exceeds the ceiling (what
+// the machine can reach: its axes' maximum speeds combined, times the feed override). reset() at
+// the start of a job. Pure: no Qt, no clock of its own.
 
 #include <array>
 #include <deque>

@@ -42,6 +42,7 @@ DroWidget::DroWidget(QWidget *parent)
         m_machine[i]->setObjectName(QStringLiteral("droMachine%1").arg(QLatin1Char(kAxes[i])));
         m_zero[i] = new QPushButton(this);
         m_zero[i]->setObjectName(QStringLiteral("zero%1").arg(QLatin1Char(kAxes[i])));
+        m_zero[i]->setFocusPolicy(Qt::NoFocus); // no key zeroes an axis through the focus
         connect(m_zero[i], &QPushButton::clicked, this, [this, i] { emit zeroAxisRequested(i); });
         grid->addWidget(m_name[i], i + 1, 0);
         grid->addWidget(m_work[i], i + 1, 1);
@@ -56,6 +57,7 @@ DroWidget::DroWidget(QWidget *parent)
     connect(m_offset, &QComboBox::activated, this, &DroWidget::offsetSelected);
     m_zeroAll = new QPushButton(this);
     m_zeroAll->setObjectName(QStringLiteral("zeroAll"));
+    m_zeroAll->setFocusPolicy(Qt::NoFocus);
     connect(m_zeroAll, &QPushButton::clicked, this, &DroWidget::zeroAllRequested);
     grid->addWidget(m_offsetLabel, 5, 0);
     grid->addWidget(m_offset, 5, 1);

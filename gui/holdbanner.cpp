@@ -29,6 +29,7 @@ HoldBanner::HoldBanner(QWidget *parent)
     m_spindle->setObjectName(QStringLiteral("holdSpindle"));
     m_spindle->setWordWrap(true);
     m_stopSpindle = new QCheckBox(this);
+    m_stopSpindle->setFocusPolicy(Qt::NoFocus); // it switches the spindle while held
     m_stopSpindle->setObjectName(QStringLiteral("holdStopSpindle"));
     m_stopSpindle->setChecked(true);
     connect(m_stopSpindle, &QCheckBox::clicked, this, &HoldBanner::spindleHoldRequested);
@@ -41,6 +42,7 @@ HoldBanner::HoldBanner(QWidget *parent)
     auto button = [this](const char *name) {
         auto *b = new QPushButton(this);
         b->setObjectName(QLatin1String(name));
+        b->setFocusPolicy(Qt::NoFocus); // no key continues or aborts through the focus
         return b;
     };
     m_continue = button("holdContinue");

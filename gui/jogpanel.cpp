@@ -96,6 +96,9 @@ QHBoxLayout *JogPanel::createStepChoice()
         steps->addWidget(r);
     }
     m_steps->button(3)->setChecked(true);
+    // The arrows jog: a focused radio button would take them to move its selection instead.
+    for (QAbstractButton *b : m_steps->buttons())
+        b->setFocusPolicy(Qt::NoFocus);
     return steps;
 }
 
@@ -112,6 +115,7 @@ QHBoxLayout *JogPanel::createFeedRow()
     m_feed->setSuffix(QStringLiteral(" mm/min"));
     m_mpg = new QCheckBox(this);
     m_mpg->setObjectName(QStringLiteral("mpg"));
+    m_mpg->setFocusPolicy(Qt::NoFocus); // it switches the handwheel on the machine
     connect(m_mpg, &QCheckBox::toggled, this, &JogPanel::mpgToggled);
     feedRow->addWidget(m_feedLabel);
     feedRow->addWidget(m_feed, 1);

@@ -12,6 +12,8 @@
 #include "programview.h"
 #include "runpanel.h"
 #include "settingsdialog.h"
+#include "shortcuts.h"
+#include "statuspanel.h"
 #include "unitconfigdialog.h"
 
 #include "driver/link/machinecontroller.h"
@@ -119,6 +121,8 @@ void MainWindow::buildDocks()
     m_listing = new ProgramListing(this);
     m_console = new ConsoleWidget(this);
     m_plot = new SpeedPlot(this);
+    m_status = new StatusPanel(this);
+    m_statusDock = dock(m_status, "statusDock", Qt::RightDockWidgetArea);
     m_droDock = dock(m_dro, "droDock", Qt::LeftDockWidgetArea);
     m_runDock = dock(m_run, "runDock", Qt::LeftDockWidgetArea);
     m_jogDock = dock(m_jog, "jogDock", Qt::LeftDockWidgetArea);
@@ -126,6 +130,7 @@ void MainWindow::buildDocks()
     tabifyDockWidget(m_jogDock, m_outputsDock);
     m_jogDock->raise();
     m_programDock = dock(m_listing, "programDock", Qt::RightDockWidgetArea);
+    splitDockWidget(m_statusDock, m_programDock, Qt::Vertical);
     m_consoleDock = dock(m_console, "consoleDock", Qt::BottomDockWidgetArea);
     m_plotDock = dock(m_plot, "plotDock", Qt::BottomDockWidgetArea);
     tabifyDockWidget(m_consoleDock, m_plotDock);
@@ -156,8 +161,8 @@ void MainWindow::buildMenus()
     m_unitConfigAction = m_machineMenu->addAction(QString(), this, [this] { openUnitConfig(); });
 
     m_viewMenu = menuBar()->addMenu(QString());
-    for (auto *d :
-         {m_droDock, m_runDock, m_jogDock, m_outputsDock, m_programDock, m_consoleDock, m_plotDock})
+    for (auto *d : {m_statusDock, m_droDock, m_runDock, m_jogDock, m_outputsDock, m_programDock,
+                    m_consoleDock, m_plotDock})
         m_viewMenu->addAction(d->toggleViewAction());
     m_viewMenu->addSeparator();
     m_resetLayoutAction =
@@ -176,6 +181,9 @@ void MainWindow::buildMenus()
 #endif
     m_toolsMenu->menuAction()->setVisible(m_grinderAction != nullptr);
     m_helpMenu = menuBar()->addMenu(QString());
+    m_shortcutsAction =
+        m_helpMenu->addAction(QString(), this, [this] { showShortcutsDialog(this); });
+    m_shortcutsAction->setObjectName(QStringLiteral("keyboardShortcuts"));
     m_aboutAction = m_helpMenu->addAction(QString(), this, [this] {
         QMessageBox::about(this, tr("About Frezka"),
                            tr("<b>Frezka %1</b><br>Runs CNC mills through GVE interpolators.")
@@ -188,6 +196,7 @@ void MainWindow::retranslate()
     setWindowTitle(m_program->program().path.isEmpty()
                        ? tr("Frezka")
                        : tr("Frezka — %1").arg(QFileInfo(m_program->program().path).fileName()));
+    m_statusDock->setWindowTitle(tr("Status"));
     m_droDock->setWindowTitle(tr("Position"));
     m_runDock->setWindowTitle(tr("Program run"));
     m_jogDock->setWindowTitle(tr("Jog and homing"));
@@ -210,6 +219,7 @@ void MainWindow::retranslate()
     if (m_grinderAction)
         m_grinderAction->setText(tr("&Grinder transfer (ANC/K51)…"));
     m_helpMenu->setTitle(tr("&Help"));
+    m_shortcutsAction->setText(tr("&Keyboard shortcuts"));
     m_aboutAction->setText(tr("&About Frezka"));
     if (m_program->program().path.isEmpty())
         m_file->setText(tr("No program"));

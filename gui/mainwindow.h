@@ -12,6 +12,8 @@
 #include "programview.h"
 
 #include "session/consolesession.h"
+#include "session/programmodes.h"
+#include "session/remainingtime.h"
 #include "session/runworkflow.h"
 #include "session/workoffsets.h"
 
@@ -41,6 +43,8 @@ class OutputsPanel;
 class ProgramListing;
 class RunPanel;
 class SpeedPlot;
+class StatusPanel;
+enum class OperatorAction;
 class ToolpathView;
 class HoldBanner;
 class SettingsDialog;
@@ -72,6 +76,7 @@ public:
     ProgramListing *listing() const { return m_listing; }
     SpeedPlot *speedPlot() const { return m_plot; }
     IoPanel *ioPanel() const { return m_io; }
+    StatusPanel *statusPanel() const { return m_status; }
     ProgramSession *program() const { return m_program; }
     driver::MachineController *controller() const { return m_controller; }
     HoldBanner *holdBanner() const { return m_hold; }
@@ -139,6 +144,8 @@ private:
     QString holdDetail(const driver::MachineState &state) const;
     void showJob(const driver::MachineState &state);
     void updateProgress(const driver::MachineState &state);
+    void updateStatus(const driver::MachineState &state);
+    session::ProgramModes programModesAt(std::uint32_t line);
     QString connectionText(const driver::MachineState &state) const;
     std::uint32_t shownLine(const driver::MachineState &state) const;
     QString logLineText(const QString &line) const;
@@ -151,6 +158,8 @@ private:
     QString eepromDifferenceText(const driver::EepromDifference &difference) const;
     void updateRunPhase();
     bool jogKey(QKeyEvent *event, bool pressed);
+    void installShortcuts();
+    void operatorKey(OperatorAction action);
 
     ToolpathView *m_view;
     DroWidget *m_dro;
@@ -161,13 +170,15 @@ private:
     ProgramListing *m_listing;
     SpeedPlot *m_plot;
     IoPanel *m_io;
+    StatusPanel *m_status;
     QLabel *m_connection, *m_unit, *m_state, *m_file;
     LoadProgress *m_loadProgress;
-    QDockWidget *m_droDock, *m_runDock, *m_jogDock, *m_outputsDock, *m_programDock, *m_consoleDock,
-        *m_plotDock;
+    QDockWidget *m_statusDock, *m_droDock, *m_runDock, *m_jogDock, *m_outputsDock, *m_programDock,
+        *m_consoleDock, *m_plotDock;
     QMenu *m_fileMenu, *m_recentMenu, *m_machineMenu, *m_viewMenu, *m_toolsMenu, *m_helpMenu;
     QAction *m_openAction, *m_quitAction, *m_connectAction, *m_disconnectAction, *m_settingsAction,
-        *m_unitConfigAction, *m_aboutAction, *m_grinderAction = nullptr, *m_resetLayoutAction;
+        *m_unitConfigAction, *m_aboutAction, *m_shortcutsAction, *m_grinderAction = nullptr,
+                                                                 *m_resetLayoutAction;
     ProgramSession *m_program;
     driver::MachineController *m_controller = nullptr;
     HoldBanner *m_hold = nullptr;
@@ -177,6 +188,12 @@ private:
     session::ConsoleSession *m_consoleSession = nullptr;
     // Rendering of the running job: the actual speed from the live position; the hold shown.
     ActualSpeed m_speed;
+    ActualSpeed m_panelSpeed{1.0};      // the status panel's, smoothed over a second
+    session::RemainingTime m_remaining; // the planner's time left, from the job's start
+    // The program's modes for the status panel, read on as the job's line grows.
+    std::unique_ptr<session::ModalScanner> m_modes;
+    const void *m_modesText = nullptr; // the program text it reads
+    int m_modesSystem = 0;             // the coordinate system it starts in
     int m_holdLine = 0;
     QString m_holdDetail;
     QString m_lastError;

@@ -27,6 +27,9 @@ void MainWindow::onJobStarted()
     m_view->model()->setCutEntry(ToolpathViewModel::kNoneCut);
     m_plot->clearActual();
     m_speed.reset();
+    m_panelSpeed.reset();
+    const LoadedProgram &p = m_program->program();
+    m_remaining = session::RemainingTime(p.lineEndS, p.estimatedS);
 }
 
 void MainWindow::checkProgram()

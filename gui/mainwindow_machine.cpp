@@ -21,7 +21,6 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QSettings>
-#include <QShortcut>
 #include <QStatusBar>
 #include <QVBoxLayout>
 
@@ -172,11 +171,10 @@ void MainWindow::connectControls()
     connect(m_run, &RunPanel::pauseRequested, m_workflow, &RunWorkflow::pause);
     connect(m_run, &RunPanel::resumeRequested, m_workflow, &RunWorkflow::resume);
     // Stop is the controlled stop (H: the job held, resumable; homing ended), Abort drops the
-    // job; Esc is Stop from anywhere in the window (docs/gui.md, "Stopping").
+    // job; Esc is Stop from anywhere in the window (docs/gui.md, "Stopping"), and the other
+    // operator keys act as their buttons do (gui/shortcuts.h).
     connect(m_run, &RunPanel::stopRequested, m_workflow, &RunWorkflow::stop);
-    auto *esc = new QShortcut(QKeySequence(Qt::Key_Escape), this);
-    esc->setObjectName(QStringLiteral("stopShortcut"));
-    connect(esc, &QShortcut::activated, m_workflow, &RunWorkflow::stop);
+    installShortcuts();
     connect(m_workflow, &RunWorkflow::homingNeeded, this, &MainWindow::askToHome);
     connect(m_run, &RunPanel::abortRequested, m_workflow, &RunWorkflow::abort);
     connect(m_run, &RunPanel::toolLiftRequested, this,
@@ -306,6 +304,7 @@ void MainWindow::onState(const driver::MachineState &state)
     showJob(state);
     updateHold(state);
     updateRunPhase();
+    updateStatus(state);
 }
 
 void MainWindow::onLogLine(const QString &line)

@@ -70,9 +70,11 @@ void MainWindow::showJob(const driver::MachineState &state)
 void MainWindow::updateProgress(const driver::MachineState &state)
 {
     const double elapsed = m_workflow->jobElapsedS();
-    // ETA from the planner's model at the line being cut; the driver's own figure otherwise.
+    // ETA from the planner's model at the line being cut (counting down through the line, a
+    // dwell too); the driver's own figure otherwise.
     const LoadedProgram &p = m_program->program();
-    const double planned = p.remainingS(state.sourceLine);
+    const double planned =
+        m_remaining.at(state.sourceLine, elapsed, state.mode == driver::MachineMode::Running);
     if (planned >= 0 && p.estimatedS > 0)
         m_run->setProgress(1.0 - planned / p.estimatedS, elapsed, planned);
     else
@@ -85,6 +87,8 @@ void MainWindow::updateProgress(const driver::MachineState &state)
                        ? profile().axes[a].maxSpeedMmPerMin * profile().axes[a].maxSpeedMmPerMin
                        : 0.0;
     m_speed.setCeiling(std::sqrt(ceiling) * std::max(100, state.overridePercent) / 100.0);
+    m_panelSpeed.setCeiling(m_speed.ceiling());
+    m_panelSpeed.add(elapsed, state.positionMm);
     if (m_speed.add(elapsed, state.positionMm) || state.mode == MachineMode::Running) {
         m_plot->addActual({m_speed.distanceMm(), m_speed.speed(), state.sourceLine});
         m_plot->setCursorDistance(m_speed.distanceMm());

@@ -49,6 +49,7 @@ void OutputsPanel::createOutputs()
         auto *b = new QPushButton(this);
         b->setObjectName(QLatin1String(name));
         b->setCheckable(true);
+        b->setFocusPolicy(Qt::NoFocus); // no key acts on a machine button through its focus
         return b;
     };
     m_spindle = toggle("spindle");
@@ -97,8 +98,11 @@ void OutputsPanel::createFeedOverride()
     m_feedDown->setObjectName(QStringLiteral("feedDown"));
     m_feedReset = new QPushButton(QStringLiteral("100 %"), this);
     m_feedReset->setObjectName(QStringLiteral("feedReset"));
-    for (auto *b : {m_feedUp, m_feedDown, m_feedReset})
+    for (auto *b : {m_feedUp, m_feedDown, m_feedReset}) {
         b->setMaximumWidth(60);
+        b->setFocusPolicy(Qt::NoFocus);
+    }
+    m_feed->setFocusPolicy(Qt::NoFocus); // the arrows jog; the override has its keys (+, -, 0)
     connect(m_feedUp, &QPushButton::clicked, this, [this] { emit feedStepRequested(+1); });
     connect(m_feedDown, &QPushButton::clicked, this, [this] { emit feedStepRequested(-1); });
     connect(m_feedReset, &QPushButton::clicked, this, [this] {
@@ -122,6 +126,7 @@ void OutputsPanel::setExtraOutputs(
         auto *b = new QPushButton(caption, this);
         b->setCheckable(true);
         b->setObjectName(QStringLiteral("output%1").arg(int(function)));
+        b->setFocusPolicy(Qt::NoFocus);
         const machine::OutputFunction f = function;
         connect(b, &QPushButton::clicked, this,
                 [this, f](bool on) { emit outputRequested(f, on); });

@@ -14,7 +14,7 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
 {
     gcode::Options options;
     options.collectAllErrors = true;
-    options.maxErrors = 200;
+    options.maxErrors = req.maxErrors;
     // The interpreter takes no G92 at its start: it is added to every system, which is what
     // G92 does to the program's coordinates.
     for (std::size_t s = 0; s < options.workOffsetsMm.size(); ++s)
@@ -50,6 +50,8 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
                  .arg(req.fileName)});
     }
     out.toolpath = std::make_shared<gcode::Toolpath>(std::move(result.toolpath));
+    out.linesRead = result.linesRead;
+    out.errorsNotShown = result.errorsNotShown;
     return out;
 }
 

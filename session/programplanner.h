@@ -39,6 +39,7 @@ struct InterpretRequest
     std::array<double, 4> startMm{}; // machine position the program starts from
     const std::atomic_bool *cancel = nullptr;
     std::function<void(double)> progress; // fraction 0..1 of this step
+    std::size_t maxErrors = 200; // errors kept (the window's list); the rest are counted
 };
 
 struct InterpretOutcome
@@ -48,6 +49,8 @@ struct InterpretOutcome
     // The interpreter's warnings and notes (the program runs; "FILE:LINE:COL: warning: ..."),
     // the last one saying how many more were not shown.
     std::vector<ProgramMessage> warnings;
+    std::uint64_t linesRead = 0;
+    std::uint64_t errorsNotShown = 0; // beyond the interpreter's cap; errors' last line says so
 };
 
 InterpretOutcome interpretProgram(const InterpretRequest &request);

@@ -316,6 +316,8 @@ void RunWorkflow::advance(const driver::MachineState &s, MachineMode last)
         end(false, why);
         return;
     }
+    if (m_step == Step::Running && answerProgramStop(s))
+        return;
     if (m_step == Step::Running && m_endOnHold && s.mode == MachineMode::Paused) {
         end(false, tr("the job stopped: %1").arg(driver::translatedText(s.holdMessage)));
         return;
@@ -331,6 +333,29 @@ void RunWorkflow::advance(const driver::MachineState &s, MachineMode last)
     } else if (m_step == Step::Homing && last == MachineMode::Homing) {
         end(false, tr("homing did not finish"));
     }
+}
+
+// An M0 / M1 / M6 hold of the headless run, answered once as setProgramStops() says: true when
+// the state is such a hold (answered now or before), false for everything else.
+bool RunWorkflow::answerProgramStop(const driver::MachineState &s)
+{
+    const bool atStop = s.mode == MachineMode::Paused && s.hold == driver::HoldReason::OperatorStop;
+    const bool first = atStop && (!m_atProgramStop || s.holdLine != m_programStopLine);
+    m_atProgramStop = atStop;
+    m_programStopLine = atStop ? s.holdLine : 0;
+    if (!atStop || m_programStops == ProgramStops::End)
+        return false;
+    if (!first)
+        return true;
+    ++m_programStopsSeen;
+    const QString text = driver::translatedText(s.holdMessage);
+    if (m_programStops == ProgramStops::Ask) {
+        emit programStopped(s.holdLine, text);
+        return true;
+    }
+    emit message(tr("%1: continuing without an operator.").arg(text));
+    m_link.resume();
+    return true;
 }
 
 void RunWorkflow::onError(const driver::MachineError &e)

@@ -16,6 +16,13 @@
 // The machine's START button (unit.startInput, read by the driver's input polls) runs the
 // loaded, checked program as Run does, or resumes a held job; it acts on the press (the edge
 // to its active level), never on a button held while connecting.
+//
+// The program's own stops (M0, M1, M6) in the headless sequence: setProgramStops() says whether
+// they end the run (End: nobody at the machine), continue at once (Continue: frezka-cli run
+// --continue-at-stops; the driver switches a spindle the stop switched off on again and waits its
+// spin-up first, as the GUI's Continue does), or are put to the front end (Ask:
+// programStopped(), then resume() or abort()). Other holds (an input, a failed probe, the path
+// guard) end a headless run whenever setEndOnHold() is on.
 
 #include "session/machinelink.h"
 
@@ -70,6 +77,10 @@ public:
     // Headless: connect, home when asked, run; runEnded(ok) once, error() says why not.
     void start(const driver::ConnectionSettings &settings, bool homeFirst);
     void setEndOnHold(bool on) { m_endOnHold = on; } // nobody at the machine to answer a hold
+    enum class ProgramStops : std::uint8_t { End, Continue, Ask };
+    void setProgramStops(ProgramStops stops) { m_programStops = stops; }
+    // Operator stops answered by continuing or asked (ProgramStops::Continue, Ask) in this run.
+    int programStopsSeen() const { return m_programStopsSeen; }
     bool hasEnded() const { return m_step == Step::Ended; }
     QString error() const { return m_error; }
 
@@ -100,6 +111,9 @@ signals:
     void connected(); // connecting -> ready
     void linkLost();  // before reconnecting is decided: a handler may still setAutoReconnect()
     void runEnded(bool ok); // the headless sequence of start()
+    // The job holds at its line's M0 / M1 / M6 (ProgramStops::Ask): text says which stop, in the
+    // user's words; resume() continues, abort() ends the job.
+    void programStopped(std::uint32_t line, const QString &text);
     // Run (or START) was asked before the machine was homed: home first (homeThenRun()).
     void homingNeeded();
 
@@ -116,6 +130,7 @@ private:
     void startPressed();
     void end(bool ok, const QString &why);
     bool planStartsHere() const;
+    bool answerProgramStop(const driver::MachineState &state);
 
     MachineLink &m_link;
     machine::MachineConfig m_profile;
@@ -128,6 +143,10 @@ private:
     Step m_step = Step::None;
     bool m_homeFirst = false;
     bool m_endOnHold = false;
+    ProgramStops m_programStops = ProgramStops::End;
+    bool m_atProgramStop = false;        // the state shows an operator stop already answered
+    std::uint32_t m_programStopLine = 0; // ... at this line
+    int m_programStopsSeen = 0;
     bool m_autoReconnect = false;
     bool m_connectionAsked = false;
     bool m_userDisconnected = false;

@@ -191,6 +191,21 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>ProgramCli</name>
+    <message>
+        <source>frezka-cli: %1 needs a value
+</source>
+        <translation>frezka-cli: %1 potřebuje hodnotu
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli: %1 %2: expected %3 (machine mm of the program&apos;s zero)
+</source>
+        <translation>frezka-cli: %1 %2: očekáváno %3 (strojní mm nuly programu)
+</translation>
+    </message>
+</context>
+<context>
     <name>RunCli</name>
     <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
@@ -223,14 +238,26 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
+        <source>the scripted hold at line %1 failed %2: %3</source>
+        <translation>naskriptované zastavení na řádku %1 selhalo (%2): %3</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops]
 </source>
-        <translation>použití: frezka-cli run SOUBOR [--machine PROFIL] [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]]
+        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops]
 </translation>
     </message>
     <message>
-        <source>the scripted hold at line %1 failed %2: %3</source>
-        <translation>naskriptované zastavení na řádku %1 selhalo (%2): %3</translation>
+        <source>%1%2. Press Enter to continue.
+</source>
+        <translation>%1%2. Pokračujte klávesou Enter.
+</translation>
+    </message>
+    <message>
+        <source>No answer on standard input: the job ends at the stop (use --continue-at-stops for an unattended run).
+</source>
+        <translation>Na standardním vstupu žádná odpověď: úloha končí na zastavení (pro běh bez obsluhy použijte --continue-at-stops).
+</translation>
     </message>
 </context>
 <context>
@@ -267,12 +294,96 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 <context>
     <name>frezka::cli</name>
     <message>
+        <source>note: </source>
+        <translation>poznámka: </translation>
+    </message>
+    <message>
+        <source>Check a G-code program against the machine&apos;s travel: every error, or a summary</source>
+        <translation>Zkontroluje program v G-kódu vůči pojezdům stroje: všechny chyby, nebo souhrn</translation>
+    </message>
+    <message>
+        <source>Transfer programs to/from ANC/K51 grinding controls; Z-position link</source>
+        <translation>Přenos programů do/z řídicích systémů brusek ANC/K51; spojení polohy Z</translation>
+    </message>
+    <message>
+        <source>Plan a G-code program for a machine and print the unit commands</source>
+        <translation>Naplánuje program v G-kódu pro stroj a vypíše příkazy jednotky</translation>
+    </message>
+    <message>
+        <source>Run a G-code job on a GVE unit or the emulator, with progress and a JSON report</source>
+        <translation>Spustí úlohu v G-kódu na jednotce GVE nebo v emulátoru, s průběhem a zprávou v JSON</translation>
+    </message>
+    <message>
+        <source>Interpret a G-code program and print its moves as JSON Lines</source>
+        <translation>Interpretuje program v G-kódu a vypíše jeho pohyby jako JSON Lines</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3%4 %5 is %6 mm above the machine&apos;s travel (%4 %7 .. %8 mm)</source>
+        <translation>%1:%2: %3%4 %5 je %6 mm nad pojezdem stroje (%4 %7 .. %8 mm)</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3%4 %5 is %6 mm below the machine&apos;s travel (%4 %7 .. %8 mm)</source>
+        <translation>%1:%2: %3%4 %5 je %6 mm pod pojezdem stroje (%4 %7 .. %8 mm)</translation>
+    </message>
+    <message>
+        <source>; the program goes %1 mm beyond it at line %2</source>
+        <translation>; program jej přesahuje nejvíce o %1 mm na řádku %2</translation>
+    </message>
+    <message>
         <source>warning: </source>
         <translation>varování: </translation>
     </message>
     <message>
-        <source>note: </source>
-        <translation>poznámka: </translation>
+        <source>%1: the program fits the machine&apos;s travel once its work zero is set: give it with --offset G54:X,Y,Z (--offset G54:%2,%3,%4 puts it inside)
+</source>
+        <translation>%1: program se do pojezdů stroje vejde, jakmile bude nastavena jeho pracovní nula: zadejte ji volbou --offset G54:X,Y,Z (--offset G54:%2,%3,%4 jej umístí dovnitř)
+</translation>
+    </message>
+    <message>
+        <source>%1: the program is larger than the machine&apos;s travel
+</source>
+        <translation>%1: program je větší než pojezdy stroje
+</translation>
+    </message>
+    <message>
+        <source>exit codes:
+  0  done: the program is good (check), planned (plan), ran to its end (run)
+  1  an error in the input or on the machine: a G-code error, a line beyond the machine&apos;s travel, a bad profile, a job that did not finish (on stderr, with the line)
+  2  bad usage: an unknown command or option, a malformed value
+</source>
+        <translation>návratové kódy:
+  0  hotovo: program je v pořádku (check), naplánován (plan), doběhl do konce (run)
+  1  chyba ve vstupu nebo na stroji: chyba G-kódu, řádek mimo pojezdy stroje, chybný profil, nedokončená úloha (na standardní chybový výstup, s řádkem)
+  2  chybné použití: neznámý příkaz nebo volba, chybně zapsaná hodnota
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli COMMAND [ARGS...]
+
+commands:
+</source>
+        <translation>použití: frezka-cli PŘÍKAZ [ARGUMENTY...]
+
+příkazy:
+</translation>
+    </message>
+    <message>
+        <source>
+work offsets: --offset G54:X,Y,Z sets where the program&apos;s zero is on the machine (machine mm; G54 .. G59.3, repeatable); --work-zero X,Y,Z is --offset G54:X,Y,Z.
+operator stops: at M0, M1 and M6 frezka-cli run waits for Enter; --continue-at-stops runs on without an operator.
+
+</source>
+        <translation>
+pracovní posunutí: --offset G54:X,Y,Z určí, kde na stroji leží nula programu (strojní mm; G54 .. G59.3, lze opakovat); --work-zero X,Y,Z je totéž co --offset G54:X,Y,Z.
+zastavení pro obsluhu: na M0, M1 a M6 čeká frezka-cli run na Enter; --continue-at-stops pokračuje bez obsluhy.
+
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli: unknown command &apos;%1&apos;
+</source>
+        <translation>frezka-cli: neznámý příkaz „%1“
+</translation>
     </message>
 </context>
 <context>
@@ -1993,8 +2104,8 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         </translation>
     </message>
     <message>
-        <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</source>
-        <translation>použití: frezka-cli check SOUBOR [--rapid MM_ZA_MIN] [--machine PROFIL]</translation>
+        <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN] %1</source>
+        <translation>použití: frezka-cli check SOUBOR [--rapid MM_ZA_MIN] %1</translation>
     </message>
     <message>
         <source>F%1 was read in %2 (line %3) before this change of units: the feed moves after it run at %1 %2 (%4 %5), as in LinuxCNC, not at %1 %5 (%6 %2)</source>
@@ -3099,6 +3210,22 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Home and run</source>
         <translation>Reference a spustit</translation>
     </message>
+    <message>
+        <source>Status</source>
+        <translation>Stav</translation>
+    </message>
+    <message>
+        <source>Coolant</source>
+        <translation>Chlazení</translation>
+    </message>
+    <message>
+        <source>Air blow</source>
+        <translation>Ofuk</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>&amp;Klávesové zkratky</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3919,6 +4046,69 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     </message>
 </context>
 <context>
+    <name>frezka::gui::Shortcuts</name>
+    <message>
+        <source>Run the program</source>
+        <translation>Spustit program</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastavit</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Pokračovat</translation>
+    </message>
+    <message>
+        <source>Stop: brake along the ramp and hold the job (resumable)</source>
+        <translation>Zastavit: zabrzdit po rampě a podržet úlohu (lze pokračovat)</translation>
+    </message>
+    <message>
+        <source>Abort: brake and drop the job</source>
+        <translation>Přerušit: zabrzdit a zahodit úlohu</translation>
+    </message>
+    <message>
+        <source>Tool lift</source>
+        <translation>Zvednout nástroj</translation>
+    </message>
+    <message>
+        <source>Feed override up (6.25 %)</source>
+        <translation>Korekce posuvu nahoru (6,25 %)</translation>
+    </message>
+    <message>
+        <source>Feed override down (6.25 %)</source>
+        <translation>Korekce posuvu dolů (6,25 %)</translation>
+    </message>
+    <message>
+        <source>Feed override 100 %</source>
+        <translation>Korekce posuvu 100 %</translation>
+    </message>
+    <message>
+        <source>Home all axes</source>
+        <translation>Najet všechny osy do reference</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Klávesové zkratky</translation>
+    </message>
+    <message>
+        <source>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
+        <translation>Klávesy hlavního okna. Ruční posuv šipkami (X, Y) a klávesami Page Up/Down (Z). Textové pole s fokusem si písmena napsaná do něj ponechá; žádná klávesa nestiskne tlačítko jen proto, že má fokus.</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Akce</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Klávesa</translation>
+    </message>
+    <message>
+        <source>LinuxCNC AXIS</source>
+        <translation>LinuxCNC AXIS</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::SpeedPlot</name>
     <message>
         <source>mm/min along the path (%1 mm)</source>
@@ -3927,6 +4117,89 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>%1 mm/min at %2 mm, line %3</source>
         <translation>%1 mm/min na %2 mm, řádek %3</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::StatusPanel</name>
+    <message>
+        <source>%1 mm/min</source>
+        <translation>%1 mm/min</translation>
+    </message>
+    <message>
+        <source>%1 % (runs %2 %)</source>
+        <translation>%1 % (běží %2 %)</translation>
+    </message>
+    <message>
+        <source>override %1</source>
+        <translation>korekce %1</translation>
+    </message>
+    <message>
+        <source>programmed %1 mm/min × %2</source>
+        <translation>programováno %1 mm/min × %2</translation>
+    </message>
+    <message>
+        <source>clockwise (M3)</source>
+        <translation>vpravo (M3)</translation>
+    </message>
+    <message>
+        <source>counter-clockwise (M4)</source>
+        <translation>vlevo (M4)</translation>
+    </message>
+    <message>
+        <source>on · %1 rpm</source>
+        <translation>zapnuto · %1 ot/min</translation>
+    </message>
+    <message>
+        <source>on · %1 · %2 rpm</source>
+        <translation>zapnuto · %1 · %2 ot/min</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>vypnuto</translation>
+    </message>
+    <message>
+        <source>none (T0)</source>
+        <translation>žádný (T0)</translation>
+    </message>
+    <message>
+        <source>%1 on</source>
+        <translation>%1 zap.</translation>
+    </message>
+    <message>
+        <source>%1 off</source>
+        <translation>%1 vyp.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>žádná</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Posuv</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Vřeteno</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Nástroj</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Výstupy</translation>
+    </message>
+    <message>
+        <source>Modes</source>
+        <translation>Režimy</translation>
+    </message>
+    <message>
+        <source>Homed</source>
+        <translation>V referenci</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Spojení</translation>
     </message>
 </context>
 <context>
@@ -4535,6 +4808,10 @@ Volby:
     <message>
         <source>START button ignored: nothing to start or resume (%1).</source>
         <translation>Tlačítko START přeskočeno: není co spustit ani v čem pokračovat (%1).</translation>
+    </message>
+    <message>
+        <source>%1: continuing without an operator.</source>
+        <translation>%1: pokračuje se bez obsluhy.</translation>
     </message>
 </context>
 <context>

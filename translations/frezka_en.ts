@@ -191,6 +191,21 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>ProgramCli</name>
+    <message>
+        <source>frezka-cli: %1 needs a value
+</source>
+        <translation>frezka-cli: %1 needs a value
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli: %1 %2: expected %3 (machine mm of the program&apos;s zero)
+</source>
+        <translation>frezka-cli: %1 %2: expected %3 (machine mm of the program&apos;s zero)
+</translation>
+    </message>
+</context>
+<context>
     <name>RunCli</name>
     <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
@@ -223,14 +238,26 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
+        <source>the scripted hold at line %1 failed %2: %3</source>
+        <translation>the scripted hold at line %1 failed %2: %3</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops]
 </source>
-        <translation>usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
+        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops]
 </translation>
     </message>
     <message>
-        <source>the scripted hold at line %1 failed %2: %3</source>
-        <translation>the scripted hold at line %1 failed %2: %3</translation>
+        <source>%1%2. Press Enter to continue.
+</source>
+        <translation>%1%2. Press Enter to continue.
+</translation>
+    </message>
+    <message>
+        <source>No answer on standard input: the job ends at the stop (use --continue-at-stops for an unattended run).
+</source>
+        <translation>No answer on standard input: the job ends at the stop (use --continue-at-stops for an unattended run).
+</translation>
     </message>
 </context>
 <context>
@@ -267,12 +294,96 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 <context>
     <name>frezka::cli</name>
     <message>
+        <source>note: </source>
+        <translation>note: </translation>
+    </message>
+    <message>
+        <source>Check a G-code program against the machine&apos;s travel: every error, or a summary</source>
+        <translation>Check a G-code program against the machine&apos;s travel: every error, or a summary</translation>
+    </message>
+    <message>
+        <source>Transfer programs to/from ANC/K51 grinding controls; Z-position link</source>
+        <translation>Transfer programs to/from ANC/K51 grinding controls; Z-position link</translation>
+    </message>
+    <message>
+        <source>Plan a G-code program for a machine and print the unit commands</source>
+        <translation>Plan a G-code program for a machine and print the unit commands</translation>
+    </message>
+    <message>
+        <source>Run a G-code job on a GVE unit or the emulator, with progress and a JSON report</source>
+        <translation>Run a G-code job on a GVE unit or the emulator, with progress and a JSON report</translation>
+    </message>
+    <message>
+        <source>Interpret a G-code program and print its moves as JSON Lines</source>
+        <translation>Interpret a G-code program and print its moves as JSON Lines</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3%4 %5 is %6 mm above the machine&apos;s travel (%4 %7 .. %8 mm)</source>
+        <translation>%1:%2: %3%4 %5 is %6 mm above the machine&apos;s travel (%4 %7 .. %8 mm)</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3%4 %5 is %6 mm below the machine&apos;s travel (%4 %7 .. %8 mm)</source>
+        <translation>%1:%2: %3%4 %5 is %6 mm below the machine&apos;s travel (%4 %7 .. %8 mm)</translation>
+    </message>
+    <message>
+        <source>; the program goes %1 mm beyond it at line %2</source>
+        <translation>; the program goes %1 mm beyond it at line %2</translation>
+    </message>
+    <message>
         <source>warning: </source>
         <translation>warning: </translation>
     </message>
     <message>
-        <source>note: </source>
-        <translation>note: </translation>
+        <source>%1: the program fits the machine&apos;s travel once its work zero is set: give it with --offset G54:X,Y,Z (--offset G54:%2,%3,%4 puts it inside)
+</source>
+        <translation>%1: the program fits the machine&apos;s travel once its work zero is set: give it with --offset G54:X,Y,Z (--offset G54:%2,%3,%4 puts it inside)
+</translation>
+    </message>
+    <message>
+        <source>%1: the program is larger than the machine&apos;s travel
+</source>
+        <translation>%1: the program is larger than the machine&apos;s travel
+</translation>
+    </message>
+    <message>
+        <source>exit codes:
+  0  done: the program is good (check), planned (plan), ran to its end (run)
+  1  an error in the input or on the machine: a G-code error, a line beyond the machine&apos;s travel, a bad profile, a job that did not finish (on stderr, with the line)
+  2  bad usage: an unknown command or option, a malformed value
+</source>
+        <translation>exit codes:
+  0  done: the program is good (check), planned (plan), ran to its end (run)
+  1  an error in the input or on the machine: a G-code error, a line beyond the machine&apos;s travel, a bad profile, a job that did not finish (on stderr, with the line)
+  2  bad usage: an unknown command or option, a malformed value
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli COMMAND [ARGS...]
+
+commands:
+</source>
+        <translation>usage: frezka-cli COMMAND [ARGS...]
+
+commands:
+</translation>
+    </message>
+    <message>
+        <source>
+work offsets: --offset G54:X,Y,Z sets where the program&apos;s zero is on the machine (machine mm; G54 .. G59.3, repeatable); --work-zero X,Y,Z is --offset G54:X,Y,Z.
+operator stops: at M0, M1 and M6 frezka-cli run waits for Enter; --continue-at-stops runs on without an operator.
+
+</source>
+        <translation>
+work offsets: --offset G54:X,Y,Z sets where the program&apos;s zero is on the machine (machine mm; G54 .. G59.3, repeatable); --work-zero X,Y,Z is --offset G54:X,Y,Z.
+operator stops: at M0, M1 and M6 frezka-cli run waits for Enter; --continue-at-stops runs on without an operator.
+
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli: unknown command &apos;%1&apos;
+</source>
+        <translation>frezka-cli: unknown command &apos;%1&apos;
+</translation>
     </message>
 </context>
 <context>
@@ -1992,8 +2103,8 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         </translation>
     </message>
     <message>
-        <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</source>
-        <translation>usage: frezka-cli check FILE [--rapid MM_PER_MIN] [--machine PROFILE]</translation>
+        <source>usage: frezka-cli check FILE [--rapid MM_PER_MIN] %1</source>
+        <translation>usage: frezka-cli check FILE [--rapid MM_PER_MIN] %1</translation>
     </message>
     <message>
         <source>F%1 was read in %2 (line %3) before this change of units: the feed moves after it run at %1 %2 (%4 %5), as in LinuxCNC, not at %1 %5 (%6 %2)</source>
@@ -3092,6 +3203,22 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Home and run</source>
         <translation>Home and run</translation>
     </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Coolant</source>
+        <translation>Coolant</translation>
+    </message>
+    <message>
+        <source>Air blow</source>
+        <translation>Air blow</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>&amp;Keyboard shortcuts</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3911,6 +4038,69 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
 </context>
 <context>
+    <name>frezka::gui::Shortcuts</name>
+    <message>
+        <source>Run the program</source>
+        <translation>Run the program</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Resume</translation>
+    </message>
+    <message>
+        <source>Stop: brake along the ramp and hold the job (resumable)</source>
+        <translation>Stop: brake along the ramp and hold the job (resumable)</translation>
+    </message>
+    <message>
+        <source>Abort: brake and drop the job</source>
+        <translation>Abort: brake and drop the job</translation>
+    </message>
+    <message>
+        <source>Tool lift</source>
+        <translation>Tool lift</translation>
+    </message>
+    <message>
+        <source>Feed override up (6.25 %)</source>
+        <translation>Feed override up (6.25 %)</translation>
+    </message>
+    <message>
+        <source>Feed override down (6.25 %)</source>
+        <translation>Feed override down (6.25 %)</translation>
+    </message>
+    <message>
+        <source>Feed override 100 %</source>
+        <translation>Feed override 100 %</translation>
+    </message>
+    <message>
+        <source>Home all axes</source>
+        <translation>Home all axes</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Keyboard shortcuts</translation>
+    </message>
+    <message>
+        <source>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
+        <translation>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Action</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Key</translation>
+    </message>
+    <message>
+        <source>LinuxCNC AXIS</source>
+        <translation>LinuxCNC AXIS</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::SpeedPlot</name>
     <message>
         <source>mm/min along the path (%1 mm)</source>
@@ -3919,6 +4109,89 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>%1 mm/min at %2 mm, line %3</source>
         <translation>%1 mm/min at %2 mm, line %3</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::StatusPanel</name>
+    <message>
+        <source>%1 mm/min</source>
+        <translation>%1 mm/min</translation>
+    </message>
+    <message>
+        <source>%1 % (runs %2 %)</source>
+        <translation>%1 % (runs %2 %)</translation>
+    </message>
+    <message>
+        <source>override %1</source>
+        <translation>override %1</translation>
+    </message>
+    <message>
+        <source>programmed %1 mm/min × %2</source>
+        <translation>programmed %1 mm/min × %2</translation>
+    </message>
+    <message>
+        <source>clockwise (M3)</source>
+        <translation>clockwise (M3)</translation>
+    </message>
+    <message>
+        <source>counter-clockwise (M4)</source>
+        <translation>counter-clockwise (M4)</translation>
+    </message>
+    <message>
+        <source>on · %1 rpm</source>
+        <translation>on · %1 rpm</translation>
+    </message>
+    <message>
+        <source>on · %1 · %2 rpm</source>
+        <translation>on · %1 · %2 rpm</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>off</translation>
+    </message>
+    <message>
+        <source>none (T0)</source>
+        <translation>none (T0)</translation>
+    </message>
+    <message>
+        <source>%1 on</source>
+        <translation>%1 on</translation>
+    </message>
+    <message>
+        <source>%1 off</source>
+        <translation>%1 off</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>Feed</source>
+        <translation>Feed</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Spindle</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Tool</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Outputs</translation>
+    </message>
+    <message>
+        <source>Modes</source>
+        <translation>Modes</translation>
+    </message>
+    <message>
+        <source>Homed</source>
+        <translation>Homed</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Connection</translation>
     </message>
 </context>
 <context>
@@ -4522,6 +4795,10 @@ Options:
     <message>
         <source>START button ignored: nothing to start or resume (%1).</source>
         <translation>START button ignored: nothing to start or resume (%1).</translation>
+    </message>
+    <message>
+        <source>%1: continuing without an operator.</source>
+        <translation>%1: continuing without an operator.</translation>
     </message>
 </context>
 <context>

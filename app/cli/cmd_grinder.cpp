@@ -363,6 +363,8 @@ int runGrinder(const QStringList &list)
 
 } // namespace
 
-FREZKA_CLI_COMMAND(grinder, "grinder ping|save|load|z --port PATH [options] [FILE]",
-                   "Transfer programs to/from ANC/K51 grinding controls; Z-position link",
-                   runGrinder);
+FREZKA_CLI_COMMAND(
+    grinder, "grinder ping|save|load|z --port PATH [options] [FILE]",
+    QT_TRANSLATE_NOOP("frezka::cli",
+                      "Transfer programs to/from ANC/K51 grinding controls; Z-position link"),
+    runGrinder);

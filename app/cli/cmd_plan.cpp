@@ -1,15 +1,17 @@
-// frezka-cli plan FILE [--machine PROFILE.json] [--strategy full|exact-stop|grbl]
+// frezka-cli plan FILE [--machine PROFILE.json] [--offset G54:X,Y,Z[,A]]...
+//                      [--work-zero X,Y,Z[,A]] [--strategy full|exact-stop|grbl]
 //
-// Interprets FILE, plans it for the machine (default: the shipped GVE64 profile) and writes the
-// unit commands one per line as they would go on the wire without checksums ("!0B1200",
-// "!0C697,30,0"); the driver's own steps (waiting for the queue to drain, dwells, operator
-// stops, probing, the end) are comment lines starting with '#'. The last line is a JSON summary:
+// Interprets FILE from its work offsets (programoptions.h), plans it for the machine (default:
+// the shipped GVE64 profile) and writes the unit commands one per line as they would go on the
+// wire without checksums ("!0B1200", "!0C697,30,0"); the driver's own steps (waiting for the
+// queue to drain, dwells, operator stops, probing, the end) are comment lines starting with '#'.
+// The last line is a JSON summary:
 // {"vectors":…,"chains":…,"estimated_s":…,"bound_s":…,"max_vertex_jump_mm_s":…}.
 // G-code, profile and plan errors (soft limits first) go to stderr before anything is written
 // to stdout; exit code 1. Plan warnings go to stderr and the plan is written.
 #include "cli.h"
+#include "programoptions.h"
 
-#include "gcode/interpreter.h"
 #include "machine/machineconfig.h"
 #include "machine/planner.h"
 #include "machine/unitwire.h"
@@ -22,13 +24,16 @@ namespace {
 
 using namespace frezka;
 
-const char *kUsage =
-    "usage: frezka-cli plan FILE [--machine PROFILE.json] [--strategy full|exact-stop|grbl]\n";
+QString usageText()
+{
+    return QStringLiteral("usage: frezka-cli plan FILE %1 [--strategy full|exact-stop|grbl]\n")
+        .arg(cli::programOptionsUsage());
+}
 
 struct Args
 {
     QString file;
-    QString machine;
+    cli::ProgramOptions program;
     machine::PlanStrategy strategy = machine::PlanStrategy::Full;
 };
 
@@ -36,8 +41,10 @@ bool parseArgs(const QStringList &args, Args *out)
 {
     for (int i = 0; i < args.size(); ++i) {
         const QString &a = args[i];
-        if (a == QLatin1String("--machine") && i + 1 < args.size()) {
-            out->machine = args[++i];
+        bool ok = true;
+        if (cli::takeProgramOption(args, i, &out->program, &ok)) {
+            if (!ok)
+                return false;
         } else if (a == QLatin1String("--strategy") && i + 1 < args.size()) {
             const QString s = args[++i];
             if (s == QLatin1String("full"))
@@ -67,29 +74,18 @@ int runPlan(const QStringList &rawArgs)
 {
     Args args;
     if (!parseArgs(rawArgs, &args)) {
-        cli::err(QString::fromLatin1(kUsage));
+        cli::err(usageText());
         return 2;
     }
-    machine::MachineConfig config = machine::defaultMachineConfig(protocol::Variant::Gve64);
-    if (!args.machine.isEmpty()) {
-        const machine::ConfigResult loaded = machine::loadMachineConfig(args.machine.toStdString());
-        cli::printConfigNotes(loaded);
-        if (!loaded.config) {
-            for (const machine::ConfigError &e : loaded.errors)
-                cli::err(QString::fromStdString(e.message) + QLatin1Char('\n'));
-            return 1;
-        }
-        config = *loaded.config;
-    }
-    const gcode::Result program = gcode::interpretFile(args.file.toStdString());
-    if (!program.ok()) {
-        for (const gcode::Error &e : program.errors)
-            cli::err(gcode::formatError(args.file, e) + QLatin1Char('\n'));
+    const std::optional<machine::MachineConfig> config = cli::loadProfile(args.program.machine);
+    if (!config)
         return 1;
-    }
+    const auto program = cli::interpretFile(args.file, args.program);
+    if (!program)
+        return 1;
     machine::PlanOptions options;
     options.strategy = args.strategy;
-    const machine::PlanResult plan = machine::plan(program.toolpath, config, options);
+    const machine::PlanResult plan = machine::plan(*program->toolpath, *config, options);
     for (const machine::PlanError &e : plan.warnings)
         cli::err(cli::planMessage(args.file, e, tr("warning: ")));
     if (!plan.ok()) {
@@ -123,5 +119,10 @@ int runPlan(const QStringList &rawArgs)
 
 } // namespace
 
-FREZKA_CLI_COMMAND(plan, "plan FILE [--machine PROFILE.json] [--strategy full|exact-stop|grbl]",
-                   "Plan a G-code program for a machine and print the unit commands", runPlan);
+FREZKA_CLI_COMMAND(
+    plan,
+    "plan FILE [--machine PROFILE] [--offset G54:X,Y,Z[,A]]... "
+    "[--work-zero X,Y,Z[,A]] [--strategy full|exact-stop|grbl]",
+    QT_TRANSLATE_NOOP("frezka::cli",
+                      "Plan a G-code program for a machine and print the unit commands"),
+    runPlan);

@@ -1,8 +1,11 @@
-// frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N]
+// frezka-cli run FILE [--machine PROFILE] [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]]
+//                     [--port PATH|sim] [--baud N] [--latency-ms N]
 //                     [--faults RATE --seed N] [--clock virtual|real] [--home]
 //                     [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
+//                     [--continue-at-stops]
 //
-// Interprets and plans FILE for the machine profile, then the session's run workflow (the one
+// Interprets FILE from its work offsets (programoptions.h) and plans it for the machine
+// profile, then the session's run workflow (the one
 // the GUI drives) connects (a serial port / pty, or the in-process emulator), optionally homes,
 // and runs the job with a progress bar on a terminal
 // (line, %, ETA) and ends with one JSON line of figures on stdout. Exit code 0 when the job ran
@@ -26,10 +29,11 @@
 // the program's highest feed level as the top of the work (docs/emulator.md).
 #include "cli.h"
 
+#include "programoptions.h"
 #include "runjob.h"
 
-#include "gcode/interpreter.h"
 #include "machine/planner.h"
+#include "session/plannedspeed.h"
 #include "session/programplanner.h"
 
 #include <QCoreApplication>
@@ -49,10 +53,11 @@ using cli::RunOutcome;
 
 int usage()
 {
-    cli::err(
-        RunCli::tr("usage: frezka-cli run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] "
-                   "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] "
-                   "[--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]\n"));
+    cli::err(RunCli::tr("usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] "
+                        "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] "
+                        "[--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] "
+                        "[--continue-at-stops]\n")
+                 .arg(cli::programOptionsUsage()));
     return 2;
 }
 
@@ -63,8 +68,8 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
         const QString &k = args[i];
         const bool hasValue = i + 1 < args.size();
         bool ok = true;
-        if (k == QLatin1String("--machine") && hasValue) {
-            a.machine = args[++i];
+        if (cli::takeProgramOption(args, i, &a.program, &ok)) {
+            // --machine, --offset, --work-zero: taken (ok is false when malformed)
         } else if (k == QLatin1String("--port") && hasValue) {
             a.port = args[++i];
         } else if (k == QLatin1String("--baud") && hasValue) {
@@ -95,6 +100,8 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
             ok = ok && a.holdAtLine >= 1;
         } else if (k == QLatin1String("--lift")) {
             a.lift = true;
+        } else if (k == QLatin1String("--continue-at-stops")) {
+            a.continueAtStops = true;
         } else if (a.file.isEmpty() && !k.startsWith(QLatin1String("--"))) {
             a.file = k;
         } else {
@@ -115,14 +122,15 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
     return a;
 }
 
-// Profile, then the program checked and planned as the GUI does it (the session layer; no work
-// offsets, from the machine zero). Prints every error; nullopt on failure.
+// Profile, then the program checked from its work offsets and planned as the GUI does it (the
+// session layer), from the machine's zero. Prints every error; nullopt on failure.
 struct Prepared
 {
     machine::MachineConfig config;
     machine::UnitProgram program;
     machine::PlanStats stats;
     std::optional<double> workTopMm; // the highest Z a feed move reaches: the top of the work
+    std::vector<float> lineEndS;     // planned seconds to the end of each line
 };
 
 std::optional<double> workTop(const gcode::Toolpath &path)
@@ -138,42 +146,16 @@ std::optional<double> workTop(const gcode::Toolpath &path)
 
 std::optional<Prepared> prepare(const RunArgs &a)
 {
-    machine::MachineConfig config = machine::defaultMachineConfig(protocol::Variant::Gve64);
-    if (!a.machine.isEmpty()) {
-        const machine::ConfigResult r = machine::loadMachineConfig(a.machine.toStdString());
-        cli::printConfigNotes(r);
-        if (!r.config) {
-            for (const machine::ConfigError &e : r.errors)
-                cli::err(QStringLiteral("%1: %2%3\n")
-                             .arg(a.machine,
-                                  e.key.empty() ? QString() : QString::fromStdString(e.key) + ": ",
-                                  QString::fromStdString(e.message)));
-            return std::nullopt;
-        }
-        config = *r.config;
-    }
+    std::optional<machine::MachineConfig> config = cli::loadProfile(a.program.machine);
+    if (!config)
+        return std::nullopt;
     // The in-process emulator's link has the latency given here: the plan keeps its pace.
     if (a.port == QLatin1String("sim"))
-        config.link.latencyMs = a.latencyMs;
-    QFile file(a.file);
-    if (!file.open(QIODevice::ReadOnly)) {
-        cli::err(gcode::formatError(
-                     a.file, {gcode::ErrorCode::FileOpenFailed, 0, 0, a.file.toStdString()}) +
-                 QLatin1Char('\n'));
+        config->link.latencyMs = a.latencyMs;
+    const auto g = cli::interpretFile(a.file, a.program);
+    if (!g)
         return std::nullopt;
-    }
-    session::InterpretRequest request;
-    request.text = file.readAll();
-    request.fileName = a.file;
-    const session::InterpretOutcome g = session::interpretProgram(request);
-    for (const session::ProgramMessage &w : g.warnings)
-        cli::err(w.text + QLatin1Char('\n'));
-    if (!g.errors.empty()) {
-        for (const session::ProgramMessage &e : g.errors)
-            cli::err(e.text + QLatin1Char('\n'));
-        return std::nullopt;
-    }
-    session::PlanOutcome p = session::planProgram(*g.toolpath, config, a.file);
+    session::PlanOutcome p = session::planProgram(*g->toolpath, *config, a.file);
     for (const session::ProgramMessage &w : p.warnings)
         cli::err(RunCli::tr("warning: %1\n").arg(w.text));
     if (!p.ok()) {
@@ -181,7 +163,10 @@ std::optional<Prepared> prepare(const RunArgs &a)
             cli::err(e.text + QLatin1Char('\n'));
         return std::nullopt;
     }
-    return Prepared{config, std::move(*p.program), p.stats, workTop(*g.toolpath)};
+    std::vector<float> lineEndS =
+        session::plannedLineTimes(*p.program, p.stats.speedModeVk, p.stats.estimatedS);
+    return Prepared{*config, std::move(*p.program), p.stats, workTop(*g->toolpath),
+                    std::move(lineEndS)};
 }
 
 double bytesPerVector(const machine::UnitProgram &program, bool checksums)
@@ -242,6 +227,9 @@ void printReport(const RunOutcome &o, const machine::UnitProgram &program,
                                 "cut_without_spindle", "spindle_on_while_held"})
             j[QLatin1String(key)] = QJsonValue::Null;
     }
+    // The emulator's own counters (null on a real port: only the polled ones are known).
+    j[QStringLiteral("unit_steps")] =
+        o.unitSteps ? QJsonValue(steps(*o.unitSteps, axes)) : QJsonValue(QJsonValue::Null);
     j[QStringLiteral("spindle_on_at_end")] =
         o.spindleOnAtEnd ? QJsonValue(*o.spindleOnAtEnd) : QJsonValue(QJsonValue::Null);
     // The feed override the link could not feed was held down to this (null: never).
@@ -251,6 +239,7 @@ void printReport(const RunOutcome &o, const machine::UnitProgram &program,
     j[QStringLiteral("resent")] = static_cast<qint64>(r.resent);
     j[QStringLiteral("recovered")] = static_cast<qint64>(r.recovered);
     j[QStringLiteral("path_faults")] = static_cast<qint64>(r.pathFaults);
+    j[QStringLiteral("program_stops")] = o.programStops;
     cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
              QLatin1Char('\n'));
 }
@@ -263,9 +252,10 @@ int runRun(const QStringList &args)
     auto prepared = prepare(*a);
     if (!prepared)
         return 1;
-    const auto &[config, program, stats, top] = *prepared;
-    const RunOutcome o = a->virtualClock ? cli::runVirtual(*a, config, program, top)
-                                         : cli::runReal(*a, config, program);
+    const auto &[config, program, stats, top, lineEndS] = *prepared;
+    const session::RemainingTime remaining(lineEndS, stats.estimatedS);
+    const RunOutcome o = a->virtualClock ? cli::runVirtual(*a, config, program, top, remaining)
+                                         : cli::runReal(*a, config, program, remaining);
     const int baud = a->baud > 0 ? a->baud : config.link.baud;
     if (!o.ok) {
         cli::err(
@@ -290,7 +280,11 @@ int runRun(const QStringList &args)
 
 FREZKA_CLI_COMMAND(
     run,
-    "run FILE [--machine PROFILE] [--port PATH|sim] [--baud N] [--latency-ms N] "
-    "[--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] "
-    "[--feed-override PCT] [--hold-at-line N [--lift]]",
-    "Run a G-code job on a GVE unit or the emulator, with progress and a JSON report", runRun);
+    "run FILE [--machine PROFILE] [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]] "
+    "[--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] "
+    "[--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] "
+    "[--hold-at-line N [--lift]] [--continue-at-stops]",
+    QT_TRANSLATE_NOOP(
+        "frezka::cli",
+        "Run a G-code job on a GVE unit or the emulator, with progress and a JSON report"),
+    runRun);

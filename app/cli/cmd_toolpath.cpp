@@ -55,5 +55,8 @@ int runToolpath(const QStringList &args)
 
 } // namespace
 
-FREZKA_CLI_COMMAND(toolpath, "toolpath FILE [--events]",
-                   "Interpret a G-code program and print its moves as JSON Lines", runToolpath);
+FREZKA_CLI_COMMAND(
+    toolpath, "toolpath FILE [--events]",
+    QT_TRANSLATE_NOOP("frezka::cli",
+                      "Interpret a G-code program and print its moves as JSON Lines"),
+    runToolpath);

@@ -8,15 +8,19 @@
 #include "driver/link/emulatortransport.h"
 #include "driver/link/linkworker.h"
 #include "machine/steps.h"
+#include "session/programtext.h"
 #include "session/qtmachinelink.h"
 #include "session/runworkflow.h"
 #include "session/simlink.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
+#include <QFile>
+#include <QSocketNotifier>
 #include <QTimer>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <unistd.h>
 
@@ -27,27 +31,34 @@ namespace {
 // The scripted operator's wait while the job is held (--hold-at-line).
 constexpr double kScriptedHoldS = 5.0;
 
-// Progress bar on a terminal (stderr), at most every 0.2 s of wall time.
+// Progress bar on a terminal (stderr), at most every 0.2 s of wall time; the time left from the
+// planner's model at the line being cut (session::RemainingTime: it counts down through
+// dwells), the driver's own estimate where nothing was planned.
 class Progress
 {
 public:
-    Progress()
+    explicit Progress(session::RemainingTime remaining)
         : m_tty(isatty(2) != 0)
+        , m_remaining(std::move(remaining))
     {
         m_wall.start();
     }
-    void show(const driver::MachineState &s, bool force = false)
+    // nowS: the job's clock (virtual or wall seconds).
+    void show(const driver::MachineState &s, double nowS, bool force = false)
     {
+        const double planned =
+            m_remaining.at(s.sourceLine, nowS, s.mode == driver::MachineMode::Running);
         if (!m_tty || (!force && m_wall.elapsed() < 200))
             return;
         m_wall.restart();
         const int width = 30;
         const int filled = static_cast<int>(std::lround(s.progress * width));
         QString bar = QString(filled, QLatin1Char('#')) + QString(width - filled, QLatin1Char('.'));
-        QString eta = s.etaS < 0 ? QStringLiteral("--:--")
-                                 : QStringLiteral("%1:%2")
-                                       .arg(static_cast<int>(s.etaS) / 60)
-                                       .arg(static_cast<int>(s.etaS) % 60, 2, 10, QLatin1Char('0'));
+        const double left = planned >= 0 ? planned : s.etaS;
+        QString eta = left < 0 ? QStringLiteral("--:--")
+                               : QStringLiteral("%1:%2")
+                                     .arg(static_cast<int>(left) / 60)
+                                     .arg(static_cast<int>(left) % 60, 2, 10, QLatin1Char('0'));
         cli::err(RunCli::tr("\r[%1] %2% line %3 ETA %4 ")
                      .arg(bar)
                      .arg(s.progress * 100, 5, 'f', 1)
@@ -59,11 +70,71 @@ public:
         if (m_tty)
             cli::err(QStringLiteral("\n"));
     }
+    // A line of its own (a prompt) while the bar is shown.
+    void interrupt()
+    {
+        if (m_tty)
+            cli::err(QStringLiteral("\n"));
+    }
 
 private:
     bool m_tty;
+    session::RemainingTime m_remaining;
     QElapsedTimer m_wall;
 };
+
+// The program's own stops (M0, M1, M6) of an attended run: the prompt on stderr names the stop
+// and its line's comment, Enter on standard input continues, the end of the input ends the run
+// at the stop (nobody there to answer).
+class StopPrompt
+{
+public:
+    StopPrompt(const RunArgs &a, session::RunWorkflow &workflow, Progress &progress)
+        : m_workflow(workflow)
+        , m_progress(progress)
+    {
+        QFile file(a.file);
+        if (file.open(QIODevice::ReadOnly))
+            m_text = session::ProgramText(file.readAll());
+    }
+    void ask(std::uint32_t line, const QString &text)
+    {
+        m_progress.interrupt();
+        const QString comment = m_text.comment(int(line));
+        cli::err(
+            RunCli::tr("%1%2. Press Enter to continue.\n")
+                .arg(text, comment.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(comment)));
+    }
+    // A line read (or the end of the input): continue, or end the run at the stop.
+    void answer(bool gotLine)
+    {
+        if (gotLine) {
+            m_workflow.resume();
+            return;
+        }
+        cli::err(RunCli::tr("No answer on standard input: the job ends at the stop (use "
+                            "--continue-at-stops for an unattended run).\n"));
+        m_workflow.setProgramStops(session::RunWorkflow::ProgramStops::End);
+        m_workflow.abort();
+    }
+    // Blocks until a line or the end of standard input (the virtual clock waits meanwhile).
+    void readBlocking()
+    {
+        char buffer[256];
+        answer(std::fgets(buffer, sizeof buffer, stdin) != nullptr);
+    }
+
+private:
+    session::RunWorkflow &m_workflow;
+    Progress &m_progress;
+    session::ProgramText m_text;
+};
+
+void setProgramStops(const RunArgs &a, session::RunWorkflow &workflow)
+{
+    workflow.setProgramStops(a.continueAtStops ? session::RunWorkflow::ProgramStops::Continue
+                                               : session::RunWorkflow::ProgramStops::Ask);
+}
 
 // The scripted operator of --hold-at-line: pause with the spindle stop at line N, (lift), wait,
 // (lower), continue. The workflow would end the run at a hold: it waits meanwhile. Empty when
@@ -139,7 +210,8 @@ driver::ConnectionSettings connectionSettings(const RunArgs &a, int baud)
 } // namespace
 
 RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
-                      const machine::UnitProgram &program, std::optional<double> workTopMm)
+                      const machine::UnitProgram &program, std::optional<double> workTopMm,
+                      session::RemainingTime remaining)
 {
     RunOutcome out;
     driver::WireOptions wire;
@@ -163,7 +235,14 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     workflow.setProgram(std::make_shared<const machine::UnitProgram>(program), {}, a.file);
     bool ended = false;
     QObject::connect(&workflow, &session::RunWorkflow::runEnded, [&](bool ok) { ended = ok; });
-    Progress progress;
+    Progress progress(std::move(remaining));
+    setProgramStops(a, workflow);
+    StopPrompt prompt(a, workflow, progress);
+    QObject::connect(&workflow, &session::RunWorkflow::programStopped,
+                     [&](std::uint32_t line, const QString &text) {
+                         prompt.ask(line, text);
+                         prompt.readBlocking();
+                     });
     workflow.start(session::RunWorkflow::connectionFor(config), a.home);
     if (a.feedOverride > 0) {
         link.runUntil([&] { return link.liveState().jobActive || workflow.hasEnded(); }, 600);
@@ -179,25 +258,27 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     while (!workflow.hasEnded()) {
         link.runFor(0.25);
         if (link.liveState().jobActive)
-            progress.show(link.liveState());
+            progress.show(link.liveState(), link.now());
         if (link.liveState().mode == driver::MachineMode::Connecting && link.now() > 120) {
             out.error = RunCli::tr("could not connect to the emulator");
             return out;
         }
     }
-    progress.show(link.liveState(), true);
+    progress.show(link.liveState(), link.now(), true);
     progress.done();
     out.ok = ended;
+    out.programStops = workflow.programStopsSeen();
     out.error = workflow.error();
     out.report = link.jobReport();
     out.finalSteps = link.liveState().positionSteps;
     out.unitStats = link.port().unit().stats();
     out.spindleOnAtEnd = link.port().unit().spindleTurning();
+    out.unitSteps = link.port().unit().position();
     return out;
 }
 
 RunOutcome runReal(const RunArgs &a, const machine::MachineConfig &config,
-                   const machine::UnitProgram &program)
+                   const machine::UnitProgram &program, session::RemainingTime remaining)
 {
     RunOutcome out;
     driver::LinkWorker worker;
@@ -220,7 +301,21 @@ RunOutcome runReal(const RunArgs &a, const machine::MachineConfig &config,
     workflow.setProgram(std::make_shared<const machine::UnitProgram>(program), {}, a.file);
     std::optional<bool> finished;
     QEventLoop loop;
-    Progress progress;
+    Progress progress(std::move(remaining));
+    setProgramStops(a, workflow);
+    StopPrompt prompt(a, workflow, progress);
+    // Standard input is read when it has something, so that the link runs on meanwhile.
+    QSocketNotifier input(STDIN_FILENO, QSocketNotifier::Read);
+    input.setEnabled(false);
+    QObject::connect(&workflow, &session::RunWorkflow::programStopped,
+                     [&](std::uint32_t line, const QString &text) {
+                         prompt.ask(line, text);
+                         input.setEnabled(true);
+                     });
+    QObject::connect(&input, &QSocketNotifier::activated, &loop, [&] {
+        input.setEnabled(false);
+        prompt.readBlocking();
+    });
     QObject::connect(&workflow, &session::RunWorkflow::runEnded, &loop, [&](bool ok) {
         finished = ok;
         loop.quit();
@@ -233,20 +328,22 @@ RunOutcome runReal(const RunArgs &a, const machine::MachineConfig &config,
                              link.execute(driver::op::SetOverride{a.feedOverride});
                          }
                          if (s.jobActive)
-                             progress.show(s);
+                             progress.show(s, workflow.jobElapsedS());
                      });
     const driver::ConnectionSettings settings = connectionSettings(a, options.link.baud);
     QTimer::singleShot(0, &worker, [&] { workflow.start(settings, a.home); });
     loop.exec();
-    progress.show(link.state(), true);
+    progress.show(link.state(), workflow.jobElapsedS(), true);
     progress.done();
     out.ok = finished.value_or(false);
+    out.programStops = workflow.programStopsSeen();
     out.error = workflow.error();
     out.report = worker.jobReport();
     out.finalSteps = link.state().positionSteps;
     if (emulated) {
         out.unitStats = emulated->unit().stats();
         out.spindleOnAtEnd = emulated->unit().spindleTurning();
+        out.unitSteps = emulated->unit().position();
     }
     worker.disconnectFromUnit();
     return out;

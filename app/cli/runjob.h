@@ -3,10 +3,13 @@
 // on the emulator's virtual clock or on a real link (runjob.cpp); cmd_run.cpp parses, plans and
 // reports.
 
+#include "programoptions.h"
+
 #include "driver/link/coretypes.h"
 #include "driver/link/emulatorport.h"
 #include "machine/machineconfig.h"
 #include "machine/unitprogram.h"
+#include "session/remainingtime.h"
 
 #include <QCoreApplication>
 #include <QString>
@@ -27,7 +30,7 @@ struct RunCli
 struct RunArgs
 {
     QString file;
-    QString machine;
+    ProgramOptions program; // --machine, --offset, --work-zero
     QString port = QStringLiteral("sim");
     int baud = 0; // 0 = the profile's
     double latencyMs = 0;
@@ -40,6 +43,7 @@ struct RunArgs
     int feedOverride = 0; // 0 = unchanged
     int holdAtLine = 0;   // 0 = no scripted hold
     bool lift = false;
+    bool continueAtStops = false; // M0 / M1 / M6 continue at once (else: wait for Enter)
 };
 
 // What a run came to: the driver's job report and the unit's end state (emulator: its counters).
@@ -50,16 +54,20 @@ struct RunOutcome
     std::array<std::int64_t, 4> finalSteps{};
     std::optional<emulator::Stats> unitStats;
     std::optional<bool> spindleOnAtEnd; // the emulator's spindle when the job ended
+    std::optional<std::array<std::int64_t, 4>> unitSteps; // the emulator's own counters at the end
+    int programStops = 0;                                 // M0 / M1 / M6 the run continued after
     QString error;
 };
 
 // The in-process emulator on a virtual clock (SimLink), the run workflow turning it; workTopMm:
-// the highest Z a feed move reaches (the emulator's work surface), if any.
+// the highest Z a feed move reaches (the emulator's work surface), if any; remaining: the
+// planner's model of the time left, for the progress bar.
 RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
-                      const machine::UnitProgram &program, std::optional<double> workTopMm);
+                      const machine::UnitProgram &program, std::optional<double> workTopMm,
+                      session::RemainingTime remaining);
 // A serial port / pty, or the emulator in real time: the link worker on this thread's event
 // loop, exactly as the GUI drives it (without the extra thread), the run workflow driving it.
 RunOutcome runReal(const RunArgs &a, const machine::MachineConfig &config,
-                   const machine::UnitProgram &program);
+                   const machine::UnitProgram &program, session::RemainingTime remaining);
 
 } // namespace frezka::cli

@@ -54,7 +54,11 @@ bool JobTracker::positionRead(double startS)
     if (!onPath && i > m_cursor.exec)
         return false;
     m_cursor.exec = i;
-    const std::size_t shown = std::min(i, cmds.empty() ? 0 : cmds.size() - 1);
+    // Standing at the end of everything sent while the driver runs a step of its own (a dwell,
+    // a wait for the spindle): that step's line is the one being executed, not the next
+    // command's, which has not been sent (issue 16: the time left counts down through a dwell).
+    const bool ownStep = i == limit && i > 0 && i < cmds.size() && !isMotion(cmds[i - 1].op);
+    const std::size_t shown = ownStep ? i - 1 : std::min(i, cmds.empty() ? 0 : cmds.size() - 1);
     state.sourceLine = cmds.empty() ? 0 : cmds[shown].sourceLine;
     state.progress = cmds.empty() ? 0 : static_cast<double>(i) / static_cast<double>(cmds.size());
     const double elapsed = m_host.now() - startS;

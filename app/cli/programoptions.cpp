@@ -1,0 +1,127 @@
+#include "programoptions.h"
+
+#include "cli.h"
+
+#include "gcode/error.h"
+
+#include <QFile>
+
+namespace frezka::cli {
+namespace {
+
+// "X,Y,Z" or "X,Y,Z,A" in mm.
+bool parseAxes(const QString &text, session::Axes4 *out)
+{
+    const QStringList parts = text.split(QLatin1Char(','));
+    if (parts.size() < 3 || parts.size() > 4)
+        return false;
+    session::Axes4 axes{};
+    for (int i = 0; i < parts.size(); ++i) {
+        bool ok = false;
+        axes[std::size_t(i)] = parts[i].trimmed().toDouble(&ok);
+        if (!ok)
+            return false;
+    }
+    *out = axes;
+    return true;
+}
+
+// "G54:X,Y,Z[,A]": the system's index and offset.
+bool parseOffset(const QString &text, int *system, session::Axes4 *axes)
+{
+    const int colon = text.indexOf(QLatin1Char(':'));
+    if (colon < 0)
+        return false;
+    const QString name = text.left(colon).trimmed().toUpper();
+    for (int s = 0; s < session::kWorkSystems; ++s) {
+        if (session::workSystemName(s) == name) {
+            *system = s;
+            return parseAxes(text.mid(colon + 1), axes);
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+QString programOptionsUsage()
+{
+    return QStringLiteral(
+        "[--machine PROFILE] [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]]");
+}
+
+bool takeProgramOption(const QStringList &args, int &i, ProgramOptions *options, bool *ok)
+{
+    const QString &key = args[i];
+    const bool known = key == QLatin1String("--machine") || key == QLatin1String("--offset") ||
+                       key == QLatin1String("--work-zero");
+    if (!known)
+        return false;
+    if (i + 1 >= args.size()) {
+        err(ProgramCli::tr("frezka-cli: %1 needs a value\n").arg(key));
+        *ok = false;
+        return true;
+    }
+    const QString value = args[++i];
+    int system = 0;
+    session::Axes4 axes{};
+    if (key == QLatin1String("--machine")) {
+        options->machine = value;
+    } else if (key == QLatin1String("--offset") ? parseOffset(value, &system, &axes)
+                                                : parseAxes(value, &axes)) {
+        options->offsets.systems[std::size_t(system)] = axes;
+        options->offsetsGiven = true;
+    } else {
+        err(ProgramCli::tr("frezka-cli: %1 %2: expected %3 (machine mm of the program's zero)\n")
+                .arg(key, value,
+                     key == QLatin1String("--offset") ? QStringLiteral("G54:X,Y,Z[,A] .. G59.3:...")
+                                                      : QStringLiteral("X,Y,Z[,A]")));
+        *ok = false;
+    }
+    return true;
+}
+
+std::optional<machine::MachineConfig> loadProfile(const QString &path)
+{
+    if (path.isEmpty())
+        return machine::defaultMachineConfig(protocol::Variant::Gve64);
+    const machine::ConfigResult loaded = machine::loadMachineConfig(path.toStdString());
+    printConfigNotes(loaded);
+    if (!loaded.config) {
+        for (const machine::ConfigError &e : loaded.errors)
+            err(QString::fromStdString(e.message) + QLatin1Char('\n'));
+        return std::nullopt;
+    }
+    return *loaded.config;
+}
+
+std::optional<session::InterpretOutcome>
+interpretFile(const QString &file, const ProgramOptions &options, int *errorCount)
+{
+    QFile f(file);
+    if (!f.open(QIODevice::ReadOnly)) {
+        err(gcode::formatError(file, {gcode::ErrorCode::FileOpenFailed, 0, 0, file.toStdString()}) +
+            QLatin1Char('\n'));
+        if (errorCount)
+            *errorCount = 1;
+        return std::nullopt;
+    }
+    session::InterpretRequest request;
+    request.text = f.readAll();
+    request.fileName = file;
+    request.offsets = options.offsets;
+    request.maxErrors = gcode::Options{}.maxErrors; // a terminal lists as many as the interpreter keeps
+    session::InterpretOutcome outcome = session::interpretProgram(request);
+    for (const session::ProgramMessage &w : outcome.warnings)
+        err(w.text + QLatin1Char('\n'));
+    if (errorCount) // the errors shown (the last line may say how many more) and those not
+        *errorCount = int(outcome.errors.size() - (outcome.errorsNotShown > 0 ? 1 : 0) +
+                          outcome.errorsNotShown);
+    if (outcome.errors.empty())
+        return outcome;
+    for (const session::ProgramMessage &e : outcome.errors)
+        err(e.text + QLatin1Char('\n'));
+    return std::nullopt;
+}
+
+} // namespace frezka::cli

@@ -1,0 +1,46 @@
+#pragma once
+// The options every frezka-cli command on a program takes (check, plan, run): the machine
+// profile and where the program's zero is on the machine, read into the session layer's
+// OffsetState, and the program checked with them as the GUI checks it (session::
+// interpretProgram). --offset G54:X,Y,Z[,A] (any of G54 .. G59.3, repeatable) sets a system's
+// offset (machine mm of its zero, as G10 L2 does); --work-zero X,Y,Z[,A] is --offset G54:... .
+// A program starts in G54, as after LinuxCNC's reset, and selects others itself.
+
+#include "session/programplanner.h"
+#include "session/workoffsets.h"
+
+#include "machine/machineconfig.h"
+
+#include <QCoreApplication>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace frezka::cli {
+
+struct ProgramCli
+{
+    Q_DECLARE_TR_FUNCTIONS(ProgramCli)
+};
+
+struct ProgramOptions
+{
+    QString machine; // the profile's path; empty: the shipped GVE64 profile
+    session::OffsetState offsets;
+    bool offsetsGiven = false;
+};
+
+// "[--machine PROFILE] [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]]"
+QString programOptionsUsage();
+// When args[i] is --machine, --offset or --work-zero: takes it and its value (i moves on) and
+// returns true; *ok is false when the value is malformed (the reason on stderr).
+bool takeProgramOption(const QStringList &args, int &i, ProgramOptions *options, bool *ok);
+// The profile of --machine (its notes and errors on stderr), or the shipped GVE64 one.
+std::optional<machine::MachineConfig> loadProfile(const QString &path);
+// The file read and interpreted from the offsets at the machine's zero; every error on stderr
+// as FILE:LINE:COL: message; nullopt on any (*errorCount: how many).
+std::optional<session::InterpretOutcome>
+interpretFile(const QString &file, const ProgramOptions &options, int *errorCount = nullptr);
+
+} // namespace frezka::cli

@@ -1,0 +1,119 @@
+#include "shortcuts.h"
+
+#include <QCoreApplication>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace frezka::gui {
+
+namespace {
+
+const char *const kContext = "frezka::gui::Shortcuts";
+
+QString translated(const char *text)
+{
+    return QCoreApplication::translate(kContext, text);
+}
+
+void fill(QTableWidget *table)
+{
+    const auto &all = operatorShortcuts();
+    table->setRowCount(int(all.size()));
+    for (int row = 0; row < int(all.size()); ++row) {
+        const OperatorShortcut &s = all[std::size_t(row)];
+        table->setItem(row, 0, new QTableWidgetItem(shortcutCaption(s)));
+        table->setItem(row, 1, new QTableWidgetItem(s.key.toString(QKeySequence::NativeText)));
+        table->setItem(
+            row, 2,
+            new QTableWidgetItem(*s.axis ? QString::fromLatin1(s.axis) : QStringLiteral("–")));
+    }
+}
+
+} // namespace
+
+const std::vector<OperatorShortcut> &operatorShortcuts()
+{
+    using A = OperatorAction;
+    static const std::vector<OperatorShortcut> table = {
+        {A::Run, "shortcutRun", QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Run the program"),
+         QKeySequence(Qt::Key_R), "R"},
+        {A::Pause, "shortcutPause", QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Pause"),
+         QKeySequence(Qt::Key_P), "P"},
+        {A::Resume, "shortcutResume", QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Resume"),
+         QKeySequence(Qt::Key_S), "S"},
+        {A::Stop, "stopShortcut",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts",
+                           "Stop: brake along the ramp and hold the job (resumable)"),
+         QKeySequence(Qt::Key_Escape), "Esc"},
+        {A::Abort, "shortcutAbort",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Abort: brake and drop the job"),
+         QKeySequence(Qt::SHIFT | Qt::Key_Escape), "Esc"},
+        {A::ToolLift, "shortcutToolLift", QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Tool lift"),
+         QKeySequence(Qt::Key_L), ""},
+        {A::FeedUp, "shortcutFeedUp",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Feed override up (6.25 %)"),
+         QKeySequence(Qt::Key_Plus), ""},
+        {A::FeedDown, "shortcutFeedDown",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Feed override down (6.25 %)"),
+         QKeySequence(Qt::Key_Minus), ""},
+        {A::Feed100, "shortcutFeed100",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Feed override 100 %"),
+         QKeySequence(Qt::Key_0), "0"},
+        {A::HomeAll, "shortcutHomeAll",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Home all axes"),
+         QKeySequence(Qt::CTRL | Qt::Key_Home), "Ctrl+Home"},
+    };
+    return table;
+}
+
+QString shortcutCaption(const OperatorShortcut &shortcut)
+{
+    return translated(shortcut.caption);
+}
+
+QDialog *showShortcutsDialog(QWidget *parent)
+{
+    auto *dialog = parent->findChild<QDialog *>(QStringLiteral("shortcutsDialog"));
+    if (!dialog) {
+        dialog = new QDialog(parent);
+        dialog->setObjectName(QStringLiteral("shortcutsDialog"));
+        auto *layout = new QVBoxLayout(dialog);
+        auto *note = new QLabel(dialog);
+        note->setObjectName(QStringLiteral("shortcutsNote"));
+        note->setWordWrap(true);
+        layout->addWidget(note);
+        auto *table = new QTableWidget(0, 3, dialog);
+        table->setObjectName(QStringLiteral("shortcutsTable"));
+        table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+        table->verticalHeader()->hide();
+        table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+        layout->addWidget(table);
+        auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
+        QObject::connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::close);
+        layout->addWidget(buttons);
+        dialog->resize(560, 420);
+    }
+    dialog->setWindowTitle(
+        QCoreApplication::translate("frezka::gui::Shortcuts", "Keyboard shortcuts"));
+    dialog->findChild<QLabel *>(QStringLiteral("shortcutsNote"))
+        ->setText(QCoreApplication::translate(
+            "frezka::gui::Shortcuts",
+            "Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A "
+            "text field with the focus keeps the letters typed into it; no key presses a "
+            "button that merely has the focus."));
+    auto *table = dialog->findChild<QTableWidget *>(QStringLiteral("shortcutsTable"));
+    table->setHorizontalHeaderLabels(
+        {QCoreApplication::translate("frezka::gui::Shortcuts", "Action"),
+         QCoreApplication::translate("frezka::gui::Shortcuts", "Key"),
+         QCoreApplication::translate("frezka::gui::Shortcuts", "LinuxCNC AXIS")});
+    fill(table);
+    dialog->show();
+    dialog->raise();
+    return dialog;
+}
+
+} // namespace frezka::gui
