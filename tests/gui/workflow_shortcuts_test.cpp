@@ -116,8 +116,10 @@ private slots:
         QCOMPARE(state().mode, MachineMode::Running); // as its button: only while paused
         press(keyOf(OperatorAction::Pause));
         QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Paused, 10000);
+        from = int(wire.sent.size());
         press(keyOf(OperatorAction::ToolLift));
         QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::ToolLifted, 20000);
+        QVERIFY(wire.sent.mid(from).indexOf(command(QStringLiteral("!0K"))) >= 0); // queue kept
         m_window->workflow()->lowerTool(0, true);
         QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running, 30000);
         // Esc holds; Shift+Esc drops the job (H, D).

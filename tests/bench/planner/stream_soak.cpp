@@ -70,8 +70,6 @@ int ratios(long cases, long first, int maxLines)
             frezka::machine::PlanOptions o;
             o.speedChangeCost = variant == 1 ? 0.0 : 1.0;
             o.wireLimited = variant != 2;
-            if (const char *w = std::getenv("SOAK_ACCEL_WINDOW"))
-                o.accelWindowSteps = std::atof(w);
             const auto p = frezka::machine::plan(toolpath, job.config, o);
             std::printf(" %s %.3f/%.3f=%.4f",
                         variant == 0   ? "plan"
