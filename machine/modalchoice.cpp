@@ -156,6 +156,15 @@ void chooseAccels(std::vector<Derived> &d, const PlanOptions &options, const Lin
         double timeSum = timeOf(k);
         if (quick(d, k, options)) {
             while (end < n && quick(d, end, options)) {
+                // Across a rest only where the caps are close: from rest a vector is all
+                // acceleration (time ~ sqrt(2 L / A), not its cruise time), and the A
+                // command travels with the rest's other commands while the unit stands
+                // (property seed 187: a one-step Z move's A 28 held the 364-step A-axis
+                // vector after each rest at a 46th of its own, the plan 68 % over its bound).
+                if (d[end].restBefore &&
+                    std::min(least, caps[end]) <
+                        std::max(most, caps[end]) * (1 - options.accelTolerance))
+                    break;
                 const std::int64_t lo = std::min(least, caps[end]);
                 const std::int64_t hi = std::max(most, caps[end]);
                 const double s = rootSum + timeOf(end) * std::sqrt(static_cast<double>(caps[end]));

@@ -433,3 +433,44 @@ TEST(Accel, AShortMoveFromRestKeepsItsOwnAxisAcceleration)
     EXPECT_EQ(vs.back().a, static_cast<std::int64_t>(std::floor(394.8 * 12.417 / 1000)));
     expectValid(r);
 }
+
+// Property seed 187, built by hand: A-axis moves of 364 steps with a one-step Z move between
+// them, each corner a rest (Z's jump limit is below the unit's smallest speed). The quick
+// vectors shared the least A across the rests, so after each rest the A axis started from
+// standstill at the Z move's A 28, a 46th of its own (the plan 68 % over its bound). From rest a
+// vector is all acceleration, and an A command sent while the unit stands costs no motion.
+TEST(Accel, AStretchDoesNotShareTheAccelerationAcrossARest)
+{
+    MachineConfig c = defaultMachineConfig(protocol::Variant::Gve114);
+    c.link.baud = 230400;
+    c.link.latencyMs = 9.4;
+    c.axes[2].stepsPerMm = 29.426;
+    c.axes[2].accelMmPerS2 = 970.56;
+    c.axes[2].maxJumpMmPerS = 0.157;
+    c.axes[3].present = true;
+    c.axes[3].stepsPerMm = 1914.593;
+    c.axes[3].accelMmPerS2 = 667.76;
+    c.axes[3].maxSpeedMmPerMin = 4456;
+    c.axes[3].maxJumpMmPerS = 1.73;
+    gcode::Toolpath tp;
+    tp.setOrigin({40, 30, -12, 1});
+    double a = 1, z = -12;
+    std::uint32_t line = 1;
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 3; ++j)
+            tp.appendFeed({40, 30, z, a += 0.19}, 5053, line++);
+        tp.appendFeed({40, 30, z -= 1 / 29.426, a}, 5053, line++);
+    }
+    const PlanResult r = planOk(tp, c);
+    const auto vs = replay(r.program);
+    const std::int64_t own = static_cast<std::int64_t>(std::floor(667.76 * 1914.593 / 1000));
+    int afterRest = 0;
+    for (std::size_t k = 1; k < vs.size(); ++k) {
+        if (vs[k].d[3] != 0 && vs[k - 1].d[3] == 0) { // the first A vector after a Z move
+            ++afterRest;
+            EXPECT_EQ(vs[k].a, own) << "vector " << k;
+        }
+    }
+    EXPECT_EQ(afterRest, 3);
+    expectValid(r);
+}

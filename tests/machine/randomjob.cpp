@@ -470,12 +470,13 @@ JobOutcome runJob(const RandomJob &job)
             if (it != trace.begin())
                 for (int i = 0; i < 4; ++i)
                     stood[i] = std::prev(it)->position[static_cast<std::size_t>(i)];
-            if (!restPoints.contains(stood))
-                std::fprintf(
-                    stderr,
-                    "%.6f STARVATION: the unit restarts after running dry at %lld,%lld,%lld\n", t,
-                    static_cast<long long>(stood[0]), static_cast<long long>(stood[1]),
-                    static_cast<long long>(stood[2]));
+            std::fprintf(
+                stderr,
+                restPoints.contains(stood)
+                    ? "%.6f restart at %lld,%lld,%lld\n"
+                    : "%.6f STARVATION: the unit restarts after running dry at %lld,%lld,%lld\n",
+                t, static_cast<long long>(stood[0]), static_cast<long long>(stood[1]),
+                static_cast<long long>(stood[2]));
         }
         for (const emulator::TracePoint &t : port.unit().trace()) // where the machine stood
             if (t.pathSpeedPulsesPerS == 0)
