@@ -9,6 +9,12 @@
 
 namespace frezka::machine::detail {
 
+namespace {
+// paceModalChanges: how many times a stretch is slowed toward the time a change needs (from rest
+// a lower V lengthens the acceleration less than the cruise, so one step may fall short).
+constexpr int kSlowTries = 4;
+} // namespace
+
 // The link's pace (PlanOptions::wireLimited): a vector must last at least the time its bytes
 // take on the wire, or the unit's queue runs dry mid-chain and the machine stops without
 // braking. Its bytes: the largest vector of its neighbourhood, and the neighbourhood's B
@@ -124,6 +130,11 @@ void RunPlanner::paceModalChanges()
     auto cruise = [this](std::size_t j) {
         return m_d[j].units / static_cast<double>(std::max<std::int64_t>(m_d[j].speed, 1));
     };
+    // The time of stretch [a, b): from rest at least its acceleration (cruise alone under-counts
+    // it, and the stretch was slowed more than it needed).
+    auto stretchS = [&](std::size_t a, std::size_t b) {
+        return m_d[a].restBefore ? fromRestS(timeS[b] - timeS[a], a, b) : timeS[b] - timeS[a];
+    };
     double held = 0; // motion the unit holds when stretch [first, k) has gone out
     std::size_t first = 0;
     for (std::size_t k = 0; k <= n; ++k) {
@@ -139,11 +150,7 @@ void RunPlanner::paceModalChanges()
             for (std::size_t j = first; j < k; ++j)
                 wire += m_link.bareVectorWireS(m_d[j].wireBytes);
             const std::size_t from = k > queue ? k - queue : 0;
-            // From rest the first stretch takes at least its acceleration (cruise alone
-            // under-counts it, and the stretch was slowed more than it needed).
-            const double own = m_d[first].restBefore ? fromRestS(timeS[k] - timeS[first], first, k)
-                                                     : timeS[k] - timeS[first];
-            held = std::min(held + own - wire, timeS[k] - timeS[from]);
+            held = std::min(held + stretchS(first, k) - wire, timeS[k] - timeS[from]);
             held = std::max(held, 0.0);
             if (k < n && changes && !chainStart) {
                 const int commands = (m_d[k].speed != m_d[k - 1].speed ? 1 : 0) +
@@ -164,9 +171,20 @@ void RunPlanner::paceModalChanges()
                             timeS[j + 1] = timeS[j] + cruise(j);
                         continue; // one stretch now, going on past k
                     }
-                    held += slowStretch(first, k, need - held);
-                    for (std::size_t j = first; j < k; ++j)
-                        timeS[j + 1] = timeS[j] + cruise(j);
+                    // What slowing gains is measured as the stretch's own time: from rest
+                    // that is its acceleration, which a lower V lengthens less than its cruise
+                    // (property seed 95: a chain's first vector counted 40 ms it did not gain,
+                    // and the unit ran dry behind the V after it).
+                    for (int tries = 0; tries < kSlowTries && held < need; ++tries) {
+                        const double before = stretchS(first, k);
+                        slowStretch(first, k, need - held);
+                        for (std::size_t j = first; j < k; ++j)
+                            timeS[j + 1] = timeS[j] + cruise(j);
+                        const double gained = stretchS(first, k) - before;
+                        if (!(gained > 0))
+                            break;
+                        held += gained;
+                    }
                 }
                 held = std::max(0.0, held - commands * m_link.modalChangeS()); // spent on them
             }

@@ -26,8 +26,6 @@ constexpr double kDryReserveS = 0.02;
 // ... and this share of what it holds: the estimate of a second and more of queued motion is off
 // by a percent or two (a 1.5 s packet after a spin-up arrived 11 ms after the unit ran dry).
 constexpr double kHeldDriftShare = 0.05;
-// Below this much wire time to spare the unit runs dry whatever the packet: send a full one.
-constexpr double kMinPacedWireS = 0.005;
 } // namespace
 
 Job::Job(CoreHost &host)
@@ -148,8 +146,8 @@ void Job::streamStep(double now)
 // its queue for as long as the packet takes on the wire. Where the motion ahead keeps pace with
 // the wire, a packet must take no longer than that (each packet then brings more motion than it
 // costs, so the unit holds more after it), or the unit runs dry mid-chain and stops without
-// braking. Where the wire is the bottleneck, or the unit holds too little for any packet, it
-// runs dry whatever the driver does, and a full packet loses least. Kept in reserve: the reply's
+// braking. Where the unit holds too little for any budget, the packet is one vector: the
+// smallest is the one that may still come in time. Kept in reserve: the reply's
 // and the next packet's round trips and a little more (the estimate of what the unit holds
 // drifts between polls), or half of what it holds when it holds little (a small queue, as the
 // GVE84's 64 vectors: a short packet still comes in time). Long for the one decision it makes.
@@ -167,7 +165,11 @@ void Job::sendPacket(double now)
     const double held = m_pace.leadS(); // the packet must arrive before the last vector brakes
     const double budget =
         held - std::min(2 * m_host.rttS() + kDryReserveS + kHeldDriftShare * held, 0.5 * held);
-    const bool paced = held > 0 && budget >= kMinPacedWireS;
+    // While the unit moves, a packet is no longer on the wire than the budget, and holds at
+    // least one vector: where the unit holds too little for any budget, the smallest packet
+    // is the one that may still arrive in time. A full packet there (30 commands, 40 ms on the
+    // wire, where the unit held a few ms after a V) made it run dry (property seed 154).
+    const bool paced = held > 0;
     while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
         const UnitOp op = cmds[end].op;
         if (op != UnitOp::Vector && op != UnitOp::Brake)

@@ -359,3 +359,32 @@ TEST(StreamPace, RasterAtThreeTimesTheMaximumFeedKeepsThePace)
         }
     }
 }
+
+// Property seed 154 (a GVE64 at 57 600 Bd, 15 ms): after a V inside a chain the unit held a
+// few milliseconds of motion, too little for any packet budget, and the driver sent a full
+// packet (30 commands, 40 ms on the wire): the unit ran dry before its *E. The smallest packet,
+// one vector, is the one that may still come in time (driver/link/job.cpp, sendPacket).
+TEST(StreamPace, AUnitHoldingLittleGetsTheSmallestPacket)
+{
+    expectKeepsThePace(drawJob(154, 300));
+}
+
+// Property seed 95 (a GVE84 at 38 400 Bd, 11.5 ms, VN): a chain's first vector from rest with a
+// V after it. The pace slowed that vector for the V's round trip but counted the time gained at
+// cruise; from rest it is mostly acceleration, which a lower V lengthens less, and the unit ran
+// dry behind the V. What slowing gains is now the stretch's own time (machine/chainpace.cpp).
+TEST(StreamPace, AVectorSlowedFromRestGainsWhatItsAccelerationGives)
+{
+    expectKeepsThePace(drawJob(95, 300));
+}
+
+// Property seed 128 (a GVE64 at 19 200 Bd, 11.7 ms): a Z zig-zag of 2-17 step vectors with a V
+// before nearly each. Every poll read a Z position that many of the vectors in flight pass
+// through; the job took the first of them for the one executing, far behind the unit, judged
+// that the unit held 0.8 s of motion where it held 0.1 s, and sent too late: 5 starvation stops.
+// The tracker now takes the vector nearest to where the unit's model puts it
+// (driver/link/jobtracker.cpp).
+TEST(StreamPace, AZigZagPollIsPlacedWhereTheUnitIs)
+{
+    expectKeepsThePace(drawJob(128, 300));
+}
