@@ -2,7 +2,7 @@
 //                     [--port PATH|sim] [--baud N] [--latency-ms N]
 //                     [--faults RATE --seed N] [--clock virtual|real] [--home]
 //                     [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
-//                     [--continue-at-stops]
+//                     [--continue-at-stops] [--from-line N]
 //
 // Interprets FILE from its work offsets (programoptions.h) and plans it for the machine
 // profile, then the session's run workflow (the one
@@ -27,6 +27,12 @@
 // lowers it and continues (without --lift: waits and continues). The report then carries the
 // emulator's safety counters (axis_over_max, cut_without_spindle, spindle_on_while_held) with
 // the program's highest feed level as the top of the work (docs/emulator.md).
+//
+// --from-line N runs the program from line N (session/runfromline.h): the program's state at
+// the line (printed on stderr), the spindle and coolant as there with the spin-up waited, the
+// safe approach from the machine's zero, then the program's rest; a line that cannot be a start
+// (inside a loop or a subroutine, never run, no feed in force) is refused with the line to
+// choose (exit 1).
 #include "cli.h"
 
 #include "programoptions.h"
@@ -35,6 +41,7 @@
 #include "machine/planner.h"
 #include "session/plannedspeed.h"
 #include "session/programplanner.h"
+#include "session/runfromline.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -56,7 +63,7 @@ int usage()
     cli::err(RunCli::tr("usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] "
                         "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] "
                         "[--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] "
-                        "[--continue-at-stops]\n")
+                        "[--continue-at-stops] [--from-line N]\n")
                  .arg(cli::programOptionsUsage()));
     return 2;
 }
@@ -102,6 +109,9 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
             a.lift = true;
         } else if (k == QLatin1String("--continue-at-stops")) {
             a.continueAtStops = true;
+        } else if (k == QLatin1String("--from-line") && hasValue) {
+            a.fromLine = args[++i].toInt(&ok);
+            ok = ok && a.fromLine >= 1;
         } else if (a.file.isEmpty() && !k.startsWith(QLatin1String("--"))) {
             a.file = k;
         } else {
@@ -152,10 +162,25 @@ std::optional<Prepared> prepare(const RunArgs &a)
     // The in-process emulator's link has the latency given here: the plan keeps its pace.
     if (a.port == QLatin1String("sim"))
         config->link.latencyMs = a.latencyMs;
-    const auto g = cli::interpretFile(a.file, a.program);
+    const auto g = cli::interpretFile(a.file, a.program, nullptr, std::uint32_t(a.fromLine));
     if (!g)
         return std::nullopt;
-    session::PlanOutcome p = session::planProgram(*g->toolpath, *config, a.file);
+    std::shared_ptr<const gcode::Toolpath> job = g->toolpath;
+    if (a.fromLine > 0) {
+        // The machine stands at its zero when the run starts (the plan's start, as for a whole
+        // program): the approach starts there.
+        const session::FromLineOutcome from =
+            session::runFromLine(*g->toolpath, g->mark, *config, {}, a.file);
+        if (!from.ok()) {
+            cli::err(from.refusal + QLatin1Char('\n'));
+            return std::nullopt;
+        }
+        cli::err(RunCli::tr("Run from line %1. %2\n")
+                     .arg(a.fromLine)
+                     .arg(session::fromLineSummary(from.from)));
+        job = from.toolpath;
+    }
+    session::PlanOutcome p = session::planProgram(*job, *config, a.file);
     for (const session::ProgramMessage &w : p.warnings)
         cli::err(RunCli::tr("warning: %1\n").arg(w.text));
     if (!p.ok()) {
@@ -283,7 +308,7 @@ FREZKA_CLI_COMMAND(
     "run FILE [--machine PROFILE] [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]] "
     "[--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] "
     "[--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] "
-    "[--hold-at-line N [--lift]] [--continue-at-stops]",
+    "[--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]",
     QT_TRANSLATE_NOOP(
         "frezka::cli",
         "Run a G-code job on a GVE unit or the emulator, with progress and a JSON report"),

@@ -44,6 +44,7 @@ struct RunArgs
     int holdAtLine = 0;   // 0 = no scripted hold
     bool lift = false;
     bool continueAtStops = false; // M0 / M1 / M6 continue at once (else: wait for Enter)
+    int fromLine = 0;             // run from this line (session/runfromline.h), 0 = the whole
 };
 
 // What a run came to: the driver's job report and the unit's end state (emulator: its counters).
