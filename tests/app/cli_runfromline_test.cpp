@@ -83,6 +83,20 @@ private slots:
              {"cut_without_spindle", "spindle_on_while_held", "axis_over_max", "brake_violations"})
             QVERIFY2(j[QLatin1String(key)].isDouble() && j[QLatin1String(key)].toInt() == 0, key);
         QVERIFY(j[QStringLiteral("job_s")].toDouble() < w[QStringLiteral("job_s")].toDouble());
+        // The approach is the first motion: where the emulator's counters first went below the
+        // safe height (machine Z0 here, where Z stood) is straight above line 18's start, X85
+        // Y35 (machine), on the way down to it.
+        const QStringList lines = from.out.trimmed().split(QLatin1Char('\n'));
+        QVERIFY(lines.size() >= 2);
+        const QJsonObject a = QJsonDocument::fromJson(lines[lines.size() - 2].toUtf8()).object();
+        QCOMPARE(a[QStringLiteral("from_line")].toInt(), 18);
+        QCOMPARE(a[QStringLiteral("safe_z_steps")].toInt(), 0);
+        QCOMPARE(a[QStringLiteral("start_steps")].toArray(), (QJsonArray{17000, 7000, -12400, 0}));
+        const QJsonArray below = a[QStringLiteral("unit_first_below_safe_z")].toArray();
+        QCOMPARE(below.size(), 4);
+        QCOMPARE(below[0].toInteger(), 17000);
+        QCOMPARE(below[1].toInteger(), 7000);
+        QVERIFY(below[2].toInteger() < 0 && below[2].toInteger() >= -12400);
         // The state it took, and the approach: across at the machine's Z0, where Z stands (above
         // the program's clearance, Z5 in G55 = -55), down at the feed to where line 18 begins.
         for (const char *text :

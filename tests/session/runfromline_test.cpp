@@ -111,6 +111,8 @@ TEST(RunFromLine, StateThenApproachThenTheRest)
     EXPECT_EQ(t.origin(), from);
     // Path mode, the spindle as at the line (the planner waits its spin-up), coolant.
     ASSERT_GE(t.size(), 6u);
+    for (std::size_t i = 0; i < 3; ++i)
+        ASSERT_EQ(t.kind(i), MotionKind::Event) << i;
     EXPECT_EQ(t.event(0).kind, EventKind::PathMode);
     EXPECT_EQ(t.event(1), (gcode::Event{EventKind::SpindleCw, 12000, 0, 0}));
     EXPECT_EQ(t.event(2).kind, EventKind::CoolantFlood);
