@@ -10,6 +10,8 @@
 
 #include "../gcode/rs274.h"
 
+#include "gcode/interpreter.h"
+
 #include <QFile>
 #include <QTemporaryDir>
 
@@ -69,6 +71,44 @@ TEST(RunFromLine, ModalStateAtTheLine)
     ASSERT_LT(r.mark.entry, r.toolpath->size());
     EXPECT_EQ(r.toolpath->line(r.mark.entry), 18u);
     EXPECT_EQ(r.toolpath->line(r.mark.entry - 1), 17u);
+}
+
+// G92, G20, G18, G43 with a tool length, M7 and G64 P, each as the interpreter holds it.
+TEST(RunFromLine, OffsetsUnitsPlaneToolLengthAndPathMode)
+{
+    const InterpretOutcome g92 = interpret("G21 G90 F100\nG0 X10\nG92 X0\nG1 X5\nG1 X6\nM2\n", 5);
+    ASSERT_TRUE(g92.mark.ok());
+    EXPECT_EQ(g92.mark.state.g92Mm, (std::array<double, 4>{10, 0, 0, 0}));
+    EXPECT_EQ(g92.mark.state.programMm.x, 5.0);
+    EXPECT_EQ(g92.mark.state.machineMm.x, 15.0);
+
+    gcode::Options options;
+    options.toolLengthMm[3] = 12.5;
+    options.startLine = 6;
+    const gcode::Result r = gcode::interpretText(
+        "G20 G90 G18 G64 P0.001\nT3 M6\nG43 H3\nM7 S8000 M3\nG1 X1 Z0 F10\nG1 X2\nM2\n", options);
+    ASSERT_TRUE(r.ok());
+    ASSERT_TRUE(r.mark.ok());
+    const gcode::LineState &s = r.mark.state;
+    EXPECT_FALSE(s.metric);
+    EXPECT_EQ(s.plane, 180);
+    EXPECT_EQ(s.tool, 3);
+    EXPECT_EQ(s.toolLengthMm, 12.5);
+    EXPECT_TRUE(s.mist);
+    EXPECT_FALSE(s.flood);
+    EXPECT_EQ(s.speedRpm, 8000.0);
+    EXPECT_NEAR(s.feedMmPerMin, 254.0, 1e-9); // F10 in/min
+    EXPECT_EQ(s.pathMode, 2);
+    EXPECT_NEAR(s.pathToleranceMm, 0.0254, 1e-12);
+    EXPECT_NEAR(s.machineMm.x, 25.4, 1e-9);
+    EXPECT_NEAR(s.machineMm.z, 12.5, 1e-9); // Z0 with the tool's length
+    FromLine from;
+    from.line = 6;
+    from.state = s;
+    const QString summary = fromLineSummary(from);
+    for (const char *text :
+         {"tool 3 (length 12.500 mm)", "S8000 M3", "M7", "F10", "G54 G90 G20 G18"})
+        EXPECT_TRUE(summary.contains(QLatin1String(text))) << text << " " << summary.toStdString();
 }
 
 // rs274 run on the lines before 18 holds the same position, feed and spindle at their end.
