@@ -54,6 +54,7 @@ bool Interpreter::skipTo(const std::string &label, std::initializer_list<OKind> 
         for (OKind k : kinds) {
             if (k == kind) {
                 *found = kind;
+                noteSkipped(startLine, opening, label);
                 // Leave the parser holding this line fully parsed, for its arguments.
                 return m_parser.parse(m_block, m_assignments, error);
             }
@@ -203,7 +204,9 @@ bool Interpreter::callSub(Error *error)
         const std::uint32_t line = m_line;
         OKind found = OKind::None;
         Error ignored;
+        m_lookingAhead = true;
         const bool defined = skipTo(label, {OKind::Sub}, &found, &ignored);
+        m_lookingAhead = false;
         if (defined)
             it = m_subs.emplace(label, SubDef{m_next, m_line}).first;
         m_next = next;

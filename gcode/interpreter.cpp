@@ -148,6 +148,8 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
             report({ErrorCode::TooManyBlocks, m_line, 1, std::to_string(m_options.maxBlocks)});
             break;
         }
+        if (m_options.startLine != 0 && !m_marked && m_line >= m_options.startLine)
+            markBefore();
         if (processLine(raw, &error))
             continue;
         report(error);
@@ -183,6 +185,7 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
     result.warningsNotShown = m_warningsNotShown;
     result.linesRead = m_line;
     result.ended = m_ended;
+    finishMark(&result.mark);
     result.toolpath = std::move(m_toolpath);
     m_toolpath = Toolpath{};
     return result;

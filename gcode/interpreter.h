@@ -14,6 +14,7 @@
 // converted to mm on entry.
 
 #include "gcode/error.h"
+#include "gcode/linestate.h"
 #include "gcode/parameters.h"
 #include "gcode/parser.h"
 #include "gcode/toolpath.h"
@@ -49,6 +50,9 @@ struct Options
     std::array<std::array<double, 4>, 9> workOffsetsMm{}; // G54..G59.3, machine mm (#5221..)
     int coordinateSystem = 0;                             // active at the start: 0 = G54
     Point4 startMm;                                       // machine position (toolpath origin)
+    // Run from a line: the state where this line (1-based) begins is recorded in Result::mark
+    // (gcode/linestate.h); 0 = none. The program is interpreted whole all the same.
+    std::uint32_t startLine = 0;
     // Called now and then (every 65 536 lines) with the bytes read so far and the total.
     std::function<void(std::size_t done, std::size_t total)> progress;
 };
@@ -66,6 +70,7 @@ struct Result
     std::size_t warningsNotShown = 0;
     std::uint64_t linesRead = 0;
     bool ended = false; // reached M2/M30 or the closing % (not an implied end)
+    LineMark mark;      // Options::startLine's state, or why the program has none
     bool ok() const { return errors.empty(); }
 };
 
@@ -118,6 +123,13 @@ private:
     bool executeStops();
     bool setOffsets(Error *error);
     bool homeMove(bool g30, Error *error);
+
+    // Run from a line (interp_mark.cpp).
+    void markBefore(); // a line is about to run: is it the start line?
+    // skipTo passed over the lines after `from` (an O line of this kind and label) to m_line.
+    void noteSkipped(std::uint32_t from, OKind opening, const std::string &label);
+    void finishMark(LineMark *mark) const;
+    LineState lineState() const;
 
     // Motion (interp_motion.cpp).
     bool executeMotion(int motion, Error *error);
@@ -248,6 +260,13 @@ private:
     double m_cycleR = 0, m_cycleCC = 0, m_cycleP = 0, m_cycleQ = 0; // mm / s as programmed
     double m_cycleIl = 0; // initial level of consecutive cycles
     bool m_cycleIlValid = false;
+    // Run from a line: the mark, a skip over the start line, a call that ran it.
+    LineMark m_mark;
+    bool m_marked = false;
+    bool m_lookingAhead = false; // callSub searching a subroutine's definition further down
+    LineMarkRefusal m_skipRefusal = LineMarkRefusal::None;
+    std::uint32_t m_skipLine = 0, m_callLine = 0;
+    std::string m_skipLabel, m_callLabel;
     Point4 m_probe; // #5061.. (program coordinates, mm)
     bool m_probed = false;
 };

@@ -77,6 +77,28 @@ void Toolpath::appendEvent(const Event &event, double feedMmPerMin, std::uint32_
          feedMmPerMin, line, static_cast<std::uint32_t>(m_events.size() - 1));
 }
 
+void Toolpath::appendEntries(const Toolpath &from, std::size_t first)
+{
+    reserve(size() + (from.size() > first ? from.size() - first : 0));
+    for (std::size_t i = first; i < from.size(); ++i) {
+        std::uint32_t aux = from.m_aux[i];
+        switch (from.m_kind[i]) {
+        case MotionKind::Arc:
+            m_arcs.push_back(from.m_arcs[aux]);
+            aux = static_cast<std::uint32_t>(m_arcs.size() - 1);
+            break;
+        case MotionKind::Dwell:
+        case MotionKind::Event:
+            m_events.push_back(from.m_events[aux]);
+            aux = static_cast<std::uint32_t>(m_events.size() - 1);
+            break;
+        default:
+            break; // rapid, feed: no aux; probe: its kind
+        }
+        push(from.m_kind[i], from.end(i), from.m_feed[i], from.m_line[i], aux);
+    }
+}
+
 std::size_t Toolpath::memoryBytes() const
 {
     return m_kind.capacity() * sizeof(MotionKind) +

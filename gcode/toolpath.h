@@ -105,6 +105,10 @@ public:
     // A dwell (kind Dwell) or another event (kind Event) at the current position.
     void appendEvent(const Event &event, double feedMmPerMin, std::uint32_t line);
 
+    // Appends the entries of `from` from index `first` on, as they are (run from a line: the
+    // program's rest after an approach that ends where from.start(first) is).
+    void appendEntries(const Toolpath &from, std::size_t first);
+
     // Position after the last entry (origin() when empty).
     Point4 last() const { return empty() ? m_origin : end(size() - 1); }
     // Bytes held by the storage (capacity), for the memory benchmark.

@@ -159,6 +159,7 @@ void MainWindow::buildMenus()
     m_machineMenu->addSeparator();
     m_settingsAction = m_machineMenu->addAction(QString(), this, [this] { openSettings(); });
     m_unitConfigAction = m_machineMenu->addAction(QString(), this, [this] { openUnitConfig(); });
+    buildFromLineActions();
 
     m_viewMenu = menuBar()->addMenu(QString());
     for (auto *d : {m_statusDock, m_droDock, m_runDock, m_jogDock, m_outputsDock, m_programDock,
@@ -213,6 +214,8 @@ void MainWindow::retranslate()
     m_disconnectAction->setText(tr("&Disconnect"));
     m_settingsAction->setText(tr("&Settings…"));
     m_unitConfigAction->setText(tr("&Unit configuration (EEPROM)…"));
+    m_runFromLineAction->setText(tr("Run from &line…"));
+    m_wholeProgramAction->setText(tr("Run the &whole program"));
     m_viewMenu->setTitle(tr("&View"));
     m_resetLayoutAction->setText(tr("&Reset layout"));
     m_toolsMenu->setTitle(tr("&Tools"));
@@ -280,6 +283,7 @@ void MainWindow::openProgram(const QString &path)
 {
     // The renderer may only now know what it runs on (GL initialises on first show).
     m_program->setViewBuilder(sceneBuilder(m_view->preferredMaxSegments(), m_view->usesOpenGl()));
+    m_program->setStartLine(0); // a new program runs whole
     m_program->load(path);
 }
 
@@ -337,6 +341,7 @@ void MainWindow::connectProgram()
         addRecent(p.path);
         for (const auto &w : p.warnings)
             m_console->appendInfo(w.text);
+        onFromLineLoaded();
         if (!p.errors.empty()) {
             std::set<int> lines;
             for (const auto &e : p.errors)

@@ -95,6 +95,12 @@ public:
     void runProgram();
     // Re-interprets and re-plans the program and reports the outcome in words.
     void checkProgram();
+    // Run from a line (session/runfromline.h): the program is loaded again as the job from that
+    // line (the preview shows the approach); Run runs it. runWholeProgram() goes back (also
+    // after the job has ended). The listing's "Run from this line…" and Machine › Run from
+    // line… call it.
+    void runFromLine(int line);
+    void runWholeProgram();
     // Sets the work zero of an axis (-1 = all) at the current machine position.
     void setWorkZero(int axis);
     void selectWorkOffset(int index);
@@ -159,6 +165,9 @@ private:
     void updateRunPhase();
     bool jogKey(QKeyEvent *event, bool pressed);
     void installShortcuts();
+    void buildFromLineActions(); // Machine › Run from line…, Run the whole program
+    void askRunFromLine();
+    void onFromLineLoaded();
     void operatorKey(OperatorAction action);
 
     ToolpathView *m_view;
@@ -177,8 +186,8 @@ private:
         *m_consoleDock, *m_plotDock;
     QMenu *m_fileMenu, *m_recentMenu, *m_machineMenu, *m_viewMenu, *m_toolsMenu, *m_helpMenu;
     QAction *m_openAction, *m_quitAction, *m_connectAction, *m_disconnectAction, *m_settingsAction,
-        *m_unitConfigAction, *m_aboutAction, *m_shortcutsAction, *m_grinderAction = nullptr,
-                                                                 *m_resetLayoutAction;
+        *m_unitConfigAction, *m_runFromLineAction, *m_wholeProgramAction, *m_aboutAction,
+        *m_shortcutsAction, *m_grinderAction = nullptr, *m_resetLayoutAction;
     ProgramSession *m_program;
     driver::MachineController *m_controller = nullptr;
     HoldBanner *m_hold = nullptr;

@@ -127,6 +127,8 @@ void MainWindow::onJobFinished(bool ok)
             tr("Program finished in %1.").arg(RunPanel::formatDuration(elapsedS)), 15000);
         m_console->appendInfo(tr("Program finished."));
     }
+    if (m_program->startLine() != 0)
+        runWholeProgram(); // the job from a line is done (or dropped): the program is whole again
     updateRunPhase();
 }
 
@@ -167,6 +169,7 @@ void MainWindow::connectControls()
     // Operator controls.
     connect(m_run, &RunPanel::runRequested, this, &MainWindow::runProgram);
     connect(m_run, &RunPanel::checkRequested, this, &MainWindow::checkProgram);
+    connect(m_listing, &ProgramListing::runFromLineRequested, this, &MainWindow::runFromLine);
     using session::RunWorkflow;
     connect(m_run, &RunPanel::pauseRequested, m_workflow, &RunWorkflow::pause);
     connect(m_run, &RunPanel::resumeRequested, m_workflow, &RunWorkflow::resume);

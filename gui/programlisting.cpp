@@ -1,7 +1,9 @@
 #include "programlisting.h"
 
+#include <QContextMenuEvent>
 #include <QFontDatabase>
 #include <QKeyEvent>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QScrollBar>
@@ -131,10 +133,29 @@ void ProgramListing::paintEvent(QPaintEvent *)
     }
 }
 
+int ProgramListing::lineAt(int y) const
+{
+    const int line = verticalScrollBar()->value() + 1 + y / lineHeight();
+    return line >= 1 && line <= lineCount() ? line : 0;
+}
+
+void ProgramListing::contextMenuEvent(QContextMenuEvent *event)
+{
+    const int line = lineAt(event->pos().y()); // viewport coordinates, as the mouse's
+    if (line == 0)
+        return;
+    m_selected = line;
+    viewport()->update();
+    QMenu menu(this);
+    menu.addAction(tr("Run from this line (%1)…").arg(line), this,
+                   [this, line] { emit runFromLineRequested(line); });
+    menu.exec(event->globalPos());
+}
+
 void ProgramListing::mousePressEvent(QMouseEvent *event)
 {
-    const int line = verticalScrollBar()->value() + 1 + int(event->position().y()) / lineHeight();
-    if (line >= 1 && line <= lineCount()) {
+    const int line = lineAt(int(event->position().y()));
+    if (line != 0) {
         m_selected = line;
         viewport()->update();
         emit lineClicked(line);

@@ -32,15 +32,19 @@ public:
 
 signals:
     void lineClicked(int line);
+    // The context menu's "Run from this line…" on a 1-based line.
+    void runFromLineRequested(int line);
 
 protected:
     void paintEvent(QPaintEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
+    void contextMenuEvent(QContextMenuEvent *event) override;
 
 private:
     int lineHeight() const;
+    int lineAt(int y) const; // 1-based line at a viewport y, 0 = none
     int visibleLines() const;
     void updateScrollBars();
     void centreOn(int line);

@@ -22,6 +22,7 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
             options.workOffsetsMm[s][i] = req.offsets.systems[s][i] + req.offsets.g92[i];
     options.coordinateSystem = req.offsets.active;
     options.startMm = {req.startMm[0], req.startMm[1], req.startMm[2], req.startMm[3]};
+    options.startLine = req.startLine;
     if (req.progress) {
         options.progress = [&req](std::size_t done, std::size_t total) {
             req.progress(double(done) / double(std::max<std::size_t>(1, total)));
@@ -52,6 +53,7 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     out.toolpath = std::make_shared<gcode::Toolpath>(std::move(result.toolpath));
     out.linesRead = result.linesRead;
     out.errorsNotShown = result.errorsNotShown;
+    out.mark = std::move(result.mark);
     return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include "session/workoffsets.h"
 
+#include "gcode/linestate.h"
 #include "gcode/toolpath.h"
 #include "machine/machineconfig.h"
 #include "machine/planner.h"
@@ -39,7 +40,8 @@ struct InterpretRequest
     std::array<double, 4> startMm{}; // machine position the program starts from
     const std::atomic_bool *cancel = nullptr;
     std::function<void(double)> progress; // fraction 0..1 of this step
-    std::size_t maxErrors = 200; // errors kept (the window's list); the rest are counted
+    std::size_t maxErrors = 200;          // errors kept (the window's list); the rest are counted
+    std::uint32_t startLine = 0; // run from this line: its state in the outcome's mark (0: none)
 };
 
 struct InterpretOutcome
@@ -51,6 +53,7 @@ struct InterpretOutcome
     std::vector<ProgramMessage> warnings;
     std::uint64_t linesRead = 0;
     std::uint64_t errorsNotShown = 0; // beyond the interpreter's cap; errors' last line says so
+    gcode::LineMark mark;             // InterpretRequest::startLine's (session/runfromline.h)
 };
 
 InterpretOutcome interpretProgram(const InterpretRequest &request);

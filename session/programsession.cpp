@@ -54,6 +54,7 @@ struct LoadJob
     double feedOverride = 1.0;
     OffsetState offsets;
     std::array<double, 4> startMm{};
+    std::uint32_t startLine = 0;
 };
 
 // The toolpath's length and the entry of each source line.
@@ -88,6 +89,21 @@ void planLoaded(const LoadJob &job, LoadedProgram &result)
     result.planStats = plan.stats;
 }
 
+// Run from a line: the job (the line's state, the approach from the start position, the rest)
+// replaces the whole program's toolpath, or the refusal is the load's error at that line.
+void startFromLine(const LoadJob &job, const QString &fileName, InterpretOutcome &outcome,
+                   LoadedProgram &result)
+{
+    const gcode::Point4 from{job.startMm[0], job.startMm[1], job.startMm[2], job.startMm[3]};
+    FromLineOutcome f = runFromLine(*outcome.toolpath, outcome.mark, *job.profile, from, fileName);
+    if (!f.ok()) {
+        result.errors.push_back({int(job.startLine), 0, f.refusal});
+        return;
+    }
+    result.fromLine = f.from;
+    outcome.toolpath = std::move(f.toolpath);
+}
+
 // The worker thread's load, stage by stage: read, index the lines, interpret, view, plan.
 // False when cancelled (nothing to report); else `result` and `failure` are what the front end
 // gets.
@@ -118,10 +134,13 @@ bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
     req.startMm = job.startMm;
     req.cancel = cancelFlag;
     req.progress = fraction;
+    req.startLine = job.startLine;
     InterpretOutcome outcome = interpretProgram(req);
     result.errors = std::move(outcome.errors);
     if (cancelFlag->load() || !outcome.toolpath)
         return !cancelFlag->load();
+    if (job.startLine != 0 && result.errors.empty() && job.profile)
+        startFromLine(job, req.fileName, outcome, result);
     indexToolpath(*outcome.toolpath, result);
     if (job.buildView) {
         stage->store(3);
@@ -208,7 +227,8 @@ void ProgramSession::load(const QString &path)
                       .profile = m_profile,
                       .feedOverride = m_feedOverride,
                       .offsets = m_offsets,
-                      .startMm = m_startMm};
+                      .startMm = m_startMm,
+                      .startLine = m_startLine};
     emit loadStarted(path);
 
     m_thread = QThread::create([=, this] {

@@ -12,6 +12,7 @@
 #include "session/plannedspeed.h"
 #include "session/programplanner.h"
 #include "session/programtext.h"
+#include "session/runfromline.h"
 #include "session/workoffsets.h"
 
 #include "gcode/toolpath.h"
@@ -66,6 +67,9 @@ struct LoadedProgram
     // planner's estimate; empty when not planned. remainingS() reads it for the ETA.
     std::vector<float> lineEndS;
     double remainingS(std::uint32_t line) const;
+    // Run from a line (ProgramSession::setStartLine): the state taken there and the approach;
+    // toolpath and unitProgram are then that job (the approach, then the program's rest).
+    std::optional<FromLine> fromLine;
 };
 
 class ProgramSession : public QObject
@@ -84,6 +88,10 @@ public:
     // Machine position the next interpretation starts from (mm X Y Z A).
     void setStartPosition(const std::array<double, 4> &mm) { m_startMm = mm; }
     const OffsetState &workOffsets() const { return m_offsets; }
+    // Run from this line (session/runfromline.h) from the next load on; 0 = the whole program.
+    // A line that cannot be a start is the load's error (with the line to choose instead).
+    void setStartLine(std::uint32_t line) { m_startLine = line; }
+    std::uint32_t startLine() const { return m_startLine; }
 
     // Loads (replacing any load in progress). loaded() or loadFailed() follows.
     void load(const QString &path);
@@ -109,6 +117,7 @@ private:
     double m_feedOverride = 1.0;
     OffsetState m_offsets;
     std::array<double, 4> m_startMm{};
+    std::uint32_t m_startLine = 0;
     LoadedProgram m_program;
     QThread *m_thread = nullptr;
     std::shared_ptr<std::atomic_bool> m_cancel;

@@ -242,12 +242,6 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>naskriptované zastavení na řádku %1 selhalo (%2): %3</translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops]
-</source>
-        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops]
-</translation>
-    </message>
-    <message>
         <source>%1%2. Press Enter to continue.
 </source>
         <translation>%1%2. Pokračujte klávesou Enter.
@@ -258,6 +252,61 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </source>
         <translation>Na standardním vstupu žádná odpověď: úloha končí na zastavení (pro běh bez obsluhy použijte --continue-at-stops).
 </translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
+</source>
+        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
+</translation>
+    </message>
+    <message>
+        <source>Run from line %1. %2
+</source>
+        <translation>Spuštění od řádku %1. %2
+</translation>
+    </message>
+</context>
+<context>
+    <name>RunFromLine</name>
+    <message>
+        <source>line %1 is never reached: the program ends on line %2. Choose a line up to %2.</source>
+        <translation>program na řádek %1 nikdy nedojde: končí na řádku %2. Zvolte řádek nejvýše %2.</translation>
+    </message>
+    <message>
+        <source>line %1 is inside the subroutine o%2 (defined on line %3), which runs only when it is called. Choose the line that calls it, or a line outside the subroutine.</source>
+        <translation>řádek %1 leží v podprogramu o%2 (definovaném na řádku %3), který se provede jen při volání. Zvolte řádek, který jej volá, nebo řádek mimo podprogram.</translation>
+    </message>
+    <message>
+        <source>line %1 runs only inside the subroutine o%2, called on line %3. Choose line %3, or a line outside the subroutine.</source>
+        <translation>řádek %1 se provede jen uvnitř podprogramu o%2 volaného na řádku %3. Zvolte řádek %3 nebo řádek mimo podprogram.</translation>
+    </message>
+    <message>
+        <source>line %1 is inside the loop o%2 that opens on line %3, so the program runs it more than once. Choose line %3, or a line after the loop.</source>
+        <translation>řádek %1 leží ve smyčce o%2, která začíná na řádku %3, takže jej program provede víckrát. Zvolte řádek %3 nebo řádek za smyčkou.</translation>
+    </message>
+    <message>
+        <source>line %1 is never run: the program skips it at o%2 on line %3 (a branch or a loop it does not take). Choose a line the program runs.</source>
+        <translation>řádek %1 se nikdy neprovede: program jej přeskočí u o%2 na řádku %3 (větev nebo smyčka, do které nevstoupí). Zvolte řádek, který program provádí.</translation>
+    </message>
+    <message>
+        <source>%1:%2: cannot run from this line: %3</source>
+        <translation>%1:%2: od tohoto řádku nelze spustit: %3</translation>
+    </message>
+    <message>
+        <source>no feed is in force at line %1 (no F word yet, or G93 inverse time). Choose a line after an F word in G94.</source>
+        <translation>na řádku %1 neplatí žádný posuv (ještě nebylo slovo F, nebo platí G93, inverzní čas). Zvolte řádek za slovem F v režimu G94.</translation>
+    </message>
+    <message>
+        <source>tool %1 (length %2 mm)</source>
+        <translation>nástroj %1 (délka %2 mm)</translation>
+    </message>
+    <message>
+        <source>no tool loaded by the program</source>
+        <translation>program nezaložil žádný nástroj</translation>
+    </message>
+    <message>
+        <source>Line %1: %2; the approach crosses at Z %3 (machine) and comes down at the feed to X %4 Y %5 Z %6 (machine).</source>
+        <translation>Řádek %1: %2; najetí přejíždí ve výšce Z %3 (strojně) a posuvem sjede na X %4 Y %5 Z %6 (strojně).</translation>
     </message>
 </context>
 <context>
@@ -368,21 +417,23 @@ příkazy:
 </translation>
     </message>
     <message>
+        <source>frezka-cli: unknown command &apos;%1&apos;
+</source>
+        <translation>frezka-cli: neznámý příkaz „%1“
+</translation>
+    </message>
+    <message>
         <source>
 work offsets: --offset G54:X,Y,Z sets where the program&apos;s zero is on the machine (machine mm; G54 .. G59.3, repeatable); --work-zero X,Y,Z is --offset G54:X,Y,Z.
 operator stops: at M0, M1 and M6 frezka-cli run waits for Enter; --continue-at-stops runs on without an operator.
+run from a line: frezka-cli run --from-line N starts the job at line N with the program&apos;s state there (tool, spindle, coolant, feed, modes, offsets), after a safe approach (spindle on, Z up to the safe height, X/Y across, Z down at the feed).
 
 </source>
         <translation>
 pracovní posunutí: --offset G54:X,Y,Z určí, kde na stroji leží nula programu (strojní mm; G54 .. G59.3, lze opakovat); --work-zero X,Y,Z je totéž co --offset G54:X,Y,Z.
 zastavení pro obsluhu: na M0, M1 a M6 čeká frezka-cli run na Enter; --continue-at-stops pokračuje bez obsluhy.
+spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N se stavem programu na tomto řádku (nástroj, vřeteno, chlazení, posuv, režimy, posunutí) po bezpečném najetí (vřeteno zapnuto, Z nahoru do bezpečné výšky, X/Y na místo, Z dolů posuvem).
 
-</translation>
-    </message>
-    <message>
-        <source>frezka-cli: unknown command &apos;%1&apos;
-</source>
-        <translation>frezka-cli: neznámý příkaz „%1“
 </translation>
     </message>
 </context>
@@ -3226,6 +3277,38 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>&amp;Keyboard shortcuts</source>
         <translation>&amp;Klávesové zkratky</translation>
     </message>
+    <message>
+        <source>Run from &amp;line…</source>
+        <translation>Spustit od &amp;řádku…</translation>
+    </message>
+    <message>
+        <source>Run the &amp;whole program</source>
+        <translation>Spustit &amp;celý program</translation>
+    </message>
+    <message>
+        <source>Open a program first, then choose the line to run from.</source>
+        <translation>Nejprve otevřete program, pak zvolte řádek, od kterého jej spustit.</translation>
+    </message>
+    <message>
+        <source>Line %1 is not in the program (lines 1 to %2): choose one of its lines.</source>
+        <translation>Řádek %1 v programu není (má řádky 1 až %2): zvolte některý z nich.</translation>
+    </message>
+    <message>
+        <source>The machine is busy (%1): run from a line once it is ready.</source>
+        <translation>Stroj je zaneprázdněn (%1): spusťte od řádku, až bude připraven.</translation>
+    </message>
+    <message>
+        <source>Run from line</source>
+        <translation>Spustit od řádku</translation>
+    </message>
+    <message>
+        <source>Start the program at line (1 to %1):</source>
+        <translation>Spustit program od řádku (1 až %1):</translation>
+    </message>
+    <message>
+        <source>Run from line %1 is ready: the view shows the approach. Run starts it; Machine › Run the whole program goes back.</source>
+        <translation>Spuštění od řádku %1 je připraveno: náhled ukazuje najetí. Spustit je zahájí; Stroj › Spustit celý program vrátí celý program.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3806,6 +3889,13 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Cannot save the profile %1: %2</source>
         <translation>Profil %1 nelze uložit: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProgramListing</name>
+    <message>
+        <source>Run from this line (%1)…</source>
+        <translation>Spustit od tohoto řádku (%1)…</translation>
     </message>
 </context>
 <context>

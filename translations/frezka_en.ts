@@ -242,12 +242,6 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>the scripted hold at line %1 failed %2: %3</translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops]
-</source>
-        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops]
-</translation>
-    </message>
-    <message>
         <source>%1%2. Press Enter to continue.
 </source>
         <translation>%1%2. Press Enter to continue.
@@ -258,6 +252,61 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </source>
         <translation>No answer on standard input: the job ends at the stop (use --continue-at-stops for an unattended run).
 </translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
+</source>
+        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
+</translation>
+    </message>
+    <message>
+        <source>Run from line %1. %2
+</source>
+        <translation>Run from line %1. %2
+</translation>
+    </message>
+</context>
+<context>
+    <name>RunFromLine</name>
+    <message>
+        <source>line %1 is never reached: the program ends on line %2. Choose a line up to %2.</source>
+        <translation>line %1 is never reached: the program ends on line %2. Choose a line up to %2.</translation>
+    </message>
+    <message>
+        <source>line %1 is inside the subroutine o%2 (defined on line %3), which runs only when it is called. Choose the line that calls it, or a line outside the subroutine.</source>
+        <translation>line %1 is inside the subroutine o%2 (defined on line %3), which runs only when it is called. Choose the line that calls it, or a line outside the subroutine.</translation>
+    </message>
+    <message>
+        <source>line %1 runs only inside the subroutine o%2, called on line %3. Choose line %3, or a line outside the subroutine.</source>
+        <translation>line %1 runs only inside the subroutine o%2, called on line %3. Choose line %3, or a line outside the subroutine.</translation>
+    </message>
+    <message>
+        <source>line %1 is inside the loop o%2 that opens on line %3, so the program runs it more than once. Choose line %3, or a line after the loop.</source>
+        <translation>line %1 is inside the loop o%2 that opens on line %3, so the program runs it more than once. Choose line %3, or a line after the loop.</translation>
+    </message>
+    <message>
+        <source>line %1 is never run: the program skips it at o%2 on line %3 (a branch or a loop it does not take). Choose a line the program runs.</source>
+        <translation>line %1 is never run: the program skips it at o%2 on line %3 (a branch or a loop it does not take). Choose a line the program runs.</translation>
+    </message>
+    <message>
+        <source>%1:%2: cannot run from this line: %3</source>
+        <translation>%1:%2: cannot run from this line: %3</translation>
+    </message>
+    <message>
+        <source>no feed is in force at line %1 (no F word yet, or G93 inverse time). Choose a line after an F word in G94.</source>
+        <translation>no feed is in force at line %1 (no F word yet, or G93 inverse time). Choose a line after an F word in G94.</translation>
+    </message>
+    <message>
+        <source>tool %1 (length %2 mm)</source>
+        <translation>tool %1 (length %2 mm)</translation>
+    </message>
+    <message>
+        <source>no tool loaded by the program</source>
+        <translation>no tool loaded by the program</translation>
+    </message>
+    <message>
+        <source>Line %1: %2; the approach crosses at Z %3 (machine) and comes down at the feed to X %4 Y %5 Z %6 (machine).</source>
+        <translation>Line %1: %2; the approach crosses at Z %3 (machine) and comes down at the feed to X %4 Y %5 Z %6 (machine).</translation>
     </message>
 </context>
 <context>
@@ -368,21 +417,23 @@ commands:
 </translation>
     </message>
     <message>
+        <source>frezka-cli: unknown command &apos;%1&apos;
+</source>
+        <translation>frezka-cli: unknown command &apos;%1&apos;
+</translation>
+    </message>
+    <message>
         <source>
 work offsets: --offset G54:X,Y,Z sets where the program&apos;s zero is on the machine (machine mm; G54 .. G59.3, repeatable); --work-zero X,Y,Z is --offset G54:X,Y,Z.
 operator stops: at M0, M1 and M6 frezka-cli run waits for Enter; --continue-at-stops runs on without an operator.
+run from a line: frezka-cli run --from-line N starts the job at line N with the program&apos;s state there (tool, spindle, coolant, feed, modes, offsets), after a safe approach (spindle on, Z up to the safe height, X/Y across, Z down at the feed).
 
 </source>
         <translation>
 work offsets: --offset G54:X,Y,Z sets where the program&apos;s zero is on the machine (machine mm; G54 .. G59.3, repeatable); --work-zero X,Y,Z is --offset G54:X,Y,Z.
 operator stops: at M0, M1 and M6 frezka-cli run waits for Enter; --continue-at-stops runs on without an operator.
+run from a line: frezka-cli run --from-line N starts the job at line N with the program&apos;s state there (tool, spindle, coolant, feed, modes, offsets), after a safe approach (spindle on, Z up to the safe height, X/Y across, Z down at the feed).
 
-</translation>
-    </message>
-    <message>
-        <source>frezka-cli: unknown command &apos;%1&apos;
-</source>
-        <translation>frezka-cli: unknown command &apos;%1&apos;
 </translation>
     </message>
 </context>
@@ -3219,6 +3270,38 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>&amp;Keyboard shortcuts</source>
         <translation>&amp;Keyboard shortcuts</translation>
     </message>
+    <message>
+        <source>Run from &amp;line…</source>
+        <translation>Run from &amp;line…</translation>
+    </message>
+    <message>
+        <source>Run the &amp;whole program</source>
+        <translation>Run the &amp;whole program</translation>
+    </message>
+    <message>
+        <source>Open a program first, then choose the line to run from.</source>
+        <translation>Open a program first, then choose the line to run from.</translation>
+    </message>
+    <message>
+        <source>Line %1 is not in the program (lines 1 to %2): choose one of its lines.</source>
+        <translation>Line %1 is not in the program (lines 1 to %2): choose one of its lines.</translation>
+    </message>
+    <message>
+        <source>The machine is busy (%1): run from a line once it is ready.</source>
+        <translation>The machine is busy (%1): run from a line once it is ready.</translation>
+    </message>
+    <message>
+        <source>Run from line</source>
+        <translation>Run from line</translation>
+    </message>
+    <message>
+        <source>Start the program at line (1 to %1):</source>
+        <translation>Start the program at line (1 to %1):</translation>
+    </message>
+    <message>
+        <source>Run from line %1 is ready: the view shows the approach. Run starts it; Machine › Run the whole program goes back.</source>
+        <translation>Run from line %1 is ready: the view shows the approach. Run starts it; Machine › Run the whole program goes back.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3798,6 +3881,13 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Cannot save the profile %1: %2</source>
         <translation>Cannot save the profile %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProgramListing</name>
+    <message>
+        <source>Run from this line (%1)…</source>
+        <translation>Run from this line (%1)…</translation>
     </message>
 </context>
 <context>

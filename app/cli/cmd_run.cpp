@@ -2,7 +2,7 @@
 //                     [--port PATH|sim] [--baud N] [--latency-ms N]
 //                     [--faults RATE --seed N] [--clock virtual|real] [--home]
 //                     [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
-//                     [--continue-at-stops]
+//                     [--continue-at-stops] [--from-line N]
 //
 // Interprets FILE from its work offsets (programoptions.h) and plans it for the machine
 // profile, then the session's run workflow (the one
@@ -27,14 +27,24 @@
 // lowers it and continues (without --lift: waits and continues). The report then carries the
 // emulator's safety counters (axis_over_max, cut_without_spindle, spindle_on_while_held) with
 // the program's highest feed level as the top of the work (docs/emulator.md).
+//
+// --from-line N runs the program from line N (session/runfromline.h): the program's state at
+// the line (printed on stderr), the spindle and coolant as there with the spin-up waited, the
+// safe approach from the machine's zero, then the program's rest; a line that cannot be a start
+// (inside a loop or a subroutine, never run, no feed in force) is refused with the line to
+// choose (exit 1). Such a run prints one more JSON line before the report: the line, the safe
+// height and the start point in steps, and where the emulator's counters first went below the
+// safe height (unit_first_below_safe_z: straight above the start when the approach came first).
 #include "cli.h"
 
 #include "programoptions.h"
 #include "runjob.h"
 
 #include "machine/planner.h"
+#include "machine/steps.h"
 #include "session/plannedspeed.h"
 #include "session/programplanner.h"
+#include "session/runfromline.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -56,7 +66,7 @@ int usage()
     cli::err(RunCli::tr("usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] "
                         "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] "
                         "[--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] "
-                        "[--continue-at-stops]\n")
+                        "[--continue-at-stops] [--from-line N]\n")
                  .arg(cli::programOptionsUsage()));
     return 2;
 }
@@ -102,6 +112,9 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
             a.lift = true;
         } else if (k == QLatin1String("--continue-at-stops")) {
             a.continueAtStops = true;
+        } else if (k == QLatin1String("--from-line") && hasValue) {
+            a.fromLine = args[++i].toInt(&ok);
+            ok = ok && a.fromLine >= 1;
         } else if (a.file.isEmpty() && !k.startsWith(QLatin1String("--"))) {
             a.file = k;
         } else {
@@ -129,8 +142,9 @@ struct Prepared
     machine::MachineConfig config;
     machine::UnitProgram program;
     machine::PlanStats stats;
-    std::optional<double> workTopMm; // the highest Z a feed move reaches: the top of the work
-    std::vector<float> lineEndS;     // planned seconds to the end of each line
+    std::optional<double> workTopMm;       // the highest Z a feed move reaches: the top of the work
+    std::vector<float> lineEndS;           // planned seconds to the end of each line
+    std::optional<session::FromLine> from; // run from a line: the state and the approach
 };
 
 std::optional<double> workTop(const gcode::Toolpath &path)
@@ -152,10 +166,27 @@ std::optional<Prepared> prepare(const RunArgs &a)
     // The in-process emulator's link has the latency given here: the plan keeps its pace.
     if (a.port == QLatin1String("sim"))
         config->link.latencyMs = a.latencyMs;
-    const auto g = cli::interpretFile(a.file, a.program);
+    const auto g = cli::interpretFile(a.file, a.program, nullptr, std::uint32_t(a.fromLine));
     if (!g)
         return std::nullopt;
-    session::PlanOutcome p = session::planProgram(*g->toolpath, *config, a.file);
+    std::shared_ptr<const gcode::Toolpath> job = g->toolpath;
+    std::optional<session::FromLine> approach;
+    if (a.fromLine > 0) {
+        // The machine stands at its zero when the run starts (the plan's start, as for a whole
+        // program): the approach starts there.
+        const session::FromLineOutcome from =
+            session::runFromLine(*g->toolpath, g->mark, *config, {}, a.file);
+        if (!from.ok()) {
+            cli::err(from.refusal + QLatin1Char('\n'));
+            return std::nullopt;
+        }
+        cli::err(RunCli::tr("Run from line %1. %2\n")
+                     .arg(a.fromLine)
+                     .arg(session::fromLineSummary(from.from)));
+        job = from.toolpath;
+        approach = from.from;
+    }
+    session::PlanOutcome p = session::planProgram(*job, *config, a.file);
     for (const session::ProgramMessage &w : p.warnings)
         cli::err(RunCli::tr("warning: %1\n").arg(w.text));
     if (!p.ok()) {
@@ -165,8 +196,9 @@ std::optional<Prepared> prepare(const RunArgs &a)
     }
     std::vector<float> lineEndS =
         session::plannedLineTimes(*p.program, p.stats.speedModeVk, p.stats.estimatedS);
-    return Prepared{*config, std::move(*p.program), p.stats, workTop(*g->toolpath),
-                    std::move(lineEndS)};
+    return Prepared{
+        *config, std::move(*p.program), p.stats, workTop(*g->toolpath), std::move(lineEndS),
+        approach};
 }
 
 double bytesPerVector(const machine::UnitProgram &program, bool checksums)
@@ -244,6 +276,25 @@ void printReport(const RunOutcome &o, const machine::UnitProgram &program,
              QLatin1Char('\n'));
 }
 
+// Run from a line: one more JSON line before the report: the line, the approach's safe height and
+// start point (steps) and where the emulator's counters first went below that height (null: a real
+// port).
+void printFromLine(const RunOutcome &o, const session::FromLine &from,
+                   const machine::MachineConfig &config, int axes)
+{
+    const machine::Steps4 start = machine::stepsOf(from.state.machineMm, config);
+    QJsonObject j;
+    j[QStringLiteral("from_line")] = static_cast<qint64>(from.line);
+    j[QStringLiteral("safe_z_steps")] =
+        static_cast<qint64>(machine::stepsOf(from.safeZMm, config.axes[2].stepsPerMm));
+    j[QStringLiteral("start_steps")] = steps(start, axes);
+    j[QStringLiteral("unit_first_below_safe_z")] = o.firstBelowSteps
+                                                       ? QJsonValue(steps(*o.firstBelowSteps, axes))
+                                                       : QJsonValue(QJsonValue::Null);
+    cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
+             QLatin1Char('\n'));
+}
+
 int runRun(const QStringList &args)
 {
     const auto a = parseArgs(args);
@@ -252,10 +303,13 @@ int runRun(const QStringList &args)
     auto prepared = prepare(*a);
     if (!prepared)
         return 1;
-    const auto &[config, program, stats, top, lineEndS] = *prepared;
+    const auto &[config, program, stats, top, lineEndS, from] = *prepared;
     const session::RemainingTime remaining(lineEndS, stats.estimatedS);
-    const RunOutcome o = a->virtualClock ? cli::runVirtual(*a, config, program, top, remaining)
-                                         : cli::runReal(*a, config, program, remaining);
+    RunArgs run = *a;
+    if (from && run.virtualClock)
+        run.watchBelowZMm = from->safeZMm;
+    const RunOutcome o = run.virtualClock ? cli::runVirtual(run, config, program, top, remaining)
+                                          : cli::runReal(run, config, program, remaining);
     const int baud = a->baud > 0 ? a->baud : config.link.baud;
     if (!o.ok) {
         cli::err(
@@ -263,6 +317,8 @@ int runRun(const QStringList &args)
                 .arg(a->file, o.error.isEmpty() ? RunCli::tr("the job did not finish") : o.error));
         return 1;
     }
+    if (from) // before the report, which stays the last line
+        printFromLine(o, *from, config, program.axisCount);
     printReport(o, program, stats, baud);
     const machine::Steps4 expected =
         program.commands.empty() ? program.startSteps : program.commands.back().endSteps;
@@ -283,7 +339,7 @@ FREZKA_CLI_COMMAND(
     "run FILE [--machine PROFILE] [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]] "
     "[--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] "
     "[--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] "
-    "[--hold-at-line N [--lift]] [--continue-at-stops]",
+    "[--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]",
     QT_TRANSLATE_NOOP(
         "frezka::cli",
         "Run a G-code job on a GVE unit or the emulator, with progress and a JSON report"),

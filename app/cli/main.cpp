@@ -44,7 +44,10 @@ QString usageText()
         "machine (machine mm; G54 .. G59.3, repeatable); --work-zero X,Y,Z is --offset "
         "G54:X,Y,Z.\n"
         "operator stops: at M0, M1 and M6 frezka-cli run waits for Enter; "
-        "--continue-at-stops runs on without an operator.\n\n");
+        "--continue-at-stops runs on without an operator.\n"
+        "run from a line: frezka-cli run --from-line N starts the job at line N with the "
+        "program's state there (tool, spindle, coolant, feed, modes, offsets), after a safe "
+        "approach (spindle on, Z up to the safe height, X/Y across, Z down at the feed).\n\n");
     return text + exitCodes();
 }
 

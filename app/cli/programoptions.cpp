@@ -95,8 +95,9 @@ std::optional<machine::MachineConfig> loadProfile(const QString &path)
     return *loaded.config;
 }
 
-std::optional<session::InterpretOutcome>
-interpretFile(const QString &file, const ProgramOptions &options, int *errorCount)
+std::optional<session::InterpretOutcome> interpretFile(const QString &file,
+                                                       const ProgramOptions &options,
+                                                       int *errorCount, std::uint32_t startLine)
 {
     QFile f(file);
     if (!f.open(QIODevice::ReadOnly)) {
@@ -110,7 +111,9 @@ interpretFile(const QString &file, const ProgramOptions &options, int *errorCoun
     request.text = f.readAll();
     request.fileName = file;
     request.offsets = options.offsets;
-    request.maxErrors = gcode::Options{}.maxErrors; // a terminal lists as many as the interpreter keeps
+    request.startLine = startLine;
+    request.maxErrors =
+        gcode::Options{}.maxErrors; // a terminal lists as many as the interpreter keeps
     session::InterpretOutcome outcome = session::interpretProgram(request);
     for (const session::ProgramMessage &w : outcome.warnings)
         err(w.text + QLatin1Char('\n'));

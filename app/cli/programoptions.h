@@ -39,8 +39,11 @@ bool takeProgramOption(const QStringList &args, int &i, ProgramOptions *options,
 // The profile of --machine (its notes and errors on stderr), or the shipped GVE64 one.
 std::optional<machine::MachineConfig> loadProfile(const QString &path);
 // The file read and interpreted from the offsets at the machine's zero; every error on stderr
-// as FILE:LINE:COL: message; nullopt on any (*errorCount: how many).
-std::optional<session::InterpretOutcome>
-interpretFile(const QString &file, const ProgramOptions &options, int *errorCount = nullptr);
+// as FILE:LINE:COL: message; nullopt on any (*errorCount: how many). startLine: the state where
+// that line begins is in the outcome's mark (run from a line), 0 = none.
+std::optional<session::InterpretOutcome> interpretFile(const QString &file,
+                                                       const ProgramOptions &options,
+                                                       int *errorCount = nullptr,
+                                                       std::uint32_t startLine = 0);
 
 } // namespace frezka::cli

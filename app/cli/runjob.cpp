@@ -207,6 +207,23 @@ driver::ConnectionSettings connectionSettings(const RunArgs &a, int baud)
     return settings;
 }
 
+// Run from a line: the first of the emulator's traced positions below the approach's safe
+// height (the trace is read and dropped as the job runs, so it never grows).
+void watchBelow(const RunArgs &a, const machine::MachineConfig &config, emulator::Unit &unit,
+                RunOutcome &out)
+{
+    if (!a.watchBelowZMm)
+        return;
+    const std::int64_t below = machine::stepsOf(*a.watchBelowZMm, config.axes[2].stepsPerMm);
+    for (const emulator::TracePoint &p : unit.trace()) {
+        if (out.firstBelowSteps || p.position[2] >= below)
+            continue;
+        out.firstBelowSteps =
+            std::array<std::int64_t, 4>{p.position[0], p.position[1], p.position[2], p.position[3]};
+    }
+    unit.clearTrace();
+}
+
 } // namespace
 
 RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
@@ -228,6 +245,7 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
         unit.machine.hasWorkSurface = true;
         unit.machine.workSurfaceZSteps = machine::stepsOf(*workTopMm, config.axes[2].stepsPerMm);
     }
+    unit.trace = a.watchBelowZMm.has_value();
     session::SimLink link(config, unit, wire, options);
     session::RunWorkflow workflow(link);
     workflow.setProfile(config);
@@ -257,6 +275,7 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     }
     while (!workflow.hasEnded()) {
         link.runFor(0.25);
+        watchBelow(a, config, link.port().unit(), out);
         if (link.liveState().jobActive)
             progress.show(link.liveState(), link.now());
         if (link.liveState().mode == driver::MachineMode::Connecting && link.now() > 120) {

@@ -44,6 +44,10 @@ struct RunArgs
     int holdAtLine = 0;   // 0 = no scripted hold
     bool lift = false;
     bool continueAtStops = false; // M0 / M1 / M6 continue at once (else: wait for Enter)
+    int fromLine = 0;             // run from this line (session/runfromline.h), 0 = the whole
+    // Run from a line (virtual clock): the approach's safe height (machine mm); the outcome says
+    // where the emulator's counters first went below it.
+    std::optional<double> watchBelowZMm;
 };
 
 // What a run came to: the driver's job report and the unit's end state (emulator: its counters).
@@ -56,6 +60,7 @@ struct RunOutcome
     std::optional<bool> spindleOnAtEnd; // the emulator's spindle when the job ended
     std::optional<std::array<std::int64_t, 4>> unitSteps; // the emulator's own counters at the end
     int programStops = 0;                                 // M0 / M1 / M6 the run continued after
+    std::optional<std::array<std::int64_t, 4>> firstBelowSteps; // RunArgs::watchBelowZMm's
     QString error;
 };
 
