@@ -276,12 +276,14 @@ void MainWindow::disconnectFromUnit()
 
 void MainWindow::onState(const driver::MachineState &state)
 {
-    m_dro->setPositions(state.positionMm, m_offsets->workPosition(state.positionMm));
+    // Between the polls of a running job: the driver's model of the unit (MachineState::live).
+    const std::array<double, 4> &shown = state.shownMm();
+    m_dro->setPositions(shown, m_offsets->workPosition(shown));
+    m_dro->setModelled(state.live.modelled);
     const std::array<bool, 4> homed{state.axisHomed(0), state.axisHomed(1), state.axisHomed(2),
                                     state.axisHomed(3)};
     m_dro->setHomed(homed);
-    m_view->model()->setToolPosition(QVector3D(
-        float(state.positionMm[0]), float(state.positionMm[1]), float(state.positionMm[2])));
+    m_view->model()->setToolPosition(QVector3D(float(shown[0]), float(shown[1]), float(shown[2])));
     // The driver decodes the ports (MachineState::inputHigh, outputIsOn, outputOn).
     m_io->setIo([&state](int n) { return state.inputHigh(n); },
                 [&state](int n) { return state.outputIsOn(n); }, state.run, state.inta);

@@ -2696,6 +2696,14 @@ zastavení pro obsluhu: na M0, M1 a M6 čeká frezka-cli run na Enter; --continu
         <source>Offset</source>
         <translation>Posunutí</translation>
     </message>
+    <message>
+        <source>≈ modelled between position reads</source>
+        <translation>≈ modelováno mezi čteními polohy</translation>
+    </message>
+    <message>
+        <source>While the serial line is busy with a dense job the unit&apos;s counters are read only now and then; in between, the figures follow the driver&apos;s model of the unit along the plan, never ahead of what the unit was sent, and each read corrects them.</source>
+        <translation>Když je sériová linka vytížena hustým programem, čítače jednotky se čtou jen občas; mezi čteními údaje sledují model jednotky v ovladači podél plánu, nikdy dál, než kolik bylo jednotce odesláno, a každé čtení je opraví.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::GrinderWindow</name>

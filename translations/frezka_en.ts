@@ -2693,6 +2693,14 @@ operator stops: at M0, M1 and M6 frezka-cli run waits for Enter; --continue-at-s
         <source>Offset</source>
         <translation>Offset</translation>
     </message>
+    <message>
+        <source>≈ modelled between position reads</source>
+        <translation>≈ modelled between position reads</translation>
+    </message>
+    <message>
+        <source>While the serial line is busy with a dense job the unit&apos;s counters are read only now and then; in between, the figures follow the driver&apos;s model of the unit along the plan, never ahead of what the unit was sent, and each read corrects them.</source>
+        <translation>While the serial line is busy with a dense job the unit&apos;s counters are read only now and then; in between, the figures follow the driver&apos;s model of the unit along the plan, never ahead of what the unit was sent, and each read corrects them.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::GrinderWindow</name>

@@ -103,6 +103,20 @@ struct MachineError
     friend bool operator==(const MachineError &, const MachineError &) = default;
 };
 
+// The position the front ends show: the polled counters, or, between the polls of a running
+// job, the driver's model of the unit along the plan (LiveModel, issue 16 item 3). Only for
+// showing: the path guard, the tracker and the ETA read the polled counters alone.
+struct LivePosition
+{
+    bool modelled = false; // false: the polled counters
+    std::array<std::int64_t, 4> steps{};
+    std::array<double, 4> mm{};
+    std::uint32_t sourceLine = 0; // the G-code line of the modelled command (0: none)
+    std::int64_t command = -1;    // the program command modelled: always < commandsAcked
+    double atS = 0;               // the driver's time of the figure
+    friend bool operator==(const LivePosition &, const LivePosition &) = default;
+};
+
 struct MachineState
 {
     MachineMode mode = MachineMode::Disconnected;
@@ -125,6 +139,7 @@ struct MachineState
     // position (instantaneous counters, polled)
     std::array<std::int64_t, 4> positionSteps{};
     std::array<double, 4> positionMm{};
+    LivePosition live;          // what to show: these counters, or the model's between polls
     bool homed = false;         // every axis the profile homes has been homed
     std::uint8_t homedAxes = 0; // bit a: axis a (X=0 .. A=3) homed since connecting
 
@@ -187,6 +202,8 @@ struct MachineState
     bool inputHigh(int n) const { return n >= 0 && n < 16 && ((inputLevels() >> n) & 1) != 0; }
     // Whether output OUTn (n = 0..3) is on.
     bool outputIsOn(int n) const { return n >= 0 && n < 4 && ((outputsOn() >> n) & 1) != 0; }
+    // The position to show, mm: the model's between polls of a running job, else the counters'.
+    const std::array<double, 4> &shownMm() const { return live.modelled ? live.mm : positionMm; }
     // Whether axis a (X = 0 .. A = 3) has been homed since connecting.
     bool axisHomed(int axis) const
     {
