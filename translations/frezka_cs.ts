@@ -1484,6 +1484,22 @@ zastavení pro obsluhu: na M0, M1 a M6 čeká frezka-cli run na Enter; --continu
         <source>spindle (per mille)</source>
         <translation>vřeteno (promile)</translation>
     </message>
+    <message>
+        <source>Spindle override %1 % is outside %2 … %3 %</source>
+        <translation>Korekce otáček vřetena %1 % je mimo rozsah %2 … %3 %</translation>
+    </message>
+    <message>
+        <source>Choose a spindle override within that range.</source>
+        <translation>Zvolte korekci otáček vřetena v tomto rozsahu.</translation>
+    </message>
+    <message>
+        <source>This unit switches its spindle with a relay: its speed cannot be overridden</source>
+        <translation>Tato jednotka spíná vřeteno relé: jeho otáčky nelze korigovat</translation>
+    </message>
+    <message>
+        <source>Set the speed on the spindle&apos;s drive, or use a unit with a spindle output at address 7 (GVE64, GVE114).</source>
+        <translation>Nastavte otáčky na měniči vřetena, nebo použijte jednotku s výstupem pro vřeteno na adrese 7 (GVE64, GVE114).</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>

@@ -1484,6 +1484,22 @@ operator stops: at M0, M1 and M6 frezka-cli run waits for Enter; --continue-at-s
         <source>spindle (per mille)</source>
         <translation>spindle (per mille)</translation>
     </message>
+    <message>
+        <source>Spindle override %1 % is outside %2 … %3 %</source>
+        <translation>Spindle override %1 % is outside %2 … %3 %</translation>
+    </message>
+    <message>
+        <source>Choose a spindle override within that range.</source>
+        <translation>Choose a spindle override within that range.</translation>
+    </message>
+    <message>
+        <source>This unit switches its spindle with a relay: its speed cannot be overridden</source>
+        <translation>This unit switches its spindle with a relay: its speed cannot be overridden</translation>
+    </message>
+    <message>
+        <source>Set the speed on the spindle&apos;s drive, or use a unit with a spindle output at address 7 (GVE64, GVE114).</source>
+        <translation>Set the speed on the spindle&apos;s drive, or use a unit with a spindle output at address 7 (GVE64, GVE114).</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>

@@ -389,6 +389,9 @@ MachineCore::Result MachineCore::execute(MachineCommand command, double now)
             [&](op::SetSpindleRpm &c) { return accepted(m_controls.setSpindleRpm(c.rpm), now); },
             [&](op::SetOutput &c) { return accepted(m_controls.setOutput(c.output, c.on), now); },
             [&](op::SetOverride &c) { return accepted(m_controls.setOverride(c.percent), now); },
+            [&](op::SetSpindleOverride &c) {
+                return accepted(m_controls.setSpindleOverride(c.percent), now);
+            },
             [&](op::OverrideStep &c) { return accepted(m_controls.overrideStep(c.up), now); },
             [&](op::SendRaw &c) { return accepted(m_controls.sendRaw(c.text), now); },
             [&](op::WriteEeprom &) { return accepted(m_eeprom.write(), now); },

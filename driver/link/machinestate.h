@@ -21,6 +21,13 @@ namespace frezka::driver {
 // The feed override's range, percent (XM): the GUI's slider and the ± steps stay within it.
 inline constexpr int kOverrideMinPercent = 10;
 inline constexpr int kOverrideMaxPercent = 200;
+// The spindle override's range, percent (issue 16 item 5): every !7V the driver sends is scaled.
+inline constexpr int kSpindleOverrideMinPercent = 50;
+inline constexpr int kSpindleOverrideMaxPercent = 150;
+// The !7V value (per mille of the profile's maximum speed) for a speed asked at a spindle
+// override: scaled, at most 1000 (the maximum), and a spindle asked to turn never stopped by
+// the rounding.
+int spindlePermilleAt(int askedPermille, int overridePercent);
 
 // The operations state machine (issue 5 item 4). Exactly one at a time.
 enum class MachineMode : std::uint8_t {
@@ -156,6 +163,8 @@ struct MachineState
     std::uint8_t outputs = 0xFF; // port 0 (active low): bit0 OUT0, bit1 OUT3, bit2 OUT1, bit3 OUT2
     int spindlePermille = 0;     // last !7V (GVE84: as the buttons asked for it)
     double spindleRpm = 0;
+    int spindleAskedPermille = 0;     // the speed asked (the program's S, the buttons'), ‰
+    int spindleOverridePercent = 100; // the operator's spindle override: every !7V is scaled
     bool spindleOn = false;    // the spindle turns: !7V > 0 with OUT0 on, or the GVE84's relay on
     bool outputsHeld = false;  // a hold switched the spindle / coolant off: they go on again first
     int overridePercent = 100; // the operator's feed override (XM asked for)
