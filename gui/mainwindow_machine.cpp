@@ -196,6 +196,18 @@ void MainWindow::connectControls()
             [this](int axis) { m_controller->home(axis < 0 ? 0xFu : 1u << axis); });
     connect(m_jog, &JogPanel::mpgToggled, m_controller, &driver::MachineController::setMpg);
 
+    connectOutputs();
+
+    connect(m_dro, &DroWidget::zeroAxisRequested, this, &MainWindow::setWorkZero);
+    connect(m_dro, &DroWidget::zeroAllRequested, this, [this] { setWorkZero(-1); });
+    connect(m_dro, &DroWidget::offsetSelected, this, &MainWindow::selectWorkOffset);
+    connect(m_console, &ConsoleWidget::manualLineEntered, m_consoleSession,
+            &session::ConsoleSession::execute);
+}
+
+// The outputs panel: spindle, coolant and the other outputs, the feed and spindle overrides.
+void MainWindow::connectOutputs()
+{
     connect(m_outputs, &OutputsPanel::spindleRequested, this,
             [this](bool on, double rpm) { m_controller->setSpindleRpm(on ? rpm : 0.0); });
     auto outputFunction = [this](machine::OutputFunction f, bool on) {
@@ -214,18 +226,15 @@ void MainWindow::connectControls()
     connect(m_outputs, &OutputsPanel::outputRequested, this, outputFunction);
     connect(m_outputs, &OutputsPanel::feedOverrideRequested, m_controller,
             &driver::MachineController::setOverride);
+    connect(m_outputs, &OutputsPanel::spindleOverrideRequested, this, [this](int percent) {
+        m_controller->execute(driver::op::SetSpindleOverride{percent});
+    });
     connect(m_outputs, &OutputsPanel::feedStepRequested, this, [this](int direction) {
         if (direction > 0)
             m_controller->overrideUp();
         else
             m_controller->overrideDown();
     });
-
-    connect(m_dro, &DroWidget::zeroAxisRequested, this, &MainWindow::setWorkZero);
-    connect(m_dro, &DroWidget::zeroAllRequested, this, [this] { setWorkZero(-1); });
-    connect(m_dro, &DroWidget::offsetSelected, this, &MainWindow::selectWorkOffset);
-    connect(m_console, &ConsoleWidget::manualLineEntered, m_consoleSession,
-            &session::ConsoleSession::execute);
 }
 
 // A run asked before homing: home, then run - or not. The question is a window-modal box that
@@ -291,6 +300,7 @@ void MainWindow::onState(const driver::MachineState &state)
         return state.outputOn(profile(), f);
     });
     m_outputs->showFeedOverride(state.overridePercent, state.overrideHeldPercent());
+    m_outputs->showSpindleOverride(state.spindleOverridePercent);
     m_jog->setMpgOn(state.mpgOn);
     m_jog->setHomedAxes(homed, isConnected(state.mode));
     m_connection->setText(connectionText(state));

@@ -3297,6 +3297,18 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</source>
         <translation>Sériová linka nestačí přenášet pohyb programu při %1 %: jednotka běží na %2 %, dokud pohyb před ní není dost pomalý, aby se jí fronta nikdy nevyprázdnila.</translation>
     </message>
+    <message>
+        <source>Spindle:</source>
+        <translation>Vřeteno:</translation>
+    </message>
+    <message>
+        <source>Spindle override in percent of the programmed speed: the turning spindle at once, and every spindle speed of the rest of the job</source>
+        <translation>Korekce otáček vřetena v procentech naprogramovaných otáček: běžící vřeteno ihned a všechny otáčky ve zbytku úlohy</translation>
+    </message>
+    <message>
+        <source>Spindle speed as programmed</source>
+        <translation>Otáčky vřetena podle programu</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::Plan</name>
@@ -4224,6 +4236,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Connection</source>
         <translation>Spojení</translation>
+    </message>
+    <message>
+        <source>%1 (override %2 %)</source>
+        <translation>%1 (korekce %2 %)</translation>
     </message>
 </context>
 <context>

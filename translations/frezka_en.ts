@@ -3290,6 +3290,18 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</source>
         <translation>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</translation>
     </message>
+    <message>
+        <source>Spindle:</source>
+        <translation>Spindle:</translation>
+    </message>
+    <message>
+        <source>Spindle override in percent of the programmed speed: the turning spindle at once, and every spindle speed of the rest of the job</source>
+        <translation>Spindle override in percent of the programmed speed: the turning spindle at once, and every spindle speed of the rest of the job</translation>
+    </message>
+    <message>
+        <source>Spindle speed as programmed</source>
+        <translation>Spindle speed as programmed</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::Plan</name>
@@ -4216,6 +4228,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Connection</source>
         <translation>Connection</translation>
+    </message>
+    <message>
+        <source>%1 (override %2 %)</source>
+        <translation>%1 (override %2 %)</translation>
     </message>
 </context>
 <context>
