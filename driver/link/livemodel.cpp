@@ -84,7 +84,10 @@ void LiveModel::update(double now)
     m_next = now + kIntervalS;
     MachineState &state = m_host.liveState();
     if (const std::optional<LivePosition> live = at(now)) {
-        if (!(state.live == *live)) {
+        // A machine that stands (a dwell, a spin-up) publishes nothing new.
+        LivePosition same = *live;
+        same.atS = state.live.atS;
+        if (!(state.live == same)) {
             state.live = *live;
             m_host.markDirty();
         }
