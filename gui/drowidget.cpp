@@ -62,6 +62,11 @@ DroWidget::DroWidget(QWidget *parent)
     grid->addWidget(m_offsetLabel, 5, 0);
     grid->addWidget(m_offset, 5, 1);
     grid->addWidget(m_zeroAll, 5, 2, 1, 2);
+    m_source = new QLabel(this);
+    m_source->setObjectName(QStringLiteral("droSource"));
+    m_source->setStyleSheet(QStringLiteral("color: #777; font-style: italic;"));
+    m_source->setVisible(false);
+    grid->addWidget(m_source, 6, 0, 1, 4);
     grid->setColumnStretch(1, 1);
     setPositions({}, {});
     retranslate();
@@ -85,6 +90,19 @@ void DroWidget::setPositions(const std::array<double, 4> &machineMm,
     for (int i = 0; i < 4; ++i) {
         m_work[i]->setText(QString::number(workMm[i], 'f', 3));
         m_machine[i]->setText(QString::number(machineMm[i], 'f', 3));
+    }
+}
+
+void DroWidget::setModelled(bool modelled)
+{
+    if (modelled == m_modelled)
+        return;
+    m_modelled = modelled;
+    m_source->setVisible(modelled);
+    const QString grey = modelled ? QStringLiteral("color: #777;") : QString();
+    for (int i = 0; i < 4; ++i) {
+        m_work[i]->setStyleSheet(grey);
+        m_machine[i]->setStyleSheet(grey);
     }
 }
 
@@ -133,6 +151,11 @@ void DroWidget::retranslate()
     m_zeroAll->setText(tr("Zero all"));
     m_zeroAll->setToolTip(tr("Set the work zero of every axis at the current position"));
     m_offsetLabel->setText(tr("Offset"));
+    m_source->setText(tr("≈ modelled between position reads"));
+    m_source->setToolTip(tr("While the serial line is busy with a dense job the unit's counters "
+                            "are read only now and then; in between, the figures follow the "
+                            "driver's model of the unit along the plan, never ahead of what the "
+                            "unit was sent, and each read corrects them."));
 }
 
 } // namespace frezka::gui

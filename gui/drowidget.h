@@ -23,6 +23,10 @@ public:
     void setPositions(const std::array<double, 4> &machineMm, const std::array<double, 4> &workMm);
     void setActiveOffset(int index); // 0 = G54 .. 8 = G59.3
     void setHomed(const std::array<bool, 4> &homed);
+    // The figures are the driver's model of the unit between position reads (issue 16 item 3),
+    // not its counters: said under the figures, which turn grey.
+    void setModelled(bool modelled);
+    bool modelledShown() const { return m_modelled; }
     // Whether the axis is shown as homed (its name in green; tests).
     bool homedShown(int axis) const;
     // Shown text of an axis (tests).
@@ -45,7 +49,8 @@ private:
     std::array<QPushButton *, 4> m_zero{};
     QPushButton *m_zeroAll;
     QComboBox *m_offset;
-    QLabel *m_workHeader, *m_machineHeader, *m_offsetLabel;
+    QLabel *m_workHeader, *m_machineHeader, *m_offsetLabel, *m_source;
+    bool m_modelled = false;
 };
 
 } // namespace frezka::gui

@@ -137,6 +137,7 @@ private:
     void connectProgram();
     void connectMachine();
     void connectControls();
+    void connectOutputs();
     void showError(const QString &message);
     void updateRecentMenu();
     void addRecent(const QString &path);

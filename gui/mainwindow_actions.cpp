@@ -77,7 +77,7 @@ void MainWindow::onOffsetsChanged()
     const auto &st = m_controller->state();
     m_program->setWorkOffsets(m_offsets->state());
     m_dro->setActiveOffset(m_offsets->active());
-    m_dro->setPositions(st.positionMm, m_offsets->workPosition(st.positionMm));
+    m_dro->setPositions(st.shownMm(), m_offsets->workPosition(st.shownMm()));
     m_program->setStartPosition(st.positionMm);
     m_program->reload(); // offsets apply by re-interpreting the program
 }

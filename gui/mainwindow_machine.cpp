@@ -199,6 +199,18 @@ void MainWindow::connectControls()
             [this](int axis) { m_controller->home(axis < 0 ? 0xFu : 1u << axis); });
     connect(m_jog, &JogPanel::mpgToggled, m_controller, &driver::MachineController::setMpg);
 
+    connectOutputs();
+
+    connect(m_dro, &DroWidget::zeroAxisRequested, this, &MainWindow::setWorkZero);
+    connect(m_dro, &DroWidget::zeroAllRequested, this, [this] { setWorkZero(-1); });
+    connect(m_dro, &DroWidget::offsetSelected, this, &MainWindow::selectWorkOffset);
+    connect(m_console, &ConsoleWidget::manualLineEntered, m_consoleSession,
+            &session::ConsoleSession::execute);
+}
+
+// The outputs panel: spindle, coolant and the other outputs, the feed and spindle overrides.
+void MainWindow::connectOutputs()
+{
     connect(m_outputs, &OutputsPanel::spindleRequested, this,
             [this](bool on, double rpm) { m_controller->setSpindleRpm(on ? rpm : 0.0); });
     auto outputFunction = [this](machine::OutputFunction f, bool on) {
@@ -217,18 +229,15 @@ void MainWindow::connectControls()
     connect(m_outputs, &OutputsPanel::outputRequested, this, outputFunction);
     connect(m_outputs, &OutputsPanel::feedOverrideRequested, m_controller,
             &driver::MachineController::setOverride);
+    connect(m_outputs, &OutputsPanel::spindleOverrideRequested, this, [this](int percent) {
+        m_controller->execute(driver::op::SetSpindleOverride{percent});
+    });
     connect(m_outputs, &OutputsPanel::feedStepRequested, this, [this](int direction) {
         if (direction > 0)
             m_controller->overrideUp();
         else
             m_controller->overrideDown();
     });
-
-    connect(m_dro, &DroWidget::zeroAxisRequested, this, &MainWindow::setWorkZero);
-    connect(m_dro, &DroWidget::zeroAllRequested, this, [this] { setWorkZero(-1); });
-    connect(m_dro, &DroWidget::offsetSelected, this, &MainWindow::selectWorkOffset);
-    connect(m_console, &ConsoleWidget::manualLineEntered, m_consoleSession,
-            &session::ConsoleSession::execute);
 }
 
 // A run asked before homing: home, then run - or not. The question is a window-modal box that
@@ -279,12 +288,14 @@ void MainWindow::disconnectFromUnit()
 
 void MainWindow::onState(const driver::MachineState &state)
 {
-    m_dro->setPositions(state.positionMm, m_offsets->workPosition(state.positionMm));
+    // Between the polls of a running job: the driver's model of the unit (MachineState::live).
+    const std::array<double, 4> &shown = state.shownMm();
+    m_dro->setPositions(shown, m_offsets->workPosition(shown));
+    m_dro->setModelled(state.live.modelled);
     const std::array<bool, 4> homed{state.axisHomed(0), state.axisHomed(1), state.axisHomed(2),
                                     state.axisHomed(3)};
     m_dro->setHomed(homed);
-    m_view->model()->setToolPosition(QVector3D(
-        float(state.positionMm[0]), float(state.positionMm[1]), float(state.positionMm[2])));
+    m_view->model()->setToolPosition(QVector3D(float(shown[0]), float(shown[1]), float(shown[2])));
     // The driver decodes the ports (MachineState::inputHigh, outputIsOn, outputOn).
     m_io->setIo([&state](int n) { return state.inputHigh(n); },
                 [&state](int n) { return state.outputIsOn(n); }, state.run, state.inta);
@@ -292,6 +303,7 @@ void MainWindow::onState(const driver::MachineState &state)
         return state.outputOn(profile(), f);
     });
     m_outputs->showFeedOverride(state.overridePercent, state.overrideHeldPercent());
+    m_outputs->showSpindleOverride(state.spindleOverridePercent);
     m_jog->setMpgOn(state.mpgOn);
     m_jog->setHomedAxes(homed, isConnected(state.mode));
     m_connection->setText(connectionText(state));

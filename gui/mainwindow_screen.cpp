@@ -48,7 +48,9 @@ std::uint32_t MainWindow::shownLine(const driver::MachineState &state) const
 {
     if (held(state.mode) && state.holdLine > 0)
         return state.holdLine;
-    return state.sourceLine;
+    // The line of the modelled position between polls: never past what the unit was sent.
+    return state.live.modelled && state.live.sourceLine > 0 ? state.live.sourceLine
+                                                            : state.sourceLine;
 }
 
 // The job's line, listing, cut drawing, progress and speed; a console line's job leaves the
@@ -62,8 +64,8 @@ void MainWindow::showJob(const driver::MachineState &state)
         return;
     if (line > 0)
         m_listing->showCurrentLine(int(line));
-    if (state.sourceLine > 0)
-        m_view->model()->setCutEntry(m_program->program().entryOfLine(state.sourceLine));
+    if (line > 0)
+        m_view->model()->setCutEntry(m_program->program().entryOfLine(line));
     updateProgress(state);
 }
 

@@ -77,6 +77,7 @@ void MainWindow::updateStatus(const driver::MachineState &state)
     }
     v.spindleOn = state.spindleOn;
     v.spindleRpm = state.spindleRpm;
+    v.spindleOverridePercent = state.spindleOverridePercent;
     for (const ShownOutput &o : kShownOutputs) {
         if (machine::outputNumber(profile(), o.function) >= 0)
             v.outputs.emplace_back(tr(o.caption), state.outputOn(profile(), o.function));

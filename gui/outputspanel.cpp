@@ -18,6 +18,7 @@ OutputsPanel::OutputsPanel(QWidget *parent)
 {
     createOutputs();
     createFeedOverride();
+    createSpindleOverride();
 
     auto *grid = new QGridLayout;
     grid->addWidget(m_spindle, 0, 0);
@@ -38,6 +39,12 @@ OutputsPanel::OutputsPanel(QWidget *parent)
     layout->addLayout(grid);
     layout->addLayout(m_extraBox);
     layout->addLayout(feedRow);
+    auto *spindleRow = new QHBoxLayout;
+    spindleRow->addWidget(m_spindleOverrideLabel);
+    spindleRow->addWidget(m_spindleOverride, 1);
+    spindleRow->addWidget(m_spindleOverrideValue);
+    spindleRow->addWidget(m_spindleOverrideReset);
+    layout->addLayout(spindleRow);
     layout->addStretch();
     retranslate();
 }
@@ -109,6 +116,46 @@ void OutputsPanel::createFeedOverride()
         m_feed->setValue(100);
         emit feedOverrideRequested(100);
     });
+}
+
+// The spindle override: the slider, its value and 100 %.
+void OutputsPanel::createSpindleOverride()
+{
+    m_spindleOverrideLabel = new QLabel(this);
+    m_spindleOverride = new QSlider(Qt::Horizontal, this);
+    m_spindleOverride->setObjectName(QStringLiteral("spindleOverride"));
+    m_spindleOverride->setRange(driver::kSpindleOverrideMinPercent,
+                                driver::kSpindleOverrideMaxPercent);
+    m_spindleOverride->setValue(100);
+    m_spindleOverride->setPageStep(10);
+    m_spindleOverride->setFocusPolicy(Qt::NoFocus); // the arrows jog
+    m_spindleOverrideValue = new QLabel(QStringLiteral("100 %"), this);
+    m_spindleOverrideValue->setMinimumWidth(m_feedValue->minimumWidth());
+    auto request = [this] { emit spindleOverrideRequested(m_spindleOverride->value()); };
+    connect(m_spindleOverride, &QSlider::valueChanged, this,
+            [this](int v) { m_spindleOverrideValue->setText(QStringLiteral("%1 %").arg(v)); });
+    connect(m_spindleOverride, &QSlider::sliderReleased, this, request);
+    connect(m_spindleOverride, &QSlider::actionTriggered, this, [this, request](int action) {
+        if (action != QAbstractSlider::SliderMove)
+            QMetaObject::invokeMethod(this, request, Qt::QueuedConnection);
+    });
+    m_spindleOverrideReset = new QPushButton(QStringLiteral("100 %"), this);
+    m_spindleOverrideReset->setObjectName(QStringLiteral("spindleOverrideReset"));
+    m_spindleOverrideReset->setMaximumWidth(60);
+    m_spindleOverrideReset->setFocusPolicy(Qt::NoFocus);
+    connect(m_spindleOverrideReset, &QPushButton::clicked, this, [this] {
+        m_spindleOverride->setValue(100);
+        emit spindleOverrideRequested(100);
+    });
+}
+
+void OutputsPanel::showSpindleOverride(int percent)
+{
+    if (m_spindleOverride->isSliderDown())
+        return;
+    const QSignalBlocker block(m_spindleOverride);
+    m_spindleOverride->setValue(percent);
+    m_spindleOverrideValue->setText(QStringLiteral("%1 %").arg(percent));
 }
 
 void OutputsPanel::setMaxRpm(double rpm)
@@ -199,6 +246,11 @@ void OutputsPanel::retranslate()
     m_feedUp->setToolTip(tr("Raise every queued speed by 6.25 % (XU)"));
     m_feedDown->setToolTip(tr("Lower every queued speed by 6.25 % (XD)"));
     showFeedValue(m_feed->value());
+    m_spindleOverrideLabel->setText(tr("Spindle:"));
+    m_spindleOverride->setToolTip(
+        tr("Spindle override in percent of the programmed speed: the turning spindle at once, "
+           "and every spindle speed of the rest of the job"));
+    m_spindleOverrideReset->setToolTip(tr("Spindle speed as programmed"));
 }
 
 } // namespace frezka::gui

@@ -1,6 +1,7 @@
 #pragma once
 // OutputsPanel: spindle on/off and speed, coolant, air blow and the profile's other outputs,
-// and the feed override (XM slider, XU/XD buttons for +/- 6.25 %).
+// the feed override (XM slider, XU/XD buttons for +/- 6.25 %) and the spindle override (50-150 %
+// of every spindle speed sent).
 
 #include "machine/machineconfig.h"
 
@@ -34,6 +35,8 @@ public:
     // linkPercent > 0: the link holds the unit at that override
     // (MachineState::overrideHeldPercent).
     void showFeedOverride(int percent, int linkPercent = 0);
+    // The spindle override as the driver applies it (issue 16 item 5).
+    void showSpindleOverride(int percent);
     int feedOverride() const;
     double spindleRpm() const;
 
@@ -44,6 +47,7 @@ signals:
     void outputRequested(machine::OutputFunction function, bool on);
     void feedOverrideRequested(int percent);
     void feedStepRequested(int direction); // +1 = XU, -1 = XD
+    void spindleOverrideRequested(int percent);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -52,6 +56,7 @@ private:
     // The constructor's parts, in the order the widgets are created (the focus chain).
     void createOutputs();
     void createFeedOverride();
+    void createSpindleOverride();
     void retranslate();
     void showFeedValue(int percent);
 
@@ -61,6 +66,9 @@ private:
     QLabel *m_rpmLabel, *m_feedLabel, *m_feedValue;
     QSlider *m_feed;
     QPushButton *m_feedUp, *m_feedDown, *m_feedReset;
+    QLabel *m_spindleOverrideLabel, *m_spindleOverrideValue;
+    QSlider *m_spindleOverride;
+    QPushButton *m_spindleOverrideReset;
     QVBoxLayout *m_extraBox;
     std::vector<std::pair<QPushButton *, machine::OutputFunction>> m_extra;
 };

@@ -109,11 +109,14 @@ void StatusPanel::render()
     const QString direction = v.spindleDirection > 0   ? tr("clockwise (M3)")
                               : v.spindleDirection < 0 ? tr("counter-clockwise (M4)")
                                                        : QString();
-    m_spindle->setText(
+    const QString spindle =
         v.spindleOn ? (direction.isEmpty()
                            ? tr("on · %1 rpm").arg(v.spindleRpm, 0, 'f', 0)
                            : tr("on · %1 · %2 rpm").arg(direction).arg(v.spindleRpm, 0, 'f', 0))
-                    : tr("off"));
+                    : tr("off");
+    m_spindle->setText(v.spindleOverridePercent == 100
+                           ? spindle
+                           : tr("%1 (override %2 %)").arg(spindle).arg(v.spindleOverridePercent));
     m_tool->setText(v.tool < 0    ? QStringLiteral("–")
                     : v.tool == 0 ? tr("none (T0)")
                                   : QStringLiteral("T%1").arg(v.tool));

@@ -29,7 +29,8 @@ struct StatusView
     bool spindleOn = false;
     int spindleDirection = 0; // as programmed: 1 M3, -1 M4, 0 unknown
     double spindleRpm = 0;
-    int tool = -1;                                 // -1: no program
+    int spindleOverridePercent = 100; // the operator's spindle override (issue 16 item 5)
+    int tool = -1;                    // -1: no program
     std::vector<std::pair<QString, bool>> outputs; // caption, on
     QString modes;                                 // "G1 G17 ... M3 M8"
     int axisCount = 3;

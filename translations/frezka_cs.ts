@@ -1535,6 +1535,22 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>spindle (per mille)</source>
         <translation>vřeteno (promile)</translation>
     </message>
+    <message>
+        <source>Spindle override %1 % is outside %2 … %3 %</source>
+        <translation>Korekce otáček vřetena %1 % je mimo rozsah %2 … %3 %</translation>
+    </message>
+    <message>
+        <source>Choose a spindle override within that range.</source>
+        <translation>Zvolte korekci otáček vřetena v tomto rozsahu.</translation>
+    </message>
+    <message>
+        <source>This unit switches its spindle with a relay: its speed cannot be overridden</source>
+        <translation>Tato jednotka spíná vřeteno relé: jeho otáčky nelze korigovat</translation>
+    </message>
+    <message>
+        <source>Set the speed on the spindle&apos;s drive, or use a unit with a spindle output at address 7 (GVE64, GVE114).</source>
+        <translation>Nastavte otáčky na měniči vřetena, nebo použijte jednotku s výstupem pro vřeteno na adrese 7 (GVE64, GVE114).</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>
@@ -2747,6 +2763,14 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>Offset</source>
         <translation>Posunutí</translation>
     </message>
+    <message>
+        <source>≈ modelled between position reads</source>
+        <translation>≈ modelováno mezi čteními polohy</translation>
+    </message>
+    <message>
+        <source>While the serial line is busy with a dense job the unit&apos;s counters are read only now and then; in between, the figures follow the driver&apos;s model of the unit along the plan, never ahead of what the unit was sent, and each read corrects them.</source>
+        <translation>Když je sériová linka vytížena hustým programem, čítače jednotky se čtou jen občas; mezi čteními údaje sledují model jednotky v ovladači podél plánu, nikdy dál, než kolik bylo jednotce odesláno, a každé čtení je opraví.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::GrinderWindow</name>
@@ -3355,6 +3379,18 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</source>
         <translation>Sériová linka nestačí přenášet pohyb programu při %1 %: jednotka běží na %2 %, dokud pohyb před ní není dost pomalý, aby se jí fronta nikdy nevyprázdnila.</translation>
+    </message>
+    <message>
+        <source>Spindle:</source>
+        <translation>Vřeteno:</translation>
+    </message>
+    <message>
+        <source>Spindle override in percent of the programmed speed: the turning spindle at once, and every spindle speed of the rest of the job</source>
+        <translation>Korekce otáček vřetena v procentech naprogramovaných otáček: běžící vřeteno ihned a všechny otáčky ve zbytku úlohy</translation>
+    </message>
+    <message>
+        <source>Spindle speed as programmed</source>
+        <translation>Otáčky vřetena podle programu</translation>
     </message>
 </context>
 <context>
@@ -4290,6 +4326,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Connection</source>
         <translation>Spojení</translation>
+    </message>
+    <message>
+        <source>%1 (override %2 %)</source>
+        <translation>%1 (korekce %2 %)</translation>
     </message>
 </context>
 <context>

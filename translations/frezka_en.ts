@@ -1535,6 +1535,22 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <source>spindle (per mille)</source>
         <translation>spindle (per mille)</translation>
     </message>
+    <message>
+        <source>Spindle override %1 % is outside %2 … %3 %</source>
+        <translation>Spindle override %1 % is outside %2 … %3 %</translation>
+    </message>
+    <message>
+        <source>Choose a spindle override within that range.</source>
+        <translation>Choose a spindle override within that range.</translation>
+    </message>
+    <message>
+        <source>This unit switches its spindle with a relay: its speed cannot be overridden</source>
+        <translation>This unit switches its spindle with a relay: its speed cannot be overridden</translation>
+    </message>
+    <message>
+        <source>Set the speed on the spindle&apos;s drive, or use a unit with a spindle output at address 7 (GVE64, GVE114).</source>
+        <translation>Set the speed on the spindle&apos;s drive, or use a unit with a spindle output at address 7 (GVE64, GVE114).</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode</name>
@@ -2744,6 +2760,14 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <source>Offset</source>
         <translation>Offset</translation>
     </message>
+    <message>
+        <source>≈ modelled between position reads</source>
+        <translation>≈ modelled between position reads</translation>
+    </message>
+    <message>
+        <source>While the serial line is busy with a dense job the unit&apos;s counters are read only now and then; in between, the figures follow the driver&apos;s model of the unit along the plan, never ahead of what the unit was sent, and each read corrects them.</source>
+        <translation>While the serial line is busy with a dense job the unit&apos;s counters are read only now and then; in between, the figures follow the driver&apos;s model of the unit along the plan, never ahead of what the unit was sent, and each read corrects them.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::GrinderWindow</name>
@@ -3348,6 +3372,18 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</source>
         <translation>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</translation>
+    </message>
+    <message>
+        <source>Spindle:</source>
+        <translation>Spindle:</translation>
+    </message>
+    <message>
+        <source>Spindle override in percent of the programmed speed: the turning spindle at once, and every spindle speed of the rest of the job</source>
+        <translation>Spindle override in percent of the programmed speed: the turning spindle at once, and every spindle speed of the rest of the job</translation>
+    </message>
+    <message>
+        <source>Spindle speed as programmed</source>
+        <translation>Spindle speed as programmed</translation>
     </message>
 </context>
 <context>
@@ -4282,6 +4318,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Connection</source>
         <translation>Connection</translation>
+    </message>
+    <message>
+        <source>%1 (override %2 %)</source>
+        <translation>%1 (override %2 %)</translation>
     </message>
 </context>
 <context>

@@ -178,6 +178,16 @@ constexpr CodeInfo kCodes[] = {
      QT_TRANSLATE_NOOP("frezka::driver", "This unit has no output OUT%1"),
      QT_TRANSLATE_NOOP("frezka::driver",
                        "Switch one of the outputs the unit has (a GVE84 has its relay only).")},
+    {C::SpindleOverrideRange, "SpindleOverrideRange",
+     QT_TRANSLATE_NOOP("frezka::driver", "Spindle override %1 % is outside %2 … %3 %"),
+     QT_TRANSLATE_NOOP("frezka::driver", "Choose a spindle override within that range.")},
+    {C::NoSpindleOverride, "NoSpindleOverride",
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "This unit switches its spindle with a relay: its speed cannot be "
+                       "overridden"),
+     QT_TRANSLATE_NOOP("frezka::driver",
+                       "Set the speed on the spindle's drive, or use a unit with a spindle "
+                       "output at address 7 (GVE64, GVE114).")},
     // The unit and the link
     {C::UnitAnswered, "UnitAnswered",
      QT_TRANSLATE_NOOP("frezka::driver", "%1: the unit answered: %2"),

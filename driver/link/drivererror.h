@@ -61,6 +61,8 @@ enum class DriverCode : std::uint16_t {
     ContinuousJogWhileLifted = 137, //
     NoPlannedSpeed = 138,           //
     NoSuchOutput = 139,             // %1 the output's number
+    SpindleOverrideRange = 140,     // %1 percent asked, %2 minimum, %3 maximum
+    NoSpindleOverride = 141,        //
     // The unit and the link (2xx)
     UnitAnswered = 200,       // %1 the action, %2 the unit's reply
     LinkFailed = 201,         // %1 the action, %2 why

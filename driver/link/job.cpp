@@ -5,6 +5,7 @@
 #include "driver/link/corehost.h"
 #include "driver/link/machinecore_internal.h"
 #include "driver/link/programcheck.h"
+#include "driver/link/unitcontrols.h"
 #include "gcode/toolpath.h"
 #include "machine/steps.h"
 #include "machine/unitwire.h"
@@ -136,6 +137,8 @@ void Job::streamStep(double now)
     Command wire = toCommand(c);
     if (c.op == UnitOp::Spindle && !variantInfo(m_host.config().unit.variant).hasSpindleAddress7)
         wire = cmd::output((m_host.liveState().outputs & 0xFE) | (c.value ? 0 : 1));
+    else if (c.op == UnitOp::Spindle) // the program's S at the spindle override
+        wire = spindleSpeedCommand(m_host, static_cast<int>(c.value));
     const std::size_t index = m_cursor.next;
     m_cursor.inflightEnd = index + 1;
     m_host.start(wire,

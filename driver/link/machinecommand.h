@@ -95,6 +95,13 @@ struct SetSpindleRpm // !7V, per mille of the profile's maximum
     double rpm = 0;
     friend bool operator==(const SetSpindleRpm &, const SetSpindleRpm &) = default;
 };
+// The spindle override (issue 16 item 5): every spindle speed sent from now on (!7V, the job's,
+// the buttons', a hold's restart) is scaled by it, and a turning spindle at once.
+struct SetSpindleOverride
+{
+    int percent = 100;
+    friend bool operator==(const SetSpindleOverride &, const SetSpindleOverride &) = default;
+};
 struct SetOutput // output OUTn on or off (the driver finds its port bit), the others kept
 {
     int output = 0;
@@ -128,6 +135,6 @@ using MachineCommand =
     std::variant<op::Run, op::Pause, op::Resume, op::Abort, op::ToolLift, op::ToolLower, op::Home,
                  op::JogStep, op::JogContinuous, op::JogStop, op::SetMpg, op::SetSpindleRpm,
                  op::SetOutput, op::SetOverride, op::OverrideStep, op::SendRaw, op::WriteEeprom,
-                 op::HoldSpindle>;
+                 op::HoldSpindle, op::SetSpindleOverride>;
 
 } // namespace frezka::driver

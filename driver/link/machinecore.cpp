@@ -73,6 +73,7 @@ MachineActivity MachineCore::currentActivity() const
 
 void MachineCore::publish()
 {
+    m_live.settle();
     if (const MachineActivity a = currentActivity(); a != m_state.activity) {
         m_state.activity = a;
         m_dirty = true;
@@ -153,7 +154,7 @@ double MachineCore::deadline() const
     double d = m_engine.deadline();
     if (!m_open)
         return d;
-    d = m_waits.nextTime(d);
+    d = std::min(m_waits.nextTime(d), m_live.nextTime());
     if (m_engine.idle()) {
         d = std::min(d, m_haltPending ? kNoDeadline : m_poller.nextTime());
         if (m_job.waitUntil() > m_now)
@@ -191,6 +192,8 @@ void MachineCore::pump(double now)
     m_now = now;
     if (m_open)
         m_waits.runDue(m_now);
+    if (m_open && now >= m_live.nextTime())
+        m_live.update(now);
     while (m_open && m_engine.idle()) {
         if (!m_steps.empty()) {
             Step s = std::move(m_steps.front());
@@ -227,6 +230,7 @@ void MachineCore::applyPosition(const Reply &r)
     m_dirty = true;
     if (m_job.active())
         m_job.positionRead();
+    m_live.positionRead();
 }
 
 void MachineCore::applyFlags(std::uint8_t flags)
@@ -385,6 +389,9 @@ MachineCore::Result MachineCore::execute(MachineCommand command, double now)
             [&](op::SetSpindleRpm &c) { return accepted(m_controls.setSpindleRpm(c.rpm), now); },
             [&](op::SetOutput &c) { return accepted(m_controls.setOutput(c.output, c.on), now); },
             [&](op::SetOverride &c) { return accepted(m_controls.setOverride(c.percent), now); },
+            [&](op::SetSpindleOverride &c) {
+                return accepted(m_controls.setSpindleOverride(c.percent), now);
+            },
             [&](op::OverrideStep &c) { return accepted(m_controls.overrideStep(c.up), now); },
             [&](op::SendRaw &c) { return accepted(m_controls.sendRaw(c.text), now); },
             [&](op::WriteEeprom &) { return accepted(m_eeprom.write(), now); },

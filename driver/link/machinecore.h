@@ -37,6 +37,7 @@
 //   UnitControls                    MPG, spindle, outputs, override, raw commands
 //   InputHoming                     Y& while idle, Y- before motion (homing from an input)
 //   Poller                          step 2 above
+//   LiveModel                       the position shown between polls (MachineState::live)
 //
 // MachineState::activity names the one in charge (currentActivity()), so that every transition
 // is observable. Operations arrive as one MachineCommand (execute()); each is accepted (its
@@ -53,6 +54,7 @@
 #include "driver/link/job.h"
 #include "driver/link/jog.h"
 #include "driver/link/linkengine.h"
+#include "driver/link/livemodel.h"
 #include "driver/link/machinecommand.h"
 #include "driver/link/machinestate.h"
 #include "driver/link/poller.h"
@@ -231,6 +233,7 @@ private:
     Poller m_poller{*this, m_job, m_toolLift};
     Jog m_jog{*this};
     InputHoming m_inputHoming{*this}; // Y& while idle, Y- before motion (homing from an input)
+    LiveModel m_live{*this, m_job};   // the position between polls, for showing only
 };
 
 } // namespace frezka::driver

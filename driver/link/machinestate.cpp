@@ -3,6 +3,7 @@
 
 #include "machinestate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -36,6 +37,14 @@ const char *machineModeName(MachineMode mode)
         return "Link lost";
     }
     return "?";
+}
+
+int spindlePermilleAt(int askedPermille, int overridePercent)
+{
+    if (askedPermille <= 0)
+        return 0;
+    const long scaled = std::lround(askedPermille * overridePercent / 100.0);
+    return static_cast<int>(std::clamp(scaled, 1L, 1000L));
 }
 
 bool noteOutputsAccepted(MachineState &state, const protocol::Command &c,

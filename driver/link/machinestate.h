@@ -21,6 +21,13 @@ namespace frezka::driver {
 // The feed override's range, percent (XM): the GUI's slider and the ± steps stay within it.
 inline constexpr int kOverrideMinPercent = 10;
 inline constexpr int kOverrideMaxPercent = 200;
+// The spindle override's range, percent (issue 16 item 5): every !7V the driver sends is scaled.
+inline constexpr int kSpindleOverrideMinPercent = 50;
+inline constexpr int kSpindleOverrideMaxPercent = 150;
+// The !7V value (per mille of the profile's maximum speed) for a speed asked at a spindle
+// override: scaled, at most 1000 (the maximum), and a spindle asked to turn never stopped by
+// the rounding.
+int spindlePermilleAt(int askedPermille, int overridePercent);
 
 // The operations state machine (issue 5 item 4). Exactly one at a time.
 enum class MachineMode : std::uint8_t {
@@ -103,6 +110,20 @@ struct MachineError
     friend bool operator==(const MachineError &, const MachineError &) = default;
 };
 
+// The position the front ends show: the polled counters, or, between the polls of a running
+// job, the driver's model of the unit along the plan (LiveModel, issue 16 item 3). Only for
+// showing: the path guard, the tracker and the ETA read the polled counters alone.
+struct LivePosition
+{
+    bool modelled = false; // false: the polled counters
+    std::array<std::int64_t, 4> steps{};
+    std::array<double, 4> mm{};
+    std::uint32_t sourceLine = 0; // the G-code line of the modelled command (0: none)
+    std::int64_t command = -1;    // the program command modelled: always < commandsAcked
+    double atS = 0;               // the driver's time of the figure
+    friend bool operator==(const LivePosition &, const LivePosition &) = default;
+};
+
 struct MachineState
 {
     MachineMode mode = MachineMode::Disconnected;
@@ -125,6 +146,7 @@ struct MachineState
     // position (instantaneous counters, polled)
     std::array<std::int64_t, 4> positionSteps{};
     std::array<double, 4> positionMm{};
+    LivePosition live;          // what to show: these counters, or the model's between polls
     bool homed = false;         // every axis the profile homes has been homed
     std::uint8_t homedAxes = 0; // bit a: axis a (X=0 .. A=3) homed since connecting
 
@@ -141,6 +163,8 @@ struct MachineState
     std::uint8_t outputs = 0xFF; // port 0 (active low): bit0 OUT0, bit1 OUT3, bit2 OUT1, bit3 OUT2
     int spindlePermille = 0;     // last !7V (GVE84: as the buttons asked for it)
     double spindleRpm = 0;
+    int spindleAskedPermille = 0;     // the speed asked (the program's S, the buttons'), ‰
+    int spindleOverridePercent = 100; // the operator's spindle override: every !7V is scaled
     bool spindleOn = false;    // the spindle turns: !7V > 0 with OUT0 on, or the GVE84's relay on
     bool outputsHeld = false;  // a hold switched the spindle / coolant off: they go on again first
     int overridePercent = 100; // the operator's feed override (XM asked for)
@@ -187,6 +211,8 @@ struct MachineState
     bool inputHigh(int n) const { return n >= 0 && n < 16 && ((inputLevels() >> n) & 1) != 0; }
     // Whether output OUTn (n = 0..3) is on.
     bool outputIsOn(int n) const { return n >= 0 && n < 4 && ((outputsOn() >> n) & 1) != 0; }
+    // The position to show, mm: the model's between polls of a running job, else the counters'.
+    const std::array<double, 4> &shownMm() const { return live.modelled ? live.mm : positionMm; }
     // Whether axis a (X = 0 .. A = 3) has been homed since connecting.
     bool axisHomed(int axis) const
     {

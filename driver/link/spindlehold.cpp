@@ -80,7 +80,12 @@ void SpindleHold::restore(std::function<void()> then)
         return;
     }
     const double wait = spinUpS();
-    const int permille = m_permille;
+    // The speed asked, at the spindle override as it is now (it may have changed meanwhile).
+    const MachineState &state = m_host.liveState();
+    const int permille =
+        m_permille > 0 && state.spindleAskedPermille > 0
+            ? spindlePermilleAt(state.spindleAskedPermille, state.spindleOverridePercent)
+            : m_permille;
     const std::uint8_t port = m_port;
     m_stopped = false;
     m_starting = true;

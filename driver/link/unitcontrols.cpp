@@ -46,17 +46,51 @@ std::optional<MachineError> UnitControls::setSpindleRpm(double rpm)
     const double maxRpm = m_host.config().spindle.maxRpm;
     if (rpm < 0 || rpm > maxRpm)
         return refusal(DriverCode::SpindleOutOfRange, {numberText(rpm), numberText(maxRpm)});
-    const int permille = static_cast<int>(std::lround(rpm / maxRpm * 1000.0));
+    const int asked = static_cast<int>(std::lround(rpm / maxRpm * 1000.0));
+    const int permille = spindlePermilleAt(asked, state().spindleOverridePercent);
     Command c = cmd::spindle(permille);
     if (!variantInfo(m_host.config().unit.variant).hasSpindleAddress7)
         c = cmd::output((state().outputs & 0xFE) | (permille > 0 ? 0 : 1));
-    m_host.send(c, [this, permille, rpm](const Outcome &o) {
+    m_host.send(c, [this, asked, permille, maxRpm](const Outcome &o) {
         if (m_host.unitError(o, "setting the spindle", MachineMode::Alarm))
             return;
+        state().spindleAskedPermille = asked;
         state().spindlePermille = permille;
-        state().spindleRpm = rpm;
+        state().spindleRpm = maxRpm * permille / 1000.0;
         m_host.markDirty();
     });
+    return std::nullopt;
+}
+
+Command spindleSpeedCommand(CoreHost &host, int askedPermille)
+{
+    MachineState &state = host.liveState();
+    state.spindleAskedPermille = askedPermille;
+    host.markDirty();
+    return cmd::spindle(spindlePermilleAt(askedPermille, state.spindleOverridePercent));
+}
+
+std::optional<MachineError> UnitControls::setSpindleOverride(int percent)
+{
+    if (percent < kSpindleOverrideMinPercent || percent > kSpindleOverrideMaxPercent)
+        return refusal(DriverCode::SpindleOverrideRange,
+                       {std::to_string(percent), std::to_string(kSpindleOverrideMinPercent),
+                        std::to_string(kSpindleOverrideMaxPercent)});
+    if (!variantInfo(m_host.config().unit.variant).hasSpindleAddress7)
+        return refusal(DriverCode::NoSpindleOverride);
+    if (state().mode == MachineMode::Disconnected || state().mode == MachineMode::Connecting ||
+        state().mode == MachineMode::LinkLost)
+        return notNow("Setting the spindle override", state().mode);
+    state().spindleOverridePercent = percent;
+    m_host.markDirty();
+    // A turning spindle at once; one that stands (off, or stopped by a hold) when it starts.
+    const int permille = spindlePermilleAt(state().spindleAskedPermille, percent);
+    if (state().spindleOn && !state().outputsHeld && state().spindleAskedPermille > 0 &&
+        permille != state().spindlePermille) {
+        m_host.send(cmd::spindle(permille), [this](const Outcome &o) {
+            m_host.unitError(o, "setting the spindle override", MachineMode::Alarm);
+        });
+    }
     return std::nullopt;
 }
 

@@ -20,6 +20,10 @@ namespace frezka::driver {
 class CoreHost;
 class Job;
 
+// !7V for a speed asked (per mille; the program's S): scaled by the spindle override, and
+// noted in the state as the speed asked (a later override scales it).
+protocol::Command spindleSpeedCommand(CoreHost &host, int askedPermille);
+
 class UnitControls
 {
 public:
@@ -30,7 +34,11 @@ public:
 
     // Each: nullopt when accepted, else why not.
     std::optional<MachineError> setMpg(bool on);
+    // The speed asked, sent scaled by the spindle override.
     std::optional<MachineError> setSpindleRpm(double rpm);
+    // The spindle override (kSpindleOverrideMinPercent .. Max): a turning spindle takes it at
+    // once (!7V), every later spindle speed (the job's, the buttons', a hold's restart) with it.
+    std::optional<MachineError> setSpindleOverride(int percent);
     // Output OUTn on or off (O0 with its port bit changed, the other outputs as they are).
     std::optional<MachineError> setOutput(int output, bool on);
     std::optional<MachineError> setOverride(int percent);

@@ -129,6 +129,60 @@ private slots:
         QTRY_COMPARE(label("statusSpindle"), StatusPanel::tr("off"));
         QCOMPARE(label("statusFeed"), StatusPanel::tr("%1 mm/min").arg(0));
     }
+
+    // Issue 16 item 5: the spindle override beside the feed override scales the turning spindle at
+    // once (!7V on the wire; gve-emu on a pty receives it) and the program's later speeds (S6000
+    // of 24000 rpm: !7V250 at 100 %, !7V300 at 120 %), and the status panel says so.
+    void spindleOverrideScalesTheSpindleAndTheRestOfTheJob()
+    {
+        QVERIFY(waitIdle());
+        QVERIFY(load(writeProgram(QStringLiteral("spindle.nc"), "G21 G90\n"
+                                                                "M3 S12000\n"
+                                                                "G0 X10 Y10\n"
+                                                                "G0 Z-2\n"
+                                                                "G1 X60 F600\n"
+                                                                "S6000\n"
+                                                                "G1 X10\n"
+                                                                "G0 Z0\n"
+                                                                "M5\n"
+                                                                "M2\n")));
+        WireTap wire;
+        tapWire(wire);
+        const QByteArray emuBefore = m_pty ? emulatorReceived() : QByteArray();
+        QSignalSpy finished(m_window->controller(), &driver::MachineController::jobFinished);
+        button(m_window->runPanel(), "run")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running && state().sourceLine == 5,
+                                 kMachineTimeoutMs);
+        auto *slider =
+            m_window->outputsPanel()->findChild<QSlider *>(QStringLiteral("spindleOverride"));
+        QVERIFY(slider);
+        slider->setValue(120);
+        emit slider->sliderReleased();
+        QTRY_COMPARE_WITH_TIMEOUT(state().spindlePermille, 600, 10000);
+        QVERIFY2(state().sourceLine == 5, qPrintable(describe())); // at once, in the cut
+        QCOMPARE(state().spindleRpm, 14400.0);
+        QTRY_VERIFY2(label("statusSpindle").contains(QLatin1String("14400 rpm")) &&
+                         label("statusSpindle").contains(QLatin1String("120 %")),
+                     qPrintable(label("statusSpindle")));
+        QTRY_COMPARE_WITH_TIMEOUT(state().spindlePermille, 300, kMachineTimeoutMs);
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY(waitIdle());
+        auto sent = [&](const char *v) {
+            return wire.first(
+                QRegularExpression(QStringLiteral("!7V%1(,[0-9A-F]{2})?").arg(QLatin1String(v))));
+        };
+        const QString log = wire.sent.join(QLatin1Char('|')).right(600);
+        QVERIFY2(sent("500") >= 0 && sent("500") < sent("600") && sent("600") < sent("300"),
+                 qPrintable(log));
+        QVERIFY2(sent("250") < 0, qPrintable(log)); // the program's S6000 never unscaled
+        if (m_pty) {
+            const QByteArray received = emulatorReceived().mid(emuBefore.size());
+            QVERIFY(received.contains("!7V600") && received.contains("!7V300"));
+        }
+        button(m_window->outputsPanel(), "spindleOverrideReset")->click();
+        QTRY_COMPARE(state().spindleOverridePercent, 100);
+        QCOMPARE(slider->value(), 100);
+    }
 };
 
 QTEST_MAIN(WorkflowStatusTest)

@@ -386,5 +386,48 @@ TEST(SpindleHold, ACleanLinkNeedsNoIndexQueriesThroughALift)
         EXPECT_NE(line.rfind("! ", 0), 0u) << "a recovery logged on a clean link: " << line;
 }
 
+// Issue 16 item 5: the spindle override scales the turning spindle at once (!7V on the wire, the
+// emulated unit's speed) and every spindle speed of the rest of the job, a hold's restart too;
+// out of range it is refused with nothing sent.
+TEST(SpindleOverride, ScalesTheTurningSpindleAndTheRestOfTheJob)
+{
+    Wire w;
+    // 12000 rpm (!7V500), then S6000 (!7V250) after the first side of the cut.
+    const UnitProgram program =
+        planText("G21 G90\nM3 S12000\nG0 X10 Y10\nG0 Z-8\nG1 Z-10 F600\nG1 X60 F300\n"
+                 "S6000\nG1 Y40\nG1 X10\nG0 Z0\nM5\nM2\n",
+                 w.sim.config);
+    w.startCut(program);
+    EXPECT_EQ(w.unit().spindlePermille(), 500);
+    const std::size_t before = w.sent.size();
+    const auto refused = w.sim.core.execute(op::SetSpindleOverride{151}, w.sim.runner.now());
+    ASSERT_TRUE(refused);
+    EXPECT_EQ(refused->reason.code, DriverCode::SpindleOverrideRange);
+    ASSERT_FALSE(w.sim.core.execute(op::SetSpindleOverride{120}, w.sim.runner.now()));
+    ASSERT_TRUE(w.until([&] { return w.state().spindlePermille == 600; })) << w.sim.lastLog();
+    EXPECT_EQ(w.unit().spindlePermille(), 600);
+    EXPECT_EQ(w.find("!7V", before), w.find("!7V600", before)) << "at once, nothing before it";
+    EXPECT_EQ(w.state().spindleRpm, 14400);
+    EXPECT_EQ(w.state().spindleOverridePercent, 120);
+    EXPECT_LT(w.unit().position()[0], 60 * 400) << "while the first side is cut";
+    // The program's S6000 at 120 %.
+    ASSERT_TRUE(w.until([&] { return w.unit().spindlePermille() == 300; })) << w.sim.lastLog();
+    EXPECT_NE(w.find("!7V300", before), std::string::npos);
+    EXPECT_EQ(w.find("!7V250", before), std::string::npos) << "the program's own speed unscaled";
+    // A pause that stops the spindle, the override lowered meanwhile: the restart at the new one.
+    ASSERT_FALSE(w.sim.core.pause(w.sim.runner.now(), true));
+    ASSERT_TRUE(w.until(
+        [&] { return w.state().mode == MachineMode::Paused && !w.unit().spindleTurning(); }));
+    const std::size_t held = w.sent.size();
+    ASSERT_FALSE(w.sim.core.execute(op::SetSpindleOverride{50}, w.sim.runner.now()));
+    w.sim.runner.runFor(0.5);
+    EXPECT_EQ(w.find("!7V", held), std::string::npos) << "a stopped spindle stays stopped";
+    ASSERT_FALSE(w.sim.core.resume(w.sim.runner.now()));
+    ASSERT_TRUE(w.until([&] { return w.state().mode == MachineMode::Running; })) << w.sim.lastLog();
+    EXPECT_NE(w.find("!7V125", held), std::string::npos);
+    EXPECT_EQ(w.unit().spindlePermille(), 125);
+    w.expectCleanEnd(program);
+}
+
 } // namespace
 } // namespace frezka::driver::test
