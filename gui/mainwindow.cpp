@@ -359,6 +359,8 @@ SettingsDialog *MainWindow::openSettings()
         m_settings = new SettingsDialog(profile(), m_profilePath, this);
         m_settings->setAttribute(Qt::WA_DeleteOnClose);
         connect(m_settings, &SettingsDialog::profileApplied, this, &MainWindow::applyProfile);
+        connect(m_settings, &SettingsDialog::shortcutsChanged, this,
+                &MainWindow::applyShortcutKeys);
     }
     m_settings->show();
     m_settings->raise();
@@ -448,37 +450,6 @@ void MainWindow::checkProgramLimits()
 }
 
 // ---- keyboard jog ----
-
-bool MainWindow::jogKey(QKeyEvent *event, bool pressed)
-{
-    if (event->isAutoRepeat())
-        return true;
-    int axis = -1, dir = 0;
-    switch (event->key()) {
-    case Qt::Key_Left:
-        axis = 0, dir = -1;
-        break;
-    case Qt::Key_Right:
-        axis = 0, dir = 1;
-        break;
-    case Qt::Key_Down:
-        axis = 1, dir = -1;
-        break;
-    case Qt::Key_Up:
-        axis = 1, dir = 1;
-        break;
-    case Qt::Key_PageDown:
-        axis = 2, dir = -1;
-        break;
-    case Qt::Key_PageUp:
-        axis = 2, dir = 1;
-        break;
-    default:
-        return false;
-    }
-    m_jog->jogKey(axis, dir, pressed);
-    return true;
-}
 
 void MainWindow::keyPressEvent(QKeyEvent *event)
 {

@@ -159,6 +159,8 @@ private:
     void updateRunPhase();
     bool jogKey(QKeyEvent *event, bool pressed);
     void installShortcuts();
+    // The keys changed in the settings: the QShortcuts take them.
+    void applyShortcutKeys();
     void operatorKey(OperatorAction action);
 
     ToolpathView *m_view;

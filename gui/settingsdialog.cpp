@@ -3,6 +3,7 @@
 #include "language.h"
 #include "profileeditor.h"
 #include "profilestore.h"
+#include "shortcuteditor.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -28,6 +29,11 @@ SettingsDialog::SettingsDialog(const machine::MachineConfig &config, const QStri
     m_tabs = new QTabWidget(this);
     m_tabs->addTab(createProfilePage(config), QString());
     m_tabs->addTab(createApplicationPage(), QString());
+    m_shortcuts = new ShortcutEditor;
+    m_shortcuts->setObjectName(QStringLiteral("shortcutEditor"));
+    connect(m_shortcuts, &ShortcutEditor::shortcutsChanged, this,
+            &SettingsDialog::shortcutsChanged);
+    m_tabs->addTab(m_shortcuts, QString());
 
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
@@ -186,6 +192,7 @@ void SettingsDialog::retranslate()
     setWindowTitle(tr("Settings"));
     m_tabs->setTabText(0, tr("Machine profile"));
     m_tabs->setTabText(1, tr("Application"));
+    m_tabs->setTabText(2, tr("Shortcuts"));
     m_pathLabel->setText(m_path);
     m_load->setText(tr("Load…"));
     m_save->setText(tr("Save"));
