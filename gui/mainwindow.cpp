@@ -31,6 +31,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFileSystemWatcher>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMenuBar>
@@ -56,6 +57,8 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     m_view = new ToolpathView(this, backend);
     buildCentral();
     m_program = new ProgramSession(this);
+    m_watcher = new QFileSystemWatcher(this);
+    connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &MainWindow::onProgramFileChanged);
     m_offsets = new session::WorkOffsets(this);
     m_program->setViewBuilder(sceneBuilder(m_view->preferredMaxSegments(), m_view->usesOpenGl()));
 
@@ -147,7 +150,12 @@ void MainWindow::buildMenus()
     m_fileMenu = menuBar()->addMenu(QString());
     m_openAction = m_fileMenu->addAction(QString(), this, &MainWindow::openDialog);
     m_openAction->setShortcut(QKeySequence::Open);
+    m_reloadAction = m_fileMenu->addAction(QString(), this, &MainWindow::reloadProgram);
+    m_reloadAction->setObjectName(QStringLiteral("reloadProgram"));
+    m_reloadAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R)); // AXIS's
+    m_reloadAction->setEnabled(false);
     m_recentMenu = m_fileMenu->addMenu(QString());
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     m_fileMenu->addSeparator();
     m_quitAction = m_fileMenu->addAction(QString(), this, &QWidget::close);
     m_quitAction->setShortcut(QKeySequence::Quit);
@@ -206,6 +214,7 @@ void MainWindow::retranslate()
     m_plotDock->setWindowTitle(tr("Speed"));
     m_fileMenu->setTitle(tr("&File"));
     m_openAction->setText(tr("&Open program…"));
+    m_reloadAction->setText(tr("Re&load program"));
     m_recentMenu->setTitle(tr("Open &recent"));
     m_quitAction->setText(tr("&Quit"));
     m_machineMenu->setTitle(tr("&Machine"));
@@ -280,6 +289,7 @@ void MainWindow::openProgram(const QString &path)
 {
     // The renderer may only now know what it runs on (GL initialises on first show).
     m_program->setViewBuilder(sceneBuilder(m_view->preferredMaxSegments(), m_view->usesOpenGl()));
+    m_programModified = QFileInfo(path).lastModified();
     m_program->load(path);
 }
 
@@ -330,11 +340,18 @@ void MainWindow::connectProgram()
 
         m_plot->setPlanned(p.speed);
         checkProgramLimits();
+        updatePlacement();
         m_run->setProgress(0, 0, p.estimatedS);
         m_file->setText(tr("%1 — %n line(s)", nullptr, p.text ? p.text->lineCount() : 0)
                             .arg(QFileInfo(p.path).fileName()));
         retranslate();
         addRecent(p.path);
+        m_reloadAction->setEnabled(true);
+        if (m_watcher->files() != QStringList{p.path}) {
+            if (!m_watcher->files().isEmpty())
+                m_watcher->removePaths(m_watcher->files());
+            m_watcher->addPath(p.path);
+        }
         for (const auto &w : p.warnings)
             m_console->appendInfo(w.text);
         if (!p.errors.empty()) {

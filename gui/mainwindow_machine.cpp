@@ -8,6 +8,7 @@
 #include "iopanel.h"
 #include "jogpanel.h"
 #include "outputspanel.h"
+#include "placementbar.h"
 #include "programlisting.h"
 #include "runpanel.h"
 #include "speedplot.h"
@@ -52,6 +53,9 @@ void MainWindow::buildCentral()
     layout->setSpacing(0);
     m_hold = new HoldBanner(central);
     layout->addWidget(m_hold);
+    m_placement = new PlacementBar(central);
+    connect(m_placement, &PlacementBar::workOffsetRequested, this, &MainWindow::placeWorkOffset);
+    layout->addWidget(m_placement);
     layout->addWidget(m_view, 1);
     setCentralWidget(central);
 }
@@ -128,6 +132,8 @@ void MainWindow::onJobFinished(bool ok)
         m_console->appendInfo(tr("Program finished."));
     }
     updateRunPhase();
+    if (m_reloadAfterJob)
+        promptReload(); // the file changed on disk while the job ran
 }
 
 void MainWindow::onChecked(bool ok)
@@ -277,6 +283,7 @@ void MainWindow::disconnectFromUnit()
 void MainWindow::onState(const driver::MachineState &state)
 {
     m_dro->setPositions(state.positionMm, m_offsets->workPosition(state.positionMm));
+    m_placement->setPosition(state.positionMm, state.mode == MachineMode::Idle);
     const std::array<bool, 4> homed{state.axisHomed(0), state.axisHomed(1), state.axisHomed(2),
                                     state.axisHomed(3)};
     m_dro->setHomed(homed);
