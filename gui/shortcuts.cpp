@@ -124,12 +124,15 @@ bool setShortcutKey(OperatorAction action, const QKeySequence &key, QString *err
         return false;
     };
     if (key.count() > 1)
-        return refuse(translated("Give one key (with Ctrl, Shift or Alt if you like), not a "
-                                 "sequence of keys."));
+        return refuse(QCoreApplication::translate(
+            "frezka::gui::Shortcuts",
+            "Give one key (with Ctrl, Shift or Alt if you like), not a sequence of keys."));
     for (const OperatorShortcut &other : operatorShortcuts()) {
         if (other.action != action && !key.isEmpty() && shortcutKey(other) == key)
-            return refuse(translated("%1 is already the key of “%2”. Give that action another "
-                                     "key first, or choose a different key.")
+            return refuse(QCoreApplication::translate(
+                              "frezka::gui::Shortcuts",
+                              "%1 is already the key of “%2”. Give that action another key "
+                              "first, or choose a different key.")
                               .arg(key.toString(QKeySequence::NativeText), shortcutCaption(other)));
     }
     const OperatorShortcut &s = operatorShortcut(action);

@@ -3226,6 +3226,30 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>&amp;Keyboard shortcuts</source>
         <translation>&amp;Klávesové zkratky</translation>
     </message>
+    <message>
+        <source>Re&amp;load program</source>
+        <translation>&amp;Znovu načíst program</translation>
+    </message>
+    <message>
+        <source>The program cannot be reloaded while its job runs: let it finish or abort it, then reload.</source>
+        <translation>Program nelze znovu načíst, dokud běží jeho úloha: nechte ji doběhnout nebo ji přerušte a pak program načtěte znovu.</translation>
+    </message>
+    <message>
+        <source>%1 has changed on disk. Reload it? Until then the listing, the preview and the job are of the version read before.</source>
+        <translation>Soubor %1 se na disku změnil. Načíst jej znovu? Do té doby výpis, náhled i úloha odpovídají dříve načtené verzi.</translation>
+    </message>
+    <message>
+        <source>Reload</source>
+        <translation>Načíst znovu</translation>
+    </message>
+    <message>
+        <source>Keep the version read before</source>
+        <translation>Ponechat dříve načtenou verzi</translation>
+    </message>
+    <message>
+        <source>Work offset %1 set to X %2, Y %3, Z %4 mm.</source>
+        <translation>Posunutí nulového bodu %1 nastaveno na X %2, Y %3, Z %4 mm.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3272,6 +3296,69 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</source>
         <translation>Sériová linka nestačí přenášet pohyb programu při %1 %: jednotka běží na %2 %, dokud pohyb před ní není dost pomalý, aby se jí fronta nikdy nevyprázdnila.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::PlacementBar</name>
+    <message>
+        <source>%1 goes to %2 mm at line %3, %4 mm beyond the travel&apos;s %5 mm.</source>
+        <translation>%1 jde od řádku %3 až na %2 mm, o %4 mm za mez pojezdu %5 mm.</translation>
+    </message>
+    <message>
+        <source>The program leaves the machine&apos;s travel at the current work zero. %1 Its coordinates are probably relative to the stock: bring the tool to the chosen point of the stock, its tip on the stock&apos;s top (the program&apos;s Z0), and set the work zero there.</source>
+        <translation>Program při současném nulovém bodu obrobku opouští pojezd stroje. %1 Jeho souřadnice jsou nejspíš vztažené k polotovaru: najeďte nástrojem na zvolený bod polotovaru, špičkou na jeho horní plochu (Z0 programu), a nastavte tam nulový bod.</translation>
+    </message>
+    <message>
+        <source>With the work zero set here the program would sit at %1 mm: inside the travel.</source>
+        <translation>S nulovým bodem nastaveným zde by program ležel v %1 mm: uvnitř pojezdu.</translation>
+    </message>
+    <message>
+        <source>With the work zero set here the program would sit at %1 mm: still outside the travel. Move to the stock first or choose another point.</source>
+        <translation>S nulovým bodem nastaveným zde by program ležel v %1 mm: stále mimo pojezd. Nejprve najeďte k polotovaru nebo zvolte jiný bod.</translation>
+    </message>
+    <message>
+        <source>Here is the stock&apos;s:</source>
+        <translation>Zde je na polotovaru:</translation>
+    </message>
+    <message>
+        <source>program&apos;s X0 Y0</source>
+        <translation>X0 Y0 programu</translation>
+    </message>
+    <message>
+        <source>front left corner</source>
+        <translation>přední levý roh</translation>
+    </message>
+    <message>
+        <source>front right corner</source>
+        <translation>přední pravý roh</translation>
+    </message>
+    <message>
+        <source>back left corner</source>
+        <translation>zadní levý roh</translation>
+    </message>
+    <message>
+        <source>back right corner</source>
+        <translation>zadní pravý roh</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>střed</translation>
+    </message>
+    <message>
+        <source>Set the work zero here</source>
+        <translation>Nastavit nulový bod zde</translation>
+    </message>
+    <message>
+        <source>Sets the active work offset so that the chosen point of the program is at the current X/Y and the program&apos;s Z0 at the current Z</source>
+        <translation>Nastaví aktivní posunutí nulového bodu tak, aby zvolený bod programu byl v současné poloze X/Y a Z0 programu v současné poloze Z</translation>
+    </message>
+    <message>
+        <source>Shift into the travel</source>
+        <translation>Posunout do pojezdu</translation>
+    </message>
+    <message>
+        <source>Shifts the active work offset by the least that puts the whole program inside the soft limits (as frezka-cli check suggests)</source>
+        <translation>Posune aktivní posunutí nulového bodu o nejmenší hodnotu, která dostane celý program do softwarových mezí (jak navrhuje frezka-cli check)</translation>
     </message>
 </context>
 <context>
@@ -4044,6 +4131,45 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Reconnect automatically after a lost link</source>
         <translation>Po ztrátě spojení se automaticky znovu připojit</translation>
     </message>
+    <message>
+        <source>Shortcuts</source>
+        <translation>Klávesové zkratky</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ShortcutEditor</name>
+    <message>
+        <source>“%1” now has the key %2.</source>
+        <translation>„%1“ má nyní klávesu %2.</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(žádná)</translation>
+    </message>
+    <message>
+        <source>Every key is back to its default.</source>
+        <translation>Všechny klávesy mají opět výchozí hodnoty.</translation>
+    </message>
+    <message>
+        <source>Click a key field and press the new key; it applies at once. A key that another action already has is refused.</source>
+        <translation>Klepněte do pole klávesy a stiskněte novou klávesu; platí okamžitě. Klávesa, kterou už má jiná akce, se odmítne.</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Akce</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Klávesa</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Výchozí</translation>
+    </message>
+    <message>
+        <source>Reset to defaults</source>
+        <translation>Obnovit výchozí</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::Shortcuts</name>
@@ -4092,10 +4218,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Klávesové zkratky</translation>
     </message>
     <message>
-        <source>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
-        <translation>Klávesy hlavního okna. Ruční posuv šipkami (X, Y) a klávesami Page Up/Down (Z). Textové pole s fokusem si písmena napsaná do něj ponechá; žádná klávesa nestiskne tlačítko jen proto, že má fokus.</translation>
-    </message>
-    <message>
         <source>Action</source>
         <translation>Akce</translation>
     </message>
@@ -4106,6 +4228,62 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>LinuxCNC AXIS</source>
         <translation>LinuxCNC AXIS</translation>
+    </message>
+    <message>
+        <source>Jog X−</source>
+        <translation>Posuv X−</translation>
+    </message>
+    <message>
+        <source>Jog X+</source>
+        <translation>Posuv X+</translation>
+    </message>
+    <message>
+        <source>Jog Y−</source>
+        <translation>Posuv Y−</translation>
+    </message>
+    <message>
+        <source>Jog Y+</source>
+        <translation>Posuv Y+</translation>
+    </message>
+    <message>
+        <source>Jog Z−</source>
+        <translation>Posuv Z−</translation>
+    </message>
+    <message>
+        <source>Jog Z+</source>
+        <translation>Posuv Z+</translation>
+    </message>
+    <message>
+        <source>Work zero of X here</source>
+        <translation>Nulový bod X zde</translation>
+    </message>
+    <message>
+        <source>Work zero of Y here</source>
+        <translation>Nulový bod Y zde</translation>
+    </message>
+    <message>
+        <source>Work zero of Z here</source>
+        <translation>Nulový bod Z zde</translation>
+    </message>
+    <message>
+        <source>Work zero of all axes here</source>
+        <translation>Nulový bod všech os zde</translation>
+    </message>
+    <message>
+        <source>Spindle on / off</source>
+        <translation>Vřeteno zapnout / vypnout</translation>
+    </message>
+    <message>
+        <source>Give one key (with Ctrl, Shift or Alt if you like), not a sequence of keys.</source>
+        <translation>Zadejte jednu klávesu (případně s Ctrl, Shift nebo Alt), ne posloupnost kláves.</translation>
+    </message>
+    <message>
+        <source>%1 is already the key of “%2”. Give that action another key first, or choose a different key.</source>
+        <translation>%1 už je klávesou akce „%2“. Nejprve dejte té akci jinou klávesu, nebo zvolte jinou klávesu.</translation>
+    </message>
+    <message>
+        <source>Keys of the main window; change them in Settings › Shortcuts. The jog keys act while held, only when jogging is possible (not while a job runs) and not while a text field has the focus. A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
+        <translation>Klávesy hlavního okna; změníte je v Nastavení › Klávesové zkratky. Klávesy ručního posuvu působí, dokud jsou drženy, jen když je ruční posuv možný (ne během úlohy) a ne když má fokus textové pole. Textové pole s fokusem si písmena napsaná do něj ponechá; žádná klávesa nestiskne tlačítko jen proto, že má fokus.</translation>
     </message>
 </context>
 <context>

@@ -3219,6 +3219,30 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>&amp;Keyboard shortcuts</source>
         <translation>&amp;Keyboard shortcuts</translation>
     </message>
+    <message>
+        <source>Re&amp;load program</source>
+        <translation>Re&amp;load program</translation>
+    </message>
+    <message>
+        <source>The program cannot be reloaded while its job runs: let it finish or abort it, then reload.</source>
+        <translation>The program cannot be reloaded while its job runs: let it finish or abort it, then reload.</translation>
+    </message>
+    <message>
+        <source>%1 has changed on disk. Reload it? Until then the listing, the preview and the job are of the version read before.</source>
+        <translation>%1 has changed on disk. Reload it? Until then the listing, the preview and the job are of the version read before.</translation>
+    </message>
+    <message>
+        <source>Reload</source>
+        <translation>Reload</translation>
+    </message>
+    <message>
+        <source>Keep the version read before</source>
+        <translation>Keep the version read before</translation>
+    </message>
+    <message>
+        <source>Work offset %1 set to X %2, Y %3, Z %4 mm.</source>
+        <translation>Work offset %1 set to X %2, Y %3, Z %4 mm.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3265,6 +3289,69 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</source>
         <translation>The serial link cannot carry the program&apos;s motion at %1 %: the unit runs %2 % until the motion ahead is slow enough, so that it never runs dry.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::PlacementBar</name>
+    <message>
+        <source>%1 goes to %2 mm at line %3, %4 mm beyond the travel&apos;s %5 mm.</source>
+        <translation>%1 goes to %2 mm at line %3, %4 mm beyond the travel&apos;s %5 mm.</translation>
+    </message>
+    <message>
+        <source>The program leaves the machine&apos;s travel at the current work zero. %1 Its coordinates are probably relative to the stock: bring the tool to the chosen point of the stock, its tip on the stock&apos;s top (the program&apos;s Z0), and set the work zero there.</source>
+        <translation>The program leaves the machine&apos;s travel at the current work zero. %1 Its coordinates are probably relative to the stock: bring the tool to the chosen point of the stock, its tip on the stock&apos;s top (the program&apos;s Z0), and set the work zero there.</translation>
+    </message>
+    <message>
+        <source>With the work zero set here the program would sit at %1 mm: inside the travel.</source>
+        <translation>With the work zero set here the program would sit at %1 mm: inside the travel.</translation>
+    </message>
+    <message>
+        <source>With the work zero set here the program would sit at %1 mm: still outside the travel. Move to the stock first or choose another point.</source>
+        <translation>With the work zero set here the program would sit at %1 mm: still outside the travel. Move to the stock first or choose another point.</translation>
+    </message>
+    <message>
+        <source>Here is the stock&apos;s:</source>
+        <translation>Here is the stock&apos;s:</translation>
+    </message>
+    <message>
+        <source>program&apos;s X0 Y0</source>
+        <translation>program&apos;s X0 Y0</translation>
+    </message>
+    <message>
+        <source>front left corner</source>
+        <translation>front left corner</translation>
+    </message>
+    <message>
+        <source>front right corner</source>
+        <translation>front right corner</translation>
+    </message>
+    <message>
+        <source>back left corner</source>
+        <translation>back left corner</translation>
+    </message>
+    <message>
+        <source>back right corner</source>
+        <translation>back right corner</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>centre</translation>
+    </message>
+    <message>
+        <source>Set the work zero here</source>
+        <translation>Set the work zero here</translation>
+    </message>
+    <message>
+        <source>Sets the active work offset so that the chosen point of the program is at the current X/Y and the program&apos;s Z0 at the current Z</source>
+        <translation>Sets the active work offset so that the chosen point of the program is at the current X/Y and the program&apos;s Z0 at the current Z</translation>
+    </message>
+    <message>
+        <source>Shift into the travel</source>
+        <translation>Shift into the travel</translation>
+    </message>
+    <message>
+        <source>Shifts the active work offset by the least that puts the whole program inside the soft limits (as frezka-cli check suggests)</source>
+        <translation>Shifts the active work offset by the least that puts the whole program inside the soft limits (as frezka-cli check suggests)</translation>
     </message>
 </context>
 <context>
@@ -4036,6 +4123,45 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Reconnect automatically after a lost link</source>
         <translation>Reconnect automatically after a lost link</translation>
     </message>
+    <message>
+        <source>Shortcuts</source>
+        <translation>Shortcuts</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ShortcutEditor</name>
+    <message>
+        <source>“%1” now has the key %2.</source>
+        <translation>“%1” now has the key %2.</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(none)</translation>
+    </message>
+    <message>
+        <source>Every key is back to its default.</source>
+        <translation>Every key is back to its default.</translation>
+    </message>
+    <message>
+        <source>Click a key field and press the new key; it applies at once. A key that another action already has is refused.</source>
+        <translation>Click a key field and press the new key; it applies at once. A key that another action already has is refused.</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Action</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Key</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Default</translation>
+    </message>
+    <message>
+        <source>Reset to defaults</source>
+        <translation>Reset to defaults</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::Shortcuts</name>
@@ -4084,10 +4210,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>Keyboard shortcuts</translation>
     </message>
     <message>
-        <source>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
-        <translation>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</translation>
-    </message>
-    <message>
         <source>Action</source>
         <translation>Action</translation>
     </message>
@@ -4098,6 +4220,62 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>LinuxCNC AXIS</source>
         <translation>LinuxCNC AXIS</translation>
+    </message>
+    <message>
+        <source>Jog X−</source>
+        <translation>Jog X−</translation>
+    </message>
+    <message>
+        <source>Jog X+</source>
+        <translation>Jog X+</translation>
+    </message>
+    <message>
+        <source>Jog Y−</source>
+        <translation>Jog Y−</translation>
+    </message>
+    <message>
+        <source>Jog Y+</source>
+        <translation>Jog Y+</translation>
+    </message>
+    <message>
+        <source>Jog Z−</source>
+        <translation>Jog Z−</translation>
+    </message>
+    <message>
+        <source>Jog Z+</source>
+        <translation>Jog Z+</translation>
+    </message>
+    <message>
+        <source>Work zero of X here</source>
+        <translation>Work zero of X here</translation>
+    </message>
+    <message>
+        <source>Work zero of Y here</source>
+        <translation>Work zero of Y here</translation>
+    </message>
+    <message>
+        <source>Work zero of Z here</source>
+        <translation>Work zero of Z here</translation>
+    </message>
+    <message>
+        <source>Work zero of all axes here</source>
+        <translation>Work zero of all axes here</translation>
+    </message>
+    <message>
+        <source>Spindle on / off</source>
+        <translation>Spindle on / off</translation>
+    </message>
+    <message>
+        <source>Give one key (with Ctrl, Shift or Alt if you like), not a sequence of keys.</source>
+        <translation>Give one key (with Ctrl, Shift or Alt if you like), not a sequence of keys.</translation>
+    </message>
+    <message>
+        <source>%1 is already the key of “%2”. Give that action another key first, or choose a different key.</source>
+        <translation>%1 is already the key of “%2”. Give that action another key first, or choose a different key.</translation>
+    </message>
+    <message>
+        <source>Keys of the main window; change them in Settings › Shortcuts. The jog keys act while held, only when jogging is possible (not while a job runs) and not while a text field has the focus. A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
+        <translation>Keys of the main window; change them in Settings › Shortcuts. The jog keys act while held, only when jogging is possible (not while a job runs) and not while a text field has the focus. A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</translation>
     </message>
 </context>
 <context>
