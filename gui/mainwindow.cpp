@@ -154,6 +154,9 @@ void MainWindow::buildMenus()
     m_reloadAction->setObjectName(QStringLiteral("reloadProgram"));
     m_reloadAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R)); // AXIS's
     m_reloadAction->setEnabled(false);
+    m_infoAction = m_fileMenu->addAction(QString(), this, [this] { openProgramInfo(); });
+    m_infoAction->setObjectName(QStringLiteral("programInfo"));
+    m_infoAction->setEnabled(false);
     m_recentMenu = m_fileMenu->addMenu(QString());
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     m_fileMenu->addSeparator();
@@ -215,6 +218,7 @@ void MainWindow::retranslate()
     m_fileMenu->setTitle(tr("&File"));
     m_openAction->setText(tr("&Open program…"));
     m_reloadAction->setText(tr("Re&load program"));
+    m_infoAction->setText(tr("Program &info…"));
     m_recentMenu->setTitle(tr("Open &recent"));
     m_quitAction->setText(tr("&Quit"));
     m_machineMenu->setTitle(tr("&Machine"));
@@ -347,6 +351,8 @@ void MainWindow::connectProgram()
         retranslate();
         addRecent(p.path);
         m_reloadAction->setEnabled(true);
+        m_infoAction->setEnabled(true);
+        updateProgramInfo();
         if (m_watcher->files() != QStringList{p.path}) {
             if (!m_watcher->files().isEmpty())
                 m_watcher->removePaths(m_watcher->files());

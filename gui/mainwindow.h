@@ -43,6 +43,7 @@ class JogPanel;
 class LoadProgress;
 class OutputsPanel;
 class PlacementBar;
+class ProgramInfoDialog;
 class ProgramListing;
 class RunPanel;
 class SpeedPlot;
@@ -102,6 +103,8 @@ public:
     // Reads the loaded program's file again (File › Reload), as a fresh open: checked, planned.
     // Refused while its job runs.
     void reloadProgram();
+    // File › Program info: size, extent, tools and their times (non-modal), shown and returned.
+    ProgramInfoDialog *openProgramInfo();
     // Sets the work zero of an axis (-1 = all) at the current machine position.
     void setWorkZero(int axis);
     void selectWorkOffset(int index);
@@ -148,6 +151,7 @@ private:
     void promptReload();
     // Where the loaded program sits against the travel (the placement bar) / its new work zero.
     void updatePlacement();
+    void updateProgramInfo();
     void placeWorkOffset(const session::Axes4 &offsetMm);
     void buildCentral();
     void onState(const driver::MachineState &state);
@@ -191,9 +195,9 @@ private:
     QDockWidget *m_statusDock, *m_droDock, *m_runDock, *m_jogDock, *m_outputsDock, *m_programDock,
         *m_consoleDock, *m_plotDock;
     QMenu *m_fileMenu, *m_recentMenu, *m_machineMenu, *m_viewMenu, *m_toolsMenu, *m_helpMenu;
-    QAction *m_openAction, *m_reloadAction, *m_quitAction, *m_connectAction, *m_disconnectAction,
-        *m_settingsAction, *m_unitConfigAction, *m_aboutAction, *m_shortcutsAction,
-        *m_grinderAction = nullptr, *m_resetLayoutAction;
+    QAction *m_openAction, *m_reloadAction, *m_infoAction, *m_quitAction, *m_connectAction,
+        *m_disconnectAction, *m_settingsAction, *m_unitConfigAction, *m_aboutAction,
+        *m_shortcutsAction, *m_grinderAction = nullptr, *m_resetLayoutAction;
     ProgramSession *m_program;
     QFileSystemWatcher *m_watcher; // the loaded program's file
     bool m_reloadAfterJob = false; // it changed while its job ran: ask when the job ends
@@ -219,6 +223,7 @@ private:
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;
     QPointer<UnitConfigDialog> m_unitConfig;
+    QPointer<ProgramInfoDialog> m_programInfo;
     QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };

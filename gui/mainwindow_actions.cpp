@@ -4,11 +4,13 @@
 #include "consolewidget.h"
 #include "drowidget.h"
 #include "placementbar.h"
+#include "programinfodialog.h"
 #include "speedplot.h"
 #include "toolpathview.h"
 
 #include "driver/link/machinecontroller.h"
 #include "machine/softlimits.h"
+#include "session/programinfo.h"
 #include "session/travelcheck.h"
 
 #include <QFileInfo>
@@ -99,6 +101,27 @@ void MainWindow::promptReload()
         ->setObjectName(QStringLiteral("reloadNo"));
     connect(reload, &QPushButton::clicked, this, &MainWindow::reloadProgram);
     box->show();
+}
+
+ProgramInfoDialog *MainWindow::openProgramInfo()
+{
+    if (!m_programInfo) {
+        m_programInfo = new ProgramInfoDialog(this);
+        m_programInfo->setAttribute(Qt::WA_DeleteOnClose);
+        updateProgramInfo();
+    }
+    m_programInfo->show();
+    m_programInfo->raise();
+    return m_programInfo;
+}
+
+void MainWindow::updateProgramInfo()
+{
+    if (!m_programInfo)
+        return;
+    const LoadedProgram &p = m_program->program();
+    m_programInfo->setInfo(session::programInfo(p, m_offsets->state(), profile()),
+                           QFileInfo(p.path).fileName());
 }
 
 void MainWindow::updatePlacement()

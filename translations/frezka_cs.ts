@@ -3250,6 +3250,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Work offset %1 set to X %2, Y %3, Z %4 mm.</source>
         <translation>Posunutí nulového bodu %1 nastaveno na X %2, Y %3, Z %4 mm.</translation>
     </message>
+    <message>
+        <source>Program &amp;info…</source>
+        <translation>&amp;Informace o programu…</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3893,6 +3897,69 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Cannot save the profile %1: %2</source>
         <translation>Profil %1 nelze uložit: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProgramInfoDialog</name>
+    <message>
+        <source>not planned</source>
+        <translation>nenaplánováno</translation>
+    </message>
+    <message>
+        <source>%1: %2 lines, %3 bytes, %4 moves, %5 mm of path, estimated time %6.</source>
+        <translation>%1: řádků %2, bajtů %3, pohybů %4, dráha %5 mm, odhadovaný čas %6.</translation>
+    </message>
+    <message>
+        <source>in the spindle</source>
+        <translation>ve vřeteni</translation>
+    </message>
+    <message>
+        <source>Program info</source>
+        <translation>Informace o programu</translation>
+    </message>
+    <message>
+        <source>Extent (mm)</source>
+        <translation>Rozsah (mm)</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Osa</translation>
+    </message>
+    <message>
+        <source>Program min</source>
+        <translation>Min. v programu</translation>
+    </message>
+    <message>
+        <source>Program max</source>
+        <translation>Max. v programu</translation>
+    </message>
+    <message>
+        <source>Machine min</source>
+        <translation>Min. na stroji</translation>
+    </message>
+    <message>
+        <source>Machine max</source>
+        <translation>Max. na stroji</translation>
+    </message>
+    <message>
+        <source>Tools in their order</source>
+        <translation>Nástroje v pořadí použití</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Nástroj</translation>
+    </message>
+    <message>
+        <source>From line</source>
+        <translation>Od řádku</translation>
+    </message>
+    <message>
+        <source>Planned time</source>
+        <translation>Plánovaný čas</translation>
+    </message>
+    <message>
+        <source>Cut length (mm)</source>
+        <translation>Délka řezu (mm)</translation>
     </message>
 </context>
 <context>

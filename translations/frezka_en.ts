@@ -3243,6 +3243,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Work offset %1 set to X %2, Y %3, Z %4 mm.</source>
         <translation>Work offset %1 set to X %2, Y %3, Z %4 mm.</translation>
     </message>
+    <message>
+        <source>Program &amp;info…</source>
+        <translation>Program &amp;info…</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3885,6 +3889,69 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Cannot save the profile %1: %2</source>
         <translation>Cannot save the profile %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProgramInfoDialog</name>
+    <message>
+        <source>not planned</source>
+        <translation>not planned</translation>
+    </message>
+    <message>
+        <source>%1: %2 lines, %3 bytes, %4 moves, %5 mm of path, estimated time %6.</source>
+        <translation>%1: %2 lines, %3 bytes, %4 moves, %5 mm of path, estimated time %6.</translation>
+    </message>
+    <message>
+        <source>in the spindle</source>
+        <translation>in the spindle</translation>
+    </message>
+    <message>
+        <source>Program info</source>
+        <translation>Program info</translation>
+    </message>
+    <message>
+        <source>Extent (mm)</source>
+        <translation>Extent (mm)</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Axis</translation>
+    </message>
+    <message>
+        <source>Program min</source>
+        <translation>Program min</translation>
+    </message>
+    <message>
+        <source>Program max</source>
+        <translation>Program max</translation>
+    </message>
+    <message>
+        <source>Machine min</source>
+        <translation>Machine min</translation>
+    </message>
+    <message>
+        <source>Machine max</source>
+        <translation>Machine max</translation>
+    </message>
+    <message>
+        <source>Tools in their order</source>
+        <translation>Tools in their order</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Tool</translation>
+    </message>
+    <message>
+        <source>From line</source>
+        <translation>From line</translation>
+    </message>
+    <message>
+        <source>Planned time</source>
+        <translation>Planned time</translation>
+    </message>
+    <message>
+        <source>Cut length (mm)</source>
+        <translation>Cut length (mm)</translation>
     </message>
 </context>
 <context>

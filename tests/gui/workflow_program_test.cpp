@@ -6,7 +6,9 @@
 
 #include "workflowfixture.h"
 
+#include "gui/holdbanner.h"
 #include "gui/placementbar.h"
+#include "gui/programinfodialog.h"
 #include "gui/programlisting.h"
 #include "gui/toolpathview.h"
 #include "gui/toolpathviewmodel.h"
@@ -15,6 +17,7 @@
 #include <QFile>
 #include <QMenu>
 #include <QMessageBox>
+#include <QTableWidget>
 
 #include <optional>
 
@@ -164,6 +167,76 @@ private slots:
         reloadPrompt()->findChild<QPushButton *>(QStringLiteral("reloadYes"))->click();
         QVERIFY(loaded.wait(20000));
         QVERIFY(runsTo(30, 3));
+    }
+
+    // File › Program info: size, extent, the tools in their order with the planner's time and
+    // cut length; the job then reaches exactly the extent it shows on the unit's counters.
+    void programInfoShowsSizeExtentAndTools()
+    {
+        QVERIFY(waitIdle());
+        const QString path = writeProgram(QStringLiteral("tools.nc"),
+                                          "G21 G90\nT1 M6\nG0 X10 Y10\nG1 Z-2 F300\n"
+                                          "G1 X30 F600\nT2 M6\nG1 Y40\nG0 Z0\nG0 X0 Y0\nM2\n");
+        QVERIFY(load(path));
+        QVERIFY(program().runnable());
+        QAction *action = m_window->findChild<QAction *>(QStringLiteral("programInfo"));
+        QVERIFY(action && action->isEnabled());
+        action->trigger();
+        auto *info = m_window->findChild<ProgramInfoDialog *>(QStringLiteral("programInfoDialog"));
+        QVERIFY(info && info->isVisible() && !info->isModal());
+        QVERIFY2(info->summary().contains(
+                     QStringLiteral("tools.nc: 10 lines, %1 bytes").arg(QFileInfo(path).size())),
+                 qPrintable(info->summary()));
+        auto *extent = info->findChild<QTableWidget *>(QStringLiteral("programInfoExtent"));
+        const auto cell = [](QTableWidget *t, int r, int c) { return t->item(r, c)->text(); };
+        QCOMPARE(extent->rowCount(), 3);
+        QCOMPARE(cell(extent, 0, 1) + QLatin1Char(' ') + cell(extent, 0, 2),
+                 QStringLiteral("0.000 30.000"));
+        QCOMPARE(cell(extent, 1, 1) + QLatin1Char(' ') + cell(extent, 1, 2),
+                 QStringLiteral("0.000 40.000"));
+        QCOMPARE(cell(extent, 2, 1) + QLatin1Char(' ') + cell(extent, 2, 2),
+                 QStringLiteral("-2.000 0.000"));
+        auto *tools = info->findChild<QTableWidget *>(QStringLiteral("programInfoTools"));
+        QCOMPARE(tools->rowCount(), 2);
+        QCOMPARE(cell(tools, 0, 0), QStringLiteral("T1"));
+        QCOMPARE(cell(tools, 0, 1), QStringLiteral("2"));
+        QCOMPARE(cell(tools, 0, 3), QStringLiteral("22.0"));
+        QCOMPARE(cell(tools, 1, 0), QStringLiteral("T2"));
+        QCOMPARE(cell(tools, 1, 1), QStringLiteral("6"));
+        QCOMPARE(cell(tools, 1, 3), QStringLiteral("30.0"));
+        const session::ProgramInfo pi =
+            session::programInfo(program(), m_window->offsets()->state(), m_window->profile());
+        QVERIFY(pi.tools[0].seconds > 0 && pi.tools[1].seconds > 0);
+        QVERIFY(std::abs(pi.tools[0].seconds + pi.tools[1].seconds - program().estimatedS) <
+                0.01 * program().estimatedS);
+        info->close();
+        // The job, continued at both M6: the unit's counters reach exactly that extent.
+        std::array<std::int64_t, 3> lo{state().positionSteps[0], state().positionSteps[1],
+                                       state().positionSteps[2]},
+            hi = lo;
+        const auto track = connect(m_window->controller(), &driver::MachineController::stateChanged,
+                                   this, [&](const driver::MachineState &s) {
+                                       for (std::size_t a = 0; a < 3; ++a) {
+                                           lo[a] = std::min(lo[a], s.positionSteps[a]);
+                                           hi[a] = std::max(hi[a], s.positionSteps[a]);
+                                       }
+                                   });
+        const auto untrack = qScopeGuard([&] { disconnect(track); });
+        QSignalSpy finished(m_window->workflow(), &session::RunWorkflow::jobFinished);
+        m_window->runProgram();
+        for (const std::uint32_t line : {2u, 6u}) {
+            QTRY_VERIFY2_WITH_TIMEOUT(state().mode == MachineMode::Paused &&
+                                          state().hold == driver::HoldReason::OperatorStop &&
+                                          state().holdLine == line,
+                                      qPrintable(describe()), kMachineTimeoutMs);
+            button(m_window->holdBanner(), "holdContinue")->click();
+        }
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY(finished.front().front().toBool());
+        QCOMPARE(hi[0], steps(0, 30));
+        QCOMPARE(hi[1], steps(1, 40));
+        QCOMPARE(lo[0], steps(0, 0));
+        QCOMPARE(lo[2], steps(2, -2));
     }
 
     // A CAM program relative to its stock (safe height Z+5, X/Y around 0) on a machine whose
