@@ -71,6 +71,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     m_state = new QLabel(this);
     m_state->setObjectName(QStringLiteral("machineStatus"));
     m_file = new QLabel(this);
+    m_file->setObjectName(QStringLiteral("programFile"));
     m_file->setMinimumWidth(260); // file name changes should not relayout the window
     m_io = new IoPanel(this);
     m_loadProgress = new LoadProgress(this);
@@ -94,6 +95,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
         restoreState(s.value(QStringLiteral("window/state")).toByteArray());
     }
     updateRecentMenu();
+    applyDisplayUnits();
     const ProfileLoad profile = loadCurrentProfile();
     applyProfile(profile.config, profile.path);
     for (const QString &notice : profile.notices)
@@ -347,7 +349,8 @@ void MainWindow::connectProgram()
         updatePlacement();
         m_run->setProgress(0, 0, p.estimatedS);
         m_file->setText(tr("%1 — %n line(s)", nullptr, p.text ? p.text->lineCount() : 0)
-                            .arg(QFileInfo(p.path).fileName()));
+                            .arg(QFileInfo(p.path).fileName()) +
+                        QStringLiteral(" · ") + programUnitsText());
         retranslate();
         addRecent(p.path);
         m_reloadAction->setEnabled(true);
@@ -384,6 +387,8 @@ SettingsDialog *MainWindow::openSettings()
         connect(m_settings, &SettingsDialog::profileApplied, this, &MainWindow::applyProfile);
         connect(m_settings, &SettingsDialog::shortcutsChanged, this,
                 &MainWindow::applyShortcutKeys);
+        connect(m_settings, &SettingsDialog::displayUnitsChanged, this,
+                &MainWindow::applyDisplayUnits);
     }
     m_settings->show();
     m_settings->raise();

@@ -152,6 +152,10 @@ private:
     // Where the loaded program sits against the travel (the placement bar) / its new work zero.
     void updatePlacement();
     void updateProgramInfo();
+    // mm or inch (Settings › Application) into the DRO, the jog, the status panel, the plot.
+    void applyDisplayUnits();
+    // "G21: the program is in mm" — the loaded program's units as its first lines set them.
+    QString programUnitsText() const;
     void placeWorkOffset(const session::Axes4 &offsetMm);
     void buildCentral();
     void onState(const driver::MachineState &state);

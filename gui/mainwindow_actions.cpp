@@ -3,14 +3,17 @@
 
 #include "consolewidget.h"
 #include "drowidget.h"
+#include "jogpanel.h"
 #include "placementbar.h"
 #include "programinfodialog.h"
 #include "speedplot.h"
+#include "statuspanel.h"
 #include "toolpathview.h"
 
 #include "driver/link/machinecontroller.h"
 #include "machine/softlimits.h"
 #include "session/programinfo.h"
+#include "session/programmodes.h"
 #include "session/travelcheck.h"
 
 #include <QFileInfo>
@@ -101,6 +104,26 @@ void MainWindow::promptReload()
         ->setObjectName(QStringLiteral("reloadNo"));
     connect(reload, &QPushButton::clicked, this, &MainWindow::reloadProgram);
     box->show();
+}
+
+void MainWindow::applyDisplayUnits()
+{
+    const LengthUnit unit = displayUnit();
+    m_dro->setUnit(unit);
+    m_jog->setUnit(unit);
+    m_status->setUnit(unit);
+    m_plot->setUnit(unit);
+}
+
+QString MainWindow::programUnitsText() const
+{
+    const LoadedProgram &p = m_program->program();
+    if (!p.text)
+        return {};
+    // Units are set in a program's preamble: its first lines say it without reading it all.
+    session::ModalScanner scanner(p.text, m_offsets->active());
+    const int g = scanner.at(std::uint32_t(std::min(p.text->lineCount(), 2000))).g[gcode::kGUnits];
+    return g == 200 ? tr("G20: the program is in inches") : tr("G21: the program is in mm");
 }
 
 ProgramInfoDialog *MainWindow::openProgramInfo()

@@ -1,5 +1,6 @@
 #include "settingsdialog.h"
 
+#include "displayunits.h"
 #include "language.h"
 #include "profileeditor.h"
 #include "profilestore.h"
@@ -94,7 +95,18 @@ QWidget *SettingsDialog::createApplicationPage()
     m_reconnect->setChecked(QSettings().value(QStringLiteral("link/autoReconnect"), true).toBool());
     connect(m_reconnect, &QCheckBox::toggled, this,
             [](bool on) { QSettings().setValue(QStringLiteral("link/autoReconnect"), on); });
+    m_unitsLabel = new QLabel(appPage);
+    m_units = new QComboBox(appPage);
+    m_units->setObjectName(QStringLiteral("displayUnits"));
+    m_units->addItem(QString(), int(LengthUnit::Mm));
+    m_units->addItem(QString(), int(LengthUnit::Inch));
+    m_units->setCurrentIndex(m_units->findData(int(displayUnit())));
+    connect(m_units, &QComboBox::activated, this, [this](int i) {
+        setDisplayUnit(LengthUnit(m_units->itemData(i).toInt()));
+        emit displayUnitsChanged();
+    });
     appForm->addRow(m_languageLabel, m_language);
+    appForm->addRow(m_unitsLabel, m_units);
     appForm->addRow(m_reconnect);
     return appPage;
 }
@@ -202,6 +214,12 @@ void SettingsDialog::retranslate()
     m_languageLabel->setText(tr("Language"));
     m_language->setItemText(0, tr("System language"));
     m_reconnect->setText(tr("Reconnect automatically after a lost link"));
+    m_unitsLabel->setText(tr("Lengths shown in"));
+    m_units->setItemText(0, tr("millimetres (mm)"));
+    m_units->setItemText(1, tr("inches (in)"));
+    m_units->setToolTip(tr("The DRO, the jog steps and feed, the status panel and the speed plot. "
+                           "The machine, its profile and the programs' own G20/G21 are not "
+                           "affected."));
 }
 
 } // namespace frezka::gui

@@ -43,6 +43,8 @@ signals:
     void languageChosen(const QString &code);
     // The operator changed a keyboard shortcut (stored in QSettings already).
     void shortcutsChanged();
+    // The operator chose mm or inch for the display (stored in QSettings already).
+    void displayUnitsChanged();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -61,7 +63,8 @@ private:
     QString m_path;
     QTabWidget *m_tabs;
     QLabel *m_pathLabel, *m_message, *m_languageLabel;
-    QComboBox *m_language;
+    QComboBox *m_language, *m_units;
+    QLabel *m_unitsLabel;
     QCheckBox *m_reconnect;
     QPushButton *m_load, *m_save, *m_export, *m_defaults, *m_apply;
     QDialogButtonBox *m_buttons;

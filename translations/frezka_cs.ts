@@ -2947,6 +2947,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Before homing the counters do not say where the axes are: jogging ignores the soft limits and runs at most at the homing speed. Home the machine to have the limits and the full jog speed; a program asks for homing before it runs.</source>
         <translation>Před najetím do reference čítače neříkají, kde osy jsou: ruční posuv nebere ohled na softwarové limity a jede nejvýše rychlostí hledání reference. Najeďte stroj do reference, aby platily limity a plná rychlost posuvu; program si před spuštěním o referenci řekne.</translation>
     </message>
+    <message>
+        <source>Step (in):</source>
+        <translation>Krok (in):</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::MainWindow</name>
@@ -3253,6 +3257,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Program &amp;info…</source>
         <translation>&amp;Informace o programu…</translation>
+    </message>
+    <message>
+        <source>G20: the program is in inches</source>
+        <translation>G20: program je v palcích</translation>
+    </message>
+    <message>
+        <source>G21: the program is in mm</source>
+        <translation>G21: program je v mm</translation>
     </message>
 </context>
 <context>
@@ -4202,6 +4214,22 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Shortcuts</source>
         <translation>Klávesové zkratky</translation>
     </message>
+    <message>
+        <source>Lengths shown in</source>
+        <translation>Délky zobrazovat v</translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
+        <translation>milimetrech (mm)</translation>
+    </message>
+    <message>
+        <source>inches (in)</source>
+        <translation>palcích (in)</translation>
+    </message>
+    <message>
+        <source>The DRO, the jog steps and feed, the status panel and the speed plot. The machine, its profile and the programs&apos; own G20/G21 are not affected.</source>
+        <translation>Ukazatel polohy, kroky a rychlost ručního posuvu, stavový panel a graf rychlosti. Stroj, jeho profil ani vlastní G20/G21 programů se tím nemění.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ShortcutEditor</name>
@@ -4356,20 +4384,16 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
 <context>
     <name>frezka::gui::SpeedPlot</name>
     <message>
-        <source>mm/min along the path (%1 mm)</source>
-        <translation>mm/min podél dráhy (%1 mm)</translation>
+        <source>%1 along the path (%2 %3)</source>
+        <translation>%1 podél dráhy (%2 %3)</translation>
     </message>
     <message>
-        <source>%1 mm/min at %2 mm, line %3</source>
-        <translation>%1 mm/min na %2 mm, řádek %3</translation>
+        <source>%1 %2 at %3 %4, line %5</source>
+        <translation>%1 %2 na %3 %4, řádek %5</translation>
     </message>
 </context>
 <context>
     <name>frezka::gui::StatusPanel</name>
-    <message>
-        <source>%1 mm/min</source>
-        <translation>%1 mm/min</translation>
-    </message>
     <message>
         <source>%1 % (runs %2 %)</source>
         <translation>%1 % (běží %2 %)</translation>
@@ -4377,10 +4401,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>override %1</source>
         <translation>korekce %1</translation>
-    </message>
-    <message>
-        <source>programmed %1 mm/min × %2</source>
-        <translation>programováno %1 mm/min × %2</translation>
     </message>
     <message>
         <source>clockwise (M3)</source>
@@ -4445,6 +4465,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Connection</source>
         <translation>Spojení</translation>
+    </message>
+    <message>
+        <source>programmed %1 %2 × %3</source>
+        <translation>programováno %1 %2 × %3</translation>
     </message>
 </context>
 <context>

@@ -2944,6 +2944,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Before homing the counters do not say where the axes are: jogging ignores the soft limits and runs at most at the homing speed. Home the machine to have the limits and the full jog speed; a program asks for homing before it runs.</source>
         <translation>Before homing the counters do not say where the axes are: jogging ignores the soft limits and runs at most at the homing speed. Home the machine to have the limits and the full jog speed; a program asks for homing before it runs.</translation>
     </message>
+    <message>
+        <source>Step (in):</source>
+        <translation>Step (in):</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::MainWindow</name>
@@ -3246,6 +3250,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Program &amp;info…</source>
         <translation>Program &amp;info…</translation>
+    </message>
+    <message>
+        <source>G20: the program is in inches</source>
+        <translation>G20: the program is in inches</translation>
+    </message>
+    <message>
+        <source>G21: the program is in mm</source>
+        <translation>G21: the program is in mm</translation>
     </message>
 </context>
 <context>
@@ -4194,6 +4206,22 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Shortcuts</source>
         <translation>Shortcuts</translation>
     </message>
+    <message>
+        <source>Lengths shown in</source>
+        <translation>Lengths shown in</translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
+        <translation>millimetres (mm)</translation>
+    </message>
+    <message>
+        <source>inches (in)</source>
+        <translation>inches (in)</translation>
+    </message>
+    <message>
+        <source>The DRO, the jog steps and feed, the status panel and the speed plot. The machine, its profile and the programs&apos; own G20/G21 are not affected.</source>
+        <translation>The DRO, the jog steps and feed, the status panel and the speed plot. The machine, its profile and the programs&apos; own G20/G21 are not affected.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ShortcutEditor</name>
@@ -4348,20 +4376,16 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
 <context>
     <name>frezka::gui::SpeedPlot</name>
     <message>
-        <source>mm/min along the path (%1 mm)</source>
-        <translation>mm/min along the path (%1 mm)</translation>
+        <source>%1 along the path (%2 %3)</source>
+        <translation>%1 along the path (%2 %3)</translation>
     </message>
     <message>
-        <source>%1 mm/min at %2 mm, line %3</source>
-        <translation>%1 mm/min at %2 mm, line %3</translation>
+        <source>%1 %2 at %3 %4, line %5</source>
+        <translation>%1 %2 at %3 %4, line %5</translation>
     </message>
 </context>
 <context>
     <name>frezka::gui::StatusPanel</name>
-    <message>
-        <source>%1 mm/min</source>
-        <translation>%1 mm/min</translation>
-    </message>
     <message>
         <source>%1 % (runs %2 %)</source>
         <translation>%1 % (runs %2 %)</translation>
@@ -4369,10 +4393,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>override %1</source>
         <translation>override %1</translation>
-    </message>
-    <message>
-        <source>programmed %1 mm/min × %2</source>
-        <translation>programmed %1 mm/min × %2</translation>
     </message>
     <message>
         <source>clockwise (M3)</source>
@@ -4437,6 +4457,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Connection</source>
         <translation>Connection</translation>
+    </message>
+    <message>
+        <source>programmed %1 %2 × %3</source>
+        <translation>programmed %1 %2 × %3</translation>
     </message>
 </context>
 <context>
