@@ -210,7 +210,14 @@ private slots:
         QVERIFY(std::abs(pi.tools[0].seconds + pi.tools[1].seconds - program().estimatedS) <
                 0.01 * program().estimatedS);
         info->close();
-        // The job, continued at both M6: the unit's counters reach exactly that extent.
+    }
+
+    // The job of tools.nc, continued at both M6: the unit's counters reach exactly the extent
+    // the Program info window shows.
+    void theJobReachesTheShownExtent()
+    {
+        QVERIFY(waitIdle());
+        QCOMPARE(QFileInfo(program().path).fileName(), QStringLiteral("tools.nc"));
         std::array<std::int64_t, 3> lo{state().positionSteps[0], state().positionSteps[1],
                                        state().positionSteps[2]},
             hi = lo;
