@@ -9,6 +9,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <utility>
+
 namespace frezka::gui {
 
 namespace {
@@ -127,6 +129,23 @@ bool setShortcutKey(OperatorAction action, const QKeySequence &key, QString *err
         return refuse(QCoreApplication::translate(
             "frezka::gui::Shortcuts",
             "Give one key (with Ctrl, Shift or Alt if you like), not a sequence of keys."));
+    // The menu commands' own keys (gui/mainwindow.cpp): an operator key on one of them would
+    // make both ambiguous, and Qt then runs neither.
+    static const std::pair<QKeySequence, const char *> kMenuKeys[] = {
+        {QKeySequence(QKeySequence::Open),
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "File › Open program")},
+        {QKeySequence(Qt::CTRL | Qt::Key_R),
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "File › Reload program")},
+        {QKeySequence(QKeySequence::Quit),
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "File › Quit")},
+    };
+    for (const auto &[menuKey, command] : kMenuKeys) {
+        if (!key.isEmpty() && key == menuKey)
+            return refuse(QCoreApplication::translate(
+                              "frezka::gui::Shortcuts",
+                              "%1 is the key of the menu command “%2”. Choose a different key.")
+                              .arg(key.toString(QKeySequence::NativeText), translated(command)));
+    }
     for (const OperatorShortcut &other : operatorShortcuts()) {
         if (other.action != action && !key.isEmpty() && shortcutKey(other) == key)
             return refuse(QCoreApplication::translate(

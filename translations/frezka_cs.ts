@@ -4380,6 +4380,22 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Keys of the main window; change them in Settings › Shortcuts. The jog keys act while held, only when jogging is possible (not while a job runs) and not while a text field has the focus. A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
         <translation>Klávesy hlavního okna; změníte je v Nastavení › Klávesové zkratky. Klávesy ručního posuvu působí, dokud jsou drženy, jen když je ruční posuv možný (ne během úlohy) a ne když má fokus textové pole. Textové pole s fokusem si písmena napsaná do něj ponechá; žádná klávesa nestiskne tlačítko jen proto, že má fokus.</translation>
     </message>
+    <message>
+        <source>File › Open program</source>
+        <translation>Soubor › Otevřít program</translation>
+    </message>
+    <message>
+        <source>File › Reload program</source>
+        <translation>Soubor › Znovu načíst program</translation>
+    </message>
+    <message>
+        <source>File › Quit</source>
+        <translation>Soubor › Konec</translation>
+    </message>
+    <message>
+        <source>%1 is the key of the menu command “%2”. Choose a different key.</source>
+        <translation>%1 je klávesa příkazu nabídky „%2“. Zvolte jinou klávesu.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::SpeedPlot</name>

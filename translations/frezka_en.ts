@@ -4372,6 +4372,22 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Keys of the main window; change them in Settings › Shortcuts. The jog keys act while held, only when jogging is possible (not while a job runs) and not while a text field has the focus. A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
         <translation>Keys of the main window; change them in Settings › Shortcuts. The jog keys act while held, only when jogging is possible (not while a job runs) and not while a text field has the focus. A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</translation>
     </message>
+    <message>
+        <source>File › Open program</source>
+        <translation>File › Open program</translation>
+    </message>
+    <message>
+        <source>File › Reload program</source>
+        <translation>File › Reload program</translation>
+    </message>
+    <message>
+        <source>File › Quit</source>
+        <translation>File › Quit</translation>
+    </message>
+    <message>
+        <source>%1 is the key of the menu command “%2”. Choose a different key.</source>
+        <translation>%1 is the key of the menu command “%2”. Choose a different key.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::SpeedPlot</name>

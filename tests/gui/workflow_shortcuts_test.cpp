@@ -288,7 +288,8 @@ private slots:
 
     // Every key can be changed in Settings › Shortcuts (stored in QSettings, applied at once);
     // a key another action has is refused with a message naming that action; Reset to defaults
-    // brings the AXIS keys back.
+    // brings the AXIS keys back. One operator's visit to the editor and back at the machine, in
+    // order (each step needs the keys the one before left): longer than a slot usually is.
     void theKeysAreEditableInTheSettings()
     {
         QVERIFY(waitIdle());
@@ -311,6 +312,10 @@ private slots:
         QCOMPARE(keyOf(OperatorAction::ZeroY), QKeySequence(Qt::SHIFT | Qt::Key_Y));
         QVERIFY(!editor->assign(OperatorAction::JogYPlus, QKeySequence(Qt::Key_R), &why));
         QVERIFY2(why.contains(QStringLiteral("Run the program")), qPrintable(why));
+        // A menu command's key (File › Reload program) is refused too.
+        QVERIFY(!editor->assign(OperatorAction::ZeroAll, QKeySequence(Qt::CTRL | Qt::Key_R), &why));
+        QVERIFY2(why.contains(QStringLiteral("Reload program")), qPrintable(why));
+        QCOMPARE(keyOf(OperatorAction::ZeroAll), QKeySequence(Qt::Key_End));
         settings->close();
         focusTheWindow();
         // D jogs X+ now, the arrow no longer; F8 switches the spindle.
