@@ -87,9 +87,12 @@ void DroWidget::setAxisCount(int count)
 void DroWidget::setPositions(const std::array<double, 4> &machineMm,
                              const std::array<double, 4> &workMm)
 {
+    m_machineMm = machineMm;
+    m_workMm = workMm;
     for (int i = 0; i < 4; ++i) {
-        m_work[i]->setText(QString::number(workMm[i], 'f', 3));
-        m_machine[i]->setText(QString::number(machineMm[i], 'f', 3));
+        const LengthUnit unit = i < 3 ? m_unit : LengthUnit::Mm; // A: degrees
+        m_work[i]->setText(formatLength(workMm[i], unit));
+        m_machine[i]->setText(formatLength(machineMm[i], unit));
     }
 }
 
@@ -104,6 +107,13 @@ void DroWidget::setModelled(bool modelled)
         m_work[i]->setStyleSheet(grey);
         m_machine[i]->setStyleSheet(grey);
     }
+}
+
+void DroWidget::setUnit(LengthUnit unit)
+{
+    m_unit = unit;
+    retranslate();
+    setPositions(m_machineMm, m_workMm);
 }
 
 void DroWidget::setActiveOffset(int index)
@@ -141,8 +151,8 @@ void DroWidget::changeEvent(QEvent *event)
 
 void DroWidget::retranslate()
 {
-    m_workHeader->setText(tr("Work"));
-    m_machineHeader->setText(tr("Machine"));
+    m_workHeader->setText(QStringLiteral("%1 (%2)").arg(tr("Work"), lengthSuffix(m_unit)));
+    m_machineHeader->setText(QStringLiteral("%1 (%2)").arg(tr("Machine"), lengthSuffix(m_unit)));
     for (int i = 0; i < 4; ++i) {
         m_zero[i]->setText(tr("Zero"));
         m_zero[i]->setToolTip(

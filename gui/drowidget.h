@@ -2,6 +2,8 @@
 // DroWidget: digital read-out — work and machine coordinates for each axis of the unit variant,
 // with per-axis and all-axes "set work zero" and the active work offset (G54-G59.3).
 
+#include "displayunits.h"
+
 #include <QWidget>
 
 #include <array>
@@ -21,6 +23,8 @@ public:
     void setAxisCount(int count); // 3 (XYZ) or 4 (XYZA)
     int axisCount() const { return m_axisCount; }
     void setPositions(const std::array<double, 4> &machineMm, const std::array<double, 4> &workMm);
+    // mm or inch for X/Y/Z (A stays in degrees); the positions shown again in it.
+    void setUnit(LengthUnit unit);
     void setActiveOffset(int index); // 0 = G54 .. 8 = G59.3
     void setHomed(const std::array<bool, 4> &homed);
     // The figures are the driver's model of the unit between position reads (issue 16 item 3),
@@ -45,6 +49,8 @@ private:
     void retranslate();
 
     int m_axisCount = 4;
+    LengthUnit m_unit = LengthUnit::Mm;
+    std::array<double, 4> m_machineMm{}, m_workMm{}; // last shown
     std::array<QLabel *, 4> m_name{}, m_work{}, m_machine{};
     std::array<QPushButton *, 4> m_zero{};
     QPushButton *m_zeroAll;

@@ -14,7 +14,12 @@
 namespace frezka::gui {
 namespace {
 constexpr char kAxes[] = "XYZA";
-constexpr double kSteps[] = {0.01, 0.1, 1, 10};
+constexpr double kSteps[] = {0.01, 0.1, 1, 10};             // mm
+constexpr double kInchSteps[] = {0.0001, 0.001, 0.01, 0.1}; // in (LinuxCNC AXIS's)
+double stepOf(int i, LengthUnit unit)
+{
+    return unit == LengthUnit::Inch ? kInchSteps[i] : kSteps[i];
+}
 } // namespace
 
 JogPanel::JogPanel(QWidget *parent)
@@ -144,13 +149,13 @@ void JogPanel::setPerAxisHoming(bool available)
 double JogPanel::stepMm() const
 {
     const int id = m_steps->checkedId();
-    return id <= 0 ? 0.0 : kSteps[id - 1];
+    return id <= 0 ? 0.0 : toMm(stepOf(id - 1, m_unit), m_unit);
 }
 
 void JogPanel::setStepMm(double stepMm)
 {
     for (int i = 0; i < 4; ++i) {
-        if (qFuzzyCompare(kSteps[i], stepMm)) {
+        if (qFuzzyCompare(stepOf(i, m_unit), fromMm(stepMm, m_unit))) {
             m_steps->button(i + 1)->setChecked(true);
             return;
         }
@@ -160,7 +165,20 @@ void JogPanel::setStepMm(double stepMm)
 
 double JogPanel::feedMmPerMin() const
 {
-    return m_feed->value();
+    return toMm(m_feed->value(), m_unit);
+}
+
+void JogPanel::setUnit(LengthUnit unit)
+{
+    const double feedMm = feedMmPerMin();
+    m_unit = unit;
+    for (int i = 0; i < 4; ++i)
+        m_steps->button(i + 1)->setText(QString::number(stepOf(i, unit)));
+    m_feed->setDecimals(unit == LengthUnit::Inch ? 1 : 0);
+    m_feed->setRange(fromMm(1, unit), fromMm(100000, unit));
+    m_feed->setSuffix(QLatin1Char(' ') + feedSuffix(unit));
+    m_feed->setValue(fromMm(feedMm, unit));
+    retranslate();
 }
 
 void JogPanel::setMpgAvailable(bool available)
@@ -229,7 +247,7 @@ void JogPanel::retranslate()
     }
     m_homeAll->setText(tr("Home all"));
     m_homeAll->setToolTip(tr("Home every axis in the order of the machine profile"));
-    m_stepLabel->setText(tr("Step (mm):"));
+    m_stepLabel->setText(m_unit == LengthUnit::Inch ? tr("Step (in):") : tr("Step (mm):"));
     m_continuous->setText(tr("Continuous"));
     m_continuous->setToolTip(tr("Move while the button or key is held"));
     m_feedLabel->setText(tr("Jog feed:"));

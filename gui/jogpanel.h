@@ -3,6 +3,8 @@
 // jog feed, homing (all / per axis) and the MPG switch. It only asks; the soft-limit policy
 // (machine/softlimits.h) decides in the driver. Shows which axes are not homed (limits off).
 
+#include "displayunits.h"
+
 #include <QWidget>
 
 #include <array>
@@ -30,6 +32,9 @@ public:
     double stepMm() const;
     void setStepMm(double stepMm);
     double feedMmPerMin() const;
+    // The steps and the feed in mm or inch (0.0001 .. 0.1 in); stepMm() and feedMmPerMin()
+    // stay in mm. The chosen step keeps its place in the row.
+    void setUnit(LengthUnit unit);
     void setMpgAvailable(bool available);
     // Per-axis homing buttons (hidden while the driver homes only the whole machine).
     void setPerAxisHoming(bool available);
@@ -71,6 +76,7 @@ private:
     bool m_connected = false;
     int m_axisCount = 4;
     bool m_perAxisHoming = true;
+    LengthUnit m_unit = LengthUnit::Mm;
 };
 
 } // namespace frezka::gui

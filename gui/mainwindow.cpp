@@ -31,6 +31,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFileSystemWatcher>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMenuBar>
@@ -56,6 +57,8 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     m_view = new ToolpathView(this, backend);
     buildCentral();
     m_program = new ProgramSession(this);
+    m_watcher = new QFileSystemWatcher(this);
+    connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &MainWindow::onProgramFileChanged);
     m_offsets = new session::WorkOffsets(this);
     m_program->setViewBuilder(sceneBuilder(m_view->preferredMaxSegments(), m_view->usesOpenGl()));
 
@@ -68,6 +71,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     m_state = new QLabel(this);
     m_state->setObjectName(QStringLiteral("machineStatus"));
     m_file = new QLabel(this);
+    m_file->setObjectName(QStringLiteral("programFile"));
     m_file->setMinimumWidth(260); // file name changes should not relayout the window
     m_io = new IoPanel(this);
     m_loadProgress = new LoadProgress(this);
@@ -91,6 +95,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
         restoreState(s.value(QStringLiteral("window/state")).toByteArray());
     }
     updateRecentMenu();
+    applyDisplayUnits();
     const ProfileLoad profile = loadCurrentProfile();
     applyProfile(profile.config, profile.path);
     for (const QString &notice : profile.notices)
@@ -147,7 +152,15 @@ void MainWindow::buildMenus()
     m_fileMenu = menuBar()->addMenu(QString());
     m_openAction = m_fileMenu->addAction(QString(), this, &MainWindow::openDialog);
     m_openAction->setShortcut(QKeySequence::Open);
+    m_reloadAction = m_fileMenu->addAction(QString(), this, &MainWindow::reloadProgram);
+    m_reloadAction->setObjectName(QStringLiteral("reloadProgram"));
+    m_reloadAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R)); // AXIS's
+    m_reloadAction->setEnabled(false);
+    m_infoAction = m_fileMenu->addAction(QString(), this, [this] { openProgramInfo(); });
+    m_infoAction->setObjectName(QStringLiteral("programInfo"));
+    m_infoAction->setEnabled(false);
     m_recentMenu = m_fileMenu->addMenu(QString());
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     m_fileMenu->addSeparator();
     m_quitAction = m_fileMenu->addAction(QString(), this, &QWidget::close);
     m_quitAction->setShortcut(QKeySequence::Quit);
@@ -207,6 +220,8 @@ void MainWindow::retranslate()
     m_plotDock->setWindowTitle(tr("Speed"));
     m_fileMenu->setTitle(tr("&File"));
     m_openAction->setText(tr("&Open program…"));
+    m_reloadAction->setText(tr("Re&load program"));
+    m_infoAction->setText(tr("Program &info…"));
     m_recentMenu->setTitle(tr("Open &recent"));
     m_quitAction->setText(tr("&Quit"));
     m_machineMenu->setTitle(tr("&Machine"));
@@ -284,6 +299,7 @@ void MainWindow::openProgram(const QString &path)
     // The renderer may only now know what it runs on (GL initialises on first show).
     m_program->setViewBuilder(sceneBuilder(m_view->preferredMaxSegments(), m_view->usesOpenGl()));
     m_program->setStartLine(0); // a new program runs whole
+    m_programModified = QFileInfo(path).lastModified();
     m_program->load(path);
 }
 
@@ -334,11 +350,21 @@ void MainWindow::connectProgram()
 
         m_plot->setPlanned(p.speed);
         checkProgramLimits();
+        updatePlacement();
         m_run->setProgress(0, 0, p.estimatedS);
         m_file->setText(tr("%1 — %n line(s)", nullptr, p.text ? p.text->lineCount() : 0)
-                            .arg(QFileInfo(p.path).fileName()));
+                            .arg(QFileInfo(p.path).fileName()) +
+                        QStringLiteral(" · ") + programUnitsText());
         retranslate();
         addRecent(p.path);
+        m_reloadAction->setEnabled(true);
+        m_infoAction->setEnabled(true);
+        updateProgramInfo();
+        if (m_watcher->files() != QStringList{p.path}) {
+            if (!m_watcher->files().isEmpty())
+                m_watcher->removePaths(m_watcher->files());
+            m_watcher->addPath(p.path);
+        }
         for (const auto &w : p.warnings)
             m_console->appendInfo(w.text);
         onFromLineLoaded();
@@ -364,6 +390,10 @@ SettingsDialog *MainWindow::openSettings()
         m_settings = new SettingsDialog(profile(), m_profilePath, this);
         m_settings->setAttribute(Qt::WA_DeleteOnClose);
         connect(m_settings, &SettingsDialog::profileApplied, this, &MainWindow::applyProfile);
+        connect(m_settings, &SettingsDialog::shortcutsChanged, this,
+                &MainWindow::applyShortcutKeys);
+        connect(m_settings, &SettingsDialog::displayUnitsChanged, this,
+                &MainWindow::applyDisplayUnits);
     }
     m_settings->show();
     m_settings->raise();
@@ -453,37 +483,6 @@ void MainWindow::checkProgramLimits()
 }
 
 // ---- keyboard jog ----
-
-bool MainWindow::jogKey(QKeyEvent *event, bool pressed)
-{
-    if (event->isAutoRepeat())
-        return true;
-    int axis = -1, dir = 0;
-    switch (event->key()) {
-    case Qt::Key_Left:
-        axis = 0, dir = -1;
-        break;
-    case Qt::Key_Right:
-        axis = 0, dir = 1;
-        break;
-    case Qt::Key_Down:
-        axis = 1, dir = -1;
-        break;
-    case Qt::Key_Up:
-        axis = 1, dir = 1;
-        break;
-    case Qt::Key_PageDown:
-        axis = 2, dir = -1;
-        break;
-    case Qt::Key_PageUp:
-        axis = 2, dir = 1;
-        break;
-    default:
-        return false;
-    }
-    m_jog->jogKey(axis, dir, pressed);
-    return true;
-}
 
 void MainWindow::keyPressEvent(QKeyEvent *event)
 {

@@ -17,6 +17,7 @@
 #include "session/runworkflow.h"
 #include "session/workoffsets.h"
 
+#include <QDateTime>
 #include <QMainWindow>
 #include <QPointer>
 
@@ -26,6 +27,7 @@ class QLabel;
 class QMenu;
 class QProgressBar;
 class QDockWidget;
+class QFileSystemWatcher;
 
 namespace frezka::driver {
 class MachineController;
@@ -40,6 +42,8 @@ class IoPanel;
 class JogPanel;
 class LoadProgress;
 class OutputsPanel;
+class PlacementBar;
+class ProgramInfoDialog;
 class ProgramListing;
 class RunPanel;
 class SpeedPlot;
@@ -80,6 +84,7 @@ public:
     ProgramSession *program() const { return m_program; }
     driver::MachineController *controller() const { return m_controller; }
     HoldBanner *holdBanner() const { return m_hold; }
+    PlacementBar *placementBar() const { return m_placement; }
     session::WorkOffsets *offsets() const { return m_offsets; }
     session::RunWorkflow *workflow() const { return m_workflow; }
     session::ConsoleSession *consoleSession() const { return m_consoleSession; }
@@ -101,6 +106,11 @@ public:
     // line… call it.
     void runFromLine(int line);
     void runWholeProgram();
+    // Reads the loaded program's file again (File › Reload), as a fresh open: checked, planned.
+    // Refused while its job runs.
+    void reloadProgram();
+    // File › Program info: size, extent, tools and their times (non-modal), shown and returned.
+    ProgramInfoDialog *openProgramInfo();
     // Sets the work zero of an axis (-1 = all) at the current machine position.
     void setWorkZero(int axis);
     void selectWorkOffset(int index);
@@ -143,6 +153,17 @@ private:
     void addRecent(const QString &path);
     void openDialog();
     void checkProgramLimits();
+    // The loaded file changed on disk: ask whether to reload it (after the job, if one runs).
+    void onProgramFileChanged(const QString &path);
+    void promptReload();
+    // Where the loaded program sits against the travel (the placement bar) / its new work zero.
+    void updatePlacement();
+    void updateProgramInfo();
+    // mm or inch (Settings › Application) into the DRO, the jog, the status panel, the plot.
+    void applyDisplayUnits();
+    // "G21: the program is in mm" — the loaded program's units as its first lines set them.
+    QString programUnitsText() const;
+    void placeWorkOffset(const session::Axes4 &offsetMm);
     void buildCentral();
     void onState(const driver::MachineState &state);
     void onMachineError(const driver::MachineError &error);
@@ -169,6 +190,8 @@ private:
     void buildFromLineActions(); // Machine › Run from line…, Run the whole program
     void askRunFromLine();
     void onFromLineLoaded();
+    // The keys changed in the settings: the QShortcuts take them.
+    void applyShortcutKeys();
     void operatorKey(OperatorAction action);
 
     ToolpathView *m_view;
@@ -186,12 +209,17 @@ private:
     QDockWidget *m_statusDock, *m_droDock, *m_runDock, *m_jogDock, *m_outputsDock, *m_programDock,
         *m_consoleDock, *m_plotDock;
     QMenu *m_fileMenu, *m_recentMenu, *m_machineMenu, *m_viewMenu, *m_toolsMenu, *m_helpMenu;
-    QAction *m_openAction, *m_quitAction, *m_connectAction, *m_disconnectAction, *m_settingsAction,
-        *m_unitConfigAction, *m_runFromLineAction, *m_wholeProgramAction, *m_aboutAction,
+    QAction *m_openAction, *m_reloadAction, *m_infoAction, *m_quitAction, *m_connectAction,
+        *m_disconnectAction, *m_settingsAction, *m_unitConfigAction, *m_runFromLineAction,
+        *m_wholeProgramAction, *m_aboutAction,
         *m_shortcutsAction, *m_grinderAction = nullptr, *m_resetLayoutAction;
     ProgramSession *m_program;
+    QFileSystemWatcher *m_watcher; // the loaded program's file
+    bool m_reloadAfterJob = false; // it changed while its job ran: ask when the job ends
+    QDateTime m_programModified;   // the file's time when it was read
     driver::MachineController *m_controller = nullptr;
     HoldBanner *m_hold = nullptr;
+    PlacementBar *m_placement = nullptr;
     session::WorkOffsets *m_offsets;
     session::MachineLink *m_link = nullptr;
     session::RunWorkflow *m_workflow = nullptr;
@@ -210,6 +238,7 @@ private:
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;
     QPointer<UnitConfigDialog> m_unitConfig;
+    QPointer<ProgramInfoDialog> m_programInfo;
     QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };

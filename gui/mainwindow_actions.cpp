@@ -3,13 +3,23 @@
 
 #include "consolewidget.h"
 #include "drowidget.h"
+#include "jogpanel.h"
+#include "placementbar.h"
+#include "programinfodialog.h"
 #include "speedplot.h"
+#include "statuspanel.h"
 #include "toolpathview.h"
 
 #include "driver/link/machinecontroller.h"
 #include "machine/softlimits.h"
+#include "session/programinfo.h"
+#include "session/programmodes.h"
+#include "session/travelcheck.h"
 
 #include <QFileInfo>
+#include <QFileSystemWatcher>
+#include <QMessageBox>
+#include <QPushButton>
 
 namespace frezka::gui {
 
@@ -39,6 +49,128 @@ void MainWindow::checkProgram()
         return;
     }
     m_workflow->checkProgram();
+}
+
+void MainWindow::reloadProgram()
+{
+    const QString path = m_program->program().path;
+    if (path.isEmpty()) {
+        showError(tr("Open a program first."));
+        return;
+    }
+    if (m_controller->state().jobActive) {
+        showError(tr("The program cannot be reloaded while its job runs: let it finish or "
+                     "abort it, then reload."));
+        return;
+    }
+    m_reloadAfterJob = false;
+    openProgram(path);
+}
+
+void MainWindow::onProgramFileChanged(const QString &path)
+{
+    // An editor that saves by writing a new file and renaming it ends the watch: watch again.
+    if (QFileInfo::exists(path) && !m_watcher->files().contains(path))
+        m_watcher->addPath(path);
+    if (path != m_program->program().path || !QFileInfo::exists(path) ||
+        QFileInfo(path).lastModified() == m_programModified)
+        return; // another file, removed, or the version read last (a reload came first)
+    if (m_controller->state().jobActive) {
+        m_reloadAfterJob = true; // the running job keeps the plan it has; ask when it ends
+        return;
+    }
+    promptReload();
+}
+
+// "The file changed on disk: reload it?" — not modal (the machine window stays usable); one at a
+// time, however many times the file is written.
+void MainWindow::promptReload()
+{
+    m_reloadAfterJob = false;
+    if (findChild<QMessageBox *>(QStringLiteral("reloadPrompt")))
+        return;
+    auto *box = new QMessageBox(
+        QMessageBox::Question, tr("Frezka"),
+        tr("%1 has changed on disk. Reload it? Until then the listing, the preview and the job "
+           "are of the version read before.")
+            .arg(QFileInfo(m_program->program().path).fileName()),
+        QMessageBox::NoButton, this);
+    box->setObjectName(QStringLiteral("reloadPrompt"));
+    box->setWindowModality(Qt::NonModal);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    QPushButton *reload = box->addButton(tr("Reload"), QMessageBox::AcceptRole);
+    reload->setObjectName(QStringLiteral("reloadYes"));
+    box->addButton(tr("Keep the version read before"), QMessageBox::RejectRole)
+        ->setObjectName(QStringLiteral("reloadNo"));
+    connect(reload, &QPushButton::clicked, this, &MainWindow::reloadProgram);
+    box->show();
+}
+
+void MainWindow::applyDisplayUnits()
+{
+    const LengthUnit unit = displayUnit();
+    m_dro->setUnit(unit);
+    m_jog->setUnit(unit);
+    m_status->setUnit(unit);
+    m_plot->setUnit(unit);
+}
+
+QString MainWindow::programUnitsText() const
+{
+    const LoadedProgram &p = m_program->program();
+    if (!p.text)
+        return {};
+    // Units are set in a program's preamble: its first lines say it without reading it all.
+    session::ModalScanner scanner(p.text, m_offsets->active());
+    const int g = scanner.at(std::uint32_t(std::min(p.text->lineCount(), 2000))).g[gcode::kGUnits];
+    return g == 200 ? tr("G20: the program is in inches") : tr("G21: the program is in mm");
+}
+
+ProgramInfoDialog *MainWindow::openProgramInfo()
+{
+    if (!m_programInfo) {
+        m_programInfo = new ProgramInfoDialog(this);
+        m_programInfo->setAttribute(Qt::WA_DeleteOnClose);
+        updateProgramInfo();
+    }
+    m_programInfo->show();
+    m_programInfo->raise();
+    return m_programInfo;
+}
+
+void MainWindow::updateProgramInfo()
+{
+    if (!m_programInfo)
+        return;
+    const LoadedProgram &p = m_program->program();
+    m_programInfo->setInfo(session::programInfo(p, m_offsets->state(), profile()),
+                           QFileInfo(p.path).fileName());
+}
+
+void MainWindow::updatePlacement()
+{
+    const LoadedProgram &p = m_program->program();
+    m_placement->setProgram(p.toolpath ? session::checkTravel(*p.toolpath, profile())
+                                       : session::TravelFit{},
+                            m_offsets->state(), profile());
+    const auto &st = m_controller->state();
+    m_placement->setPosition(st.positionMm, st.mode == MachineMode::Idle);
+}
+
+// The placement bar's work zero: the active system takes the offset, the program is read again
+// at it (onOffsetsChanged) and the bar hides once it is inside the travel.
+void MainWindow::placeWorkOffset(const session::Axes4 &offsetMm)
+{
+    if (m_controller->state().mode != MachineMode::Idle) {
+        showError(tr("Set the work zero while the machine is ready and still."));
+        return;
+    }
+    m_offsets->setSystem(m_offsets->active(), offsetMm);
+    m_console->appendInfo(tr("Work offset %1 set to X %2, Y %3, Z %4 mm.")
+                              .arg(session::workSystemName(m_offsets->active()))
+                              .arg(offsetMm[0], 0, 'f', 3)
+                              .arg(offsetMm[1], 0, 'f', 3)
+                              .arg(offsetMm[2], 0, 'f', 3));
 }
 
 // The loaded (or re-planned) program goes to the run workflow.

@@ -8,6 +8,7 @@
 #include "iopanel.h"
 #include "jogpanel.h"
 #include "outputspanel.h"
+#include "placementbar.h"
 #include "programlisting.h"
 #include "runpanel.h"
 #include "speedplot.h"
@@ -52,6 +53,9 @@ void MainWindow::buildCentral()
     layout->setSpacing(0);
     m_hold = new HoldBanner(central);
     layout->addWidget(m_hold);
+    m_placement = new PlacementBar(central);
+    connect(m_placement, &PlacementBar::workOffsetRequested, this, &MainWindow::placeWorkOffset);
+    layout->addWidget(m_placement);
     layout->addWidget(m_view, 1);
     setCentralWidget(central);
 }
@@ -130,6 +134,8 @@ void MainWindow::onJobFinished(bool ok)
     if (m_program->startLine() != 0)
         runWholeProgram(); // the job from a line is done (or dropped): the program is whole again
     updateRunPhase();
+    if (m_reloadAfterJob)
+        promptReload(); // the file changed on disk while the job ran
 }
 
 void MainWindow::onChecked(bool ok)
@@ -292,6 +298,7 @@ void MainWindow::onState(const driver::MachineState &state)
     const std::array<double, 4> &shown = state.shownMm();
     m_dro->setPositions(shown, m_offsets->workPosition(shown));
     m_dro->setModelled(state.live.modelled);
+    m_placement->setPosition(state.positionMm, state.mode == MachineMode::Idle);
     const std::array<bool, 4> homed{state.axisHomed(0), state.axisHomed(1), state.axisHomed(2),
                                     state.axisHomed(3)};
     m_dro->setHomed(homed);

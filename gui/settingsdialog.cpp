@@ -1,8 +1,10 @@
 #include "settingsdialog.h"
 
+#include "displayunits.h"
 #include "language.h"
 #include "profileeditor.h"
 #include "profilestore.h"
+#include "shortcuteditor.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -28,6 +30,11 @@ SettingsDialog::SettingsDialog(const machine::MachineConfig &config, const QStri
     m_tabs = new QTabWidget(this);
     m_tabs->addTab(createProfilePage(config), QString());
     m_tabs->addTab(createApplicationPage(), QString());
+    m_shortcuts = new ShortcutEditor;
+    m_shortcuts->setObjectName(QStringLiteral("shortcutEditor"));
+    connect(m_shortcuts, &ShortcutEditor::shortcutsChanged, this,
+            &SettingsDialog::shortcutsChanged);
+    m_tabs->addTab(m_shortcuts, QString());
 
     m_message = new QLabel(this);
     m_message->setWordWrap(true);
@@ -88,7 +95,18 @@ QWidget *SettingsDialog::createApplicationPage()
     m_reconnect->setChecked(QSettings().value(QStringLiteral("link/autoReconnect"), true).toBool());
     connect(m_reconnect, &QCheckBox::toggled, this,
             [](bool on) { QSettings().setValue(QStringLiteral("link/autoReconnect"), on); });
+    m_unitsLabel = new QLabel(appPage);
+    m_units = new QComboBox(appPage);
+    m_units->setObjectName(QStringLiteral("displayUnits"));
+    m_units->addItem(QString(), int(LengthUnit::Mm));
+    m_units->addItem(QString(), int(LengthUnit::Inch));
+    m_units->setCurrentIndex(m_units->findData(int(displayUnit())));
+    connect(m_units, &QComboBox::activated, this, [this](int i) {
+        setDisplayUnit(LengthUnit(m_units->itemData(i).toInt()));
+        emit displayUnitsChanged();
+    });
     appForm->addRow(m_languageLabel, m_language);
+    appForm->addRow(m_unitsLabel, m_units);
     appForm->addRow(m_reconnect);
     return appPage;
 }
@@ -186,6 +204,7 @@ void SettingsDialog::retranslate()
     setWindowTitle(tr("Settings"));
     m_tabs->setTabText(0, tr("Machine profile"));
     m_tabs->setTabText(1, tr("Application"));
+    m_tabs->setTabText(2, tr("Shortcuts"));
     m_pathLabel->setText(m_path);
     m_load->setText(tr("Load…"));
     m_save->setText(tr("Save"));
@@ -195,6 +214,12 @@ void SettingsDialog::retranslate()
     m_languageLabel->setText(tr("Language"));
     m_language->setItemText(0, tr("System language"));
     m_reconnect->setText(tr("Reconnect automatically after a lost link"));
+    m_unitsLabel->setText(tr("Lengths shown in"));
+    m_units->setItemText(0, tr("millimetres (mm)"));
+    m_units->setItemText(1, tr("inches (in)"));
+    m_units->setToolTip(tr("The DRO, the jog steps and feed, the status panel and the speed plot. "
+                           "The machine, its profile and the programs' own G20/G21 are not "
+                           "affected."));
 }
 
 } // namespace frezka::gui

@@ -1,7 +1,7 @@
 #pragma once
 // SettingsDialog: the machine profile (every key, with load / save / export) and the
-// application settings (language, reconnect). Non-modal: open it with show(); it applies by
-// signals and never blocks the machine window.
+// application settings (language, reconnect) and the keyboard shortcuts. Non-modal: open it with
+// show(); it applies by signals and never blocks the machine window.
 
 #include "machine/machineconfig.h"
 
@@ -17,6 +17,7 @@ class QTabWidget;
 namespace frezka::gui {
 
 class ProfileEditor;
+class ShortcutEditor;
 
 class SettingsDialog : public QDialog
 {
@@ -26,6 +27,7 @@ public:
     SettingsDialog(const machine::MachineConfig &config, const QString &profilePath,
                    QWidget *parent = nullptr);
     ProfileEditor *editor() const { return m_editor; }
+    ShortcutEditor *shortcutEditor() const { return m_shortcuts; }
     QString profilePath() const { return m_path; }
 
     // The actions behind the buttons, without file dialogs (tests, scripts). Errors are shown
@@ -39,6 +41,10 @@ signals:
     // The user applied or saved a valid profile.
     void profileApplied(const machine::MachineConfig &config, const QString &path);
     void languageChosen(const QString &code);
+    // The operator changed a keyboard shortcut (stored in QSettings already).
+    void shortcutsChanged();
+    // The operator chose mm or inch for the display (stored in QSettings already).
+    void displayUnitsChanged();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -53,10 +59,12 @@ private:
     void showMessage(const QString &text, bool error);
 
     ProfileEditor *m_editor;
+    ShortcutEditor *m_shortcuts;
     QString m_path;
     QTabWidget *m_tabs;
     QLabel *m_pathLabel, *m_message, *m_languageLabel;
-    QComboBox *m_language;
+    QComboBox *m_language, *m_units;
+    QLabel *m_unitsLabel;
     QCheckBox *m_reconnect;
     QPushButton *m_load, *m_save, *m_export, *m_defaults, *m_apply;
     QDialogButtonBox *m_buttons;

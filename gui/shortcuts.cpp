@@ -5,8 +5,11 @@
 #include <QDialogButtonBox>
 #include <QHeaderView>
 #include <QLabel>
+#include <QSettings>
 #include <QTableWidget>
 #include <QVBoxLayout>
+
+#include <utility>
 
 namespace frezka::gui {
 
@@ -26,7 +29,8 @@ void fill(QTableWidget *table)
     for (int row = 0; row < int(all.size()); ++row) {
         const OperatorShortcut &s = all[std::size_t(row)];
         table->setItem(row, 0, new QTableWidgetItem(shortcutCaption(s)));
-        table->setItem(row, 1, new QTableWidgetItem(s.key.toString(QKeySequence::NativeText)));
+        table->setItem(row, 1,
+                       new QTableWidgetItem(shortcutKey(s).toString(QKeySequence::NativeText)));
         table->setItem(
             row, 2,
             new QTableWidgetItem(*s.axis ? QString::fromLatin1(s.axis) : QStringLiteral("–")));
@@ -66,8 +70,102 @@ const std::vector<OperatorShortcut> &operatorShortcuts()
         {A::HomeAll, "shortcutHomeAll",
          QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Home all axes"),
          QKeySequence(Qt::CTRL | Qt::Key_Home), "Ctrl+Home"},
+        {A::JogXMinus, "shortcutJogXMinus", QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Jog X−"),
+         QKeySequence(Qt::Key_Left), "Left", true},
+        {A::JogXPlus, "shortcutJogXPlus", QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Jog X+"),
+         QKeySequence(Qt::Key_Right), "Right", true},
+        {A::JogYMinus, "shortcutJogYMinus", QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Jog Y−"),
+         QKeySequence(Qt::Key_Down), "Down", true},
+        {A::JogYPlus, "shortcutJogYPlus", QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Jog Y+"),
+         QKeySequence(Qt::Key_Up), "Up", true},
+        {A::JogZMinus, "shortcutJogZMinus", QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Jog Z−"),
+         QKeySequence(Qt::Key_PageDown), "Page Down", true},
+        {A::JogZPlus, "shortcutJogZPlus", QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Jog Z+"),
+         QKeySequence(Qt::Key_PageUp), "Page Up", true},
+        {A::ZeroX, "shortcutZeroX",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Work zero of X here"),
+         QKeySequence(Qt::SHIFT | Qt::Key_X), ""},
+        {A::ZeroY, "shortcutZeroY",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Work zero of Y here"),
+         QKeySequence(Qt::SHIFT | Qt::Key_Y), ""},
+        {A::ZeroZ, "shortcutZeroZ",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Work zero of Z here"),
+         QKeySequence(Qt::SHIFT | Qt::Key_Z), ""},
+        {A::ZeroAll, "shortcutZeroAll",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Work zero of all axes here"),
+         QKeySequence(Qt::Key_End), ""},
+        {A::Spindle, "shortcutSpindle",
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "Spindle on / off"), QKeySequence(Qt::Key_F9),
+         "F9"},
     };
     return table;
+}
+
+const OperatorShortcut &operatorShortcut(OperatorAction action)
+{
+    for (const OperatorShortcut &s : operatorShortcuts())
+        if (s.action == action)
+            return s;
+    return operatorShortcuts().front(); // every action has a row
+}
+
+QKeySequence shortcutKey(const OperatorShortcut &shortcut)
+{
+    const QVariant stored =
+        QSettings().value(QStringLiteral("shortcuts/") + QLatin1String(shortcut.name));
+    if (!stored.isValid())
+        return shortcut.key;
+    return QKeySequence::fromString(stored.toString(), QKeySequence::PortableText);
+}
+
+bool setShortcutKey(OperatorAction action, const QKeySequence &key, QString *error)
+{
+    auto refuse = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (key.count() > 1)
+        return refuse(QCoreApplication::translate(
+            "frezka::gui::Shortcuts",
+            "Give one key (with Ctrl, Shift or Alt if you like), not a sequence of keys."));
+    // The menu commands' own keys (gui/mainwindow.cpp): an operator key on one of them would
+    // make both ambiguous, and Qt then runs neither.
+    static const std::pair<QKeySequence, const char *> kMenuKeys[] = {
+        {QKeySequence(QKeySequence::Open),
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "File › Open program")},
+        {QKeySequence(Qt::CTRL | Qt::Key_R),
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "File › Reload program")},
+        {QKeySequence(QKeySequence::Quit),
+         QT_TRANSLATE_NOOP("frezka::gui::Shortcuts", "File › Quit")},
+    };
+    for (const auto &[menuKey, command] : kMenuKeys) {
+        if (!key.isEmpty() && key == menuKey)
+            return refuse(QCoreApplication::translate(
+                              "frezka::gui::Shortcuts",
+                              "%1 is the key of the menu command “%2”. Choose a different key.")
+                              .arg(key.toString(QKeySequence::NativeText), translated(command)));
+    }
+    for (const OperatorShortcut &other : operatorShortcuts()) {
+        if (other.action != action && !key.isEmpty() && shortcutKey(other) == key)
+            return refuse(QCoreApplication::translate(
+                              "frezka::gui::Shortcuts",
+                              "%1 is already the key of “%2”. Give that action another key "
+                              "first, or choose a different key.")
+                              .arg(key.toString(QKeySequence::NativeText), shortcutCaption(other)));
+    }
+    const OperatorShortcut &s = operatorShortcut(action);
+    const QString settingsKey = QStringLiteral("shortcuts/") + QLatin1String(s.name);
+    if (key == s.key)
+        QSettings().remove(settingsKey);
+    else
+        QSettings().setValue(settingsKey, key.toString(QKeySequence::PortableText));
+    return true;
+}
+
+void resetShortcutKeys()
+{
+    QSettings().remove(QStringLiteral("shortcuts"));
 }
 
 QString shortcutCaption(const OperatorShortcut &shortcut)
@@ -102,9 +200,10 @@ QDialog *showShortcutsDialog(QWidget *parent)
     dialog->findChild<QLabel *>(QStringLiteral("shortcutsNote"))
         ->setText(QCoreApplication::translate(
             "frezka::gui::Shortcuts",
-            "Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A "
-            "text field with the focus keeps the letters typed into it; no key presses a "
-            "button that merely has the focus."));
+            "Keys of the main window; change them in Settings › Shortcuts. The jog keys act "
+            "while held, only when jogging is possible (not while a job runs) and not while "
+            "a text field has the focus. A text field with the focus keeps the letters typed "
+            "into it; no key presses a button that merely has the focus."));
     auto *table = dialog->findChild<QTableWidget *>(QStringLiteral("shortcutsTable"));
     table->setHorizontalHeaderLabels(
         {QCoreApplication::translate("frezka::gui::Shortcuts", "Action"),

@@ -45,6 +45,20 @@ void SpeedPlot::addActual(const SpeedSample &sample)
     update();
 }
 
+void SpeedPlot::setUnit(LengthUnit unit)
+{
+    m_unit = unit;
+    update();
+}
+
+QString SpeedPlot::axisText() const
+{
+    return tr("%1 along the path (%2 %3)")
+        .arg(feedSuffix(m_unit))
+        .arg(fromMm(m_maxDistance, m_unit), 0, 'f', m_unit == LengthUnit::Inch ? 1 : 0)
+        .arg(lengthSuffix(m_unit));
+}
+
 void SpeedPlot::setCursorDistance(double mm)
 {
     m_cursor = mm;
@@ -57,7 +71,7 @@ QRectF SpeedPlot::plotRect() const
 {
     const QFontMetrics fm = fontMetrics();
     const int left = std::max(fm.horizontalAdvance(QStringLiteral("00000")),
-                              fm.horizontalAdvance(QString::number(m_maxSpeed, 'f', 0))) +
+                              fm.horizontalAdvance(formatFeed(m_maxSpeed, m_unit))) +
                      6;
     const int top = fm.height() / 2 + 2;
     return QRectF(left, top, width() - left - 4, height() - top - fm.height() - 4);
@@ -69,8 +83,7 @@ QRect SpeedPlot::topLabelRect() const
     const QFontMetrics fm = fontMetrics();
     const QRect box =
         QRectF(0, r.top() - fm.height() / 2.0, r.left() - 4, fm.height()).toAlignedRect();
-    return fm.boundingRect(box, Qt::AlignRight | Qt::AlignVCenter,
-                           QString::number(m_maxSpeed, 'f', 0));
+    return fm.boundingRect(box, Qt::AlignRight | Qt::AlignVCenter, formatFeed(m_maxSpeed, m_unit));
 }
 
 void SpeedPlot::paintEvent(QPaintEvent *)
@@ -81,11 +94,9 @@ void SpeedPlot::paintEvent(QPaintEvent *)
     p.setPen(QColor(90, 90, 90));
     p.drawRect(r);
     p.setPen(QColor(200, 200, 200));
-    p.drawText(topLabelRect(), Qt::AlignRight | Qt::AlignVCenter,
-               QString::number(m_maxSpeed, 'f', 0));
+    p.drawText(topLabelRect(), Qt::AlignRight | Qt::AlignVCenter, formatFeed(m_maxSpeed, m_unit));
     p.drawText(QRectF(0, r.bottom() - 16, r.left() - 4, 16), Qt::AlignRight, QStringLiteral("0"));
-    p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), 20), Qt::AlignLeft,
-               tr("mm/min along the path (%1 mm)").arg(m_maxDistance, 0, 'f', 0));
+    p.drawText(QRectF(r.left(), r.bottom() + 2, r.width(), 20), Qt::AlignLeft, axisText());
     auto map = [&](const SpeedSample &s) {
         return QPointF(r.left() + s.distanceMm / m_maxDistance * r.width(),
                        r.bottom() - s.speedMmPerMin / m_maxSpeed * r.height());
@@ -119,12 +130,14 @@ void SpeedPlot::mouseMoveEvent(QMouseEvent *event)
                                [](const SpeedSample &s, double v) { return s.distanceMm < v; });
     if (it == m_planned.end())
         --it;
-    QToolTip::showText(event->globalPosition().toPoint(),
-                       tr("%1 mm/min at %2 mm, line %3")
-                           .arg(it->speedMmPerMin, 0, 'f', 0)
-                           .arg(it->distanceMm, 0, 'f', 1)
-                           .arg(it->line),
-                       this);
+    QToolTip::showText(
+        event->globalPosition().toPoint(),
+        tr("%1 %2 at %3 %4, line %5")
+            .arg(formatFeed(it->speedMmPerMin, m_unit), feedSuffix(m_unit))
+            .arg(fromMm(it->distanceMm, m_unit), 0, 'f', m_unit == LengthUnit::Inch ? 2 : 1)
+            .arg(lengthSuffix(m_unit))
+            .arg(it->line),
+        this);
 }
 
 } // namespace frezka::gui

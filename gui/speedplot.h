@@ -6,6 +6,8 @@
 
 #include "session/plannedspeed.h"
 
+#include "displayunits.h"
+
 #include <QWidget>
 
 #include <cstdint>
@@ -25,6 +27,10 @@ public:
     void clearActual();
     void addActual(const SpeedSample &sample);
     void setCursorDistance(double mm);
+    // The speeds and the distance in mm or inch (the samples stay in mm).
+    void setUnit(LengthUnit unit);
+    // The axis caption ("mm/min along the path (120 mm)"; tests).
+    QString axisText() const;
     const std::vector<SpeedSample> &planned() const { return m_planned; }
     const std::vector<SpeedSample> &actual() const { return m_actual; }
     QSize sizeHint() const override { return {400, 120}; }
@@ -40,6 +46,7 @@ private:
     QRectF plotRect() const;
     std::vector<SpeedSample> m_planned, m_actual;
     double m_maxDistance = 1, m_maxSpeed = 1, m_cursor = -1;
+    LengthUnit m_unit = LengthUnit::Mm;
 };
 
 } // namespace frezka::gui

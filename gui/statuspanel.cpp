@@ -89,6 +89,12 @@ void StatusPanel::show(const StatusView &view)
     render();
 }
 
+void StatusPanel::setUnit(LengthUnit unit)
+{
+    m_unit = unit;
+    render();
+}
+
 void StatusPanel::render()
 {
     const StatusView &v = m_view;
@@ -96,16 +102,17 @@ void StatusPanel::render()
     m_state->setStyleSheet(QStringLiteral("QLabel { background: %1; color: white; "
                                           "border-radius: 4px; padding: 4px; }")
                                .arg(stateColour(v.mode)));
-    m_feed->setText(tr("%1 mm/min").arg(v.actualFeedMmPerMin, 0, 'f', 0));
+    m_feed->setText(
+        QStringLiteral("%1 %2").arg(formatFeed(v.actualFeedMmPerMin, m_unit), feedSuffix(m_unit)));
     const QString override =
         v.overrideHeldPercent > 0
             ? tr("%1 % (runs %2 %)").arg(v.overridePercent).arg(v.overrideHeldPercent)
             : QStringLiteral("%1 %").arg(v.overridePercent);
-    m_programmedFeed->setText(v.programmedFeedMmPerMin < 0
-                                  ? tr("override %1").arg(override)
-                                  : tr("programmed %1 mm/min × %2")
-                                        .arg(v.programmedFeedMmPerMin, 0, 'f', 0)
-                                        .arg(override));
+    m_programmedFeed->setText(
+        v.programmedFeedMmPerMin < 0
+            ? tr("override %1").arg(override)
+            : tr("programmed %1 %2 × %3")
+                  .arg(formatFeed(v.programmedFeedMmPerMin, m_unit), feedSuffix(m_unit), override));
     const QString direction = v.spindleDirection > 0   ? tr("clockwise (M3)")
                               : v.spindleDirection < 0 ? tr("counter-clockwise (M4)")
                                                        : QString();

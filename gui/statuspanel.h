@@ -9,6 +9,8 @@
 
 #include "driver/link/machinestate.h"
 
+#include "displayunits.h"
+
 #include <QWidget>
 
 #include <array>
@@ -45,6 +47,8 @@ class StatusPanel : public QWidget
 public:
     explicit StatusPanel(QWidget *parent = nullptr);
     void show(const StatusView &view);
+    // The feeds in mm/min or in/min.
+    void setUnit(LengthUnit unit);
     // The figures as shown (tests): mm/min, rpm, tool.
     double shownActualFeed() const { return m_view.actualFeedMmPerMin; }
     const StatusView &view() const { return m_view; }
@@ -57,6 +61,7 @@ protected:
 private:
     void retranslate();
     void render();
+    LengthUnit m_unit = LengthUnit::Mm;
     QLabel *addRow(int row, QLabel **caption, const char *name);
 
     StatusView m_view;

@@ -22,11 +22,14 @@ struct Bounds
 class Walker
 {
 public:
-    explicit Walker(const machine::MachineConfig &config)
+    Walker(const machine::MachineConfig &config, const gcode::Point4 &origin)
         : m_config(config)
+        , m_origin(origin)
     {
         m_bounds.min.fill(std::numeric_limits<double>::infinity());
         m_bounds.max.fill(-std::numeric_limits<double>::infinity());
+        m_own.min = m_bounds.min;
+        m_own.max = m_bounds.max;
     }
 
     void visit(const gcode::Point4 &p, std::uint32_t line)
@@ -37,6 +40,11 @@ public:
             const double v = coordinate(p, a);
             m_bounds.min[std::size_t(a)] = std::min(m_bounds.min[std::size_t(a)], v);
             m_bounds.max[std::size_t(a)] = std::max(m_bounds.max[std::size_t(a)], v);
+            if (m_moved[std::size_t(a)] || v != coordinate(m_origin, a)) {
+                m_moved[std::size_t(a)] = m_own.any = true;
+                m_own.min[std::size_t(a)] = std::min(m_own.min[std::size_t(a)], v);
+                m_own.max[std::size_t(a)] = std::max(m_own.max[std::size_t(a)], v);
+            }
             if (!axis.present || machine::withinSoftLimits(axis, v))
                 continue;
             const bool above = v > axis.softMaxMm;
@@ -47,6 +55,11 @@ public:
     TravelFit result() const
     {
         TravelFit fit;
+        fit.moves = m_own.any;
+        for (std::size_t a = 0; a < 4; ++a) { // an axis never moved: where it stands
+            fit.minMm[a] = m_moved[a] ? m_own.min[a] : coordinate(m_origin, int(a));
+            fit.maxMm[a] = m_moved[a] ? m_own.max[a] : coordinate(m_origin, int(a));
+        }
         for (const auto &e : m_found)
             if (e.firstLine != 0)
                 fit.excursions.push_back(e);
@@ -82,7 +95,9 @@ private:
     }
 
     const machine::MachineConfig &m_config;
-    Bounds m_bounds;
+    gcode::Point4 m_origin; // where the program starts: the machine's position, not the program's
+    Bounds m_bounds, m_own; // every motion's / the program's own (per axis from its first move)
+    std::array<bool, 4> m_moved{};
     std::array<TravelExcursion, 8> m_found{};
 };
 
@@ -90,7 +105,7 @@ private:
 
 TravelFit checkTravel(const gcode::Toolpath &path, const machine::MachineConfig &config)
 {
-    Walker walker(config);
+    Walker walker(config, path.origin());
     for (std::size_t i = 0; i < path.size(); ++i) {
         if (!path.isMotion(i))
             continue;

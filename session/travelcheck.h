@@ -37,6 +37,11 @@ struct TravelFit
     std::vector<TravelExcursion> excursions; // in program order of their first lines
     bool fitsElsewhere = true; // the extent fits the travel on every axis: a work zero exists
     Axes4 shiftMm{};           // added to the work offset, puts the program inside (if it fits)
+    // The program's own extent, machine mm at the offsets it was read with: per axis from the
+    // first motion that moves that axis (the position it starts from is the machine's, not the
+    // program's). moves = some motion moved some axis (else min/max mean nothing).
+    bool moves = false;
+    Axes4 minMm{}, maxMm{};
     bool inside() const { return excursions.empty(); }
 };
 

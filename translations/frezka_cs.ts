@@ -3022,6 +3022,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Before homing the counters do not say where the axes are: jogging ignores the soft limits and runs at most at the homing speed. Home the machine to have the limits and the full jog speed; a program asks for homing before it runs.</source>
         <translation>Před najetím do reference čítače neříkají, kde osy jsou: ruční posuv nebere ohled na softwarové limity a jede nejvýše rychlostí hledání reference. Najeďte stroj do reference, aby platily limity a plná rychlost posuvu; program si před spuštěním o referenci řekne.</translation>
     </message>
+    <message>
+        <source>Step (in):</source>
+        <translation>Krok (in):</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::MainWindow</name>
@@ -3333,6 +3337,42 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Run from line %1 is ready: the view shows the approach. Run starts it; Machine › Run the whole program goes back.</source>
         <translation>Spuštění od řádku %1 je připraveno: náhled ukazuje najetí. Spustit je zahájí; Stroj › Spustit celý program vrátí celý program.</translation>
     </message>
+    <message>
+        <source>Re&amp;load program</source>
+        <translation>&amp;Znovu načíst program</translation>
+    </message>
+    <message>
+        <source>The program cannot be reloaded while its job runs: let it finish or abort it, then reload.</source>
+        <translation>Program nelze znovu načíst, dokud běží jeho úloha: nechte ji doběhnout nebo ji přerušte a pak program načtěte znovu.</translation>
+    </message>
+    <message>
+        <source>%1 has changed on disk. Reload it? Until then the listing, the preview and the job are of the version read before.</source>
+        <translation>Soubor %1 se na disku změnil. Načíst jej znovu? Do té doby výpis, náhled i úloha odpovídají dříve načtené verzi.</translation>
+    </message>
+    <message>
+        <source>Reload</source>
+        <translation>Načíst znovu</translation>
+    </message>
+    <message>
+        <source>Keep the version read before</source>
+        <translation>Ponechat dříve načtenou verzi</translation>
+    </message>
+    <message>
+        <source>Work offset %1 set to X %2, Y %3, Z %4 mm.</source>
+        <translation>Posunutí nulového bodu %1 nastaveno na X %2, Y %3, Z %4 mm.</translation>
+    </message>
+    <message>
+        <source>Program &amp;info…</source>
+        <translation>&amp;Informace o programu…</translation>
+    </message>
+    <message>
+        <source>G20: the program is in inches</source>
+        <translation>G20: program je v palcích</translation>
+    </message>
+    <message>
+        <source>G21: the program is in mm</source>
+        <translation>G21: program je v mm</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3391,6 +3431,69 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Spindle speed as programmed</source>
         <translation>Otáčky vřetena podle programu</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::PlacementBar</name>
+    <message>
+        <source>%1 goes to %2 mm at line %3, %4 mm beyond the travel&apos;s %5 mm.</source>
+        <translation>%1 jde od řádku %3 až na %2 mm, o %4 mm za mez pojezdu %5 mm.</translation>
+    </message>
+    <message>
+        <source>The program leaves the machine&apos;s travel at the current work zero. %1 Its coordinates are probably relative to the stock: bring the tool to the chosen point of the stock, its tip on the stock&apos;s top (the program&apos;s Z0), and set the work zero there.</source>
+        <translation>Program při současném nulovém bodu obrobku opouští pojezd stroje. %1 Jeho souřadnice jsou nejspíš vztažené k polotovaru: najeďte nástrojem na zvolený bod polotovaru, špičkou na jeho horní plochu (Z0 programu), a nastavte tam nulový bod.</translation>
+    </message>
+    <message>
+        <source>With the work zero set here the program would sit at %1 mm: inside the travel.</source>
+        <translation>S nulovým bodem nastaveným zde by program ležel v %1 mm: uvnitř pojezdu.</translation>
+    </message>
+    <message>
+        <source>With the work zero set here the program would sit at %1 mm: still outside the travel. Move to the stock first or choose another point.</source>
+        <translation>S nulovým bodem nastaveným zde by program ležel v %1 mm: stále mimo pojezd. Nejprve najeďte k polotovaru nebo zvolte jiný bod.</translation>
+    </message>
+    <message>
+        <source>Here is the stock&apos;s:</source>
+        <translation>Zde je na polotovaru:</translation>
+    </message>
+    <message>
+        <source>program&apos;s X0 Y0</source>
+        <translation>X0 Y0 programu</translation>
+    </message>
+    <message>
+        <source>front left corner</source>
+        <translation>přední levý roh</translation>
+    </message>
+    <message>
+        <source>front right corner</source>
+        <translation>přední pravý roh</translation>
+    </message>
+    <message>
+        <source>back left corner</source>
+        <translation>zadní levý roh</translation>
+    </message>
+    <message>
+        <source>back right corner</source>
+        <translation>zadní pravý roh</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>střed</translation>
+    </message>
+    <message>
+        <source>Set the work zero here</source>
+        <translation>Nastavit nulový bod zde</translation>
+    </message>
+    <message>
+        <source>Sets the active work offset so that the chosen point of the program is at the current X/Y and the program&apos;s Z0 at the current Z</source>
+        <translation>Nastaví aktivní posunutí nulového bodu tak, aby zvolený bod programu byl v současné poloze X/Y a Z0 programu v současné poloze Z</translation>
+    </message>
+    <message>
+        <source>Shift into the travel</source>
+        <translation>Posunout do pojezdu</translation>
+    </message>
+    <message>
+        <source>Shifts the active work offset by the least that puts the whole program inside the soft limits (as frezka-cli check suggests)</source>
+        <translation>Posune aktivní posunutí nulového bodu o nejmenší hodnotu, která dostane celý program do softwarových mezí (jak navrhuje frezka-cli check)</translation>
     </message>
 </context>
 <context>
@@ -3935,6 +4038,69 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     </message>
 </context>
 <context>
+    <name>frezka::gui::ProgramInfoDialog</name>
+    <message>
+        <source>not planned</source>
+        <translation>nenaplánováno</translation>
+    </message>
+    <message>
+        <source>%1: %2 lines, %3 bytes, %4 moves, %5 mm of path, estimated time %6.</source>
+        <translation>%1: řádků %2, bajtů %3, pohybů %4, dráha %5 mm, odhadovaný čas %6.</translation>
+    </message>
+    <message>
+        <source>in the spindle</source>
+        <translation>ve vřeteni</translation>
+    </message>
+    <message>
+        <source>Program info</source>
+        <translation>Informace o programu</translation>
+    </message>
+    <message>
+        <source>Extent (mm)</source>
+        <translation>Rozsah (mm)</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Osa</translation>
+    </message>
+    <message>
+        <source>Program min</source>
+        <translation>Min. v programu</translation>
+    </message>
+    <message>
+        <source>Program max</source>
+        <translation>Max. v programu</translation>
+    </message>
+    <message>
+        <source>Machine min</source>
+        <translation>Min. na stroji</translation>
+    </message>
+    <message>
+        <source>Machine max</source>
+        <translation>Max. na stroji</translation>
+    </message>
+    <message>
+        <source>Tools in their order</source>
+        <translation>Nástroje v pořadí použití</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Nástroj</translation>
+    </message>
+    <message>
+        <source>From line</source>
+        <translation>Od řádku</translation>
+    </message>
+    <message>
+        <source>Planned time</source>
+        <translation>Plánovaný čas</translation>
+    </message>
+    <message>
+        <source>Cut length (mm)</source>
+        <translation>Délka řezu (mm)</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::RunPanel</name>
     <message>
         <source>Elapsed %1</source>
@@ -4170,6 +4336,61 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Reconnect automatically after a lost link</source>
         <translation>Po ztrátě spojení se automaticky znovu připojit</translation>
     </message>
+    <message>
+        <source>Shortcuts</source>
+        <translation>Klávesové zkratky</translation>
+    </message>
+    <message>
+        <source>Lengths shown in</source>
+        <translation>Délky zobrazovat v</translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
+        <translation>milimetrech (mm)</translation>
+    </message>
+    <message>
+        <source>inches (in)</source>
+        <translation>palcích (in)</translation>
+    </message>
+    <message>
+        <source>The DRO, the jog steps and feed, the status panel and the speed plot. The machine, its profile and the programs&apos; own G20/G21 are not affected.</source>
+        <translation>Ukazatel polohy, kroky a rychlost ručního posuvu, stavový panel a graf rychlosti. Stroj, jeho profil ani vlastní G20/G21 programů se tím nemění.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ShortcutEditor</name>
+    <message>
+        <source>“%1” now has the key %2.</source>
+        <translation>„%1“ má nyní klávesu %2.</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(žádná)</translation>
+    </message>
+    <message>
+        <source>Every key is back to its default.</source>
+        <translation>Všechny klávesy mají opět výchozí hodnoty.</translation>
+    </message>
+    <message>
+        <source>Click a key field and press the new key; it applies at once. A key that another action already has is refused.</source>
+        <translation>Klepněte do pole klávesy a stiskněte novou klávesu; platí okamžitě. Klávesa, kterou už má jiná akce, se odmítne.</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Akce</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Klávesa</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Výchozí</translation>
+    </message>
+    <message>
+        <source>Reset to defaults</source>
+        <translation>Obnovit výchozí</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::Shortcuts</name>
@@ -4218,10 +4439,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Klávesové zkratky</translation>
     </message>
     <message>
-        <source>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
-        <translation>Klávesy hlavního okna. Ruční posuv šipkami (X, Y) a klávesami Page Up/Down (Z). Textové pole s fokusem si písmena napsaná do něj ponechá; žádná klávesa nestiskne tlačítko jen proto, že má fokus.</translation>
-    </message>
-    <message>
         <source>Action</source>
         <translation>Akce</translation>
     </message>
@@ -4233,24 +4450,92 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>LinuxCNC AXIS</source>
         <translation>LinuxCNC AXIS</translation>
     </message>
+    <message>
+        <source>Jog X−</source>
+        <translation>Posuv X−</translation>
+    </message>
+    <message>
+        <source>Jog X+</source>
+        <translation>Posuv X+</translation>
+    </message>
+    <message>
+        <source>Jog Y−</source>
+        <translation>Posuv Y−</translation>
+    </message>
+    <message>
+        <source>Jog Y+</source>
+        <translation>Posuv Y+</translation>
+    </message>
+    <message>
+        <source>Jog Z−</source>
+        <translation>Posuv Z−</translation>
+    </message>
+    <message>
+        <source>Jog Z+</source>
+        <translation>Posuv Z+</translation>
+    </message>
+    <message>
+        <source>Work zero of X here</source>
+        <translation>Nulový bod X zde</translation>
+    </message>
+    <message>
+        <source>Work zero of Y here</source>
+        <translation>Nulový bod Y zde</translation>
+    </message>
+    <message>
+        <source>Work zero of Z here</source>
+        <translation>Nulový bod Z zde</translation>
+    </message>
+    <message>
+        <source>Work zero of all axes here</source>
+        <translation>Nulový bod všech os zde</translation>
+    </message>
+    <message>
+        <source>Spindle on / off</source>
+        <translation>Vřeteno zapnout / vypnout</translation>
+    </message>
+    <message>
+        <source>Give one key (with Ctrl, Shift or Alt if you like), not a sequence of keys.</source>
+        <translation>Zadejte jednu klávesu (případně s Ctrl, Shift nebo Alt), ne posloupnost kláves.</translation>
+    </message>
+    <message>
+        <source>%1 is already the key of “%2”. Give that action another key first, or choose a different key.</source>
+        <translation>%1 už je klávesou akce „%2“. Nejprve dejte té akci jinou klávesu, nebo zvolte jinou klávesu.</translation>
+    </message>
+    <message>
+        <source>Keys of the main window; change them in Settings › Shortcuts. The jog keys act while held, only when jogging is possible (not while a job runs) and not while a text field has the focus. A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
+        <translation>Klávesy hlavního okna; změníte je v Nastavení › Klávesové zkratky. Klávesy ručního posuvu působí, dokud jsou drženy, jen když je ruční posuv možný (ne během úlohy) a ne když má fokus textové pole. Textové pole s fokusem si písmena napsaná do něj ponechá; žádná klávesa nestiskne tlačítko jen proto, že má fokus.</translation>
+    </message>
+    <message>
+        <source>File › Open program</source>
+        <translation>Soubor › Otevřít program</translation>
+    </message>
+    <message>
+        <source>File › Reload program</source>
+        <translation>Soubor › Znovu načíst program</translation>
+    </message>
+    <message>
+        <source>File › Quit</source>
+        <translation>Soubor › Konec</translation>
+    </message>
+    <message>
+        <source>%1 is the key of the menu command “%2”. Choose a different key.</source>
+        <translation>%1 je klávesa příkazu nabídky „%2“. Zvolte jinou klávesu.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::SpeedPlot</name>
     <message>
-        <source>mm/min along the path (%1 mm)</source>
-        <translation>mm/min podél dráhy (%1 mm)</translation>
+        <source>%1 along the path (%2 %3)</source>
+        <translation>%1 podél dráhy (%2 %3)</translation>
     </message>
     <message>
-        <source>%1 mm/min at %2 mm, line %3</source>
-        <translation>%1 mm/min na %2 mm, řádek %3</translation>
+        <source>%1 %2 at %3 %4, line %5</source>
+        <translation>%1 %2 na %3 %4, řádek %5</translation>
     </message>
 </context>
 <context>
     <name>frezka::gui::StatusPanel</name>
-    <message>
-        <source>%1 mm/min</source>
-        <translation>%1 mm/min</translation>
-    </message>
     <message>
         <source>%1 % (runs %2 %)</source>
         <translation>%1 % (běží %2 %)</translation>
@@ -4258,10 +4543,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>override %1</source>
         <translation>korekce %1</translation>
-    </message>
-    <message>
-        <source>programmed %1 mm/min × %2</source>
-        <translation>programováno %1 mm/min × %2</translation>
     </message>
     <message>
         <source>clockwise (M3)</source>
@@ -4330,6 +4611,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>%1 (override %2 %)</source>
         <translation>%1 (korekce %2 %)</translation>
+    </message>
+    <message>
+        <source>programmed %1 %2 × %3</source>
+        <translation>programováno %1 %2 × %3</translation>
     </message>
 </context>
 <context>

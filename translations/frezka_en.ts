@@ -3019,6 +3019,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Before homing the counters do not say where the axes are: jogging ignores the soft limits and runs at most at the homing speed. Home the machine to have the limits and the full jog speed; a program asks for homing before it runs.</source>
         <translation>Before homing the counters do not say where the axes are: jogging ignores the soft limits and runs at most at the homing speed. Home the machine to have the limits and the full jog speed; a program asks for homing before it runs.</translation>
     </message>
+    <message>
+        <source>Step (in):</source>
+        <translation>Step (in):</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::MainWindow</name>
@@ -3326,6 +3330,42 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Run from line %1 is ready: the view shows the approach. Run starts it; Machine › Run the whole program goes back.</source>
         <translation>Run from line %1 is ready: the view shows the approach. Run starts it; Machine › Run the whole program goes back.</translation>
     </message>
+    <message>
+        <source>Re&amp;load program</source>
+        <translation>Re&amp;load program</translation>
+    </message>
+    <message>
+        <source>The program cannot be reloaded while its job runs: let it finish or abort it, then reload.</source>
+        <translation>The program cannot be reloaded while its job runs: let it finish or abort it, then reload.</translation>
+    </message>
+    <message>
+        <source>%1 has changed on disk. Reload it? Until then the listing, the preview and the job are of the version read before.</source>
+        <translation>%1 has changed on disk. Reload it? Until then the listing, the preview and the job are of the version read before.</translation>
+    </message>
+    <message>
+        <source>Reload</source>
+        <translation>Reload</translation>
+    </message>
+    <message>
+        <source>Keep the version read before</source>
+        <translation>Keep the version read before</translation>
+    </message>
+    <message>
+        <source>Work offset %1 set to X %2, Y %3, Z %4 mm.</source>
+        <translation>Work offset %1 set to X %2, Y %3, Z %4 mm.</translation>
+    </message>
+    <message>
+        <source>Program &amp;info…</source>
+        <translation>Program &amp;info…</translation>
+    </message>
+    <message>
+        <source>G20: the program is in inches</source>
+        <translation>G20: the program is in inches</translation>
+    </message>
+    <message>
+        <source>G21: the program is in mm</source>
+        <translation>G21: the program is in mm</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -3384,6 +3424,69 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Spindle speed as programmed</source>
         <translation>Spindle speed as programmed</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::PlacementBar</name>
+    <message>
+        <source>%1 goes to %2 mm at line %3, %4 mm beyond the travel&apos;s %5 mm.</source>
+        <translation>%1 goes to %2 mm at line %3, %4 mm beyond the travel&apos;s %5 mm.</translation>
+    </message>
+    <message>
+        <source>The program leaves the machine&apos;s travel at the current work zero. %1 Its coordinates are probably relative to the stock: bring the tool to the chosen point of the stock, its tip on the stock&apos;s top (the program&apos;s Z0), and set the work zero there.</source>
+        <translation>The program leaves the machine&apos;s travel at the current work zero. %1 Its coordinates are probably relative to the stock: bring the tool to the chosen point of the stock, its tip on the stock&apos;s top (the program&apos;s Z0), and set the work zero there.</translation>
+    </message>
+    <message>
+        <source>With the work zero set here the program would sit at %1 mm: inside the travel.</source>
+        <translation>With the work zero set here the program would sit at %1 mm: inside the travel.</translation>
+    </message>
+    <message>
+        <source>With the work zero set here the program would sit at %1 mm: still outside the travel. Move to the stock first or choose another point.</source>
+        <translation>With the work zero set here the program would sit at %1 mm: still outside the travel. Move to the stock first or choose another point.</translation>
+    </message>
+    <message>
+        <source>Here is the stock&apos;s:</source>
+        <translation>Here is the stock&apos;s:</translation>
+    </message>
+    <message>
+        <source>program&apos;s X0 Y0</source>
+        <translation>program&apos;s X0 Y0</translation>
+    </message>
+    <message>
+        <source>front left corner</source>
+        <translation>front left corner</translation>
+    </message>
+    <message>
+        <source>front right corner</source>
+        <translation>front right corner</translation>
+    </message>
+    <message>
+        <source>back left corner</source>
+        <translation>back left corner</translation>
+    </message>
+    <message>
+        <source>back right corner</source>
+        <translation>back right corner</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>centre</translation>
+    </message>
+    <message>
+        <source>Set the work zero here</source>
+        <translation>Set the work zero here</translation>
+    </message>
+    <message>
+        <source>Sets the active work offset so that the chosen point of the program is at the current X/Y and the program&apos;s Z0 at the current Z</source>
+        <translation>Sets the active work offset so that the chosen point of the program is at the current X/Y and the program&apos;s Z0 at the current Z</translation>
+    </message>
+    <message>
+        <source>Shift into the travel</source>
+        <translation>Shift into the travel</translation>
+    </message>
+    <message>
+        <source>Shifts the active work offset by the least that puts the whole program inside the soft limits (as frezka-cli check suggests)</source>
+        <translation>Shifts the active work offset by the least that puts the whole program inside the soft limits (as frezka-cli check suggests)</translation>
     </message>
 </context>
 <context>
@@ -3927,6 +4030,69 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
 </context>
 <context>
+    <name>frezka::gui::ProgramInfoDialog</name>
+    <message>
+        <source>not planned</source>
+        <translation>not planned</translation>
+    </message>
+    <message>
+        <source>%1: %2 lines, %3 bytes, %4 moves, %5 mm of path, estimated time %6.</source>
+        <translation>%1: %2 lines, %3 bytes, %4 moves, %5 mm of path, estimated time %6.</translation>
+    </message>
+    <message>
+        <source>in the spindle</source>
+        <translation>in the spindle</translation>
+    </message>
+    <message>
+        <source>Program info</source>
+        <translation>Program info</translation>
+    </message>
+    <message>
+        <source>Extent (mm)</source>
+        <translation>Extent (mm)</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Axis</translation>
+    </message>
+    <message>
+        <source>Program min</source>
+        <translation>Program min</translation>
+    </message>
+    <message>
+        <source>Program max</source>
+        <translation>Program max</translation>
+    </message>
+    <message>
+        <source>Machine min</source>
+        <translation>Machine min</translation>
+    </message>
+    <message>
+        <source>Machine max</source>
+        <translation>Machine max</translation>
+    </message>
+    <message>
+        <source>Tools in their order</source>
+        <translation>Tools in their order</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Tool</translation>
+    </message>
+    <message>
+        <source>From line</source>
+        <translation>From line</translation>
+    </message>
+    <message>
+        <source>Planned time</source>
+        <translation>Planned time</translation>
+    </message>
+    <message>
+        <source>Cut length (mm)</source>
+        <translation>Cut length (mm)</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::RunPanel</name>
     <message>
         <source>Elapsed %1</source>
@@ -4162,6 +4328,61 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Reconnect automatically after a lost link</source>
         <translation>Reconnect automatically after a lost link</translation>
     </message>
+    <message>
+        <source>Shortcuts</source>
+        <translation>Shortcuts</translation>
+    </message>
+    <message>
+        <source>Lengths shown in</source>
+        <translation>Lengths shown in</translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
+        <translation>millimetres (mm)</translation>
+    </message>
+    <message>
+        <source>inches (in)</source>
+        <translation>inches (in)</translation>
+    </message>
+    <message>
+        <source>The DRO, the jog steps and feed, the status panel and the speed plot. The machine, its profile and the programs&apos; own G20/G21 are not affected.</source>
+        <translation>The DRO, the jog steps and feed, the status panel and the speed plot. The machine, its profile and the programs&apos; own G20/G21 are not affected.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ShortcutEditor</name>
+    <message>
+        <source>“%1” now has the key %2.</source>
+        <translation>“%1” now has the key %2.</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(none)</translation>
+    </message>
+    <message>
+        <source>Every key is back to its default.</source>
+        <translation>Every key is back to its default.</translation>
+    </message>
+    <message>
+        <source>Click a key field and press the new key; it applies at once. A key that another action already has is refused.</source>
+        <translation>Click a key field and press the new key; it applies at once. A key that another action already has is refused.</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>Action</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Key</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Default</translation>
+    </message>
+    <message>
+        <source>Reset to defaults</source>
+        <translation>Reset to defaults</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::Shortcuts</name>
@@ -4210,10 +4431,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>Keyboard shortcuts</translation>
     </message>
     <message>
-        <source>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
-        <translation>Keys of the main window. Jog with the arrows (X, Y) and Page Up/Down (Z). A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</translation>
-    </message>
-    <message>
         <source>Action</source>
         <translation>Action</translation>
     </message>
@@ -4225,24 +4442,92 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>LinuxCNC AXIS</source>
         <translation>LinuxCNC AXIS</translation>
     </message>
+    <message>
+        <source>Jog X−</source>
+        <translation>Jog X−</translation>
+    </message>
+    <message>
+        <source>Jog X+</source>
+        <translation>Jog X+</translation>
+    </message>
+    <message>
+        <source>Jog Y−</source>
+        <translation>Jog Y−</translation>
+    </message>
+    <message>
+        <source>Jog Y+</source>
+        <translation>Jog Y+</translation>
+    </message>
+    <message>
+        <source>Jog Z−</source>
+        <translation>Jog Z−</translation>
+    </message>
+    <message>
+        <source>Jog Z+</source>
+        <translation>Jog Z+</translation>
+    </message>
+    <message>
+        <source>Work zero of X here</source>
+        <translation>Work zero of X here</translation>
+    </message>
+    <message>
+        <source>Work zero of Y here</source>
+        <translation>Work zero of Y here</translation>
+    </message>
+    <message>
+        <source>Work zero of Z here</source>
+        <translation>Work zero of Z here</translation>
+    </message>
+    <message>
+        <source>Work zero of all axes here</source>
+        <translation>Work zero of all axes here</translation>
+    </message>
+    <message>
+        <source>Spindle on / off</source>
+        <translation>Spindle on / off</translation>
+    </message>
+    <message>
+        <source>Give one key (with Ctrl, Shift or Alt if you like), not a sequence of keys.</source>
+        <translation>Give one key (with Ctrl, Shift or Alt if you like), not a sequence of keys.</translation>
+    </message>
+    <message>
+        <source>%1 is already the key of “%2”. Give that action another key first, or choose a different key.</source>
+        <translation>%1 is already the key of “%2”. Give that action another key first, or choose a different key.</translation>
+    </message>
+    <message>
+        <source>Keys of the main window; change them in Settings › Shortcuts. The jog keys act while held, only when jogging is possible (not while a job runs) and not while a text field has the focus. A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</source>
+        <translation>Keys of the main window; change them in Settings › Shortcuts. The jog keys act while held, only when jogging is possible (not while a job runs) and not while a text field has the focus. A text field with the focus keeps the letters typed into it; no key presses a button that merely has the focus.</translation>
+    </message>
+    <message>
+        <source>File › Open program</source>
+        <translation>File › Open program</translation>
+    </message>
+    <message>
+        <source>File › Reload program</source>
+        <translation>File › Reload program</translation>
+    </message>
+    <message>
+        <source>File › Quit</source>
+        <translation>File › Quit</translation>
+    </message>
+    <message>
+        <source>%1 is the key of the menu command “%2”. Choose a different key.</source>
+        <translation>%1 is the key of the menu command “%2”. Choose a different key.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::SpeedPlot</name>
     <message>
-        <source>mm/min along the path (%1 mm)</source>
-        <translation>mm/min along the path (%1 mm)</translation>
+        <source>%1 along the path (%2 %3)</source>
+        <translation>%1 along the path (%2 %3)</translation>
     </message>
     <message>
-        <source>%1 mm/min at %2 mm, line %3</source>
-        <translation>%1 mm/min at %2 mm, line %3</translation>
+        <source>%1 %2 at %3 %4, line %5</source>
+        <translation>%1 %2 at %3 %4, line %5</translation>
     </message>
 </context>
 <context>
     <name>frezka::gui::StatusPanel</name>
-    <message>
-        <source>%1 mm/min</source>
-        <translation>%1 mm/min</translation>
-    </message>
     <message>
         <source>%1 % (runs %2 %)</source>
         <translation>%1 % (runs %2 %)</translation>
@@ -4250,10 +4535,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>override %1</source>
         <translation>override %1</translation>
-    </message>
-    <message>
-        <source>programmed %1 mm/min × %2</source>
-        <translation>programmed %1 mm/min × %2</translation>
     </message>
     <message>
         <source>clockwise (M3)</source>
@@ -4322,6 +4603,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>%1 (override %2 %)</source>
         <translation>%1 (override %2 %)</translation>
+    </message>
+    <message>
+        <source>programmed %1 %2 × %3</source>
+        <translation>programmed %1 %2 × %3</translation>
     </message>
 </context>
 <context>

@@ -7,11 +7,13 @@
 
 #include "workflowfixture.h"
 
+#include "gui/shortcuteditor.h"
 #include "gui/shortcuts.h"
 
 #include <QAbstractButton>
 #include <QAction>
 #include <QDialog>
+#include <QKeySequenceEdit>
 #include <QLineEdit>
 #include <QShortcut>
 #include <QTableWidget>
@@ -25,12 +27,45 @@ class WorkflowShortcutsTest : public WorkflowFixture
         const QKeyCombination k = key[0];
         QTest::keyClick(m_window.get(), k.key(), k.keyboardModifiers());
     }
+    // Each jog key jogs its axis by the chosen step: the L on the wire, the unit's counters there.
+    void jogByKey(OperatorAction action, int axis, double mm)
+    {
+        QVERIFY(waitIdle());
+        const std::int64_t from = state().positionSteps[std::size_t(axis)];
+        WireTap wire;
+        tapWire(wire);
+        press(keyOf(action));
+        QTRY_VERIFY2_WITH_TIMEOUT(state().positionSteps[std::size_t(axis)] ==
+                                      from + steps(axis, mm),
+                                  qPrintable(describe()), kMachineTimeoutMs);
+        QVERIFY2(wire.first(jogCommand(axis, mm)) >= 0,
+                 qPrintable(wire.sent.join(QLatin1Char('|'))));
+        QVERIFY(waitIdle());
+    }
     QKeySequence keyOf(OperatorAction action) const
     {
-        for (const OperatorShortcut &s : operatorShortcuts())
-            if (s.action == action)
-                return s.key;
-        return {};
+        return shortcutKey(operatorShortcut(action));
+    }
+    // A jog of 1 mm: "!0Lx,y,z" with the axis' steps (the A component may follow).
+    QRegularExpression jogCommand(int axis, double mm) const
+    {
+        std::array<std::int64_t, 3> d{};
+        d[std::size_t(axis)] = steps(axis, mm);
+        return command(QStringLiteral("!0L%1,%2,%3(,0)?").arg(d[0]).arg(d[1]).arg(d[2]));
+    }
+    // Any jog that moves ("!0L" with a component other than 0; L0,0,0 only asks for the queue).
+    static QRegularExpression anyMovingJog()
+    {
+        return QRegularExpression(QStringLiteral("^!0L(?!0,0,0(,0)?(,[0-9A-F]{2})?$).*"));
+    }
+    void focusTheWindow()
+    {
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        if (QWidget *focus = QApplication::focusWidget())
+            focus->clearFocus();
+        QTRY_VERIFY(!QApplication::focusWidget() ||
+                    !qobject_cast<QLineEdit *>(QApplication::focusWidget()));
     }
     static QRegularExpression command(const QString &pattern)
     {
@@ -60,12 +95,17 @@ private slots:
             keys << table->item(row, 1)->text();
         for (const OperatorShortcut &s : operatorShortcuts()) {
             QVERIFY2(keys.contains(s.key.toString(QKeySequence::NativeText)), s.name);
-            QVERIFY2(m_window->findChild<QShortcut *>(QLatin1String(s.name)), s.name);
+            // A jog key acts while held (key press and release), the others are QShortcuts.
+            QVERIFY2(bool(m_window->findChild<QShortcut *>(QLatin1String(s.name))) == !s.held,
+                     s.name);
         }
         QCOMPARE(keyOf(OperatorAction::Run), QKeySequence(Qt::Key_R)); // AXIS's keys
         QCOMPARE(keyOf(OperatorAction::Pause), QKeySequence(Qt::Key_P));
         QCOMPARE(keyOf(OperatorAction::Resume), QKeySequence(Qt::Key_S));
         QCOMPARE(keyOf(OperatorAction::Stop), QKeySequence(Qt::Key_Escape));
+        QCOMPARE(keyOf(OperatorAction::JogXPlus), QKeySequence(Qt::Key_Right));
+        QCOMPARE(keyOf(OperatorAction::JogZPlus), QKeySequence(Qt::Key_PageUp));
+        QCOMPARE(keyOf(OperatorAction::Spindle), QKeySequence(Qt::Key_F9));
         dialog->close();
         m_window->activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
@@ -161,6 +201,156 @@ private slots:
         QCOMPARE(state().mode, MachineMode::Idle);
         QCOMPARE(wire.first(command(QStringLiteral("!0(\\*S|C|XM).*"))), -1);
         line->clear();
+    }
+
+    // The jog keys (AXIS's: arrows X/Y, Page Up/Down Z) jog by the step, F9 switches the spindle
+    // (address 7 on the wire, the emulator's spindle turns), Shift+X zeroes X here: the DRO
+    // reads 0 and G0 X0 in the console comes back to that point on the unit's counters.
+    void theJogZeroAndSpindleKeysReachTheUnit()
+    {
+        focusTheWindow();
+        m_window->jogPanel()->setStepMm(1.0);
+        jogByKey(OperatorAction::JogXPlus, 0, 1.0);
+        if (QTest::currentTestFailed())
+            return;
+        jogByKey(OperatorAction::JogXMinus, 0, -1.0);
+        if (QTest::currentTestFailed())
+            return;
+        jogByKey(OperatorAction::JogYPlus, 1, 1.0);
+        if (QTest::currentTestFailed())
+            return;
+        jogByKey(OperatorAction::JogYMinus, 1, -1.0);
+        if (QTest::currentTestFailed())
+            return;
+        jogByKey(OperatorAction::JogZMinus, 2, -1.0);
+        if (QTest::currentTestFailed())
+            return;
+        jogByKey(OperatorAction::JogZPlus, 2, 1.0);
+        if (QTest::currentTestFailed())
+            return;
+        jogByKey(OperatorAction::JogXPlus, 0, 1.0);
+        if (QTest::currentTestFailed())
+            return;
+        const std::int64_t zeroAt = state().positionSteps[0];
+        press(keyOf(OperatorAction::ZeroX));
+        QTRY_COMPARE(m_window->dro()->findChild<QLabel *>(QStringLiteral("droWorkX"))->text(),
+                     QStringLiteral("0.000"));
+        jogByKey(OperatorAction::JogXPlus, 0, 1.0);
+        if (QTest::currentTestFailed())
+            return;
+        QTRY_COMPARE(m_window->dro()->findChild<QLabel *>(QStringLiteral("droWorkX"))->text(),
+                     QStringLiteral("1.000"));
+        m_window->executeManualLine(QStringLiteral("G0 X0"));
+        QTRY_COMPARE_WITH_TIMEOUT(state().positionSteps[0], zeroAt, kMachineTimeoutMs);
+        QVERIFY(waitIdle());
+        // F9: the spindle on (!7V on the wire, the emulator's spindle turns), F9 again: off.
+        WireTap wire;
+        tapWire(wire);
+        press(keyOf(OperatorAction::Spindle));
+        QTRY_VERIFY_WITH_TIMEOUT(state().spindleOn, 10000);
+        QVERIFY(wire.first(command(QStringLiteral("!7V[1-9][0-9]*"))) >= 0);
+        press(keyOf(OperatorAction::Spindle));
+        QTRY_VERIFY_WITH_TIMEOUT(!state().spindleOn, 10000);
+        QVERIFY(wire.first(command(QStringLiteral("!7V0"))) >= 0);
+        m_window->setWorkZero(-1); // leave the work zero where the day goes on
+        QTRY_VERIFY(m_window->workOffsets()[std::size_t(m_window->activeOffset())][0] ==
+                    state().positionMm[0]);
+    }
+
+    // A jog key never acts while a text field has the focus (Page Up in the console) nor while
+    // a job runs (no moving L on the wire; the job runs on).
+    void theJogKeysWaitForTheirMoment()
+    {
+        QVERIFY(waitIdle());
+        auto *line = m_window->console()->findChild<QLineEdit *>();
+        line->setFocus();
+        QTRY_VERIFY(line->hasFocus());
+        WireTap wire;
+        tapWire(wire);
+        press(keyOf(OperatorAction::JogZPlus));
+        press(keyOf(OperatorAction::JogXPlus)); // the line edit's cursor key
+        QTest::qWait(500);
+        QCOMPARE(wire.first(anyMovingJog()), -1);
+        focusTheWindow();
+        QVERIFY(
+            load(writeProgram(QStringLiteral("jogkeys.nc"), "G21 G90\nG1 X60 F300\nG1 X0\nM2\n")));
+        const std::int64_t y0 = state().positionSteps[1], z0 = state().positionSteps[2];
+        button(m_window->runPanel(), "run")->click();
+        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Running, kMachineTimeoutMs);
+        const int from = int(wire.sent.size());
+        press(keyOf(OperatorAction::JogYPlus));
+        press(keyOf(OperatorAction::JogZMinus));
+        QVERIFY(waitIdle());
+        QCOMPARE(wire.sent.mid(from).indexOf(anyMovingJog()), -1);
+        QCOMPARE(state().positionSteps[1], y0);
+        QCOMPARE(state().positionSteps[2], z0);
+    }
+
+    // Every key can be changed in Settings › Shortcuts (stored in QSettings, applied at once);
+    // a key another action has is refused with a message naming that action; Reset to defaults
+    // brings the AXIS keys back. One operator's visit to the editor and back at the machine, in
+    // order (each step needs the keys the one before left): longer than a slot usually is.
+    void theKeysAreEditableInTheSettings()
+    {
+        QVERIFY(waitIdle());
+        SettingsDialog *settings = m_window->openSettings();
+        ShortcutEditor *editor = settings->shortcutEditor();
+        QVERIFY(editor);
+        QString why;
+        QVERIFY(editor->assign(OperatorAction::JogXPlus, QKeySequence(Qt::Key_D), &why));
+        QCOMPARE(QSettings().value(QStringLiteral("shortcuts/shortcutJogXPlus")).toString(),
+                 QStringLiteral("D"));
+        QVERIFY(editor->assign(OperatorAction::Spindle, QKeySequence(Qt::Key_F8), &why));
+        // Typed into the key field: P is Pause's, refused, the field shows Shift+Y again.
+        auto *field = editor->findChild<QKeySequenceEdit *>(QStringLiteral("keyZeroY"));
+        QVERIFY(field);
+        field->setKeySequence(QKeySequence(Qt::Key_P));
+        QMetaObject::invokeMethod(field, "editingFinished");
+        QVERIFY2(editor->message().contains(QStringLiteral("Pause")),
+                 qPrintable(editor->message()));
+        QCOMPARE(field->keySequence(), QKeySequence(Qt::SHIFT | Qt::Key_Y));
+        QCOMPARE(keyOf(OperatorAction::ZeroY), QKeySequence(Qt::SHIFT | Qt::Key_Y));
+        QVERIFY(!editor->assign(OperatorAction::JogYPlus, QKeySequence(Qt::Key_R), &why));
+        QVERIFY2(why.contains(QStringLiteral("Run the program")), qPrintable(why));
+        // A menu command's key (File › Reload program) is refused too.
+        QVERIFY(!editor->assign(OperatorAction::ZeroAll, QKeySequence(Qt::CTRL | Qt::Key_R), &why));
+        QVERIFY2(why.contains(QStringLiteral("Reload program")), qPrintable(why));
+        QCOMPARE(keyOf(OperatorAction::ZeroAll), QKeySequence(Qt::Key_End));
+        settings->close();
+        focusTheWindow();
+        // D jogs X+ now, the arrow no longer; F8 switches the spindle.
+        jogByKey(OperatorAction::JogXPlus, 0, 1.0);
+        if (QTest::currentTestFailed())
+            return;
+        QCOMPARE(keyOf(OperatorAction::JogXPlus), QKeySequence(Qt::Key_D));
+        WireTap wire;
+        tapWire(wire);
+        QTest::keyClick(m_window.get(), Qt::Key_Right);
+        QTest::qWait(500);
+        QCOMPARE(wire.first(anyMovingJog()), -1);
+        QTest::keyClick(m_window.get(), Qt::Key_F8);
+        QTRY_VERIFY_WITH_TIMEOUT(state().spindleOn, 10000);
+        QTest::keyClick(m_window.get(), Qt::Key_F8);
+        QTRY_VERIFY_WITH_TIMEOUT(!state().spindleOn, 10000);
+        // Help › Keyboard shortcuts lists the key in use.
+        showShortcutsDialog(m_window.get());
+        auto *table = m_window->findChild<QTableWidget *>(QStringLiteral("shortcutsTable"));
+        QVERIFY(!table->findItems(QStringLiteral("D"), Qt::MatchExactly).isEmpty());
+        m_window->findChild<QDialog *>(QStringLiteral("shortcutsDialog"))->close();
+        // Reset to defaults: the arrow jogs again, D does nothing.
+        settings = m_window->openSettings();
+        button(settings->shortcutEditor(), "resetShortcuts")->click();
+        QVERIFY(!QSettings().contains(QStringLiteral("shortcuts/shortcutJogXPlus")));
+        settings->close();
+        focusTheWindow();
+        QCOMPARE(keyOf(OperatorAction::JogXPlus), QKeySequence(Qt::Key_Right));
+        jogByKey(OperatorAction::JogXMinus, 0, -1.0);
+        if (QTest::currentTestFailed())
+            return;
+        const int from = int(wire.sent.size());
+        QTest::keyClick(m_window.get(), Qt::Key_D);
+        QTest::qWait(500);
+        QCOMPARE(wire.sent.mid(from).indexOf(anyMovingJog()), -1);
     }
 };
 
