@@ -211,8 +211,8 @@ private:
     QMenu *m_fileMenu, *m_recentMenu, *m_machineMenu, *m_viewMenu, *m_toolsMenu, *m_helpMenu;
     QAction *m_openAction, *m_reloadAction, *m_infoAction, *m_quitAction, *m_connectAction,
         *m_disconnectAction, *m_settingsAction, *m_unitConfigAction, *m_runFromLineAction,
-        *m_wholeProgramAction, *m_aboutAction,
-        *m_shortcutsAction, *m_grinderAction = nullptr, *m_resetLayoutAction;
+        *m_wholeProgramAction, *m_aboutAction, *m_shortcutsAction, *m_grinderAction = nullptr,
+                                                                   *m_resetLayoutAction;
     ProgramSession *m_program;
     QFileSystemWatcher *m_watcher; // the loaded program's file
     bool m_reloadAfterJob = false; // it changed while its job ran: ask when the job ends
