@@ -4031,13 +4031,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     </message>
 </context>
 <context>
-    <name>frezka::gui::ProgramListing</name>
-    <message>
-        <source>Run from this line (%1)…</source>
-        <translation>Spustit od tohoto řádku (%1)…</translation>
-    </message>
-</context>
-<context>
     <name>frezka::gui::ProgramInfoDialog</name>
     <message>
         <source>not planned</source>
@@ -4098,6 +4091,13 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Cut length (mm)</source>
         <translation>Délka řezu (mm)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProgramListing</name>
+    <message>
+        <source>Run from this line (%1)…</source>
+        <translation>Spustit od tohoto řádku (%1)…</translation>
     </message>
 </context>
 <context>

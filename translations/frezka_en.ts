@@ -4023,13 +4023,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
 </context>
 <context>
-    <name>frezka::gui::ProgramListing</name>
-    <message>
-        <source>Run from this line (%1)…</source>
-        <translation>Run from this line (%1)…</translation>
-    </message>
-</context>
-<context>
     <name>frezka::gui::ProgramInfoDialog</name>
     <message>
         <source>not planned</source>
@@ -4090,6 +4083,13 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Cut length (mm)</source>
         <translation>Cut length (mm)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProgramListing</name>
+    <message>
+        <source>Run from this line (%1)…</source>
+        <translation>Run from this line (%1)…</translation>
     </message>
 </context>
 <context>
