@@ -6,6 +6,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <string>
 
 namespace {
 volatile std::sig_atomic_t g_stop = 0;
@@ -18,6 +19,12 @@ void onSignal(int)
 int main(int argc, char *argv[])
 {
     using namespace frezka::k51emu;
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--version") {
+            std::fputs("k51-emu " FREZKA_VERSION "\n", stdout);
+            return 0;
+        }
+    }
     Options options;
     std::string error;
     if (!parseOptions(std::vector<std::string>(argv + 1, argv + argc), options, error)) {
