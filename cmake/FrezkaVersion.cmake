@@ -12,3 +12,14 @@ if(GIT_FOUND AND EXISTS "${PROJECT_SOURCE_DIR}/.git")
         set(FREZKA_VERSION_STRING "${PROJECT_VERSION} (git ${_frezka_git})")
     endif()
 endif()
+
+# frezka_version: the one generated source defining frezka::app::versionString()
+# (app/common/version.h); configure_file rewrites it only when the text changes.
+function(frezka_add_version_library)
+    set(source ${CMAKE_BINARY_DIR}/generated/frezka_version.cpp)
+    file(CONFIGURE OUTPUT ${source} CONTENT
+"#include \"app/common/version.h\"\n\nconst char *frezka::app::versionString()\n{\n    return \"@FREZKA_VERSION_STRING@\";\n}\n"
+        @ONLY)
+    add_library(frezka_version STATIC ${source})
+    frezka_module_includes(frezka_version app/common)
+endfunction()

@@ -6,6 +6,8 @@
 // source tree's resources/ (FREZKA_SOURCE_DATA_DIR). Nothing is ever written there: user data
 // lives in the XDG locations (QStandardPaths).
 
+#include "app/common/version.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
@@ -52,7 +54,7 @@ inline QString resolveProfile(const QString &nameOrPath)
 inline QString versionText(const QString &name)
 {
     const QString data = dataDir();
-    return name + QLatin1Char(' ') + QStringLiteral(FREZKA_VERSION) + QLatin1Char('\n') +
+    return name + QLatin1Char(' ') + QString::fromUtf8(versionString()) + QLatin1Char('\n') +
            QCoreApplication::translate("frezka::app", "data: %1")
                .arg(data.isEmpty() ? QCoreApplication::translate("frezka::app", "(not found)")
                                    : data) +

@@ -1,6 +1,7 @@
 // frezka: the desktop application. Opens the operating window on the built-in emulator
 // (or the port of the last profile); a program path on the command line is loaded at once.
 
+#include "app/common/version.h"
 #include "gui/language.h"
 #include "gui/mainwindow.h"
 #include "gui/programview.h"
@@ -63,7 +64,7 @@ int main(int argc, char **argv)
         printsOnly(argc, argv) ? new QCoreApplication(argc, argv) : new QApplication(argc, argv));
     QApplication::setOrganizationName(QStringLiteral("Frezka"));
     QApplication::setApplicationName(QStringLiteral("frezka"));
-    QApplication::setApplicationVersion(QStringLiteral(FREZKA_VERSION));
+    QApplication::setApplicationVersion(QString::fromUtf8(frezka::app::versionString()));
     frezka::gui::applyLanguage(
         frezka::gui::effectiveLanguage(QSettings().value(QStringLiteral("language")).toString()));
 

@@ -1,5 +1,6 @@
 // k51-emu: an ANC/K51 grinding control on a pseudo-terminal, for tests and for trying the
 // transfer tools without a machine. Prints the terminal path on the first line of stdout.
+#include "app/common/version.h"
 #include "app/k51-emu/options.h"
 #include "app/k51-emu/ptyserver.h"
 #include "driver/grinder/family.h"
@@ -21,7 +22,7 @@ int main(int argc, char *argv[])
     using namespace frezka::k51emu;
     for (int i = 1; i < argc; ++i) {
         if (std::string(argv[i]) == "--version") {
-            std::fputs("k51-emu " FREZKA_VERSION "\n", stdout);
+            std::printf("k51-emu %s\n", frezka::app::versionString());
             return 0;
         }
     }
