@@ -339,6 +339,21 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</source>
+        <translation>%1 nelze otevřít: přístup odepřen. Port patří skupině %2: přidejte se do ní příkazem &quot;sudo usermod -aG %2 $USER&quot;, pak se odhlaste a znovu přihlaste.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::app</name>
+    <message>
+        <source>data: %1</source>
+        <translation>data: %1</translation>
+    </message>
+    <message>
+        <source>(not found)</source>
+        <translation>(nenalezena)</translation>
+    </message>
 </context>
 <context>
     <name>frezka::cli</name>
@@ -433,6 +448,14 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
 pracovní posunutí: --offset G54:X,Y,Z určí, kde na stroji leží nula programu (strojní mm; G54 .. G59.3, lze opakovat); --work-zero X,Y,Z je totéž co --offset G54:X,Y,Z.
 zastavení pro obsluhu: na M0, M1 a M6 čeká frezka-cli run na Enter; --continue-at-stops pokračuje bez obsluhy.
 spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N se stavem programu na tomto řádku (nástroj, vřeteno, chlazení, posuv, režimy, posunutí) po bezpečném najetí (vřeteno zapnuto, Z nahoru do bezpečné výšky, X/Y na místo, Z dolů posuvem).
+
+</translation>
+    </message>
+    <message>
+        <source>--version prints the version and the data folder (shipped machine profiles and sample programs).
+
+</source>
+        <translation>--version vypíše verzi a složku dat (dodávané profily strojů a ukázkové programy).
 
 </translation>
     </message>
@@ -2303,6 +2326,10 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Serial port %1: %2</source>
         <translation>Sériový port %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</source>
+        <translation>%1 nelze otevřít: přístup odepřen. Port patří skupině %2: přidejte se do ní příkazem &quot;sudo usermod -aG %2 $USER&quot;, pak se odhlaste a znovu přihlaste.</translation>
     </message>
 </context>
 <context>
@@ -4988,6 +5015,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>%1 nemá osu A</translation>
     </message>
     <message>
+        <source>&apos;%1&apos; is not a firmware string of the %2</source>
+        <translation>&apos;%1&apos; není řetězec firmwaru jednotky %2</translation>
+    </message>
+    <message>
         <source>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
 The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
@@ -5017,6 +5048,7 @@ Options:
   --link PATH         also create a symlink PATH to the terminal
   --verbose           log every byte to stderr
   --help              this text
+  --version           the version
 </source>
         <translation>Použití: gve-emu [volby]
 Obsluhuje emulovaný interpolátor GVE na novém pseudoterminálu v reálném čase.
@@ -5047,11 +5079,8 @@ Volby:
   --link CESTA        vytvořit také symbolický odkaz CESTA na terminál
   --verbose           vypisovat každý bajt na stderr
   --help              tento text
+  --version           verze
 </translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; is not a firmware string of the %2</source>
-        <translation>&apos;%1&apos; není řetězec firmwaru jednotky %2</translation>
     </message>
 </context>
 <context>

@@ -339,6 +339,21 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</source>
+        <translation>cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::app</name>
+    <message>
+        <source>data: %1</source>
+        <translation>data: %1</translation>
+    </message>
+    <message>
+        <source>(not found)</source>
+        <translation>(not found)</translation>
+    </message>
 </context>
 <context>
     <name>frezka::cli</name>
@@ -433,6 +448,14 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
 work offsets: --offset G54:X,Y,Z sets where the program&apos;s zero is on the machine (machine mm; G54 .. G59.3, repeatable); --work-zero X,Y,Z is --offset G54:X,Y,Z.
 operator stops: at M0, M1 and M6 frezka-cli run waits for Enter; --continue-at-stops runs on without an operator.
 run from a line: frezka-cli run --from-line N starts the job at line N with the program&apos;s state there (tool, spindle, coolant, feed, modes, offsets), after a safe approach (spindle on, Z up to the safe height, X/Y across, Z down at the feed).
+
+</translation>
+    </message>
+    <message>
+        <source>--version prints the version and the data folder (shipped machine profiles and sample programs).
+
+</source>
+        <translation>--version prints the version and the data folder (shipped machine profiles and sample programs).
 
 </translation>
     </message>
@@ -2300,6 +2323,10 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Serial port %1: %2</source>
         <translation>Serial port %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</source>
+        <translation>Cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</translation>
     </message>
 </context>
 <context>
@@ -4975,6 +5002,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>the %1 has no axis A</translation>
     </message>
     <message>
+        <source>&apos;%1&apos; is not a firmware string of the %2</source>
+        <translation>&apos;%1&apos; is not a firmware string of the %2</translation>
+    </message>
+    <message>
         <source>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
 The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
@@ -5004,6 +5035,7 @@ Options:
   --link PATH         also create a symlink PATH to the terminal
   --verbose           log every byte to stderr
   --help              this text
+  --version           the version
 </source>
         <translation>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
@@ -5034,11 +5066,8 @@ Options:
   --link PATH         also create a symlink PATH to the terminal
   --verbose           log every byte to stderr
   --help              this text
+  --version           the version
 </translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; is not a firmware string of the %2</source>
-        <translation>&apos;%1&apos; is not a firmware string of the %2</translation>
     </message>
 </context>
 <context>

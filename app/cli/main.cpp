@@ -1,6 +1,7 @@
 // frezka-cli: the headless front end (check, toolpath, plan, run, grinder, ...).
 #include "cli.h"
 
+#include "app/common/datadir.h"
 #include "app/common/translator.h"
 
 #include <QCoreApplication>
@@ -48,6 +49,9 @@ QString usageText()
         "run from a line: frezka-cli run --from-line N starts the job at line N with the "
         "program's state there (tool, spindle, coolant, feed, modes, offsets), after a safe "
         "approach (spindle on, Z up to the safe height, X/Y across, Z down at the feed).\n\n");
+    text += QCoreApplication::translate("frezka::cli",
+                                        "--version prints the version and the data folder "
+                                        "(shipped machine profiles and sample programs).\n\n");
     return text + exitCodes();
 }
 
@@ -79,6 +83,10 @@ int main(int argc, char *argv[])
     }
     if (isHelp(args.first()) || args.first() == QLatin1String("help")) {
         out(usageText());
+        return 0;
+    }
+    if (args.first() == QLatin1String("--version")) {
+        out(frezka::app::versionText(QStringLiteral("frezka-cli")));
         return 0;
     }
     const std::string name = args.takeFirst().toStdString();

@@ -2,6 +2,8 @@
 
 #include "cli.h"
 
+#include "app/common/datadir.h"
+
 #include "gcode/error.h"
 
 #include <QFile>
@@ -85,7 +87,9 @@ std::optional<machine::MachineConfig> loadProfile(const QString &path)
 {
     if (path.isEmpty())
         return machine::defaultMachineConfig(protocol::Variant::Gve64);
-    const machine::ConfigResult loaded = machine::loadMachineConfig(path.toStdString());
+    // A file, or a shipped profile by name (--machine gve84): app/common/datadir.h.
+    const machine::ConfigResult loaded =
+        machine::loadMachineConfig(app::resolveProfile(path).toStdString());
     printConfigNotes(loaded);
     if (!loaded.config) {
         for (const machine::ConfigError &e : loaded.errors)

@@ -26,7 +26,7 @@ struct ProgramCli
 
 struct ProgramOptions
 {
-    QString machine; // the profile's path; empty: the shipped GVE64 profile
+    QString machine; // the profile: a path or a shipped name (gve84); empty: the GVE64 defaults
     session::OffsetState offsets;
     bool offsetsGiven = false;
 };

@@ -1,6 +1,7 @@
 // frezka: the desktop application. Opens the operating window on the built-in emulator
 // (or the port of the last profile); a program path on the command line is loaded at once.
 
+#include "app/common/version.h"
 #include "gui/language.h"
 #include "gui/mainwindow.h"
 #include "gui/programview.h"
@@ -40,16 +41,30 @@ void runForScreenshot(frezka::gui::MainWindow &window, int ms, const std::functi
     timer->start(100);
 }
 
+// --help and --version only print: they get a QCoreApplication, which needs no display (the
+// package's smoke test and a terminal without X run them).
+bool printsOnly(int argc, char **argv)
+{
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray arg(argv[i]);
+        if (arg == "--help" || arg == "-h" || arg == "--help-all" || arg == "--version" ||
+            arg == "-v")
+            return true;
+    }
+    return false;
+}
+
 } // namespace
 
 // The start-up sequence read top to bottom: language, options, window, emulator or port. Long
 // as a script is; each step is a call, and splitting it would scatter the order that matters.
 int main(int argc, char **argv)
 {
-    QApplication app(argc, argv);
+    const std::unique_ptr<QCoreApplication> app(
+        printsOnly(argc, argv) ? new QCoreApplication(argc, argv) : new QApplication(argc, argv));
     QApplication::setOrganizationName(QStringLiteral("Frezka"));
     QApplication::setApplicationName(QStringLiteral("frezka"));
-    QApplication::setApplicationVersion(QStringLiteral(FREZKA_VERSION));
+    QApplication::setApplicationVersion(QString::fromUtf8(frezka::app::versionString()));
     frezka::gui::applyLanguage(
         frezka::gui::effectiveLanguage(QSettings().value(QStringLiteral("language")).toString()));
 
@@ -82,7 +97,7 @@ int main(int argc, char **argv)
     parser.addOption(screenshotRun);
     parser.addPositionalArgument(QStringLiteral("program"),
                                  QApplication::translate("main", "G-code program to open."));
-    parser.process(app);
+    parser.process(*app);
     frezka::gui::applyLanguage(frezka::gui::effectiveLanguage(
         parser.isSet(language) ? parser.value(language)
                                : QSettings().value(QStringLiteral("language")).toString()));
@@ -116,5 +131,5 @@ int main(int argc, char **argv)
     }
     if (!parser.positionalArguments().isEmpty())
         window.openProgram(parser.positionalArguments().constFirst());
-    return app.exec();
+    return QCoreApplication::exec();
 }

@@ -87,7 +87,8 @@ QString emuHelpText()
         "                      --limit 6:X=200000,+ (GVE64 end switch X)\n"
         "  --link PATH         also create a symlink PATH to the terminal\n"
         "  --verbose           log every byte to stderr\n"
-        "  --help              this text\n");
+        "  --help              this text\n"
+        "  --version           the version\n");
 }
 
 // One branch per option of the usage text above, in its order: long as the list is, kept whole

@@ -3,6 +3,7 @@
 #include "emuoptions.h"
 #include "ptyserver.h"
 
+#include "app/common/datadir.h"
 #include "app/common/translator.h"
 
 #include <QCoreApplication>
@@ -35,6 +36,11 @@ int main(int argc, char **argv)
     QCoreApplication app(argc, argv);
     frezka::app::installTranslator();
     using namespace frezka::gveemu;
+    if (app.arguments().contains(QStringLiteral("--version"))) {
+        std::fputs(frezka::app::versionText(QStringLiteral("gve-emu")).toLocal8Bit().constData(),
+                   stdout);
+        return 0;
+    }
     EmuOptions options;
     QString error;
     if (!parseEmuOptions(app.arguments().mid(1), options, error)) {

@@ -1,11 +1,13 @@
 // k51-emu: an ANC/K51 grinding control on a pseudo-terminal, for tests and for trying the
 // transfer tools without a machine. Prints the terminal path on the first line of stdout.
+#include "app/common/version.h"
 #include "app/k51-emu/options.h"
 #include "app/k51-emu/ptyserver.h"
 #include "driver/grinder/family.h"
 
 #include <csignal>
 #include <cstdio>
+#include <string>
 
 namespace {
 volatile std::sig_atomic_t g_stop = 0;
@@ -18,6 +20,12 @@ void onSignal(int)
 int main(int argc, char *argv[])
 {
     using namespace frezka::k51emu;
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--version") {
+            std::printf("k51-emu %s\n", frezka::app::versionString());
+            return 0;
+        }
+    }
     Options options;
     std::string error;
     if (!parseOptions(std::vector<std::string>(argv + 1, argv + argc), options, error)) {

@@ -48,6 +48,7 @@ Faults:
 Other:
   --verbose               trace every message on stderr
   --help                  this text
+  --version               the version
 )";
 }
 

@@ -1,5 +1,6 @@
 #include "driver/grinder/transport.h"
 
+#include <QFileInfo>
 #include <QSerialPort>
 
 namespace frezka::grinder {
@@ -21,7 +22,9 @@ bool SerialTransport::open(QString *error)
     m_port->setPortName(m_settings.portName);
     if (!m_port->open(QIODevice::ReadWrite)) {
         if (error)
-            *error = tr("Cannot open %1: %2").arg(m_settings.portName, m_port->errorString());
+            *error = serialOpenFailure(m_settings.portName,
+                                       m_port->error() == QSerialPort::PermissionError,
+                                       m_port->errorString());
         return false;
     }
     const auto parity = m_settings.parity == 'e'   ? QSerialPort::EvenParity
@@ -44,6 +47,22 @@ bool SerialTransport::open(QString *error)
     }
     m_port->clear();
     return true;
+}
+
+QString serialOpenFailure(const QString &portName, bool permissionDenied,
+                          const QString &errorString)
+{
+    if (!permissionDenied)
+        return SerialTransport::tr("Cannot open %1: %2").arg(portName, errorString);
+    const QString path =
+        portName.startsWith(QLatin1Char('/')) ? portName : QStringLiteral("/dev/") + portName;
+    QString group = QFileInfo(path).group();
+    if (group.isEmpty() || group == QLatin1String("root"))
+        group = QStringLiteral("dialout");
+    return SerialTransport::tr(
+               "Cannot open %1: permission denied. The port belongs to the group %2: join it "
+               "with \"sudo usermod -aG %2 $USER\", then log out and in again.")
+        .arg(portName, group);
 }
 
 void SerialTransport::close()

@@ -63,4 +63,10 @@ private:
     QSerialPort *m_port;
 };
 
+// Why opening portName failed, in words the operator can act on: when permission was denied,
+// the group that owns the device (dialout on Debian) and the command that joins it (as
+// driver/link's serialOpenFailure; the two modules share no code).
+QString serialOpenFailure(const QString &portName, bool permissionDenied,
+                          const QString &errorString);
+
 } // namespace frezka::grinder

@@ -1,9 +1,28 @@
 #include "serialtransport.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QTimer>
 
 namespace frezka::driver {
+
+QString serialOpenFailure(const QString &portName, QSerialPort::SerialPortError error,
+                          const QString &errorString)
+{
+    if (error != QSerialPort::PermissionError)
+        return QCoreApplication::translate("SerialTransport", "cannot open %1: %2")
+            .arg(portName, errorString);
+    const QString path =
+        portName.startsWith(QLatin1Char('/')) ? portName : QStringLiteral("/dev/") + portName;
+    QString group = QFileInfo(path).group();
+    if (group.isEmpty() || group == QLatin1String("root"))
+        group = QStringLiteral("dialout");
+    return QCoreApplication::translate(
+               "SerialTransport",
+               "cannot open %1: permission denied. The port belongs to the group %2: join it "
+               "with \"sudo usermod -aG %2 $USER\", then log out and in again.")
+        .arg(portName, group);
+}
 
 SerialTransport::SerialTransport(QString portName, int baud, QObject *parent)
     : Transport(parent)
@@ -41,8 +60,7 @@ void SerialTransport::open()
     // Deferred so that the caller sees opened()/closed() after open() returned.
     QTimer::singleShot(0, this, [this] {
         if (!m_port->open(QIODevice::ReadWrite)) {
-            fail(QCoreApplication::translate("SerialTransport", "cannot open %1: %2")
-                     .arg(m_portName, m_port->errorString()));
+            fail(serialOpenFailure(m_portName, m_port->error(), m_port->errorString()));
             return;
         }
         const bool ok = m_port->setBaudRate(m_baud) && m_port->setDataBits(QSerialPort::Data8) &&

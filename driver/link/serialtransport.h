@@ -10,6 +10,12 @@
 
 namespace frezka::driver {
 
+// Why opening portName failed, in words the operator can act on: for a permission error, which
+// group owns the device (dialout on Debian) and the command that joins it
+// (sudo usermod -aG dialout $USER, then log in again); otherwise Qt's errorString.
+QString serialOpenFailure(const QString &portName, QSerialPort::SerialPortError error,
+                          const QString &errorString);
+
 class SerialTransport : public Transport
 {
     Q_OBJECT

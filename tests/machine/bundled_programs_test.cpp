@@ -147,13 +147,14 @@ TEST(BundledPrograms, DenseProgramsKeepTheLinksPace)
                 if (chain)
                     least = std::min(least, t / w);
             }
-            if (limited)
+            if (limited) {
                 EXPECT_EQ(slower, 0u)
                     << name
                     << ": windows of 256 vectors faster than the wire (least time / wire time "
                     << least << ")";
-            else if (std::string(name) == "surface")
+            } else if (std::string(name) == "surface") {
                 EXPECT_GT(slower, 1000u) << name << ": the test would not see it";
+            }
         }
     }
 }

@@ -112,8 +112,9 @@ void checkSeeds(bool equalScales)
         EXPECT_NEAR(run.jobS + r.stats.linkWaitS, r.stats.estimatedS, 1e-6 * run.jobS)
             << "seed " << seed;
         EXPECT_GE(r.stats.estimatedS, r.stats.boundS) << "seed " << seed;
-        if (equalScales)
+        if (equalScales) {
             EXPECT_LE(run.jobS + r.stats.linkWaitS, 1.02 * r.stats.boundS) << "seed " << seed;
+        }
     }
 }
 
