@@ -37,6 +37,7 @@ namespace frezka::gui {
 class ConsoleWidget;
 class DroWidget;
 class IoPanel;
+class ToolTableDialog;
 class JogPanel;
 class LoadProgress;
 class OutputsPanel;
@@ -116,6 +117,9 @@ public:
     class SettingsDialog *openSettings();
     // Opens the unit configuration (EEPROM) page (non-modal) and returns it.
     class UnitConfigDialog *openUnitConfig();
+    // Machine › Tool table: opens the profile's tool table (non-modal) and returns it; null (with
+    // the error shown) when the profile names no table file. mainwindow_tools.cpp.
+    class ToolTableDialog *openToolTable();
     // The last message shown to the user as an error (tests read it; no modal dialog needed).
     QString lastError() const { return m_lastError; }
 
@@ -166,6 +170,10 @@ private:
     bool jogKey(QKeyEvent *event, bool pressed);
     void installShortcuts();
     void buildFromLineActions(); // Machine › Run from line…, Run the whole program
+    void buildToolTableAction(); // Machine › Tool table…
+    void loadToolTable();        // the profile's table into the program session
+    // At an M6 hold: the tool's comment, length and diameter from the table (empty: none).
+    QString toolChangeText(const driver::MachineState &state) const;
     void askRunFromLine();
     void onFromLineLoaded();
     void operatorKey(OperatorAction action);
@@ -187,7 +195,7 @@ private:
     QMenu *m_fileMenu, *m_recentMenu, *m_machineMenu, *m_viewMenu, *m_toolsMenu, *m_helpMenu;
     QAction *m_openAction, *m_quitAction, *m_connectAction, *m_disconnectAction, *m_settingsAction,
         *m_unitConfigAction, *m_runFromLineAction, *m_wholeProgramAction, *m_aboutAction,
-        *m_shortcutsAction, *m_grinderAction = nullptr, *m_resetLayoutAction;
+        *m_shortcutsAction, *m_grinderAction = nullptr, *m_resetLayoutAction, *m_toolTableAction;
     ProgramSession *m_program;
     driver::MachineController *m_controller = nullptr;
     HoldBanner *m_hold = nullptr;
@@ -209,6 +217,7 @@ private:
     QString m_profilePath;
     QPointer<SettingsDialog> m_settings;
     QPointer<UnitConfigDialog> m_unitConfig;
+    QPointer<ToolTableDialog> m_toolTable;
     QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };

@@ -98,6 +98,7 @@ public:
         m_toolTable = std::move(table);
         m_toolTableError = error;
     }
+    const std::optional<gcode::ToolTable> &toolTable() const { return m_toolTable; }
     std::uint32_t startLine() const { return m_startLine; }
 
     // Loads (replacing any load in progress). loaded() or loadFailed() follows.
