@@ -172,6 +172,7 @@ private:
     void buildFromLineActions(); // Machine › Run from line…, Run the whole program
     void buildToolTableAction(); // Machine › Tool table…
     void loadToolTable();        // the profile's table into the program session
+    void writeBackToolTable();   // after a run: the table as the program's G10 L1.. left it
     // At an M6 hold: the tool's comment, length and diameter from the table (empty: none).
     QString toolChangeText(const driver::MachineState &state) const;
     void askRunFromLine();

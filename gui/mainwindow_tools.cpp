@@ -1,7 +1,8 @@
 // MainWindow, the tool table (issue 15 item 1): Machine › Tool table… edits the file the
 // profile names (tools.tableFile, beside the profile); the program session checks and plans
 // programs with it (T, M6, G43 lengths) from the next load on, and a program already loaded is
-// loaded again with the saved table.
+// loaded again with the saved table. A program's G10 L1/L10/L11 change it once the program
+// has run (not when it is only checked), written back atomically.
 #include "mainwindow.h"
 
 #include "consolewidget.h"
@@ -28,6 +29,25 @@ void MainWindow::loadToolTable()
     m_program->setToolTable(tools.table, tools.error);
     if (!tools.error.isEmpty())
         showError(tools.error);
+}
+
+void MainWindow::writeBackToolTable()
+{
+    const auto &changed = m_program->program().changedToolTable;
+    const session::ToolTableFile tools = session::readProfileToolTable(profile(), m_profilePath);
+    if (!changed || tools.path.isEmpty())
+        return;
+    gcode::Error error;
+    if (!gcode::writeToolTableFile(tools.path.toStdString(), *changed, &error)) {
+        showError(gcode::formatError(tools.path, error));
+        return;
+    }
+    m_console->appendInfo(
+        tr("The program changed the tool table (G10 L1, L10 or L11): %1 saved.").arg(tools.path));
+    loadToolTable();
+    if (m_toolTable)
+        m_toolTable->reload();
+    m_program->reload(); // checked again with the table as it now is
 }
 
 QString MainWindow::toolChangeText(const driver::MachineState &state) const

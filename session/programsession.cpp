@@ -141,6 +141,8 @@ bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
     req.toolTableError = job.toolTableError;
     InterpretOutcome outcome = interpretProgram(req);
     result.errors = std::move(outcome.errors);
+    if (outcome.toolTableChanged)
+        result.changedToolTable = std::move(outcome.toolTable);
     if (cancelFlag->load() || !outcome.toolpath)
         return !cancelFlag->load();
     if (job.startLine != 0 && result.errors.empty() && job.profile)

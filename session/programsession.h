@@ -70,6 +70,8 @@ struct LoadedProgram
     // Run from a line (ProgramSession::setStartLine): the state taken there and the approach;
     // toolpath and unitProgram are then that job (the approach, then the program's rest).
     std::optional<FromLine> fromLine;
+    // The tool table as the program's G10 L1/L10/L11 leave it: written back once it has run.
+    std::optional<gcode::ToolTable> changedToolTable;
 };
 
 class ProgramSession : public QObject

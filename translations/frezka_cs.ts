@@ -3385,6 +3385,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Tool %1: %2 (length %3 mm, diameter %4 mm)</source>
         <translation>Nástroj %1: %2 (délka %3 mm, průměr %4 mm)</translation>
     </message>
+    <message>
+        <source>The program changed the tool table (G10 L1, L10 or L11): %1 saved.</source>
+        <translation>Program změnil tabulku nástrojů (G10 L1, L10 nebo L11): %1 uložena.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>

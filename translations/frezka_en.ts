@@ -3378,6 +3378,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Tool %1: %2 (length %3 mm, diameter %4 mm)</source>
         <translation>Tool %1: %2 (length %3 mm, diameter %4 mm)</translation>
     </message>
+    <message>
+        <source>The program changed the tool table (G10 L1, L10 or L11): %1 saved.</source>
+        <translation>The program changed the tool table (G10 L1, L10 or L11): %1 saved.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>

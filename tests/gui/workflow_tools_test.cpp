@@ -90,6 +90,24 @@ private slots:
         QCOMPARE(state().positionSteps[2], steps(2, z));
     }
 
+    void aRunProgramsG10L1IsWrittenBack()
+    {
+        QVERIFY(load(
+            writeProgram(QStringLiteral("g10l1.nc"), "G21 G90\nG10 L1 P1 Z12.5 R4\nG0 X5\nM2\n")));
+        QVERIFY(m_window->program()->program().runnable());
+        QFile f(tablePath());
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("T1 P1 Z10 D6 ;end mill 6\n")); // checked, not run
+        f.close();
+        QSignalSpy finished(m_window->workflow(), &session::RunWorkflow::jobFinished);
+        button(m_window->runPanel(), "run")->click();
+        QVERIFY(finished.wait(kMachineTimeoutMs));
+        QVERIFY2(finished.front().front().toBool(), qPrintable(describe()));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("T1 P1 Z12.5 D8 ;end mill 6\n"));
+        QVERIFY(waitIdle());
+    }
+
     void aToolNotInTheTableIsTheProgramsError()
     {
         QVERIFY(load(writeProgram(QStringLiteral("t5.nc"), "G21\nT5 M6\nM2\n")));
