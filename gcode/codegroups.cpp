@@ -72,6 +72,7 @@ int gGroup(int code10, bool *supported, const char **reason)
         return kGCutterComp;
     case 430:
     case 431:
+    case 432:
     case 490:
         return kGToolLength;
     case 980:
@@ -129,8 +130,6 @@ int gGroup(int code10, bool *supported, const char **reason)
     case 420:
     case 421:
         return refuse(kGCutterComp, "cutter radius compensation");
-    case 432:
-        return refuse(kGToolLength, "additional tool length offset");
     case 520:
         return refuse(kGNonModal, "local coordinate offset");
     case 950:
@@ -158,6 +157,7 @@ int mGroup(int code, bool *supported, const char **reason)
     case 30:
         return kMStop;
     case 6:
+    case 61:
         return kMToolChange;
     case 3:
     case 4:
@@ -169,8 +169,6 @@ int mGroup(int code, bool *supported, const char **reason)
         return kMCoolant;
     case 60:
         return refuse(kMStop, "pallet change pause");
-    case 61:
-        return refuse(kMToolChange, "set current tool");
     case 19:
         return refuse(kMSpindle, "spindle orientation");
     case 48:

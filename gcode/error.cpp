@@ -75,6 +75,22 @@ constexpr ErrorInfo kErrors[] = {
                        "controllers' dialects, e.g. Beckhoff TwinCAT)"),
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "Write the comment in parentheses ( ) or after a semicolon ;.")},
+    {ErrorCode::FileWriteFailed, "FileWriteFailed",
+     QT_TRANSLATE_NOOP("frezka::gcode", "Cannot write the file %1: %2"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Check that the folder exists and is writable and that the disk is not "
+                       "full; the old file is kept unchanged.")},
+    {ErrorCode::ToolTableSyntax, "ToolTableSyntax",
+     QT_TRANSLATE_NOOP("frezka::gcode", "Tool table entry cannot be read at '%1'"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Each line is T<tool> P<pocket> with optional X Y Z A B C U V W offsets, "
+                       "D diameter, I J angles and Q orientation (0-9), each letter once, then "
+                       "an optional ; comment, as in LinuxCNC's .tbl files. Correct the line in "
+                       "Machine > Tool table or in a text editor.")},
+    {ErrorCode::ToolTableDuplicate, "ToolTableDuplicate",
+     QT_TRANSLATE_NOOP("frezka::gcode", "Tool %1 is listed twice in the tool table"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Keep one line per tool number; delete or renumber the other.")},
     {ErrorCode::UnknownGCode, "UnknownGCode",
      QT_TRANSLATE_NOOP("frezka::gcode", "Unknown G code %1"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Check the number; see the list of supported codes.")},
@@ -127,7 +143,10 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode", "G4 needs the dwell time P"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Add P with the dwell time in seconds.")},
     {ErrorCode::G10BadL, "G10BadL", QT_TRANSLATE_NOOP("frezka::gcode", "G10 %1 is not supported"),
-     QT_TRANSLATE_NOOP("frezka::gcode", "Use G10 L2 or G10 L20 to set a work offset.")},
+     QT_TRANSLATE_NOOP(
+         "frezka::gcode",
+         "Use G10 L2 or G10 L20 to set a work offset, G10 L1, L10 or L11 to set a tool's "
+         "offsets.")},
     {ErrorCode::G10BadP, "G10BadP",
      QT_TRANSLATE_NOOP("frezka::gcode", "G10 needs P0 to P9 (got %1)"),
      QT_TRANSLATE_NOOP("frezka::gcode",
@@ -146,6 +165,25 @@ constexpr ErrorInfo kErrors[] = {
                        "(the path already offset by the tool radius, no G41/G42 and no D). "
                        "Deleting G41/G42 alone would leave the cut off its path by the tool "
                        "radius.")},
+    {ErrorCode::ToolNotInTable, "ToolNotInTable",
+     QT_TRANSLATE_NOOP("frezka::gcode", "Tool %1 is not in the tool table"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Add the tool with its length and diameter in Machine > Tool table, or "
+                       "correct the T, H or P number.")},
+    {ErrorCode::ToolOffsetWords, "ToolOffsetWords",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 needs either H or axis words, not both or none"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "G43.2 Hn adds tool n's offsets, G43.2 Z.. adds the given values; G43.1 "
+                       "takes axis words only.")},
+    {ErrorCode::G10L1NoOffsets, "G10L1NoOffsets",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 without offsets has no effect"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Give the values to set, e.g. Z for the tool length and R for its radius.")},
+    {ErrorCode::ToolNumberMissing, "ToolNumberMissing",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 needs the tool number in %2"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Write the number of a tool of the tool table, e.g. M61 Q3 or G10 L1 P3 "
+                       "Z25.")},
     {ErrorCode::FanucRigidTapping, "FanucRigidTapping",
      QT_TRANSLATE_NOOP("frezka::gcode", "M29 is the rigid tapping code of Fanuc-style controllers"),
      QT_TRANSLATE_NOOP("frezka::gcode",

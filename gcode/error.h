@@ -31,6 +31,9 @@ enum class ErrorCode : std::uint16_t {
     GrblHoming = 112,
     GrblCommand = 113,
     SlashComment = 114,
+    FileWriteFailed = 115,
+    ToolTableSyntax = 116,
+    ToolTableDuplicate = 117,
     // Codes and modal groups (2xx)
     UnknownGCode = 200,
     UnsupportedGCode = 201,
@@ -53,6 +56,10 @@ enum class ErrorCode : std::uint16_t {
     ValueOutOfRange = 218,
     FanucRigidTapping = 219,
     CutterCompensation = 220,
+    ToolNotInTable = 221,
+    ToolOffsetWords = 222,
+    G10L1NoOffsets = 223,
+    ToolNumberMissing = 224,
     // Motion (3xx)
     ZeroFeedRate = 300,
     InverseTimeFeedMissing = 301,

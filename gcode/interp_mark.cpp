@@ -33,7 +33,7 @@ LineState Interpreter::lineState() const
     s.g92Mm = m_g92;
     s.tool = m_tool;
     s.selectedTool = m_selectedTool;
-    s.toolLengthMm = m_toolZ;
+    s.toolLengthMm = m_toolOffset[2];
     s.speedRpm = m_speed;
     s.spindle = m_spindle;
     s.mist = m_mist;

@@ -78,18 +78,8 @@ bool Interpreter::executeModes(Error *error)
         if (changed && m_spindle != 0 && !startsSpindle)
             event(EventKind::SpindleSpeed, m_speed);
     }
-    if (b.has('t')) {
-        const double t = b.get('t');
-        if (t < 0)
-            return fail(ErrorCode::NegativeValue, 't', "T", error);
-        if (t != std::floor(t) || t > 1e9)
-            return fail(ErrorCode::NonIntegerValue, 't', "T", error);
-        m_selectedTool = static_cast<int>(t);
-    }
-    if (b.hasM(kMToolChange)) {
-        m_tool = m_selectedTool;
-        event(EventKind::ToolChange, m_tool);
-    }
+    if (!selectTool(error))
+        return false;
     if (b.hasM(kMSpindle)) {
         const int m = b.m[kMSpindle];
         m_spindle = m == 3 ? 1 : m == 4 ? -1 : 0;
@@ -135,23 +125,8 @@ bool Interpreter::executeModalGroups(Error *error)
         m_unitsLine = m_line;
         m_unitsColumn = m_parser.columnAt(b.gColumn[kGUnits]);
     }
-    if (b.hasG(kGToolLength)) {
-        const auto before = offsets();
-        if (b.g[kGToolLength] == 490) {
-            m_toolZ = 0;
-        } else {
-            int tool = m_tool;
-            if (b.has('h')) {
-                const double h = b.get('h');
-                if (h < 0 || h > 1e9 || h != std::floor(h))
-                    return fail(ErrorCode::NonIntegerValue, 'h', "H", error);
-                tool = static_cast<int>(h);
-            }
-            const auto it = m_options.toolLengthMm.find(tool);
-            m_toolZ = it == m_options.toolLengthMm.end() ? 0.0 : it->second;
-        }
-        shiftProgram(before);
-    }
+    if (b.hasG(kGToolLength) && !toolLengthOffset(error))
+        return false;
     if (b.hasG(kGCoordSystem)) {
         const int g = b.g[kGCoordSystem];
         const auto before = offsets();
@@ -229,6 +204,8 @@ bool Interpreter::setOffsets(Error *error)
     if (!b.has('l'))
         return failAt(ErrorCode::G10BadL, col, "without L", error);
     const double l = b.get('l');
+    if (l == 1 || l == 10 || l == 11)
+        return setToolEntry(static_cast<int>(l), error);
     if (l != 2 && l != 20)
         return fail(ErrorCode::G10BadL, 'l', "L" + std::to_string(l), error);
     if (!b.has('p'))

@@ -50,8 +50,16 @@ bool Interpreter::systemNumbered(int index, double *value) const
         *value = m_tool;
         return true;
     }
-    if (index >= 5401 && index <= 5409) {
-        *value = index == 5403 ? m_toolZ / u : 0;
+    if (index >= 5401 && index <= 5413) {
+        // The spindle tool's table entry in machine units (mm), not program units, as
+        // LinuxCNC gives them (set_tool_parameters copies the table).
+        const ToolEntry e = spindleTool();
+        const auto i = static_cast<std::size_t>(index - 5401);
+        *value = i < 9     ? e.offsetMm[i]
+                 : i == 9  ? e.diameterMm
+                 : i == 10 ? e.frontAngle
+                 : i == 11 ? e.backAngle
+                           : e.orientation;
         return true;
     }
     if (index >= 5420 && index <= 5428) {

@@ -37,6 +37,9 @@ Interpreter::Interpreter(Options options)
     m_origin = m_options.workOffsetsMm;
     m_coord = std::clamp(m_options.coordinateSystem, 0, 8);
     m_pos = m_options.startMm;
+    m_toolsStrict = m_options.toolTable.has_value();
+    if (m_toolsStrict)
+        m_tools = *m_options.toolTable;
     m_prog = {m_pos.x - offset(0), m_pos.y - offset(1), m_pos.z - offset(2), m_pos.a - offset(3)};
 }
 
@@ -70,7 +73,7 @@ void Interpreter::warn(ErrorCode code, std::uint32_t line, std::uint32_t column,
 
 double Interpreter::offset(int axis) const
 {
-    return m_origin[m_coord][axis] + m_g92[axis] + (axis == 2 ? m_toolZ : 0.0);
+    return m_origin[m_coord][axis] + m_g92[axis] + m_toolOffset[axis];
 }
 
 std::array<double, 4> Interpreter::offsets() const
@@ -186,6 +189,8 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
     result.linesRead = m_line;
     result.ended = m_ended;
     finishMark(&result.mark);
+    result.toolTable = m_tools;
+    result.toolTableChanged = m_toolsChanged;
     result.toolpath = std::move(m_toolpath);
     m_toolpath = Toolpath{};
     return result;
@@ -266,9 +271,13 @@ int Interpreter::motionToBe(Error *error)
     const bool axes = m_block.letters & kAxisBits;
     const int mode0 = m_block.hasG(kGNonModal) ? m_block.g[kGNonModal] : -1;
     const int mode1 = m_block.hasG(kGMotion) ? m_block.g[kGMotion] : -1;
+    // G43.1/G43.2 take axis words as offsets; as in rs274ngc a motion or G92 in the same block
+    // uses the same words again, and without one the block does not move.
+    const int mode8 = m_block.hasG(kGToolLength) ? m_block.g[kGToolLength] : -1;
+    const bool toolAxes = (mode8 == 431 || mode8 == 432) && axes;
     const bool coversAxes = mode0 == 100 || mode0 == 280 || mode0 == 300 || mode0 == 920;
     if (mode1 == 800) {
-        if (axes && !coversAxes) {
+        if (axes && !coversAxes && !toolAxes) {
             failAt(ErrorCode::AxisWordsWithG80, m_block.gColumn[kGMotion], {}, error);
             return -2;
         }
@@ -292,7 +301,7 @@ int Interpreter::motionToBe(Error *error)
         }
         return -1;
     }
-    if (axes) {
+    if (axes && !toolAxes) {
         if (m_motion == 800) {
             const char first = m_block.has('x')   ? 'x'
                                : m_block.has('y') ? 'y'
@@ -314,11 +323,16 @@ bool Interpreter::checkWords(int motion, Error *error)
     auto unused = [&](char c) {
         return fail(ErrorCode::WordNotUsed, c, std::string(1, c - 32), error);
     };
+    // G10 L1/L10/L11 take R (radius), I, J (angles) and Q (orientation) for a tool.
+    const double l = m_block.has('l') ? m_block.get('l') : 0;
+    const bool toolG10 = mode0 == 100 && (l == 1 || l == 10 || l == 11);
+    const int mode8 = m_block.hasG(kGToolLength) ? m_block.g[kGToolLength] : -1;
+    const bool m61 = m_block.hasM(kMToolChange) && m_block.m[kMToolChange] == 61;
     for (char c : {'i', 'j', 'k'}) {
-        if (m_block.has(c) && !arcMove)
+        if (m_block.has(c) && !arcMove && !(toolG10 && c != 'k'))
             return unused(c);
     }
-    if (m_block.has('r') && !arcMove && !cycleMove) {
+    if (m_block.has('r') && !arcMove && !cycleMove && !toolG10) {
         if (mode0 == 100)
             return fail(ErrorCode::UnsupportedRotation, 'r', {}, error);
         return unused('r');
@@ -329,9 +343,9 @@ bool Interpreter::checkWords(int motion, Error *error)
     if (m_block.has('p') &&
         !(mode0 == 40 || mode0 == 100 || g64 || arcMove || motion == 820 || motion == 890))
         return unused('p');
-    if (m_block.has('q') && !(g64 || motion == 730 || motion == 830))
+    if (m_block.has('q') && !(g64 || motion == 730 || motion == 830 || toolG10 || m61))
         return unused('q');
-    if (m_block.has('h') && !(m_block.hasG(kGToolLength) && m_block.g[kGToolLength] == 430))
+    if (m_block.has('h') && mode8 != 430 && mode8 != 432)
         return unused('h');
     if (m_block.has('a') && cycleMove)
         return unused('a');

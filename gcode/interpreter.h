@@ -18,10 +18,12 @@
 #include "gcode/parameters.h"
 #include "gcode/parser.h"
 #include "gcode/toolpath.h"
+#include "gcode/tooltable.h"
 
 #include <array>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -44,7 +46,11 @@ struct Options
     std::uint64_t maxBlocks = 200'000'000; // executed lines before TooManyBlocks (endless loops)
     std::size_t maxErrors = 1000;          // check mode keeps this many (the rest are counted)
     std::size_t maxWarnings = 100;         // warnings and notes kept (the rest are counted)
-    std::map<int, double> toolLengthMm;    // G43 Hn; tools not listed have length 0
+    // The tool table (LinuxCNC's rules: T, M61 Q, G43 H and G10 L1 P name tools in it, G43 takes
+    // its offsets, G10 L1/L10/L11 change it). Without one every tool number is accepted and has
+    // the length toolLengthMm gives it (0 when not listed) and no diameter.
+    std::optional<ToolTable> toolTable;
+    std::map<int, double> toolLengthMm;
     // State at the start of the program (added for the GUI: persisted work offsets and the
     // machine position the program starts from).
     std::array<std::array<double, 4>, 9> workOffsetsMm{}; // G54..G59.3, machine mm (#5221..)
@@ -71,6 +77,10 @@ struct Result
     std::uint64_t linesRead = 0;
     bool ended = false; // reached M2/M30 or the closing % (not an implied end)
     LineMark mark;      // Options::startLine's state, or why the program has none
+    // The tool table after the program's G10 L1/L10/L11 (Options::toolTable otherwise); the
+    // caller writes it back (writeToolTableFile) when the program has run.
+    ToolTable toolTable;
+    bool toolTableChanged = false;
     bool ok() const { return errors.empty(); }
 };
 
@@ -122,6 +132,13 @@ private:
     bool executeNonModal(Error *error);
     bool executeStops();
     bool setOffsets(Error *error);
+    // Tools (interp_tools.cpp).
+    bool findTool(int tool, char word, ToolEntry *entry, Error *error) const;
+    bool toolNumber(char word, int *tool, Error *error) const; // a whole, non-negative word
+    bool selectTool(Error *error);                             // T, M6, M61
+    bool toolLengthOffset(Error *error);                       // G43 G43.1 G43.2 G49
+    bool setToolEntry(int l, Error *error);                    // G10 L1 L10 L11
+    ToolEntry spindleTool() const; // the tool in the spindle's entry (zeros for T0)
     bool homeMove(bool g30, Error *error);
 
     // Run from a line (interp_mark.cpp).
@@ -234,9 +251,12 @@ private:
     std::array<double, 4> m_g92Saved{};              // #5211.. (kept by G92.2, restored by G92.3)
     bool m_g92Enabled = false;
     std::array<double, 4> m_g28{}, m_g30{}; // stored positions, machine mm
-    double m_toolZ = 0;                     // tool length offset, mm
-    int m_coord = 0;                        // 0 = G54 .. 8 = G59.3
-    int m_motion = 800;                     // 10 x G code of the motion mode
+    std::array<double, 4> m_toolOffset{};   // G43's offsets in force, mm (A degrees)
+    ToolTable m_tools;                      // Options::toolTable as the program changes it
+    bool m_toolsStrict = false;             // a table was given: tools must be in it
+    bool m_toolsChanged = false;
+    int m_coord = 0;    // 0 = G54 .. 8 = G59.3
+    int m_motion = 800; // 10 x G code of the motion mode
     int m_plane = 170;
     bool m_absolute = true;
     bool m_arcAbsolute = false;

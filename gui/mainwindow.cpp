@@ -172,6 +172,7 @@ void MainWindow::buildMenus()
     m_machineMenu->addSeparator();
     m_settingsAction = m_machineMenu->addAction(QString(), this, [this] { openSettings(); });
     m_unitConfigAction = m_machineMenu->addAction(QString(), this, [this] { openUnitConfig(); });
+    buildToolTableAction();
     buildFromLineActions();
 
     m_viewMenu = menuBar()->addMenu(QString());
@@ -229,6 +230,7 @@ void MainWindow::retranslate()
     m_disconnectAction->setText(tr("&Disconnect"));
     m_settingsAction->setText(tr("&Settings…"));
     m_unitConfigAction->setText(tr("&Unit configuration (EEPROM)…"));
+    m_toolTableAction->setText(tr("&Tool table…"));
     m_runFromLineAction->setText(tr("Run from &line…"));
     m_wholeProgramAction->setText(tr("Run the &whole program"));
     m_viewMenu->setTitle(tr("&View"));
@@ -456,6 +458,7 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
     }
     m_view->model()->setTravelBox(travel);
     m_program->setProfile(config);
+    loadToolTable();
     if (m_unitConfig)
         m_unitConfig->setProfile(config);
     if (!m_program->program().path.isEmpty())

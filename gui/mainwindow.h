@@ -39,6 +39,7 @@ namespace frezka::gui {
 class ConsoleWidget;
 class DroWidget;
 class IoPanel;
+class ToolTableDialog;
 class JogPanel;
 class LoadProgress;
 class OutputsPanel;
@@ -126,6 +127,9 @@ public:
     class SettingsDialog *openSettings();
     // Opens the unit configuration (EEPROM) page (non-modal) and returns it.
     class UnitConfigDialog *openUnitConfig();
+    // Machine › Tool table: opens the profile's tool table (non-modal) and returns it; null (with
+    // the error shown) when the profile names no table file. mainwindow_tools.cpp.
+    class ToolTableDialog *openToolTable();
     // The last message shown to the user as an error (tests read it; no modal dialog needed).
     QString lastError() const { return m_lastError; }
 
@@ -188,6 +192,11 @@ private:
     bool jogKey(QKeyEvent *event, bool pressed);
     void installShortcuts();
     void buildFromLineActions(); // Machine › Run from line…, Run the whole program
+    void buildToolTableAction(); // Machine › Tool table…
+    void loadToolTable();        // the profile's table into the program session
+    void writeBackToolTable();   // after a run: the table as the program's G10 L1.. left it
+    // At an M6 hold: the tool's comment, length and diameter from the table (empty: none).
+    QString toolChangeText(const driver::MachineState &state) const;
     void askRunFromLine();
     void onFromLineLoaded();
     // The keys changed in the settings: the QShortcuts take them.
@@ -211,8 +220,8 @@ private:
     QMenu *m_fileMenu, *m_recentMenu, *m_machineMenu, *m_viewMenu, *m_toolsMenu, *m_helpMenu;
     QAction *m_openAction, *m_reloadAction, *m_infoAction, *m_quitAction, *m_connectAction,
         *m_disconnectAction, *m_settingsAction, *m_unitConfigAction, *m_runFromLineAction,
-        *m_wholeProgramAction, *m_aboutAction, *m_shortcutsAction, *m_grinderAction = nullptr,
-                                                                   *m_resetLayoutAction;
+        *m_wholeProgramAction, *m_aboutAction, *m_shortcutsAction,
+        *m_grinderAction = nullptr, *m_resetLayoutAction, *m_toolTableAction;
     ProgramSession *m_program;
     QFileSystemWatcher *m_watcher; // the loaded program's file
     bool m_reloadAfterJob = false; // it changed while its job ran: ask when the job ends
@@ -239,6 +248,7 @@ private:
     QPointer<SettingsDialog> m_settings;
     QPointer<UnitConfigDialog> m_unitConfig;
     QPointer<ProgramInfoDialog> m_programInfo;
+    QPointer<ToolTableDialog> m_toolTable;
     QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };

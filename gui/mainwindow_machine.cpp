@@ -130,6 +130,7 @@ void MainWindow::onJobFinished(bool ok)
         statusBar()->showMessage(
             tr("Program finished in %1.").arg(RunPanel::formatDuration(elapsedS)), 15000);
         m_console->appendInfo(tr("Program finished."));
+        writeBackToolTable();
     }
     if (m_program->startLine() != 0)
         runWholeProgram(); // the job from a line is done (or dropped): the program is whole again

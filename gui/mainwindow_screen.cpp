@@ -107,6 +107,8 @@ QString MainWindow::holdDetail(const driver::MachineState &state) const
             : QString();
     if (!comment.isEmpty())
         text += QLatin1Char('\n') + tr("Program comment: %1").arg(comment);
+    if (const QString tool = toolChangeText(state); !tool.isEmpty())
+        text += QLatin1Char('\n') + tool;
     return text;
 }
 

@@ -2,6 +2,9 @@
 // defaults per variant, output bits and the EEPROM image (docs/gve-protocol.md §1, §10, §12).
 #include "machine/machineconfig.h"
 
+#include <QDir>
+#include <QFileInfo>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -235,6 +238,18 @@ MachineConfig defaultMachineConfig(protocol::Variant variant)
         }
     }
     return c;
+}
+
+std::string toolTablePath(const MachineConfig &config, const std::string &profilePath)
+{
+    const std::string &file = config.tools.tableFile;
+    if (file.empty())
+        return {};
+    const QFileInfo table(QString::fromStdString(file));
+    if (table.isAbsolute() || profilePath.empty())
+        return table.filePath().toStdString();
+    const QDir dir = QFileInfo(QString::fromStdString(profilePath)).absoluteDir();
+    return QDir::cleanPath(dir.filePath(table.filePath())).toStdString();
 }
 
 int wireAxisCount(const MachineConfig &config)

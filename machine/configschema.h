@@ -149,6 +149,7 @@ void visitProfile(V &v, MachineConfig &c)
         s.integer("defaultSpindlePermille", e.defaultSpindlePermille, 1, 1000, "‰");
         s.number("brakeReleaseDelayS", e.brakeReleaseDelayS, 0, 5, "s");
     });
+    v.object("tools", [&](V &s) { s.text("tableFile", c.tools.tableFile); });
 }
 
 } // namespace frezka::machine::schema

@@ -98,6 +98,15 @@ struct SpindleConfig
     friend bool operator==(const SpindleConfig &, const SpindleConfig &) = default;
 };
 
+struct ToolsConfig
+{
+    // The tool table (LinuxCNC's .tbl format, lengths in mm, gcode/tooltable.h): a path, relative
+    // to the profile's folder (like LinuxCNC's TOOL_TABLE beside the INI file). Empty: no table
+    // (every tool number accepted with length 0, as before tool tables).
+    std::string tableFile = "tool.tbl";
+    friend bool operator==(const ToolsConfig &, const ToolsConfig &) = default;
+};
+
 // Functions of the unit's outputs, EEPROM codes of docs/gve-protocol.md §12.
 enum class OutputFunction : std::uint8_t {
     Unused = 0x10,
@@ -161,6 +170,7 @@ struct MachineConfig
     SpindleConfig spindle;
     OutputConfig outputs;
     EepromConfig eeprom;
+    ToolsConfig tools;
 
     const AxisConfig &axis(Axis a) const { return axes[static_cast<std::size_t>(a)]; }
     AxisConfig &axis(Axis a) { return axes[static_cast<std::size_t>(a)]; }
@@ -206,6 +216,11 @@ std::optional<ConfigError> saveMachineConfig(const MachineConfig &config, const 
 
 // Built-in defaults for a variant, identical to the shipped profiles in resources/machines/.
 MachineConfig defaultMachineConfig(protocol::Variant variant);
+
+// The tool table file of a profile read from profilePath: tools.tableFile resolved against the
+// profile's folder (an absolute path as it is); empty when the profile names none. A profile
+// that was never saved (empty profilePath) resolves against the current directory.
+std::string toolTablePath(const MachineConfig &config, const std::string &profilePath);
 
 // Number of interpolated axes the unit's L/C commands carry (3 or 4).
 int wireAxisCount(const MachineConfig &config);

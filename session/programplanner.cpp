@@ -23,6 +23,7 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     options.coordinateSystem = req.offsets.active;
     options.startMm = {req.startMm[0], req.startMm[1], req.startMm[2], req.startMm[3]};
     options.startLine = req.startLine;
+    options.toolTable = req.toolTable;
     if (req.progress) {
         options.progress = [&req](std::size_t done, std::size_t total) {
             req.progress(double(done) / double(std::max<std::size_t>(1, total)));
@@ -32,6 +33,8 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     gcode::Result result =
         interpreter.run(std::string_view(req.text.constData(), std::size_t(req.text.size())));
     InterpretOutcome out;
+    if (!req.toolTableError.isEmpty())
+        out.errors.push_back({0, 0, req.toolTableError});
     for (const auto &e : result.errors)
         out.errors.push_back({int(e.line), int(e.column), gcode::formatError(req.fileName, e)});
     if (result.errorsNotShown > 0) {
@@ -54,6 +57,8 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     out.linesRead = result.linesRead;
     out.errorsNotShown = result.errorsNotShown;
     out.mark = std::move(result.mark);
+    out.toolTable = std::move(result.toolTable);
+    out.toolTableChanged = result.toolTableChanged;
     return out;
 }
 

@@ -11,6 +11,7 @@
 
 #include "gcode/linestate.h"
 #include "gcode/toolpath.h"
+#include "gcode/tooltable.h"
 #include "machine/machineconfig.h"
 #include "machine/planner.h"
 
@@ -20,6 +21,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace frezka::session {
@@ -42,6 +44,11 @@ struct InterpretRequest
     std::function<void(double)> progress; // fraction 0..1 of this step
     std::size_t maxErrors = 200;          // errors kept (the window's list); the rest are counted
     std::uint32_t startLine = 0; // run from this line: its state in the outcome's mark (0: none)
+    // The machine's tool table (nullopt: none, every tool has length 0). toolTableError, when
+    // set, is the table file's own error: it is the outcome's first error (the program must not
+    // run with lengths that could not be read).
+    std::optional<gcode::ToolTable> toolTable;
+    QString toolTableError;
 };
 
 struct InterpretOutcome
@@ -54,6 +61,10 @@ struct InterpretOutcome
     std::uint64_t linesRead = 0;
     std::uint64_t errorsNotShown = 0; // beyond the interpreter's cap; errors' last line says so
     gcode::LineMark mark;             // InterpretRequest::startLine's (session/runfromline.h)
+    // The tool table after the program's G10 L1/L10/L11 (changed: to be written back once the
+    // program has run).
+    gcode::ToolTable toolTable;
+    bool toolTableChanged = false;
 };
 
 InterpretOutcome interpretProgram(const InterpretRequest &request);

@@ -55,6 +55,8 @@ struct LoadJob
     OffsetState offsets;
     std::array<double, 4> startMm{};
     std::uint32_t startLine = 0;
+    std::optional<gcode::ToolTable> toolTable;
+    QString toolTableError;
 };
 
 // The toolpath's length and the entry of each source line.
@@ -135,8 +137,12 @@ bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
     req.cancel = cancelFlag;
     req.progress = fraction;
     req.startLine = job.startLine;
+    req.toolTable = job.toolTable;
+    req.toolTableError = job.toolTableError;
     InterpretOutcome outcome = interpretProgram(req);
     result.errors = std::move(outcome.errors);
+    if (outcome.toolTableChanged)
+        result.changedToolTable = std::move(outcome.toolTable);
     if (cancelFlag->load() || !outcome.toolpath)
         return !cancelFlag->load();
     if (job.startLine != 0 && result.errors.empty() && job.profile)
@@ -228,7 +234,9 @@ void ProgramSession::load(const QString &path)
                       .feedOverride = m_feedOverride,
                       .offsets = m_offsets,
                       .startMm = m_startMm,
-                      .startLine = m_startLine};
+                      .startLine = m_startLine,
+                      .toolTable = m_toolTable,
+                      .toolTableError = m_toolTableError};
     emit loadStarted(path);
 
     m_thread = QThread::create([=, this] {

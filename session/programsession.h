@@ -70,6 +70,8 @@ struct LoadedProgram
     // Run from a line (ProgramSession::setStartLine): the state taken there and the approach;
     // toolpath and unitProgram are then that job (the approach, then the program's rest).
     std::optional<FromLine> fromLine;
+    // The tool table as the program's G10 L1/L10/L11 leave it: written back once it has run.
+    std::optional<gcode::ToolTable> changedToolTable;
 };
 
 class ProgramSession : public QObject
@@ -91,6 +93,14 @@ public:
     // Run from this line (session/runfromline.h) from the next load on; 0 = the whole program.
     // A line that cannot be a start is the load's error (with the line to choose instead).
     void setStartLine(std::uint32_t line) { m_startLine = line; }
+    // The machine's tool table from the next load on (session/tooltablefile.h); its error, when
+    // the file cannot be read, is every load's first error.
+    void setToolTable(std::optional<gcode::ToolTable> table, const QString &error = {})
+    {
+        m_toolTable = std::move(table);
+        m_toolTableError = error;
+    }
+    const std::optional<gcode::ToolTable> &toolTable() const { return m_toolTable; }
     std::uint32_t startLine() const { return m_startLine; }
 
     // Loads (replacing any load in progress). loaded() or loadFailed() follows.
@@ -118,6 +128,8 @@ private:
     OffsetState m_offsets;
     std::array<double, 4> m_startMm{};
     std::uint32_t m_startLine = 0;
+    std::optional<gcode::ToolTable> m_toolTable;
+    QString m_toolTableError;
     LoadedProgram m_program;
     QThread *m_thread = nullptr;
     std::shared_ptr<std::atomic_bool> m_cancel;

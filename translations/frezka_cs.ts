@@ -1786,10 +1786,6 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>G10 %1 není podporováno</translation>
     </message>
     <message>
-        <source>Use G10 L2 or G10 L20 to set a work offset.</source>
-        <translation>Posunutí nulového bodu obrobku nastavte pomocí G10 L2 nebo G10 L20.</translation>
-    </message>
-    <message>
         <source>G10 needs P0 to P9 (got %1)</source>
         <translation>G10 vyžaduje P0 až P9 (zadáno %1)</translation>
     </message>
@@ -2292,6 +2288,66 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</source>
         <translation>Vygenerujte program z CAM znovu s korekcí spočtenou v CAM (dráha už posunutá o poloměr nástroje, bez G41/G42 a bez D). Pouhé smazání G41/G42 by posunulo řez mimo dráhu o poloměr nástroje.</translation>
+    </message>
+    <message>
+        <source>Cannot write the file %1: %2</source>
+        <translation>Soubor %1 nelze zapsat: %2</translation>
+    </message>
+    <message>
+        <source>Check that the folder exists and is writable and that the disk is not full; the old file is kept unchanged.</source>
+        <translation>Zkontrolujte, že složka existuje, lze do ní zapisovat a disk není plný; původní soubor zůstal beze změny.</translation>
+    </message>
+    <message>
+        <source>Tool table entry cannot be read at &apos;%1&apos;</source>
+        <translation>Řádek tabulky nástrojů nelze přečíst u &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>Each line is T&lt;tool&gt; P&lt;pocket&gt; with optional X Y Z A B C U V W offsets, D diameter, I J angles and Q orientation (0-9), each letter once, then an optional ; comment, as in LinuxCNC&apos;s .tbl files. Correct the line in Machine &gt; Tool table or in a text editor.</source>
+        <translation>Každý řádek je T&lt;nástroj&gt; P&lt;pozice&gt; s volitelnými korekcemi X Y Z A B C U V W, průměrem D, úhly I J a orientací Q (0–9), každé písmeno jednou, a pak volitelný komentář za ; – jako v souborech .tbl systému LinuxCNC. Opravte řádek v Stroj &gt; Tabulka nástrojů nebo v textovém editoru.</translation>
+    </message>
+    <message>
+        <source>Tool %1 is listed twice in the tool table</source>
+        <translation>Nástroj %1 je v tabulce nástrojů dvakrát</translation>
+    </message>
+    <message>
+        <source>Keep one line per tool number; delete or renumber the other.</source>
+        <translation>Ponechte pro každé číslo nástroje jeden řádek; druhý smažte nebo přečíslujte.</translation>
+    </message>
+    <message>
+        <source>Use G10 L2 or G10 L20 to set a work offset, G10 L1, L10 or L11 to set a tool&apos;s offsets.</source>
+        <translation>Posunutí nulového bodu obrobku nastavte pomocí G10 L2 nebo G10 L20, korekce nástroje pomocí G10 L1, L10 nebo L11.</translation>
+    </message>
+    <message>
+        <source>Tool %1 is not in the tool table</source>
+        <translation>Nástroj %1 není v tabulce nástrojů</translation>
+    </message>
+    <message>
+        <source>Add the tool with its length and diameter in Machine &gt; Tool table, or correct the T, H or P number.</source>
+        <translation>Přidejte nástroj s jeho délkou a průměrem v Stroj &gt; Tabulka nástrojů, nebo opravte číslo T, H či P.</translation>
+    </message>
+    <message>
+        <source>%1 needs either H or axis words, not both or none</source>
+        <translation>%1 potřebuje buď H, nebo osová slova, ne obojí ani nic</translation>
+    </message>
+    <message>
+        <source>G43.2 Hn adds tool n&apos;s offsets, G43.2 Z.. adds the given values; G43.1 takes axis words only.</source>
+        <translation>G43.2 Hn přičte korekce nástroje n, G43.2 Z.. přičte zadané hodnoty; G43.1 bere jen osová slova.</translation>
+    </message>
+    <message>
+        <source>%1 without offsets has no effect</source>
+        <translation>%1 bez korekcí nemá žádný účinek</translation>
+    </message>
+    <message>
+        <source>Give the values to set, e.g. Z for the tool length and R for its radius.</source>
+        <translation>Zadejte hodnoty k nastavení, např. Z pro délku nástroje a R pro jeho poloměr.</translation>
+    </message>
+    <message>
+        <source>%1 needs the tool number in %2</source>
+        <translation>%1 potřebuje číslo nástroje v %2</translation>
+    </message>
+    <message>
+        <source>Write the number of a tool of the tool table, e.g. M61 Q3 or G10 L1 P3 Z25.</source>
+        <translation>Napište číslo nástroje z tabulky nástrojů, např. M61 Q3 nebo G10 L1 P3 Z25.</translation>
     </message>
 </context>
 <context>
@@ -3400,6 +3456,30 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>G21: the program is in mm</source>
         <translation>G21: program je v mm</translation>
     </message>
+    <message>
+        <source>&amp;Tool table…</source>
+        <translation>&amp;Tabulka nástrojů…</translation>
+    </message>
+    <message>
+        <source>The machine profile names no tool table file: set it in Machine › Settings (Tools), e.g. tool.tbl.</source>
+        <translation>Profil stroje neuvádí soubor tabulky nástrojů: nastavte ho ve Stroj › Nastavení (Nástroje), např. tool.tbl.</translation>
+    </message>
+    <message>
+        <source>Tool table saved; programs are checked with it.</source>
+        <translation>Tabulka nástrojů uložena; programy se kontrolují s ní.</translation>
+    </message>
+    <message>
+        <source>no comment in the tool table</source>
+        <translation>bez komentáře v tabulce nástrojů</translation>
+    </message>
+    <message>
+        <source>Tool %1: %2 (length %3 mm, diameter %4 mm)</source>
+        <translation>Nástroj %1: %2 (délka %3 mm, průměr %4 mm)</translation>
+    </message>
+    <message>
+        <source>The program changed the tool table (G10 L1, L10 or L11): %1 saved.</source>
+        <translation>Program změnil tabulku nástrojů (G10 L1, L10 nebo L11): %1 uložena.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -4016,6 +4096,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Allow a run before homing (with a warning)</source>
         <translation>Povolit spuštění před najetím do reference (s varováním)</translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation>Nástroje</translation>
+    </message>
+    <message>
+        <source>Tool table file (LinuxCNC .tbl, beside the profile)</source>
+        <translation>Soubor tabulky nástrojů (LinuxCNC .tbl, vedle profilu)</translation>
     </message>
 </context>
 <context>
@@ -4642,6 +4730,73 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>programmed %1 %2 × %3</source>
         <translation>programováno %1 %2 × %3</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ToolTableDialog</name>
+    <message>
+        <source>Row %1: the tool number must be a whole number from 1 up.</source>
+        <translation>Řádek %1: číslo nástroje musí být celé číslo od 1 výše.</translation>
+    </message>
+    <message>
+        <source>Row %1: tool %2 is listed twice; give it another number or remove the row.</source>
+        <translation>Řádek %1: nástroj %2 je uveden dvakrát; dejte mu jiné číslo nebo řádek odstraňte.</translation>
+    </message>
+    <message>
+        <source>Row %1: the pocket must be a whole number from 0 up.</source>
+        <translation>Řádek %1: pozice musí být celé číslo od 0 výše.</translation>
+    </message>
+    <message>
+        <source>Row %1: the length must be a number of mm, e.g. 42.5.</source>
+        <translation>Řádek %1: délka musí být číslo v mm, např. 42.5.</translation>
+    </message>
+    <message>
+        <source>Row %1: the diameter must be a number of mm, 0 or more.</source>
+        <translation>Řádek %1: průměr musí být číslo v mm, 0 nebo více.</translation>
+    </message>
+    <message>
+        <source>Tool table</source>
+        <translation>Tabulka nástrojů</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Nástroj</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>Pozice</translation>
+    </message>
+    <message>
+        <source>Length (mm)</source>
+        <translation>Délka (mm)</translation>
+    </message>
+    <message>
+        <source>Diameter (mm)</source>
+        <translation>Průměr (mm)</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Komentář</translation>
+    </message>
+    <message>
+        <source>File: %1</source>
+        <translation>Soubor: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Add tool</source>
+        <translation>&amp;Přidat nástroj</translation>
+    </message>
+    <message>
+        <source>&amp;Remove tool</source>
+        <translation>&amp;Odebrat nástroj</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Uložit</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Zavřít</translation>
     </message>
 </context>
 <context>

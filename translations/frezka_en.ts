@@ -1786,10 +1786,6 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>G10 %1 is not supported</translation>
     </message>
     <message>
-        <source>Use G10 L2 or G10 L20 to set a work offset.</source>
-        <translation>Use G10 L2 or G10 L20 to set a work offset.</translation>
-    </message>
-    <message>
         <source>G10 needs P0 to P9 (got %1)</source>
         <translation>G10 needs P0 to P9 (got %1)</translation>
     </message>
@@ -2289,6 +2285,66 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</source>
         <translation>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</translation>
+    </message>
+    <message>
+        <source>Cannot write the file %1: %2</source>
+        <translation>Cannot write the file %1: %2</translation>
+    </message>
+    <message>
+        <source>Check that the folder exists and is writable and that the disk is not full; the old file is kept unchanged.</source>
+        <translation>Check that the folder exists and is writable and that the disk is not full; the old file is kept unchanged.</translation>
+    </message>
+    <message>
+        <source>Tool table entry cannot be read at &apos;%1&apos;</source>
+        <translation>Tool table entry cannot be read at &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>Each line is T&lt;tool&gt; P&lt;pocket&gt; with optional X Y Z A B C U V W offsets, D diameter, I J angles and Q orientation (0-9), each letter once, then an optional ; comment, as in LinuxCNC&apos;s .tbl files. Correct the line in Machine &gt; Tool table or in a text editor.</source>
+        <translation>Each line is T&lt;tool&gt; P&lt;pocket&gt; with optional X Y Z A B C U V W offsets, D diameter, I J angles and Q orientation (0-9), each letter once, then an optional ; comment, as in LinuxCNC&apos;s .tbl files. Correct the line in Machine &gt; Tool table or in a text editor.</translation>
+    </message>
+    <message>
+        <source>Tool %1 is listed twice in the tool table</source>
+        <translation>Tool %1 is listed twice in the tool table</translation>
+    </message>
+    <message>
+        <source>Keep one line per tool number; delete or renumber the other.</source>
+        <translation>Keep one line per tool number; delete or renumber the other.</translation>
+    </message>
+    <message>
+        <source>Use G10 L2 or G10 L20 to set a work offset, G10 L1, L10 or L11 to set a tool&apos;s offsets.</source>
+        <translation>Use G10 L2 or G10 L20 to set a work offset, G10 L1, L10 or L11 to set a tool&apos;s offsets.</translation>
+    </message>
+    <message>
+        <source>Tool %1 is not in the tool table</source>
+        <translation>Tool %1 is not in the tool table</translation>
+    </message>
+    <message>
+        <source>Add the tool with its length and diameter in Machine &gt; Tool table, or correct the T, H or P number.</source>
+        <translation>Add the tool with its length and diameter in Machine &gt; Tool table, or correct the T, H or P number.</translation>
+    </message>
+    <message>
+        <source>%1 needs either H or axis words, not both or none</source>
+        <translation>%1 needs either H or axis words, not both or none</translation>
+    </message>
+    <message>
+        <source>G43.2 Hn adds tool n&apos;s offsets, G43.2 Z.. adds the given values; G43.1 takes axis words only.</source>
+        <translation>G43.2 Hn adds tool n&apos;s offsets, G43.2 Z.. adds the given values; G43.1 takes axis words only.</translation>
+    </message>
+    <message>
+        <source>%1 without offsets has no effect</source>
+        <translation>%1 without offsets has no effect</translation>
+    </message>
+    <message>
+        <source>Give the values to set, e.g. Z for the tool length and R for its radius.</source>
+        <translation>Give the values to set, e.g. Z for the tool length and R for its radius.</translation>
+    </message>
+    <message>
+        <source>%1 needs the tool number in %2</source>
+        <translation>%1 needs the tool number in %2</translation>
+    </message>
+    <message>
+        <source>Write the number of a tool of the tool table, e.g. M61 Q3 or G10 L1 P3 Z25.</source>
+        <translation>Write the number of a tool of the tool table, e.g. M61 Q3 or G10 L1 P3 Z25.</translation>
     </message>
 </context>
 <context>
@@ -3393,6 +3449,30 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>G21: the program is in mm</source>
         <translation>G21: the program is in mm</translation>
     </message>
+    <message>
+        <source>&amp;Tool table…</source>
+        <translation>&amp;Tool table…</translation>
+    </message>
+    <message>
+        <source>The machine profile names no tool table file: set it in Machine › Settings (Tools), e.g. tool.tbl.</source>
+        <translation>The machine profile names no tool table file: set it in Machine › Settings (Tools), e.g. tool.tbl.</translation>
+    </message>
+    <message>
+        <source>Tool table saved; programs are checked with it.</source>
+        <translation>Tool table saved; programs are checked with it.</translation>
+    </message>
+    <message>
+        <source>no comment in the tool table</source>
+        <translation>no comment in the tool table</translation>
+    </message>
+    <message>
+        <source>Tool %1: %2 (length %3 mm, diameter %4 mm)</source>
+        <translation>Tool %1: %2 (length %3 mm, diameter %4 mm)</translation>
+    </message>
+    <message>
+        <source>The program changed the tool table (G10 L1, L10 or L11): %1 saved.</source>
+        <translation>The program changed the tool table (G10 L1, L10 or L11): %1 saved.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -4009,6 +4089,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Allow a run before homing (with a warning)</source>
         <translation>Allow a run before homing (with a warning)</translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation>Tools</translation>
+    </message>
+    <message>
+        <source>Tool table file (LinuxCNC .tbl, beside the profile)</source>
+        <translation>Tool table file (LinuxCNC .tbl, beside the profile)</translation>
     </message>
 </context>
 <context>
@@ -4634,6 +4722,73 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>programmed %1 %2 × %3</source>
         <translation>programmed %1 %2 × %3</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ToolTableDialog</name>
+    <message>
+        <source>Row %1: the tool number must be a whole number from 1 up.</source>
+        <translation>Row %1: the tool number must be a whole number from 1 up.</translation>
+    </message>
+    <message>
+        <source>Row %1: tool %2 is listed twice; give it another number or remove the row.</source>
+        <translation>Row %1: tool %2 is listed twice; give it another number or remove the row.</translation>
+    </message>
+    <message>
+        <source>Row %1: the pocket must be a whole number from 0 up.</source>
+        <translation>Row %1: the pocket must be a whole number from 0 up.</translation>
+    </message>
+    <message>
+        <source>Row %1: the length must be a number of mm, e.g. 42.5.</source>
+        <translation>Row %1: the length must be a number of mm, e.g. 42.5.</translation>
+    </message>
+    <message>
+        <source>Row %1: the diameter must be a number of mm, 0 or more.</source>
+        <translation>Row %1: the diameter must be a number of mm, 0 or more.</translation>
+    </message>
+    <message>
+        <source>Tool table</source>
+        <translation>Tool table</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Tool</translation>
+    </message>
+    <message>
+        <source>Pocket</source>
+        <translation>Pocket</translation>
+    </message>
+    <message>
+        <source>Length (mm)</source>
+        <translation>Length (mm)</translation>
+    </message>
+    <message>
+        <source>Diameter (mm)</source>
+        <translation>Diameter (mm)</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Comment</translation>
+    </message>
+    <message>
+        <source>File: %1</source>
+        <translation>File: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Add tool</source>
+        <translation>&amp;Add tool</translation>
+    </message>
+    <message>
+        <source>&amp;Remove tool</source>
+        <translation>&amp;Remove tool</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Save</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Close</translation>
     </message>
 </context>
 <context>

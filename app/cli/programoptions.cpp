@@ -5,6 +5,7 @@
 #include "app/common/datadir.h"
 
 #include "gcode/error.h"
+#include "session/tooltablefile.h"
 
 #include <QFile>
 
@@ -116,6 +117,16 @@ std::optional<session::InterpretOutcome> interpretFile(const QString &file,
     request.fileName = file;
     request.offsets = options.offsets;
     request.startLine = startLine;
+    if (!options.machine.isEmpty()) { // the profile's tool table (its errors come as the first)
+        const machine::ConfigResult profile =
+            machine::loadMachineConfig(options.machine.toStdString());
+        if (profile.config) {
+            session::ToolTableFile tools =
+                session::readProfileToolTable(*profile.config, options.machine);
+            request.toolTable = std::move(tools.table);
+            request.toolTableError = tools.error;
+        }
+    }
     request.maxErrors =
         gcode::Options{}.maxErrors; // a terminal lists as many as the interpreter keeps
     session::InterpretOutcome outcome = session::interpretProgram(request);

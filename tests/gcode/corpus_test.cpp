@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 using namespace frezka::gcode;
@@ -64,6 +65,27 @@ std::string sourceLine(const std::string &text, std::uint32_t line)
     return s;
 }
 
+// The tool table beside a program (NAME.tbl, mm), read for both Frezka and rs274.
+std::optional<ToolTable> toolTableFor(const fs::path &nc)
+{
+    fs::path tbl = nc;
+    tbl.replace_extension(".tbl");
+    if (!fs::exists(tbl))
+        return std::nullopt;
+    ToolTable table;
+    Error error;
+    EXPECT_TRUE(readToolTableFile(tbl.string(), &table, &error, false))
+        << tbl << ":" << error.line << ": " << englishMessage(error);
+    return table;
+}
+
+Options optionsFor(const fs::path &nc)
+{
+    Options options;
+    options.toolTable = toolTableFor(nc);
+    return options;
+}
+
 class GoodProgram : public testing::TestWithParam<std::string>
 {
 };
@@ -78,7 +100,7 @@ TEST_P(GoodProgram, MatchesGoldenTrace)
 {
     const fs::path nc = kData / "good" / (GetParam() + ".nc");
     const fs::path golden = kData / "good" / (GetParam() + ".trace");
-    const Result r = interpretFile(nc.string());
+    const Result r = interpretFile(nc.string(), optionsFor(nc));
     ASSERT_TRUE(r.ok()) << r.errors[0].line << ":" << r.errors[0].column << ": "
                         << englishMessage(r.errors[0]);
     // Ended by M2/M30/%, or at the end of the file with the warning that says so.
@@ -111,7 +133,8 @@ TEST_P(GoodProgram, MatchesRs274)
     const fs::path nc = kData / "good" / (GetParam() + ".nc");
     if (test::rs274Path().empty())
         GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
-    EXPECT_TRUE(test::matchesRs274(nc.string()));
+    const auto tools = toolTableFor(nc);
+    EXPECT_TRUE(test::matchesRs274(nc.string(), {}, tools ? &*tools : nullptr));
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, GoodProgram, testing::ValuesIn(listPrograms("good")), testName);
@@ -133,7 +156,7 @@ TEST_P(BadProgram, ReportsExpectedErrorAt)
     const auto line = static_cast<std::uint32_t>(std::stoul(where.substr(0, colon)));
     const auto column = static_cast<std::uint32_t>(std::stoul(where.substr(colon + 1)));
 
-    const Result r = interpretFile(nc.string());
+    const Result r = interpretFile(nc.string(), optionsFor(nc));
     ASSERT_FALSE(r.ok());
     const Error &e = r.errors.front();
     EXPECT_EQ(errorName(e.code), name) << englishMessage(e);
@@ -142,7 +165,8 @@ TEST_P(BadProgram, ReportsExpectedErrorAt)
     EXPECT_FALSE(translatedMessage(e).isEmpty());
 
     if (text.find("\n; rs274: error") != std::string::npos) {
-        const test::Rs274Run ref = test::runRs274(nc.string());
+        const auto tools = toolTableFor(nc);
+        const test::Rs274Run ref = test::runRs274(nc.string(), tools ? &*tools : nullptr);
         if (!ref.available)
             GTEST_SKIP() << "rs274 is not installed";
         EXPECT_FALSE(ref.error.empty()) << "rs274 accepted the program";

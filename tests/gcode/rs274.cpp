@@ -46,7 +46,7 @@ std::string rs274Path()
     return QStandardPaths::findExecutable(QStringLiteral("rs274")).toStdString();
 }
 
-Rs274Run runRs274(const std::string &file)
+Rs274Run runRs274(const std::string &file, const ToolTable *toolTable)
 {
     Rs274Run run;
     const std::string exe = rs274Path();
@@ -62,8 +62,19 @@ Rs274Run runRs274(const std::string &file)
         run.error = "cannot write the tool table";
         return run;
     }
-    for (int t = 1; t <= 99; ++t)
-        tools.write(QStringLiteral("T%1 P%1 Z0 D1 ;\n").arg(t).toLatin1());
+    if (toolTable) {
+        ToolTable inches = *toolTable;
+        for (ToolEntry &e : inches.tools) {
+            for (std::size_t i : {0, 1, 2, 6, 7, 8})
+                e.offsetMm[i] /= 25.4;
+            e.diameterMm /= 25.4;
+        }
+        const std::string text = formatToolTable(inches);
+        tools.write(text.data(), static_cast<qint64>(text.size()));
+    } else {
+        for (int t = 1; t <= 99; ++t)
+            tools.write(QStringLiteral("T%1 P%1 Z0 D1 ;\n").arg(t).toLatin1());
+    }
     tools.flush();
     // Concurrent rs274 runs (ctest -j) interfere with each other (they end with exit code 7 and
     // lose their output): one at a time across processes, each in a directory of its own, since
@@ -87,7 +98,7 @@ Rs274Run runRs274(const std::string &file)
     std::istringstream in(process.readAll().toStdString());
     double unit = 1;
     std::array<double, 6> g5x{}, g92{};
-    double toolZ = 0;
+    std::array<double, 4> tool{}; // USE_TOOL_LENGTH_OFFSET, mm (A degrees)
     double feedMm = 0, rpm = 0;
     int spindleDir = 0;
     Plane plane = Plane::XY;
@@ -123,8 +134,9 @@ Rs274Run runRs274(const std::string &file)
         // Offsets are kept in mm as printed (rs274 does not print them again when the units
         // change); positions are in the units in force when printed. A is in degrees.
         auto machine = [&](double x, double y, double z, double a) {
-            return Point4{x * unit + g5x[0] + g92[0], y * unit + g5x[1] + g92[1],
-                          z * unit + g5x[2] + g92[2] + toolZ, a + g5x[3] + g92[3]};
+            return Point4{x * unit + g5x[0] + g92[0] + tool[0],
+                          y * unit + g5x[1] + g92[1] + tool[1],
+                          z * unit + g5x[2] + g92[2] + tool[2], a + g5x[3] + g92[3] + tool[3]};
         };
         auto toMm = [&](std::array<double, 6> &o) {
             for (int i = 0; i < 3; ++i)
@@ -145,8 +157,8 @@ Rs274Run runRs274(const std::string &file)
         } else if (name == "SET_G92_OFFSET" && v.size() >= 6) {
             std::copy(v.begin(), v.begin() + 6, g92.begin());
             toMm(g92);
-        } else if (name == "USE_TOOL_LENGTH_OFFSET" && v.size() >= 3) {
-            toolZ = v[2] * unit;
+        } else if (name == "USE_TOOL_LENGTH_OFFSET" && v.size() >= 4) {
+            tool = {v[0] * unit, v[1] * unit, v[2] * unit, v[3]};
         } else if (name == "SELECT_PLANE") {
             plane = call.find("XZ") != std::string::npos   ? Plane::XZ
                     : call.find("YZ") != std::string::npos ? Plane::YZ
@@ -235,12 +247,16 @@ std::vector<double> spindleInForce(const Toolpath &tp)
 
 } // namespace
 
-testing::AssertionResult matchesRs274(const std::string &file, const std::string &rs274File)
+testing::AssertionResult matchesRs274(const std::string &file, const std::string &rs274File,
+                                      const ToolTable *tools)
 {
-    const Rs274Run ref = runRs274(rs274File.empty() ? file : rs274File);
+    const Rs274Run ref = runRs274(rs274File.empty() ? file : rs274File, tools);
     if (!ref.error.empty() && !ref.endedWithoutEnd())
         return testing::AssertionFailure() << "rs274: " << ref.error << " at: " << ref.errorLine;
-    const Result r = interpretFile(file);
+    Options options;
+    if (tools)
+        options.toolTable = *tools;
+    const Result r = interpretFile(file, options);
     if (!r.ok())
         return testing::AssertionFailure()
                << "frezka: " << r.errors[0].line << ":" << r.errors[0].column << ": "

@@ -5,6 +5,7 @@
 // USE_TOOL_LENGTH_OFFSET and USE_LENGTH_UNITS lines it prints are applied to get machine mm.
 
 #include "gcode/toolpath.h"
+#include "gcode/tooltable.h"
 
 #include <gtest/gtest.h>
 
@@ -42,13 +43,17 @@ struct Rs274Run
 };
 
 std::string rs274Path(); // empty when not installed
-Rs274Run runRs274(const std::string &file);
+// tools: the tool table (mm) both see; none: every tool 1..99 of length 0 for rs274, no table
+// for Frezka. rs274 reads the table in inches (its standalone machine units), so it gets a copy
+// converted from mm.
+Rs274Run runRs274(const std::string &file, const ToolTable *tools = nullptr);
 
 // Runs the file through both interpreters: same motion and dwell sequence, kinds, end points and
 // arc centres within 1e-4 program units (rs274 prints 4 decimals), same arc planes and turns,
 // the same feed (mm/min) on every feed, arc and probe move, the same dwell times and the same
 // spindle speed in force at every motion and dwell. rs274 sees rs274File when given (a copy
 // edited to LinuxCNC's dialect, e.g. without the K0 words Frezka accepts and rs274 refuses).
-testing::AssertionResult matchesRs274(const std::string &file, const std::string &rs274File = {});
+testing::AssertionResult matchesRs274(const std::string &file, const std::string &rs274File = {},
+                                      const ToolTable *tools = nullptr);
 
 } // namespace frezka::gcode::test
