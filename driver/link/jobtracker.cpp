@@ -13,32 +13,23 @@ namespace frezka::driver {
 
 using detail::isMotion;
 
-// The executing command from the polled position: of the motion commands from the last one seen
-// executing on to the last sent, one whose box (from its start to its end position) holds the
-// position and which has not ended. Where the path comes back over itself (a zig-zag along one
-// axis, a raster's return) several boxes hold it: the one nearest to where the unit's model puts
-// it is taken. The first of them was taken before, far behind the unit on a Z zig-zag, and the
-// job took the unit for holding 0.8 s of motion where it held 0.1 s: its packets came too late
-// (property seed 128). A position on none of them (the tool lifted, the machine off the path)
-// says nothing about progress: the line, progress and ETA stay where they were.
+// The executing command from the polled position: the first motion command from the last one
+// seen executing on whose box (from its start to its end position) holds the position and which
+// has not ended. A position on none of them (the tool lifted, the machine off the path) says
+// nothing about progress: the line, progress and ETA stay where they were.
 bool JobTracker::positionRead(double startS)
 {
     const auto &cmds = m_program.commands;
     const int axes = m_program.axisCount;
     MachineState &state = m_host.liveState();
     const auto &pos = state.positionSteps;
-    const std::size_t limit = std::min(m_cursor.next, cmds.size());
-    const std::size_t guess = m_pace.execEstimate();
-    const auto distance = [guess](std::size_t j) { return j > guess ? j - guess : guess - j; };
     std::size_t i = m_cursor.exec;
-    std::size_t found = limit; // the box taken
-    bool onPath = false;       // inside a box, or at the end of the last motion sent
-    double done = 0;           // the share of vector `found`'s longest axis already run
+    const std::size_t limit = std::min(m_cursor.next, cmds.size());
+    bool onPath = false; // inside a box, or at the end of the last motion sent
+    double done = 0;     // the share of vector i's longest axis already run
     for (int guard = 0; i < limit && guard < 100000; ++i, ++guard) {
         if (!isMotion(cmds[i].op))
             continue;
-        if (found < limit && distance(i) >= distance(found))
-            break; // the boxes further on lie further from the model
         const machine::Steps4 &end = cmds[i].endSteps;
         bool atEnd = true;
         bool inside = true;
@@ -48,21 +39,18 @@ bool JobTracker::positionRead(double startS)
             inside =
                 inside && pos[a] >= std::min(start, end[a]) && pos[a] <= std::max(start, end[a]);
         }
-        if (found == limit)
-            onPath = atEnd;
+        onPath = atEnd;
         if (inside && !atEnd) {
             onPath = true;
-            found = i;
             int longest = 0;
             for (int a = 1; a < axes; ++a)
                 longest = std::abs(cmds[i].d[a]) > std::abs(cmds[i].d[longest]) ? a : longest;
             const std::int64_t left = std::abs(end[longest] - pos[longest]);
             const std::int64_t length = std::abs(cmds[i].d[longest]);
             done = length > 0 ? 1.0 - static_cast<double>(left) / static_cast<double>(length) : 0;
+            break;
         }
     }
-    if (found < limit)
-        i = found;
     if (!onPath && i > m_cursor.exec)
         return false;
     m_cursor.exec = i;

@@ -377,14 +377,3 @@ TEST(StreamPace, AVectorSlowedFromRestGainsWhatItsAccelerationGives)
 {
     expectKeepsThePace(drawJob(95, 300));
 }
-
-// Property seed 128 (a GVE64 at 19 200 Bd, 11.7 ms): a Z zig-zag of 2-17 step vectors with a V
-// before nearly each. Every poll read a Z position that many of the vectors in flight pass
-// through; the job took the first of them for the one executing, far behind the unit, judged
-// that the unit held 0.8 s of motion where it held 0.1 s, and sent too late: 5 starvation stops.
-// The tracker now takes the vector nearest to where the unit's model puts it
-// (driver/link/jobtracker.cpp).
-TEST(StreamPace, AZigZagPollIsPlacedWhereTheUnitIs)
-{
-    expectKeepsThePace(drawJob(128, 300));
-}
