@@ -31,8 +31,10 @@ private slots:
             const auto &s = state();
             if (!s.jobActive || s.mode == MachineMode::Stopping)
                 return;
-            // The line whose X range holds the unit's X (lines 1-2 are the plunge).
-            const double x = s.positionMm[0] - x0;
+            // The line whose X range holds the unit's X as the window shows it (lines 1-2 are the
+            // plunge): between polls the DRO, the listing and the cut drawing follow the driver's
+            // model of the unit (MachineState::live), ahead of the last poll by up to a poll's age.
+            const double x = s.shownMm()[0] - x0;
             if (x >= 80 - 1e-6)
                 return; // the cut is done: the unit stands at its end, on the program's last lines
             const int cutting = x <= 0 ? 2 : std::min(42, 3 + int(std::floor((x - 1e-6) / 2)));
