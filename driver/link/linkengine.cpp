@@ -1,3 +1,5 @@
+// LinkEngine: strict request/reply transactions on the unit's line. See linkengine.h.
+
 #include "linkengine.h"
 
 #include <algorithm>
@@ -125,6 +127,7 @@ void LinkEngine::beginTransaction(double now)
 {
     ++m_stats.transactions;
     m_lastRepeat.clear();
+    m_packetGap = false;
     m_indexBefore = m_index;
     if (m_index || !exact()) {
         transmitMain(now);
@@ -258,119 +261,6 @@ void LinkEngine::onMainReply(const Line &line, double now)
     finishOk(*reply, line.text);
 }
 
-void LinkEngine::onIndexReply(const Line &line, double now)
-{
-    std::string err;
-    const auto reply = line.overlong ? std::nullopt : decodeFor(cmd::index(), line.text, err);
-    if (!reply || !reply->ok()) {
-        ++m_stats.garbledLines;
-        retryAux("garbled reply to '@'", line.text, now);
-        return;
-    }
-    const int unitIndex = static_cast<int>(*reply->decimal());
-    if (m_presync) {
-        log(LinkLogKind::Received, line.text);
-        m_presync = false;
-        m_index = m_indexBefore = unitIndex;
-        transmitMain(now);
-        return;
-    }
-    log(LinkLogKind::Recovery, "index " + std::to_string(unitIndex));
-    if (!m_indexBefore) {
-        // We did not know the index before this transaction: we cannot tell whether it
-        // arrived. Learn it and report the transaction failed (the caller decides).
-        m_index = unitIndex;
-        finishFailed(describe() + ": reply lost and the unit's command index was unknown",
-                     LinkFailure::IndexUnknown, {commandArg()});
-        return;
-    }
-    if (unitIndex == indexAfter()) {
-        m_index = unitIndex;
-        sendAux(cmd::repeat(), State::AwaitRepeat, now);
-        return;
-    }
-    if (unitIndex == *m_indexBefore) {
-        ++m_resent;
-        ++m_stats.resent;
-        log(LinkLogKind::Recovery, "not received, sending again: " + describe());
-        transmitMain(now);
-        return;
-    }
-    m_index = unitIndex;
-    finishFailed(describe() + ": the unit's command index is " + std::to_string(unitIndex) +
-                     ", expected " + std::to_string(*m_indexBefore) + " or " +
-                     std::to_string(indexAfter()),
-                 LinkFailure::IndexUnexpected,
-                 {commandArg(), std::to_string(unitIndex), std::to_string(*m_indexBefore),
-                  std::to_string(indexAfter())});
-}
-
-void LinkEngine::onRepeatReply(const Line &line, double now)
-{
-    std::string err;
-    const auto reply = line.overlong ? std::nullopt : decodeFor(mainCommand(), line.text, err);
-    if (!reply) {
-        ++m_stats.garbledLines;
-        retryAux("garbled repeated reply", line.text, now);
-        return;
-    }
-    // '>' itself may arrive damaged: the unit then complains about it (4 = bad checksum, 2 = cut
-    // short), which is not the reply it was asked to repeat. A packet that arrived whole (the
-    // index said so) always answers with its count; a single command's doubtful answer counts
-    // only when '>' brings it twice.
-    const bool counted = m_packet && !reply->values.empty();
-    const bool doubtful = (reply->code == ReplyCode::Syntax && m_checksums && !counted) ||
-                          reply->code == ReplyCode::Watchdog;
-    if (doubtful && (m_packet || line.text != m_lastRepeat)) {
-        m_lastRepeat = line.text;
-        retryAux("doubtful repeated reply", line.text, now);
-        return;
-    }
-    ++m_recovered;
-    ++m_stats.recovered;
-    finishOk(*reply, line.text);
-}
-
-namespace {
-std::string whyText(const char *phrase, const std::string &raw, const std::string &extra)
-{
-    return phrase + (raw.empty() ? std::string() : " '" + raw + "'") + extra;
-}
-} // namespace
-
-void LinkEngine::recover(const char *phrase, const std::string &raw, const std::string &extra,
-                         double now)
-{
-    const std::string why = whyText(phrase, raw, extra);
-    settleThenRetry(describe() + ": " + why, phrase, raw, why, now);
-}
-
-void LinkEngine::retryAux(const char *phrase, const std::string &raw, double now)
-{
-    // Both '@' and '>' are harmless to repeat.
-    const std::string why = whyText(phrase, raw, "");
-    settleThenRetry(why, phrase, raw, why, now);
-}
-
-void LinkEngine::settleThenRetry(const std::string &logText, const char *phrase,
-                                 const std::string &raw, const std::string &why, double now)
-{
-    log(LinkLogKind::Recovery, logText);
-    if (++m_attempts > m_options.maxAttempts) {
-        finishFailed(describe() + ": " + why + "; gave up after " +
-                         std::to_string(m_options.maxAttempts) + " attempts",
-                     LinkFailure::GaveUp,
-                     {commandArg(), phrase, raw.empty() ? "" : " '" + raw + "'",
-                      std::to_string(m_options.maxAttempts)});
-        return;
-    }
-    // A settle pause drops broken bytes. Our own bytes may still be on the wire (a long packet):
-    // a query sent now would queue behind them and its reply come late, to be mistaken for
-    // another one. Settle after they are out.
-    m_state = State::Settle;
-    m_deadline = std::max(now, m_txDoneAt) + m_options.settleS;
-}
-
 void LinkEngine::onTime(double now)
 {
     if (now < m_deadline)
@@ -441,6 +331,13 @@ void LinkEngine::finishOk(const Reply &r, const std::string &raw)
     }
     if (o.commands.front().op == Op::Jump)
         m_index = 0;
+    const bool advances = m_packet || advancesIndex(o.commands.front().op);
+    const bool doubtful = (r.code == ReplyCode::Syntax && !(m_packet && !r.values.empty())) ||
+                          r.code == ReplyCode::Watchdog;
+    if (o.commands.front().op == Op::Jump || (advances && doubtful))
+        m_unitLastReply.reset();
+    else if (advances && !m_syncing)
+        m_unitLastReply = raw;
     finish();
     if (onOutcome)
         onOutcome(o);
@@ -461,6 +358,8 @@ void LinkEngine::finishFailed(const std::string &why, LinkFailure failure,
     o.recovered = m_recovered;
     o.tag = m_tag;
     log(LinkLogKind::Error, why);
+    m_unitLastReply.reset(); // it may have run, with a reply we do not know
+    m_packetGap = false;
     finish();
     if (onOutcome)
         onOutcome(o);

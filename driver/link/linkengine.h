@@ -206,6 +206,12 @@ private:
     int m_recovered = 0;
     std::string m_lastRaw;
     std::optional<int> m_indexBefore;
+    // The reply the unit would repeat on '>' now: that of the last command that advanced its
+    // index, as received; unknown after a failed or doubtful transaction and after J.
+    std::optional<std::string> m_unitLastReply;
+    // '>' asked after a packet only part of whose lines counted (see onIndexReply).
+    bool m_packetGap = false;
+    bool packetGapAnswer(const protocol::Reply &reply, const std::string &text, double now);
     LinkStats m_stats;
 };
 

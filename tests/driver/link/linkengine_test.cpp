@@ -326,3 +326,87 @@ TEST(LinkEngine, PacketAfterAComplaintLeavesTheIndexToBeLearnt)
     h.engine.receive(reply("0,5"), h.t); // it arrived: not sent again
     EXPECT_NE(h.engine.takeOutput(), encode(cmd::vector(3, 0, 0), true));
 }
+
+namespace {
+
+// A packet of two vectors after an F (its reply "0,40" is what the unit would repeat on '>'),
+// whose reply never comes; '@' says that one of its five lines did not count.
+void packetWithALineMissing(Harness &h, const std::vector<Command> &p, std::string &packetBytes)
+{
+    h.sync(3);
+    h.engine.start(cmd::flag(), 0);
+    h.engine.takeOutput();
+    h.engine.receive(reply("0,40"), 0);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    h.outcomes.clear();
+    h.engine.startPacket(p, 0);
+    packetBytes = h.engine.takeOutput();
+    h.timeout(); // no reply: settle,
+    h.timeout(); // then ask
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true));
+    h.engine.receive(reply("0,8"), h.t); // 4 before, 9 after all five lines
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::repeat(), true));
+}
+
+} // namespace
+
+// The packet's *E was damaged: the '@' abandoned it and nothing ran. '>' brings the reply before
+// it, which tells so; the packet goes again (before, the outcome was unknown and the job let the
+// unit run dry to read its counters: property seeds 12, 55, 85).
+TEST(LinkEngine, PacketWhoseEndWasLostIsSentAgain)
+{
+    Harness h;
+    const std::vector<Command> p{cmd::vector(1, 0, 0), cmd::vector(2, 0, 0)};
+    std::string packetBytes;
+    packetWithALineMissing(h, p, packetBytes);
+    h.engine.receive(reply("0,40"), h.t); // the F's reply: the packet never ended
+    EXPECT_TRUE(h.outcomes.empty());
+    EXPECT_EQ(h.engine.takeOutput(), packetBytes);
+    h.engine.receive(reply("0,2"), h.t);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].status, OutcomeStatus::Ok);
+    EXPECT_EQ(h.outcomes[0].accepted, 2);
+    EXPECT_EQ(h.outcomes[0].resent, 1);
+}
+
+// A vector line was damaged and the packet's "4,k" was lost: '>' brings it, k ran.
+TEST(LinkEngine, PacketWithADamagedLineIsCountedThroughRepeat)
+{
+    Harness h;
+    const std::vector<Command> p{cmd::vector(1, 0, 0), cmd::vector(2, 0, 0)};
+    std::string packetBytes;
+    packetWithALineMissing(h, p, packetBytes);
+    h.engine.receive(reply("4,1"), h.t);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].status, OutcomeStatus::Ok);
+    EXPECT_EQ(h.outcomes[0].accepted, 1);
+    EXPECT_EQ(h.outcomes[0].recovered, 1);
+    EXPECT_TRUE(h.engine.takeOutput().empty());
+}
+
+// The reply before the packet was itself a packet's "4,1": the repeat cannot tell the two apart,
+// and the outcome stays unknown (the job reads the unit's counters).
+TEST(LinkEngine, PacketGapWithAnAmbiguousRepeatFails)
+{
+    Harness h;
+    h.sync(0);
+    const std::vector<Command> p{cmd::vector(1, 0, 0), cmd::vector(2, 0, 0)};
+    h.engine.startPacket(p, 0);
+    h.engine.takeOutput();
+    h.engine.receive(reply("4,1"), 0);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    h.outcomes.clear();
+    h.engine.startPacket(p, 0);
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true)); // learnt after "4,1"
+    h.engine.receive(reply("0,20"), 0);
+    h.engine.takeOutput();
+    h.timeout();
+    h.timeout();
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true));
+    h.engine.receive(reply("0,24"), h.t);
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::repeat(), true));
+    h.engine.receive(reply("4,1"), h.t);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].status, OutcomeStatus::Failed);
+    EXPECT_NE(h.outcomes[0].error.find("may be the packet's"), std::string::npos);
+}
