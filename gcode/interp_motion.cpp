@@ -134,15 +134,18 @@ bool Interpreter::straight(int motion, const Target &target, Error *error)
 {
     const Point4 &end = target.machine;
     const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
+    m_comp.arcNotAllowed = false;
+    if (motion == 10 && m_inverseTime && !m_block.has('f'))
+        return failAt(ErrorCode::InverseTimeFeedMissing, col, "G1", error);
+    if (motion == 10 && !m_inverseTime && m_feed == 0)
+        return failAt(ErrorCode::ZeroFeedRate, col, "G1", error);
+    if (m_comp.active())
+        return compStraight(motion, target, error);
     if (motion == 0) {
         m_toolpath.appendRapid(end, feedMm(), m_line);
         moveTo(target);
         return true;
     }
-    if (m_inverseTime && !m_block.has('f'))
-        return failAt(ErrorCode::InverseTimeFeedMissing, col, "G1", error);
-    if (!m_inverseTime && m_feed == 0)
-        return failAt(ErrorCode::ZeroFeedRate, col, "G1", error);
     const double length =
         std::sqrt((end.x - m_pos.x) * (end.x - m_pos.x) + (end.y - m_pos.y) * (end.y - m_pos.y) +
                   (end.z - m_pos.z) * (end.z - m_pos.z));
@@ -205,6 +208,8 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
     const bool ijk = b.has('i') || b.has('j') || b.has('k');
     const bool rForm = b.has('r');
     const PlaneAxes ax = planeAxes(m_plane);
+    if (m_comp.arcNotAllowed)
+        return failAt(ErrorCode::CompArcAfterExit, col, {}, error);
     if (!rForm && !ijk)
         return failAt(ErrorCode::ArcMissingCentre, col, {}, error);
     if (rForm && ijk)
@@ -237,6 +242,8 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
             return fail(ErrorCode::ArcBadTurns, 'p', fmt4(p), error);
         turns = static_cast<int>(rounded);
     }
+    if (m_comp.active())
+        return compArc(motion, target, turns, error);
 
     // Program coordinates in the plane.
     const double su = axisOf(m_prog, ax.u), sv = axisOf(m_prog, ax.v);
@@ -266,6 +273,8 @@ bool Interpreter::probe(int motion, const Target &target, Error *error)
 {
     const Point4 &end = target.machine;
     const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
+    if (m_comp.on())
+        return failAt(ErrorCode::CompNotAllowed, col, gName(motion), error);
     if (m_inverseTime)
         return failAt(ErrorCode::ProbeInverseTime, col, {}, error);
     if (m_feed == 0)
@@ -352,6 +361,8 @@ bool Interpreter::cycleWords(int motion, CycleWords *w, Error *error) const
     const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 0;
     const std::string name = gName(motion);
     const char wc = kAxisLetters[planeAxes(m_plane).w];
+    if (m_comp.on())
+        return failAt(ErrorCode::CompNotAllowed, col, name, error);
     if (m_inverseTime)
         return failAt(ErrorCode::CycleInverseTime, col, {}, error);
     if (m_feed == 0)

@@ -347,6 +347,8 @@ bool Interpreter::checkWords(int motion, Error *error)
         return unused('q');
     if (m_block.has('h') && mode8 != 430 && mode8 != 432)
         return unused('h');
+    if (m_block.has('d') && !(m_block.hasG(kGCutterComp) && m_block.g[kGCutterComp] != 400))
+        return unused('d');
     if (m_block.has('a') && cycleMove)
         return unused('a');
     if (m_block.hasG(kGNonModal) && m_block.g[kGNonModal] == 530) {
@@ -386,7 +388,7 @@ bool Interpreter::executeBlock(Error *error)
         m_motion = 800;
         m_cycleIlValid = false;
     }
-    return executeStops();
+    return executeStops(error);
 }
 
 // ---- entry points --------------------------------------------------------------------------

@@ -168,7 +168,7 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
                             c == 'n' ? "N (line numbers go first)" : "O (O-words go first)", error);
             if (c == 'b' || c == 'c' || c == 'u' || c == 'v' || c == 'w')
                 return fail(ErrorCode::UnsupportedAxis, at, std::string(1, c - 32), error);
-            if (c == 'd' || c == 'e') {
+            if (c == 'e') {
                 if (m_skipUnsupported) {
                     ++m_pos;
                     double ignored = 0;
@@ -176,8 +176,6 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
                         return false;
                     continue;
                 }
-                if (c == 'd') // only cutter radius compensation uses D
-                    return fail(ErrorCode::CutterCompensation, at, "D", error);
                 return fail(ErrorCode::UnsupportedWord, at, std::string(1, c - 32), error);
             }
             const std::uint32_t bit = 1u << (c - 'a');
@@ -242,8 +240,6 @@ bool Parser::readGCode(Block &block, Error *error)
         return fail(ErrorCode::UnknownGCode, at, gName(code), error);
     if (!supported && m_skipUnsupported)
         return true;
-    if (!supported && group == kGCutterComp)
-        return fail(ErrorCode::CutterCompensation, at, gName(code), error);
     if (!supported)
         return fail(ErrorCode::UnsupportedGCode, at, gName(code) + " (" + reason + ")", error);
     if (block.hasG(group)) {
