@@ -388,3 +388,17 @@ TEST(Interpreter, CutterCompensationWithoutADiameterWarns)
     EXPECT_NE(advice.find("post the program again from the CAM"), std::string::npos) << advice;
     EXPECT_EQ(advice.find("Remove it"), std::string::npos) << advice;
 }
+
+// #5599 (LinuxCNC's switch for DEBUG/PRINT output, set by its example offsets.ngc) may be
+// written; the tool and position parameters stay read-only, as in LinuxCNC.
+TEST(Interpreter, ParameterWritesAsLinuxCncAllows)
+{
+    const Result r = run("#5599 = 1\nG0 X#5599\nM2\n");
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    EXPECT_EQ(r.toolpath.end(0).x, 1);
+    for (const char *text : {"#5400 = 1\nM2\n", "#5420 = 1\nM2\n"}) {
+        const Result bad = run(text);
+        ASSERT_EQ(bad.errors.size(), 1u) << text;
+        EXPECT_EQ(bad.errors[0].code, ErrorCode::ReadOnlyParameter) << text;
+    }
+}

@@ -60,8 +60,9 @@ const std::map<std::string, Refusal> &refused()
         {"m70m72-demo", {E::UnsupportedMCode, "M70/M72 modal state save and restore"}},
         {"m73-demo", {E::UnsupportedMCode, "M73 modal state restored at the sub's end"}},
         {"toplevel", {E::UnsupportedMCode, "M70 modal state save"}},
-        {"offsets", {E::ReadOnlyParameter, "assignment to #5599 (writable in LinuxCNC)"}},
-        {"smartprobe", {E::ReadOnlyParameter, "assignment to #5070 (writable in LinuxCNC)"}},
+        {"smartprobe",
+         {E::ReadOnlyParameter, "#5070=1 to loop until the probe trips: needs "
+                                "the probe's real result"}},
         {"retval", {E::ReturnOutsideSub, "return at the top level"}},
         {"systems", {E::UnsupportedGCode, "G5.1 quadratic spline"}},
     };
