@@ -206,6 +206,12 @@ constexpr ErrorInfo kErrors[] = {
     {ErrorCode::CompMissingD, "CompMissingD",
      QT_TRANSLATE_NOOP("frezka::gcode", "%1 needs D, the diameter of the tool"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Write the tool's diameter in D, e.g. %1 D6.")},
+    {ErrorCode::PolarNotAllowed, "PolarNotAllowed",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Polar coordinates (@ radius, ^ angle) cannot be used here (%1)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Use @ and ^ only in the XY plane (G17), without X and Y words and without "
+                       "G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).")},
     {ErrorCode::ZeroFeedRate, "ZeroFeedRate",
      QT_TRANSLATE_NOOP("frezka::gcode", "%1 with zero feed rate"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Set a feed rate with F before the first feed move.")},

@@ -64,6 +64,7 @@ enum class ErrorCode : std::uint16_t {
     CompAlreadyOn = 226,
     CompNotAllowed = 227,
     CompMissingD = 228,
+    PolarNotAllowed = 229,
     // Motion (3xx)
     ZeroFeedRate = 300,
     InverseTimeFeedMissing = 301,

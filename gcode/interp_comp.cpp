@@ -204,7 +204,8 @@ bool Interpreter::compInsideCorner(double beta, double theta, double gamma, doub
                      error);
 }
 
-// rs274ngc's convert_straight_comp1 (entry move) and convert_straight_comp2.
+// rs274ngc's convert_straight_comp1 (entry move) and convert_straight_comp2, kept whole (a little
+// over 60 lines) so that it reads side by side with them.
 bool Interpreter::compStraight(int motion, const Target &target, Error *error)
 {
     const Axes ax = compAxes(m_plane);

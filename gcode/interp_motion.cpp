@@ -95,6 +95,8 @@ Interpreter::Target Interpreter::targetOf(bool machineCoords) const
             axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
         }
     }
+    if (m_block.hasPolar() && !machineCoords)
+        polarTarget(&t);
     return t;
 }
 
@@ -113,6 +115,9 @@ bool Interpreter::executeMotion(int motion, Error *error)
 {
     const bool g53 = m_block.hasG(kGNonModal) && m_block.g[kGNonModal] == 530;
     bool ok = true;
+    m_motionNext = motion;
+    if (m_block.hasPolar() && !polarCheck(error))
+        return false;
     if (motion != 0)
         checkFeedUnits();
     if (motion == 0 || motion == 10)
@@ -231,7 +236,7 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
             return failAt(ErrorCode::ArcMissingAbsoluteCentre, col, std::string(1, missing - 32),
                           error);
         }
-    } else if (!b.has(kAxisLetters[ax.u]) && !b.has(kAxisLetters[ax.v])) {
+    } else if (!b.has(kAxisLetters[ax.u]) && !b.has(kAxisLetters[ax.v]) && !b.hasPolar()) {
         return fail(ErrorCode::ArcMissingEndWords, 'r', {}, error);
     }
     int turns = 1;
@@ -430,6 +435,12 @@ bool Interpreter::cycle(int motion, Error *error)
         cc = ccWord;
         aa = b.has(uc) ? lengthWord(uc) : axisOf(prog, ax.u);
         bb = b.has(vc) ? lengthWord(vc) : axisOf(prog, ax.v);
+        if (b.hasPolar()) { // G17 only (polarCheck)
+            Target t{m_pos, prog};
+            polarTarget(&t);
+            aa = t.prog.x;
+            bb = t.prog.y;
+        }
     } else {
         aaInc = b.has(uc) ? lengthWord(uc) : 0.0;
         bbInc = b.has(vc) ? lengthWord(vc) : 0.0;
@@ -451,6 +462,8 @@ bool Interpreter::cycle(int motion, Error *error)
     for (int n = 0; n < repeats; ++n) {
         aa += aaInc;
         bb += bbInc;
+        if (!m_absolute && b.hasPolar() && !cyclePolarStep(&aa, &bb, error))
+            return false;
         if (n == 0 && currentCc > r) {
             cycleTraverse(m_plane, aa, bb, currentCc);
             cycleTraverse(m_plane, aa, bb, r);

@@ -268,7 +268,7 @@ void Interpreter::adoptTarget()
 
 int Interpreter::motionToBe(Error *error)
 {
-    const bool axes = m_block.letters & kAxisBits;
+    const bool axes = (m_block.letters & kAxisBits) || m_block.hasPolar();
     const int mode0 = m_block.hasG(kGNonModal) ? m_block.g[kGNonModal] : -1;
     const int mode1 = m_block.hasG(kGMotion) ? m_block.g[kGMotion] : -1;
     // G43.1/G43.2 take axis words as offsets; as in rs274ngc a motion or G92 in the same block
@@ -302,6 +302,12 @@ int Interpreter::motionToBe(Error *error)
         return -1;
     }
     if (axes && !toolAxes) {
+        if (m_motion == 800 && !(m_block.letters & kAxisBits)) { // only @ or ^
+            const int word = m_block.hasWord(Block::kRadius) ? Block::kRadius : Block::kAngle;
+            failAt(ErrorCode::AxisWordsWithoutMotion, m_block.column[word],
+                   word == Block::kRadius ? "@" : "^", error);
+            return -2;
+        }
         if (m_motion == 800) {
             const char first = m_block.has('x')   ? 'x'
                                : m_block.has('y') ? 'y'

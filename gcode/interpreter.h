@@ -158,6 +158,9 @@ private:
     };
     Target targetOf(bool machineCoords) const;
     void moveTo(const Target &target);
+    void polarTarget(Target *target) const; // @ and ^ (LinuxCNC's polar coordinates)
+    bool polarCheck(Error *error) const;
+    bool cyclePolarStep(double *aa, double *bb, Error *error) const;
     bool straight(int motion, const Target &end, Error *error);
     bool arc(int motion, const Target &end, Error *error);
     bool arcCentreIjk(double su, double sv, double eu, double ev, std::uint32_t col, double *cu,
@@ -276,8 +279,9 @@ private:
     ToolTable m_tools;                      // Options::toolTable as the program changes it
     bool m_toolsStrict = false;             // a table was given: tools must be in it
     bool m_toolsChanged = false;
-    int m_coord = 0;    // 0 = G54 .. 8 = G59.3
-    int m_motion = 800; // 10 x G code of the motion mode
+    int m_coord = 0;        // 0 = G54 .. 8 = G59.3
+    int m_motion = 800;     // 10 x G code of the motion mode
+    int m_motionNext = 800; // the motion the block is about to execute (polarCheck)
     int m_plane = 170;
     bool m_absolute = true;
     bool m_arcAbsolute = false;

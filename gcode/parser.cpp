@@ -195,6 +195,20 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
             block.letters |= bit;
             block.value[c - 'a'] = v;
             block.column[c - 'a'] = static_cast<std::uint32_t>(at);
+        } else if (c == '@' || c == '^') { // LinuxCNC's polar radius and angle
+            const std::size_t at = m_pos;
+            const int index = c == '@' ? Block::kRadius : Block::kAngle;
+            if (block.hasWord(index))
+                return fail(ErrorCode::RepeatedWord, at, std::string(1, c), error);
+            ++m_pos;
+            double v = 0;
+            if (!readRealValue(&v, error))
+                return false;
+            if (!(std::fabs(v) < 1e12))
+                return fail(ErrorCode::ValueOutOfRange, at, std::string(1, c), error);
+            block.letters |= 1u << index;
+            block.value[index] = v;
+            block.column[index] = static_cast<std::uint32_t>(at);
         } else if (c == '/' && m_pos + 1 < n && m_text[m_pos + 1] == '/') {
             return fail(ErrorCode::SlashComment, m_pos, {}, error);
         } else {

@@ -2425,6 +2425,14 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>Enter the tool&apos;s diameter in Machine &gt; Tool table; as it is, the tool follows the programmed path, off the part&apos;s contour by its radius.</source>
         <translation>Zadejte průměr nástroje v Stroj &gt; Tabulka nástrojů; takto nástroj jede po programované dráze, mimo obrys dílu o svůj poloměr.</translation>
     </message>
+    <message>
+        <source>Polar coordinates (@ radius, ^ angle) cannot be used here (%1)</source>
+        <translation>Polární souřadnice (@ poloměr, ^ úhel) zde nelze použít (%1)</translation>
+    </message>
+    <message>
+        <source>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</source>
+        <translation>Používejte @ a ^ jen v rovině XY (G17), bez slov X a Y a bez G53; v bodě X0 Y0 zadejte úhel ^ spolu s absolutním poloměrem @ (G90).</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

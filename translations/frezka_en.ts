@@ -2422,6 +2422,14 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <source>Enter the tool&apos;s diameter in Machine &gt; Tool table; as it is, the tool follows the programmed path, off the part&apos;s contour by its radius.</source>
         <translation>Enter the tool&apos;s diameter in Machine &gt; Tool table; as it is, the tool follows the programmed path, off the part&apos;s contour by its radius.</translation>
     </message>
+    <message>
+        <source>Polar coordinates (@ radius, ^ angle) cannot be used here (%1)</source>
+        <translation>Polar coordinates (@ radius, ^ angle) cannot be used here (%1)</translation>
+    </message>
+    <message>
+        <source>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</source>
+        <translation>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

@@ -402,3 +402,29 @@ TEST(Interpreter, ParameterWritesAsLinuxCncAllows)
         EXPECT_EQ(bad.errors[0].code, ErrorCode::ReadOnlyParameter) << text;
     }
 }
+
+// Polar coordinates are refused where LinuxCNC refuses them, naming what is in the way.
+TEST(Interpreter, PolarCoordinatesOnlyWhereLinuxCncTakesThem)
+{
+    struct Case
+    {
+        const char *text, *detail;
+        std::uint32_t column;
+    };
+    const Case cases[] = {
+        {"G18 G0 @1 ^30\nM2\n", "G18", 8}, {"G0 X1 @2\nM2\n", "X", 7},
+        {"G53 G0 ^30\nM2\n", "G53", 8},    {"G0 @5\nM2\n", "X0 Y0", 4},
+        {"G91 G0 ^10\nM2\n", "X0 Y0", 8},
+    };
+    for (const Case &c : cases) {
+        const Result r = run(c.text);
+        ASSERT_EQ(r.errors.size(), 1u) << c.text;
+        EXPECT_EQ(r.errors[0].code, ErrorCode::PolarNotAllowed) << c.text;
+        EXPECT_EQ(r.errors[0].detail, c.detail) << c.text;
+        EXPECT_EQ(r.errors[0].column, c.column) << c.text;
+    }
+    const Result ok = run("G0 @2 ^90\nM2\n");
+    ASSERT_TRUE(ok.ok());
+    EXPECT_NEAR(ok.toolpath.end(0).x, 0, 1e-12);
+    EXPECT_NEAR(ok.toolpath.end(0).y, 2, 1e-12);
+}
