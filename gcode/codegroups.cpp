@@ -69,6 +69,10 @@ int gGroup(int code10, bool *supported, const char **reason)
     case 210:
         return kGUnits;
     case 400:
+    case 410:
+    case 411:
+    case 420:
+    case 421:
         return kGCutterComp;
     case 430:
     case 431:
@@ -125,11 +129,6 @@ int gGroup(int code10, bool *supported, const char **reason)
     case 181:
     case 191:
         return refuse(kGPlane, "UVW plane");
-    case 410:
-    case 411:
-    case 420:
-    case 421:
-        return refuse(kGCutterComp, "cutter radius compensation");
     case 520:
         return refuse(kGNonModal, "local coordinate offset");
     case 950:

@@ -159,12 +159,12 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "Values must be finite and below 1e12 in size; check the expression.")},
     {ErrorCode::CutterCompensation, "CutterCompensation",
-     QT_TRANSLATE_NOOP("frezka::gcode", "%1: cutter radius compensation is not supported yet"),
      QT_TRANSLATE_NOOP("frezka::gcode",
-                       "Post the program again from the CAM with the compensation computed there "
-                       "(the path already offset by the tool radius, no G41/G42 and no D). "
-                       "Deleting G41/G42 alone would leave the cut off its path by the tool "
-                       "radius.")},
+                       "%1 with tool %2, a lathe tool (orientation %3): the compensation of a "
+                       "lathe tool's nose radius is not supported"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Give a mill tool orientation 0 in Machine > Tool table, or post the "
+                       "program again from the CAM with the compensation computed there.")},
     {ErrorCode::ToolNotInTable, "ToolNotInTable",
      QT_TRANSLATE_NOOP("frezka::gcode", "Tool %1 is not in the tool table"),
      QT_TRANSLATE_NOOP("frezka::gcode",
@@ -190,6 +190,28 @@ constexpr ErrorInfo kErrors[] = {
                        "Frezka has no spindle-synchronised tapping (the GVE units have no spindle "
                        "encoder): tap with a floating tap holder or by hand, and post the program "
                        "without M29 and G84.")},
+    {ErrorCode::CompPlane, "CompPlane",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "%1: cutter radius compensation works only in the XY (G17) and XZ (G18) "
+                       "planes"),
+     QT_TRANSLATE_NOOP("frezka::gcode", "Select G17 or G18 before turning the compensation on.")},
+    {ErrorCode::CompAlreadyOn, "CompAlreadyOn",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 while cutter radius compensation is already on"),
+     QT_TRANSLATE_NOOP("frezka::gcode", "Turn it off with G40 first, as LinuxCNC requires.")},
+    {ErrorCode::CompNotAllowed, "CompNotAllowed",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 is not allowed while cutter radius compensation is on"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Turn the compensation off with G40 before this block and on again after "
+                       "it, as LinuxCNC requires.")},
+    {ErrorCode::CompMissingD, "CompMissingD",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 needs D, the diameter of the tool"),
+     QT_TRANSLATE_NOOP("frezka::gcode", "Write the tool's diameter in D, e.g. %1 D6.")},
+    {ErrorCode::PolarNotAllowed, "PolarNotAllowed",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Polar coordinates (@ radius, ^ angle) cannot be used here (%1)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Use @ and ^ only in the XY plane (G17), without X and Y words and without "
+                       "G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).")},
     {ErrorCode::ZeroFeedRate, "ZeroFeedRate",
      QT_TRANSLATE_NOOP("frezka::gcode", "%1 with zero feed rate"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Set a feed rate with F before the first feed move.")},
@@ -261,6 +283,30 @@ constexpr ErrorInfo kErrors[] = {
     {ErrorCode::CycleInverseTime, "CycleInverseTime",
      QT_TRANSLATE_NOOP("frezka::gcode", "Canned cycle in inverse time mode (G93)"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Switch to G94 before a canned cycle.")},
+    {ErrorCode::CompEntryTooShort, "CompEntryTooShort",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "The move that starts the cutter radius compensation is not longer than "
+                       "the tool radius (%1)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Start the compensation from a point farther from the path than the tool "
+                       "radius, e.g. with a lead-in move from outside the part.")},
+    {ErrorCode::CompToolTooBig, "CompToolTooBig",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "The tool radius (%1) is not smaller than the radius of this arc, which "
+                       "the tool follows on its inside"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Use a smaller tool (D), or make the arc larger than the tool.")},
+    {ErrorCode::CompGouge, "CompGouge",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "The compensated tool (radius %1) cannot reach this corner without "
+                       "cutting into the part"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Use a smaller tool, or change the path so that the tool fits into the "
+                       "inside corner (LinuxCNC refuses it too).")},
+    {ErrorCode::CompArcAfterExit, "CompArcAfterExit",
+     QT_TRANSLATE_NOOP("frezka::gcode", "The move just after G40 must be straight, not an arc"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Add a straight move (G0 or G1) after G40, before the arc.")},
     {ErrorCode::UnclosedBracket, "UnclosedBracket",
      QT_TRANSLATE_NOOP("frezka::gcode", "Expression is not closed"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Add the missing ']'.")},
@@ -353,6 +399,12 @@ constexpr ErrorInfo kErrors[] = {
                        "G4 P%1 dwells %1 seconds (%2), as in LinuxCNC; if the post meant "
                        "milliseconds (as Mach3 and UCCNC can), that is %3 s"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Frezka reads P in seconds; write P%3 if %3 s was meant.")},
+    {ErrorCode::CompZeroRadius, "CompZeroRadius",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "%1 with tool %2, whose diameter is 0: the path is not compensated"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Enter the tool's diameter in Machine > Tool table; as it is, the tool "
+                       "follows the programmed path, off the part's contour by its radius.")},
     {ErrorCode::IgnoredArcWord, "IgnoredArcWord",
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "%1 has no effect on an arc in the %2 plane and is ignored"),
@@ -405,85 +457,6 @@ Severity severity(ErrorCode code)
 {
     const int n = static_cast<int>(code);
     return n >= 700 ? Severity::Note : n >= 600 ? Severity::Warning : Severity::Error;
-}
-
-namespace {
-
-// Replaces %1..%9 in one pass (a value that contains "%2" is not filled again).
-char16_t charAt(const std::string &s, std::size_t i)
-{
-    return static_cast<unsigned char>(s[i]);
-}
-
-char16_t charAt(const QString &s, std::size_t i)
-{
-    return s.at(static_cast<qsizetype>(i)).unicode();
-}
-
-template<typename Str, typename Parts>
-Str fillArgs(const Str &text, const Parts &parts)
-{
-    Str out;
-    const auto n = static_cast<std::size_t>(text.size());
-    for (std::size_t i = 0; i < n; ++i) {
-        const char16_t next = i + 1 < n ? charAt(text, i + 1) : 0;
-        if (charAt(text, i) == '%' && next >= '1' && next <= '9') {
-            const auto k = static_cast<std::size_t>(next - '1');
-            if (k < static_cast<std::size_t>(parts.size())) {
-                out += parts[static_cast<decltype(parts.size())>(k)];
-                ++i;
-                continue;
-            }
-        }
-        out += text[static_cast<decltype(text.size())>(i)];
-    }
-    return out;
-}
-
-std::vector<std::string> detailParts(const std::string &detail)
-{
-    std::vector<std::string> parts;
-    std::size_t start = 0;
-    for (;;) {
-        const std::size_t end = detail.find(kDetailSeparator, start);
-        parts.push_back(detail.substr(start, end - start));
-        if (end == std::string::npos)
-            return parts;
-        start = end + 1;
-    }
-}
-
-} // namespace
-
-std::string englishMessage(const Error &error)
-{
-    const std::vector<std::string> parts = detailParts(error.detail);
-    std::string text = fillArgs(std::string(errorTemplate(error.code)), parts);
-    text += ". ";
-    text += fillArgs(std::string(errorHint(error.code)), parts);
-    return text;
-}
-
-QString translatedMessage(const Error &error)
-{
-    const QString text = QCoreApplication::translate("frezka::gcode", errorTemplate(error.code));
-    QStringList parts;
-    for (const std::string &p : detailParts(error.detail))
-        parts << QString::fromStdString(p);
-    return fillArgs(text, parts) + QStringLiteral(". ") +
-           fillArgs(QCoreApplication::translate("frezka::gcode", errorHint(error.code)), parts);
-}
-
-QString formatError(const QString &file, const Error &error)
-{
-    QString message = translatedMessage(error);
-    if (severity(error.code) == Severity::Warning)
-        message = QCoreApplication::translate("frezka::gcode", "warning: ") + message;
-    else if (severity(error.code) == Severity::Note)
-        message = QCoreApplication::translate("frezka::gcode", "note: ") + message;
-    if (error.line == 0)
-        return QStringLiteral("%1: %2").arg(file, message);
-    return QStringLiteral("%1:%2:%3: %4").arg(file).arg(error.line).arg(error.column).arg(message);
 }
 
 } // namespace frezka::gcode

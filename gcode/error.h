@@ -60,6 +60,11 @@ enum class ErrorCode : std::uint16_t {
     ToolOffsetWords = 222,
     G10L1NoOffsets = 223,
     ToolNumberMissing = 224,
+    CompPlane = 225,
+    CompAlreadyOn = 226,
+    CompNotAllowed = 227,
+    CompMissingD = 228,
+    PolarNotAllowed = 229,
     // Motion (3xx)
     ZeroFeedRate = 300,
     InverseTimeFeedMissing = 301,
@@ -83,6 +88,10 @@ enum class ErrorCode : std::uint16_t {
     CycleBadQ = 325,
     CycleBadL = 326,
     CycleInverseTime = 327,
+    CompEntryTooShort = 330,
+    CompToolTooBig = 331,
+    CompGouge = 332,
+    CompArcAfterExit = 333,
     // Expressions and parameters (4xx)
     UnclosedBracket = 400,
     UnknownOperator = 401,
@@ -110,6 +119,7 @@ enum class ErrorCode : std::uint16_t {
     FeedUnitsChanged = 600,
     ImpliedProgramEnd = 601,
     DwellLooksLikeMilliseconds = 602,
+    CompZeroRadius = 603,
     // Notes (7xx): a word of another dialect with no effect was accepted.
     IgnoredArcWord = 700,
 };

@@ -76,6 +76,11 @@ void Interpreter::markBefore()
             return;
         }
     }
+    if (m_comp.on()) { // the compensated path depends on the moves before the line
+        m_mark.refusal = LineMarkRefusal::InCutterComp;
+        m_mark.refLine = m_comp.onLine;
+        return;
+    }
     m_mark.line = m_line;
     m_mark.entry = m_toolpath.size();
     m_mark.state = lineState();

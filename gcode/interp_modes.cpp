@@ -118,6 +118,8 @@ bool Interpreter::executeModes(Error *error)
 bool Interpreter::executeModalGroups(Error *error)
 {
     const Block &b = m_block;
+    if (b.hasG(kGPlane) && m_comp.on() && b.g[kGPlane] != m_plane)
+        return failAt(ErrorCode::CompNotAllowed, b.gColumn[kGPlane], gName(b.g[kGPlane]), error);
     if (b.hasG(kGPlane))
         m_plane = b.g[kGPlane];
     if (b.hasG(kGUnits) && m_metric != (b.g[kGUnits] == 210)) {
@@ -125,6 +127,10 @@ bool Interpreter::executeModalGroups(Error *error)
         m_unitsLine = m_line;
         m_unitsColumn = m_parser.columnAt(b.gColumn[kGUnits]);
     }
+    if (b.hasG(kGCutterComp) && !(b.g[kGCutterComp] == 400 ? compOff(error) : compOn(error)))
+        return false;
+    if (!compAllows(error))
+        return false;
     if (b.hasG(kGToolLength) && !toolLengthOffset(error))
         return false;
     if (b.hasG(kGCoordSystem)) {
@@ -251,11 +257,14 @@ bool Interpreter::homeMove(bool g30, Error *error)
     return true;
 }
 
-bool Interpreter::executeStops()
+bool Interpreter::executeStops(Error *error)
 {
     if (!m_block.hasM(kMStop))
         return true;
     const int m = m_block.m[kMStop];
+    // The queued move ends where it is; M2 and M30 turn the compensation off.
+    if (!compFlushHere(error) || ((m == 2 || m == 30) && !compOff(error)))
+        return false;
     if (m == 0) {
         event(EventKind::Pause);
     } else if (m == 1) {

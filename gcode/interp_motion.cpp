@@ -95,6 +95,8 @@ Interpreter::Target Interpreter::targetOf(bool machineCoords) const
             axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
         }
     }
+    if (m_block.hasPolar() && !machineCoords)
+        polarTarget(&t);
     return t;
 }
 
@@ -113,6 +115,9 @@ bool Interpreter::executeMotion(int motion, Error *error)
 {
     const bool g53 = m_block.hasG(kGNonModal) && m_block.g[kGNonModal] == 530;
     bool ok = true;
+    m_motionNext = motion;
+    if (m_block.hasPolar() && !polarCheck(error))
+        return false;
     if (motion != 0)
         checkFeedUnits();
     if (motion == 0 || motion == 10)
@@ -134,15 +139,18 @@ bool Interpreter::straight(int motion, const Target &target, Error *error)
 {
     const Point4 &end = target.machine;
     const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
+    m_comp.arcNotAllowed = false;
+    if (motion == 10 && m_inverseTime && !m_block.has('f'))
+        return failAt(ErrorCode::InverseTimeFeedMissing, col, "G1", error);
+    if (motion == 10 && !m_inverseTime && m_feed == 0)
+        return failAt(ErrorCode::ZeroFeedRate, col, "G1", error);
+    if (m_comp.active())
+        return compStraight(motion, target, error);
     if (motion == 0) {
         m_toolpath.appendRapid(end, feedMm(), m_line);
         moveTo(target);
         return true;
     }
-    if (m_inverseTime && !m_block.has('f'))
-        return failAt(ErrorCode::InverseTimeFeedMissing, col, "G1", error);
-    if (!m_inverseTime && m_feed == 0)
-        return failAt(ErrorCode::ZeroFeedRate, col, "G1", error);
     const double length =
         std::sqrt((end.x - m_pos.x) * (end.x - m_pos.x) + (end.y - m_pos.y) * (end.y - m_pos.y) +
                   (end.z - m_pos.z) * (end.z - m_pos.z));
@@ -205,6 +213,8 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
     const bool ijk = b.has('i') || b.has('j') || b.has('k');
     const bool rForm = b.has('r');
     const PlaneAxes ax = planeAxes(m_plane);
+    if (m_comp.arcNotAllowed)
+        return failAt(ErrorCode::CompArcAfterExit, col, {}, error);
     if (!rForm && !ijk)
         return failAt(ErrorCode::ArcMissingCentre, col, {}, error);
     if (rForm && ijk)
@@ -226,7 +236,7 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
             return failAt(ErrorCode::ArcMissingAbsoluteCentre, col, std::string(1, missing - 32),
                           error);
         }
-    } else if (!b.has(kAxisLetters[ax.u]) && !b.has(kAxisLetters[ax.v])) {
+    } else if (!b.has(kAxisLetters[ax.u]) && !b.has(kAxisLetters[ax.v]) && !b.hasPolar()) {
         return fail(ErrorCode::ArcMissingEndWords, 'r', {}, error);
     }
     int turns = 1;
@@ -237,6 +247,8 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
             return fail(ErrorCode::ArcBadTurns, 'p', fmt4(p), error);
         turns = static_cast<int>(rounded);
     }
+    if (m_comp.active())
+        return compArc(motion, target, turns, error);
 
     // Program coordinates in the plane.
     const double su = axisOf(m_prog, ax.u), sv = axisOf(m_prog, ax.v);
@@ -266,6 +278,8 @@ bool Interpreter::probe(int motion, const Target &target, Error *error)
 {
     const Point4 &end = target.machine;
     const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion] : 0;
+    if (m_comp.on())
+        return failAt(ErrorCode::CompNotAllowed, col, gName(motion), error);
     if (m_inverseTime)
         return failAt(ErrorCode::ProbeInverseTime, col, {}, error);
     if (m_feed == 0)
@@ -352,6 +366,8 @@ bool Interpreter::cycleWords(int motion, CycleWords *w, Error *error) const
     const std::uint32_t col = b.hasG(kGMotion) ? b.gColumn[kGMotion] : 0;
     const std::string name = gName(motion);
     const char wc = kAxisLetters[planeAxes(m_plane).w];
+    if (m_comp.on())
+        return failAt(ErrorCode::CompNotAllowed, col, name, error);
     if (m_inverseTime)
         return failAt(ErrorCode::CycleInverseTime, col, {}, error);
     if (m_feed == 0)
@@ -419,6 +435,12 @@ bool Interpreter::cycle(int motion, Error *error)
         cc = ccWord;
         aa = b.has(uc) ? lengthWord(uc) : axisOf(prog, ax.u);
         bb = b.has(vc) ? lengthWord(vc) : axisOf(prog, ax.v);
+        if (b.hasPolar()) { // G17 only (polarCheck)
+            Target t{m_pos, prog};
+            polarTarget(&t);
+            aa = t.prog.x;
+            bb = t.prog.y;
+        }
     } else {
         aaInc = b.has(uc) ? lengthWord(uc) : 0.0;
         bbInc = b.has(vc) ? lengthWord(vc) : 0.0;
@@ -440,6 +462,8 @@ bool Interpreter::cycle(int motion, Error *error)
     for (int n = 0; n < repeats; ++n) {
         aa += aaInc;
         bb += bbInc;
+        if (!m_absolute && b.hasPolar() && !cyclePolarStep(&aa, &bb, error))
+            return false;
         if (n == 0 && currentCc > r) {
             cycleTraverse(m_plane, aa, bb, currentCc);
             cycleTraverse(m_plane, aa, bb, r);

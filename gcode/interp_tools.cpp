@@ -63,6 +63,15 @@ bool Interpreter::selectTool(Error *error)
     if (!b.hasM(kMToolChange))
         return true;
     if (b.m[kMToolChange] == 6) {
+        if (m_comp.on())
+            return failAt(ErrorCode::CompNotAllowed, b.mColumn[kMToolChange], "M6", error);
+        // rs274ngc reads the position back after a tool change: after G40 the programmed point
+        // (where the next move would have started) gives way to where the tool is.
+        if (!(m_pos == m_toolpath.last())) {
+            m_pos = m_toolpath.last();
+            m_prog = {m_pos.x - offset(0), m_pos.y - offset(1), m_pos.z - offset(2),
+                      m_pos.a - offset(3)};
+        }
         m_tool = m_selectedTool;
         event(EventKind::ToolChange, m_tool);
         return true;

@@ -268,7 +268,7 @@ void Interpreter::adoptTarget()
 
 int Interpreter::motionToBe(Error *error)
 {
-    const bool axes = m_block.letters & kAxisBits;
+    const bool axes = (m_block.letters & kAxisBits) || m_block.hasPolar();
     const int mode0 = m_block.hasG(kGNonModal) ? m_block.g[kGNonModal] : -1;
     const int mode1 = m_block.hasG(kGMotion) ? m_block.g[kGMotion] : -1;
     // G43.1/G43.2 take axis words as offsets; as in rs274ngc a motion or G92 in the same block
@@ -302,6 +302,12 @@ int Interpreter::motionToBe(Error *error)
         return -1;
     }
     if (axes && !toolAxes) {
+        if (m_motion == 800 && !(m_block.letters & kAxisBits)) { // only @ or ^
+            const int word = m_block.hasWord(Block::kRadius) ? Block::kRadius : Block::kAngle;
+            failAt(ErrorCode::AxisWordsWithoutMotion, m_block.column[word],
+                   word == Block::kRadius ? "@" : "^", error);
+            return -2;
+        }
         if (m_motion == 800) {
             const char first = m_block.has('x')   ? 'x'
                                : m_block.has('y') ? 'y'
@@ -347,6 +353,8 @@ bool Interpreter::checkWords(int motion, Error *error)
         return unused('q');
     if (m_block.has('h') && mode8 != 430 && mode8 != 432)
         return unused('h');
+    if (m_block.has('d') && !(m_block.hasG(kGCutterComp) && m_block.g[kGCutterComp] != 400))
+        return unused('d');
     if (m_block.has('a') && cycleMove)
         return unused('a');
     if (m_block.hasG(kGNonModal) && m_block.g[kGNonModal] == 530) {
@@ -386,7 +394,7 @@ bool Interpreter::executeBlock(Error *error)
         m_motion = 800;
         m_cycleIlValid = false;
     }
-    return executeStops();
+    return executeStops(error);
 }
 
 // ---- entry points --------------------------------------------------------------------------

@@ -13,6 +13,7 @@
 // machine minus (work offset + G92 offset + tool length on Z). Every value read in G20 is
 // converted to mm on entry.
 
+#include "gcode/cuttercomp.h"
 #include "gcode/error.h"
 #include "gcode/linestate.h"
 #include "gcode/parameters.h"
@@ -130,7 +131,7 @@ private:
     bool executeModes(Error *error);       // G93/G94 F S T M6 M3-M5 M7-M9 G4
     bool executeModalGroups(Error *error); // plane .. retract mode
     bool executeNonModal(Error *error);
-    bool executeStops();
+    bool executeStops(Error *error);
     bool setOffsets(Error *error);
     // Tools (interp_tools.cpp).
     bool findTool(int tool, char word, ToolEntry *entry, Error *error) const;
@@ -157,6 +158,9 @@ private:
     };
     Target targetOf(bool machineCoords) const;
     void moveTo(const Target &target);
+    void polarTarget(Target *target) const; // @ and ^ (LinuxCNC's polar coordinates)
+    bool polarCheck(Error *error) const;
+    bool cyclePolarStep(double *aa, double *bb, Error *error) const;
     bool straight(int motion, const Target &end, Error *error);
     bool arc(int motion, const Target &end, Error *error);
     bool arcCentreIjk(double su, double sv, double eu, double ev, std::uint32_t col, double *cu,
@@ -177,6 +181,26 @@ private:
                    double dwell, double peck);
     double feedFor(double lengthMm) const;
     void event(EventKind kind, double value = 0, double p = 0, double q = 0);
+
+    // Cutter radius compensation (interp_comp.cpp).
+    bool compOn(Error *error);                        // G41 G42 G41.1 G42.1
+    bool compOff(Error *error);                       // G40 (also M2/M30)
+    bool compAllows(Error *error) const;              // the block's codes while it is on
+    bool compFlush(double u, double v, Error *error); // the queued moves end at (u, v)
+    bool compFlushHere(Error *error);                 // ... where the tool is (M0, G40)
+    bool compStraight(int motion, const Target &target, Error *error);
+    void compCorner(int motion, double ou, double ov, double mu, double mv, const Point4 &end);
+    bool compArcNext(int motion, const Target &target, int turns, Error *error);
+    bool compInsideCorner(double beta, double theta, double gamma, double pu, double pv, double ou,
+                          double ov, Error *error);
+    bool compArc(int motion, const Target &target, int turns, Error *error);
+    bool compArcFirst(int motion, const Target &target, int turns, Error *error);
+    bool compArcCorner(double beta, double theta, double cu, double cv, double arcRadius, int turn,
+                       Error *error);
+    void compEnqueue(MotionKind kind, const Point4 &end, double feed, double du, double dv,
+                     const ArcInfo *arc, double originalTurns);
+    // The plane's (u, v) in program coordinates, w and a in machine coordinates: the machine point.
+    Point4 compPoint(double u, double v, double w, double a) const;
 
     // O-words (interp_oword.cpp).
     bool executeOword(Error *error);
@@ -255,8 +279,9 @@ private:
     ToolTable m_tools;                      // Options::toolTable as the program changes it
     bool m_toolsStrict = false;             // a table was given: tools must be in it
     bool m_toolsChanged = false;
-    int m_coord = 0;    // 0 = G54 .. 8 = G59.3
-    int m_motion = 800; // 10 x G code of the motion mode
+    int m_coord = 0;        // 0 = G54 .. 8 = G59.3
+    int m_motion = 800;     // 10 x G code of the motion mode
+    int m_motionNext = 800; // the motion the block is about to execute (polarCheck)
     int m_plane = 170;
     bool m_absolute = true;
     bool m_arcAbsolute = false;
@@ -287,6 +312,9 @@ private:
     LineMarkRefusal m_skipRefusal = LineMarkRefusal::None;
     std::uint32_t m_skipLine = 0, m_callLine = 0;
     std::string m_skipLabel, m_callLabel;
+    // Cutter radius compensation; while it moves the path, m_pos is the tool's (compensated)
+    // position and m_prog the programmed point (rs274ngc's current_x and program_x).
+    CutterComp m_comp;
     Point4 m_probe; // #5061.. (program coordinates, mm)
     bool m_probed = false;
 };

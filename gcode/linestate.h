@@ -54,6 +54,7 @@ enum class LineMarkRefusal : std::uint8_t {
     InCall,       // run only by a call (refLine: the call's line at the top level)
     InLoop,       // inside a loop (refLine: the loop's opening line)
     NotTaken,     // in a branch or loop body the program skips (refLine: the O line skipping it)
+    InCutterComp, // cutter radius compensation is on there (refLine: its G41/G42 line)
 };
 
 struct LineMark

@@ -35,7 +35,13 @@ public:
     // Value of #index; numbers out of range are rejected by the caller.
     double numbered(int index) const;
     void setNumbered(int index, double value) { m_numbered[index] = value; }
-    bool isReadOnly(int index) const { return index >= kFirstSystem || index == 0; }
+    // LinuxCNC lets programs write #5599 (its switch for (DEBUG,...) and (PRINT,...) output,
+    // which Frezka treats as comments); the other system values stay read-only here (LinuxCNC
+    // lets programs write most of them, e.g. #5070, the probe result).
+    bool isReadOnly(int index) const
+    {
+        return (index >= kFirstSystem && index != 5599) || index == 0;
+    }
 
     // Named parameters; the name is lower case without the brackets. Names starting with '_'
     // are global, the others local to the current subroutine call.

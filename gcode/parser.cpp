@@ -168,7 +168,7 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
                             c == 'n' ? "N (line numbers go first)" : "O (O-words go first)", error);
             if (c == 'b' || c == 'c' || c == 'u' || c == 'v' || c == 'w')
                 return fail(ErrorCode::UnsupportedAxis, at, std::string(1, c - 32), error);
-            if (c == 'd' || c == 'e') {
+            if (c == 'e') {
                 if (m_skipUnsupported) {
                     ++m_pos;
                     double ignored = 0;
@@ -176,8 +176,6 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
                         return false;
                     continue;
                 }
-                if (c == 'd') // only cutter radius compensation uses D
-                    return fail(ErrorCode::CutterCompensation, at, "D", error);
                 return fail(ErrorCode::UnsupportedWord, at, std::string(1, c - 32), error);
             }
             const std::uint32_t bit = 1u << (c - 'a');
@@ -197,6 +195,20 @@ bool Parser::parse(Block &block, std::vector<Assignment> &assignments, Error *er
             block.letters |= bit;
             block.value[c - 'a'] = v;
             block.column[c - 'a'] = static_cast<std::uint32_t>(at);
+        } else if (c == '@' || c == '^') { // LinuxCNC's polar radius and angle
+            const std::size_t at = m_pos;
+            const int index = c == '@' ? Block::kRadius : Block::kAngle;
+            if (block.hasWord(index))
+                return fail(ErrorCode::RepeatedWord, at, std::string(1, c), error);
+            ++m_pos;
+            double v = 0;
+            if (!readRealValue(&v, error))
+                return false;
+            if (!(std::fabs(v) < 1e12))
+                return fail(ErrorCode::ValueOutOfRange, at, std::string(1, c), error);
+            block.letters |= 1u << index;
+            block.value[index] = v;
+            block.column[index] = static_cast<std::uint32_t>(at);
         } else if (c == '/' && m_pos + 1 < n && m_text[m_pos + 1] == '/') {
             return fail(ErrorCode::SlashComment, m_pos, {}, error);
         } else {
@@ -242,8 +254,6 @@ bool Parser::readGCode(Block &block, Error *error)
         return fail(ErrorCode::UnknownGCode, at, gName(code), error);
     if (!supported && m_skipUnsupported)
         return true;
-    if (!supported && group == kGCutterComp)
-        return fail(ErrorCode::CutterCompensation, at, gName(code), error);
     if (!supported)
         return fail(ErrorCode::UnsupportedGCode, at, gName(code) + " (" + reason + ")", error);
     if (block.hasG(group)) {

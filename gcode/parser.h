@@ -79,9 +79,11 @@ struct Block
     // Letter words other than G, M, N, O: bit (c - 'a') set when present. Word positions
     // (column[], gColumn[], mColumn[], oColumn) are offsets into the normalized line;
     // Parser::columnAt() turns them into source columns when an error is reported.
+    // LinuxCNC's polar coordinates take the two bits after the letters: @ radius, ^ angle.
+    static constexpr int kRadius = 26, kAngle = 27;
     std::uint32_t letters = 0;
-    double value[26];
-    std::uint32_t column[26];
+    double value[28];
+    std::uint32_t column[28];
     // G codes as 10 x the number (G38.2 -> 382), one per modal group; -1 when absent.
     std::int16_t g[kGGroupCount];
     std::uint32_t gColumn[kGGroupCount];
@@ -100,6 +102,8 @@ struct Block
     bool has(char c) const { return letters & (1u << (c - 'a')); }
     double get(char c) const { return value[c - 'a']; }
     std::uint32_t col(char c) const { return column[c - 'a']; }
+    bool hasPolar() const { return letters & (3u << kRadius); }
+    bool hasWord(int index) const { return letters & (1u << index); }
     bool hasG(int group) const { return gMask & (1u << group); }
     bool hasM(int group) const { return mMask & (1u << group); }
 };

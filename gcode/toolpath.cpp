@@ -77,6 +77,14 @@ void Toolpath::appendEvent(const Event &event, double feedMmPerMin, std::uint32_
          feedMmPerMin, line, static_cast<std::uint32_t>(m_events.size() - 1));
 }
 
+void Toolpath::setEnd(std::size_t i, const Point4 &end)
+{
+    m_x[i] = end.x;
+    m_y[i] = end.y;
+    m_z[i] = end.z;
+    m_a[i] = end.a;
+}
+
 void Toolpath::appendEntries(const Toolpath &from, std::size_t first)
 {
     reserve(size() + (from.size() > first ? from.size() - first : 0));

@@ -109,6 +109,10 @@ public:
     // program's rest after an approach that ends where from.start(first) is).
     void appendEntries(const Toolpath &from, std::size_t first);
 
+    // Moves the end of entry i (cutter radius compensation moves the end of a queued move once
+    // the next move is known); an arc keeps its centre.
+    void setEnd(std::size_t i, const Point4 &end);
+
     // Position after the last entry (origin() when empty).
     Point4 last() const { return empty() ? m_origin : end(size() - 1); }
     // Bytes held by the storage (capacity), for the memory benchmark.

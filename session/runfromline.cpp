@@ -57,6 +57,12 @@ QString refusalText(const gcode::LineMark &mark)
             .arg(mark.askedLine)
             .arg(label)
             .arg(mark.refLine);
+    case gcode::LineMarkRefusal::InCutterComp:
+        return RunFromLine::tr("line %1 is in a path with cutter radius compensation, turned on "
+                               "on line %2: where the tool runs there depends on the moves "
+                               "before. Choose line %2 or a line before it, or a line after G40.")
+            .arg(mark.askedLine)
+            .arg(mark.refLine);
     case gcode::LineMarkRefusal::None:
         break;
     }

@@ -308,6 +308,10 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>Line %1: %2; the approach crosses at Z %3 (machine) and comes down at the feed to X %4 Y %5 Z %6 (machine).</source>
         <translation>Řádek %1: %2; najetí přejíždí ve výšce Z %3 (strojně) a posuvem sjede na X %4 Y %5 Z %6 (strojně).</translation>
     </message>
+    <message>
+        <source>line %1 is in a path with cutter radius compensation, turned on on line %2: where the tool runs there depends on the moves before. Choose line %2 or a line before it, or a line after G40.</source>
+        <translation>řádek %1 leží v dráze s korekcí poloměru nástroje zapnutou na řádku %2: kudy tam nástroj pojede, závisí na předchozích pohybech. Zvolte řádek %2 nebo řádek před ním, nebo řádek za G40.</translation>
+    </message>
 </context>
 <context>
     <name>SerialTransport</name>
@@ -2273,10 +2277,6 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>Home the machine from Frezka (Home all) before starting the program, and delete this line.</source>
         <translation>Před spuštěním programu najeďte strojem do reference z Frezky (Reference všech os) a tento řádek smažte.</translation>
     </message>
-    <message>
-        <source>%1: cutter radius compensation is not supported yet</source>
-        <translation>%1: korekce poloměru nástroje zatím není podporována</translation>
-    </message>
     <message numerus="yes">
         <source>%1: %n more error(s) not shown</source>
         <translation>
@@ -2284,10 +2284,6 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
             <numerusform>%1: %n další chyby nezobrazeny</numerusform>
             <numerusform>%1: %n dalších chyb nezobrazeno</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</source>
-        <translation>Vygenerujte program z CAM znovu s korekcí spočtenou v CAM (dráha už posunutá o poloměr nástroje, bez G41/G42 a bez D). Pouhé smazání G41/G42 by posunulo řez mimo dráhu o poloměr nástroje.</translation>
     </message>
     <message>
         <source>Cannot write the file %1: %2</source>
@@ -2348,6 +2344,94 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Write the number of a tool of the tool table, e.g. M61 Q3 or G10 L1 P3 Z25.</source>
         <translation>Napište číslo nástroje z tabulky nástrojů, např. M61 Q3 nebo G10 L1 P3 Z25.</translation>
+    </message>
+    <message>
+        <source>%1 with tool %2, a lathe tool (orientation %3): the compensation of a lathe tool&apos;s nose radius is not supported</source>
+        <translation>%1 s nástrojem %2, soustružnickým nožem (orientace %3): korekce poloměru špičky soustružnického nože není podporována</translation>
+    </message>
+    <message>
+        <source>Give a mill tool orientation 0 in Machine &gt; Tool table, or post the program again from the CAM with the compensation computed there.</source>
+        <translation>Frézovacímu nástroji dejte v Stroj &gt; Tabulka nástrojů orientaci 0, nebo vygenerujte program z CAM znovu s korekcí spočtenou v CAM.</translation>
+    </message>
+    <message>
+        <source>%1: cutter radius compensation works only in the XY (G17) and XZ (G18) planes</source>
+        <translation>%1: korekce poloměru nástroje funguje jen v rovinách XY (G17) a XZ (G18)</translation>
+    </message>
+    <message>
+        <source>Select G17 or G18 before turning the compensation on.</source>
+        <translation>Před zapnutím korekce zvolte G17 nebo G18.</translation>
+    </message>
+    <message>
+        <source>%1 while cutter radius compensation is already on</source>
+        <translation>%1, když je korekce poloměru nástroje už zapnutá</translation>
+    </message>
+    <message>
+        <source>Turn it off with G40 first, as LinuxCNC requires.</source>
+        <translation>Nejdřív ji vypněte pomocí G40, jak to vyžaduje i LinuxCNC.</translation>
+    </message>
+    <message>
+        <source>%1 is not allowed while cutter radius compensation is on</source>
+        <translation>%1 není povoleno, dokud je zapnutá korekce poloměru nástroje</translation>
+    </message>
+    <message>
+        <source>Turn the compensation off with G40 before this block and on again after it, as LinuxCNC requires.</source>
+        <translation>Před tímto blokem korekci vypněte pomocí G40 a po něm ji znovu zapněte, jak to vyžaduje i LinuxCNC.</translation>
+    </message>
+    <message>
+        <source>%1 needs D, the diameter of the tool</source>
+        <translation>%1 potřebuje D, průměr nástroje</translation>
+    </message>
+    <message>
+        <source>Write the tool&apos;s diameter in D, e.g. %1 D6.</source>
+        <translation>Zadejte průměr nástroje v D, např. %1 D6.</translation>
+    </message>
+    <message>
+        <source>The move that starts the cutter radius compensation is not longer than the tool radius (%1)</source>
+        <translation>Pohyb, kterým začíná korekce poloměru nástroje, není delší než poloměr nástroje (%1)</translation>
+    </message>
+    <message>
+        <source>Start the compensation from a point farther from the path than the tool radius, e.g. with a lead-in move from outside the part.</source>
+        <translation>Začněte korekci z bodu, který je od dráhy dál než poloměr nástroje, např. nájezdem zvenku obrobku.</translation>
+    </message>
+    <message>
+        <source>The tool radius (%1) is not smaller than the radius of this arc, which the tool follows on its inside</source>
+        <translation>Poloměr nástroje (%1) není menší než poloměr tohoto oblouku, po jehož vnitřní straně nástroj jede</translation>
+    </message>
+    <message>
+        <source>Use a smaller tool (D), or make the arc larger than the tool.</source>
+        <translation>Použijte menší nástroj (D), nebo zvětšete oblouk nad velikost nástroje.</translation>
+    </message>
+    <message>
+        <source>The compensated tool (radius %1) cannot reach this corner without cutting into the part</source>
+        <translation>Nástroj s korekcí (poloměr %1) nedosáhne do tohoto rohu, aniž by zařízl do obrobku</translation>
+    </message>
+    <message>
+        <source>Use a smaller tool, or change the path so that the tool fits into the inside corner (LinuxCNC refuses it too).</source>
+        <translation>Použijte menší nástroj, nebo upravte dráhu tak, aby se nástroj do vnitřního rohu vešel (LinuxCNC to také odmítne).</translation>
+    </message>
+    <message>
+        <source>The move just after G40 must be straight, not an arc</source>
+        <translation>Pohyb hned po G40 musí být přímý, ne oblouk</translation>
+    </message>
+    <message>
+        <source>Add a straight move (G0 or G1) after G40, before the arc.</source>
+        <translation>Za G40 a před oblouk vložte přímý pohyb (G0 nebo G1).</translation>
+    </message>
+    <message>
+        <source>%1 with tool %2, whose diameter is 0: the path is not compensated</source>
+        <translation>%1 s nástrojem %2, který má průměr 0: dráha se nekoriguje</translation>
+    </message>
+    <message>
+        <source>Enter the tool&apos;s diameter in Machine &gt; Tool table; as it is, the tool follows the programmed path, off the part&apos;s contour by its radius.</source>
+        <translation>Zadejte průměr nástroje v Stroj &gt; Tabulka nástrojů; takto nástroj jede po programované dráze, mimo obrys dílu o svůj poloměr.</translation>
+    </message>
+    <message>
+        <source>Polar coordinates (@ radius, ^ angle) cannot be used here (%1)</source>
+        <translation>Polární souřadnice (@ poloměr, ^ úhel) zde nelze použít (%1)</translation>
+    </message>
+    <message>
+        <source>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</source>
+        <translation>Používejte @ a ^ jen v rovině XY (G17), bez slov X a Y a bez G53; v bodě X0 Y0 zadejte úhel ^ spolu s absolutním poloměrem @ (G90).</translation>
     </message>
 </context>
 <context>

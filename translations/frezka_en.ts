@@ -308,6 +308,10 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>Line %1: %2; the approach crosses at Z %3 (machine) and comes down at the feed to X %4 Y %5 Z %6 (machine).</source>
         <translation>Line %1: %2; the approach crosses at Z %3 (machine) and comes down at the feed to X %4 Y %5 Z %6 (machine).</translation>
     </message>
+    <message>
+        <source>line %1 is in a path with cutter radius compensation, turned on on line %2: where the tool runs there depends on the moves before. Choose line %2 or a line before it, or a line after G40.</source>
+        <translation>line %1 is in a path with cutter radius compensation, turned on on line %2: where the tool runs there depends on the moves before. Choose line %2 or a line before it, or a line after G40.</translation>
+    </message>
 </context>
 <context>
     <name>SerialTransport</name>
@@ -2271,20 +2275,12 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <source>Home the machine from Frezka (Home all) before starting the program, and delete this line.</source>
         <translation>Home the machine from Frezka (Home all) before starting the program, and delete this line.</translation>
     </message>
-    <message>
-        <source>%1: cutter radius compensation is not supported yet</source>
-        <translation>%1: cutter radius compensation is not supported yet</translation>
-    </message>
     <message numerus="yes">
         <source>%1: %n more error(s) not shown</source>
         <translation>
             <numerusform>%1: %n more error not shown</numerusform>
             <numerusform>%1: %n more errors not shown</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</source>
-        <translation>Post the program again from the CAM with the compensation computed there (the path already offset by the tool radius, no G41/G42 and no D). Deleting G41/G42 alone would leave the cut off its path by the tool radius.</translation>
     </message>
     <message>
         <source>Cannot write the file %1: %2</source>
@@ -2345,6 +2341,94 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Write the number of a tool of the tool table, e.g. M61 Q3 or G10 L1 P3 Z25.</source>
         <translation>Write the number of a tool of the tool table, e.g. M61 Q3 or G10 L1 P3 Z25.</translation>
+    </message>
+    <message>
+        <source>%1 with tool %2, a lathe tool (orientation %3): the compensation of a lathe tool&apos;s nose radius is not supported</source>
+        <translation>%1 with tool %2, a lathe tool (orientation %3): the compensation of a lathe tool&apos;s nose radius is not supported</translation>
+    </message>
+    <message>
+        <source>Give a mill tool orientation 0 in Machine &gt; Tool table, or post the program again from the CAM with the compensation computed there.</source>
+        <translation>Give a mill tool orientation 0 in Machine &gt; Tool table, or post the program again from the CAM with the compensation computed there.</translation>
+    </message>
+    <message>
+        <source>%1: cutter radius compensation works only in the XY (G17) and XZ (G18) planes</source>
+        <translation>%1: cutter radius compensation works only in the XY (G17) and XZ (G18) planes</translation>
+    </message>
+    <message>
+        <source>Select G17 or G18 before turning the compensation on.</source>
+        <translation>Select G17 or G18 before turning the compensation on.</translation>
+    </message>
+    <message>
+        <source>%1 while cutter radius compensation is already on</source>
+        <translation>%1 while cutter radius compensation is already on</translation>
+    </message>
+    <message>
+        <source>Turn it off with G40 first, as LinuxCNC requires.</source>
+        <translation>Turn it off with G40 first, as LinuxCNC requires.</translation>
+    </message>
+    <message>
+        <source>%1 is not allowed while cutter radius compensation is on</source>
+        <translation>%1 is not allowed while cutter radius compensation is on</translation>
+    </message>
+    <message>
+        <source>Turn the compensation off with G40 before this block and on again after it, as LinuxCNC requires.</source>
+        <translation>Turn the compensation off with G40 before this block and on again after it, as LinuxCNC requires.</translation>
+    </message>
+    <message>
+        <source>%1 needs D, the diameter of the tool</source>
+        <translation>%1 needs D, the diameter of the tool</translation>
+    </message>
+    <message>
+        <source>Write the tool&apos;s diameter in D, e.g. %1 D6.</source>
+        <translation>Write the tool&apos;s diameter in D, e.g. %1 D6.</translation>
+    </message>
+    <message>
+        <source>The move that starts the cutter radius compensation is not longer than the tool radius (%1)</source>
+        <translation>The move that starts the cutter radius compensation is not longer than the tool radius (%1)</translation>
+    </message>
+    <message>
+        <source>Start the compensation from a point farther from the path than the tool radius, e.g. with a lead-in move from outside the part.</source>
+        <translation>Start the compensation from a point farther from the path than the tool radius, e.g. with a lead-in move from outside the part.</translation>
+    </message>
+    <message>
+        <source>The tool radius (%1) is not smaller than the radius of this arc, which the tool follows on its inside</source>
+        <translation>The tool radius (%1) is not smaller than the radius of this arc, which the tool follows on its inside</translation>
+    </message>
+    <message>
+        <source>Use a smaller tool (D), or make the arc larger than the tool.</source>
+        <translation>Use a smaller tool (D), or make the arc larger than the tool.</translation>
+    </message>
+    <message>
+        <source>The compensated tool (radius %1) cannot reach this corner without cutting into the part</source>
+        <translation>The compensated tool (radius %1) cannot reach this corner without cutting into the part</translation>
+    </message>
+    <message>
+        <source>Use a smaller tool, or change the path so that the tool fits into the inside corner (LinuxCNC refuses it too).</source>
+        <translation>Use a smaller tool, or change the path so that the tool fits into the inside corner (LinuxCNC refuses it too).</translation>
+    </message>
+    <message>
+        <source>The move just after G40 must be straight, not an arc</source>
+        <translation>The move just after G40 must be straight, not an arc</translation>
+    </message>
+    <message>
+        <source>Add a straight move (G0 or G1) after G40, before the arc.</source>
+        <translation>Add a straight move (G0 or G1) after G40, before the arc.</translation>
+    </message>
+    <message>
+        <source>%1 with tool %2, whose diameter is 0: the path is not compensated</source>
+        <translation>%1 with tool %2, whose diameter is 0: the path is not compensated</translation>
+    </message>
+    <message>
+        <source>Enter the tool&apos;s diameter in Machine &gt; Tool table; as it is, the tool follows the programmed path, off the part&apos;s contour by its radius.</source>
+        <translation>Enter the tool&apos;s diameter in Machine &gt; Tool table; as it is, the tool follows the programmed path, off the part&apos;s contour by its radius.</translation>
+    </message>
+    <message>
+        <source>Polar coordinates (@ radius, ^ angle) cannot be used here (%1)</source>
+        <translation>Polar coordinates (@ radius, ^ angle) cannot be used here (%1)</translation>
+    </message>
+    <message>
+        <source>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</source>
+        <translation>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</translation>
     </message>
 </context>
 <context>

@@ -31,9 +31,9 @@ TEST(Interpreter, StraightMovesAndArcInMachineCoordinates)
 
 TEST(Interpreter, FirstErrorStopsWithLineAndColumn)
 {
-    const Result r = run("G0 X1\nG1 X2 F10 G41\nG0 X3\nM2\n");
+    const Result r = run("G0 X1\nG1 X2 F10 G95\nG0 X3\nM2\n");
     ASSERT_EQ(r.errors.size(), 1u);
-    EXPECT_EQ(r.errors[0].code, ErrorCode::CutterCompensation);
+    EXPECT_EQ(r.errors[0].code, ErrorCode::UnsupportedGCode);
     EXPECT_EQ(r.errors[0].line, 2u);
     EXPECT_EQ(r.errors[0].column, 11u);
 }
@@ -50,11 +50,11 @@ TEST(Interpreter, CheckModeCollectsEveryError)
 {
     Options options;
     options.collectAllErrors = true;
-    const Result r = interpretText("G21 F100\nG1 X1 Q2\nG0 X1\nG2 X5 Y0 R1\nG0 G41 X1\n", options);
+    const Result r = interpretText("G21 F100\nG1 X1 Q2\nG0 X1\nG2 X5 Y0 R1\nG0 G95 X1\n", options);
     ASSERT_EQ(r.errors.size(), 3u); // three bad blocks (the missing end is a warning)
     EXPECT_EQ(r.errors[0].code, ErrorCode::WordNotUsed);
     EXPECT_EQ(r.errors[1].code, ErrorCode::ArcRadiusTooSmall);
-    EXPECT_EQ(r.errors[2].code, ErrorCode::CutterCompensation);
+    EXPECT_EQ(r.errors[2].code, ErrorCode::UnsupportedGCode);
     EXPECT_EQ(r.errors[2].line, 5u);
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_EQ(r.warnings[0].code, ErrorCode::ImpliedProgramEnd);
@@ -307,17 +307,17 @@ TEST(Interpreter, DwellThatLooksLikeMillisecondsGivesAWarning)
               "write P4 if 4 s was meant.");
 }
 
-// After an unsupported G41 line the arcs that follow are checked from the point the program
-// meant, not from where the skipped block left off: one error, not one per arc.
+// After a line with an unsupported code (G96) the arcs that follow are checked from the point the
+// program meant, not from where the skipped block left off: one error, not one per arc.
 TEST(Interpreter, NoFollowOnErrorsAfterASkippedBlock)
 {
     Options options;
     options.collectAllErrors = true;
-    const char *text = "G21 G90 F100\nG0 X0 Y0\nG41 D3 G1 X10 Y0\nG2 X20 Y0 I5 J0\n"
-                       "G3 X10 Y0 I-5 J0\nG40 G1 X0\nM2\n";
+    const char *text = "G21 G90 F100\nG0 X0 Y0\nG96 S100 G1 X10 Y0\nG2 X20 Y0 I5 J0\n"
+                       "G3 X10 Y0 I-5 J0\nG1 X0\nM2\n";
     const Result r = interpretText(text, options);
-    ASSERT_EQ(r.errors.size(), 1u) << englishMessage(r.errors.back());
-    EXPECT_EQ(r.errors[0].code, ErrorCode::CutterCompensation);
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].code, ErrorCode::UnsupportedGCode);
     EXPECT_EQ(r.errors[0].line, 3u);
     // An arc that fails still sets G2 and its end point: the next arc block (axis and centre
     // words only) is read as an arc from there.
@@ -359,15 +359,72 @@ TEST(Interpreter, ErrorsBeyondTheLimitAreCounted)
     EXPECT_EQ(r.errors[2].line, 3u);
 }
 
-// The advice for G41/G42 keeps the part safe: deleting them alone would cut off the path.
-TEST(Interpreter, CutterCompensationAdviceKeepsThePartSafe)
+// G41/G42 with a tool of diameter 0 (no table, or not measured) leave the path uncompensated:
+// the user is told, with what to do; a lathe tool's nose radius is refused with advice that keeps
+// the part safe.
+TEST(Interpreter, CutterCompensationWithoutADiameterWarns)
 {
-    for (const char *text : {"G42 G1 X1 F10\nM2\n", "G1 X1 D2 F10\nM2\n", "G41.1 D4\nM2\n"}) {
-        const Result r = run(text);
-        ASSERT_EQ(r.errors.size(), 1u) << text;
-        EXPECT_EQ(r.errors[0].code, ErrorCode::CutterCompensation) << text;
-        const std::string m = englishMessage(r.errors[0]);
-        EXPECT_NE(m.find("Post the program again from the CAM"), std::string::npos) << m;
-        EXPECT_EQ(m.find("Remove it"), std::string::npos) << m;
+    const Result r = run("G42 G1 X1 F10\nM2\n");
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_EQ(r.warnings[0].code, ErrorCode::CompZeroRadius);
+    EXPECT_EQ(r.warnings[0].column, 1u);
+    EXPECT_EQ(r.toolpath.end(0), (Point4{1, 0, 0, 0})); // not compensated
+    const std::string m = englishMessage(r.warnings[0]);
+    EXPECT_NE(m.find("Tool table"), std::string::npos) << m;
+
+    Options options;
+    ToolTable table;
+    ToolEntry lathe;
+    lathe.tool = 2;
+    lathe.diameterMm = 0.8;
+    lathe.orientation = 3;
+    table.tools.push_back(lathe);
+    options.toolTable = table;
+    const Result l = interpretText("G18 G42 D2 G1 X1 F10\nM2\n", options);
+    ASSERT_EQ(l.errors.size(), 1u);
+    EXPECT_EQ(l.errors[0].code, ErrorCode::CutterCompensation);
+    const std::string advice = englishMessage(l.errors[0]);
+    EXPECT_NE(advice.find("post the program again from the CAM"), std::string::npos) << advice;
+    EXPECT_EQ(advice.find("Remove it"), std::string::npos) << advice;
+}
+
+// #5599 (LinuxCNC's switch for DEBUG/PRINT output, set by its example offsets.ngc) may be
+// written; the tool and position parameters stay read-only, as in LinuxCNC.
+TEST(Interpreter, ParameterWritesAsLinuxCncAllows)
+{
+    const Result r = run("#5599 = 1\nG0 X#5599\nM2\n");
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    EXPECT_EQ(r.toolpath.end(0).x, 1);
+    for (const char *text : {"#5400 = 1\nM2\n", "#5420 = 1\nM2\n"}) {
+        const Result bad = run(text);
+        ASSERT_EQ(bad.errors.size(), 1u) << text;
+        EXPECT_EQ(bad.errors[0].code, ErrorCode::ReadOnlyParameter) << text;
     }
+}
+
+// Polar coordinates are refused where LinuxCNC refuses them, naming what is in the way.
+TEST(Interpreter, PolarCoordinatesOnlyWhereLinuxCncTakesThem)
+{
+    struct Case
+    {
+        const char *text, *detail;
+        std::uint32_t column;
+    };
+    const Case cases[] = {
+        {"G18 G0 @1 ^30\nM2\n", "G18", 8}, {"G0 X1 @2\nM2\n", "X", 7},
+        {"G53 G0 ^30\nM2\n", "G53", 8},    {"G0 @5\nM2\n", "X0 Y0", 4},
+        {"G91 G0 ^10\nM2\n", "X0 Y0", 8},
+    };
+    for (const Case &c : cases) {
+        const Result r = run(c.text);
+        ASSERT_EQ(r.errors.size(), 1u) << c.text;
+        EXPECT_EQ(r.errors[0].code, ErrorCode::PolarNotAllowed) << c.text;
+        EXPECT_EQ(r.errors[0].detail, c.detail) << c.text;
+        EXPECT_EQ(r.errors[0].column, c.column) << c.text;
+    }
+    const Result ok = run("G0 @2 ^90\nM2\n");
+    ASSERT_TRUE(ok.ok());
+    EXPECT_NEAR(ok.toolpath.end(0).x, 0, 1e-12);
+    EXPECT_NEAR(ok.toolpath.end(0).y, 2, 1e-12);
 }

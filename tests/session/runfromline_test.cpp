@@ -247,6 +247,8 @@ TEST(RunFromLine, LinesThatDoNotRunOnceAreRefusedWithTheLineToChoose)
     expectRefused("G21 G90 F100\n#1=0\no100 while [#1 LT 2]\nG1 X#1\n#1=[#1+1]\no100 endwhile\n"
                   "M2\n",
                   4, R::InLoop, 3, "Choose line 3");
+    expectRefused("G21 G90 F100\nG0 X-10\nG42.1 D4 G1 X0 Y0\nG1 X20\nG1 Y20\nG40 G1 X30\nM2\n", 5,
+                  R::InCutterComp, 3, "cutter radius compensation");
     expectRefused("G21 G90 F100\no101 repeat [2]\nG91 G1 X1\no101 endrepeat\nM2\n", 3, R::InLoop, 2,
                   "loop o101");
     expectRefused("o200 sub\nG1 X5\no200 endsub\nG21 G90 F100\no200 call\nM2\n", 2, R::InSubroutine,

@@ -1,0 +1,10 @@
+; expect: CompGouge 8:1
+; rs274: error
+G21 G90 F300
+G0 X-20 Y0
+G41 D1 G1 X0 Y0
+G1 X30
+G1 Y6
+G1 X0
+G40 G1 X-20
+M2

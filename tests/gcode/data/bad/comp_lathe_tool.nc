@@ -1,0 +1,5 @@
+; expect: CutterCompensation 4:1
+; rs274: error
+G21 G90 F100
+G41 D2 G1 X20 Y0
+M2

@@ -1,0 +1,192 @@
+// LinuxCNC's own example programs (tests/gcode/data/linuxcnc: copies of the Debian package
+// linuxcnc-uspace's /usr/share/linuxcnc/ncfiles, see the README there) against `rs274 -t
+// tools.tbl -g`, motion for motion: every program gives the same motions, feeds, dwells and
+// spindle speeds as rs274, or is refused by Frezka with the error listed here, never run along
+// another path.
+#include "rs274.h"
+
+#include "gcode/interpreter.h"
+
+#include <gtest/gtest.h>
+
+#include <QTemporaryDir>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace frezka::gcode;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kDir = fs::path(FREZKA_GCODE_DATA_DIR) / "linuxcnc";
+
+struct Refusal
+{
+    ErrorCode code; // Frezka's first error
+    const char *why;
+};
+
+// The examples Frezka refuses, with the reason (each a clear error, never a wrong path).
+const std::map<std::string, Refusal> &refused()
+{
+    using E = ErrorCode;
+    static const std::map<std::string, Refusal> kRefused = {
+        // Lathe, threading, spindle-synchronised and B-axis programs (the GVE units drive X Y Z
+        // and A and have no spindle encoder).
+        {"b-index", {E::UnsupportedAxis, "axis B"}},
+        {"g76", {E::CompEntryTooShort, "lathe program; rs274 refuses the same line"}},
+        {"lathe-g76", {E::CompEntryTooShort, "lathe program; rs274 refuses the same line"}},
+        {"lathe_g70_71_demo", {E::UnsupportedGCode, "lathe cycle G71.1"}},
+        {"lathe_g7x_face_boring", {E::UnsupportedGCode, "lathe cycle G72"}},
+        {"lathe_g7x_quadrants", {E::UnsupportedGCode, "lathe cycle G70"}},
+        {"lathe_pawn", {E::UnsupportedGCode, "lathe diameter mode G8"}},
+        {"lathecomp", {E::CompEntryTooShort, "lathe program; rs274 refuses the same line"}},
+        {"threading", {E::UnsupportedGCode, "threading G33"}},
+        {"mmount", {E::UnsupportedGCode, "rigid tapping G33.1 (its G41 parts run)"}},
+        // Refused by rs274 itself (standalone, without the example's INI or subroutine files).
+        {"cone", {E::UnsupportedAxis, "axes B and W (rs274: bad character 'w')"}},
+        {"nestedcall", {E::OwordWithOtherWords, "'O<g20sub> callsub' (rs274 refuses it too)"}},
+        {"tool-length-probe", {E::ProbeNoMotion, "a probe from its end point (rs274 too)"}},
+        {"x-trim", {E::SubroutineUndefined, "o<touchoff> from a subroutine file (rs274 too)"}},
+        // LinuxCNC dialect Frezka does not read yet (issue 15, item 3).
+        {"m70m72-demo", {E::UnsupportedMCode, "M70/M72 modal state save and restore"}},
+        {"m73-demo", {E::UnsupportedMCode, "M73 modal state restored at the sub's end"}},
+        {"toplevel", {E::UnsupportedMCode, "M70 modal state save"}},
+        {"smartprobe",
+         {E::ReadOnlyParameter, "#5070=1 to loop until the probe trips: needs "
+                                "the probe's real result"}},
+        {"retval", {E::ReturnOutsideSub, "return at the top level"}},
+        {"systems", {E::UnsupportedGCode, "G5.1 quadratic spline"}},
+    };
+    return kRefused;
+}
+
+// Programs rs274 is given in an edited copy, and why: where LinuxCNC and Frezka differ on
+// purpose (each a text replacement in the rs274 copy).
+struct Edit
+{
+    const char *from, *to, *why;
+};
+
+const std::map<std::string, Edit> &edits()
+{
+    static const std::map<std::string, Edit> kEdits = {
+        // LinuxCNC leaves the spindle stopped after M6 until the next M3; Frezka's driver starts
+        // it again after the operator's tool change (docs/gcode.md).
+        {"gmoccapy_2_tools_with_cutter_radius_compensation",
+         {"T1 M6\n", "T1 M6 M3\n", "the spindle after M6"}},
+        // Standalone rs274 reads the position back after M6 before the G43 of the same line
+        // and moves Z by the tool length; LinuxCNC on a machine (and Frezka) keep the tool
+        // where it is. The two lines give the same path in rs274.
+        {"skeleton", {"T1 M06 G43 H1", "T1 M06\nG43 H1", "G43 on the M6 line"}},
+    };
+    return kEdits;
+}
+
+std::string readText(const fs::path &path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::vector<std::string> programs()
+{
+    std::vector<std::string> names;
+    for (const auto &e : fs::directory_iterator(kDir)) {
+        if (e.path().extension() == ".nc")
+            names.push_back(e.path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// NAME.tbl beside the program when it names its own tools, else tools.tbl (mm).
+ToolTable toolsFor(const std::string &name)
+{
+    fs::path tbl = kDir / (name + ".tbl");
+    if (!fs::exists(tbl))
+        tbl = kDir / "tools.tbl";
+    ToolTable table;
+    Error error;
+    EXPECT_TRUE(readToolTableFile(tbl.string(), &table, &error, false))
+        << tbl << ":" << error.line << ": " << englishMessage(error);
+    return table;
+}
+
+class LinuxCncExample : public testing::TestWithParam<std::string>
+{
+};
+
+std::string testName(const testing::TestParamInfo<std::string> &info)
+{
+    std::string s = info.param;
+    std::replace_if(
+        s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
+        '_');
+    return s;
+}
+
+} // namespace
+
+TEST_P(LinuxCncExample, MatchesRs274OrIsRefusedAsListed)
+{
+    const fs::path nc = kDir / (GetParam() + ".nc");
+    const ToolTable table = toolsFor(GetParam());
+    const auto it = refused().find(GetParam());
+    if (it == refused().end()) {
+        if (test::rs274Path().empty())
+            GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
+        const auto edit = edits().find(GetParam());
+        if (edit == edits().end()) {
+            EXPECT_TRUE(test::matchesRs274(nc.string(), {}, &table));
+            return;
+        }
+        std::string text = readText(nc);
+        const auto at = text.find(edit->second.from);
+        ASSERT_NE(at, std::string::npos) << edit->second.why;
+        text.replace(at, std::strlen(edit->second.from), edit->second.to);
+        QTemporaryDir dir;
+        const std::string copy = dir.filePath(QStringLiteral("edited.ngc")).toStdString();
+        std::ofstream(copy, std::ios::binary) << text;
+        EXPECT_TRUE(test::matchesRs274(nc.string(), copy, &table)) << edit->second.why;
+        return;
+    }
+    Options options;
+    options.toolTable = table;
+    const Result r = interpretFile(nc.string(), options);
+    ASSERT_FALSE(r.ok()) << "listed as refused (" << it->second.why << ") but accepted";
+    EXPECT_EQ(errorName(r.errors[0].code), std::string(errorName(it->second.code)))
+        << r.errors[0].line << ":" << r.errors[0].column << ": " << englishMessage(r.errors[0]);
+    EXPECT_FALSE(translatedMessage(r.errors[0]).isEmpty());
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, LinuxCncExample, testing::ValuesIn(programs()), testName);
+
+// The count the issue's "Done when" asks for: at least 36 of the examples that are not lathe,
+// threading, spindle-synchronised or B-axis programs give rs274's motions.
+TEST(LinuxCncExamples, EnoughMatchRs274)
+{
+    const std::vector<std::string> all = programs();
+    std::size_t excluded = 0, refusedHere = 0;
+    for (const auto &[name, refusal] : refused()) {
+        ASSERT_NE(std::find(all.begin(), all.end(), name), all.end()) << name;
+        const std::string why = refusal.why;
+        if (why.find("lathe") != std::string::npos || why.find("thread") != std::string::npos ||
+            why.find("G33") != std::string::npos || why == "axis B")
+            ++excluded;
+        else
+            ++refusedHere;
+    }
+    const std::size_t mill = all.size() - excluded;
+    const std::size_t matched = mill - refusedHere;
+    RecordProperty("matched", static_cast<int>(matched));
+    RecordProperty("mill_programs", static_cast<int>(mill));
+    EXPECT_GE(matched, 36u) << matched << " of " << mill;
+}
