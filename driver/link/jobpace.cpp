@@ -160,9 +160,13 @@ int JobPace::overrideCeiling() const
         const double motion = m_timePrefix[e] - m_timePrefix[s];
         const double bytes =
             m_host.link().wireTime(static_cast<std::size_t>(m_bytePrefix[e] - m_bytePrefix[s]));
+        // Without packets every command waits for its own reply (property seed 13 ran one-step
+        // vectors at 160 % with a round trip per window, and the unit ran dry).
         const double wire =
-            bytes * (1 + 2 * m_host.rttS() / machine::detail::LinkTiming::kSteadyHeldS) +
-            m_host.rttS();
+            m_host.options().packets
+                ? bytes * (1 + 2 * m_host.rttS() / machine::detail::LinkTiming::kSteadyHeldS) +
+                      m_host.rttS()
+                : bytes + static_cast<double>(e - s) * m_host.rttS();
         ratio = std::min(ratio, motion / wire);
     }
     return std::clamp(static_cast<int>(std::floor(ratio * 100.0)), 100, kOverrideMaxPercent);
