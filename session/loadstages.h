@@ -39,5 +39,8 @@ private:
 double residentMb();
 double peakResidentMb();
 bool resetPeakResident();
+// Gives the memory the allocator holds free back to the system (glibc: malloc_trim), so that
+// a load's transient peak leaves no high-water mark behind; a no-op elsewhere.
+void returnFreeMemory();
 
 } // namespace frezka::session

@@ -178,6 +178,8 @@ bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
         progress->store(0);
         planLoaded(job, result, clock);
     }
+    returnFreeMemory(); // the plan's transient arrays, freed in this thread's arena
+    clock.done("return free memory");
     result.stages = clock.take();
     return !cancelFlag->load();
 }
@@ -307,6 +309,7 @@ void ProgramSession::finish(std::shared_ptr<LoadedProgram> result, QString failu
         return;
     }
     m_program = std::move(*result);
+    returnFreeMemory(); // what the program before held
     emit loadProgress(1.0, QString());
     emit loaded();
 }
