@@ -378,8 +378,32 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode", "%1 outside a subroutine"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Use return and endsub only inside a subroutine.")},
     {ErrorCode::TooManyBlocks, "TooManyBlocks",
-     QT_TRANSLATE_NOOP("frezka::gcode", "The program executes more than %1 blocks"),
-     QT_TRANSLATE_NOOP("frezka::gcode", "Check the loops; one of them may never end.")},
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "The program has executed %1 lines and has not ended; it was stopped here"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "If the program is really this long, raise the machine profile's "
+                       "program.maxLinesExecuted (Settings › Machine profile › Program).")},
+    {ErrorCode::TooManyMoves, "TooManyMoves",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "The program has made %1 moves and has not ended; it was stopped here"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "If the program really has more moves, raise the machine profile's "
+                       "program.maxMoves (Settings › Machine profile › Program); a million moves "
+                       "take about 50 MB of memory to check, more to plan and show.")},
+    {ErrorCode::LoopNeverEnds, "LoopNeverEnds",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "%3 has not ended after %1 lines executed (it was stopped at line %2)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Check what ends it (its condition, its count, the exit of a recursion); "
+                       "if it is meant to run this long, raise the machine profile's "
+                       "program.maxLinesExecuted (Settings › Machine profile › Program).")},
+    {ErrorCode::LoopMovesNeverEnd, "LoopMovesNeverEnd",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "%3 has not ended after %1 moves (it was stopped at line %2)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Check what ends it (its condition, its count, the exit of a recursion); "
+                       "if it is meant to make more moves, raise the machine profile's "
+                       "program.maxMoves (Settings › Machine profile › Program).")},
     {ErrorCode::FeedUnitsChanged, "FeedUnitsChanged",
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "F%1 was read in %2 (line %3) before this change of units: the feed moves "

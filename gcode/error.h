@@ -115,6 +115,9 @@ enum class ErrorCode : std::uint16_t {
     BreakOutsideLoop = 507,
     ReturnOutsideSub = 508,
     TooManyBlocks = 509,
+    TooManyMoves = 510,
+    LoopNeverEnds = 511,
+    LoopMovesNeverEnd = 512,
     // Warnings (6xx): the program runs as LinuxCNC runs it; the user should check it.
     FeedUnitsChanged = 600,
     ImpliedProgramEnd = 601,

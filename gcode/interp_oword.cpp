@@ -106,13 +106,14 @@ bool Interpreter::executeOword(Error *error)
         m_frames.pop_back();
         return true;
     case OKind::Do:
-        m_frames.push_back({FrameKind::Do, label, m_next, m_line, 0});
+        m_frames.push_back({FrameKind::Do, label, m_next, m_line, 0, oColumn()});
         return true;
     case OKind::While:
         return owordWhile(label, error);
     case OKind::EndWhile:
         if (!topIs(FrameKind::While))
             return failAt(ErrorCode::OwordUnmatched, col, what, error);
+        ++m_frames.back().turns;
         jump(m_frames.back().offset, m_frames.back().line);
         return true;
     case OKind::Repeat: {
@@ -122,15 +123,16 @@ bool Interpreter::executeOword(Error *error)
         const auto count = static_cast<std::int64_t>(std::floor(std::min(c, 1e15) + 0.5));
         if (count <= 0)
             return skipTo(label, {OKind::EndRepeat}, &found, error);
-        m_frames.push_back({FrameKind::Repeat, label, m_next, m_line, count});
+        m_frames.push_back({FrameKind::Repeat, label, m_next, m_line, count, oColumn()});
         return true;
     }
     case OKind::EndRepeat:
         if (!topIs(FrameKind::Repeat))
             return failAt(ErrorCode::OwordUnmatched, col, what, error);
-        if (--m_frames.back().remaining > 0)
+        if (--m_frames.back().remaining > 0) {
+            ++m_frames.back().turns;
             jump(m_frames.back().offset, m_frames.back().line);
-        else
+        } else
             m_frames.pop_back();
         return true;
     case OKind::Break:
@@ -172,9 +174,10 @@ bool Interpreter::owordWhile(const std::string &label, Error *error)
         return !m_frames.empty() && m_frames.back().kind == k && m_frames.back().label == label;
     };
     if (topIs(FrameKind::Do)) {
-        if (c != 0.0)
+        if (c != 0.0) {
+            ++m_frames.back().turns;
             jump(m_frames.back().offset, m_frames.back().line);
-        else
+        } else
             m_frames.pop_back();
         return true;
     }
@@ -186,7 +189,7 @@ bool Interpreter::owordWhile(const std::string &label, Error *error)
         return skipTo(label, {OKind::EndWhile}, &found, error);
     }
     if (!again)
-        m_frames.push_back({FrameKind::While, label, m_lineStart, m_line - 1, 0});
+        m_frames.push_back({FrameKind::While, label, m_lineStart, m_line - 1, 0, oColumn()});
     return true;
 }
 
@@ -225,7 +228,7 @@ bool Interpreter::callSub(Error *error)
     m_params.pushScope();
     for (int i = 0; i < Parameters::kArgCount; ++i)
         m_params.setNumbered(i + 1, i < static_cast<int>(m_args.size()) ? m_args[i] : 0.0);
-    m_frames.push_back({FrameKind::Call, label, m_next, m_line, 0});
+    m_frames.push_back({FrameKind::Call, label, m_next, m_line, 0, oColumn()});
     jump(it->second.offset, it->second.line);
     return true;
 }
@@ -276,11 +279,13 @@ bool Interpreter::loopJump(bool isBreak, Error *error)
             m_frames.pop_back();
             return skipTo(label, {OKind::EndWhile}, &found, error);
         }
+        ++loop.turns;
         jump(loop.offset, loop.line); // re-evaluates the condition
         return true;
     }
     if (loop.kind == FrameKind::Repeat) {
         if (!isBreak && --loop.remaining > 0) {
+            ++loop.turns;
             jump(loop.offset, loop.line);
             return true;
         }
@@ -295,6 +300,48 @@ bool Interpreter::loopJump(bool isBreak, Error *error)
         return true;
     }
     return executeOword(error);
+}
+
+// Which loop never ends is a guess, but a good one: the loop whose current run has turned most
+// (an endless outer loop keeps turning while the finite inner ones start afresh; an endless
+// inner loop keeps turning while the outer one waits). Without a loop that turns, a recursion:
+// the first call of a subroutine from inside itself. The error stands on that line, with the
+// line the program had reached.
+Error Interpreter::boundError(ErrorCode plain, ErrorCode inLoop, std::uint64_t bound) const
+{
+    const Frame *at = nullptr;
+    for (const Frame &f : m_frames) {
+        const bool loop =
+            f.kind == FrameKind::While || f.kind == FrameKind::Do || f.kind == FrameKind::Repeat;
+        if (loop && (!at || f.turns >= at->turns))
+            at = &f;
+    }
+    const auto recursive = [this](std::size_t i) {
+        return m_frames[i].kind == FrameKind::Call &&
+               std::any_of(m_frames.begin(), m_frames.begin() + std::ptrdiff_t(i),
+                           [&](const Frame &f) {
+                               return f.kind == FrameKind::Call && f.label == m_frames[i].label;
+                           });
+    };
+    bool turning = at && at->turns > 0;
+    for (std::size_t i = 0; !turning && i < m_frames.size(); ++i) {
+        if (recursive(i)) {
+            at = &m_frames[i];
+            turning = true;
+        }
+    }
+    const std::string limit = std::to_string(bound);
+    if (!at)
+        return {plain, m_line, 1, limit};
+    const OKind kind = at->kind == FrameKind::While  ? OKind::While
+                       : at->kind == FrameKind::Do   ? OKind::Do
+                       : at->kind == FrameKind::Call ? OKind::Call
+                                                     : OKind::Repeat;
+    // A while frame is kept at the line before its while line (the jump re-reads it).
+    const std::uint32_t line = at->kind == FrameKind::While ? at->line + 1 : at->line;
+    return {inLoop, line, at->column,
+            limit + kDetailSeparator + std::to_string(m_line) + kDetailSeparator +
+                labelText(at->label) + " " + okindName(kind)};
 }
 
 } // namespace frezka::gcode

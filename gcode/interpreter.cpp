@@ -112,6 +112,9 @@ void Interpreter::jump(std::size_t offset, std::uint32_t lineBefore)
     m_line = lineBefore;
 }
 
+// Long (about 95 lines) on purpose: the per-line order of the checks (pages released,
+// progress, the lines-executed bound, cancel, the start line, the block, the moves bound, the
+// error) and the end-of-file checks that depend on how the loop ended read best in one place.
 Result Interpreter::run(std::string_view text, const std::function<void(std::size_t)> &consumed)
 {
     constexpr std::size_t kReleaseStep = 1u << 20;
@@ -140,6 +143,7 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
     };
     std::string_view raw;
     Error error;
+    bool bounded = false; // a bound of Options stopped the program (no end-of-file errors)
     while (!m_ended && nextLine(&raw)) {
         if (m_next >= releaseMark && consumed) {
             consumed(releaseMark - kReleaseStep);
@@ -148,12 +152,25 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
         if (m_options.progress && (m_line & 0xFFFF) == 0)
             m_options.progress(m_next, text.size());
         if (++m_executed > m_options.maxBlocks) {
-            report({ErrorCode::TooManyBlocks, m_line, 1, std::to_string(m_options.maxBlocks)});
+            report(boundError(ErrorCode::TooManyBlocks, ErrorCode::LoopNeverEnds,
+                              m_options.maxBlocks));
+            bounded = true;
+            break;
+        }
+        if ((m_executed & 0xFFF) == 0 && m_options.cancel && m_options.cancel->load()) {
+            result.cancelled = true;
             break;
         }
         if (m_options.startLine != 0 && !m_marked && m_line >= m_options.startLine)
             markBefore();
-        if (processLine(raw, &error))
+        const bool done = processLine(raw, &error);
+        if (m_toolpath.size() > m_options.maxMoves) {
+            report(boundError(ErrorCode::TooManyMoves, ErrorCode::LoopMovesNeverEnd,
+                              m_options.maxMoves));
+            bounded = true;
+            break;
+        }
+        if (done)
             continue;
         report(error);
         if (!m_options.collectAllErrors)
@@ -161,7 +178,7 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
         recoverBlock();
     }
     const bool stopped = !result.errors.empty() && !m_options.collectAllErrors;
-    if (!m_ended && !stopped && m_executed <= m_options.maxBlocks) {
+    if (!m_ended && !stopped && !bounded && !result.cancelled) {
         if (!m_frames.empty()) {
             const Frame &f = m_frames.back();
             const char *what = f.kind == FrameKind::Call ? "call" : "o";

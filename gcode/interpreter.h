@@ -22,6 +22,7 @@
 #include "gcode/tooltable.h"
 
 #include <array>
+#include <atomic>
 #include <functional>
 #include <map>
 #include <optional>
@@ -44,9 +45,15 @@ struct Options
     // ProgramEnd event, as every grbl sender runs such files); false: FileEndedWithoutEnd /
     // FileEndedWithoutPercent errors, as LinuxCNC (the console's MDI lines, which never end).
     bool acceptMissingEnd = true;
-    std::uint64_t maxBlocks = 200'000'000; // executed lines before TooManyBlocks (endless loops)
-    std::size_t maxErrors = 1000;          // check mode keeps this many (the rest are counted)
-    std::size_t maxWarnings = 100;         // warnings and notes kept (the rest are counted)
+    // Bounds on a program that never ends (an o-word loop or a recursion without an exit): the
+    // lines executed and the toolpath's entries (moves, dwells, events; about 50 bytes each)
+    // before the interpreter stops with TooManyBlocks / TooManyMoves, or LoopNeverEnds /
+    // LoopMovesNeverEnd at the loop (or the recursive call) that was running. A 5 M-line
+    // program stays well inside the defaults, and the default entries stay under 800 MB.
+    std::uint64_t maxBlocks = 50'000'000;
+    std::uint64_t maxMoves = 10'000'000;
+    std::size_t maxErrors = 1000;  // check mode keeps this many (the rest are counted)
+    std::size_t maxWarnings = 100; // warnings and notes kept (the rest are counted)
     // The tool table (LinuxCNC's rules: T, M61 Q, G43 H and G10 L1 P name tools in it, G43 takes
     // its offsets, G10 L1/L10/L11 change it). Without one every tool number is accepted and has
     // the length toolLengthMm gives it (0 when not listed) and no diameter.
@@ -62,6 +69,9 @@ struct Options
     std::uint32_t startLine = 0;
     // Called now and then (every 65 536 lines) with the bytes read so far and the total.
     std::function<void(std::size_t done, std::size_t total)> progress;
+    // Set from another thread to stop the interpretation soon (every 4 096 lines executed);
+    // Result::cancelled then says so and the result is incomplete.
+    const std::atomic_bool *cancel = nullptr;
 };
 
 struct Result
@@ -76,8 +86,9 @@ struct Result
     std::vector<Error> warnings;
     std::size_t warningsNotShown = 0;
     std::uint64_t linesRead = 0;
-    bool ended = false; // reached M2/M30 or the closing % (not an implied end)
-    LineMark mark;      // Options::startLine's state, or why the program has none
+    bool ended = false;     // reached M2/M30 or the closing % (not an implied end)
+    bool cancelled = false; // Options::cancel was set: the rest of the program was not read
+    LineMark mark;          // Options::startLine's state, or why the program has none
     // The tool table after the program's G10 L1/L10/L11 (Options::toolTable otherwise); the
     // caller writes it back (writeToolTableFile) when the program has run.
     ToolTable toolTable;
@@ -105,6 +116,8 @@ private:
         std::size_t offset = 0;     // While: the while line; Do/Repeat: the body; Call: return
         std::uint32_t line = 0;     // line number at offset minus one
         std::int64_t remaining = 0; // Repeat
+        std::uint32_t column = 1;   // of the O word on its opening line
+        std::uint64_t turns = 0;    // While/Do/Repeat: jumps back to the body so far
     };
     struct SubDef
     {
@@ -212,6 +225,10 @@ private:
     bool callSub(Error *error);
     bool returnFromSub(Error *error);
     bool loopJump(bool isBreak, Error *error);
+    std::uint32_t oColumn() const { return m_parser.columnAt(m_block.oColumn); }
+    // A bound of Options was passed: the error at the loop that has turned most (or the first
+    // recursive call), naming the line reached; at that line when no loop or call runs.
+    Error boundError(ErrorCode plain, ErrorCode inLoop, std::uint64_t bound) const;
 
     // Coordinates.
     double offset(int axis) const;

@@ -1,20 +1,40 @@
 #include "loadprogress.h"
 
+#include <QEvent>
 #include <QPainter>
+#include <QToolButton>
 
 #include <cmath>
 
 namespace frezka::gui {
 
+namespace {
+constexpr int kBarWidth = 240;
+constexpr int kGap = 4;
+} // namespace
+
 LoadProgress::LoadProgress(QWidget *parent)
     : QWidget(parent)
+    , m_cancel(new QToolButton(this))
 {
+    m_cancel->setObjectName(QStringLiteral("loadCancel"));
+    m_cancel->setAutoRaise(true);
+    m_cancel->setText(tr("Cancel"));
+    m_cancel->setToolTip(tr("Stop loading this program (the program loaded before stays)"));
+    connect(m_cancel, &QToolButton::clicked, this, &LoadProgress::cancelRequested);
     setFixedSize(sizeHint());
 }
 
 QSize LoadProgress::sizeHint() const
 {
-    return {240, fontMetrics().height() + 4};
+    const int height = std::max(fontMetrics().height() + 4, m_cancel->sizeHint().height());
+    return {kBarWidth + kGap + m_cancel->sizeHint().width(), height};
+}
+
+QRect LoadProgress::barRect() const
+{
+    const int barHeight = fontMetrics().height() + 4;
+    return {0, (height() - barHeight) / 2, width() - kGap - m_cancel->width(), barHeight};
 }
 
 void LoadProgress::setProgress(double fraction, const QString &stage)
@@ -24,13 +44,30 @@ void LoadProgress::setProgress(double fraction, const QString &stage)
         return;
     m_fraction = f;
     m_stage = stage;
-    update();
+    update(barRect());
+}
+
+void LoadProgress::resizeEvent(QResizeEvent *)
+{
+    const QSize button = m_cancel->sizeHint();
+    m_cancel->setGeometry(width() - button.width(), (height() - button.height()) / 2,
+                          button.width(), button.height());
+}
+
+void LoadProgress::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        m_cancel->setText(tr("Cancel"));
+        m_cancel->setToolTip(tr("Stop loading this program (the program loaded before stays)"));
+        setFixedSize(sizeHint());
+    }
+    QWidget::changeEvent(event);
 }
 
 void LoadProgress::paintEvent(QPaintEvent *)
 {
     QPainter p(this);
-    const QRect r = rect().adjusted(0, 0, -1, -1);
+    const QRect r = barRect().adjusted(0, 0, -1, -1);
     p.setPen(palette().color(QPalette::Mid));
     p.setBrush(palette().color(QPalette::Base));
     p.drawRect(r);

@@ -85,6 +85,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     sb->addPermanentWidget(m_file);
 
     connectProgram();
+    connectLoadCancel();
     connectMachine();
     retranslate();
     resize(1366, 740);
@@ -354,9 +355,7 @@ void MainWindow::connectProgram()
         checkProgramLimits();
         updatePlacement();
         m_run->setProgress(0, 0, p.estimatedS);
-        m_file->setText(tr("%1 — %n line(s)", nullptr, p.text ? p.text->lineCount() : 0)
-                            .arg(QFileInfo(p.path).fileName()) +
-                        QStringLiteral(" · ") + programUnitsText());
+        m_file->setText(programFileText());
         retranslate();
         addRecent(p.path);
         m_reloadAction->setEnabled(true);

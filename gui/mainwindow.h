@@ -149,6 +149,10 @@ private:
     void buildMenus();
     void retranslate();
     void connectProgram();
+    // The status bar's Cancel of a load: the program loaded before stays, and the window says so.
+    void connectLoadCancel();
+    // "part.nc — 1 200 lines · G21: ..." for the status bar: the loaded program.
+    QString programFileText() const;
     void connectMachine();
     void connectControls();
     void connectOutputs();

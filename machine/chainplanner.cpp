@@ -101,7 +101,15 @@ void RunPlanner::planOnce()
     m_out.slowLines = m_slowLines;
     m_out.firstFeedCap = m_firstFeedCap;
     m_out.feedCapLines = m_feedCapLines;
-    m_d = m_derived;
+    for (std::size_t k = 0; k < m_d.size(); ++k) {
+        const PaceStart &from = m_paceStart[k];
+        Derived &r = m_d[k];
+        r.vMm = from.vMm;
+        r.wireCap = from.wireCap;
+        r.speed = from.speed;
+        r.accel = from.accel;
+        r.twoAU = from.twoAU;
+    }
     wirePace();
     paceModalChanges();
     const std::size_t n = m_moves.size();
@@ -137,7 +145,11 @@ void RunPlanner::derive()
         m_d[k].restBefore = k == 0 || m_moves[k - 1].stopAfter || !softStopAllowed(k - 1);
     chooseSpeeds(m_d, m_options, m_link);
     chooseAccels(m_d, m_options, m_link);
-    m_derived = m_d;
+    m_paceStart.resize(m_d.size());
+    for (std::size_t k = 0; k < m_d.size(); ++k) {
+        const Derived &r = m_d[k];
+        m_paceStart[k] = {r.vMm, r.wireCap, r.speed, r.accel, r.twoAU};
+    }
 }
 
 void RunPlanner::deriveOne(const Move &m, Derived &r)

@@ -150,6 +150,10 @@ void visitProfile(V &v, MachineConfig &c)
         s.number("brakeReleaseDelayS", e.brakeReleaseDelayS, 0, 5, "s");
     });
     v.object("tools", [&](V &s) { s.text("tableFile", c.tools.tableFile); });
+    v.object("program", [&](V &s) {
+        s.integer("maxLinesExecuted", c.program.maxLinesExecuted, 1000, 2'000'000'000, "");
+        s.integer("maxMoves", c.program.maxMoves, 1000, 200'000'000, "");
+    });
 }
 
 } // namespace frezka::machine::schema

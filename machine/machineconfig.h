@@ -107,6 +107,18 @@ struct ToolsConfig
     friend bool operator==(const ToolsConfig &, const ToolsConfig &) = default;
 };
 
+// Bounds on a program that never ends (an o-word loop or a recursion without an exit): when
+// the check has executed this many lines, or made this many toolpath entries (moves, dwells,
+// events; about 50 bytes each), it stops with the loop's line named (gcode::Options::maxBlocks
+// and maxMoves, the same defaults). A 5 M-line program stays well inside them, and the check of
+// a program stopped at the default entries stays under 800 MB of memory.
+struct ProgramConfig
+{
+    int maxLinesExecuted = 50'000'000;
+    int maxMoves = 10'000'000;
+    friend bool operator==(const ProgramConfig &, const ProgramConfig &) = default;
+};
+
 // Functions of the unit's outputs, EEPROM codes of docs/gve-protocol.md §12.
 enum class OutputFunction : std::uint8_t {
     Unused = 0x10,
@@ -171,6 +183,7 @@ struct MachineConfig
     OutputConfig outputs;
     EepromConfig eeprom;
     ToolsConfig tools;
+    ProgramConfig program;
 
     const AxisConfig &axis(Axis a) const { return axes[static_cast<std::size_t>(a)]; }
     AxisConfig &axis(Axis a) { return axes[static_cast<std::size_t>(a)]; }

@@ -24,6 +24,9 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     options.startMm = {req.startMm[0], req.startMm[1], req.startMm[2], req.startMm[3]};
     options.startLine = req.startLine;
     options.toolTable = req.toolTable;
+    options.maxBlocks = std::uint64_t(std::max(1, req.limits.maxLinesExecuted));
+    options.maxMoves = std::uint64_t(std::max(1, req.limits.maxMoves));
+    options.cancel = req.cancel;
     if (req.progress) {
         options.progress = [&req](std::size_t done, std::size_t total) {
             req.progress(double(done) / double(std::max<std::size_t>(1, total)));
@@ -55,6 +58,7 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     }
     out.toolpath = std::make_shared<gcode::Toolpath>(std::move(result.toolpath));
     out.linesRead = result.linesRead;
+    out.cancelled = result.cancelled;
     out.errorsNotShown = result.errorsNotShown;
     out.mark = std::move(result.mark);
     out.toolTable = std::move(result.toolTable);

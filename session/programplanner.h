@@ -38,11 +38,12 @@ struct InterpretRequest
 {
     QByteArray text;
     QString fileName;
-    OffsetState offsets;             // G54..G59.3, G92 and the active system
-    std::array<double, 4> startMm{}; // machine position the program starts from
-    const std::atomic_bool *cancel = nullptr;
-    std::function<void(double)> progress; // fraction 0..1 of this step
-    std::size_t maxErrors = 200;          // errors kept (the window's list); the rest are counted
+    OffsetState offsets;                      // G54..G59.3, G92 and the active system
+    std::array<double, 4> startMm{};          // machine position the program starts from
+    const std::atomic_bool *cancel = nullptr; // set: the interpreter stops soon (cancelled)
+    std::function<void(double)> progress;     // fraction 0..1 of this step
+    machine::ProgramConfig limits;            // the profile's bounds on a program that never ends
+    std::size_t maxErrors = 200; // errors kept (the window's list); the rest are counted
     std::uint32_t startLine = 0; // run from this line: its state in the outcome's mark (0: none)
     // The machine's tool table (nullopt: none, every tool has length 0). toolTableError, when
     // set, is the table file's own error: it is the outcome's first error (the program must not
@@ -59,6 +60,7 @@ struct InterpretOutcome
     // the last one saying how many more were not shown.
     std::vector<ProgramMessage> warnings;
     std::uint64_t linesRead = 0;
+    bool cancelled = false; // InterpretRequest::cancel stopped it: the outcome is incomplete
     std::uint64_t errorsNotShown = 0; // beyond the interpreter's cap; errors' last line says so
     gcode::LineMark mark;             // InterpretRequest::startLine's (session/runfromline.h)
     // The tool table after the program's G10 L1/L10/L11 (changed: to be written back once the

@@ -57,6 +57,7 @@ struct LoadJob
     std::uint32_t startLine = 0;
     std::optional<gcode::ToolTable> toolTable;
     QString toolTableError;
+    bool measurePeaks = false;
 };
 
 // The toolpath's length and the entry of each source line.
@@ -74,10 +75,11 @@ void indexToolpath(const gcode::Toolpath &tp, LoadedProgram &result)
 // The plan for the profile: its errors and warnings, the unit program, the planned speed
 // (decimated here, off the front end's thread: min and max of each bucket survive) and the
 // planned time to each line for the ETA.
-void planLoaded(const LoadJob &job, LoadedProgram &result)
+void planLoaded(const LoadJob &job, LoadedProgram &result, StageClock &clock)
 {
     const PlanOutcome plan = planProgram(*result.toolpath, *job.profile,
                                          QFileInfo(job.path).fileName(), job.feedOverride);
+    clock.done("plan");
     result.errors.insert(result.errors.end(), plan.errors.begin(), plan.errors.end());
     result.warnings.insert(result.warnings.end(), plan.warnings.begin(), plan.warnings.end());
     if (!plan.ok())
@@ -85,8 +87,10 @@ void planLoaded(const LoadJob &job, LoadedProgram &result)
     result.estimatedS = plan.stats.estimatedS;
     result.speed =
         decimateSpeed(plannedSpeed(*plan.program, *job.profile, plan.stats.speedModeVk), 4000);
+    clock.done("planned speed (plot)");
     result.lineEndS =
         plannedLineTimes(*plan.program, plan.stats.speedModeVk, plan.stats.estimatedS);
+    clock.done("line times (ETA)");
     result.unitProgram = plan.program;
     result.planStats = plan.stats;
 }
@@ -106,40 +110,53 @@ void startFromLine(const LoadJob &job, const QString &fileName, InterpretOutcome
     outcome.toolpath = std::move(f.toolpath);
 }
 
-// The worker thread's load, stage by stage: read, index the lines, interpret, view, plan.
-// False when cancelled (nothing to report); else `result` and `failure` are what the front end
-// gets.
+// What the interpreter is asked for the job's text.
+InterpretRequest interpretRequest(const LoadJob &job, const QByteArray &data,
+                                  const std::function<void(double)> &fraction)
+{
+    InterpretRequest req;
+    req.text = data;
+    req.fileName = QFileInfo(job.path).fileName();
+    req.offsets = job.offsets;
+    req.startMm = job.startMm;
+    req.cancel = job.cancel.get();
+    req.progress = fraction;
+    req.startLine = job.startLine;
+    req.toolTable = job.toolTable;
+    req.toolTableError = job.toolTableError;
+    req.limits = job.profile ? job.profile->program : machine::ProgramConfig{};
+    return req;
+}
+
+// The worker thread's load, stage by stage: read, index the lines, interpret, view, plan (each
+// timed into result.stages). False when cancelled (nothing to report); else `result` and
+// `failure` are what the front end gets.
 bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
 {
     const std::atomic_bool *cancelFlag = job.cancel.get();
     std::atomic_int *progress = job.progress.get();
     std::atomic_int *stage = job.stage.get();
     const auto fraction = [progress](double f) { progress->store(int(f * 1000)); };
+    StageClock clock(job.measurePeaks);
     QFile file(job.path);
     if (!file.open(QIODevice::ReadOnly)) {
         failure = ProgramSession::tr("Cannot open %1: %2").arg(job.path, file.errorString());
         return true;
     }
     QByteArray data = file.readAll();
+    clock.done("read");
     stage->store(1);
     result.text = std::make_shared<ProgramText>(
         data, [&](qint64 d, qint64 t) { progress->store(int(d * 1000 / std::max<qint64>(1, t))); },
         cancelFlag);
+    clock.done("index lines (listing)");
     if (cancelFlag->load())
         return false;
     stage->store(2);
     progress->store(0);
-    InterpretRequest req;
-    req.text = data;
-    req.fileName = QFileInfo(job.path).fileName();
-    req.offsets = job.offsets;
-    req.startMm = job.startMm;
-    req.cancel = cancelFlag;
-    req.progress = fraction;
-    req.startLine = job.startLine;
-    req.toolTable = job.toolTable;
-    req.toolTableError = job.toolTableError;
+    const InterpretRequest req = interpretRequest(job, data, fraction);
     InterpretOutcome outcome = interpretProgram(req);
+    clock.done("interpret");
     result.errors = std::move(outcome.errors);
     if (outcome.toolTableChanged)
         result.changedToolTable = std::move(outcome.toolTable);
@@ -148,17 +165,22 @@ bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
     if (job.startLine != 0 && result.errors.empty() && job.profile)
         startFromLine(job, req.fileName, outcome, result);
     indexToolpath(*outcome.toolpath, result);
+    clock.done("index toolpath");
     if (job.buildView) {
         stage->store(3);
         progress->store(0);
         result.view = job.buildView(*outcome.toolpath, fraction, cancelFlag);
+        clock.done("scene");
     }
     result.toolpath = std::move(outcome.toolpath);
     if (result.errors.empty() && job.profile && !cancelFlag->load()) {
         stage->store(4);
         progress->store(0);
-        planLoaded(job, result);
+        planLoaded(job, result, clock);
     }
+    returnFreeMemory(); // the plan's transient arrays, freed in this thread's arena
+    clock.done("return free memory");
+    result.stages = clock.take();
     return !cancelFlag->load();
 }
 
@@ -191,19 +213,34 @@ ProgramSession::ProgramSession(QObject *parent)
 
 ProgramSession::~ProgramSession()
 {
-    cancel();
+    stopLoad();
+    for (const QPointer<QThread> &thread : m_ending) {
+        if (thread) {
+            thread->wait();
+            delete thread.data();
+        }
+    }
+}
+
+bool ProgramSession::stopLoad()
+{
+    if (!m_thread)
+        return false;
+    m_cancel->store(true);
+    // Deleted once it has ended (or at the latest by the destructor, which waits for it).
+    connect(m_thread, &QThread::finished, m_thread, &QObject::deleteLater);
+    std::erase_if(m_ending, [](const QPointer<QThread> &t) { return t.isNull(); });
+    m_ending.emplace_back(m_thread);
+    m_thread = nullptr;
+    m_poll.stop();
+    ++m_generation;
+    return true;
 }
 
 void ProgramSession::cancel()
 {
-    if (!m_thread)
-        return;
-    m_cancel->store(true);
-    m_thread->wait();
-    delete m_thread;
-    m_thread = nullptr;
-    m_poll.stop();
-    ++m_generation;
+    if (stopLoad())
+        emit loadCancelled(m_loadingPath);
 }
 
 void ProgramSession::setProfile(const machine::MachineConfig &config, double feedOverride)
@@ -220,7 +257,8 @@ void ProgramSession::reload()
 
 void ProgramSession::load(const QString &path)
 {
-    cancel();
+    stopLoad();
+    m_loadingPath = path;
     const quint64 generation = ++m_generation;
     m_cancel = std::make_shared<std::atomic_bool>(false);
     m_progress = std::make_shared<std::atomic_int>(0);
@@ -236,7 +274,8 @@ void ProgramSession::load(const QString &path)
                       .startMm = m_startMm,
                       .startLine = m_startLine,
                       .toolTable = m_toolTable,
-                      .toolTableError = m_toolTableError};
+                      .toolTableError = m_toolTableError,
+                      .measurePeaks = m_measurePeaks};
     emit loadStarted(path);
 
     m_thread = QThread::create([=, this] {
@@ -270,6 +309,7 @@ void ProgramSession::finish(std::shared_ptr<LoadedProgram> result, QString failu
         return;
     }
     m_program = std::move(*result);
+    returnFreeMemory(); // what the program before held
     emit loadProgress(1.0, QString());
     emit loaded();
 }

@@ -9,6 +9,7 @@
 // Progress is polled every 100 ms from an atomic counter (no signal flood); the result arrives
 // by a queued call. Qt Core only; the GUI renders program() and its view.
 
+#include "session/loadstages.h"
 #include "session/plannedspeed.h"
 #include "session/programplanner.h"
 #include "session/programtext.h"
@@ -21,6 +22,7 @@
 #include "machine/unitprogram.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 #include <QTimer>
 
@@ -29,6 +31,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QThread;
 
@@ -72,6 +75,8 @@ struct LoadedProgram
     std::optional<FromLine> fromLine;
     // The tool table as the program's G10 L1/L10/L11 leave it: written back once it has run.
     std::optional<gcode::ToolTable> changedToolTable;
+    // How long each stage of the load took and the memory it held (bench_gui_load prints it).
+    std::vector<LoadStage> stages;
 };
 
 class ProgramSession : public QObject
@@ -102,12 +107,19 @@ public:
     }
     const std::optional<gcode::ToolTable> &toolTable() const { return m_toolTable; }
     std::uint32_t startLine() const { return m_startLine; }
+    // Each load's stages (LoadedProgram::stages) with the peak memory of each, which resets the
+    // process's high-water mark at every stage (bench_gui_load; off by default).
+    void setMeasurePeaks(bool on) { m_measurePeaks = on; }
 
     // Loads (replacing any load in progress). loaded() or loadFailed() follows.
     void load(const QString &path);
     // Loads the current file again: checked from the offsets and position, planned for the
     // profile as they are now.
     void reload();
+    // Stops the load in progress, if any, at once: the program loaded before stays, and
+    // loadCancelled() follows. The load's thread is not waited for (reading, interpreting and
+    // the view stop within a few thousand lines; a plan of millions of moves ends its pass in
+    // the background, its result dropped), so the window never stalls.
     void cancel();
     bool isLoading() const { return m_thread != nullptr; }
     const LoadedProgram &program() const { return m_program; }
@@ -116,11 +128,15 @@ public:
 signals:
     void loadStarted(const QString &path);
     void loadProgress(double fraction, const QString &stage);
-    void loaded();                       // program() holds the result (maybe with errors)
-    void loadFailed(const QString &why); // file unreadable
+    void loaded();                           // program() holds the result (maybe with errors)
+    void loadFailed(const QString &why);     // file unreadable
+    void loadCancelled(const QString &path); // cancel() stopped the load of this file
 
 private:
     void finish(std::shared_ptr<LoadedProgram> result, QString failure);
+    // Stops the load in progress without waiting for its thread (kept in m_ending); false when
+    // none ran.
+    bool stopLoad();
 
     ViewBuilder m_buildView;
     std::optional<machine::MachineConfig> m_profile;
@@ -130,8 +146,11 @@ private:
     std::uint32_t m_startLine = 0;
     std::optional<gcode::ToolTable> m_toolTable;
     QString m_toolTableError;
+    bool m_measurePeaks = false;
     LoadedProgram m_program;
     QThread *m_thread = nullptr;
+    QString m_loadingPath;
+    std::vector<QPointer<QThread>> m_ending; // stopped loads still ending; waited for at the end
     std::shared_ptr<std::atomic_bool> m_cancel;
     std::shared_ptr<std::atomic_int> m_progress; // permille
     std::shared_ptr<std::atomic_int> m_stage;    // 0 read, 1 index, 2 interpret, 3 view, 4 plan

@@ -2138,14 +2138,6 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>Return a endsub používejte jen uvnitř podprogramu.</translation>
     </message>
     <message>
-        <source>The program executes more than %1 blocks</source>
-        <translation>Program vykoná více než %1 bloků</translation>
-    </message>
-    <message>
-        <source>Check the loops; one of them may never end.</source>
-        <translation>Zkontrolujte cykly; některý z nich možná nikdy neskončí.</translation>
-    </message>
-    <message>
         <source>Value of %1 is out of range</source>
         <translation>Hodnota %1 je mimo rozsah</translation>
     </message>
@@ -2432,6 +2424,38 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</source>
         <translation>Používejte @ a ^ jen v rovině XY (G17), bez slov X a Y a bez G53; v bodě X0 Y0 zadejte úhel ^ spolu s absolutním poloměrem @ (G90).</translation>
+    </message>
+    <message>
+        <source>The program has executed %1 lines and has not ended; it was stopped here</source>
+        <translation>Program vykonal %1 řádků a neskončil; byl zastaven zde</translation>
+    </message>
+    <message>
+        <source>If the program is really this long, raise the machine profile&apos;s program.maxLinesExecuted (Settings › Machine profile › Program).</source>
+        <translation>Je-li program opravdu tak dlouhý, zvyšte v profilu stroje program.maxLinesExecuted (Nastavení › Profil stroje › Program).</translation>
+    </message>
+    <message>
+        <source>The program has made %1 moves and has not ended; it was stopped here</source>
+        <translation>Program vykonal %1 pohybů a neskončil; byl zastaven zde</translation>
+    </message>
+    <message>
+        <source>If the program really has more moves, raise the machine profile&apos;s program.maxMoves (Settings › Machine profile › Program); a million moves take about 50 MB of memory to check, more to plan and show.</source>
+        <translation>Má-li program opravdu více pohybů, zvyšte v profilu stroje program.maxMoves (Nastavení › Profil stroje › Program); milion pohybů zabere při kontrole asi 50 MB paměti, při plánování a zobrazení více.</translation>
+    </message>
+    <message>
+        <source>%3 has not ended after %1 lines executed (it was stopped at line %2)</source>
+        <translation>%3 neskončil ani po %1 vykonaných řádcích (zastaven na řádku %2)</translation>
+    </message>
+    <message>
+        <source>Check what ends it (its condition, its count, the exit of a recursion); if it is meant to run this long, raise the machine profile&apos;s program.maxLinesExecuted (Settings › Machine profile › Program).</source>
+        <translation>Zkontrolujte, co jej ukončí (podmínku, počet opakování, výstup z rekurze); má-li opravdu běžet tak dlouho, zvyšte v profilu stroje program.maxLinesExecuted (Nastavení › Profil stroje › Program).</translation>
+    </message>
+    <message>
+        <source>%3 has not ended after %1 moves (it was stopped at line %2)</source>
+        <translation>%3 neskončil ani po %1 pohybech (zastaven na řádku %2)</translation>
+    </message>
+    <message>
+        <source>Check what ends it (its condition, its count, the exit of a recursion); if it is meant to make more moves, raise the machine profile&apos;s program.maxMoves (Settings › Machine profile › Program).</source>
+        <translation>Zkontrolujte, co jej ukončí (podmínku, počet opakování, výstup z rekurze); má-li opravdu vykonat více pohybů, zvyšte v profilu stroje program.maxMoves (Nastavení › Profil stroje › Program).</translation>
     </message>
 </context>
 <context>
@@ -3195,6 +3219,17 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     </message>
 </context>
 <context>
+    <name>frezka::gui::LoadProgress</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>Stop loading this program (the program loaded before stays)</source>
+        <translation>Zastavit načítání tohoto programu (dříve načtený program zůstane)</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::MainWindow</name>
     <message>
         <source>About Frezka</source>
@@ -3563,6 +3598,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>The program changed the tool table (G10 L1, L10 or L11): %1 saved.</source>
         <translation>Program změnil tabulku nástrojů (G10 L1, L10 nebo L11): %1 uložena.</translation>
+    </message>
+    <message>
+        <source>Loading %1 was cancelled; no program is loaded.</source>
+        <translation>Načítání %1 bylo zrušeno; není načten žádný program.</translation>
+    </message>
+    <message>
+        <source>Loading %1 was cancelled; %2 stays loaded.</source>
+        <translation>Načítání %1 bylo zrušeno; zůstává načten %2.</translation>
     </message>
 </context>
 <context>
@@ -4188,6 +4231,18 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Tool table file (LinuxCNC .tbl, beside the profile)</source>
         <translation>Soubor tabulky nástrojů (LinuxCNC .tbl, vedle profilu)</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Lines executed at most (a program that never ends)</source>
+        <translation>Nejvýše vykonaných řádků (program, který nikdy neskončí)</translation>
+    </message>
+    <message>
+        <source>Moves at most (a program that never ends)</source>
+        <translation>Nejvýše pohybů (program, který nikdy neskončí)</translation>
     </message>
 </context>
 <context>

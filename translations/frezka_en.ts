@@ -2138,14 +2138,6 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>Use return and endsub only inside a subroutine.</translation>
     </message>
     <message>
-        <source>The program executes more than %1 blocks</source>
-        <translation>The program executes more than %1 blocks</translation>
-    </message>
-    <message>
-        <source>Check the loops; one of them may never end.</source>
-        <translation>Check the loops; one of them may never end.</translation>
-    </message>
-    <message>
         <source>Value of %1 is out of range</source>
         <translation>Value of %1 is out of range</translation>
     </message>
@@ -2429,6 +2421,38 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</source>
         <translation>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</translation>
+    </message>
+    <message>
+        <source>The program has executed %1 lines and has not ended; it was stopped here</source>
+        <translation>The program has executed %1 lines and has not ended; it was stopped here</translation>
+    </message>
+    <message>
+        <source>If the program is really this long, raise the machine profile&apos;s program.maxLinesExecuted (Settings › Machine profile › Program).</source>
+        <translation>If the program is really this long, raise the machine profile&apos;s program.maxLinesExecuted (Settings › Machine profile › Program).</translation>
+    </message>
+    <message>
+        <source>The program has made %1 moves and has not ended; it was stopped here</source>
+        <translation>The program has made %1 moves and has not ended; it was stopped here</translation>
+    </message>
+    <message>
+        <source>If the program really has more moves, raise the machine profile&apos;s program.maxMoves (Settings › Machine profile › Program); a million moves take about 50 MB of memory to check, more to plan and show.</source>
+        <translation>If the program really has more moves, raise the machine profile&apos;s program.maxMoves (Settings › Machine profile › Program); a million moves take about 50 MB of memory to check, more to plan and show.</translation>
+    </message>
+    <message>
+        <source>%3 has not ended after %1 lines executed (it was stopped at line %2)</source>
+        <translation>%3 has not ended after %1 lines executed (it was stopped at line %2)</translation>
+    </message>
+    <message>
+        <source>Check what ends it (its condition, its count, the exit of a recursion); if it is meant to run this long, raise the machine profile&apos;s program.maxLinesExecuted (Settings › Machine profile › Program).</source>
+        <translation>Check what ends it (its condition, its count, the exit of a recursion); if it is meant to run this long, raise the machine profile&apos;s program.maxLinesExecuted (Settings › Machine profile › Program).</translation>
+    </message>
+    <message>
+        <source>%3 has not ended after %1 moves (it was stopped at line %2)</source>
+        <translation>%3 has not ended after %1 moves (it was stopped at line %2)</translation>
+    </message>
+    <message>
+        <source>Check what ends it (its condition, its count, the exit of a recursion); if it is meant to make more moves, raise the machine profile&apos;s program.maxMoves (Settings › Machine profile › Program).</source>
+        <translation>Check what ends it (its condition, its count, the exit of a recursion); if it is meant to make more moves, raise the machine profile&apos;s program.maxMoves (Settings › Machine profile › Program).</translation>
     </message>
 </context>
 <context>
@@ -3192,6 +3216,17 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
 </context>
 <context>
+    <name>frezka::gui::LoadProgress</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Stop loading this program (the program loaded before stays)</source>
+        <translation>Stop loading this program (the program loaded before stays)</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::MainWindow</name>
     <message>
         <source>About Frezka</source>
@@ -3556,6 +3591,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>The program changed the tool table (G10 L1, L10 or L11): %1 saved.</source>
         <translation>The program changed the tool table (G10 L1, L10 or L11): %1 saved.</translation>
+    </message>
+    <message>
+        <source>Loading %1 was cancelled; no program is loaded.</source>
+        <translation>Loading %1 was cancelled; no program is loaded.</translation>
+    </message>
+    <message>
+        <source>Loading %1 was cancelled; %2 stays loaded.</source>
+        <translation>Loading %1 was cancelled; %2 stays loaded.</translation>
     </message>
 </context>
 <context>
@@ -4181,6 +4224,18 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Tool table file (LinuxCNC .tbl, beside the profile)</source>
         <translation>Tool table file (LinuxCNC .tbl, beside the profile)</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Lines executed at most (a program that never ends)</source>
+        <translation>Lines executed at most (a program that never ends)</translation>
+    </message>
+    <message>
+        <source>Moves at most (a program that never ends)</source>
+        <translation>Moves at most (a program that never ends)</translation>
     </message>
 </context>
 <context>

@@ -118,6 +118,10 @@ std::optional<session::InterpretOutcome> interpretFile(const QString &file,
     request.offsets = options.offsets;
     request.startLine = startLine;
     if (!options.machine.isEmpty()) { // the profile's tool table (its errors come as the first)
+        const machine::ConfigResult named =
+            machine::loadMachineConfig(app::resolveProfile(options.machine).toStdString());
+        if (named.config) // its bounds on a program that never ends (a file or a shipped name)
+            request.limits = named.config->program;
         const machine::ConfigResult profile =
             machine::loadMachineConfig(options.machine.toStdString());
         if (profile.config) {

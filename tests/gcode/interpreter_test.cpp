@@ -60,13 +60,14 @@ TEST(Interpreter, CheckModeCollectsEveryError)
     EXPECT_EQ(r.warnings[0].code, ErrorCode::ImpliedProgramEnd);
 }
 
-TEST(Interpreter, EndlessLoopEndsWithTooManyBlocks)
+TEST(Interpreter, EndlessLoopEndsAtItsLine)
 {
     Options options;
     options.maxBlocks = 1000;
     const Result r = interpretText("o1 while [1]\nG0 X1\no1 endwhile\nM2\n", options);
     ASSERT_EQ(r.errors.size(), 1u);
-    EXPECT_EQ(r.errors[0].code, ErrorCode::TooManyBlocks);
+    EXPECT_EQ(r.errors[0].code, ErrorCode::LoopNeverEnds); // more in endless_test.cpp
+    EXPECT_EQ(r.errors[0].line, 1u);
 }
 
 TEST(Interpreter, SystemParametersFollowTheState)

@@ -17,7 +17,9 @@
 #include <QFile>
 #include <QMenu>
 #include <QMessageBox>
+#include <QStatusBar>
 #include <QTableWidget>
+#include <QToolButton>
 
 #include <optional>
 
@@ -324,6 +326,42 @@ private slots:
         QVERIFY(!bar->isVisible());
         QVERIFY2(runsTo(20, 10, 0), qPrintable(describe()));
         m_window->offsets()->setSystem(m_window->activeOffset(), {});
+    }
+
+    // Issue 17 item 4: Cancel in the status bar stops a load at any moment (here a program that
+    // never ends, still being interpreted); the program loaded before stays, the window says so,
+    // and that program still runs to its end on the unit.
+    void aLoadCancelledFromTheStatusBarKeepsTheProgramBefore()
+    {
+        const QString kept =
+            writeProgram(QStringLiteral("kept.nc"), "G21 G90\nG0 X5 Y5 Z0\nG1 X6 F600\nM2\n");
+        QVERIFY(load(kept));
+        QVERIFY(program().runnable());
+        const QString endless =
+            writeProgram(QStringLiteral("endless.nc"), "G21 F100\no1 while [1]\nG1 X1\nG1 X0\n"
+                                                       "o1 endwhile\nM2\n");
+        QSignalSpy cancelled(m_window->program(), &ProgramSession::loadCancelled);
+        QSignalSpy loaded(m_window->program(), &ProgramSession::loaded);
+        m_window->openProgram(endless);
+        QVERIFY(m_window->program()->isLoading());
+        auto *progress = m_window->findChild<QWidget *>(QStringLiteral("loadProgress"));
+        QVERIFY(progress && progress->isVisible());
+        auto *cancel = progress->findChild<QToolButton *>(QStringLiteral("loadCancel"));
+        QVERIFY(cancel && cancel->isVisible());
+        cancel->click();
+        QCOMPARE(cancelled.count(), 1);
+        QVERIFY(!m_window->program()->isLoading());
+        QVERIFY(!progress->isVisible());
+        QCOMPARE(program().path, kept);
+        QVERIFY(program().runnable());
+        const QString file = m_window->findChild<QLabel *>(QStringLiteral("programFile"))->text();
+        QVERIFY2(file.startsWith(QStringLiteral("kept.nc — 4 line")), qPrintable(file));
+        const QString message = m_window->statusBar()->currentMessage();
+        QVERIFY2(message ==
+                     QStringLiteral("Loading endless.nc was cancelled; kept.nc stays loaded."),
+                 qPrintable(message));
+        QCOMPARE(loaded.count(), 0);
+        QVERIFY2(runsTo(6, 5, 0), qPrintable(describe()));
     }
 };
 

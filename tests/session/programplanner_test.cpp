@@ -2,6 +2,8 @@
 // and G92 apply, every G-code error is reported with its line, plan errors are worded.
 #include "session/programplanner.h"
 
+#include "gcode/interpreter.h"
+
 #include <gtest/gtest.h>
 
 namespace frezka::session {
@@ -40,6 +42,37 @@ TEST(ProgramPlanner, EveryGcodeErrorWithItsLine)
     EXPECT_EQ(r.errors[1].line, 3);
     EXPECT_TRUE(r.errors[0].text.startsWith(QStringLiteral("job.nc:2:")))
         << r.errors[0].text.toStdString();
+}
+
+// Issue 17 item 4: the profile's bounds reach the interpreter, the cancel flag stops it, and
+// the profile's defaults are the interpreter's.
+TEST(ProgramPlanner, TheProfilesBoundsAndTheCancelFlagReachTheInterpreter)
+{
+    InterpretRequest r;
+    r.text = "#1 = 0\no2 do\n#1 = [#1 + 1]\no2 while [1]\nM2\n";
+    r.fileName = QStringLiteral("spin.nc");
+    r.limits.maxLinesExecuted = 3000;
+    const InterpretOutcome bounded = interpretProgram(r);
+    ASSERT_EQ(bounded.errors.size(), 1u);
+    EXPECT_TRUE(bounded.errors[0].text.startsWith(
+        QStringLiteral("spin.nc:2:1: o2 do has not ended after 3000 lines executed")))
+        << bounded.errors[0].text.toStdString();
+    EXPECT_FALSE(bounded.cancelled);
+
+    std::atomic_bool cancel{true};
+    r.text = "o2 do\nG1 X1 F100\nG1 X0\no2 while [1]\nM2\n";
+    r.limits = {};
+    r.cancel = &cancel;
+    const InterpretOutcome cancelled = interpretProgram(r);
+    EXPECT_TRUE(cancelled.cancelled);
+    EXPECT_TRUE(cancelled.errors.empty());
+    ASSERT_TRUE(cancelled.toolpath);
+    EXPECT_LE(cancelled.toolpath->size(), 4096u); // stopped within 4 096 lines executed
+
+    const gcode::Options interpreter;
+    const machine::ProgramConfig profile;
+    EXPECT_EQ(std::uint64_t(profile.maxLinesExecuted), interpreter.maxBlocks);
+    EXPECT_EQ(std::uint64_t(profile.maxMoves), interpreter.maxMoves);
 }
 
 TEST(ProgramPlanner, PlansOrWordsThePlanError)

@@ -160,5 +160,57 @@ TEST(ProgramSession, WithoutAProfileItIsCheckedNotPlanned)
     EXPECT_FALSE(l.session.program().view); // no view builder, no view
 }
 
+// Issue 17 item 4: the profile's bound stops a program that never ends, with its loop's line.
+TEST(ProgramSession, AnEndlessProgramStopsAtTheProfilesBoundWithItsLoopsLine)
+{
+    Loader l;
+    machine::MachineConfig profile = kGve64;
+    profile.program.maxMoves = 5000;
+    l.session.setProfile(profile);
+    ASSERT_TRUE(l.wait([&] {
+        l.session.load(l.write("endless.nc", "G21 F100\no7 while [1]\nG1 X1\nG1 X0\n"
+                                             "o7 endwhile\nM2\n"));
+    }));
+    const LoadedProgram &p = l.session.program();
+    ASSERT_EQ(p.errors.size(), 1u);
+    EXPECT_EQ(p.errors[0].line, 2);
+    EXPECT_TRUE(p.errors[0].text.startsWith(
+        QStringLiteral("endless.nc:2:1: o7 while has not ended after 5000 moves")))
+        << p.errors[0].text.toStdString();
+    EXPECT_FALSE(p.runnable());
+}
+
+// Cancel at any moment: the load stops at once (its thread is not waited for), the program
+// loaded before stays, and the next load runs as usual.
+TEST(ProgramSession, CancelKeepsTheProgramBeforeAndTheNextLoadRuns)
+{
+    Loader l;
+    l.session.setProfile(kGve64);
+    const QString before = l.write("before.nc", "G21 G90\nG0 X10\nM2\n");
+    ASSERT_TRUE(l.wait([&] { l.session.load(before); }));
+    QStringList cancelled;
+    QObject::connect(&l.session, &ProgramSession::loadCancelled,
+                     [&cancelled](const QString &path) { cancelled << path; });
+    // Endless at the default bounds (ten million moves): still interpreting when cancelled.
+    const QString endless =
+        l.write("endless.nc", "G21 F100\no1 while [1]\nG1 X1\nG1 X0\no1 endwhile\nM2\n");
+    const int loads = l.loads;
+    l.session.load(endless);
+    ASSERT_TRUE(l.session.isLoading());
+    l.session.cancel();
+    EXPECT_FALSE(l.session.isLoading());
+    EXPECT_EQ(cancelled, QStringList{endless});
+    l.session.cancel(); // nothing to cancel: no second signal
+    EXPECT_EQ(cancelled.size(), 1);
+    QCoreApplication::processEvents();
+    EXPECT_EQ(l.loads, loads); // the cancelled load reports nothing
+    EXPECT_EQ(l.session.program().path, before);
+    EXPECT_TRUE(l.session.program().runnable());
+    const QString next = l.write("next.nc", "G21 G90\nG0 X20\nM2\n");
+    ASSERT_TRUE(l.wait([&] { l.session.load(next); }));
+    EXPECT_EQ(l.session.program().path, next);
+    EXPECT_EQ(cancelled.size(), 1); // a load replaced by another is not "cancelled"
+}
+
 } // namespace
 } // namespace frezka::session
