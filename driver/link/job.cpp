@@ -71,6 +71,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     m_waitUntil = -1;
     m_pace.build();
     m_packetLimit = m_pace.maxPacket();
+    m_lineErrors.reset();
     m_cursor.execAt = now;
     m_host.restartPollCount();
     m_figures.start(now, m_host.link().stats());
@@ -243,16 +244,20 @@ void Job::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, do
     if (m_cursor.next != first || m_guard.faulted())
         return; // superseded (abort, link loss, the path guard dropped the queue)
     if (o.status == OutcomeStatus::Failed) {
+        m_lineErrors.note(static_cast<int>(n), 1);
         m_packetLimit = std::max(4, m_packetLimit / 2);
         m_check.verify("packet outcome unknown: " + o.error);
         return;
     }
     const std::size_t accepted = std::min<std::size_t>(static_cast<std::size_t>(o.accepted), n);
+    const bool damaged = o.reply.code == ReplyCode::Syntax || o.reply.code == ReplyCode::Watchdog;
+    m_lineErrors.note(static_cast<int>(o.reply.ok() ? n : accepted + 1), damaged ? 1 : 0);
     acceptUpTo(first + accepted);
     switch (o.reply.code) {
     case ReplyCode::Ok:
         m_queueFullSeen = false;
-        m_packetLimit = std::min(m_pace.maxPacket(), m_packetLimit + m_packetLimit / 2 + 1);
+        m_packetLimit = std::min({m_pace.maxPacket(), m_packetLimit + m_packetLimit / 2 + 1,
+                                  std::max(m_packetLimit, m_lineErrors.packetCap())});
         return;
     case ReplyCode::QueueFull:
         // The queue is full right now: that calibrates the estimate of where the unit is.

@@ -20,6 +20,7 @@
 #include "driver/link/joboverride.h"
 #include "driver/link/jobpace.h"
 #include "driver/link/jobtracker.h"
+#include "driver/link/lineerrors.h"
 #include "driver/link/machinestate.h"
 #include "driver/link/pathguard.h"
 #include "driver/link/probemove.h"
@@ -108,6 +109,7 @@ private:
     bool m_afterRest = false;     // a PC-side wait (dwell) ended: the unit holds nothing
     double m_waitUntil = -1;      // a dwell or back-off: nothing from the job before this time
     int m_packetLimit = 1;        // adaptive packet size (commands)
+    LineErrors m_lineErrors;      // damaged packet lines lately: caps m_packetLimit's growth
     JobFigures m_figures;
     JobPace m_pace;
     JobOverride m_override{m_host, m_pace};

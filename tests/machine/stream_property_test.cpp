@@ -377,3 +377,23 @@ TEST(StreamPace, AVectorSlowedFromRestGainsWhatItsAccelerationGives)
 {
     expectKeepsThePace(drawJob(95, 300));
 }
+
+// Property seed 13 (a GVE114 without packets, one-step vectors, the operator's override at
+// 160 %): the override's ceiling counted one round trip per window of commands, as with packets;
+// without them each command waits for its own reply, the unit ran at 160 % and ran dry twice.
+TEST(StreamPace, AnOverrideWithoutPacketsIsKeptWithinOneReplyPerCommand)
+{
+    expectKeepsThePace(drawJob(13, 300));
+}
+
+// Property seed 14 (a GVE64 at 38 400 Bd, 15 ms, one byte in a thousand garbled): packets grew
+// back to 200 commands after each whole one, and a packet of 200 lines arrives whole about one
+// time in twenty; half the wire went to resends. Their growth is now capped by the rate of
+// damaged lines seen (driver/link/lineerrors.h): a quarter of the commands are sent again, a
+// third before.
+TEST(StreamPace, PacketsOnANoisyLinkStaySmallEnoughToArriveWhole)
+{
+    const JobOutcome o = runJob(drawJob(14, 300));
+    EXPECT_TRUE(o.wrong.empty()) << list(o.wrong);
+    EXPECT_LT(o.resendShare, 0.30); // 0.345 without the cap, 0.253 with it
+}
