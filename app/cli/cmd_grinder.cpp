@@ -39,6 +39,7 @@ struct Args
     int form = 1;
     bool hasGo = false;
     std::int64_t goUm = 0;
+    bool sendAnyway = false;
 };
 
 QString usage()
@@ -46,13 +47,14 @@ QString usage()
     return GrinderCli::tr(
         "usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]\n"
         "                          [--baud N] [--header TEXT] [--retries N]\n"
-        "                          [--reply-timeout-ms N] FILE\n"
+        "                          [--reply-timeout-ms N] [--send-anyway] FILE\n"
         "       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]\n"
         "                          [--reply-timeout-ms N]\n"
         "  ping   link check (ENQ/ACK)\n"
         "  save   controller -> PC: write the controller's data to FILE, byte for byte\n"
         "  load   PC -> controller: send FILE unchanged; the 16-character header is --header\n"
-        "         or, as K51LOAD 2.20 did, the file name\n"
+        "         or, as K51LOAD 2.20 did, the file name; the file's length and inner blocks\n"
+        "         are checked first and nothing is sent when they are wrong\n"
         "  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2\n"
         "         waits for a binary frame); --go MM moves the table and waits until reached\n"
         "  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and\n"
@@ -60,6 +62,10 @@ QString usage()
         "  --retries N            repeats after a timeout, NAK or bad checksum (default 3)\n"
         "  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for\n"
         "                         the data after a request)\n"
+        "  --send-anyway          load a file whose inner blocks have a wrong checksum (only\n"
+        "                         if the controller itself gave it to you)\n"
+        "  --go MM                -9999.999 to 9999.999 mm\n"
+        "  --help                 this text\n"
         "Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.\n");
 }
 
@@ -110,8 +116,10 @@ QString parseOption(const QString &option, const QString &value, Args &args)
             return GrinderCli::tr("--form: '%1' is not 1 or 2").arg(value);
     } else if (option == "--go") {
         const auto um = parseMillimetres(value.toStdString());
-        if (!um)
-            return GrinderCli::tr("--go: '%1' is not a position in mm (e.g. 12.5)").arg(value);
+        if (!um || *um > kMaxGoUm || *um < -kMaxGoUm)
+            return GrinderCli::tr("--go: '%1' is not a position from -9999.999 to 9999.999 mm "
+                                  "(e.g. 12.5)")
+                .arg(value);
         args.hasGo = true;
         args.goUm = *um;
     } else {
@@ -120,13 +128,17 @@ QString parseOption(const QString &option, const QString &value, Args &args)
     return QString();
 }
 
-// Returns 0 when parsed, else the exit code (2) after printing the reason.
+// Returns 0 when parsed, -1 after --help, else the exit code (2) after printing the reason.
 int parseArgs(const QStringList &list, Args &args)
 {
     auto fail = [](const QString &reason) {
         err(QStringLiteral("frezka-cli grinder: %1\n").arg(reason));
         return 2;
     };
+    if (list.contains(QLatin1String("--help")) || list.contains(QLatin1String("-h"))) {
+        out(usage());
+        return -1; // done: exit 0
+    }
     args.action = list.value(0);
     if (args.action != "ping" && args.action != "save" && args.action != "load" &&
         args.action != "z") {
@@ -137,6 +149,10 @@ int parseArgs(const QStringList &list, Args &args)
     }
     for (int i = 1; i < list.size(); ++i) {
         const QString &arg = list[i];
+        if (arg == QLatin1String("--send-anyway")) {
+            args.sendAnyway = true;
+            continue;
+        }
         if (!arg.startsWith("--")) {
             if (!args.file.isEmpty())
                 return fail(GrinderCli::tr("unexpected argument '%1'").arg(arg));
@@ -232,15 +248,14 @@ int report(const TransferResult &result)
     return 0;
 }
 
-// Writes atomically: a failed write leaves no half file behind.
-bool writeFile(const QString &path, const QByteArray &data)
+// Writes atomically into the opened `file`: a failed write leaves no half file behind.
+bool writeFile(QSaveFile &file, const QByteArray &data)
 {
-    QSaveFile file(path);
-    if (file.open(QIODevice::WriteOnly) && file.write(data) == data.size() && file.commit())
+    if (file.write(data) == data.size() && file.commit())
         return true;
     err(GrinderCli::tr("frezka-cli grinder: cannot write %1: %2 (the data were received but not "
                        "saved)\n")
-            .arg(path, file.errorString()));
+            .arg(file.fileName(), file.errorString()));
     return false;
 }
 
@@ -255,6 +270,14 @@ int runTransfer(const Args &args)
             return 1;
         }
         data = file.readAll();
+    }
+    // The target is opened before the transfer: an unwritable path fails at once, not after it.
+    QSaveFile target(args.file);
+    if (args.action == "save" && !target.open(QIODevice::WriteOnly)) {
+        err(GrinderCli::tr("frezka-cli grinder: cannot write %1: %2; nothing was asked from the "
+                           "controller\n")
+                .arg(args.file, target.errorString()));
+        return 1;
     }
     RealClock clock;
     SerialTransport transport(args.serial);
@@ -288,12 +311,12 @@ int runTransfer(const Args &args)
     } else {
         const QString header =
             args.hasHeader ? args.header : QFileInfo(args.file).completeBaseName().left(16);
-        session.load(headerFromText(header.toLatin1().toStdString()), data);
+        session.load(headerFromText(header.toLatin1().toStdString()), data, args.sendAnyway);
     }
     if (session.isBusy())
         loop.exec();
     bar.end();
-    if (result.ok() && args.action == "save" && !writeFile(args.file, result.data))
+    if (result.ok() && args.action == "save" && !writeFile(target, result.data))
         return 1;
     const int code = report(result);
     if (code == 0 && args.action == "load" && args.family != Family::HardChrome)
@@ -357,7 +380,7 @@ int runGrinder(const QStringList &list)
 {
     Args args;
     if (const int code = parseArgs(list, args))
-        return code;
+        return code < 0 ? 0 : code;
     return args.action == "z" ? runZ(args) : runTransfer(args);
 }
 

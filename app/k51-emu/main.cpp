@@ -48,7 +48,7 @@ int main(int argc, char *argv[])
     const int baud = options.baud > 0
                          ? options.baud
                          : frezka::grinder::familyInfo(options.config.family).defaultBaud;
-    PtyServer server(options.config, baud, options.fast);
+    PtyServer server(options.config, baud, options.fast, options.baud > 0);
     const std::string path = server.open(error);
     if (path.empty()) {
         std::fprintf(stderr, "k51-emu: %s\n", error.c_str());

@@ -33,9 +33,11 @@ Controller:
   --store FILE            after every accepted load write the received data to FILE
 
 Line:
-  --baud N                pace every byte at 10 bits / N s (default: the family's rate,
-                          ANC 4800, K51 and HEDIT 9600)
-  --fast                  no pacing (for tests)
+  --baud N                the controller's rate: every byte each way takes 10 bits / N s
+                          (default: the family's rate, ANC 4800, K51 and HEDIT 9600). Given
+                          explicitly, a PC port set to another rate garbles every byte both
+                          ways, as a baud rate mismatch on a real line does
+  --fast                  no pacing either way (for tests)
   --reply-delay-ms N      controller's pause before each answer (default 2)
 
 Faults:
@@ -46,7 +48,7 @@ Faults:
   --silent-after N        stop answering after N answers
 
 Other:
-  --verbose               trace every message on stderr
+  --verbose               trace every message, and every 1024 bytes received, on stderr
   --help                  this text
   --version               the version
 )";

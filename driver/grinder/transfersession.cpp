@@ -1,42 +1,8 @@
 #include "driver/grinder/transfersession.h"
 
+#include "driver/grinder/loadcheck.h"
+
 namespace frezka::grinder {
-
-const char *transferErrorId(TransferError error)
-{
-    switch (error) {
-    case TransferError::None:
-        return "ok";
-    case TransferError::NotOpen:
-        return "not-open";
-    case TransferError::Busy:
-        return "busy";
-    case TransferError::InvalidInput:
-        return "invalid-input";
-    case TransferError::Timeout:
-        return "timeout";
-    case TransferError::Rejected:
-        return "rejected";
-    case TransferError::ChecksumFailed:
-        return "checksum";
-    case TransferError::UnexpectedReply:
-        return "unexpected-reply";
-    case TransferError::Transport:
-        return "transport";
-    case TransferError::Cancelled:
-        return "cancelled";
-    }
-    return "unknown";
-}
-
-double estimateSecondsLeft(qint64 doneBytes, qint64 totalBytes, qint64 elapsedUs, int baud)
-{
-    const qint64 left = std::max<qint64>(0, totalBytes - doneBytes);
-    double bytesPerSecond = baud > 0 ? baud / 10.0 : 960.0;
-    if (doneBytes > 0 && elapsedUs > 500000)
-        bytesPerSecond = doneBytes * 1e6 / double(elapsedUs);
-    return left / bytesPerSecond;
-}
 
 TransferSession::TransferSession(Transport &transport, Clock &clock, Family family, QObject *parent)
     : QObject(parent)
@@ -55,6 +21,7 @@ TransferSession::~TransferSession()
 {
     m_clock.cancel(m_timer);
     m_clock.cancel(m_pauseTimer);
+    m_clock.cancel(m_progressTimer);
 }
 
 void TransferSession::setFamily(Family family)
@@ -75,6 +42,8 @@ bool TransferSession::start(Operation operation)
     m_attempt = 0;
     m_inFlight = 0;
     m_startUs = m_clock.nowUs();
+    m_wire.setBaud(m_transport.baud());
+    m_wire.reset(m_startUs);
     std::vector<DecodeEvent> stale;
     m_decoder.reset(stale); // bytes from before this operation are not part of it
     if (!m_transport.isOpen()) {
@@ -83,30 +52,6 @@ bool TransferSession::start(Operation operation)
         return false;
     }
     return true;
-}
-
-QString TransferSession::describeImage(const ImageReport &report)
-{
-    if (!report.hasBlocks)
-        return tr("no inner blocks (%1 bytes)").arg(report.size);
-    const std::size_t bad = report.badBlocks();
-    if (bad == 0)
-        return tr("%1 blocks, all valid").arg(report.blocks.size());
-    QStringList problems;
-    for (const BlockReport &block : report.blocks) {
-        if (block.ok())
-            continue;
-        const QString id =
-            QStringLiteral("0x") +
-            QString::number(block.id, 16).rightJustified(2, QLatin1Char('0')).toUpper();
-        problems << (!block.startOk ? tr("%1 (no AA)").arg(id)
-                     : !block.idOk  ? tr("%1 (wrong block id)").arg(id)
-                                    : tr("%1 (checksum)").arg(id));
-    }
-    return tr("%1 of %2 blocks invalid: %3 (the data are kept unchanged)")
-        .arg(bad)
-        .arg(report.blocks.size())
-        .arg(problems.join(QLatin1String(", ")));
 }
 
 void TransferSession::ping()
@@ -121,7 +66,7 @@ void TransferSession::save()
         sendLater(Frame::control(familyInfo(m_family).framing, Code::Enq), State::Enquiring);
 }
 
-void TransferSession::load(const Header &header, const QByteArray &data)
+void TransferSession::load(const Header &header, const QByteArray &data, bool sendAnyway)
 {
     if (!start(Operation::Load))
         return;
@@ -131,30 +76,18 @@ void TransferSession::load(const Header &header, const QByteArray &data)
     m_result.header = m_dataFrame.header;
     m_result.data = data;
     m_result.image = checkImage(bytes);
-    QString invalid;
-    if (data.isEmpty()) {
-        invalid = tr("The file is empty; there is nothing to send.");
-    } else if (validateFrame(m_dataFrame) != FrameError::None) {
-        invalid = tr("The data are too long for one message: %1 bytes, at most %2.")
-                      .arg(data.size())
-                      .arg(kMaxPayload - m_dataFrame.payloadSize() + data.size());
-    } else if (m_family == Family::Anc && std::size_t(data.size()) != kProgramImageSize &&
-               std::size_t(data.size()) != kAncImageSizeWithWheel) {
-        invalid = tr("ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506); the file "
-                     "has %1. Choose a file saved from an ANC control.")
-                      .arg(data.size());
-    } else if (m_family == Family::HardChrome && std::size_t(data.size()) != kHardChromeSize) {
-        invalid = tr("HEDIT data have 46 bytes (0x2E); the file has %1. Choose a file saved "
-                     "with HEDIT.")
-                      .arg(data.size());
-    }
-    if (!invalid.isEmpty()) {
-        m_state = State::Enquiring;
-        finish(TransferError::InvalidInput, invalid);
+    LoadCheck check = LoadCheck::check(m_family, data, m_result.image, sendAnyway, m_reportedSizes);
+    if (check.ok() && validateFrame(m_dataFrame) != FrameError::None)
+        check.refusal = tr("The data are too long for one message: %1 bytes, at most %2.")
+                            .arg(data.size())
+                            .arg(kMaxPayload - m_dataFrame.payloadSize() + data.size());
+    if (!check.ok()) {
+        m_state = State::Enquiring; // finish() reports from a busy state
+        finish(TransferError::InvalidInput, check.refusal);
         return;
     }
-    if (!m_result.image.ok())
-        emit traced(tr("Warning: inner blocks: %1").arg(describeImage(m_result.image)));
+    if (!check.warning.isEmpty())
+        emit traced(tr("Warning: %1").arg(check.warning));
     sendLater(Frame::control(info.framing, Code::Enq), State::Enquiring);
 }
 
@@ -177,14 +110,44 @@ QString TransferSession::sentName() const
     return QString::fromStdString(codeName(m_lastSent.framing, std::uint8_t(m_lastSent.code)));
 }
 
-void TransferSession::arm(int timeoutMs)
+void TransferSession::arm(int timeoutMs, std::int64_t extraUs)
 {
     m_clock.cancel(m_timer);
     m_timeoutMs = timeoutMs;
-    m_timer = m_clock.callAfter(std::int64_t(timeoutMs) * 1000, [this] {
+    m_timer = m_clock.callAfter(extraUs + std::int64_t(timeoutMs) * 1000, [this] {
         m_timer = 0;
         onTimeout();
     });
+}
+
+void TransferSession::armReplyWait()
+{
+    const std::int64_t now = m_clock.nowUs();
+    const std::int64_t wireLeftUs = std::max<std::int64_t>(0, m_wire.endUs() - now);
+    if (m_inFlight > 0) {
+        // The port still holds bytes: guard it for the wire time of all it holds plus a gap.
+        const std::int64_t guardUs = wireLeftUs + m_inFlight * m_wire.byteUs();
+        m_requestDeadlineUs = now + guardUs + std::int64_t(m_timing.gapTimeoutMs) * 1000;
+        arm(m_timing.gapTimeoutMs, guardUs);
+        return;
+    }
+    const std::int64_t startUs = wireLeftUs + std::int64_t(m_timing.adapterLatencyMs) * 1000;
+    if (m_state == State::Requesting)
+        m_requestDeadlineUs = now + startUs + std::int64_t(m_timing.firstByteTimeoutMs) * 1000;
+    arm(m_waitMs, startUs);
+}
+
+void TransferSession::tickProgress()
+{
+    m_progressTimer = 0;
+    if (m_state != State::Sending)
+        return;
+    const std::int64_t now = m_clock.nowUs();
+    const qint64 notGone = m_inFlight + (m_wire.acceptedBytes() - m_wire.sentBy(now));
+    emit progressed(std::clamp<qint64>(m_sentSize - notGone, 0, m_sentSize), m_sentSize);
+    constexpr std::int64_t kProgressTickUs = 200'000;
+    if (notGone > 0)
+        m_progressTimer = m_clock.callAfter(kProgressTickUs, [this] { tickProgress(); });
 }
 
 void TransferSession::sendLater(const Frame &frame, State next, int pauseMs)
@@ -203,20 +166,13 @@ void TransferSession::sendLater(const Frame &frame, State next, int pauseMs)
             m_sentSize = qint64(wire.size());
             emit progressed(0, m_sentSize);
         }
-        switch (next) {
-        case State::Requesting:
-            m_requestDeadlineUs =
-                m_clock.nowUs() + std::int64_t(m_timing.firstByteTimeoutMs) * 1000;
-            arm(m_timing.firstByteTimeoutMs);
-            break;
-        case State::Sending:
-            arm(m_timing.storeTimeoutMs);
-            break;
-        default:
-            arm(m_timing.replyTimeoutMs);
-            break;
-        }
+        m_waitMs = next == State::Requesting ? m_timing.firstByteTimeoutMs
+                   : next == State::Sending  ? m_timing.storeTimeoutMs
+                                             : m_timing.replyTimeoutMs;
         m_inFlight += qint64(wire.size());
+        armReplyWait();
+        if (next == State::Sending)
+            m_progressTimer = m_clock.callAfter(0, [this] { tickProgress(); });
         emit traced(QStringLiteral("-> %1").arg(frameName(frame)));
         m_transport.write(
             QByteArray(reinterpret_cast<const char *>(wire.data()), qsizetype(wire.size())));
@@ -287,6 +243,7 @@ void TransferSession::onFrame(const Frame &frame)
             m_result.data = QByteArray(reinterpret_cast<const char *>(frame.data.data()),
                                        qsizetype(frame.data.size()));
             m_result.image = checkImage(frame.data);
+            m_reportedSizes.insert(m_result.data.size());
             const auto wireSize = qint64(4 + frame.payloadSize() + checksumSize(info.framing));
             emit progressed(wireSize, wireSize);
             sendLater(Frame::control(info.framing, Code::Ack), State::AckingSave);
@@ -378,6 +335,15 @@ void TransferSession::retryOrFail(TransferError error, const QString &message, b
 void TransferSession::onTimeout()
 {
     const double seconds = m_timeoutMs / 1000.0;
+    if (m_inFlight > 0 && m_state != State::AckingSave) {
+        finish(TransferError::Transport,
+               tr("The port %1 stopped taking data: %2 bytes of %3 were not sent. Check that the "
+                  "cable and the USB adapter are plugged in.")
+                   .arg(m_transport.name())
+                   .arg(m_inFlight)
+                   .arg(sentName()));
+        return;
+    }
     switch (m_state) {
     case State::Enquiring:
         retryOrFail(TransferError::Timeout,
@@ -428,9 +394,11 @@ void TransferSession::onTimeout()
 void TransferSession::onWritten(qint64 bytes)
 {
     m_inFlight = std::max<qint64>(0, m_inFlight - bytes);
-    if (m_state == State::Sending) {
-        emit progressed(std::max<qint64>(0, m_sentSize - m_inFlight), m_sentSize);
-        arm(m_timing.storeTimeoutMs);
+    m_wire.accepted(m_clock.nowUs(), bytes);
+    if (m_state == State::Enquiring || m_state == State::Requesting || m_state == State::Sending) {
+        // Only while nothing of the reply has come: a message under way keeps its gap timer.
+        if (m_state != State::Requesting || m_decoder.pendingBytes() == 0)
+            armReplyWait();
     } else if (m_state == State::AckingSave && m_inFlight == 0) {
         finish(TransferError::None);
     }
@@ -446,7 +414,10 @@ void TransferSession::finish(TransferError error, const QString &message)
 {
     m_clock.cancel(m_timer);
     m_clock.cancel(m_pauseTimer);
-    m_timer = m_pauseTimer = 0;
+    m_clock.cancel(m_progressTimer);
+    m_timer = m_pauseTimer = m_progressTimer = 0;
+    if (error == TransferError::None && m_operation == Operation::Load)
+        emit progressed(m_sentSize, m_sentSize);
     m_state = State::Idle;
     m_result.error = error;
     m_result.elapsedUs = m_clock.nowUs() - m_startUs;

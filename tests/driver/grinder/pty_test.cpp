@@ -6,6 +6,7 @@
 #include "driver/grinder/transfersession.h"
 #include "driver/grinder/zlinksession.h"
 
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -26,6 +27,8 @@ private slots:
     void cliZPositionBothForms();
     void sessionOnSerialPortWithNoise();
     void emulatorExitsCleanlyOnSigterm();
+    void cliHelpGoRangeAndUnwritableTarget();
+    void cliRefusesAWrongLengthBeforeSendingAndSendsAnywayOnRequest();
 
 private:
     QTemporaryDir m_dir;
@@ -39,7 +42,9 @@ void GrinderPtyTest::cliSaveThenLoadRoundTripsByteExactly()
     const Bytes generated = generatedImage(Family::K51, kK51ImageSize);
     image =
         QByteArray(reinterpret_cast<const char *>(generated.data()), qsizetype(generated.size()));
-    image[100] = char(0xAA); // arbitrary content, inner AA bytes included
+    // Arbitrary content, inner AA bytes included; the block's 8-bit sum stays as it was.
+    image[101] = char(image[100] + image[101] - char(0xAA));
+    image[100] = char(0xAA);
     QVERIFY(writeAll(file("held.bin"), image));
 
     EmuProcess emu({"--fast", "--image", file("held.bin"), "--header", "ORIGINAL", "--store",
@@ -184,6 +189,54 @@ void GrinderPtyTest::emulatorExitsCleanlyOnSigterm()
     for (const char *option : {"--family", "--image", "--header", "--konfig6", "--zform", "--baud",
                                "--fast", "--naks", "--corrupt", "--noise", "--silent", "--store"})
         QVERIFY2(text.contains(QLatin1String(option)), option);
+}
+
+// Issue 22: --help exits 0; --go is held to the window's range; an unwritable target fails
+// before the controller is asked (a silent controller proves nothing was waited for).
+void GrinderPtyTest::cliHelpGoRangeAndUnwritableTarget()
+{
+    QCOMPARE(runCli({"grinder", "--help"}).exitCode, 0);
+    CliRun help = runCli({"grinder", "load", "--port", "/dev/null", "--help"});
+    QCOMPARE(help.exitCode, 0);
+    QVERIFY2(help.out.contains("--send-anyway"), qPrintable(help.out));
+    CliRun far = runCli({"grinder", "z", "--port", "/dev/null", "--go", "99999"});
+    QCOMPARE(far.exitCode, 2);
+    QVERIFY2(far.err.contains("-9999.999 to 9999.999"), qPrintable(far.err));
+    EmuProcess emu({"--fast", "--silent"});
+    QVERIFY(!emu.path().isEmpty());
+    QElapsedTimer timer;
+    timer.start();
+    CliRun save = runCli({"grinder", "save", "--port", emu.path(), file("no-such-dir/out.bin")});
+    QCOMPARE(save.exitCode, 1);
+    QVERIFY2(save.err.contains("nothing was asked from the controller"), qPrintable(save.err));
+    QVERIFY2(timer.elapsed() < 3000, "the save waited for the controller first");
+}
+
+// Issue 22: a 1000-byte file is refused as K51 before a byte is sent (the emulator's verbose
+// trace shows no message arrived); a block checksum error needs --send-anyway.
+void GrinderPtyTest::cliRefusesAWrongLengthBeforeSendingAndSendsAnywayOnRequest()
+{
+    QVERIFY(writeAll(file("short.bin"), QByteArray(1000, 'x')));
+    EmuProcess emu({"--fast", "--verbose", "--store", file("anyway-stored.bin")});
+    QVERIFY(!emu.path().isEmpty());
+    CliRun load = runCli({"grinder", "load", "--port", emu.path(), file("short.bin")});
+    QCOMPARE(load.exitCode, 1);
+    QVERIFY2(load.err.contains("(invalid-input)") && load.err.contains("the file has 1000"),
+             qPrintable(load.err));
+    QTest::qWait(200);
+    QVERIFY2(!emu.errorOutput().contains("rx"), "bytes reached the controller");
+
+    Bytes image = generatedImage(Family::K51, kK51ImageSize);
+    image[7 + 3 * kTchinBlockSize + 100] ^= 0x01; // block 0x03's checksum now fails
+    const QByteArray data(reinterpret_cast<const char *>(image.data()), qsizetype(image.size()));
+    QVERIFY(writeAll(file("bad-block.bin"), data));
+    CliRun refused = runCli({"grinder", "load", "--port", emu.path(), file("bad-block.bin")});
+    QCOMPARE(refused.exitCode, 1);
+    QVERIFY2(refused.err.contains("wrong checksum: 0x03"), qPrintable(refused.err));
+    CliRun anyway =
+        runCli({"grinder", "load", "--port", emu.path(), "--send-anyway", file("bad-block.bin")});
+    QCOMPARE(anyway.exitCode, 0);
+    QTRY_COMPARE(readAll(file("anyway-stored.bin")), data);
 }
 
 QTEST_GUILESS_MAIN(GrinderPtyTest)

@@ -148,9 +148,17 @@ TEST(GrinderSession, ImageRoundTripIsByteExactEvenWithBadInnerBlocks)
     EXPECT_EQ(saved.image.summary(), "1 of 20 blocks invalid: 0x02 (checksum)");
 
     Rig to(config(Family::K51));
-    ASSERT_TRUE(to.load(headerText(saved.header), toBytes(saved.data)).ok());
+    const TransferResult refused = to.load(headerText(saved.header), toBytes(saved.data));
+    EXPECT_EQ(refused.error, TransferError::InvalidInput);
+    EXPECT_TRUE(refused.message.contains("wrong checksum: 0x02")) << refused.message.toStdString();
+    EXPECT_TRUE(refused.message.contains("Send anyway")) << refused.message.toStdString();
+    EXPECT_EQ(to.transport.deliveredToController(), 0);
+    to.result.reset();
+    to.session.load(saved.header, saved.data, /*sendAnyway=*/true);
+    ASSERT_TRUE(to.run().ok());
     EXPECT_EQ(to.transport.emulator().image(), image);
-    EXPECT_TRUE(to.trace.join('\n').contains("1 of 20 blocks invalid: 0x02 (checksum)"))
+    EXPECT_TRUE(
+        to.trace.join('\n').contains("Sent anyway: inner blocks with a wrong checksum: 0x02"))
         << to.trace.join('\n').toStdString();
 }
 
@@ -260,6 +268,58 @@ TEST(GrinderSession, WrongSizedFilesAreRefusedBeforeSending)
     EXPECT_EQ(k51.transport.emulator().loadsStored(), 0);
 }
 
+// Issue 22: a K51 load checks length and inner blocks before a single byte goes out.
+TEST(GrinderSession, K51FilesAreCheckedBeforeAnyByteIsSent)
+{
+    Rig rig(config(Family::K51));
+    TransferResult r = rig.load("", Bytes(1000, 1));
+    EXPECT_EQ(r.error, TransferError::InvalidInput);
+    EXPECT_TRUE(r.message.contains("21767 bytes (0x5507); the file has 1000"))
+        << r.message.toStdString();
+    EXPECT_EQ(rig.transport.deliveredToController(), 0);
+    EXPECT_TRUE(rig.progress.empty());
+
+    r = rig.load("", generatedImage(Family::Anc, kAncImageSizeWithWheel));
+    EXPECT_EQ(r.error, TransferError::InvalidInput);
+    EXPECT_TRUE(r.message.contains("length of ANC data: is the wrong system selected?"))
+        << r.message.toStdString();
+
+    r = rig.load("", Bytes(kK51ImageSize, 0x11)); // the right length, no block anywhere
+    EXPECT_EQ(r.error, TransferError::InvalidInput);
+    EXPECT_TRUE(r.message.contains("20 of the 20 inner program blocks lack"))
+        << r.message.toStdString();
+    EXPECT_EQ(rig.transport.deliveredToController(), 0);
+    EXPECT_EQ(rig.transport.emulator().loadsStored(), 0);
+    EXPECT_TRUE(rig.load("", generatedImage(Family::K51, kK51ImageSize)).ok());
+}
+
+// "Send anyway" passes an odd length only when this controller reported it.
+TEST(GrinderSession, SendAnywayOnlyForALengthTheControllerReported)
+{
+    EmulatorConfig c = config(Family::K51);
+    c.image = generatedImage(Family::K51, kProgramImageSize); // this controller has 0x5500
+    Rig rig(c);
+    const Bytes odd = generatedImage(Family::K51, kProgramImageSize + 3);
+    TransferResult r = rig.load("", odd);
+    EXPECT_EQ(r.error, TransferError::InvalidInput);
+    rig.result.reset();
+    rig.session.load(Header{},
+                     QByteArray(reinterpret_cast<const char *>(odd.data()), qsizetype(odd.size())),
+                     true);
+    EXPECT_EQ(rig.run().error, TransferError::InvalidInput); // never reported: refused anyway
+
+    const TransferResult saved = rig.save();
+    ASSERT_TRUE(saved.ok());
+    r = rig.load("", toBytes(saved.data));
+    EXPECT_EQ(r.error, TransferError::InvalidInput);
+    EXPECT_TRUE(r.message.contains("This controller reported this length"))
+        << r.message.toStdString();
+    rig.result.reset();
+    rig.session.load(saved.header, saved.data, true);
+    ASSERT_TRUE(rig.run().ok());
+    EXPECT_EQ(rig.transport.emulator().loadsStored(), 1);
+}
+
 TEST(GrinderSession, TableModeRefusesAProgramRequest)
 {
     EmulatorConfig c = config(Family::K51);
@@ -323,4 +383,72 @@ TEST(GrinderSession, LateDuplicateAckIsNotTakenForTheAnswer)
     EXPECT_EQ(loader.transport.emulator().image(), file);
     EXPECT_TRUE(loader.trace.join('\n').contains("ACK ignored"))
         << loader.trace.join('\n').toStdString();
+}
+
+// Issue 22: a port that takes the whole 21 KB message at once (a USB adapter's buffer) reports
+// it written 22.7 s before its last byte has left at 9600 Bd. The store wait must start on the
+// wire: the load is sent once and the progress follows the bytes the controller has received.
+TEST(GrinderSession, LoadThroughALargePortBufferIsSentOnceAndProgressFollowsTheWire)
+{
+    EmulatorConfig c = config(Family::K51);
+    c.image = Bytes(kK51ImageSize, 0);
+    Rig rig(c);
+    rig.transport.setOsBufferBytes(1 << 20);
+    qint64 deliveredBefore = -1;
+    qint64 worstLagBytes = 0;
+    int samples = 0;
+    QObject::connect(&rig.session, &TransferSession::progressed, [&](qint64 done, qint64) {
+        const qint64 delivered = rig.transport.deliveredToController();
+        if (deliveredBefore < 0)
+            deliveredBefore = delivered; // the data message starts here
+        worstLagBytes = std::max(worstLagBytes, std::abs(done - (delivered - deliveredBefore)));
+        ++samples;
+    });
+    const Bytes file = generatedImage(Family::K51, kK51ImageSize);
+    const TransferResult r = rig.load("ONCE", file);
+    ASSERT_TRUE(r.ok()) << r.message.toStdString() << rig.trace.join('\n').toStdString();
+    EXPECT_EQ(r.retries, 0);
+    EXPECT_EQ(rig.transport.emulator().loadsStored(), 1);
+    EXPECT_EQ(rig.transport.emulator().image(), file);
+    EXPECT_GE(r.elapsedUs, 22'000'000);
+    EXPECT_LE(r.elapsedUs, 25'000'000);
+    EXPECT_GT(samples, 100); // at least every 0.2 s of the 22.7 s
+    EXPECT_LE(worstLagBytes, 960) << "progress strayed more than 1 s of wire from the controller";
+}
+
+// A port that stops taking bytes (adapter unplugged) is reported as such, not as a silent
+// controller, once the wire time of what it holds and the gap timeout have passed.
+TEST(GrinderSession, APortThatStopsTakingBytesIsReported)
+{
+    Rig rig(config(Family::K51));
+    rig.result.reset();
+    const Bytes file = generatedImage(Family::K51, kK51ImageSize);
+    rig.session.load(
+        headerFromText("STALL"), // 4 KB of it fit in the port
+        QByteArray(reinterpret_cast<const char *>(file.data()), qsizetype(file.size())));
+    rig.clock.advance(3'000'000); // ENQ, ACK and the first 2.8 KB of the data message are out
+    ASSERT_TRUE(rig.session.isBusy());
+    rig.transport.setWireStopped(true);
+    const TransferResult r = rig.run();
+    EXPECT_EQ(r.error, TransferError::Transport);
+    EXPECT_TRUE(r.message.contains("stopped taking data")) << r.message.toStdString();
+}
+
+// The controller at 4800 Bd, the PC at 9600 Bd: nothing gets through, and the session says to
+// check the line settings rather than hanging or pretending.
+TEST(GrinderSession, ABaudRateMismatchGetsNoAnswer)
+{
+    Rig rig(config(Family::K51));
+    rig.transport.setControllerBaud(4800);
+    rig.result.reset();
+    rig.session.ping();
+    const TransferResult r = rig.run();
+    EXPECT_EQ(r.error, TransferError::Timeout) << rig.trace.join('\n').toStdString();
+    EXPECT_TRUE(r.message.contains("9600 Bd")) << r.message.toStdString();
+    EXPECT_EQ(rig.transport.emulator().loadsStored(), 0);
+
+    Rig matched(config(Family::K51), 4800);
+    matched.transport.setControllerBaud(4800);
+    matched.session.ping();
+    EXPECT_TRUE(matched.run().ok());
 }
