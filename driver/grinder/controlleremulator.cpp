@@ -86,6 +86,8 @@ void ControllerEmulator::feed(const std::uint8_t *bytes, std::size_t size)
         break;
     }
     std::vector<DecodeEvent> events;
+    if (size > 0)
+        m_lastRxUs = m_nowUs;
     m_decoder.feed(bytes, size, events);
     for (const DecodeEvent &event : events) {
         switch (event.kind) {
@@ -193,6 +195,11 @@ void ControllerEmulator::reply(const Bytes &bytes)
 void ControllerEmulator::advance(std::int64_t us)
 {
     m_nowUs += us;
+    if (m_decoder.pendingBytes() > 0 && m_nowUs - m_lastRxUs > kControllerGapUs) {
+        std::vector<DecodeEvent> dropped;
+        m_decoder.reset(dropped);
+        log("incomplete message dropped after a gap");
+    }
     if (m_config.mode != TransferMode::ZPosition)
         return;
     if (m_config.zForm == 1) {

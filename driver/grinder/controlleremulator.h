@@ -92,6 +92,7 @@ private:
     const FamilyInfo &m_info;
     FrameDecoder m_decoder;
     std::int64_t m_nowUs = 0;
+    std::int64_t m_lastRxUs = 0;
     std::deque<std::pair<std::int64_t, Bytes>> m_scheduled; // due time, bytes
     Bytes m_output;
     std::vector<std::string> m_log;

@@ -59,6 +59,12 @@ void EmulatorTransport::write(const QByteArray &bytes)
     });
 }
 
+void EmulatorTransport::discardOutput()
+{
+    m_appQueue.clear();
+    m_toController.clear();
+}
+
 qint64 EmulatorTransport::takeIntoOsBuffer()
 {
     const qint64 space = m_osBufferBytes - qint64(m_toController.size());

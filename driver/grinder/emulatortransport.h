@@ -28,6 +28,7 @@ public:
     void close() override;
     bool isOpen() const override { return m_open; }
     void write(const QByteArray &bytes) override;
+    void discardOutput() override;
     int baud() const override { return m_baud; }
     QString name() const override { return tr("emulator"); }
 

@@ -8,6 +8,7 @@
 
 #include "driver/grinder/frame.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,6 +34,10 @@ struct FamilyInfo
 };
 
 const FamilyInfo &familyInfo(Family family);
+
+// Adopted reading (the manual is silent): a controller drops a message that stops arriving
+// for this long, so a cancelled load does not swallow the next ENQ.
+constexpr std::int64_t kControllerGapUs = 1'000'000;
 std::optional<Family> familyFromId(std::string_view id);
 
 } // namespace frezka::grinder

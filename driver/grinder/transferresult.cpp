@@ -30,6 +30,19 @@ const char *transferErrorId(TransferError error)
     return "unknown";
 }
 
+QString familyName(Family family)
+{
+    switch (family) {
+    case Family::Anc:
+        return QStringLiteral("ANC");
+    case Family::K51:
+        return QStringLiteral("K51");
+    case Family::HardChrome:
+        return QStringLiteral("HEDIT");
+    }
+    return {};
+}
+
 double estimateSecondsLeft(qint64 doneBytes, qint64 totalBytes, qint64 elapsedUs, int baud)
 {
     const qint64 left = std::max<qint64>(0, totalBytes - doneBytes);

@@ -91,10 +91,37 @@ void TransferSession::load(const Header &header, const QByteArray &data, bool se
     sendLater(Frame::control(info.framing, Code::Enq), State::Enquiring);
 }
 
-void TransferSession::cancel()
+void TransferSession::cancel(const QString &reason)
 {
-    if (isBusy())
-        finish(TransferError::Cancelled, tr("Cancelled."));
+    if (!isBusy())
+        return;
+    QString message = reason.isEmpty() ? tr("Cancelled.") : reason;
+    const std::int64_t now = m_clock.nowUs();
+    if (m_state == State::Requesting || m_state == State::AckingSave) {
+        // The controller's data message runs to its end whatever the PC does.
+        const std::size_t total = m_decoder.pendingTotal() > 0
+                                      ? m_decoder.pendingTotal()
+                                      : familyInfo(m_family).defaultSize + 22;
+        const std::size_t left = total - std::min(total, m_decoder.pendingBytes());
+        if (m_state == State::Requesting && left > 0) {
+            m_result.controllerBusyUs = qint64(left) * m_wire.byteUs();
+            message += QLatin1Char(' ') +
+                       tr("The controller may still be sending its data for about %1 s; the link "
+                          "check waits until then.")
+                           .arg(qRound(m_result.controllerBusyUs / 1e6));
+        }
+    } else if (m_state == State::Sending &&
+               (m_inFlight > 0 || m_wire.sentBy(now) < m_wire.acceptedBytes())) {
+        m_transport.discardOutput();
+        // The controller drops an incomplete message after kControllerGapUs of silence.
+        m_result.controllerBusyUs = kControllerGapUs + 500'000;
+        message += QLatin1Char(' ') + tr("The controller received only part of the data and "
+                                         "discards it; the programs it holds are unchanged.");
+    } else if (m_state == State::Sending) {
+        message += QLatin1Char(' ') + tr("All data had been sent: the controller may have "
+                                         "stored them. Check its programs.");
+    }
+    finish(TransferError::Cancelled, message);
 }
 
 QString TransferSession::frameName(const Frame &frame) const
@@ -249,9 +276,13 @@ void TransferSession::onFrame(const Frame &frame)
             sendLater(Frame::control(info.framing, Code::Ack), State::AckingSave);
         } else if (frame.code == Code::Nak) {
             retryOrFail(TransferError::Rejected,
-                        tr("The controller answered NAK to %1: is it set to program transfer "
-                           "(KONFIG6) with the selector in PGN?")
-                            .arg(sentName()));
+                        m_family == Family::Anc
+                            ? tr("The controller answered NAK to %1: is the ANC set up for "
+                                 "program transfer and not grinding?")
+                                  .arg(sentName())
+                            : tr("The controller answered NAK to %1: is it set to program "
+                                 "transfer (KONFIG6) with the selector in PGN?")
+                                  .arg(sentName()));
         } else if (frame.code == Code::Ack) {
             // A late answer to a repeated ENQ: never an answer to a request.
             emit traced(tr("<- ACK ignored: a late answer to an earlier message"));
@@ -285,10 +316,15 @@ void TransferSession::onFrame(const Frame &frame)
 void TransferSession::onBadChecksum(const DecodeEvent &event)
 {
     ++m_result.checksumFailures;
-    const QString text = tr("Bad checksum in %1 from the controller: received %2, computed %3.")
-                             .arg(frameName(event.frame))
-                             .arg(QString::number(event.receivedSum, 16).toUpper())
-                             .arg(QString::number(event.expectedSum, 16).toUpper());
+    QString text = tr("Bad checksum in %1 from the controller: received %2, computed %3.")
+                       .arg(frameName(event.frame))
+                       .arg(QString::number(event.receivedSum, 16).toUpper())
+                       .arg(QString::number(event.expectedSum, 16).toUpper());
+    if (event.frame.payloadSize() == 0) // a short reply in the other family's framing
+        text = tr("The controller's reply does not fit the %1 messages: is the wrong system "
+                  "selected (ANC or K51)? Choose the system the control is, then try again. "
+                  "(%2)")
+                   .arg(familyName(m_family), text);
     emit traced(QStringLiteral("<- ") + text);
     if (m_state == State::Enquiring || m_state == State::Requesting || m_state == State::Sending)
         retryOrFail(TransferError::ChecksumFailed, text, m_state == State::Requesting);
@@ -347,10 +383,18 @@ void TransferSession::onTimeout()
     switch (m_state) {
     case State::Enquiring:
         retryOrFail(TransferError::Timeout,
-                    tr("No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd) "
-                       "and that the controller is set to transfer (KONFIG6).")
-                        .arg(seconds)
-                        .arg(m_transport.baud()));
+                    m_family == Family::Anc
+                        ? tr("No answer to ENQ within %1 s. Check the cable, the line settings "
+                             "(%2 Bd), the selected system (ANC) and that the ANC is not "
+                             "grinding.")
+                              .arg(seconds)
+                              .arg(m_transport.baud())
+                        : tr("No answer to ENQ within %1 s. Check the cable, the line settings "
+                             "(%2 Bd), the selected system (%3) and that the controller is set "
+                             "to transfer (KONFIG6).")
+                              .arg(seconds)
+                              .arg(m_transport.baud())
+                              .arg(familyName(m_family)));
         break;
     case State::Requesting: {
         const std::size_t got = m_decoder.pendingBytes();

@@ -77,10 +77,13 @@ struct TransferResult
     int checksumFailures = 0;
     qint64 noiseBytes = 0;
     qint64 elapsedUs = 0;
+    qint64 controllerBusyUs = 0; // cancelled: how long the controller goes on sending
     bool ok() const { return error == TransferError::None; }
     bool operator==(const TransferResult &) const = default;
 };
 
+// "K51", "ANC", "HEDIT": the system as the operator knows it.
+QString familyName(Family family);
 // Seconds left from the rate so far, or from the baud rate (8N1) before there is one.
 double estimateSecondsLeft(qint64 doneBytes, qint64 totalBytes, qint64 elapsedUs, int baud);
 
@@ -107,7 +110,9 @@ public:
     // data are checked first (LoadCheck) and refused with InvalidInput before any byte is
     // sent; `sendAnyway` lets through what LoadCheck allows it to.
     void load(const Header &header, const QByteArray &data, bool sendAnyway = false);
-    void cancel();
+    // Stops the operation: what the port has not sent is dropped, and the result's message
+    // (`reason`, else "Cancelled.") says what the controller is still doing.
+    void cancel(const QString &reason = QString());
 
 signals:
     void progressed(qint64 doneBytes, qint64 totalBytes);

@@ -452,3 +452,60 @@ TEST(GrinderSession, ABaudRateMismatchGetsNoAnswer)
     matched.session.ping();
     EXPECT_TRUE(matched.run().ok());
 }
+
+// Issue 22: the session set to K51 against an ANC controller says "wrong system", not a
+// checksum in hex; an ANC is never told about KONFIG6, which it does not have.
+TEST(GrinderSession, AWrongSystemIsNamedAndAncMessagesSayNoKonfig6)
+{
+    VirtualClock clock;
+    EmulatorTransport transport(clock, config(Family::Anc), 4800);
+    transport.open(nullptr);
+    TransferSession session(transport, clock, Family::K51);
+    std::optional<TransferResult> result;
+    QObject::connect(&session, &TransferSession::finished,
+                     [&](const TransferResult &r) { result = r; });
+    session.ping();
+    clock.runUntil([&] { return result.has_value(); }, kLimitUs);
+    ASSERT_TRUE(result.has_value());
+    EXPECT_FALSE(result->ok());
+    EXPECT_TRUE(result->message.contains("is the wrong system selected (ANC or K51)?"))
+        << result->message.toStdString();
+
+    EmulatorConfig silent = config(Family::Anc);
+    silent.silentAfterReplies = 0;
+    Rig anc(silent, 4800);
+    anc.session.ping();
+    const TransferResult r = anc.run();
+    EXPECT_EQ(r.error, TransferError::Timeout);
+    EXPECT_FALSE(r.message.contains("KONFIG6")) << r.message.toStdString();
+    EXPECT_TRUE(r.message.contains("not grinding")) << r.message.toStdString();
+}
+
+// Cancel in the middle of a load: the port's unsent bytes are dropped, the controller drops
+// its incomplete message and stores nothing, the result says so, and the link works after.
+TEST(GrinderSession, CancelDuringALoadDropsTheRestAndSaysWhatTheControllerDoes)
+{
+    Rig rig(config(Family::K51));
+    rig.transport.setOsBufferBytes(1 << 20);
+    const Bytes file = generatedImage(Family::K51, kK51ImageSize);
+    rig.result.reset();
+    rig.session.load(
+        headerFromText("CANCEL"),
+        QByteArray(reinterpret_cast<const char *>(file.data()), qsizetype(file.size())));
+    rig.clock.advance(5'000'000);
+    ASSERT_TRUE(rig.session.isBusy());
+    rig.session.cancel();
+    ASSERT_TRUE(rig.result.has_value());
+    EXPECT_EQ(rig.result->error, TransferError::Cancelled);
+    EXPECT_TRUE(rig.result->message.contains("received only part of the data"))
+        << rig.result->message.toStdString();
+    EXPECT_GT(rig.result->controllerBusyUs, 0);
+    const qint64 delivered = rig.transport.deliveredToController();
+    rig.clock.advance(rig.result->controllerBusyUs);
+    EXPECT_LE(rig.transport.deliveredToController(), delivered + 2); // nothing more went out
+    EXPECT_LT(delivered, 21789 / 2);
+    EXPECT_EQ(rig.transport.emulator().loadsStored(), 0);
+    rig.result.reset();
+    rig.session.ping();
+    EXPECT_TRUE(rig.run().ok());
+}
