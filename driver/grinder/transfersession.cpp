@@ -483,7 +483,10 @@ void TransferSession::finish(TransferError error, const QString &message)
         }
     }
     emit traced(m_result.message);
-    emit finished(m_result);
+    // A copy: a slot may start the next operation, which resets m_result under later slots
+    // (the window's link check did, and the panel then saw a ping instead of the failure).
+    const TransferResult result = m_result;
+    emit finished(result);
 }
 
 } // namespace frezka::grinder

@@ -5,10 +5,12 @@
 #include "gui/grinder/serialmonitor.h"
 #include "gui/grinder/zpositionpanel.h"
 
+#include <QCloseEvent>
 #include <QComboBox>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
 #include <QTabWidget>
@@ -27,6 +29,7 @@ GrinderWindow::GrinderWindow(QWidget *parent)
     , m_connectButton(new QPushButton(tr("Connect"), this))
     , m_connection(new QLabel(this))
     , m_linkTimer(new QTimer(this))
+    , m_resumeTimer(new QTimer(this))
     , m_tabs(new QTabWidget(this))
     , m_transferPanel(new TransferPanel(m_clock, this))
     , m_zPanel(new ZPositionPanel(this))
@@ -64,6 +67,14 @@ GrinderWindow::GrinderWindow(QWidget *parent)
     layout->addWidget(connectionBox);
     layout->addWidget(m_tabs, 1);
 
+    m_connection->setWordWrap(true); // a long message must not widen the window for good
+    m_resumeTimer->setSingleShot(true);
+    connect(m_resumeTimer, &QTimer::timeout, this, [this] {
+        if (!m_session)
+            return;
+        m_linkTimer->start();
+        checkLink();
+    });
     m_linkTimer->setInterval(kLinkCheckIntervalMs);
     connect(m_linkTimer, &QTimer::timeout, this, &GrinderWindow::checkLink);
     connect(m_connectButton, &QPushButton::clicked, this, &GrinderWindow::onConnectClicked);
@@ -100,7 +111,9 @@ void GrinderWindow::loadSettings()
         settings.value(QStringLiteral("parity"), QStringLiteral("n")).toString().at(0).toLatin1();
     s.stopBits = settings.value(QStringLiteral("stopBits"), 1).toInt();
     m_port->setSettings(s);
-    const int family = m_family->findData(settings.value(QStringLiteral("family"), 0).toInt());
+    // K51 on first start, as the documentation says.
+    const int family =
+        m_family->findData(settings.value(QStringLiteral("family"), int(Family::K51)).toInt());
     m_family->setCurrentIndex(family < 0 ? 0 : family);
 }
 
@@ -187,7 +200,14 @@ bool GrinderWindow::connectPort()
 
 void GrinderWindow::disconnectPort()
 {
+    // A transfer in progress ends visibly, not silently with the session.
+    if (m_session && m_session->isBusy()) {
+        m_disconnecting = true;
+        m_session->cancel(tr("Disconnected during the transfer."));
+        m_disconnecting = false;
+    }
     m_linkTimer->stop();
+    m_resumeTimer->stop();
     m_transferPanel->setSession(nullptr);
     m_zPanel->setSession(nullptr);
     m_session.reset();
@@ -218,10 +238,22 @@ void GrinderWindow::checkLink()
 
 void GrinderWindow::onTransferFinished(const TransferResult &result)
 {
-    if (result.operation == Operation::Ping || result.ok())
+    if (result.operation == Operation::Ping || result.ok()) {
         setLinkUp(result.ok(), result.ok() ? QString() : result.message);
-    else
-        checkLink(); // after a failed transfer, find out at once whether the link is there
+    } else if (m_disconnecting || !m_session) {
+        // the window is closing the port: no link check
+    } else if (result.error == TransferError::Cancelled && result.controllerBusyUs > 0) {
+        // The controller finishes (or drops) its message first: a check now would fail.
+        m_linkTimer->stop();
+        m_resumeTimer->start(int(result.controllerBusyUs / 1000) + 200);
+        m_connection->setText(tr("Waiting for the controller to finish its message (about %1 "
+                                 "s)…")
+                                  .arg(qMax(1, qRound(result.controllerBusyUs / 1e6))));
+    } else {
+        // After a failed transfer, find out at once whether the link is there (once every
+        // slot has seen this result).
+        QTimer::singleShot(0, this, &GrinderWindow::checkLink);
+    }
     m_transferPanel->updateEnabled();
 }
 
@@ -238,6 +270,26 @@ void GrinderWindow::setLinkUp(bool up, const QString &detail)
     m_connection->setStyleSheet(
         up ? QStringLiteral("QLabel { color: #1a7f1a; font-weight: bold; }")
            : QStringLiteral("QLabel { color: #b00020; font-weight: bold; }"));
+}
+
+void GrinderWindow::closeEvent(QCloseEvent *event)
+{
+    if (m_transferPanel->hasUnsavedData()) {
+        const bool close =
+            m_closeConfirmer
+                ? m_closeConfirmer()
+                : QMessageBox::question(this, tr("Grinder transfer"),
+                                        tr("The data received from the controller have not been "
+                                           "saved. Close and discard them?"),
+                                        QMessageBox::Discard | QMessageBox::Cancel,
+                                        QMessageBox::Cancel) == QMessageBox::Discard;
+        if (!close) {
+            event->ignore();
+            return;
+        }
+    }
+    disconnectPort();
+    event->accept();
 }
 
 QString GrinderWindow::connectionText() const

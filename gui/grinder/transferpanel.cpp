@@ -1,5 +1,6 @@
 #include "gui/grinder/transferpanel.h"
 
+#include <QCheckBox>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -45,6 +46,8 @@ TransferPanel::TransferPanel(Clock &clock, QWidget *parent)
     , m_progress(new QProgressBar(this))
     , m_progressText(new QLabel(this))
     , m_status(new QLabel(this))
+    , m_banner(new QLabel(this))
+    , m_sendAnyway(new QCheckBox(tr("Send anyway"), this))
     , m_hint(new QLabel(this))
     , m_log(new QPlainTextEdit(this))
 {
@@ -70,7 +73,18 @@ TransferPanel::TransferPanel(Clock &clock, QWidget *parent)
     m_status->setWordWrap(true);
     m_hint->setWordWrap(true);
     m_hint->setVisible(false);
+    m_banner->setObjectName(QStringLiteral("failureBanner"));
+    m_banner->setWordWrap(true);
+    m_banner->setVisible(false);
+    m_banner->setStyleSheet(QStringLiteral(
+        "QLabel { background: #fde0e0; color: #8b0000; padding: 6px; font-weight: bold; }"));
+    m_sendAnyway->setObjectName(QStringLiteral("sendAnyway"));
+    m_sendAnyway->setToolTip(
+        tr("Send a file whose inner blocks have a wrong checksum, or whose length this "
+           "controller reported itself. Only for data the controller gave you."));
+    m_progressText->setWordWrap(true);
     m_hint->setStyleSheet(QStringLiteral("QLabel { background: #fff4c2; padding: 6px; }"));
+    m_log->setObjectName(QStringLiteral("transferLog"));
     m_log->setReadOnly(true);
     m_log->setMaximumBlockCount(2000);
     m_saveButton->setEnabled(false);
@@ -103,6 +117,7 @@ void TransferPanel::buildLayout()
     toForm->addRow(tr("File:"), fileRow);
     toForm->addRow(QString(), m_sendInfo);
     toForm->addRow(tr("Header:"), m_header);
+    toForm->addRow(m_sendAnyway);
     toForm->addRow(m_sendButton);
 
     auto *boxes = new QHBoxLayout;
@@ -116,6 +131,7 @@ void TransferPanel::buildLayout()
     layout->addLayout(progressRow);
     layout->addWidget(m_progressText);
     layout->addWidget(m_status);
+    layout->addWidget(m_banner);
     layout->addWidget(m_hint);
     layout->addWidget(new QLabel(tr("Messages:"), this));
     layout->addWidget(m_log, 1);
@@ -162,8 +178,37 @@ QString TransferPanel::statusText() const
     return m_status->text();
 }
 
+QString TransferPanel::failureText() const
+{
+    return m_banner->isHidden() ? QString() : m_banner->text();
+}
+
+void TransferPanel::setSendAnyway(bool on)
+{
+    m_sendAnyway->setChecked(on);
+}
+
+void TransferPanel::showFailure(const QString &text)
+{
+    m_banner->setText(text);
+    m_banner->setVisible(true);
+}
+
+// Data of an earlier transfer are never offered once a new one starts.
+void TransferPanel::clearReceived()
+{
+    m_received = TransferResult();
+    m_receivedSaved = false;
+    m_receivedHeader->clear();
+    m_receivedLength->clear();
+    m_receivedBlocks->clear();
+}
+
 void TransferPanel::appendLog(const QString &line)
 {
+    // The link check every 5 s shows in the window's connection indicator, not here.
+    if (m_session && m_session->lastResult().operation == Operation::Ping)
+        return;
     m_log->appendPlainText(QTime::currentTime().toString(QStringLiteral("HH:mm:ss.zzz  ")) + line);
 }
 
@@ -172,6 +217,8 @@ bool TransferPanel::receive()
     if (!m_session || m_session->isBusy())
         return false;
     m_hint->setVisible(false);
+    m_banner->setVisible(false);
+    clearReceived();
     m_startUs = m_clock.nowUs();
     m_progress->setValue(0);
     m_status->setText(tr("Receiving from the controller…"));
@@ -186,11 +233,13 @@ bool TransferPanel::send()
     if (!m_session || m_session->isBusy() || m_toSend.isEmpty())
         return false;
     m_hint->setVisible(false);
+    m_banner->setVisible(false);
     m_startUs = m_clock.nowUs();
     m_progress->setValue(0);
     m_status->setText(tr("Sending %1 to the controller…").arg(QFileInfo(m_toSendPath).fileName()));
     m_session->setTiming(SessionTiming{});
-    m_session->load(headerFromText(m_header->text().toLatin1().toStdString()), m_toSend);
+    m_session->load(headerFromText(m_header->text().toLatin1().toStdString()), m_toSend,
+                    m_sendAnyway->isChecked());
     updateEnabled();
     return true;
 }
@@ -231,8 +280,17 @@ void TransferPanel::onFinished(const TransferResult &result)
                                "in AUT and hold RES."));
             m_hint->setVisible(true);
         }
+    } else if (result.error == TransferError::Cancelled) {
+        m_status->setText(tr("Cancelled."));
+        showFailure(tr("Cancelled: %1").arg(result.message));
+        m_progressText->clear();
     } else {
-        m_status->setText(tr("Transfer failed: %1").arg(result.message));
+        const QString what = result.operation == Operation::Save
+                                 ? tr("Receiving from the controller failed")
+                                 : tr("Sending to the controller failed");
+        m_status->setText(tr("Transfer failed."));
+        showFailure(tr("%1: %2").arg(what, result.message));
+        m_progressText->clear();
     }
     updateEnabled();
     emit transferFinished(result);
@@ -276,6 +334,7 @@ bool TransferPanel::saveReceived(const QString &path)
                               .arg(path, file.errorString()));
         return false;
     }
+    m_receivedSaved = true;
     m_status->setText(tr("Saved %1 bytes to %2.").arg(m_received.data.size()).arg(path));
     appendLog(m_status->text());
     return true;

@@ -9,6 +9,7 @@
 
 #include <functional>
 
+class QCheckBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
@@ -43,6 +44,11 @@ public:
     void cancel(); // stop the transfer in progress
     QByteArray receivedData() const { return m_received.data; }
     QString statusText() const;
+    // The failure banner's text; empty while it is hidden.
+    QString failureText() const;
+    // Data received from the controller and not yet saved to a file.
+    bool hasUnsavedData() const { return !m_received.data.isEmpty() && !m_receivedSaved; }
+    void setSendAnyway(bool on);
 
 signals:
     void transferFinished(const frezka::grinder::TransferResult &result);
@@ -55,6 +61,8 @@ private:
     void chooseSendFile();
     QString chooseFile(FileChoice choice, const QString &suggestion);
     void appendLog(const QString &line);
+    void showFailure(const QString &text);
+    void clearReceived();
 
     grinder::Clock &m_clock;
     grinder::TransferSession *m_session = nullptr;
@@ -62,6 +70,7 @@ private:
     int m_baud = 9600;
     FileChooser m_chooser;
     grinder::TransferResult m_received;
+    bool m_receivedSaved = false;
     QByteArray m_toSend;
     QString m_toSendPath;
     std::int64_t m_startUs = 0;
@@ -80,6 +89,8 @@ private:
     QProgressBar *m_progress;
     QLabel *m_progressText;
     QLabel *m_status;
+    QLabel *m_banner;
+    QCheckBox *m_sendAnyway;
     QLabel *m_hint;
     QPlainTextEdit *m_log;
 };

@@ -9,6 +9,7 @@
 
 #include <QComboBox>
 #include <QLabel>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QtTest>
@@ -29,6 +30,8 @@ private slots:
     void zPositionForm1WithTheInProcessEmulator();
     void serialMonitorShowsBothDirectionsAndCaptures();
     void choosingAControlSetsItsRate();
+    void everyFailureEndsVisiblyWithNoStaleSave();
+    void unsavedDataIsGuardedOnCloseAndLinkChecksStayOutOfTheLog();
 
 private:
     QTemporaryDir m_dir;
@@ -193,6 +196,129 @@ void GrinderWindowTest::choosingAControlSetsItsRate()
     QCOMPARE(openedAt(QStringLiteral("4800 Bd")), QString());
     choose(Family::K51);
     QCOMPARE(openedAt(QStringLiteral("9600 Bd")), QString());
+}
+
+namespace {
+
+// A window connected to k51-emu (started with `args`) with its link up.
+struct WindowRig
+{
+    EmuProcess emu;
+    GrinderWindow window;
+    TransferPanel *panel;
+    QPushButton *save;
+    explicit WindowRig(const QStringList &args)
+        : emu(args)
+        , panel(window.transferPanel())
+        , save(window.findChild<QPushButton *>("saveButton"))
+    {
+        window.setCloseConfirmer([] { return true; });
+        window.setSerialSettings({emu.path(), 9600, 8, 'n', 1});
+        window.setFamily(Family::K51);
+        window.show();
+    }
+    bool connectAndWait()
+    {
+        return window.connectPort() && QTest::qWaitFor([this] { return window.isLinkUp(); });
+    }
+};
+
+} // namespace
+
+// Issue 22's second "Done when": NAKs past the limit, bad checksums, cancel, disconnect and a
+// wrong-size file each end in a visible failure (status and banner), and Save never offers the
+// data of an earlier transfer.
+void GrinderWindowTest::everyFailureEndsVisiblyWithNoStaleSave()
+{
+    const Bytes generated = generatedImage(Family::K51, kK51ImageSize);
+    QVERIFY(writeAll(file("good.bin"), QByteArray(reinterpret_cast<const char *>(generated.data()),
+                                                  qsizetype(generated.size()))));
+    QVERIFY(writeAll(file("short.bin"), QByteArray(1000, 'x')));
+    const auto ended = [](WindowRig &rig, const QString &status, const QString &banner) {
+        if (!QTest::qWaitFor([&] { return !rig.panel->failureText().isEmpty(); }, 30000))
+            return QStringLiteral("no failure banner; status: ") + rig.panel->statusText() +
+                   rig.window.findChild<QPlainTextEdit *>("transferLog")->toPlainText();
+        if (!rig.panel->statusText().startsWith(status) ||
+            !rig.panel->failureText().contains(banner))
+            return rig.panel->statusText() + QStringLiteral(" | ") + rig.panel->failureText();
+        return QString();
+    };
+    { // NAKs past the limit
+        WindowRig rig({"--fast", "--naks", "100"});
+        QVERIFY(rig.connectAndWait());
+        QVERIFY(rig.panel->openFileToSend(file("good.bin")));
+        QVERIFY(rig.panel->send());
+        QCOMPARE(ended(rig, "Transfer failed", "NAK to LOA"), QString());
+        QVERIFY(rig.panel->failureText().startsWith("Sending to the controller failed"));
+    }
+    { // bad checksums: a good receive first, then one that fails, and Save is off
+        WindowRig rig({"--fast", "--corrupt", "4", "--silent-after", "100"});
+        QVERIFY(rig.connectAndWait());
+        QVERIFY(rig.panel->receive());
+        QCOMPARE(ended(rig, "Transfer failed", "Bad checksum"), QString());
+        QVERIFY(!rig.save->isEnabled());
+        QVERIFY(rig.panel->receivedData().isEmpty());
+        QTRY_VERIFY(rig.window.isLinkUp());
+        QVERIFY(rig.panel->receive()); // the fifth message is good
+        QTRY_VERIFY(rig.save->isEnabled());
+        QVERIFY(rig.panel->failureText().isEmpty()); // a new transfer clears the banner
+    }
+    { // cancel while the controller sends (paced at 9600 Bd)
+        WindowRig rig({"--header", "OLD"});
+        QVERIFY(rig.connectAndWait());
+        QVERIFY(rig.panel->receive());
+        QTest::qWait(1500);
+        rig.panel->cancel();
+        QCOMPARE(ended(rig, "Cancelled", "may still be sending its data"), QString());
+        QVERIFY(!rig.save->isEnabled());
+        QVERIFY(rig.window.connectionText().startsWith("Waiting for the controller"));
+    }
+    { // disconnect during a load
+        WindowRig rig({});
+        QVERIFY(rig.connectAndWait());
+        QVERIFY(rig.panel->openFileToSend(file("good.bin")));
+        QVERIFY(rig.panel->send());
+        QTest::qWait(1000);
+        rig.window.disconnectPort();
+        QCOMPARE(ended(rig, "Cancelled", "Disconnected during the transfer"), QString());
+        QVERIFY(rig.panel->failureText().contains("received only part"));
+    }
+    { // a 1000-byte file as K51: refused, nothing sent
+        WindowRig rig({"--fast", "--verbose"});
+        QVERIFY(rig.connectAndWait());
+        QVERIFY(rig.panel->openFileToSend(file("short.bin")));
+        QVERIFY(rig.panel->send());
+        QCOMPARE(ended(rig, "Transfer failed", "the file has 1000"), QString());
+        QTest::qWait(100);
+        QVERIFY(!rig.emu.errorOutput().contains("rx LOA"));
+    }
+}
+
+void GrinderWindowTest::unsavedDataIsGuardedOnCloseAndLinkChecksStayOutOfTheLog()
+{
+    WindowRig rig({"--fast"});
+    bool asked = false;
+    bool allow = false;
+    rig.window.setCloseConfirmer([&] {
+        asked = true;
+        return allow;
+    });
+    QVERIFY(rig.connectAndWait());
+    rig.window.checkLink();
+    QTest::qWait(300);
+    auto *log = rig.window.findChild<QPlainTextEdit *>("transferLog");
+    QVERIFY(log);
+    QVERIFY2(!log->toPlainText().contains("ENQ"), qPrintable(log->toPlainText()));
+    QVERIFY(rig.panel->receive());
+    QTRY_VERIFY(rig.save->isEnabled());
+    QVERIFY(log->toPlainText().contains("-> DEJ"));
+    QVERIFY(!rig.window.close());
+    QVERIFY(asked);
+    QVERIFY(rig.window.isVisible());
+    QVERIFY(rig.panel->saveReceived(file("kept.bin")));
+    asked = false;
+    QVERIFY(rig.window.close()); // saved: no question
+    QVERIFY(!asked);
 }
 
 #include "grinderwindow_test.moc"
