@@ -39,10 +39,6 @@
         <translation>--form: &apos;%1&apos; není 1 ani 2</translation>
     </message>
     <message>
-        <source>--go: &apos;%1&apos; is not a position in mm (e.g. 12.5)</source>
-        <translation>--go: &apos;%1&apos; není poloha v mm (např. 12.5)</translation>
-    </message>
-    <message>
         <source>unknown option &apos;%1&apos;</source>
         <translation>neznámá volba &apos;%1&apos;</translation>
     </message>
@@ -139,13 +135,14 @@
     <message>
         <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
                           [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] FILE
+                          [--reply-timeout-ms N] [--send-anyway] FILE
        frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
                           [--reply-timeout-ms N]
   ping   link check (ENQ/ACK)
   save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
   load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or, as K51LOAD 2.20 did, the file name
+         or, as K51LOAD 2.20 did, the file name; the file&apos;s length and inner blocks
+         are checked first and nothing is sent when they are wrong
   z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
          waits for a binary frame); --go MM moves the table and waits until reached
   --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
@@ -153,17 +150,22 @@
   --retries N            repeats after a timeout, NAK or bad checksum (default 3)
   --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
                          the data after a request)
+  --send-anyway          load a file whose inner blocks have a wrong checksum (only
+                         if the controller itself gave it to you)
+  --go MM                -9999.999 to 9999.999 mm
+  --help                 this text
 Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </source>
         <translation>použití: frezka-cli grinder ping|save|load --port CESTA [--family k51|anc|hedit]
                           [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] SOUBOR
-         frezka-cli grinder z --port CESTA [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N] [--send-anyway] SOUBOR
+       frezka-cli grinder z --port CESTA [--baud N] [--form 1|2] [--go MM]
                           [--reply-timeout-ms N]
   ping   kontrola spojení (ENQ/ACK)
   save   řídicí systém -&gt; PC: zapíše data řídicího systému do SOUBORU, bajt po bajtu
   load   PC -&gt; řídicí systém: pošle SOUBOR beze změny; 16znakovou hlavičku dává --header,
-         jinak (jako K51LOAD 2.20) název souboru
+         jinak (jako K51LOAD 2.20) název souboru; délka a vnitřní bloky souboru se
+         nejprve zkontrolují a při chybě se nepošle nic
   z      přenos polohy Z: vypíše polohu stolu (FORM=1 se ptá Z?, FORM=2
          čeká na binární rámec); --go MM přejede stolem a čeká na dosažení
   --baud N               rychlost linky (výchozí: ANC 4800 Bd jako ANCLOAD/ANCSAVE; K51
@@ -171,7 +173,21 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
   --retries N            opakování po vypršení času, NAK nebo chybném součtu (výchozí 3)
   --reply-timeout-ms N   povolené ticho před odpovědí (výchozí 3000; 10000 pro
                          data po žádosti)
+  --send-anyway          pošle soubor, jehož vnitřní bloky mají chybný součet (jen
+                         když ho dal sám řídicí systém)
+  --go MM                -9999,999 až 9999,999 mm
+  --help                 tento text
 Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné použití.
+</translation>
+    </message>
+    <message>
+        <source>--go: &apos;%1&apos; is not a position from -9999.999 to 9999.999 mm (e.g. 12.5)</source>
+        <translation>--go: &apos;%1&apos; není poloha od -9999.999 do 9999.999 mm (např. 12.5)</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: cannot write %1: %2; nothing was asked from the controller
+</source>
+        <translation>frezka-cli grinder: nelze zapsat %1: %2; od řídicího systému se nic nežádalo
 </translation>
     </message>
 </context>
@@ -188,6 +204,69 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     <message>
         <source>unknown connection kind</source>
         <translation>neznámý druh připojení</translation>
+    </message>
+</context>
+<context>
+    <name>LoadCheck</name>
+    <message>
+        <source>ANC</source>
+        <translation>ANC</translation>
+    </message>
+    <message>
+        <source>K51</source>
+        <translation>K51</translation>
+    </message>
+    <message>
+        <source>HEDIT</source>
+        <translation>HEDIT</translation>
+    </message>
+    <message>
+        <source>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506)</source>
+        <translation>Programová data ANC mají 21760 nebo 21766 bajtů (0x5500 nebo 0x5506)</translation>
+    </message>
+    <message>
+        <source>K51 program data have 21767 bytes (0x5507)</source>
+        <translation>Programová data K51 mají 21767 bajtů (0x5507)</translation>
+    </message>
+    <message>
+        <source>HEDIT data have 46 bytes (0x2E)</source>
+        <translation>Data HEDIT mají 46 bajtů (0x2E)</translation>
+    </message>
+    <message>
+        <source>The file is empty; there is nothing to send.</source>
+        <translation>Soubor je prázdný; není co poslat.</translation>
+    </message>
+    <message>
+        <source>Sent anyway: %1 bytes, the length this controller reported.</source>
+        <translation>Přesto odesláno: %1 bajtů, délka, kterou hlásil tento řídicí systém.</translation>
+    </message>
+    <message>
+        <source>%1; the file has %2, so nothing was sent. Choose a file saved from this controller.</source>
+        <translation>%1; soubor má %2, proto se nic neposlalo. Vyberte soubor uložený z tohoto řídicího systému.</translation>
+    </message>
+    <message>
+        <source>%1; the file has %2, the length of %3 data: is the wrong system selected? Nothing was sent.</source>
+        <translation>%1; soubor má %2, což je délka dat %3: není vybrán nesprávný systém? Nic se neposlalo.</translation>
+    </message>
+    <message>
+        <source>This controller reported this length: choose &quot;Send anyway&quot; to send it.</source>
+        <translation>Tuto délku hlásil tento řídicí systém: chcete-li soubor poslat, zvolte „Přesto odeslat“.</translation>
+    </message>
+    <message>
+        <source>%1 of the %2 inner program blocks lack their AA and block number marker (%3): the file is not a program image of this system or it was changed. Nothing was sent.</source>
+        <translation>%1 z %2 vnitřních programových bloků nemá značku AA a číslo bloku (%3): soubor není programový obraz tohoto systému nebo byl změněn. Nic se neposlalo.</translation>
+    </message>
+    <message>
+        <source>inner blocks with a wrong checksum: %1</source>
+        <translation>vnitřní bloky s chybným kontrolním součtem: %1</translation>
+    </message>
+    <message>
+        <source>The file has %1. Nothing was sent. If the controller itself gave you this file, choose &quot;Send anyway&quot;: it gets the data unchanged.</source>
+        <translation>Soubor má %1. Nic se neposlalo. Pokud vám tento soubor dal sám řídicí systém, zvolte „Přesto odeslat“: dostane data beze změny.</translation>
+    </message>
+    <message>
+        <source>Sent anyway: %1.</source>
+        <translation>Přesto odesláno: %1.</translation>
     </message>
 </context>
 <context>
@@ -2387,6 +2466,26 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>Cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</source>
         <translation>%1 nelze otevřít: přístup odepřen. Port patří skupině %2: přidejte se do ní příkazem &quot;sudo usermod -aG %2 $USER&quot;, pak se odhlaste a znovu přihlaste.</translation>
     </message>
+    <message>
+        <source>%1 (process %2)</source>
+        <translation>%1 (proces %2)</translation>
+    </message>
+    <message>
+        <source>another program</source>
+        <translation>jiný program</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: the port is in use by another program. Close it (or disconnect it), then connect again.</source>
+        <translation>Nelze otevřít %1: port používá jiný program. Zavřete ho (nebo ho v něm odpojte) a připojte se znovu.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: the port is in use by %2. Close that program (or disconnect it there), then connect again.</source>
+        <translation>Nelze otevřít %1: port používá %2. Zavřete ten program (nebo port v něm odpojte) a připojte se znovu.</translation>
+    </message>
+    <message>
+        <source>The port %1 went away: is the cable or the USB adapter unplugged? Plug it in, then connect again.</source>
+        <translation>Port %1 zmizel: není odpojený kabel nebo USB převodník? Zapojte ho a připojte se znovu.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::TransferSession</name>
@@ -2395,20 +2494,8 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>Port %1 není otevřen.</translation>
     </message>
     <message>
-        <source>The file is empty; there is nothing to send.</source>
-        <translation>Soubor je prázdný, není co odeslat.</translation>
-    </message>
-    <message>
         <source>The data are too long for one message: %1 bytes, at most %2.</source>
         <translation>Data jsou na jednu zprávu příliš dlouhá: %1 bajtů, nejvýše %2.</translation>
-    </message>
-    <message>
-        <source>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506); the file has %1. Choose a file saved from an ANC control.</source>
-        <translation>Data programů ANC mají 21760 nebo 21766 bajtů (0x5500 nebo 0x5506), soubor má %1. Vyberte soubor uložený z řídicího systému ANC.</translation>
-    </message>
-    <message>
-        <source>HEDIT data have 46 bytes (0x2E); the file has %1. Choose a file saved with HEDIT.</source>
-        <translation>Data HEDIT mají 46 bajtů (0x2E), soubor má %1. Vyberte soubor uložený pomocí HEDIT.</translation>
     </message>
     <message>
         <source>Cancelled.</source>
@@ -2449,10 +2536,6 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Repeat %1 of %2: %3</source>
         <translation>Opakování %1 z %2: %3</translation>
-    </message>
-    <message>
-        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd) and that the controller is set to transfer (KONFIG6).</source>
-        <translation>Na ENQ nepřišla do %1 s odpověď. Zkontrolujte kabel, nastavení linky (%2 Bd) a zda je řídicí systém nastaven na přenos (KONFIG6).</translation>
     </message>
     <message>
         <source>The data message stopped after %1 of %2 bytes (no byte for %3 s).</source>
@@ -2507,12 +2590,44 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>%1 z %2 bloků je chybných: %3 (data zůstávají beze změny)</translation>
     </message>
     <message>
-        <source>Warning: inner blocks: %1</source>
-        <translation>Upozornění: vnitřní bloky: %1</translation>
-    </message>
-    <message>
         <source>&lt;- ACK ignored: a late answer to an earlier message</source>
         <translation>&lt;- ACK přeskočeno: opožděná odpověď na dřívější zprávu</translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Upozornění: %1</translation>
+    </message>
+    <message>
+        <source>The controller may still be sending its data for about %1 s; the link check waits until then.</source>
+        <translation>Řídicí systém může ještě asi %1 s posílat svá data; kontrola spojení do té doby počká.</translation>
+    </message>
+    <message>
+        <source>The controller received only part of the data and discards it; the programs it holds are unchanged.</source>
+        <translation>Řídicí systém dostal jen část dat a zahodí je; programy, které má uložené, zůstávají beze změny.</translation>
+    </message>
+    <message>
+        <source>All data had been sent: the controller may have stored them. Check its programs.</source>
+        <translation>Všechna data už byla odeslána: řídicí systém je možná uložil. Zkontrolujte jeho programy.</translation>
+    </message>
+    <message>
+        <source>The controller answered NAK to %1: is the ANC set up for program transfer and not grinding?</source>
+        <translation>Řídicí systém odpověděl NAK na %1: je ANC nastaven na přenos programů a nebrousí?</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s reply does not fit the %1 messages: is the wrong system selected (ANC or K51)? Choose the system the control is, then try again. (%2)</source>
+        <translation>Odpověď řídicího systému neodpovídá zprávám %1: není vybrán nesprávný systém (ANC nebo K51)? Vyberte systém, kterým řídicí systém je, a zkuste to znovu. (%2)</translation>
+    </message>
+    <message>
+        <source>The port %1 stopped taking data: %2 bytes of %3 were not sent. Check that the cable and the USB adapter are plugged in.</source>
+        <translation>Port %1 přestal přijímat data: %2 bajtů zprávy %3 se neodeslalo. Zkontrolujte, že jsou kabel i USB převodník zapojené.</translation>
+    </message>
+    <message>
+        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (ANC) and that the ANC is not grinding.</source>
+        <translation>Žádná odpověď na ENQ do %1 s. Zkontrolujte kabel, nastavení linky (%2 Bd), vybraný systém (ANC) a že ANC nebrousí.</translation>
+    </message>
+    <message>
+        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (%3) and that the controller is set to transfer (KONFIG6).</source>
+        <translation>Žádná odpověď na ENQ do %1 s. Zkontrolujte kabel, nastavení linky (%2 Bd), vybraný systém (%3) a že je řídicí systém nastaven na přenos (KONFIG6).</translation>
     </message>
 </context>
 <context>
@@ -2940,6 +3055,18 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>%1 — %2: %3</source>
         <translation>%1 — %2: %3</translation>
+    </message>
+    <message>
+        <source>Disconnected during the transfer.</source>
+        <translation>Odpojeno během přenosu.</translation>
+    </message>
+    <message>
+        <source>Waiting for the controller to finish its message (about %1 s)…</source>
+        <translation>Čeká se, až řídicí systém dokončí svou zprávu (asi %1 s)…</translation>
+    </message>
+    <message>
+        <source>The data received from the controller have not been saved. Close and discard them?</source>
+        <translation>Data přijatá z řídicího systému nejsou uložena. Zavřít okno a zahodit je?</translation>
     </message>
 </context>
 <context>
@@ -4921,10 +5048,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Programy TCHIN ukážou na řídicím systému po přenosu jednou „no prg set“: nejprve seřiďte osu X — zvolte program TCHIN v AUT a podržte RES.</translation>
     </message>
     <message>
-        <source>Transfer failed: %1</source>
-        <translation>Přenos selhal: %1</translation>
-    </message>
-    <message>
         <source>Save the controller&apos;s data</source>
         <translation>Uložit data z řídicího systému</translation>
     </message>
@@ -4947,6 +5070,38 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>%1 bytes; inner blocks: %2</source>
         <translation>%1 bajtů; vnitřní bloky: %2</translation>
+    </message>
+    <message>
+        <source>Send anyway</source>
+        <translation>Přesto odeslat</translation>
+    </message>
+    <message>
+        <source>Send a file whose inner blocks have a wrong checksum, or whose length this controller reported itself. Only for data the controller gave you.</source>
+        <translation>Pošle soubor, jehož vnitřní bloky mají chybný kontrolní součet, nebo jehož délku hlásil sám tento řídicí systém. Jen pro data, která vám dal řídicí systém.</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Zrušeno.</translation>
+    </message>
+    <message>
+        <source>Cancelled: %1</source>
+        <translation>Zrušeno: %1</translation>
+    </message>
+    <message>
+        <source>Receiving from the controller failed</source>
+        <translation>Příjem z řídicího systému selhal</translation>
+    </message>
+    <message>
+        <source>Sending to the controller failed</source>
+        <translation>Odeslání do řídicího systému selhalo</translation>
+    </message>
+    <message>
+        <source>Transfer failed.</source>
+        <translation>Přenos selhal.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
