@@ -2,6 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
 <context>
+    <name>ControllerHeader</name>
+    <message>
+        <source>The header &quot;%1&quot; holds &apos;%2&apos;, which the controller cannot show (it shows letters without diacritics, digits and signs). Replace it.</source>
+        <translation>Hlavička „%1“ obsahuje &apos;%2&apos;, který řídicí systém nedokáže zobrazit (zobrazí písmena bez diakritiky, číslice a znaménka). Nahraďte ho.</translation>
+    </message>
+    <message>
+        <source>The header &quot;%1&quot; is sent as &quot;%2&quot;: the controller has no Czech letters, so they become their base letters.</source>
+        <translation>Hlavička „%1“ se pošle jako „%2“: řídicí systém nemá česká písmena, proto se mění na písmena bez diakritiky.</translation>
+    </message>
+</context>
+<context>
     <name>EmulatorTransport</name>
     <message>
         <source>built-in %1 emulator</source>
@@ -13,10 +24,6 @@
     <message>
         <source>--header: &apos;%1&apos; is longer than 16 characters</source>
         <translation>--header: &apos;%1&apos; má víc než 16 znaků</translation>
-    </message>
-    <message>
-        <source>--header: &apos;%1&apos; holds &apos;%2&apos;; the controller shows plain ASCII only (no diacritics)</source>
-        <translation>--header: &apos;%1&apos; obsahuje &apos;%2&apos;; řídicí systém zobrazí jen čisté ASCII (bez diakritiky)</translation>
     </message>
     <message>
         <source>--family: &apos;%1&apos; is not k51, anc or hedit</source>
@@ -133,15 +140,28 @@
 </translation>
     </message>
     <message>
+        <source>--go: &apos;%1&apos; is not a position from -9999.999 to 9999.999 mm (e.g. 12.5)</source>
+        <translation>--go: &apos;%1&apos; není poloha od -9999.999 do 9999.999 mm (např. 12.5)</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: cannot write %1: %2; nothing was asked from the controller
+</source>
+        <translation>frezka-cli grinder: nelze zapsat %1: %2; od řídicího systému se nic nežádalo
+</translation>
+    </message>
+    <message>
         <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
                           [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] [--send-anyway] FILE
+                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
        frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
                           [--reply-timeout-ms N]
   ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte, with
+         its header and system (a FILE ending in .bin, or --raw: the bare data, as
+         the old tools wrote)
   load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or, as K51LOAD 2.20 did, the file name; the file&apos;s length and inner blocks
+         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
+         letters become their base letters); the file&apos;s length and inner blocks
          are checked first and nothing is sent when they are wrong
   z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
          waits for a binary frame); --go MM moves the table and waits until reached
@@ -158,14 +178,17 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </source>
         <translation>použití: frezka-cli grinder ping|save|load --port CESTA [--family k51|anc|hedit]
                           [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] [--send-anyway] SOUBOR
+                          [--reply-timeout-ms N] [--send-anyway] [--raw] SOUBOR
        frezka-cli grinder z --port CESTA [--baud N] [--form 1|2] [--go MM]
                           [--reply-timeout-ms N]
   ping   kontrola spojení (ENQ/ACK)
-  save   řídicí systém -&gt; PC: zapíše data řídicího systému do SOUBORU, bajt po bajtu
+  save   řídicí systém -&gt; PC: zapíše data řídicího systému do SOUBORU, bajt po bajtu,
+         s jejich hlavičkou a systémem (SOUBOR s příponou .bin nebo --raw: jen holá
+         data, jak je zapisovaly staré programy)
   load   PC -&gt; řídicí systém: pošle SOUBOR beze změny; 16znakovou hlavičku dává --header,
-         jinak (jako K51LOAD 2.20) název souboru; délka a vnitřní bloky souboru se
-         nejprve zkontrolují a při chybě se nepošle nic
+         jinak hlavička uložená v SOUBORU, jinak (jako K51LOAD 2.20) název souboru
+         (česká písmena se mění na písmena bez diakritiky); délka a vnitřní bloky
+         souboru se nejprve zkontrolují a při chybě se nepošle nic
   z      přenos polohy Z: vypíše polohu stolu (FORM=1 se ptá Z?, FORM=2
          čeká na binární rámec); --go MM přejede stolem a čeká na dosažení
   --baud N               rychlost linky (výchozí: ANC 4800 Bd jako ANCLOAD/ANCSAVE; K51
@@ -181,13 +204,19 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>--go: &apos;%1&apos; is not a position from -9999.999 to 9999.999 mm (e.g. 12.5)</source>
-        <translation>--go: &apos;%1&apos; není poloha od -9999.999 do 9999.999 mm (např. 12.5)</translation>
+        <source>--header: ANC messages carry no header (ANCLOAD sent none); leave it out or choose --family k51 or hedit</source>
+        <translation>--header: zprávy ANC nemají hlavičku (ANCLOAD žádnou neposílal); vynechte ji, nebo zvolte --family k51 či hedit</translation>
     </message>
     <message>
-        <source>frezka-cli grinder: cannot write %1: %2; nothing was asked from the controller
+        <source>frezka-cli grinder: %1 is damaged: %2; nothing was sent
 </source>
-        <translation>frezka-cli grinder: nelze zapsat %1: %2; od řídicího systému se nic nežádalo
+        <translation>frezka-cli grinder: %1 je poškozený: %2; nic se neposlalo
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: %1 holds %2 data (saved from a %2 control), not %3: is the wrong system selected? Use --family %4.
+</source>
+        <translation>frezka-cli grinder: %1 obsahuje data %2 (uložená z řídicího systému %2), ne %3: není vybrán nesprávný systém? Použijte --family %4.
 </translation>
     </message>
 </context>
@@ -5102,6 +5131,18 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 holds %2 data (saved from a %2 control): is the wrong system selected? Choose %2 and connect again. Nothing was sent.</source>
+        <translation>%1 obsahuje data %2 (uložená z řídicího systému %2): není vybrán nesprávný systém? Zvolte %2 a připojte se znovu. Nic se neposlalo.</translation>
+    </message>
+    <message>
+        <source>Frezka grinder file, keeps the header (*.frg);;Bare data for the old tools (*.bin)</source>
+        <translation>Soubor Frezka pro brusky, uchová hlavičku (*.frg);;Holá data pro staré programy (*.bin)</translation>
+    </message>
+    <message>
+        <source>%1 is damaged: %2</source>
+        <translation>%1 je poškozený: %2</translation>
     </message>
 </context>
 <context>

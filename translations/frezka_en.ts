@@ -2,6 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>ControllerHeader</name>
+    <message>
+        <source>The header &quot;%1&quot; holds &apos;%2&apos;, which the controller cannot show (it shows letters without diacritics, digits and signs). Replace it.</source>
+        <translation>The header &quot;%1&quot; holds &apos;%2&apos;, which the controller cannot show (it shows letters without diacritics, digits and signs). Replace it.</translation>
+    </message>
+    <message>
+        <source>The header &quot;%1&quot; is sent as &quot;%2&quot;: the controller has no Czech letters, so they become their base letters.</source>
+        <translation>The header &quot;%1&quot; is sent as &quot;%2&quot;: the controller has no Czech letters, so they become their base letters.</translation>
+    </message>
+</context>
+<context>
     <name>EmulatorTransport</name>
     <message>
         <source>built-in %1 emulator</source>
@@ -13,10 +24,6 @@
     <message>
         <source>--header: &apos;%1&apos; is longer than 16 characters</source>
         <translation>--header: &apos;%1&apos; is longer than 16 characters</translation>
-    </message>
-    <message>
-        <source>--header: &apos;%1&apos; holds &apos;%2&apos;; the controller shows plain ASCII only (no diacritics)</source>
-        <translation>--header: &apos;%1&apos; holds &apos;%2&apos;; the controller shows plain ASCII only (no diacritics)</translation>
     </message>
     <message>
         <source>--family: &apos;%1&apos; is not k51, anc or hedit</source>
@@ -133,15 +140,28 @@
 </translation>
     </message>
     <message>
+        <source>--go: &apos;%1&apos; is not a position from -9999.999 to 9999.999 mm (e.g. 12.5)</source>
+        <translation>--go: &apos;%1&apos; is not a position from -9999.999 to 9999.999 mm (e.g. 12.5)</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: cannot write %1: %2; nothing was asked from the controller
+</source>
+        <translation>frezka-cli grinder: cannot write %1: %2; nothing was asked from the controller
+</translation>
+    </message>
+    <message>
         <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
                           [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] [--send-anyway] FILE
+                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
        frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
                           [--reply-timeout-ms N]
   ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte, with
+         its header and system (a FILE ending in .bin, or --raw: the bare data, as
+         the old tools wrote)
   load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or, as K51LOAD 2.20 did, the file name; the file&apos;s length and inner blocks
+         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
+         letters become their base letters); the file&apos;s length and inner blocks
          are checked first and nothing is sent when they are wrong
   z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
          waits for a binary frame); --go MM moves the table and waits until reached
@@ -158,13 +178,16 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </source>
         <translation>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
                           [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] [--send-anyway] FILE
+                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
        frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
                           [--reply-timeout-ms N]
   ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte, with
+         its header and system (a FILE ending in .bin, or --raw: the bare data, as
+         the old tools wrote)
   load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or, as K51LOAD 2.20 did, the file name; the file&apos;s length and inner blocks
+         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
+         letters become their base letters); the file&apos;s length and inner blocks
          are checked first and nothing is sent when they are wrong
   z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
          waits for a binary frame); --go MM moves the table and waits until reached
@@ -181,13 +204,19 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>--go: &apos;%1&apos; is not a position from -9999.999 to 9999.999 mm (e.g. 12.5)</source>
-        <translation>--go: &apos;%1&apos; is not a position from -9999.999 to 9999.999 mm (e.g. 12.5)</translation>
+        <source>--header: ANC messages carry no header (ANCLOAD sent none); leave it out or choose --family k51 or hedit</source>
+        <translation>--header: ANC messages carry no header (ANCLOAD sent none); leave it out or choose --family k51 or hedit</translation>
     </message>
     <message>
-        <source>frezka-cli grinder: cannot write %1: %2; nothing was asked from the controller
+        <source>frezka-cli grinder: %1 is damaged: %2; nothing was sent
 </source>
-        <translation>frezka-cli grinder: cannot write %1: %2; nothing was asked from the controller
+        <translation>frezka-cli grinder: %1 is damaged: %2; nothing was sent
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: %1 holds %2 data (saved from a %2 control), not %3: is the wrong system selected? Use --family %4.
+</source>
+        <translation>frezka-cli grinder: %1 holds %2 data (saved from a %2 control), not %3: is the wrong system selected? Use --family %4.
 </translation>
     </message>
 </context>
@@ -5094,6 +5123,18 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 holds %2 data (saved from a %2 control): is the wrong system selected? Choose %2 and connect again. Nothing was sent.</source>
+        <translation>%1 holds %2 data (saved from a %2 control): is the wrong system selected? Choose %2 and connect again. Nothing was sent.</translation>
+    </message>
+    <message>
+        <source>Frezka grinder file, keeps the header (*.frg);;Bare data for the old tools (*.bin)</source>
+        <translation>Frezka grinder file, keeps the header (*.frg);;Bare data for the old tools (*.bin)</translation>
+    </message>
+    <message>
+        <source>%1 is damaged: %2</source>
+        <translation>%1 is damaged: %2</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,8 @@
 // controls (issue 7). See docs/grinder.md.
 #include "cli.h"
 
+#include "driver/grinder/controllerheader.h"
+#include "driver/grinder/grinderfile.h"
 #include "driver/grinder/transfersession.h"
 #include "driver/grinder/zlinksession.h"
 
@@ -40,6 +42,7 @@ struct Args
     bool hasGo = false;
     std::int64_t goUm = 0;
     bool sendAnyway = false;
+    bool raw = false; // save: bare data as the old tools wrote
 };
 
 QString usage()
@@ -47,13 +50,16 @@ QString usage()
     return GrinderCli::tr(
         "usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]\n"
         "                          [--baud N] [--header TEXT] [--retries N]\n"
-        "                          [--reply-timeout-ms N] [--send-anyway] FILE\n"
+        "                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE\n"
         "       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]\n"
         "                          [--reply-timeout-ms N]\n"
         "  ping   link check (ENQ/ACK)\n"
-        "  save   controller -> PC: write the controller's data to FILE, byte for byte\n"
+        "  save   controller -> PC: write the controller's data to FILE, byte for byte, with\n"
+        "         its header and system (a FILE ending in .bin, or --raw: the bare data, as\n"
+        "         the old tools wrote)\n"
         "  load   PC -> controller: send FILE unchanged; the 16-character header is --header\n"
-        "         or, as K51LOAD 2.20 did, the file name; the file's length and inner blocks\n"
+        "         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech\n"
+        "         letters become their base letters); the file's length and inner blocks\n"
         "         are checked first and nothing is sent when they are wrong\n"
         "  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2\n"
         "         waits for a binary frame); --go MM moves the table and waits until reached\n"
@@ -73,13 +79,7 @@ QString checkHeader(const QString &header)
 {
     if (header.size() > int(kHeaderSize))
         return GrinderCli::tr("--header: '%1' is longer than 16 characters").arg(header);
-    for (QChar c : header) {
-        if (c.unicode() < 0x20 || c.unicode() > 0x7E)
-            return GrinderCli::tr("--header: '%1' holds '%2'; the controller shows plain ASCII "
-                                  "only (no diacritics)")
-                .arg(header, QString(c));
-    }
-    return QString();
+    return ControllerHeader::fromText(header).error;
 }
 
 // One option with its value; returns the reason when it is unknown or the value is bad.
@@ -149,8 +149,8 @@ int parseArgs(const QStringList &list, Args &args)
     }
     for (int i = 1; i < list.size(); ++i) {
         const QString &arg = list[i];
-        if (arg == QLatin1String("--send-anyway")) {
-            args.sendAnyway = true;
+        if (arg == QLatin1String("--send-anyway") || arg == QLatin1String("--raw")) {
+            (arg == QLatin1String("--raw") ? args.raw : args.sendAnyway) = true;
             continue;
         }
         if (!arg.startsWith("--")) {
@@ -171,6 +171,9 @@ int parseArgs(const QStringList &list, Args &args)
         args.serial.baud = familyInfo(args.family).defaultBaud;
     if ((args.action == "save" || args.action == "load") && args.file.isEmpty())
         return fail(GrinderCli::tr("%1 needs a FILE").arg(args.action));
+    if (args.hasHeader && args.family == Family::Anc)
+        return fail(GrinderCli::tr("--header: ANC messages carry no header (ANCLOAD sent none); "
+                                   "leave it out or choose --family k51 or hedit"));
     return 0;
 }
 
@@ -259,17 +262,74 @@ bool writeFile(QSaveFile &file, const QByteArray &data)
     return false;
 }
 
+// Reads FILE for a load (a Frezka grinder file or bare data) and picks the header: --header,
+// else the one saved in the file, else the file name (K51LOAD 2.20). Returns an exit code.
+int readLoadFile(const Args &args, QByteArray &data, Header &header)
+{
+    QFile file(args.file);
+    if (!file.open(QIODevice::ReadOnly)) {
+        err(GrinderCli::tr("frezka-cli grinder: cannot read %1: %2\n")
+                .arg(args.file, file.errorString()));
+        return 1;
+    }
+    const QByteArray bytes = file.readAll();
+    std::string why;
+    const auto decoded = decodeGrinderFile(Bytes(bytes.begin(), bytes.end()), why);
+    if (!decoded) {
+        err(GrinderCli::tr("frezka-cli grinder: %1 is damaged: %2; nothing was sent\n")
+                .arg(args.file, QString::fromStdString(why)));
+        return 1;
+    }
+    if (decoded->container && decoded->family != args.family) {
+        err(GrinderCli::tr("frezka-cli grinder: %1 holds %2 data (saved from a %2 control), "
+                           "not %3: is the wrong system selected? Use --family %4.\n")
+                .arg(args.file, familyName(decoded->family), familyName(args.family),
+                     QString::fromLatin1(familyInfo(decoded->family).id)));
+        return 1;
+    }
+    data = QByteArray(reinterpret_cast<const char *>(decoded->data.data()),
+                      qsizetype(decoded->data.size()));
+    if (args.family == Family::Anc) {
+        header = Header{};
+        return 0;
+    }
+    if (decoded->container && !args.hasHeader) {
+        header = decoded->header;
+        return 0;
+    }
+    const QString typed =
+        args.hasHeader ? args.header : QFileInfo(args.file).completeBaseName().left(16);
+    const ControllerHeader mapped = ControllerHeader::fromText(typed);
+    if (!mapped.ok()) {
+        err(QStringLiteral("frezka-cli grinder: %1\n").arg(mapped.error));
+        return args.hasHeader ? 2 : 1;
+    }
+    if (mapped.mapped)
+        out(ControllerHeader::mappingNote(typed, mapped) + QLatin1Char('\n'));
+    header = mapped.header();
+    return 0;
+}
+
+// What a save writes: the Frezka grinder file, or the bare data for a .bin name or --raw.
+QByteArray savedBytes(const Args &args, const TransferResult &result)
+{
+    if (args.raw || args.file.endsWith(QLatin1String(".bin"), Qt::CaseInsensitive))
+        return result.data;
+    GrinderFile file;
+    file.family = args.family;
+    file.header = result.header;
+    file.data = Bytes(result.data.begin(), result.data.end());
+    const Bytes bytes = encodeGrinderFile(file);
+    return QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size()));
+}
+
 int runTransfer(const Args &args)
 {
     QByteArray data;
+    Header header{};
     if (args.action == "load") {
-        QFile file(args.file);
-        if (!file.open(QIODevice::ReadOnly)) {
-            err(GrinderCli::tr("frezka-cli grinder: cannot read %1: %2\n")
-                    .arg(args.file, file.errorString()));
-            return 1;
-        }
-        data = file.readAll();
+        if (const int code = readLoadFile(args, data, header))
+            return code;
     }
     // The target is opened before the transfer: an unwritable path fails at once, not after it.
     QSaveFile target(args.file);
@@ -309,14 +369,12 @@ int runTransfer(const Args &args)
     } else if (args.action == "save") {
         session.save();
     } else {
-        const QString header =
-            args.hasHeader ? args.header : QFileInfo(args.file).completeBaseName().left(16);
-        session.load(headerFromText(header.toLatin1().toStdString()), data, args.sendAnyway);
+        session.load(header, data, args.sendAnyway);
     }
     if (session.isBusy())
         loop.exec();
     bar.end();
-    if (result.ok() && args.action == "save" && !writeFile(target, result.data))
+    if (result.ok() && args.action == "save" && !writeFile(target, savedBytes(args, result)))
         return 1;
     const int code = report(result);
     if (code == 0 && args.action == "load" && args.family != Family::HardChrome)

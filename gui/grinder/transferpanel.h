@@ -8,6 +8,7 @@
 #include <QWidget>
 
 #include <functional>
+#include <optional>
 
 class QCheckBox;
 class QLabel;
@@ -49,6 +50,9 @@ public:
     // Data received from the controller and not yet saved to a file.
     bool hasUnsavedData() const { return !m_received.data.isEmpty() && !m_receivedSaved; }
     void setSendAnyway(bool on);
+    // What the header becomes on the controller (Czech letters mapped) or why it cannot.
+    QString headerNote() const;
+    QString receivedHeaderText() const;
 
 signals:
     void transferFinished(const frezka::grinder::TransferResult &result);
@@ -69,7 +73,11 @@ private:
     bool m_linkUp = false;
     int m_baud = 9600;
     FileChooser m_chooser;
+    void updateHeaderNote();
+
     grinder::TransferResult m_received;
+    grinder::Family m_receivedFamily = grinder::Family::K51;
+    std::optional<grinder::Family> m_toSendFamily; // a Frezka grinder file names its system
     bool m_receivedSaved = false;
     QByteArray m_toSend;
     QString m_toSendPath;
@@ -84,6 +92,7 @@ private:
     QPushButton *m_chooseButton;
     QLabel *m_sendInfo;
     QLineEdit *m_header;
+    QLabel *m_headerNote;
     QPushButton *m_sendButton;
     QPushButton *m_cancelButton;
     QProgressBar *m_progress;

@@ -9,6 +9,7 @@
 
 #include <QComboBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
@@ -32,6 +33,7 @@ private slots:
     void choosingAControlSetsItsRate();
     void everyFailureEndsVisiblyWithNoStaleSave();
     void unsavedDataIsGuardedOnCloseAndLinkChecksStayOutOfTheLog();
+    void czechHeaderRoundTripsThroughSaveAndLoad();
 
 private:
     QTemporaryDir m_dir;
@@ -319,6 +321,41 @@ void GrinderWindowTest::unsavedDataIsGuardedOnCloseAndLinkChecksStayOutOfTheLog(
     asked = false;
     QVERIFY(rig.window.close()); // saved: no question
     QVERIFY(!asked);
+}
+
+// Issue 22's second "Done when", last part: a header with Czech letters is sent with base
+// letters (the window says so before sending), comes back from the controller, is kept in the
+// saved file and restored when that file is opened to send (docs/grinder.md, "Headers").
+void GrinderWindowTest::czechHeaderRoundTripsThroughSaveAndLoad()
+{
+    const Bytes generated = generatedImage(Family::K51, kK51ImageSize);
+    QVERIFY(writeAll(file("plain.bin"), QByteArray(reinterpret_cast<const char *>(generated.data()),
+                                                   qsizetype(generated.size()))));
+    WindowRig rig({"--fast"});
+    QVERIFY(rig.connectAndWait());
+    QVERIFY(rig.panel->openFileToSend(file("plain.bin")));
+    rig.panel->setHeaderText(QStringLiteral("H\u0158\u00CDDEL \u010D.5"));
+    QVERIFY2(rig.panel->headerNote().contains("is sent as \"HRIDEL c.5\""),
+             qPrintable(rig.panel->headerNote()));
+    QVERIFY(rig.panel->send());
+    QTRY_VERIFY(rig.panel->statusText().contains("confirmed"));
+    QString emuErr; // accumulated: QTRY evaluates twice and each read consumes
+    QTRY_VERIFY2((emuErr += rig.emu.errorOutput()).contains("header \"HRIDEL c.5\""),
+                 qPrintable(emuErr));
+    auto *receive = rig.window.findChild<QPushButton *>("receiveButton");
+    QTRY_VERIFY(receive->isEnabled());
+    QVERIFY(rig.panel->receive());
+    QTRY_VERIFY(rig.save->isEnabled());
+    QCOMPARE(rig.panel->receivedHeaderText(), QStringLiteral("HRIDEL c.5"));
+    QVERIFY(rig.panel->saveReceived(file("kept.frg")));
+    rig.panel->setHeaderText(QStringLiteral("SOMETHING ELSE"));
+    QVERIFY(rig.panel->openFileToSend(file("kept.frg")));
+    QCOMPARE(rig.window.findChild<QLineEdit *>("header")->text(), QStringLiteral("HRIDEL c.5"));
+    QTRY_VERIFY(rig.window.findChild<QPushButton *>("sendButton")->isEnabled());
+    QVERIFY(rig.panel->send());
+    QTRY_VERIFY(rig.panel->statusText().contains("confirmed"));
+    rig.panel->setHeaderText(QStringLiteral("BRUS\u20AC"));
+    QVERIFY(rig.panel->headerNote().contains("cannot show"));
 }
 
 #include "grinderwindow_test.moc"
