@@ -26,10 +26,6 @@
         <translation>--header: &apos;%1&apos; má víc než 16 znaků</translation>
     </message>
     <message>
-        <source>--family: &apos;%1&apos; is not k51, anc or hedit</source>
-        <translation>--family: &apos;%1&apos; není k51, anc ani hedit</translation>
-    </message>
-    <message>
         <source>--baud: &apos;%1&apos; is not a baud rate</source>
         <translation>--baud: &apos;%1&apos; není přenosová rychlost</translation>
     </message>
@@ -150,7 +146,23 @@
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
+        <source>--header: ANC messages carry no header (ANCLOAD sent none); leave it out or choose --family k51 or hedit</source>
+        <translation>--header: zprávy ANC nemají hlavičku (ANCLOAD žádnou neposílal); vynechte ji, nebo zvolte --family k51 či hedit</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: %1 is damaged: %2; nothing was sent
+</source>
+        <translation>frezka-cli grinder: %1 je poškozený: %2; nic se neposlalo
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: %1 holds %2 data (saved from a %2 control), not %3: is the wrong system selected? Use --family %4.
+</source>
+        <translation>frezka-cli grinder: %1 obsahuje data %2 (uložená z řídicího systému %2), ne %3: není vybrán nesprávný systém? Použijte --family %4.
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit|table]
                           [--baud N] [--header TEXT] [--retries N]
                           [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
        frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
@@ -163,6 +175,8 @@
          or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
          letters become their base letters); the file&apos;s length and inner blocks
          are checked first and nothing is sent when they are wrong
+         --family table sends an APROXTAB table (LOA1) to a K51 set to table
+         transfer (KONFIG6 = 3); a table cannot be saved
   z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
          waits for a binary frame); --go MM moves the table and waits until reached
   --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
@@ -176,7 +190,7 @@
   --help                 this text
 Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </source>
-        <translation>použití: frezka-cli grinder ping|save|load --port CESTA [--family k51|anc|hedit]
+        <translation>použití: frezka-cli grinder ping|save|load --port CESTA [--family k51|anc|hedit|table]
                           [--baud N] [--header TEXT] [--retries N]
                           [--reply-timeout-ms N] [--send-anyway] [--raw] SOUBOR
        frezka-cli grinder z --port CESTA [--baud N] [--form 1|2] [--go MM]
@@ -189,6 +203,8 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
          jinak hlavička uložená v SOUBORU, jinak (jako K51LOAD 2.20) název souboru
          (česká písmena se mění na písmena bez diakritiky); délka a vnitřní bloky
          souboru se nejprve zkontrolují a při chybě se nepošle nic
+         --family table pošle tabulku APROXTAB (LOA1) do K51 nastaveného na přenos
+         tabulky (KONFIG6 = 3); tabulku nelze uložit
   z      přenos polohy Z: vypíše polohu stolu (FORM=1 se ptá Z?, FORM=2
          čeká na binární rámec); --go MM přejede stolem a čeká na dosažení
   --baud N               rychlost linky (výchozí: ANC 4800 Bd jako ANCLOAD/ANCSAVE; K51
@@ -204,20 +220,8 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>--header: ANC messages carry no header (ANCLOAD sent none); leave it out or choose --family k51 or hedit</source>
-        <translation>--header: zprávy ANC nemají hlavičku (ANCLOAD žádnou neposílal); vynechte ji, nebo zvolte --family k51 či hedit</translation>
-    </message>
-    <message>
-        <source>frezka-cli grinder: %1 is damaged: %2; nothing was sent
-</source>
-        <translation>frezka-cli grinder: %1 je poškozený: %2; nic se neposlalo
-</translation>
-    </message>
-    <message>
-        <source>frezka-cli grinder: %1 holds %2 data (saved from a %2 control), not %3: is the wrong system selected? Use --family %4.
-</source>
-        <translation>frezka-cli grinder: %1 obsahuje data %2 (uložená z řídicího systému %2), ne %3: není vybrán nesprávný systém? Použijte --family %4.
-</translation>
+        <source>--family: &apos;%1&apos; is not k51, anc, hedit or table</source>
+        <translation>--family: &apos;%1&apos; není k51, anc, hedit ani table</translation>
     </message>
 </context>
 <context>
@@ -2658,6 +2662,18 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (%3) and that the controller is set to transfer (KONFIG6).</source>
         <translation>Žádná odpověď na ENQ do %1 s. Zkontrolujte kabel, nastavení linky (%2 Bd), vybraný systém (%3) a že je řídicí systém nastaven na přenos (KONFIG6).</translation>
     </message>
+    <message>
+        <source>A table goes only from the PC to the controller (as APROXTAB sent it); there is nothing to receive. Choose K51 programs to receive programs.</source>
+        <translation>Tabulka jde jen z PC do řídicího systému (jak ji posílal APROXTAB); není co přijmout. Chcete-li přijmout programy, zvolte programy K51.</translation>
+    </message>
+    <message>
+        <source>Is it set to program transfer (KONFIG6 = 2)? Set to table transfer (KONFIG6 = 3) it refuses programs.</source>
+        <translation>Je nastaven na přenos programů (KONFIG6 = 2)? Nastavený na přenos tabulky (KONFIG6 = 3) programy odmítá.</translation>
+    </message>
+    <message>
+        <source>Is it set to table transfer (KONFIG6 = 3)? Only then does it take a table.</source>
+        <translation>Je nastaven na přenos tabulky (KONFIG6 = 3)? Jen tak tabulku přijme.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::ZLinkSession</name>
@@ -3096,6 +3112,10 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>The data received from the controller have not been saved. Close and discard them?</source>
         <translation>Data přijatá z řídicího systému nejsou uložena. Zavřít okno a zahodit je?</translation>
+    </message>
+    <message>
+        <source>K51 table (APROXTAB), PC → controller only</source>
+        <translation>Tabulka K51 (APROXTAB), jen PC → řídicí systém</translation>
     </message>
 </context>
 <context>

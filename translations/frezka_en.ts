@@ -26,10 +26,6 @@
         <translation>--header: &apos;%1&apos; is longer than 16 characters</translation>
     </message>
     <message>
-        <source>--family: &apos;%1&apos; is not k51, anc or hedit</source>
-        <translation>--family: &apos;%1&apos; is not k51, anc or hedit</translation>
-    </message>
-    <message>
         <source>--baud: &apos;%1&apos; is not a baud rate</source>
         <translation>--baud: &apos;%1&apos; is not a baud rate</translation>
     </message>
@@ -150,60 +146,6 @@
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
-                          [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
-       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
-                          [--reply-timeout-ms N]
-  ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte, with
-         its header and system (a FILE ending in .bin, or --raw: the bare data, as
-         the old tools wrote)
-  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
-         letters become their base letters); the file&apos;s length and inner blocks
-         are checked first and nothing is sent when they are wrong
-  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
-         waits for a binary frame); --go MM moves the table and waits until reached
-  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
-                         HEDIT 9600 Bd)
-  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
-  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
-                         the data after a request)
-  --send-anyway          load a file whose inner blocks have a wrong checksum (only
-                         if the controller itself gave it to you)
-  --go MM                -9999.999 to 9999.999 mm
-  --help                 this text
-Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
-</source>
-        <translation>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
-                          [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
-       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
-                          [--reply-timeout-ms N]
-  ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte, with
-         its header and system (a FILE ending in .bin, or --raw: the bare data, as
-         the old tools wrote)
-  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
-         letters become their base letters); the file&apos;s length and inner blocks
-         are checked first and nothing is sent when they are wrong
-  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
-         waits for a binary frame); --go MM moves the table and waits until reached
-  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
-                         HEDIT 9600 Bd)
-  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
-  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
-                         the data after a request)
-  --send-anyway          load a file whose inner blocks have a wrong checksum (only
-                         if the controller itself gave it to you)
-  --go MM                -9999.999 to 9999.999 mm
-  --help                 this text
-Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
-</translation>
-    </message>
-    <message>
         <source>--header: ANC messages carry no header (ANCLOAD sent none); leave it out or choose --family k51 or hedit</source>
         <translation>--header: ANC messages carry no header (ANCLOAD sent none); leave it out or choose --family k51 or hedit</translation>
     </message>
@@ -218,6 +160,68 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </source>
         <translation>frezka-cli grinder: %1 holds %2 data (saved from a %2 control), not %3: is the wrong system selected? Use --family %4.
 </translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit|table]
+                          [--baud N] [--header TEXT] [--retries N]
+                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
+       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N]
+  ping   link check (ENQ/ACK)
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte, with
+         its header and system (a FILE ending in .bin, or --raw: the bare data, as
+         the old tools wrote)
+  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
+         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
+         letters become their base letters); the file&apos;s length and inner blocks
+         are checked first and nothing is sent when they are wrong
+         --family table sends an APROXTAB table (LOA1) to a K51 set to table
+         transfer (KONFIG6 = 3); a table cannot be saved
+  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
+         waits for a binary frame); --go MM moves the table and waits until reached
+  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
+                         HEDIT 9600 Bd)
+  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
+  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
+                         the data after a request)
+  --send-anyway          load a file whose inner blocks have a wrong checksum (only
+                         if the controller itself gave it to you)
+  --go MM                -9999.999 to 9999.999 mm
+  --help                 this text
+Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
+</source>
+        <translation>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit|table]
+                          [--baud N] [--header TEXT] [--retries N]
+                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
+       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N]
+  ping   link check (ENQ/ACK)
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte, with
+         its header and system (a FILE ending in .bin, or --raw: the bare data, as
+         the old tools wrote)
+  load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
+         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
+         letters become their base letters); the file&apos;s length and inner blocks
+         are checked first and nothing is sent when they are wrong
+         --family table sends an APROXTAB table (LOA1) to a K51 set to table
+         transfer (KONFIG6 = 3); a table cannot be saved
+  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
+         waits for a binary frame); --go MM moves the table and waits until reached
+  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
+                         HEDIT 9600 Bd)
+  --retries N            repeats after a timeout, NAK or bad checksum (default 3)
+  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
+                         the data after a request)
+  --send-anyway          load a file whose inner blocks have a wrong checksum (only
+                         if the controller itself gave it to you)
+  --go MM                -9999.999 to 9999.999 mm
+  --help                 this text
+Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
+</translation>
+    </message>
+    <message>
+        <source>--family: &apos;%1&apos; is not k51, anc, hedit or table</source>
+        <translation>--family: &apos;%1&apos; is not k51, anc, hedit or table</translation>
     </message>
 </context>
 <context>
@@ -2655,6 +2659,18 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (%3) and that the controller is set to transfer (KONFIG6).</source>
         <translation>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (%3) and that the controller is set to transfer (KONFIG6).</translation>
     </message>
+    <message>
+        <source>A table goes only from the PC to the controller (as APROXTAB sent it); there is nothing to receive. Choose K51 programs to receive programs.</source>
+        <translation>A table goes only from the PC to the controller (as APROXTAB sent it); there is nothing to receive. Choose K51 programs to receive programs.</translation>
+    </message>
+    <message>
+        <source>Is it set to program transfer (KONFIG6 = 2)? Set to table transfer (KONFIG6 = 3) it refuses programs.</source>
+        <translation>Is it set to program transfer (KONFIG6 = 2)? Set to table transfer (KONFIG6 = 3) it refuses programs.</translation>
+    </message>
+    <message>
+        <source>Is it set to table transfer (KONFIG6 = 3)? Only then does it take a table.</source>
+        <translation>Is it set to table transfer (KONFIG6 = 3)? Only then does it take a table.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::ZLinkSession</name>
@@ -3093,6 +3109,10 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>The data received from the controller have not been saved. Close and discard them?</source>
         <translation>The data received from the controller have not been saved. Close and discard them?</translation>
+    </message>
+    <message>
+        <source>K51 table (APROXTAB), PC → controller only</source>
+        <translation>K51 table (APROXTAB), PC → controller only</translation>
     </message>
 </context>
 <context>

@@ -48,7 +48,7 @@ struct Args
 QString usage()
 {
     return GrinderCli::tr(
-        "usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]\n"
+        "usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit|table]\n"
         "                          [--baud N] [--header TEXT] [--retries N]\n"
         "                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE\n"
         "       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]\n"
@@ -61,6 +61,8 @@ QString usage()
         "         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech\n"
         "         letters become their base letters); the file's length and inner blocks\n"
         "         are checked first and nothing is sent when they are wrong\n"
+        "         --family table sends an APROXTAB table (LOA1) to a K51 set to table\n"
+        "         transfer (KONFIG6 = 3); a table cannot be saved\n"
         "  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2\n"
         "         waits for a binary frame); --go MM moves the table and waits until reached\n"
         "  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and\n"
@@ -91,7 +93,7 @@ QString parseOption(const QString &option, const QString &value, Args &args)
     } else if (option == "--family") {
         const auto family = familyFromId(value.toStdString());
         if (!family)
-            return GrinderCli::tr("--family: '%1' is not k51, anc or hedit").arg(value);
+            return GrinderCli::tr("--family: '%1' is not k51, anc, hedit or table").arg(value);
         args.family = *family;
     } else if (option == "--baud") {
         args.serial.baud = value.toInt(&ok);
@@ -377,7 +379,8 @@ int runTransfer(const Args &args)
     if (result.ok() && args.action == "save" && !writeFile(target, savedBytes(args, result)))
         return 1;
     const int code = report(result);
-    if (code == 0 && args.action == "load" && args.family != Family::HardChrome)
+    if (code == 0 && args.action == "load" && args.family != Family::HardChrome &&
+        args.family != Family::Table)
         out(GrinderCli::tr("Note: TCHIN programs show \"no prg set\" once until the X axis is set "
                            "up: select the program in AUT and hold RES.\n"));
     return code;

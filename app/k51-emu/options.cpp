@@ -131,6 +131,10 @@ bool parseValue(const std::string &option, const std::string &value, Options &op
     long long n = 0;
     if (option == "--family") {
         const auto family = familyFromId(value);
+        if (family == Family::Table) {
+            error = "--family table: a table goes to a K51 in table mode: use --konfig6 3";
+            return false;
+        }
         if (!family)
             error = "--family: '" + value + "' is not anc, k51 or hedit";
         else

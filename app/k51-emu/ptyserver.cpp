@@ -144,6 +144,7 @@ int PtyServer::run(const volatile std::sig_atomic_t &stop, bool verbose,
     using Clock = std::chrono::steady_clock;
     auto last = Clock::now();
     int stored = 0;
+    int tables = 0;
     while (!stop) {
         if (m_checkPcBaud) {
             const int pc = pcBaud();
@@ -182,6 +183,11 @@ int PtyServer::run(const volatile std::sig_atomic_t &stop, bool verbose,
         for (const std::string &line : m_emulator.takeLog()) {
             if (verbose)
                 std::fprintf(stderr, "k51-emu: %s\n", line.c_str());
+        }
+        if (m_emulator.tablesStored() != tables) {
+            tables = m_emulator.tablesStored();
+            std::fprintf(stderr, "k51-emu: stored a table of %zu bytes\n",
+                         m_emulator.table().size());
         }
         if (m_emulator.loadsStored() != stored) {
             stored = m_emulator.loadsStored();

@@ -51,7 +51,7 @@ ControllerEmulator::ControllerEmulator(EmulatorConfig config)
     , m_info(familyInfo(m_config.family))
     , m_decoder(m_info.framing)
 {
-    if (m_config.image.empty())
+    if (m_config.image.empty() && m_info.defaultSize > 0)
         m_config.image = generatedImage(m_config.family, m_info.defaultSize);
     m_naksToSend = m_config.nakCount;
     m_corruptToSend = m_config.corruptCount;
@@ -128,11 +128,13 @@ void ControllerEmulator::onFrame(const Frame &frame)
     } else if (programs && frame.code == m_info.requestCode && frame.data.empty()) {
         m_resends = 0;
         sendData();
-    } else if (programs && frame.code == m_info.loadCode && frame.payloadSize() > 0) {
+    } else if (programs && frame.code == m_info.loadCode && frame.code != Code::LoadTable &&
+               frame.payloadSize() > 0) {
         onDataMessage(frame);
     } else if (m_config.mode == TransferMode::Table && frame.code == Code::LoadTable) {
         m_table = frame.data;
         m_prenos = 0xB1;
+        ++m_tablesStored;
         replyCode(Code::Ack);
     } else {
         log("unsupported in this mode: NAK");

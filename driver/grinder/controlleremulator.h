@@ -76,6 +76,7 @@ public:
     int checksumErrors() const { return m_checksumErrors; }
     int naksSent() const { return m_naksSent; }
     int loadsStored() const { return m_loadsStored; }
+    int tablesStored() const { return m_tablesStored; }
 
 private:
     void onFrame(const Frame &frame);
@@ -107,6 +108,7 @@ private:
     int m_checksumErrors = 0;
     int m_naksSent = 0;
     int m_loadsStored = 0;
+    int m_tablesStored = 0;
     // Z-position link
     std::int64_t m_zUm = 0;
     std::optional<std::int64_t> m_zTargetUm;

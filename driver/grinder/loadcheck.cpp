@@ -22,6 +22,8 @@ bool sizeFits(Family family, qsizetype size)
         return std::size_t(size) == kK51ImageSize;
     case Family::HardChrome:
         return std::size_t(size) == kHardChromeSize;
+    case Family::Table:
+        return true; // the manual gives no table length: APROXTAB's files are sent as they are
     }
     return false;
 }
@@ -47,6 +49,8 @@ QString expectedLength(Family family)
         return LoadCheck::tr("K51 program data have 21767 bytes (0x5507)");
     case Family::HardChrome:
         return LoadCheck::tr("HEDIT data have 46 bytes (0x2E)");
+    case Family::Table:
+        return {};
     }
     return {};
 }
@@ -86,8 +90,8 @@ LoadCheck LoadCheck::check(Family family, const QByteArray &data, const ImageRep
             return result;
         }
     }
-    if (!image.hasBlocks)
-        return result;
+    if (!image.hasBlocks || family == Family::Table)
+        return result; // a table has no program blocks
     QStringList unmarked, badSum;
     for (const BlockReport &block : image.blocks) {
         if (!block.startOk || !block.idOk)

@@ -39,6 +39,8 @@ QString familyName(Family family)
         return QStringLiteral("K51");
     case Family::HardChrome:
         return QStringLiteral("HEDIT");
+    case Family::Table:
+        return QStringLiteral("K51 (table)");
     }
     return {};
 }

@@ -62,6 +62,15 @@ void TransferSession::ping()
 
 void TransferSession::save()
 {
+    if (!familyInfo(m_family).saves) {
+        if (start(Operation::Save)) {
+            m_state = State::Enquiring; // finish() reports from a busy state
+            finish(TransferError::InvalidInput,
+                   tr("A table goes only from the PC to the controller (as APROXTAB sent it); "
+                      "there is nothing to receive. Choose K51 programs to receive programs."));
+        }
+        return;
+    }
     if (start(Operation::Save))
         sendLater(Frame::control(familyInfo(m_family).framing, Code::Enq), State::Enquiring);
 }
@@ -130,6 +139,17 @@ QString TransferSession::frameName(const Frame &frame) const
     if (frame.payloadSize() > 0)
         name += QStringLiteral(" (%1 B)").arg(frame.payloadSize());
     return name;
+}
+
+QString TransferSession::modeHint() const
+{
+    if (m_family == Family::K51)
+        return QLatin1Char(' ') + tr("Is it set to program transfer (KONFIG6 = 2)? Set to table "
+                                     "transfer (KONFIG6 = 3) it refuses programs.");
+    if (m_family == Family::Table)
+        return QLatin1Char(' ') + tr("Is it set to table transfer (KONFIG6 = 3)? Only then does "
+                                     "it take a table.");
+    return {};
 }
 
 QString TransferSession::sentName() const
@@ -300,8 +320,9 @@ void TransferSession::onFrame(const Frame &frame)
             retryOrFail(TransferError::Rejected,
                         tr("The controller answered NAK to %1 (%2 times): it did not accept "
                            "the data.")
-                            .arg(sentName())
-                            .arg(m_result.naks));
+                                .arg(sentName())
+                                .arg(m_result.naks) +
+                            modeHint());
         else
             finish(TransferError::UnexpectedReply, unexpected);
         break;

@@ -144,6 +144,8 @@ private:
     void finish(TransferError error, const QString &message = QString());
     QString frameName(const Frame &frame) const;
     QString sentName() const;
+    // " Is it set to ... (KONFIG6 = n)?" for the K51 kinds; empty for the others.
+    QString modeHint() const;
 
     Transport &m_transport;
     Clock &m_clock;

@@ -44,6 +44,7 @@ GrinderWindow::GrinderWindow(QWidget *parent)
     m_family->addItem(tr("K51 programs (K51LOAD/K51SAVE, KCOMM)"), int(Family::K51));
     m_family->addItem(tr("ANC programs (ANCLOAD/ANCSAVE)"), int(Family::Anc));
     m_family->addItem(tr("ANC hard-chrome data (HEDIT)"), int(Family::HardChrome));
+    m_family->addItem(tr("K51 table (APROXTAB), PC → controller only"), int(Family::Table));
     m_mode->addItem(tr("Program transfer"), int(LinkMode::Programs));
     m_mode->addItem(tr("Z position, FORM=1 (ASCII)"), int(LinkMode::ZForm1));
     m_mode->addItem(tr("Z position, FORM=2 (binary)"), int(LinkMode::ZForm2));
@@ -161,8 +162,11 @@ bool GrinderWindow::connectPort()
     const auto mode = static_cast<LinkMode>(m_mode->currentData().toInt());
     if (settings.portName == PortSettingsRow::emulatorPortName()) {
         EmulatorConfig config;
-        config.family = family;
-        config.mode = mode == LinkMode::Programs ? TransferMode::Programs : TransferMode::ZPosition;
+        // A table goes to a K51 set to table transfer (KONFIG6 = 3).
+        config.family = family == Family::Table ? Family::K51 : family;
+        config.mode = mode != LinkMode::Programs ? TransferMode::ZPosition
+                      : family == Family::Table  ? TransferMode::Table
+                                                 : TransferMode::Programs;
         config.zForm = mode == LinkMode::ZForm2 ? 2 : 1;
         m_transport = std::make_unique<EmulatorTransport>(m_clock, config, settings.baud, 10000);
     } else {

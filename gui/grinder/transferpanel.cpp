@@ -166,7 +166,7 @@ void TransferPanel::setLinkUp(bool up)
 void TransferPanel::updateEnabled()
 {
     const bool ready = m_session && m_linkUp && !m_session->isBusy();
-    m_receiveButton->setEnabled(ready);
+    m_receiveButton->setEnabled(ready && familyInfo(m_session->family()).saves);
     m_sendButton->setEnabled(ready && !m_toSend.isEmpty());
     m_saveButton->setEnabled(!m_received.data.isEmpty());
     m_cancelButton->setEnabled(m_session && m_session->isBusy() &&
@@ -298,7 +298,8 @@ void TransferPanel::onFinished(const TransferResult &result)
         m_status->setText(tr("Received. Press Save to store the data in a file."));
     } else if (result.operation == Operation::Load && result.ok()) {
         m_status->setText(tr("Sent; the controller confirmed the transfer."));
-        if (m_session && m_session->family() != Family::HardChrome) {
+        if (m_session && m_session->family() != Family::HardChrome &&
+            m_session->family() != Family::Table) {
             m_hint->setText(tr("On the controller, TCHIN programs show \"no prg set\" once after "
                                "a transfer: set up the X axis first — select the TCHIN program "
                                "in AUT and hold RES."));

@@ -3,6 +3,7 @@
 #include "ptyprocess.h"
 
 #include "driver/grinder/controlleremulator.h"
+#include "driver/grinder/emulatortransport.h"
 #include "gui/grinder/grinderwindow.h"
 #include "gui/grinder/serialmonitor.h"
 #include "gui/grinder/zpositionpanel.h"
@@ -34,6 +35,7 @@ private slots:
     void everyFailureEndsVisiblyWithNoStaleSave();
     void unsavedDataIsGuardedOnCloseAndLinkChecksStayOutOfTheLog();
     void czechHeaderRoundTripsThroughSaveAndLoad();
+    void tableGoesToTheEmulatorInTableModeAndK51IsTheFirstChoice();
 
 private:
     QTemporaryDir m_dir;
@@ -356,6 +358,32 @@ void GrinderWindowTest::czechHeaderRoundTripsThroughSaveAndLoad()
     QTRY_VERIFY(rig.panel->statusText().contains("confirmed"));
     rig.panel->setHeaderText(QStringLiteral("BRUS\u20AC"));
     QVERIFY(rig.panel->headerNote().contains("cannot show"));
+}
+
+// Issue 22: the window sends a table (LOA1) to the in-process K51 in table mode; a table cannot
+// be received; on a first start (no settings) the window offers K51, as the docs say.
+void GrinderWindowTest::tableGoesToTheEmulatorInTableModeAndK51IsTheFirstChoice()
+{
+    QSettings().clear();
+    {
+        GrinderWindow fresh;
+        QCOMPARE(fresh.findChild<QComboBox *>("family")->currentData().toInt(), int(Family::K51));
+    }
+    QVERIFY(writeAll(file("shape.tab"), QByteArray(200, char(0x22))));
+    GrinderWindow window;
+    window.setSerialSettings({QStringLiteral("emulator"), 115200, 8, 'n', 1});
+    window.setFamily(Family::Table);
+    QVERIFY(window.connectPort());
+    QTRY_VERIFY(window.isLinkUp());
+    QVERIFY(!window.findChild<QPushButton *>("receiveButton")->isEnabled());
+    TransferPanel *panel = window.transferPanel();
+    QVERIFY(panel->openFileToSend(file("shape.tab")));
+    QVERIFY(panel->send());
+    QTRY_VERIFY2(panel->statusText().contains("confirmed"), qPrintable(panel->failureText()));
+    auto *emulator = dynamic_cast<EmulatorTransport *>(window.transport());
+    QVERIFY(emulator);
+    QCOMPARE(emulator->emulator().tablesStored(), 1);
+    QCOMPARE(emulator->emulator().table(), Bytes(200, 0x22));
 }
 
 #include "grinderwindow_test.moc"

@@ -30,6 +30,7 @@ private slots:
     void cliHelpGoRangeAndUnwritableTarget();
     void cliRefusesAWrongLengthBeforeSendingAndSendsAnywayOnRequest();
     void cliSavedFileKeepsTheHeaderAndCzechLettersAreMappedVisibly();
+    void cliSendsATableToAControllerInTableMode();
 
 private:
     QTemporaryDir m_dir;
@@ -285,6 +286,27 @@ void GrinderPtyTest::cliSavedFileKeepsTheHeaderAndCzechLettersAreMappedVisibly()
     QCOMPARE(wrong.exitCode, 1);
     QVERIFY2(wrong.err.contains("holds K51 data") && wrong.err.contains("--family k51"),
              qPrintable(wrong.err));
+}
+
+// Issue 22: table transfer (LOA1) from the CLI to k51-emu in table mode (--konfig6 3).
+void GrinderPtyTest::cliSendsATableToAControllerInTableMode()
+{
+    QVERIFY(writeAll(file("shape.tab"), QByteArray(512, char(0x11))));
+    EmuProcess emu({"--fast", "--konfig6", "3", "--verbose"});
+    QVERIFY(!emu.path().isEmpty());
+    CliRun load =
+        runCli({"grinder", "load", "--port", emu.path(), "--family", "table", file("shape.tab")});
+    QCOMPARE(load.exitCode, 0);
+    QString emuErr; // accumulated: QTRY evaluates twice and each read consumes
+    QTRY_VERIFY2((emuErr += emu.errorOutput()).contains("stored a table of 512 bytes"),
+                 qPrintable(emuErr));
+    QVERIFY(emuErr.contains("rx LOA1 512 bytes"));
+    CliRun save =
+        runCli({"grinder", "save", "--port", emu.path(), "--family", "table", file("never.tab")});
+    QCOMPARE(save.exitCode, 1);
+    QVERIFY2(save.err.contains("only from the PC"), qPrintable(save.err));
+    CliRun program = runCli({"grinder", "load", "--port", emu.path(), file("saved-none.bin")});
+    QCOMPARE(program.exitCode, 1);
 }
 
 QTEST_GUILESS_MAIN(GrinderPtyTest)

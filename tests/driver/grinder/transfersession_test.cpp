@@ -509,3 +509,54 @@ TEST(GrinderSession, CancelDuringALoadDropsTheRestAndSaysWhatTheControllerDoes)
     rig.session.ping();
     EXPECT_TRUE(rig.run().ok());
 }
+
+// Issue 22: table transfer (LOA1, APROXTAB's job) against a K51 in table mode; a program load
+// to that controller, and a table to one in program mode, are refused with the KONFIG6 hint.
+TEST(GrinderSession, TableTransferGoesToAControllerInTableModeOnly)
+{
+    EmulatorConfig c = config(Family::K51);
+    c.mode = TransferMode::Table;
+    VirtualClock clock;
+    EmulatorTransport transport(clock, c, 9600);
+    transport.open(nullptr);
+    TransferSession session(transport, clock, Family::Table);
+    std::optional<TransferResult> result;
+    QStringList trace;
+    QObject::connect(&session, &TransferSession::finished,
+                     [&](const TransferResult &r) { result = r; });
+    QObject::connect(&session, &TransferSession::traced, [&](const QString &l) { trace << l; });
+    QByteArray table(300, 0);
+    for (int i = 0; i < table.size(); ++i)
+        table[i] = char(i * 7);
+    session.load(headerFromText("SHAFT 12"), table);
+    clock.runUntil([&] { return result.has_value(); }, kLimitUs);
+    ASSERT_TRUE(result && result->ok()) << (result ? result->message.toStdString() : "");
+    EXPECT_TRUE(trace.contains("-> LOA1 (316 B)")) << trace.join('\n').toStdString();
+    EXPECT_EQ(transport.emulator().table(), Bytes(table.begin(), table.end()));
+    EXPECT_EQ(transport.emulator().tablesStored(), 1);
+    EXPECT_EQ(transport.emulator().loadsStored(), 0);
+    result.reset();
+    session.save();
+    ASSERT_TRUE(result.has_value());
+    EXPECT_EQ(result->error, TransferError::InvalidInput);
+    EXPECT_TRUE(result->message.contains("only from the PC")) << result->message.toStdString();
+
+    Rig programs(c); // K51 programs to the controller in table mode
+    const TransferResult refused = programs.load("P", generatedImage(Family::K51, kK51ImageSize));
+    EXPECT_EQ(refused.error, TransferError::Rejected);
+    EXPECT_TRUE(refused.message.contains("KONFIG6 = 2")) << refused.message.toStdString();
+
+    VirtualClock clock2;
+    EmulatorTransport programMode(clock2, config(Family::K51), 9600);
+    programMode.open(nullptr);
+    TransferSession tableSession(programMode, clock2, Family::Table);
+    result.reset();
+    QObject::connect(&tableSession, &TransferSession::finished,
+                     [&](const TransferResult &r) { result = r; });
+    tableSession.load(headerFromText("T"), table);
+    clock2.runUntil([&] { return result.has_value(); }, kLimitUs);
+    ASSERT_TRUE(result.has_value());
+    EXPECT_EQ(result->error, TransferError::Rejected);
+    EXPECT_TRUE(result->message.contains("KONFIG6 = 3")) << result->message.toStdString();
+    EXPECT_EQ(programMode.emulator().tablesStored(), 0);
+}
