@@ -3117,6 +3117,105 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>K51 table (APROXTAB), PC → controller only</source>
         <translation>Tabulka K51 (APROXTAB), jen PC → řídicí systém</translation>
     </message>
+    <message>
+        <source>HEDIT data</source>
+        <translation>Data HEDIT</translation>
+    </message>
+    <message>
+        <source>HEDIT editor</source>
+        <translation>Editor HEDIT</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::HardChromeEditor</name>
+    <message>
+        <source>Address</source>
+        <translation>Adresa</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>Decimal</source>
+        <translation>Desítkově</translation>
+    </message>
+    <message>
+        <source>Hard-chrome data for parametric plunge and traverse grinding: 0x2E bytes from address 0x1100. The manual does not describe the single values, so each byte is shown as it is; what you do not edit is kept unchanged.</source>
+        <translation>Data pro tvrdé chromování pro parametrické zápichové a podélné broušení: 0x2E bajtů od adresy 0x1100. Příručka jednotlivé hodnoty nepopisuje, proto se každý bajt zobrazuje tak, jak je; co neupravíte, zůstane beze změny.</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Otevřít…</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Uložit…</translation>
+    </message>
+    <message>
+        <source>Take received data</source>
+        <translation>Převzít přijatá data</translation>
+    </message>
+    <message>
+        <source>Send to controller</source>
+        <translation>Poslat do řídicího systému</translation>
+    </message>
+    <message>
+        <source>Header:</source>
+        <translation>Hlavička:</translation>
+    </message>
+    <message>
+        <source>Frezka grinder file (*.frg);;Bare data (*.bin)</source>
+        <translation>Soubor Frezka pro brusky (*.frg);;Holá data (*.bin)</translation>
+    </message>
+    <message>
+        <source>Save HEDIT data</source>
+        <translation>Uložit data HEDIT</translation>
+    </message>
+    <message>
+        <source>Open HEDIT data</source>
+        <translation>Otevřít data HEDIT</translation>
+    </message>
+    <message>
+        <source>Grinder files (*.frg *.bin);;All files (*)</source>
+        <translation>Soubory pro brusky (*.frg *.bin);;Všechny soubory (*)</translation>
+    </message>
+    <message>
+        <source>0x%1: &quot;%2&quot; is not a byte in hex (00 to FF); the value is kept.</source>
+        <translation>0x%1: „%2“ není bajt v šestnáctkové soustavě (00 až FF); hodnota zůstává.</translation>
+    </message>
+    <message>
+        <source>0x%1 set to %2.</source>
+        <translation>0x%1 nastaveno na %2.</translation>
+    </message>
+    <message>
+        <source>HEDIT data have 46 bytes (0x2E); these have %1. Nothing changed.</source>
+        <translation>Data HEDIT mají 46 bajtů (0x2E); tato mají %1. Nic se nezměnilo.</translation>
+    </message>
+    <message>
+        <source>46 bytes loaded.</source>
+        <translation>Načteno 46 bajtů.</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Nelze číst %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 holds %2 data, not HEDIT data.</source>
+        <translation>%1 obsahuje data %2, ne data HEDIT.</translation>
+    </message>
+    <message>
+        <source>%1 is damaged: %2</source>
+        <translation>%1 je poškozený: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Nelze zapsat %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>Uloženo do %1.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::HoldBanner</name>
@@ -5163,6 +5262,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>%1 is damaged: %2</source>
         <translation>%1 je poškozený: %2</translation>
+    </message>
+    <message>
+        <source>%1 bytes from the editor</source>
+        <translation>%1 bajtů z editoru</translation>
     </message>
 </context>
 <context>

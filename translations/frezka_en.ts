@@ -3114,6 +3114,105 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <source>K51 table (APROXTAB), PC → controller only</source>
         <translation>K51 table (APROXTAB), PC → controller only</translation>
     </message>
+    <message>
+        <source>HEDIT data</source>
+        <translation>HEDIT data</translation>
+    </message>
+    <message>
+        <source>HEDIT editor</source>
+        <translation>HEDIT editor</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::HardChromeEditor</name>
+    <message>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>Decimal</source>
+        <translation>Decimal</translation>
+    </message>
+    <message>
+        <source>Hard-chrome data for parametric plunge and traverse grinding: 0x2E bytes from address 0x1100. The manual does not describe the single values, so each byte is shown as it is; what you do not edit is kept unchanged.</source>
+        <translation>Hard-chrome data for parametric plunge and traverse grinding: 0x2E bytes from address 0x1100. The manual does not describe the single values, so each byte is shown as it is; what you do not edit is kept unchanged.</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Open…</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Save…</translation>
+    </message>
+    <message>
+        <source>Take received data</source>
+        <translation>Take received data</translation>
+    </message>
+    <message>
+        <source>Send to controller</source>
+        <translation>Send to controller</translation>
+    </message>
+    <message>
+        <source>Header:</source>
+        <translation>Header:</translation>
+    </message>
+    <message>
+        <source>Frezka grinder file (*.frg);;Bare data (*.bin)</source>
+        <translation>Frezka grinder file (*.frg);;Bare data (*.bin)</translation>
+    </message>
+    <message>
+        <source>Save HEDIT data</source>
+        <translation>Save HEDIT data</translation>
+    </message>
+    <message>
+        <source>Open HEDIT data</source>
+        <translation>Open HEDIT data</translation>
+    </message>
+    <message>
+        <source>Grinder files (*.frg *.bin);;All files (*)</source>
+        <translation>Grinder files (*.frg *.bin);;All files (*)</translation>
+    </message>
+    <message>
+        <source>0x%1: &quot;%2&quot; is not a byte in hex (00 to FF); the value is kept.</source>
+        <translation>0x%1: &quot;%2&quot; is not a byte in hex (00 to FF); the value is kept.</translation>
+    </message>
+    <message>
+        <source>0x%1 set to %2.</source>
+        <translation>0x%1 set to %2.</translation>
+    </message>
+    <message>
+        <source>HEDIT data have 46 bytes (0x2E); these have %1. Nothing changed.</source>
+        <translation>HEDIT data have 46 bytes (0x2E); these have %1. Nothing changed.</translation>
+    </message>
+    <message>
+        <source>46 bytes loaded.</source>
+        <translation>46 bytes loaded.</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Cannot read %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 holds %2 data, not HEDIT data.</source>
+        <translation>%1 holds %2 data, not HEDIT data.</translation>
+    </message>
+    <message>
+        <source>%1 is damaged: %2</source>
+        <translation>%1 is damaged: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>Saved to %1.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::HoldBanner</name>
@@ -5155,6 +5254,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>%1 is damaged: %2</source>
         <translation>%1 is damaged: %2</translation>
+    </message>
+    <message>
+        <source>%1 bytes from the editor</source>
+        <translation>%1 bytes from the editor</translation>
     </message>
 </context>
 <context>

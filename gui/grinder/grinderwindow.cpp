@@ -1,6 +1,7 @@
 #include "gui/grinder/grinderwindow.h"
 
 #include "driver/grinder/emulatortransport.h"
+#include "gui/grinder/hardchromeeditor.h"
 #include "gui/grinder/portsettings.h"
 #include "gui/grinder/serialmonitor.h"
 #include "gui/grinder/zpositionpanel.h"
@@ -34,6 +35,7 @@ GrinderWindow::GrinderWindow(QWidget *parent)
     , m_transferPanel(new TransferPanel(m_clock, this))
     , m_zPanel(new ZPositionPanel(this))
     , m_monitor(new SerialMonitor(this))
+    , m_hardChrome(new HardChromeEditor(this))
 {
     setWindowFlag(Qt::Window); // a window of its own even when given a parent
     setWindowTitle(tr("Grinder transfer"));
@@ -64,6 +66,15 @@ GrinderWindow::GrinderWindow(QWidget *parent)
     m_tabs->addTab(m_transferPanel, tr("Program transfer"));
     m_tabs->addTab(m_zPanel, tr("Z position"));
     m_tabs->addTab(m_monitor, tr("Serial monitor"));
+    m_tabs->addTab(m_hardChrome, tr("HEDIT data"));
+    connect(m_hardChrome, &HardChromeEditor::receivedDataWanted, this, [this] {
+        m_hardChrome->setData(m_transferPanel->receivedData(), m_transferPanel->receivedHeader());
+    });
+    connect(m_hardChrome, &HardChromeEditor::sendRequested, this,
+            [this](const QByteArray &data, const QString &header) {
+                m_tabs->setCurrentWidget(m_transferPanel);
+                m_transferPanel->sendData(data, tr("HEDIT editor"), header, Family::HardChrome);
+            });
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(connectionBox);
     layout->addWidget(m_tabs, 1);

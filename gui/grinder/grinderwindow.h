@@ -26,6 +26,7 @@ class QTimer;
 
 namespace frezka::gui {
 
+class HardChromeEditor;
 class PortSettingsRow;
 class SerialMonitor;
 class ZPositionPanel;
@@ -59,6 +60,7 @@ public:
     TransferPanel *transferPanel() const { return m_transferPanel; }
     ZPositionPanel *zPositionPanel() const { return m_zPanel; }
     SerialMonitor *serialMonitor() const { return m_monitor; }
+    HardChromeEditor *hardChromeEditor() const { return m_hardChrome; }
     grinder::Transport *transport() const { return m_transport.get(); }
 
 protected:
@@ -90,6 +92,7 @@ private:
     TransferPanel *m_transferPanel;
     ZPositionPanel *m_zPanel;
     SerialMonitor *m_monitor;
+    HardChromeEditor *m_hardChrome;
 };
 
 } // namespace frezka::gui

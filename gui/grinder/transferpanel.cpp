@@ -409,6 +409,19 @@ bool TransferPanel::openFileToSend(const QString &path)
     return true;
 }
 
+bool TransferPanel::sendData(const QByteArray &data, const QString &label, const QString &header,
+                             Family family)
+{
+    m_toSend = data;
+    m_toSendPath = label;
+    m_toSendFamily = family;
+    m_sendFile->setText(label);
+    m_sendInfo->setText(tr("%1 bytes from the editor").arg(data.size()));
+    m_header->setText(header);
+    updateEnabled();
+    return send();
+}
+
 void TransferPanel::updateHeaderNote()
 {
     const QString typed = m_header->text();

@@ -41,7 +41,11 @@ public:
     bool saveReceived(const QString &path); // write the received data, byte for byte
     bool openFileToSend(const QString &path);
     void setHeaderText(const QString &text);
-    bool send();   // PC -> Controller
+    bool send(); // PC -> Controller
+    // Sends `data` (not from a file: the HEDIT editor) under `label` with `header`.
+    bool sendData(const QByteArray &data, const QString &label, const QString &header,
+                  grinder::Family family);
+    grinder::Header receivedHeader() const { return m_received.header; }
     void cancel(); // stop the transfer in progress
     QByteArray receivedData() const { return m_received.data; }
     QString statusText() const;

@@ -5,6 +5,7 @@
 #include "driver/grinder/controlleremulator.h"
 #include "driver/grinder/emulatortransport.h"
 #include "gui/grinder/grinderwindow.h"
+#include "gui/grinder/hardchromeeditor.h"
 #include "gui/grinder/serialmonitor.h"
 #include "gui/grinder/zpositionpanel.h"
 
@@ -36,6 +37,7 @@ private slots:
     void unsavedDataIsGuardedOnCloseAndLinkChecksStayOutOfTheLog();
     void czechHeaderRoundTripsThroughSaveAndLoad();
     void tableGoesToTheEmulatorInTableModeAndK51IsTheFirstChoice();
+    void heditEditRoundTripsThroughTheController();
 
 private:
     QTemporaryDir m_dir;
@@ -384,6 +386,39 @@ void GrinderWindowTest::tableGoesToTheEmulatorInTableModeAndK51IsTheFirstChoice(
     QVERIFY(emulator);
     QCOMPARE(emulator->emulator().tablesStored(), 1);
     QCOMPARE(emulator->emulator().table(), Bytes(200, 0x22));
+}
+
+// Issue 22: HEDIT's editor — the controller's 0x2E bytes are received, one byte edited, sent
+// back (LOA2) and stored: only that byte differs; a save without edits is byte-exact.
+void GrinderWindowTest::heditEditRoundTripsThroughTheController()
+{
+    WindowRig rig({"--fast", "--family", "hedit", "--header", "CHROM 1", "--store",
+                   file("hedit-stored.bin")});
+    rig.window.setFamily(Family::HardChrome);
+    QVERIFY(rig.connectAndWait());
+    QVERIFY(rig.panel->receive());
+    QTRY_VERIFY(rig.save->isEnabled());
+    const QByteArray original = rig.panel->receivedData();
+    QCOMPARE(original.size(), 46);
+    frezka::gui::HardChromeEditor *editor = rig.window.hardChromeEditor();
+    QVERIFY(editor->setData(rig.panel->receivedData(), rig.panel->receivedHeader()));
+    QCOMPARE(editor->headerText(), QStringLiteral("CHROM 1"));
+    QVERIFY(editor->saveFile(file("unchanged.bin")));
+    QCOMPARE(readAll(file("unchanged.bin")), original);
+    QVERIFY(!editor->setByte(0x112E, 1)); // past the 0x2E bytes
+    QVERIFY(editor->setByte(0x1105, 0x7F));
+    QVERIFY(editor->saveFile(file("edited.frg")));
+    QVERIFY(editor->setByte(0x1105, 0x00));
+    QVERIFY(editor->openFile(file("edited.frg"))); // the header and the edit come back
+    QCOMPARE(editor->headerText(), QStringLiteral("CHROM 1"));
+    QByteArray expected = original;
+    expected[5] = char(0x7F);
+    QCOMPARE(editor->data(), expected);
+    QTRY_VERIFY(rig.window.findChild<QPushButton *>("receiveButton")->isEnabled());
+    rig.window.findChild<QPushButton *>("hardChromeSend")->click();
+    QTRY_VERIFY2(rig.panel->statusText().contains("confirmed"),
+                 qPrintable(rig.panel->failureText()));
+    QTRY_COMPARE(readAll(file("hedit-stored.bin")), expected);
 }
 
 #include "grinderwindow_test.moc"
