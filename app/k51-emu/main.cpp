@@ -36,6 +36,8 @@ int main(int argc, char *argv[])
         std::fputs(usageText().c_str(), stdout);
         return 0;
     }
+    if (!options.note.empty())
+        std::fprintf(stderr, "k51-emu: %s\n", options.note.c_str());
     struct sigaction action
     {
     };

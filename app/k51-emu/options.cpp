@@ -27,6 +27,11 @@ Controller:
   --konfig6 N             transfer mode, K51-1 numbering: 0 none (silent), 1 Z-position,
                           2 programs (default), 3 table
   --k51-2                 read --konfig6 with K51-2 numbering: 0 none, 1 programs
+                          Any other --konfig6 value (an unprogrammed EEPROM byte, usually
+                          255 = FF) is replaced at power-on by the firmware default
+  --see-konfig6 N         that firmware default (SEE_KONFIG6 in KONFIG.A51; default 2 for
+                          K51-1, 1 for K51-2)
+  --selector pgn|other    the controller's selector (default pgn); FORM=1 answers only in PGN
   --zform 1|2             Z-position protocol: 1 ASCII both ways (default), 2 binary one way
   --z-start MM            initial Z position in mm (default -1.234)
   --z-speed MM_PER_S      table speed for GO (default 20)
@@ -76,6 +81,7 @@ bool readFile(const std::string &path, Bytes &bytes)
 struct Pending
 {
     int konfig6 = 2;
+    int seeKonfig6 = -1; // -1: 2 for K51-1, 1 for K51-2
     bool k51Type2 = false;
     std::string imagePath;
 };
@@ -149,6 +155,12 @@ bool parseValue(const std::string &option, const std::string &value, Options &op
         c.header = headerFromText(value);
         return true;
     }
+    if (option == "--selector") {
+        if (value != "pgn" && value != "other")
+            error = "--selector: '" + value + "' is not pgn or other";
+        c.selectorInPgn = value == "pgn";
+        return error.empty();
+    }
     if (option == "--store") {
         options.storePath = value;
         return true;
@@ -170,6 +182,7 @@ bool parseValue(const std::string &option, const std::string &value, Options &op
     };
     const NumberOption numbers[] = {
         {"--konfig6", 0, 255, [&](long long v) { pending.konfig6 = int(v); }},
+        {"--see-konfig6", 0, 3, [&](long long v) { pending.seeKonfig6 = int(v); }},
         {"--zform", 1, 2, [&](long long v) { c.zForm = int(v); }},
         {"--baud", 50, 4000000, [&](long long v) { options.baud = int(v); }},
         {"--reply-delay-ms", 0, 600000, [&](long long v) { c.replyDelayUs = v * 1000; }},
@@ -193,7 +206,18 @@ bool parseValue(const std::string &option, const std::string &value, Options &op
 bool finish(const Pending &pending, Options &options, std::string &error)
 {
     EmulatorConfig &c = options.config;
-    const auto mode = transferModeFromKonfig6(pending.konfig6, pending.k51Type2);
+    auto mode = transferModeFromKonfig6(pending.konfig6, pending.k51Type2);
+    if (!mode) {
+        // The manual: an unexpected EEPROM value (usually FF) is programmed at power-on with
+        // SEE_KONFIG6 from KONFIG.A51.
+        const int see = pending.seeKonfig6 >= 0 ? pending.seeKonfig6 : pending.k51Type2 ? 1 : 2;
+        mode = transferModeFromKonfig6(see, pending.k51Type2);
+        if (mode)
+            options.note = "KONFIG6 = " + std::to_string(pending.konfig6) +
+                           " is not a transfer mode: at power-on the firmware programs "
+                           "SEE_KONFIG6 = " +
+                           std::to_string(see);
+    }
     if (!mode) {
         error = "--konfig6 " + std::to_string(pending.konfig6) + " is not a transfer mode of " +
                 (pending.k51Type2 ? "K51-2 (0 or 1)" : "K51-1 (0 to 3)");

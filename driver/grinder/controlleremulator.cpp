@@ -76,9 +76,11 @@ void ControllerEmulator::feed(const std::uint8_t *bytes, std::size_t size)
     case TransferMode::None:
         return;
     case TransferMode::ZPosition:
-        if (m_config.zForm == 1) {
+        if (m_config.zForm == 1 && m_config.selectorInPgn) {
             for (std::size_t i = 0; i < size; ++i)
                 feedAscii(bytes[i]);
+        } else if (m_config.zForm == 1) {
+            log("selector not in PGN: FORM=1 input ignored");
         }
         return; // FORM=2 is one way: input is ignored
     case TransferMode::Programs:

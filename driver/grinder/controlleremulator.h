@@ -31,8 +31,9 @@ struct EmulatorConfig
 {
     Family family = Family::K51;
     TransferMode mode = TransferMode::Programs;
-    int zForm = 1; // 1 ASCII both ways, 2 binary one way
-    Bytes image;   // empty: a generated image of the family's size
+    int zForm = 1;             // 1 ASCII both ways, 2 binary one way
+    bool selectorInPgn = true; // FORM=1 answers only with the selector in PGN (manual §5)
+    Bytes image;               // empty: a generated image of the family's size
     Header header = headerFromText("FREZKA EMU");
     int nakCount = 0;                 // answer the first N good data messages with NAK
     int corruptCount = 0;             // flip one byte in the first N data messages sent

@@ -31,6 +31,7 @@ private slots:
     void cliRefusesAWrongLengthBeforeSendingAndSendsAnywayOnRequest();
     void cliSavedFileKeepsTheHeaderAndCzechLettersAreMappedVisibly();
     void cliSendsATableToAControllerInTableMode();
+    void emulatorTakesTheFirmwareDefaultForAnUnprogrammedKonfig6();
 
 private:
     QTemporaryDir m_dir;
@@ -307,6 +308,23 @@ void GrinderPtyTest::cliSendsATableToAControllerInTableMode()
     QVERIFY2(save.err.contains("only from the PC"), qPrintable(save.err));
     CliRun program = runCli({"grinder", "load", "--port", emu.path(), file("saved-none.bin")});
     QCOMPARE(program.exitCode, 1);
+}
+
+// Issue 22: KONFIG6 = FF (an unprogrammed EEPROM byte) is not refused: the firmware programs
+// SEE_KONFIG6 at power-on, and k51-emu says so.
+void GrinderPtyTest::emulatorTakesTheFirmwareDefaultForAnUnprogrammedKonfig6()
+{
+    EmuProcess emu({"--fast", "--konfig6", "255"});
+    QVERIFY(!emu.path().isEmpty()); // (errorOutput() in a message would consume the note)
+    CliRun ping = runCli({"grinder", "ping", "--port", emu.path()});
+    QCOMPARE(ping.exitCode, 0);
+    QCOMPARE(emu.terminate(), 0);
+    const QString said = emu.errorOutput();
+    QVERIFY2(said.contains("SEE_KONFIG6 = 2"), qPrintable(said));
+    EmuProcess z({"--fast", "--konfig6", "255", "--see-konfig6", "1", "--selector", "other"});
+    QVERIFY(!z.path().isEmpty());
+    CliRun query = runCli({"grinder", "z", "--port", z.path(), "--reply-timeout-ms", "300"});
+    QCOMPARE(query.exitCode, 1); // Z mode, but the selector is not in PGN: no answer
 }
 
 QTEST_GUILESS_MAIN(GrinderPtyTest)
