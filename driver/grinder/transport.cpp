@@ -145,7 +145,11 @@ void SerialTransport::onError()
         return;
     if (error == QSerialPort::TimeoutError)
         return;
-    if (error == QSerialPort::ResourceError) {
+    const QString path = m_settings.portName.startsWith(QLatin1Char('/'))
+                             ? m_settings.portName
+                             : QStringLiteral("/dev/") + m_settings.portName;
+    if (error == QSerialPort::ResourceError || error == QSerialPort::DeviceNotFoundError ||
+        !QFileInfo::exists(path)) {
         // The device vanished (errno ENXIO/EIO, "Inappropriate ioctl" on a dead pty).
         emit failed(tr("The port %1 went away: is the cable or the USB adapter unplugged? Plug "
                        "it in, then connect again.")

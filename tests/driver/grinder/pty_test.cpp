@@ -32,6 +32,7 @@ private slots:
     void cliSavedFileKeepsTheHeaderAndCzechLettersAreMappedVisibly();
     void cliSendsATableToAControllerInTableMode();
     void emulatorTakesTheFirmwareDefaultForAnUnprogrammedKonfig6();
+    void aBusyPortNamesWhoHasItAndAVanishedOneIsCalledUnplugged();
 
 private:
     QTemporaryDir m_dir;
@@ -325,6 +326,27 @@ void GrinderPtyTest::emulatorTakesTheFirmwareDefaultForAnUnprogrammedKonfig6()
     QVERIFY(!z.path().isEmpty());
     CliRun query = runCli({"grinder", "z", "--port", z.path(), "--reply-timeout-ms", "300"});
     QCOMPARE(query.exitCode, 1); // Z mode, but the selector is not in PGN: no answer
+}
+
+// Issue 22: "port busy: who has it" and "cable unplugged" in words, not errno texts.
+void GrinderPtyTest::aBusyPortNamesWhoHasItAndAVanishedOneIsCalledUnplugged()
+{
+    auto emu = std::make_unique<EmuProcess>(QStringList{"--fast"});
+    QVERIFY(!emu->path().isEmpty());
+    SerialTransport first({emu->path(), 9600, 8, 'n', 1});
+    QString error;
+    QVERIFY2(first.open(&error), qPrintable(error));
+    SerialTransport second({emu->path(), 9600, 8, 'n', 1});
+    QVERIFY(!second.open(&error));
+    QVERIFY2(error.contains("is in use by") &&
+                 error.contains(QString::number(QCoreApplication::applicationPid())),
+             qPrintable(error));
+    QSignalSpy failed(&first, &Transport::failed);
+    emu.reset(); // the controller's side of the line goes away
+    first.write(QByteArray(64, 'x'));
+    QVERIFY(failed.wait(3000) || !failed.isEmpty());
+    const QString message = failed.first().first().toString();
+    QVERIFY2(message.contains("unplugged"), qPrintable(message));
 }
 
 QTEST_GUILESS_MAIN(GrinderPtyTest)
