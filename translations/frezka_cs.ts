@@ -5267,6 +5267,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>%1 bytes from the editor</source>
         <translation>%1 bajtů z editoru</translation>
     </message>
+    <message>
+        <source>ANC messages carry no header; nothing typed here would be sent.</source>
+        <translation>Zprávy ANC nemají hlavičku; nic, co sem napíšete, by se neposlalo.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::UnitConfigDialog</name>

@@ -5259,6 +5259,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>%1 bytes from the editor</source>
         <translation>%1 bytes from the editor</translation>
     </message>
+    <message>
+        <source>ANC messages carry no header; nothing typed here would be sent.</source>
+        <translation>ANC messages carry no header; nothing typed here would be sent.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::UnitConfigDialog</name>

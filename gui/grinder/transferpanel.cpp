@@ -167,6 +167,12 @@ void TransferPanel::updateEnabled()
 {
     const bool ready = m_session && m_linkUp && !m_session->isBusy();
     m_receiveButton->setEnabled(ready && familyInfo(m_session->family()).saves);
+    // ANC messages carry no header (ANCLOAD sent none): the field is off, not ignored silently.
+    const bool hasHeader = !m_session || m_session->family() != Family::Anc;
+    m_header->setEnabled(hasHeader);
+    m_header->setToolTip(hasHeader ? QString()
+                                   : tr("ANC messages carry no header; nothing typed here would "
+                                        "be sent."));
     m_sendButton->setEnabled(ready && !m_toSend.isEmpty());
     m_saveButton->setEnabled(!m_received.data.isEmpty());
     m_cancelButton->setEnabled(m_session && m_session->isBusy() &&

@@ -200,6 +200,11 @@ void GrinderWindowTest::choosingAControlSetsItsRate()
     };
     choose(Family::Anc);
     QCOMPARE(openedAt(QStringLiteral("4800 Bd")), QString());
+    window.setLinkMode(GrinderWindow::LinkMode::Programs); // ANC has no header: the field is off
+    QVERIFY(window.connectPort());
+    QVERIFY(!window.findChild<QLineEdit *>("header")->isEnabled());
+    window.disconnectPort();
+    window.setLinkMode(GrinderWindow::LinkMode::ZForm1);
     choose(Family::K51);
     QCOMPARE(openedAt(QStringLiteral("9600 Bd")), QString());
 }
@@ -378,6 +383,7 @@ void GrinderWindowTest::tableGoesToTheEmulatorInTableModeAndK51IsTheFirstChoice(
     QVERIFY(window.connectPort());
     QTRY_VERIFY(window.isLinkUp());
     QVERIFY(!window.findChild<QPushButton *>("receiveButton")->isEnabled());
+    QVERIFY(window.findChild<QLineEdit *>("header")->isEnabled()); // a table has a header
     TransferPanel *panel = window.transferPanel();
     QVERIFY(panel->openFileToSend(file("shape.tab")));
     QVERIFY(panel->send());
