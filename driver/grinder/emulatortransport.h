@@ -29,6 +29,7 @@ public:
     bool isOpen() const override { return m_open; }
     void write(const QByteArray &bytes) override;
     void discardOutput() override;
+    qint64 pendingOutput() const override { return qint64(m_appQueue.size()); }
     int baud() const override { return m_baud; }
     QString name() const override { return tr("emulator"); }
 

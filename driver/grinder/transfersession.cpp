@@ -40,7 +40,7 @@ bool TransferSession::start(Operation operation)
     m_result = TransferResult();
     m_result.operation = operation;
     m_attempt = 0;
-    m_inFlight = 0;
+    m_inFlight = m_written = m_reported = 0;
     m_startUs = m_clock.nowUs();
     m_wire.setBaud(m_transport.baud());
     m_wire.reset(m_startUs);
@@ -143,11 +143,20 @@ void TransferSession::armReplyWait()
     arm(m_waitMs, startUs);
 }
 
+void TransferSession::syncAccepted()
+{
+    const qint64 taken =
+        std::max(m_reported, m_written - std::min(m_written, m_transport.pendingOutput()));
+    m_wire.accepted(m_clock.nowUs(), taken - m_wire.acceptedBytes());
+    m_inFlight = m_written - taken;
+}
+
 void TransferSession::tickProgress()
 {
     m_progressTimer = 0;
     if (m_state != State::Sending)
         return;
+    syncAccepted();
     const std::int64_t now = m_clock.nowUs();
     const qint64 notGone = m_inFlight + (m_wire.acceptedBytes() - m_wire.sentBy(now));
     emit progressed(std::clamp<qint64>(m_sentSize - notGone, 0, m_sentSize), m_sentSize);
@@ -175,7 +184,8 @@ void TransferSession::sendLater(const Frame &frame, State next, int pauseMs)
         m_waitMs = next == State::Requesting ? m_timing.firstByteTimeoutMs
                    : next == State::Sending  ? m_timing.storeTimeoutMs
                                              : m_timing.replyTimeoutMs;
-        m_inFlight += qint64(wire.size());
+        m_written += qint64(wire.size());
+        m_inFlight = m_written - m_wire.acceptedBytes();
         armReplyWait();
         if (next == State::Sending)
             m_progressTimer = m_clock.callAfter(0, [this] { tickProgress(); });
@@ -187,6 +197,8 @@ void TransferSession::sendLater(const Frame &frame, State next, int pauseMs)
 
 void TransferSession::onReceived(const QByteArray &bytes)
 {
+    if (isBusy())
+        syncAccepted(); // what the port took before this reply (the ACK guard below)
     std::vector<DecodeEvent> events;
     m_decoder.feed(reinterpret_cast<const std::uint8_t *>(bytes.constData()),
                    std::size_t(bytes.size()), events);
@@ -351,6 +363,7 @@ void TransferSession::retryOrFail(TransferError error, const QString &message, b
 void TransferSession::onTimeout()
 {
     const double seconds = m_timeoutMs / 1000.0;
+    syncAccepted();
     if (m_inFlight > 0 && m_state != State::AckingSave) {
         finish(TransferError::Transport,
                tr("The port %1 stopped taking data: %2 bytes of %3 were not sent. Check that the "
@@ -417,8 +430,8 @@ void TransferSession::onTimeout()
 
 void TransferSession::onWritten(qint64 bytes)
 {
-    m_inFlight = std::max<qint64>(0, m_inFlight - bytes);
-    m_wire.accepted(m_clock.nowUs(), bytes);
+    m_reported += bytes;
+    syncAccepted();
     if (m_state == State::Enquiring || m_state == State::Requesting || m_state == State::Sending) {
         // Only while nothing of the reply has come: a message under way keeps its gap timer.
         if (m_state != State::Requesting || m_decoder.pendingBytes() == 0)

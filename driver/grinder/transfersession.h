@@ -141,6 +141,8 @@ private:
     void armReplyWait();
     // Emits the progress of the data message on the wire, while it is being sent.
     void tickProgress();
+    // Counts what the port has taken (its report or, earlier, its queue) into the wire model.
+    void syncAccepted();
     void finish(TransferError error, const QString &message = QString());
     QString frameName(const Frame &frame) const;
     QString sentName() const;
@@ -158,7 +160,9 @@ private:
     Frame m_dataFrame;     // load: the message to (re)send
     Frame m_lastSent;      // for messages and retries
     qint64 m_sentSize = 0; // wire size of the data message being sent
-    qint64 m_inFlight = 0; // bytes written but not yet reported as written
+    qint64 m_inFlight = 0; // bytes written that the port has not taken yet
+    qint64 m_written = 0;  // bytes written since start()
+    qint64 m_reported = 0; // bytes the port reported written since start()
     int m_attempt = 0;     // retries in the current step
     int m_timeoutMs = 0;
     int m_waitMs = 0; // the reply wait of the message being sent, from the end of the wire

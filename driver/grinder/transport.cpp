@@ -131,6 +131,11 @@ void SerialTransport::write(const QByteArray &bytes)
                         .arg(m_port->errorString()));
 }
 
+qint64 SerialTransport::pendingOutput() const
+{
+    return m_port->bytesToWrite();
+}
+
 void SerialTransport::discardOutput()
 {
     if (m_port->isOpen())
