@@ -2,6 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
 <context>
+    <name>ControllerHeader</name>
+    <message>
+        <source>The header &quot;%1&quot; holds &apos;%2&apos;, which the controller cannot show (it shows letters without diacritics, digits and signs). Replace it.</source>
+        <translation>Hlavička „%1“ obsahuje &apos;%2&apos;, který řídicí systém nedokáže zobrazit (zobrazí písmena bez diakritiky, číslice a znaménka). Nahraďte ho.</translation>
+    </message>
+    <message>
+        <source>The header &quot;%1&quot; is sent as &quot;%2&quot;: the controller has no Czech letters, so they become their base letters.</source>
+        <translation>Hlavička „%1“ se pošle jako „%2“: řídicí systém nemá česká písmena, proto se mění na písmena bez diakritiky.</translation>
+    </message>
+</context>
+<context>
     <name>EmulatorTransport</name>
     <message>
         <source>built-in %1 emulator</source>
@@ -13,14 +24,6 @@
     <message>
         <source>--header: &apos;%1&apos; is longer than 16 characters</source>
         <translation>--header: &apos;%1&apos; má víc než 16 znaků</translation>
-    </message>
-    <message>
-        <source>--header: &apos;%1&apos; holds &apos;%2&apos;; the controller shows plain ASCII only (no diacritics)</source>
-        <translation>--header: &apos;%1&apos; obsahuje &apos;%2&apos;; řídicí systém zobrazí jen čisté ASCII (bez diakritiky)</translation>
-    </message>
-    <message>
-        <source>--family: &apos;%1&apos; is not k51, anc or hedit</source>
-        <translation>--family: &apos;%1&apos; není k51, anc ani hedit</translation>
     </message>
     <message>
         <source>--baud: &apos;%1&apos; is not a baud rate</source>
@@ -37,10 +40,6 @@
     <message>
         <source>--form: &apos;%1&apos; is not 1 or 2</source>
         <translation>--form: &apos;%1&apos; není 1 ani 2</translation>
-    </message>
-    <message>
-        <source>--go: &apos;%1&apos; is not a position in mm (e.g. 12.5)</source>
-        <translation>--go: &apos;%1&apos; není poloha v mm (např. 12.5)</translation>
     </message>
     <message>
         <source>unknown option &apos;%1&apos;</source>
@@ -137,15 +136,47 @@
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
+        <source>--go: &apos;%1&apos; is not a position from -9999.999 to 9999.999 mm (e.g. 12.5)</source>
+        <translation>--go: &apos;%1&apos; není poloha od -9999.999 do 9999.999 mm (např. 12.5)</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: cannot write %1: %2; nothing was asked from the controller
+</source>
+        <translation>frezka-cli grinder: nelze zapsat %1: %2; od řídicího systému se nic nežádalo
+</translation>
+    </message>
+    <message>
+        <source>--header: ANC messages carry no header (ANCLOAD sent none); leave it out or choose --family k51 or hedit</source>
+        <translation>--header: zprávy ANC nemají hlavičku (ANCLOAD žádnou neposílal); vynechte ji, nebo zvolte --family k51 či hedit</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: %1 is damaged: %2; nothing was sent
+</source>
+        <translation>frezka-cli grinder: %1 je poškozený: %2; nic se neposlalo
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: %1 holds %2 data (saved from a %2 control), not %3: is the wrong system selected? Use --family %4.
+</source>
+        <translation>frezka-cli grinder: %1 obsahuje data %2 (uložená z řídicího systému %2), ne %3: není vybrán nesprávný systém? Použijte --family %4.
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit|table]
                           [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] FILE
+                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
        frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
                           [--reply-timeout-ms N]
   ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte, with
+         its header and system (a FILE ending in .bin, or --raw: the bare data, as
+         the old tools wrote)
   load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or, as K51LOAD 2.20 did, the file name
+         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
+         letters become their base letters); the file&apos;s length and inner blocks
+         are checked first and nothing is sent when they are wrong
+         --family table sends an APROXTAB table (LOA1) to a K51 set to table
+         transfer (KONFIG6 = 3); a table cannot be saved
   z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
          waits for a binary frame); --go MM moves the table and waits until reached
   --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
@@ -153,17 +184,27 @@
   --retries N            repeats after a timeout, NAK or bad checksum (default 3)
   --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
                          the data after a request)
+  --send-anyway          load a file whose inner blocks have a wrong checksum (only
+                         if the controller itself gave it to you)
+  --go MM                -9999.999 to 9999.999 mm
+  --help                 this text
 Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </source>
-        <translation>použití: frezka-cli grinder ping|save|load --port CESTA [--family k51|anc|hedit]
+        <translation>použití: frezka-cli grinder ping|save|load --port CESTA [--family k51|anc|hedit|table]
                           [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] SOUBOR
-         frezka-cli grinder z --port CESTA [--baud N] [--form 1|2] [--go MM]
+                          [--reply-timeout-ms N] [--send-anyway] [--raw] SOUBOR
+       frezka-cli grinder z --port CESTA [--baud N] [--form 1|2] [--go MM]
                           [--reply-timeout-ms N]
   ping   kontrola spojení (ENQ/ACK)
-  save   řídicí systém -&gt; PC: zapíše data řídicího systému do SOUBORU, bajt po bajtu
+  save   řídicí systém -&gt; PC: zapíše data řídicího systému do SOUBORU, bajt po bajtu,
+         s jejich hlavičkou a systémem (SOUBOR s příponou .bin nebo --raw: jen holá
+         data, jak je zapisovaly staré programy)
   load   PC -&gt; řídicí systém: pošle SOUBOR beze změny; 16znakovou hlavičku dává --header,
-         jinak (jako K51LOAD 2.20) název souboru
+         jinak hlavička uložená v SOUBORU, jinak (jako K51LOAD 2.20) název souboru
+         (česká písmena se mění na písmena bez diakritiky); délka a vnitřní bloky
+         souboru se nejprve zkontrolují a při chybě se nepošle nic
+         --family table pošle tabulku APROXTAB (LOA1) do K51 nastaveného na přenos
+         tabulky (KONFIG6 = 3); tabulku nelze uložit
   z      přenos polohy Z: vypíše polohu stolu (FORM=1 se ptá Z?, FORM=2
          čeká na binární rámec); --go MM přejede stolem a čeká na dosažení
   --baud N               rychlost linky (výchozí: ANC 4800 Bd jako ANCLOAD/ANCSAVE; K51
@@ -171,8 +212,16 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
   --retries N            opakování po vypršení času, NAK nebo chybném součtu (výchozí 3)
   --reply-timeout-ms N   povolené ticho před odpovědí (výchozí 3000; 10000 pro
                          data po žádosti)
+  --send-anyway          pošle soubor, jehož vnitřní bloky mají chybný součet (jen
+                         když ho dal sám řídicí systém)
+  --go MM                -9999,999 až 9999,999 mm
+  --help                 tento text
 Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné použití.
 </translation>
+    </message>
+    <message>
+        <source>--family: &apos;%1&apos; is not k51, anc, hedit or table</source>
+        <translation>--family: &apos;%1&apos; není k51, anc, hedit ani table</translation>
     </message>
 </context>
 <context>
@@ -188,6 +237,69 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     <message>
         <source>unknown connection kind</source>
         <translation>neznámý druh připojení</translation>
+    </message>
+</context>
+<context>
+    <name>LoadCheck</name>
+    <message>
+        <source>ANC</source>
+        <translation>ANC</translation>
+    </message>
+    <message>
+        <source>K51</source>
+        <translation>K51</translation>
+    </message>
+    <message>
+        <source>HEDIT</source>
+        <translation>HEDIT</translation>
+    </message>
+    <message>
+        <source>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506)</source>
+        <translation>Programová data ANC mají 21760 nebo 21766 bajtů (0x5500 nebo 0x5506)</translation>
+    </message>
+    <message>
+        <source>K51 program data have 21767 bytes (0x5507)</source>
+        <translation>Programová data K51 mají 21767 bajtů (0x5507)</translation>
+    </message>
+    <message>
+        <source>HEDIT data have 46 bytes (0x2E)</source>
+        <translation>Data HEDIT mají 46 bajtů (0x2E)</translation>
+    </message>
+    <message>
+        <source>The file is empty; there is nothing to send.</source>
+        <translation>Soubor je prázdný; není co poslat.</translation>
+    </message>
+    <message>
+        <source>Sent anyway: %1 bytes, the length this controller reported.</source>
+        <translation>Přesto odesláno: %1 bajtů, délka, kterou hlásil tento řídicí systém.</translation>
+    </message>
+    <message>
+        <source>%1; the file has %2, so nothing was sent. Choose a file saved from this controller.</source>
+        <translation>%1; soubor má %2, proto se nic neposlalo. Vyberte soubor uložený z tohoto řídicího systému.</translation>
+    </message>
+    <message>
+        <source>%1; the file has %2, the length of %3 data: is the wrong system selected? Nothing was sent.</source>
+        <translation>%1; soubor má %2, což je délka dat %3: není vybrán nesprávný systém? Nic se neposlalo.</translation>
+    </message>
+    <message>
+        <source>This controller reported this length: choose &quot;Send anyway&quot; to send it.</source>
+        <translation>Tuto délku hlásil tento řídicí systém: chcete-li soubor poslat, zvolte „Přesto odeslat“.</translation>
+    </message>
+    <message>
+        <source>%1 of the %2 inner program blocks lack their AA and block number marker (%3): the file is not a program image of this system or it was changed. Nothing was sent.</source>
+        <translation>%1 z %2 vnitřních programových bloků nemá značku AA a číslo bloku (%3): soubor není programový obraz tohoto systému nebo byl změněn. Nic se neposlalo.</translation>
+    </message>
+    <message>
+        <source>inner blocks with a wrong checksum: %1</source>
+        <translation>vnitřní bloky s chybným kontrolním součtem: %1</translation>
+    </message>
+    <message>
+        <source>The file has %1. Nothing was sent. If the controller itself gave you this file, choose &quot;Send anyway&quot;: it gets the data unchanged.</source>
+        <translation>Soubor má %1. Nic se neposlalo. Pokud vám tento soubor dal sám řídicí systém, zvolte „Přesto odeslat“: dostane data beze změny.</translation>
+    </message>
+    <message>
+        <source>Sent anyway: %1.</source>
+        <translation>Přesto odesláno: %1.</translation>
     </message>
 </context>
 <context>
@@ -2495,6 +2607,26 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>Cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</source>
         <translation>%1 nelze otevřít: přístup odepřen. Port patří skupině %2: přidejte se do ní příkazem &quot;sudo usermod -aG %2 $USER&quot;, pak se odhlaste a znovu přihlaste.</translation>
     </message>
+    <message>
+        <source>%1 (process %2)</source>
+        <translation>%1 (proces %2)</translation>
+    </message>
+    <message>
+        <source>another program</source>
+        <translation>jiný program</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: the port is in use by another program. Close it (or disconnect it), then connect again.</source>
+        <translation>Nelze otevřít %1: port používá jiný program. Zavřete ho (nebo ho v něm odpojte) a připojte se znovu.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: the port is in use by %2. Close that program (or disconnect it there), then connect again.</source>
+        <translation>Nelze otevřít %1: port používá %2. Zavřete ten program (nebo port v něm odpojte) a připojte se znovu.</translation>
+    </message>
+    <message>
+        <source>The port %1 went away: is the cable or the USB adapter unplugged? Plug it in, then connect again.</source>
+        <translation>Port %1 zmizel: není odpojený kabel nebo USB převodník? Zapojte ho a připojte se znovu.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::TransferSession</name>
@@ -2503,20 +2635,8 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>Port %1 není otevřen.</translation>
     </message>
     <message>
-        <source>The file is empty; there is nothing to send.</source>
-        <translation>Soubor je prázdný, není co odeslat.</translation>
-    </message>
-    <message>
         <source>The data are too long for one message: %1 bytes, at most %2.</source>
         <translation>Data jsou na jednu zprávu příliš dlouhá: %1 bajtů, nejvýše %2.</translation>
-    </message>
-    <message>
-        <source>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506); the file has %1. Choose a file saved from an ANC control.</source>
-        <translation>Data programů ANC mají 21760 nebo 21766 bajtů (0x5500 nebo 0x5506), soubor má %1. Vyberte soubor uložený z řídicího systému ANC.</translation>
-    </message>
-    <message>
-        <source>HEDIT data have 46 bytes (0x2E); the file has %1. Choose a file saved with HEDIT.</source>
-        <translation>Data HEDIT mají 46 bajtů (0x2E), soubor má %1. Vyberte soubor uložený pomocí HEDIT.</translation>
     </message>
     <message>
         <source>Cancelled.</source>
@@ -2557,10 +2677,6 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Repeat %1 of %2: %3</source>
         <translation>Opakování %1 z %2: %3</translation>
-    </message>
-    <message>
-        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd) and that the controller is set to transfer (KONFIG6).</source>
-        <translation>Na ENQ nepřišla do %1 s odpověď. Zkontrolujte kabel, nastavení linky (%2 Bd) a zda je řídicí systém nastaven na přenos (KONFIG6).</translation>
     </message>
     <message>
         <source>The data message stopped after %1 of %2 bytes (no byte for %3 s).</source>
@@ -2615,12 +2731,56 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>%1 z %2 bloků je chybných: %3 (data zůstávají beze změny)</translation>
     </message>
     <message>
-        <source>Warning: inner blocks: %1</source>
-        <translation>Upozornění: vnitřní bloky: %1</translation>
-    </message>
-    <message>
         <source>&lt;- ACK ignored: a late answer to an earlier message</source>
         <translation>&lt;- ACK přeskočeno: opožděná odpověď na dřívější zprávu</translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Upozornění: %1</translation>
+    </message>
+    <message>
+        <source>The controller may still be sending its data for about %1 s; the link check waits until then.</source>
+        <translation>Řídicí systém může ještě asi %1 s posílat svá data; kontrola spojení do té doby počká.</translation>
+    </message>
+    <message>
+        <source>The controller received only part of the data and discards it; the programs it holds are unchanged.</source>
+        <translation>Řídicí systém dostal jen část dat a zahodí je; programy, které má uložené, zůstávají beze změny.</translation>
+    </message>
+    <message>
+        <source>All data had been sent: the controller may have stored them. Check its programs.</source>
+        <translation>Všechna data už byla odeslána: řídicí systém je možná uložil. Zkontrolujte jeho programy.</translation>
+    </message>
+    <message>
+        <source>The controller answered NAK to %1: is the ANC set up for program transfer and not grinding?</source>
+        <translation>Řídicí systém odpověděl NAK na %1: je ANC nastaven na přenos programů a nebrousí?</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s reply does not fit the %1 messages: is the wrong system selected (ANC or K51)? Choose the system the control is, then try again. (%2)</source>
+        <translation>Odpověď řídicího systému neodpovídá zprávám %1: není vybrán nesprávný systém (ANC nebo K51)? Vyberte systém, kterým řídicí systém je, a zkuste to znovu. (%2)</translation>
+    </message>
+    <message>
+        <source>The port %1 stopped taking data: %2 bytes of %3 were not sent. Check that the cable and the USB adapter are plugged in.</source>
+        <translation>Port %1 přestal přijímat data: %2 bajtů zprávy %3 se neodeslalo. Zkontrolujte, že jsou kabel i USB převodník zapojené.</translation>
+    </message>
+    <message>
+        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (ANC) and that the ANC is not grinding.</source>
+        <translation>Žádná odpověď na ENQ do %1 s. Zkontrolujte kabel, nastavení linky (%2 Bd), vybraný systém (ANC) a že ANC nebrousí.</translation>
+    </message>
+    <message>
+        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (%3) and that the controller is set to transfer (KONFIG6).</source>
+        <translation>Žádná odpověď na ENQ do %1 s. Zkontrolujte kabel, nastavení linky (%2 Bd), vybraný systém (%3) a že je řídicí systém nastaven na přenos (KONFIG6).</translation>
+    </message>
+    <message>
+        <source>A table goes only from the PC to the controller (as APROXTAB sent it); there is nothing to receive. Choose K51 programs to receive programs.</source>
+        <translation>Tabulka jde jen z PC do řídicího systému (jak ji posílal APROXTAB); není co přijmout. Chcete-li přijmout programy, zvolte programy K51.</translation>
+    </message>
+    <message>
+        <source>Is it set to program transfer (KONFIG6 = 2)? Set to table transfer (KONFIG6 = 3) it refuses programs.</source>
+        <translation>Je nastaven na přenos programů (KONFIG6 = 2)? Nastavený na přenos tabulky (KONFIG6 = 3) programy odmítá.</translation>
+    </message>
+    <message>
+        <source>Is it set to table transfer (KONFIG6 = 3)? Only then does it take a table.</source>
+        <translation>Je nastaven na přenos tabulky (KONFIG6 = 3)? Jen tak tabulku přijme.</translation>
     </message>
 </context>
 <context>
@@ -3048,6 +3208,121 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>%1 — %2: %3</source>
         <translation>%1 — %2: %3</translation>
+    </message>
+    <message>
+        <source>Disconnected during the transfer.</source>
+        <translation>Odpojeno během přenosu.</translation>
+    </message>
+    <message>
+        <source>Waiting for the controller to finish its message (about %1 s)…</source>
+        <translation>Čeká se, až řídicí systém dokončí svou zprávu (asi %1 s)…</translation>
+    </message>
+    <message>
+        <source>The data received from the controller have not been saved. Close and discard them?</source>
+        <translation>Data přijatá z řídicího systému nejsou uložena. Zavřít okno a zahodit je?</translation>
+    </message>
+    <message>
+        <source>K51 table (APROXTAB), PC → controller only</source>
+        <translation>Tabulka K51 (APROXTAB), jen PC → řídicí systém</translation>
+    </message>
+    <message>
+        <source>HEDIT data</source>
+        <translation>Data HEDIT</translation>
+    </message>
+    <message>
+        <source>HEDIT editor</source>
+        <translation>Editor HEDIT</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::HardChromeEditor</name>
+    <message>
+        <source>Address</source>
+        <translation>Adresa</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>Decimal</source>
+        <translation>Desítkově</translation>
+    </message>
+    <message>
+        <source>Hard-chrome data for parametric plunge and traverse grinding: 0x2E bytes from address 0x1100. The manual does not describe the single values, so each byte is shown as it is; what you do not edit is kept unchanged.</source>
+        <translation>Data pro tvrdé chromování pro parametrické zápichové a podélné broušení: 0x2E bajtů od adresy 0x1100. Příručka jednotlivé hodnoty nepopisuje, proto se každý bajt zobrazuje tak, jak je; co neupravíte, zůstane beze změny.</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Otevřít…</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Uložit…</translation>
+    </message>
+    <message>
+        <source>Take received data</source>
+        <translation>Převzít přijatá data</translation>
+    </message>
+    <message>
+        <source>Send to controller</source>
+        <translation>Poslat do řídicího systému</translation>
+    </message>
+    <message>
+        <source>Header:</source>
+        <translation>Hlavička:</translation>
+    </message>
+    <message>
+        <source>Frezka grinder file (*.frg);;Bare data (*.bin)</source>
+        <translation>Soubor Frezka pro brusky (*.frg);;Holá data (*.bin)</translation>
+    </message>
+    <message>
+        <source>Save HEDIT data</source>
+        <translation>Uložit data HEDIT</translation>
+    </message>
+    <message>
+        <source>Open HEDIT data</source>
+        <translation>Otevřít data HEDIT</translation>
+    </message>
+    <message>
+        <source>Grinder files (*.frg *.bin);;All files (*)</source>
+        <translation>Soubory pro brusky (*.frg *.bin);;Všechny soubory (*)</translation>
+    </message>
+    <message>
+        <source>0x%1: &quot;%2&quot; is not a byte in hex (00 to FF); the value is kept.</source>
+        <translation>0x%1: „%2“ není bajt v šestnáctkové soustavě (00 až FF); hodnota zůstává.</translation>
+    </message>
+    <message>
+        <source>0x%1 set to %2.</source>
+        <translation>0x%1 nastaveno na %2.</translation>
+    </message>
+    <message>
+        <source>HEDIT data have 46 bytes (0x2E); these have %1. Nothing changed.</source>
+        <translation>Data HEDIT mají 46 bajtů (0x2E); tato mají %1. Nic se nezměnilo.</translation>
+    </message>
+    <message>
+        <source>46 bytes loaded.</source>
+        <translation>Načteno 46 bajtů.</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Nelze číst %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 holds %2 data, not HEDIT data.</source>
+        <translation>%1 obsahuje data %2, ne data HEDIT.</translation>
+    </message>
+    <message>
+        <source>%1 is damaged: %2</source>
+        <translation>%1 je poškozený: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Nelze zapsat %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>Uloženo do %1.</translation>
     </message>
 </context>
 <context>
@@ -5060,10 +5335,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Programy TCHIN ukážou na řídicím systému po přenosu jednou „no prg set“: nejprve seřiďte osu X — zvolte program TCHIN v AUT a podržte RES.</translation>
     </message>
     <message>
-        <source>Transfer failed: %1</source>
-        <translation>Přenos selhal: %1</translation>
-    </message>
-    <message>
         <source>Save the controller&apos;s data</source>
         <translation>Uložit data z řídicího systému</translation>
     </message>
@@ -5086,6 +5357,58 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>%1 bytes; inner blocks: %2</source>
         <translation>%1 bajtů; vnitřní bloky: %2</translation>
+    </message>
+    <message>
+        <source>Send anyway</source>
+        <translation>Přesto odeslat</translation>
+    </message>
+    <message>
+        <source>Send a file whose inner blocks have a wrong checksum, or whose length this controller reported itself. Only for data the controller gave you.</source>
+        <translation>Pošle soubor, jehož vnitřní bloky mají chybný kontrolní součet, nebo jehož délku hlásil sám tento řídicí systém. Jen pro data, která vám dal řídicí systém.</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Zrušeno.</translation>
+    </message>
+    <message>
+        <source>Cancelled: %1</source>
+        <translation>Zrušeno: %1</translation>
+    </message>
+    <message>
+        <source>Receiving from the controller failed</source>
+        <translation>Příjem z řídicího systému selhal</translation>
+    </message>
+    <message>
+        <source>Sending to the controller failed</source>
+        <translation>Odeslání do řídicího systému selhalo</translation>
+    </message>
+    <message>
+        <source>Transfer failed.</source>
+        <translation>Přenos selhal.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 holds %2 data (saved from a %2 control): is the wrong system selected? Choose %2 and connect again. Nothing was sent.</source>
+        <translation>%1 obsahuje data %2 (uložená z řídicího systému %2): není vybrán nesprávný systém? Zvolte %2 a připojte se znovu. Nic se neposlalo.</translation>
+    </message>
+    <message>
+        <source>Frezka grinder file, keeps the header (*.frg);;Bare data for the old tools (*.bin)</source>
+        <translation>Soubor Frezka pro brusky, uchová hlavičku (*.frg);;Holá data pro staré programy (*.bin)</translation>
+    </message>
+    <message>
+        <source>%1 is damaged: %2</source>
+        <translation>%1 je poškozený: %2</translation>
+    </message>
+    <message>
+        <source>%1 bytes from the editor</source>
+        <translation>%1 bajtů z editoru</translation>
+    </message>
+    <message>
+        <source>ANC messages carry no header; nothing typed here would be sent.</source>
+        <translation>Zprávy ANC nemají hlavičku; nic, co sem napíšete, by se neposlalo.</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>ControllerHeader</name>
+    <message>
+        <source>The header &quot;%1&quot; holds &apos;%2&apos;, which the controller cannot show (it shows letters without diacritics, digits and signs). Replace it.</source>
+        <translation>The header &quot;%1&quot; holds &apos;%2&apos;, which the controller cannot show (it shows letters without diacritics, digits and signs). Replace it.</translation>
+    </message>
+    <message>
+        <source>The header &quot;%1&quot; is sent as &quot;%2&quot;: the controller has no Czech letters, so they become their base letters.</source>
+        <translation>The header &quot;%1&quot; is sent as &quot;%2&quot;: the controller has no Czech letters, so they become their base letters.</translation>
+    </message>
+</context>
+<context>
     <name>EmulatorTransport</name>
     <message>
         <source>built-in %1 emulator</source>
@@ -13,14 +24,6 @@
     <message>
         <source>--header: &apos;%1&apos; is longer than 16 characters</source>
         <translation>--header: &apos;%1&apos; is longer than 16 characters</translation>
-    </message>
-    <message>
-        <source>--header: &apos;%1&apos; holds &apos;%2&apos;; the controller shows plain ASCII only (no diacritics)</source>
-        <translation>--header: &apos;%1&apos; holds &apos;%2&apos;; the controller shows plain ASCII only (no diacritics)</translation>
-    </message>
-    <message>
-        <source>--family: &apos;%1&apos; is not k51, anc or hedit</source>
-        <translation>--family: &apos;%1&apos; is not k51, anc or hedit</translation>
     </message>
     <message>
         <source>--baud: &apos;%1&apos; is not a baud rate</source>
@@ -37,10 +40,6 @@
     <message>
         <source>--form: &apos;%1&apos; is not 1 or 2</source>
         <translation>--form: &apos;%1&apos; is not 1 or 2</translation>
-    </message>
-    <message>
-        <source>--go: &apos;%1&apos; is not a position in mm (e.g. 12.5)</source>
-        <translation>--go: &apos;%1&apos; is not a position in mm (e.g. 12.5)</translation>
     </message>
     <message>
         <source>unknown option &apos;%1&apos;</source>
@@ -137,15 +136,47 @@
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
+        <source>--go: &apos;%1&apos; is not a position from -9999.999 to 9999.999 mm (e.g. 12.5)</source>
+        <translation>--go: &apos;%1&apos; is not a position from -9999.999 to 9999.999 mm (e.g. 12.5)</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: cannot write %1: %2; nothing was asked from the controller
+</source>
+        <translation>frezka-cli grinder: cannot write %1: %2; nothing was asked from the controller
+</translation>
+    </message>
+    <message>
+        <source>--header: ANC messages carry no header (ANCLOAD sent none); leave it out or choose --family k51 or hedit</source>
+        <translation>--header: ANC messages carry no header (ANCLOAD sent none); leave it out or choose --family k51 or hedit</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: %1 is damaged: %2; nothing was sent
+</source>
+        <translation>frezka-cli grinder: %1 is damaged: %2; nothing was sent
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli grinder: %1 holds %2 data (saved from a %2 control), not %3: is the wrong system selected? Use --family %4.
+</source>
+        <translation>frezka-cli grinder: %1 holds %2 data (saved from a %2 control), not %3: is the wrong system selected? Use --family %4.
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit|table]
                           [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] FILE
+                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
        frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
                           [--reply-timeout-ms N]
   ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte, with
+         its header and system (a FILE ending in .bin, or --raw: the bare data, as
+         the old tools wrote)
   load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or, as K51LOAD 2.20 did, the file name
+         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
+         letters become their base letters); the file&apos;s length and inner blocks
+         are checked first and nothing is sent when they are wrong
+         --family table sends an APROXTAB table (LOA1) to a K51 set to table
+         transfer (KONFIG6 = 3); a table cannot be saved
   z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
          waits for a binary frame); --go MM moves the table and waits until reached
   --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
@@ -153,17 +184,27 @@
   --retries N            repeats after a timeout, NAK or bad checksum (default 3)
   --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
                          the data after a request)
+  --send-anyway          load a file whose inner blocks have a wrong checksum (only
+                         if the controller itself gave it to you)
+  --go MM                -9999.999 to 9999.999 mm
+  --help                 this text
 Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </source>
-        <translation>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]
+        <translation>usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit|table]
                           [--baud N] [--header TEXT] [--retries N]
-                          [--reply-timeout-ms N] FILE
+                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE
        frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]
                           [--reply-timeout-ms N]
   ping   link check (ENQ/ACK)
-  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte
+  save   controller -&gt; PC: write the controller&apos;s data to FILE, byte for byte, with
+         its header and system (a FILE ending in .bin, or --raw: the bare data, as
+         the old tools wrote)
   load   PC -&gt; controller: send FILE unchanged; the 16-character header is --header
-         or, as K51LOAD 2.20 did, the file name
+         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech
+         letters become their base letters); the file&apos;s length and inner blocks
+         are checked first and nothing is sent when they are wrong
+         --family table sends an APROXTAB table (LOA1) to a K51 set to table
+         transfer (KONFIG6 = 3); a table cannot be saved
   z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2
          waits for a binary frame); --go MM moves the table and waits until reached
   --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and
@@ -171,8 +212,16 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
   --retries N            repeats after a timeout, NAK or bad checksum (default 3)
   --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for
                          the data after a request)
+  --send-anyway          load a file whose inner blocks have a wrong checksum (only
+                         if the controller itself gave it to you)
+  --go MM                -9999.999 to 9999.999 mm
+  --help                 this text
 Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
+    </message>
+    <message>
+        <source>--family: &apos;%1&apos; is not k51, anc, hedit or table</source>
+        <translation>--family: &apos;%1&apos; is not k51, anc, hedit or table</translation>
     </message>
 </context>
 <context>
@@ -188,6 +237,69 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     <message>
         <source>unknown connection kind</source>
         <translation>unknown connection kind</translation>
+    </message>
+</context>
+<context>
+    <name>LoadCheck</name>
+    <message>
+        <source>ANC</source>
+        <translation>ANC</translation>
+    </message>
+    <message>
+        <source>K51</source>
+        <translation>K51</translation>
+    </message>
+    <message>
+        <source>HEDIT</source>
+        <translation>HEDIT</translation>
+    </message>
+    <message>
+        <source>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506)</source>
+        <translation>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506)</translation>
+    </message>
+    <message>
+        <source>K51 program data have 21767 bytes (0x5507)</source>
+        <translation>K51 program data have 21767 bytes (0x5507)</translation>
+    </message>
+    <message>
+        <source>HEDIT data have 46 bytes (0x2E)</source>
+        <translation>HEDIT data have 46 bytes (0x2E)</translation>
+    </message>
+    <message>
+        <source>The file is empty; there is nothing to send.</source>
+        <translation>The file is empty; there is nothing to send.</translation>
+    </message>
+    <message>
+        <source>Sent anyway: %1 bytes, the length this controller reported.</source>
+        <translation>Sent anyway: %1 bytes, the length this controller reported.</translation>
+    </message>
+    <message>
+        <source>%1; the file has %2, so nothing was sent. Choose a file saved from this controller.</source>
+        <translation>%1; the file has %2, so nothing was sent. Choose a file saved from this controller.</translation>
+    </message>
+    <message>
+        <source>%1; the file has %2, the length of %3 data: is the wrong system selected? Nothing was sent.</source>
+        <translation>%1; the file has %2, the length of %3 data: is the wrong system selected? Nothing was sent.</translation>
+    </message>
+    <message>
+        <source>This controller reported this length: choose &quot;Send anyway&quot; to send it.</source>
+        <translation>This controller reported this length: choose &quot;Send anyway&quot; to send it.</translation>
+    </message>
+    <message>
+        <source>%1 of the %2 inner program blocks lack their AA and block number marker (%3): the file is not a program image of this system or it was changed. Nothing was sent.</source>
+        <translation>%1 of the %2 inner program blocks lack their AA and block number marker (%3): the file is not a program image of this system or it was changed. Nothing was sent.</translation>
+    </message>
+    <message>
+        <source>inner blocks with a wrong checksum: %1</source>
+        <translation>inner blocks with a wrong checksum: %1</translation>
+    </message>
+    <message>
+        <source>The file has %1. Nothing was sent. If the controller itself gave you this file, choose &quot;Send anyway&quot;: it gets the data unchanged.</source>
+        <translation>The file has %1. Nothing was sent. If the controller itself gave you this file, choose &quot;Send anyway&quot;: it gets the data unchanged.</translation>
+    </message>
+    <message>
+        <source>Sent anyway: %1.</source>
+        <translation>Sent anyway: %1.</translation>
     </message>
 </context>
 <context>
@@ -2492,6 +2604,26 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <source>Cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</source>
         <translation>Cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</translation>
     </message>
+    <message>
+        <source>%1 (process %2)</source>
+        <translation>%1 (process %2)</translation>
+    </message>
+    <message>
+        <source>another program</source>
+        <translation>another program</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: the port is in use by another program. Close it (or disconnect it), then connect again.</source>
+        <translation>Cannot open %1: the port is in use by another program. Close it (or disconnect it), then connect again.</translation>
+    </message>
+    <message>
+        <source>Cannot open %1: the port is in use by %2. Close that program (or disconnect it there), then connect again.</source>
+        <translation>Cannot open %1: the port is in use by %2. Close that program (or disconnect it there), then connect again.</translation>
+    </message>
+    <message>
+        <source>The port %1 went away: is the cable or the USB adapter unplugged? Plug it in, then connect again.</source>
+        <translation>The port %1 went away: is the cable or the USB adapter unplugged? Plug it in, then connect again.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::TransferSession</name>
@@ -2500,20 +2632,8 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>The port %1 is not open.</translation>
     </message>
     <message>
-        <source>The file is empty; there is nothing to send.</source>
-        <translation>The file is empty; there is nothing to send.</translation>
-    </message>
-    <message>
         <source>The data are too long for one message: %1 bytes, at most %2.</source>
         <translation>The data are too long for one message: %1 bytes, at most %2.</translation>
-    </message>
-    <message>
-        <source>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506); the file has %1. Choose a file saved from an ANC control.</source>
-        <translation>ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506); the file has %1. Choose a file saved from an ANC control.</translation>
-    </message>
-    <message>
-        <source>HEDIT data have 46 bytes (0x2E); the file has %1. Choose a file saved with HEDIT.</source>
-        <translation>HEDIT data have 46 bytes (0x2E); the file has %1. Choose a file saved with HEDIT.</translation>
     </message>
     <message>
         <source>Cancelled.</source>
@@ -2554,10 +2674,6 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Repeat %1 of %2: %3</source>
         <translation>Repeat %1 of %2: %3</translation>
-    </message>
-    <message>
-        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd) and that the controller is set to transfer (KONFIG6).</source>
-        <translation>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd) and that the controller is set to transfer (KONFIG6).</translation>
     </message>
     <message>
         <source>The data message stopped after %1 of %2 bytes (no byte for %3 s).</source>
@@ -2612,12 +2728,56 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>%1 of %2 blocks invalid: %3 (the data are kept unchanged)</translation>
     </message>
     <message>
-        <source>Warning: inner blocks: %1</source>
-        <translation>Warning: inner blocks: %1</translation>
-    </message>
-    <message>
         <source>&lt;- ACK ignored: a late answer to an earlier message</source>
         <translation>&lt;- ACK ignored: a late answer to an earlier message</translation>
+    </message>
+    <message>
+        <source>Warning: %1</source>
+        <translation>Warning: %1</translation>
+    </message>
+    <message>
+        <source>The controller may still be sending its data for about %1 s; the link check waits until then.</source>
+        <translation>The controller may still be sending its data for about %1 s; the link check waits until then.</translation>
+    </message>
+    <message>
+        <source>The controller received only part of the data and discards it; the programs it holds are unchanged.</source>
+        <translation>The controller received only part of the data and discards it; the programs it holds are unchanged.</translation>
+    </message>
+    <message>
+        <source>All data had been sent: the controller may have stored them. Check its programs.</source>
+        <translation>All data had been sent: the controller may have stored them. Check its programs.</translation>
+    </message>
+    <message>
+        <source>The controller answered NAK to %1: is the ANC set up for program transfer and not grinding?</source>
+        <translation>The controller answered NAK to %1: is the ANC set up for program transfer and not grinding?</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s reply does not fit the %1 messages: is the wrong system selected (ANC or K51)? Choose the system the control is, then try again. (%2)</source>
+        <translation>The controller&apos;s reply does not fit the %1 messages: is the wrong system selected (ANC or K51)? Choose the system the control is, then try again. (%2)</translation>
+    </message>
+    <message>
+        <source>The port %1 stopped taking data: %2 bytes of %3 were not sent. Check that the cable and the USB adapter are plugged in.</source>
+        <translation>The port %1 stopped taking data: %2 bytes of %3 were not sent. Check that the cable and the USB adapter are plugged in.</translation>
+    </message>
+    <message>
+        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (ANC) and that the ANC is not grinding.</source>
+        <translation>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (ANC) and that the ANC is not grinding.</translation>
+    </message>
+    <message>
+        <source>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (%3) and that the controller is set to transfer (KONFIG6).</source>
+        <translation>No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd), the selected system (%3) and that the controller is set to transfer (KONFIG6).</translation>
+    </message>
+    <message>
+        <source>A table goes only from the PC to the controller (as APROXTAB sent it); there is nothing to receive. Choose K51 programs to receive programs.</source>
+        <translation>A table goes only from the PC to the controller (as APROXTAB sent it); there is nothing to receive. Choose K51 programs to receive programs.</translation>
+    </message>
+    <message>
+        <source>Is it set to program transfer (KONFIG6 = 2)? Set to table transfer (KONFIG6 = 3) it refuses programs.</source>
+        <translation>Is it set to program transfer (KONFIG6 = 2)? Set to table transfer (KONFIG6 = 3) it refuses programs.</translation>
+    </message>
+    <message>
+        <source>Is it set to table transfer (KONFIG6 = 3)? Only then does it take a table.</source>
+        <translation>Is it set to table transfer (KONFIG6 = 3)? Only then does it take a table.</translation>
     </message>
 </context>
 <context>
@@ -3045,6 +3205,121 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>%1 — %2: %3</source>
         <translation>%1 — %2: %3</translation>
+    </message>
+    <message>
+        <source>Disconnected during the transfer.</source>
+        <translation>Disconnected during the transfer.</translation>
+    </message>
+    <message>
+        <source>Waiting for the controller to finish its message (about %1 s)…</source>
+        <translation>Waiting for the controller to finish its message (about %1 s)…</translation>
+    </message>
+    <message>
+        <source>The data received from the controller have not been saved. Close and discard them?</source>
+        <translation>The data received from the controller have not been saved. Close and discard them?</translation>
+    </message>
+    <message>
+        <source>K51 table (APROXTAB), PC → controller only</source>
+        <translation>K51 table (APROXTAB), PC → controller only</translation>
+    </message>
+    <message>
+        <source>HEDIT data</source>
+        <translation>HEDIT data</translation>
+    </message>
+    <message>
+        <source>HEDIT editor</source>
+        <translation>HEDIT editor</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::HardChromeEditor</name>
+    <message>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>Decimal</source>
+        <translation>Decimal</translation>
+    </message>
+    <message>
+        <source>Hard-chrome data for parametric plunge and traverse grinding: 0x2E bytes from address 0x1100. The manual does not describe the single values, so each byte is shown as it is; what you do not edit is kept unchanged.</source>
+        <translation>Hard-chrome data for parametric plunge and traverse grinding: 0x2E bytes from address 0x1100. The manual does not describe the single values, so each byte is shown as it is; what you do not edit is kept unchanged.</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Open…</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Save…</translation>
+    </message>
+    <message>
+        <source>Take received data</source>
+        <translation>Take received data</translation>
+    </message>
+    <message>
+        <source>Send to controller</source>
+        <translation>Send to controller</translation>
+    </message>
+    <message>
+        <source>Header:</source>
+        <translation>Header:</translation>
+    </message>
+    <message>
+        <source>Frezka grinder file (*.frg);;Bare data (*.bin)</source>
+        <translation>Frezka grinder file (*.frg);;Bare data (*.bin)</translation>
+    </message>
+    <message>
+        <source>Save HEDIT data</source>
+        <translation>Save HEDIT data</translation>
+    </message>
+    <message>
+        <source>Open HEDIT data</source>
+        <translation>Open HEDIT data</translation>
+    </message>
+    <message>
+        <source>Grinder files (*.frg *.bin);;All files (*)</source>
+        <translation>Grinder files (*.frg *.bin);;All files (*)</translation>
+    </message>
+    <message>
+        <source>0x%1: &quot;%2&quot; is not a byte in hex (00 to FF); the value is kept.</source>
+        <translation>0x%1: &quot;%2&quot; is not a byte in hex (00 to FF); the value is kept.</translation>
+    </message>
+    <message>
+        <source>0x%1 set to %2.</source>
+        <translation>0x%1 set to %2.</translation>
+    </message>
+    <message>
+        <source>HEDIT data have 46 bytes (0x2E); these have %1. Nothing changed.</source>
+        <translation>HEDIT data have 46 bytes (0x2E); these have %1. Nothing changed.</translation>
+    </message>
+    <message>
+        <source>46 bytes loaded.</source>
+        <translation>46 bytes loaded.</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Cannot read %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 holds %2 data, not HEDIT data.</source>
+        <translation>%1 holds %2 data, not HEDIT data.</translation>
+    </message>
+    <message>
+        <source>%1 is damaged: %2</source>
+        <translation>%1 is damaged: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>Saved to %1.</translation>
     </message>
 </context>
 <context>
@@ -5052,10 +5327,6 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>On the controller, TCHIN programs show &quot;no prg set&quot; once after a transfer: set up the X axis first — select the TCHIN program in AUT and hold RES.</translation>
     </message>
     <message>
-        <source>Transfer failed: %1</source>
-        <translation>Transfer failed: %1</translation>
-    </message>
-    <message>
         <source>Save the controller&apos;s data</source>
         <translation>Save the controller&apos;s data</translation>
     </message>
@@ -5078,6 +5349,58 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>%1 bytes; inner blocks: %2</source>
         <translation>%1 bytes; inner blocks: %2</translation>
+    </message>
+    <message>
+        <source>Send anyway</source>
+        <translation>Send anyway</translation>
+    </message>
+    <message>
+        <source>Send a file whose inner blocks have a wrong checksum, or whose length this controller reported itself. Only for data the controller gave you.</source>
+        <translation>Send a file whose inner blocks have a wrong checksum, or whose length this controller reported itself. Only for data the controller gave you.</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Cancelled.</translation>
+    </message>
+    <message>
+        <source>Cancelled: %1</source>
+        <translation>Cancelled: %1</translation>
+    </message>
+    <message>
+        <source>Receiving from the controller failed</source>
+        <translation>Receiving from the controller failed</translation>
+    </message>
+    <message>
+        <source>Sending to the controller failed</source>
+        <translation>Sending to the controller failed</translation>
+    </message>
+    <message>
+        <source>Transfer failed.</source>
+        <translation>Transfer failed.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 holds %2 data (saved from a %2 control): is the wrong system selected? Choose %2 and connect again. Nothing was sent.</source>
+        <translation>%1 holds %2 data (saved from a %2 control): is the wrong system selected? Choose %2 and connect again. Nothing was sent.</translation>
+    </message>
+    <message>
+        <source>Frezka grinder file, keeps the header (*.frg);;Bare data for the old tools (*.bin)</source>
+        <translation>Frezka grinder file, keeps the header (*.frg);;Bare data for the old tools (*.bin)</translation>
+    </message>
+    <message>
+        <source>%1 is damaged: %2</source>
+        <translation>%1 is damaged: %2</translation>
+    </message>
+    <message>
+        <source>%1 bytes from the editor</source>
+        <translation>%1 bytes from the editor</translation>
+    </message>
+    <message>
+        <source>ANC messages carry no header; nothing typed here would be sent.</source>
+        <translation>ANC messages carry no header; nothing typed here would be sent.</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,8 @@
 // controls (issue 7). See docs/grinder.md.
 #include "cli.h"
 
+#include "driver/grinder/controllerheader.h"
+#include "driver/grinder/grinderfile.h"
 #include "driver/grinder/transfersession.h"
 #include "driver/grinder/zlinksession.h"
 
@@ -39,20 +41,28 @@ struct Args
     int form = 1;
     bool hasGo = false;
     std::int64_t goUm = 0;
+    bool sendAnyway = false;
+    bool raw = false; // save: bare data as the old tools wrote
 };
 
 QString usage()
 {
     return GrinderCli::tr(
-        "usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit]\n"
+        "usage: frezka-cli grinder ping|save|load --port PATH [--family k51|anc|hedit|table]\n"
         "                          [--baud N] [--header TEXT] [--retries N]\n"
-        "                          [--reply-timeout-ms N] FILE\n"
+        "                          [--reply-timeout-ms N] [--send-anyway] [--raw] FILE\n"
         "       frezka-cli grinder z --port PATH [--baud N] [--form 1|2] [--go MM]\n"
         "                          [--reply-timeout-ms N]\n"
         "  ping   link check (ENQ/ACK)\n"
-        "  save   controller -> PC: write the controller's data to FILE, byte for byte\n"
+        "  save   controller -> PC: write the controller's data to FILE, byte for byte, with\n"
+        "         its header and system (a FILE ending in .bin, or --raw: the bare data, as\n"
+        "         the old tools wrote)\n"
         "  load   PC -> controller: send FILE unchanged; the 16-character header is --header\n"
-        "         or, as K51LOAD 2.20 did, the file name\n"
+        "         or the one saved in FILE or, as K51LOAD 2.20 did, the file name (Czech\n"
+        "         letters become their base letters); the file's length and inner blocks\n"
+        "         are checked first and nothing is sent when they are wrong\n"
+        "         --family table sends an APROXTAB table (LOA1) to a K51 set to table\n"
+        "         transfer (KONFIG6 = 3); a table cannot be saved\n"
         "  z      Z-position link: print the table position (FORM=1 asks with Z?, FORM=2\n"
         "         waits for a binary frame); --go MM moves the table and waits until reached\n"
         "  --baud N               line rate (default: ANC 4800 Bd, as ANCLOAD/ANCSAVE; K51 and\n"
@@ -60,6 +70,10 @@ QString usage()
         "  --retries N            repeats after a timeout, NAK or bad checksum (default 3)\n"
         "  --reply-timeout-ms N   silence allowed before a reply (default 3000; 10000 for\n"
         "                         the data after a request)\n"
+        "  --send-anyway          load a file whose inner blocks have a wrong checksum (only\n"
+        "                         if the controller itself gave it to you)\n"
+        "  --go MM                -9999.999 to 9999.999 mm\n"
+        "  --help                 this text\n"
         "Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.\n");
 }
 
@@ -67,13 +81,7 @@ QString checkHeader(const QString &header)
 {
     if (header.size() > int(kHeaderSize))
         return GrinderCli::tr("--header: '%1' is longer than 16 characters").arg(header);
-    for (QChar c : header) {
-        if (c.unicode() < 0x20 || c.unicode() > 0x7E)
-            return GrinderCli::tr("--header: '%1' holds '%2'; the controller shows plain ASCII "
-                                  "only (no diacritics)")
-                .arg(header, QString(c));
-    }
-    return QString();
+    return ControllerHeader::fromText(header).error;
 }
 
 // One option with its value; returns the reason when it is unknown or the value is bad.
@@ -85,7 +93,7 @@ QString parseOption(const QString &option, const QString &value, Args &args)
     } else if (option == "--family") {
         const auto family = familyFromId(value.toStdString());
         if (!family)
-            return GrinderCli::tr("--family: '%1' is not k51, anc or hedit").arg(value);
+            return GrinderCli::tr("--family: '%1' is not k51, anc, hedit or table").arg(value);
         args.family = *family;
     } else if (option == "--baud") {
         args.serial.baud = value.toInt(&ok);
@@ -110,8 +118,10 @@ QString parseOption(const QString &option, const QString &value, Args &args)
             return GrinderCli::tr("--form: '%1' is not 1 or 2").arg(value);
     } else if (option == "--go") {
         const auto um = parseMillimetres(value.toStdString());
-        if (!um)
-            return GrinderCli::tr("--go: '%1' is not a position in mm (e.g. 12.5)").arg(value);
+        if (!um || *um > kMaxGoUm || *um < -kMaxGoUm)
+            return GrinderCli::tr("--go: '%1' is not a position from -9999.999 to 9999.999 mm "
+                                  "(e.g. 12.5)")
+                .arg(value);
         args.hasGo = true;
         args.goUm = *um;
     } else {
@@ -120,13 +130,17 @@ QString parseOption(const QString &option, const QString &value, Args &args)
     return QString();
 }
 
-// Returns 0 when parsed, else the exit code (2) after printing the reason.
+// Returns 0 when parsed, -1 after --help, else the exit code (2) after printing the reason.
 int parseArgs(const QStringList &list, Args &args)
 {
     auto fail = [](const QString &reason) {
         err(QStringLiteral("frezka-cli grinder: %1\n").arg(reason));
         return 2;
     };
+    if (list.contains(QLatin1String("--help")) || list.contains(QLatin1String("-h"))) {
+        out(usage());
+        return -1; // done: exit 0
+    }
     args.action = list.value(0);
     if (args.action != "ping" && args.action != "save" && args.action != "load" &&
         args.action != "z") {
@@ -137,6 +151,10 @@ int parseArgs(const QStringList &list, Args &args)
     }
     for (int i = 1; i < list.size(); ++i) {
         const QString &arg = list[i];
+        if (arg == QLatin1String("--send-anyway") || arg == QLatin1String("--raw")) {
+            (arg == QLatin1String("--raw") ? args.raw : args.sendAnyway) = true;
+            continue;
+        }
         if (!arg.startsWith("--")) {
             if (!args.file.isEmpty())
                 return fail(GrinderCli::tr("unexpected argument '%1'").arg(arg));
@@ -155,6 +173,9 @@ int parseArgs(const QStringList &list, Args &args)
         args.serial.baud = familyInfo(args.family).defaultBaud;
     if ((args.action == "save" || args.action == "load") && args.file.isEmpty())
         return fail(GrinderCli::tr("%1 needs a FILE").arg(args.action));
+    if (args.hasHeader && args.family == Family::Anc)
+        return fail(GrinderCli::tr("--header: ANC messages carry no header (ANCLOAD sent none); "
+                                   "leave it out or choose --family k51 or hedit"));
     return 0;
 }
 
@@ -232,29 +253,93 @@ int report(const TransferResult &result)
     return 0;
 }
 
-// Writes atomically: a failed write leaves no half file behind.
-bool writeFile(const QString &path, const QByteArray &data)
+// Writes atomically into the opened `file`: a failed write leaves no half file behind.
+bool writeFile(QSaveFile &file, const QByteArray &data)
 {
-    QSaveFile file(path);
-    if (file.open(QIODevice::WriteOnly) && file.write(data) == data.size() && file.commit())
+    if (file.write(data) == data.size() && file.commit())
         return true;
     err(GrinderCli::tr("frezka-cli grinder: cannot write %1: %2 (the data were received but not "
                        "saved)\n")
-            .arg(path, file.errorString()));
+            .arg(file.fileName(), file.errorString()));
     return false;
+}
+
+// Reads FILE for a load (a Frezka grinder file or bare data) and picks the header: --header,
+// else the one saved in the file, else the file name (K51LOAD 2.20). Returns an exit code.
+int readLoadFile(const Args &args, QByteArray &data, Header &header)
+{
+    QFile file(args.file);
+    if (!file.open(QIODevice::ReadOnly)) {
+        err(GrinderCli::tr("frezka-cli grinder: cannot read %1: %2\n")
+                .arg(args.file, file.errorString()));
+        return 1;
+    }
+    const QByteArray bytes = file.readAll();
+    std::string why;
+    const auto decoded = decodeGrinderFile(Bytes(bytes.begin(), bytes.end()), why);
+    if (!decoded) {
+        err(GrinderCli::tr("frezka-cli grinder: %1 is damaged: %2; nothing was sent\n")
+                .arg(args.file, QString::fromStdString(why)));
+        return 1;
+    }
+    if (decoded->container && decoded->family != args.family) {
+        err(GrinderCli::tr("frezka-cli grinder: %1 holds %2 data (saved from a %2 control), "
+                           "not %3: is the wrong system selected? Use --family %4.\n")
+                .arg(args.file, familyName(decoded->family), familyName(args.family),
+                     QString::fromLatin1(familyInfo(decoded->family).id)));
+        return 1;
+    }
+    data = QByteArray(reinterpret_cast<const char *>(decoded->data.data()),
+                      qsizetype(decoded->data.size()));
+    if (args.family == Family::Anc) {
+        header = Header{};
+        return 0;
+    }
+    if (decoded->container && !args.hasHeader) {
+        header = decoded->header;
+        return 0;
+    }
+    const QString typed =
+        args.hasHeader ? args.header : QFileInfo(args.file).completeBaseName().left(16);
+    const ControllerHeader mapped = ControllerHeader::fromText(typed);
+    if (!mapped.ok()) {
+        err(QStringLiteral("frezka-cli grinder: %1\n").arg(mapped.error));
+        return args.hasHeader ? 2 : 1;
+    }
+    if (mapped.mapped)
+        out(ControllerHeader::mappingNote(typed, mapped) + QLatin1Char('\n'));
+    header = mapped.header();
+    return 0;
+}
+
+// What a save writes: the Frezka grinder file, or the bare data for a .bin name or --raw.
+QByteArray savedBytes(const Args &args, const TransferResult &result)
+{
+    if (args.raw || args.file.endsWith(QLatin1String(".bin"), Qt::CaseInsensitive))
+        return result.data;
+    GrinderFile file;
+    file.family = args.family;
+    file.header = result.header;
+    file.data = Bytes(result.data.begin(), result.data.end());
+    const Bytes bytes = encodeGrinderFile(file);
+    return QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size()));
 }
 
 int runTransfer(const Args &args)
 {
     QByteArray data;
+    Header header{};
     if (args.action == "load") {
-        QFile file(args.file);
-        if (!file.open(QIODevice::ReadOnly)) {
-            err(GrinderCli::tr("frezka-cli grinder: cannot read %1: %2\n")
-                    .arg(args.file, file.errorString()));
-            return 1;
-        }
-        data = file.readAll();
+        if (const int code = readLoadFile(args, data, header))
+            return code;
+    }
+    // The target is opened before the transfer: an unwritable path fails at once, not after it.
+    QSaveFile target(args.file);
+    if (args.action == "save" && !target.open(QIODevice::WriteOnly)) {
+        err(GrinderCli::tr("frezka-cli grinder: cannot write %1: %2; nothing was asked from the "
+                           "controller\n")
+                .arg(args.file, target.errorString()));
+        return 1;
     }
     RealClock clock;
     SerialTransport transport(args.serial);
@@ -286,17 +371,16 @@ int runTransfer(const Args &args)
     } else if (args.action == "save") {
         session.save();
     } else {
-        const QString header =
-            args.hasHeader ? args.header : QFileInfo(args.file).completeBaseName().left(16);
-        session.load(headerFromText(header.toLatin1().toStdString()), data);
+        session.load(header, data, args.sendAnyway);
     }
     if (session.isBusy())
         loop.exec();
     bar.end();
-    if (result.ok() && args.action == "save" && !writeFile(args.file, result.data))
+    if (result.ok() && args.action == "save" && !writeFile(target, savedBytes(args, result)))
         return 1;
     const int code = report(result);
-    if (code == 0 && args.action == "load" && args.family != Family::HardChrome)
+    if (code == 0 && args.action == "load" && args.family != Family::HardChrome &&
+        args.family != Family::Table)
         out(GrinderCli::tr("Note: TCHIN programs show \"no prg set\" once until the X axis is set "
                            "up: select the program in AUT and hold RES.\n"));
     return code;
@@ -357,7 +441,7 @@ int runGrinder(const QStringList &list)
 {
     Args args;
     if (const int code = parseArgs(list, args))
-        return code;
+        return code < 0 ? 0 : code;
     return args.action == "z" ? runZ(args) : runTransfer(args);
 }
 

@@ -36,6 +36,8 @@ int main(int argc, char *argv[])
         std::fputs(usageText().c_str(), stdout);
         return 0;
     }
+    if (!options.note.empty())
+        std::fprintf(stderr, "k51-emu: %s\n", options.note.c_str());
     struct sigaction action
     {
     };
@@ -48,7 +50,7 @@ int main(int argc, char *argv[])
     const int baud = options.baud > 0
                          ? options.baud
                          : frezka::grinder::familyInfo(options.config.family).defaultBaud;
-    PtyServer server(options.config, baud, options.fast);
+    PtyServer server(options.config, baud, options.fast, options.baud > 0);
     const std::string path = server.open(error);
     if (path.empty()) {
         std::fprintf(stderr, "k51-emu: %s\n", error.c_str());

@@ -27,15 +27,22 @@ Controller:
   --konfig6 N             transfer mode, K51-1 numbering: 0 none (silent), 1 Z-position,
                           2 programs (default), 3 table
   --k51-2                 read --konfig6 with K51-2 numbering: 0 none, 1 programs
+                          Any other --konfig6 value (an unprogrammed EEPROM byte, usually
+                          255 = FF) is replaced at power-on by the firmware default
+  --see-konfig6 N         that firmware default (SEE_KONFIG6 in KONFIG.A51; default 2 for
+                          K51-1, 1 for K51-2)
+  --selector pgn|other    the controller's selector (default pgn); FORM=1 answers only in PGN
   --zform 1|2             Z-position protocol: 1 ASCII both ways (default), 2 binary one way
   --z-start MM            initial Z position in mm (default -1.234)
   --z-speed MM_PER_S      table speed for GO (default 20)
   --store FILE            after every accepted load write the received data to FILE
 
 Line:
-  --baud N                pace every byte at 10 bits / N s (default: the family's rate,
-                          ANC 4800, K51 and HEDIT 9600)
-  --fast                  no pacing (for tests)
+  --baud N                the controller's rate: every byte each way takes 10 bits / N s
+                          (default: the family's rate, ANC 4800, K51 and HEDIT 9600). Given
+                          explicitly, a PC port set to another rate garbles every byte both
+                          ways, as a baud rate mismatch on a real line does
+  --fast                  no pacing either way (for tests)
   --reply-delay-ms N      controller's pause before each answer (default 2)
 
 Faults:
@@ -46,7 +53,7 @@ Faults:
   --silent-after N        stop answering after N answers
 
 Other:
-  --verbose               trace every message on stderr
+  --verbose               trace every message, and every 1024 bytes received, on stderr
   --help                  this text
   --version               the version
 )";
@@ -74,6 +81,7 @@ bool readFile(const std::string &path, Bytes &bytes)
 struct Pending
 {
     int konfig6 = 2;
+    int seeKonfig6 = -1; // -1: 2 for K51-1, 1 for K51-2
     bool k51Type2 = false;
     std::string imagePath;
 };
@@ -129,6 +137,10 @@ bool parseValue(const std::string &option, const std::string &value, Options &op
     long long n = 0;
     if (option == "--family") {
         const auto family = familyFromId(value);
+        if (family == Family::Table) {
+            error = "--family table: a table goes to a K51 in table mode: use --konfig6 3";
+            return false;
+        }
         if (!family)
             error = "--family: '" + value + "' is not anc, k51 or hedit";
         else
@@ -142,6 +154,12 @@ bool parseValue(const std::string &option, const std::string &value, Options &op
     if (option == "--header") {
         c.header = headerFromText(value);
         return true;
+    }
+    if (option == "--selector") {
+        if (value != "pgn" && value != "other")
+            error = "--selector: '" + value + "' is not pgn or other";
+        c.selectorInPgn = value == "pgn";
+        return error.empty();
     }
     if (option == "--store") {
         options.storePath = value;
@@ -164,6 +182,7 @@ bool parseValue(const std::string &option, const std::string &value, Options &op
     };
     const NumberOption numbers[] = {
         {"--konfig6", 0, 255, [&](long long v) { pending.konfig6 = int(v); }},
+        {"--see-konfig6", 0, 3, [&](long long v) { pending.seeKonfig6 = int(v); }},
         {"--zform", 1, 2, [&](long long v) { c.zForm = int(v); }},
         {"--baud", 50, 4000000, [&](long long v) { options.baud = int(v); }},
         {"--reply-delay-ms", 0, 600000, [&](long long v) { c.replyDelayUs = v * 1000; }},
@@ -187,7 +206,18 @@ bool parseValue(const std::string &option, const std::string &value, Options &op
 bool finish(const Pending &pending, Options &options, std::string &error)
 {
     EmulatorConfig &c = options.config;
-    const auto mode = transferModeFromKonfig6(pending.konfig6, pending.k51Type2);
+    auto mode = transferModeFromKonfig6(pending.konfig6, pending.k51Type2);
+    if (!mode) {
+        // The manual: an unexpected EEPROM value (usually FF) is programmed at power-on with
+        // SEE_KONFIG6 from KONFIG.A51.
+        const int see = pending.seeKonfig6 >= 0 ? pending.seeKonfig6 : pending.k51Type2 ? 1 : 2;
+        mode = transferModeFromKonfig6(see, pending.k51Type2);
+        if (mode)
+            options.note = "KONFIG6 = " + std::to_string(pending.konfig6) +
+                           " is not a transfer mode: at power-on the firmware programs "
+                           "SEE_KONFIG6 = " +
+                           std::to_string(see);
+    }
     if (!mode) {
         error = "--konfig6 " + std::to_string(pending.konfig6) + " is not a transfer mode of " +
                 (pending.k51Type2 ? "K51-2 (0 or 1)" : "K51-1 (0 to 3)");

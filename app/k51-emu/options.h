@@ -16,6 +16,7 @@ struct Options
     std::string storePath; // write the image here after every load
     bool verbose = false;
     bool help = false;
+    std::string note; // said on stderr at start (e.g. the firmware default taken for KONFIG6)
 };
 
 std::string usageText();

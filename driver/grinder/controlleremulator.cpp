@@ -51,7 +51,7 @@ ControllerEmulator::ControllerEmulator(EmulatorConfig config)
     , m_info(familyInfo(m_config.family))
     , m_decoder(m_info.framing)
 {
-    if (m_config.image.empty())
+    if (m_config.image.empty() && m_info.defaultSize > 0)
         m_config.image = generatedImage(m_config.family, m_info.defaultSize);
     m_naksToSend = m_config.nakCount;
     m_corruptToSend = m_config.corruptCount;
@@ -76,9 +76,11 @@ void ControllerEmulator::feed(const std::uint8_t *bytes, std::size_t size)
     case TransferMode::None:
         return;
     case TransferMode::ZPosition:
-        if (m_config.zForm == 1) {
+        if (m_config.zForm == 1 && m_config.selectorInPgn) {
             for (std::size_t i = 0; i < size; ++i)
                 feedAscii(bytes[i]);
+        } else if (m_config.zForm == 1) {
+            log("selector not in PGN: FORM=1 input ignored");
         }
         return; // FORM=2 is one way: input is ignored
     case TransferMode::Programs:
@@ -86,6 +88,8 @@ void ControllerEmulator::feed(const std::uint8_t *bytes, std::size_t size)
         break;
     }
     std::vector<DecodeEvent> events;
+    if (size > 0)
+        m_lastRxUs = m_nowUs;
     m_decoder.feed(bytes, size, events);
     for (const DecodeEvent &event : events) {
         switch (event.kind) {
@@ -126,11 +130,13 @@ void ControllerEmulator::onFrame(const Frame &frame)
     } else if (programs && frame.code == m_info.requestCode && frame.data.empty()) {
         m_resends = 0;
         sendData();
-    } else if (programs && frame.code == m_info.loadCode && frame.payloadSize() > 0) {
+    } else if (programs && frame.code == m_info.loadCode && frame.code != Code::LoadTable &&
+               frame.payloadSize() > 0) {
         onDataMessage(frame);
     } else if (m_config.mode == TransferMode::Table && frame.code == Code::LoadTable) {
         m_table = frame.data;
         m_prenos = 0xB1;
+        ++m_tablesStored;
         replyCode(Code::Ack);
     } else {
         log("unsupported in this mode: NAK");
@@ -193,6 +199,11 @@ void ControllerEmulator::reply(const Bytes &bytes)
 void ControllerEmulator::advance(std::int64_t us)
 {
     m_nowUs += us;
+    if (m_decoder.pendingBytes() > 0 && m_nowUs - m_lastRxUs > kControllerGapUs) {
+        std::vector<DecodeEvent> dropped;
+        m_decoder.reset(dropped);
+        log("incomplete message dropped after a gap");
+    }
     if (m_config.mode != TransferMode::ZPosition)
         return;
     if (m_config.zForm == 1) {

@@ -31,8 +31,9 @@ struct EmulatorConfig
 {
     Family family = Family::K51;
     TransferMode mode = TransferMode::Programs;
-    int zForm = 1; // 1 ASCII both ways, 2 binary one way
-    Bytes image;   // empty: a generated image of the family's size
+    int zForm = 1;             // 1 ASCII both ways, 2 binary one way
+    bool selectorInPgn = true; // FORM=1 answers only with the selector in PGN (manual §5)
+    Bytes image;               // empty: a generated image of the family's size
     Header header = headerFromText("FREZKA EMU");
     int nakCount = 0;                 // answer the first N good data messages with NAK
     int corruptCount = 0;             // flip one byte in the first N data messages sent
@@ -76,6 +77,7 @@ public:
     int checksumErrors() const { return m_checksumErrors; }
     int naksSent() const { return m_naksSent; }
     int loadsStored() const { return m_loadsStored; }
+    int tablesStored() const { return m_tablesStored; }
 
 private:
     void onFrame(const Frame &frame);
@@ -92,6 +94,7 @@ private:
     const FamilyInfo &m_info;
     FrameDecoder m_decoder;
     std::int64_t m_nowUs = 0;
+    std::int64_t m_lastRxUs = 0;
     std::deque<std::pair<std::int64_t, Bytes>> m_scheduled; // due time, bytes
     Bytes m_output;
     std::vector<std::string> m_log;
@@ -106,6 +109,7 @@ private:
     int m_checksumErrors = 0;
     int m_naksSent = 0;
     int m_loadsStored = 0;
+    int m_tablesStored = 0;
     // Z-position link
     std::int64_t m_zUm = 0;
     std::optional<std::int64_t> m_zTargetUm;

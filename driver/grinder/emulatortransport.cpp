@@ -1,5 +1,7 @@
 #include "driver/grinder/emulatortransport.h"
 
+#include "driver/grinder/wiremodel.h"
+
 namespace frezka::grinder {
 
 EmulatorTransport::EmulatorTransport(Clock &clock, EmulatorConfig config, int baud,
@@ -29,8 +31,11 @@ void EmulatorTransport::close()
 {
     if (m_timer)
         m_clock.cancel(m_timer);
-    m_timer = 0;
+    if (m_acceptTimer)
+        m_clock.cancel(m_acceptTimer);
+    m_timer = m_acceptTimer = 0;
     m_open = false;
+    m_appQueue.clear();
     m_toController.clear();
     m_toPc.clear();
 }
@@ -41,8 +46,32 @@ void EmulatorTransport::write(const QByteArray &bytes)
         emit failed(tr("The emulator is not open"));
         return;
     }
-    m_toController.insert(m_toController.end(), bytes.begin(), bytes.end());
-    schedulePump();
+    m_appQueue.insert(m_appQueue.end(), bytes.begin(), bytes.end());
+    if (m_acceptTimer)
+        return;
+    // Reported from the event loop, as QSerialPort's bytesWritten is.
+    m_acceptTimer = m_clock.callAfter(0, [this] {
+        m_acceptTimer = 0;
+        const qint64 taken = takeIntoOsBuffer();
+        schedulePump();
+        if (taken > 0)
+            emit written(taken);
+    });
+}
+
+void EmulatorTransport::discardOutput()
+{
+    m_appQueue.clear();
+    m_toController.clear();
+}
+
+qint64 EmulatorTransport::takeIntoOsBuffer()
+{
+    const qint64 space = m_osBufferBytes - qint64(m_toController.size());
+    const qint64 n = std::min<qint64>(std::max<qint64>(0, space), qint64(m_appQueue.size()));
+    m_toController.insert(m_toController.end(), m_appQueue.begin(), m_appQueue.begin() + n);
+    m_appQueue.erase(m_appQueue.begin(), m_appQueue.begin() + n);
+    return n;
 }
 
 void EmulatorTransport::schedulePump()
@@ -61,6 +90,12 @@ void EmulatorTransport::pump()
     const std::int64_t now = m_clock.nowUs();
     const std::int64_t dt = now - m_lastUs;
     m_lastUs = now;
+    if (m_wireStopped) {
+        m_txCreditUs = m_rxCreditUs = 0;
+        m_emulator.advance(dt);
+        schedulePump();
+        return;
+    }
 
     m_txCreditUs = m_toController.empty() ? 0 : m_txCreditUs + dt;
     QByteArray sent;
@@ -69,12 +104,14 @@ void EmulatorTransport::pump()
         sent.append(static_cast<char>(m_toController.front()));
         m_toController.pop_front();
     }
+    m_delivered += sent.size();
+    const qint64 taken = takeIntoOsBuffer();
     m_emulator.advance(dt);
-    if (!sent.isEmpty()) {
-        m_emulator.feed(reinterpret_cast<const std::uint8_t *>(sent.constData()),
-                        static_cast<std::size_t>(sent.size()));
-    }
-    const Bytes out = m_emulator.takeOutput();
+    // A mismatch garbles each chunk as sent back to back; chunks are one pump tick apart.
+    const int controllerBaud = m_controllerBaud > 0 ? m_controllerBaud : m_baud;
+    if (!sent.isEmpty())
+        m_emulator.feed(resampleUart(Bytes(sent.begin(), sent.end()), m_baud, controllerBaud));
+    const Bytes out = resampleUart(m_emulator.takeOutput(), controllerBaud, m_baud);
     m_toPc.insert(m_toPc.end(), out.begin(), out.end());
     for (const std::string &line : m_emulator.takeLog())
         emit emulatorLogged(QString::fromStdString(line));
@@ -88,8 +125,8 @@ void EmulatorTransport::pump()
     }
     if (!m_toPc.empty() || !m_toController.empty() || m_emulator.hasPendingWork())
         schedulePump();
-    if (!sent.isEmpty())
-        emit written(sent.size());
+    if (taken > 0)
+        emit written(taken);
     if (!arrived.isEmpty())
         emit received(arrived);
 }

@@ -11,6 +11,9 @@ const FamilyInfo kFamilies[] = {
     {Family::K51, "k51", Framing::K51, Code::Load, Code::Request, Code::Save, kK51ImageSize, 9600},
     {Family::HardChrome, "hedit", Framing::K51, Code::LoadHardChrome, Code::RequestHardChrome,
      Code::SaveHardChrome, kHardChromeSize, 9600},
+    // The manual lists no request or save for a table: APROXTAB only sent it.
+    {Family::Table, "table", Framing::K51, Code::LoadTable, Code::Request, Code::Save, 0, 9600,
+     false},
 };
 } // namespace
 

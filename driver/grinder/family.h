@@ -8,6 +8,7 @@
 
 #include "driver/grinder/frame.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,6 +19,7 @@ enum class Family {
     Anc,        // ANCLOAD/ANCSAVE: programs 0-9, 0x5500 or 0x5506 bytes, no header
     K51,        // K51LOAD/K51SAVE, KCOMM: programs, length from the controller, 16-byte header
     HardChrome, // HEDIT (ANC 4.x): 0x2E bytes from 0x1100, K51 framing with header
+    Table,      // APROXTAB: a grinding-shape table PC -> K51 only (LOA1, KONFIG6 = 3)
 };
 
 struct FamilyInfo
@@ -28,11 +30,16 @@ struct FamilyInfo
     Code loadCode;           // PC -> controller data message
     Code requestCode;        // PC asks for the data
     Code saveCode;           // controller -> PC data message
-    std::size_t defaultSize; // image size the emulator holds by default
+    std::size_t defaultSize; // image size the emulator holds by default (0: none)
     int defaultBaud;
+    bool saves = true; // the controller can send these data to the PC
 };
 
 const FamilyInfo &familyInfo(Family family);
+
+// Adopted reading (the manual is silent): a controller drops a message that stops arriving
+// for this long, so a cancelled load does not swallow the next ENQ.
+constexpr std::int64_t kControllerGapUs = 1'000'000;
 std::optional<Family> familyFromId(std::string_view id);
 
 } // namespace frezka::grinder

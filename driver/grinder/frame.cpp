@@ -182,7 +182,8 @@ Bytes encodeFrame(const Frame &frame)
 Header headerFromText(const std::string &text)
 {
     Header header;
-    header.fill(' ');
+    // An empty header is the manual's zero header; text is padded with spaces.
+    header.fill(text.empty() ? 0 : ' ');
     for (std::size_t i = 0; i < kHeaderSize && i < text.size(); ++i)
         header[i] = static_cast<std::uint8_t>(text[i]);
     return header;

@@ -90,7 +90,7 @@ Bytes encodeFrame(const Frame &frame);
 std::uint16_t frameChecksum(Framing framing, const std::uint8_t *bytes, std::size_t size);
 std::size_t checksumSize(Framing framing);
 
-// Header from text: Latin-1 bytes, padded with spaces or cut to 16 characters.
+// 16 bytes from `text` (cut, padded with spaces); an empty text gives 16 zero bytes.
 Header headerFromText(const std::string &text);
 // Header as text: trailing spaces and NULs removed, other control bytes shown as '.'.
 std::string headerText(const Header &header);

@@ -1,42 +1,8 @@
 #include "driver/grinder/transfersession.h"
 
+#include "driver/grinder/loadcheck.h"
+
 namespace frezka::grinder {
-
-const char *transferErrorId(TransferError error)
-{
-    switch (error) {
-    case TransferError::None:
-        return "ok";
-    case TransferError::NotOpen:
-        return "not-open";
-    case TransferError::Busy:
-        return "busy";
-    case TransferError::InvalidInput:
-        return "invalid-input";
-    case TransferError::Timeout:
-        return "timeout";
-    case TransferError::Rejected:
-        return "rejected";
-    case TransferError::ChecksumFailed:
-        return "checksum";
-    case TransferError::UnexpectedReply:
-        return "unexpected-reply";
-    case TransferError::Transport:
-        return "transport";
-    case TransferError::Cancelled:
-        return "cancelled";
-    }
-    return "unknown";
-}
-
-double estimateSecondsLeft(qint64 doneBytes, qint64 totalBytes, qint64 elapsedUs, int baud)
-{
-    const qint64 left = std::max<qint64>(0, totalBytes - doneBytes);
-    double bytesPerSecond = baud > 0 ? baud / 10.0 : 960.0;
-    if (doneBytes > 0 && elapsedUs > 500000)
-        bytesPerSecond = doneBytes * 1e6 / double(elapsedUs);
-    return left / bytesPerSecond;
-}
 
 TransferSession::TransferSession(Transport &transport, Clock &clock, Family family, QObject *parent)
     : QObject(parent)
@@ -55,6 +21,7 @@ TransferSession::~TransferSession()
 {
     m_clock.cancel(m_timer);
     m_clock.cancel(m_pauseTimer);
+    m_clock.cancel(m_progressTimer);
 }
 
 void TransferSession::setFamily(Family family)
@@ -73,8 +40,10 @@ bool TransferSession::start(Operation operation)
     m_result = TransferResult();
     m_result.operation = operation;
     m_attempt = 0;
-    m_inFlight = 0;
+    m_inFlight = m_written = m_reported = 0;
     m_startUs = m_clock.nowUs();
+    m_wire.setBaud(m_transport.baud());
+    m_wire.reset(m_startUs);
     std::vector<DecodeEvent> stale;
     m_decoder.reset(stale); // bytes from before this operation are not part of it
     if (!m_transport.isOpen()) {
@@ -85,30 +54,6 @@ bool TransferSession::start(Operation operation)
     return true;
 }
 
-QString TransferSession::describeImage(const ImageReport &report)
-{
-    if (!report.hasBlocks)
-        return tr("no inner blocks (%1 bytes)").arg(report.size);
-    const std::size_t bad = report.badBlocks();
-    if (bad == 0)
-        return tr("%1 blocks, all valid").arg(report.blocks.size());
-    QStringList problems;
-    for (const BlockReport &block : report.blocks) {
-        if (block.ok())
-            continue;
-        const QString id =
-            QStringLiteral("0x") +
-            QString::number(block.id, 16).rightJustified(2, QLatin1Char('0')).toUpper();
-        problems << (!block.startOk ? tr("%1 (no AA)").arg(id)
-                     : !block.idOk  ? tr("%1 (wrong block id)").arg(id)
-                                    : tr("%1 (checksum)").arg(id));
-    }
-    return tr("%1 of %2 blocks invalid: %3 (the data are kept unchanged)")
-        .arg(bad)
-        .arg(report.blocks.size())
-        .arg(problems.join(QLatin1String(", ")));
-}
-
 void TransferSession::ping()
 {
     if (start(Operation::Ping))
@@ -117,11 +62,20 @@ void TransferSession::ping()
 
 void TransferSession::save()
 {
+    if (!familyInfo(m_family).saves) {
+        if (start(Operation::Save)) {
+            m_state = State::Enquiring; // finish() reports from a busy state
+            finish(TransferError::InvalidInput,
+                   tr("A table goes only from the PC to the controller (as APROXTAB sent it); "
+                      "there is nothing to receive. Choose K51 programs to receive programs."));
+        }
+        return;
+    }
     if (start(Operation::Save))
         sendLater(Frame::control(familyInfo(m_family).framing, Code::Enq), State::Enquiring);
 }
 
-void TransferSession::load(const Header &header, const QByteArray &data)
+void TransferSession::load(const Header &header, const QByteArray &data, bool sendAnyway)
 {
     if (!start(Operation::Load))
         return;
@@ -131,45 +85,30 @@ void TransferSession::load(const Header &header, const QByteArray &data)
     m_result.header = m_dataFrame.header;
     m_result.data = data;
     m_result.image = checkImage(bytes);
-    QString invalid;
-    if (data.isEmpty()) {
-        invalid = tr("The file is empty; there is nothing to send.");
-    } else if (validateFrame(m_dataFrame) != FrameError::None) {
-        invalid = tr("The data are too long for one message: %1 bytes, at most %2.")
-                      .arg(data.size())
-                      .arg(kMaxPayload - m_dataFrame.payloadSize() + data.size());
-    } else if (m_family == Family::Anc && std::size_t(data.size()) != kProgramImageSize &&
-               std::size_t(data.size()) != kAncImageSizeWithWheel) {
-        invalid = tr("ANC program data have 21760 or 21766 bytes (0x5500 or 0x5506); the file "
-                     "has %1. Choose a file saved from an ANC control.")
-                      .arg(data.size());
-    } else if (m_family == Family::HardChrome && std::size_t(data.size()) != kHardChromeSize) {
-        invalid = tr("HEDIT data have 46 bytes (0x2E); the file has %1. Choose a file saved "
-                     "with HEDIT.")
-                      .arg(data.size());
-    }
-    if (!invalid.isEmpty()) {
-        m_state = State::Enquiring;
-        finish(TransferError::InvalidInput, invalid);
+    LoadCheck check = LoadCheck::check(m_family, data, m_result.image, sendAnyway, m_reportedSizes);
+    if (check.ok() && validateFrame(m_dataFrame) != FrameError::None)
+        check.refusal = tr("The data are too long for one message: %1 bytes, at most %2.")
+                            .arg(data.size())
+                            .arg(kMaxPayload - m_dataFrame.payloadSize() + data.size());
+    if (!check.ok()) {
+        m_state = State::Enquiring; // finish() reports from a busy state
+        finish(TransferError::InvalidInput, check.refusal);
         return;
     }
-    if (!m_result.image.ok())
-        emit traced(tr("Warning: inner blocks: %1").arg(describeImage(m_result.image)));
+    if (!check.warning.isEmpty())
+        emit traced(tr("Warning: %1").arg(check.warning));
     sendLater(Frame::control(info.framing, Code::Enq), State::Enquiring);
 }
 
-void TransferSession::cancel()
+QString TransferSession::modeHint() const
 {
-    if (isBusy())
-        finish(TransferError::Cancelled, tr("Cancelled."));
-}
-
-QString TransferSession::frameName(const Frame &frame) const
-{
-    QString name = QString::fromStdString(codeName(frame.framing, std::uint8_t(frame.code)));
-    if (frame.payloadSize() > 0)
-        name += QStringLiteral(" (%1 B)").arg(frame.payloadSize());
-    return name;
+    if (m_family == Family::K51)
+        return QLatin1Char(' ') + tr("Is it set to program transfer (KONFIG6 = 2)? Set to table "
+                                     "transfer (KONFIG6 = 3) it refuses programs.");
+    if (m_family == Family::Table)
+        return QLatin1Char(' ') + tr("Is it set to table transfer (KONFIG6 = 3)? Only then does "
+                                     "it take a table.");
+    return {};
 }
 
 QString TransferSession::sentName() const
@@ -177,14 +116,53 @@ QString TransferSession::sentName() const
     return QString::fromStdString(codeName(m_lastSent.framing, std::uint8_t(m_lastSent.code)));
 }
 
-void TransferSession::arm(int timeoutMs)
+void TransferSession::arm(int timeoutMs, std::int64_t extraUs)
 {
     m_clock.cancel(m_timer);
     m_timeoutMs = timeoutMs;
-    m_timer = m_clock.callAfter(std::int64_t(timeoutMs) * 1000, [this] {
+    m_timer = m_clock.callAfter(extraUs + std::int64_t(timeoutMs) * 1000, [this] {
         m_timer = 0;
         onTimeout();
     });
+}
+
+void TransferSession::armReplyWait()
+{
+    const std::int64_t now = m_clock.nowUs();
+    const std::int64_t wireLeftUs = std::max<std::int64_t>(0, m_wire.endUs() - now);
+    if (m_inFlight > 0) {
+        // The port still holds bytes: guard it for the wire time of all it holds plus a gap.
+        const std::int64_t guardUs = wireLeftUs + m_inFlight * m_wire.byteUs();
+        m_requestDeadlineUs = now + guardUs + std::int64_t(m_timing.gapTimeoutMs) * 1000;
+        arm(m_timing.gapTimeoutMs, guardUs);
+        return;
+    }
+    const std::int64_t startUs = wireLeftUs + std::int64_t(m_timing.adapterLatencyMs) * 1000;
+    if (m_state == State::Requesting)
+        m_requestDeadlineUs = now + startUs + std::int64_t(m_timing.firstByteTimeoutMs) * 1000;
+    arm(m_waitMs, startUs);
+}
+
+void TransferSession::syncAccepted()
+{
+    const qint64 taken =
+        std::max(m_reported, m_written - std::min(m_written, m_transport.pendingOutput()));
+    m_wire.accepted(m_clock.nowUs(), taken - m_wire.acceptedBytes());
+    m_inFlight = m_written - taken;
+}
+
+void TransferSession::tickProgress()
+{
+    m_progressTimer = 0;
+    if (m_state != State::Sending)
+        return;
+    syncAccepted();
+    const std::int64_t now = m_clock.nowUs();
+    const qint64 notGone = m_inFlight + (m_wire.acceptedBytes() - m_wire.sentBy(now));
+    emit progressed(std::clamp<qint64>(m_sentSize - notGone, 0, m_sentSize), m_sentSize);
+    constexpr std::int64_t kProgressTickUs = 200'000;
+    if (notGone > 0)
+        m_progressTimer = m_clock.callAfter(kProgressTickUs, [this] { tickProgress(); });
 }
 
 void TransferSession::sendLater(const Frame &frame, State next, int pauseMs)
@@ -203,20 +181,14 @@ void TransferSession::sendLater(const Frame &frame, State next, int pauseMs)
             m_sentSize = qint64(wire.size());
             emit progressed(0, m_sentSize);
         }
-        switch (next) {
-        case State::Requesting:
-            m_requestDeadlineUs =
-                m_clock.nowUs() + std::int64_t(m_timing.firstByteTimeoutMs) * 1000;
-            arm(m_timing.firstByteTimeoutMs);
-            break;
-        case State::Sending:
-            arm(m_timing.storeTimeoutMs);
-            break;
-        default:
-            arm(m_timing.replyTimeoutMs);
-            break;
-        }
-        m_inFlight += qint64(wire.size());
+        m_waitMs = next == State::Requesting ? m_timing.firstByteTimeoutMs
+                   : next == State::Sending  ? m_timing.storeTimeoutMs
+                                             : m_timing.replyTimeoutMs;
+        m_written += qint64(wire.size());
+        m_inFlight = m_written - m_wire.acceptedBytes();
+        armReplyWait();
+        if (next == State::Sending)
+            m_progressTimer = m_clock.callAfter(0, [this] { tickProgress(); });
         emit traced(QStringLiteral("-> %1").arg(frameName(frame)));
         m_transport.write(
             QByteArray(reinterpret_cast<const char *>(wire.data()), qsizetype(wire.size())));
@@ -225,6 +197,8 @@ void TransferSession::sendLater(const Frame &frame, State next, int pauseMs)
 
 void TransferSession::onReceived(const QByteArray &bytes)
 {
+    if (isBusy())
+        syncAccepted(); // what the port took before this reply (the ACK guard below)
     std::vector<DecodeEvent> events;
     m_decoder.feed(reinterpret_cast<const std::uint8_t *>(bytes.constData()),
                    std::size_t(bytes.size()), events);
@@ -287,14 +261,19 @@ void TransferSession::onFrame(const Frame &frame)
             m_result.data = QByteArray(reinterpret_cast<const char *>(frame.data.data()),
                                        qsizetype(frame.data.size()));
             m_result.image = checkImage(frame.data);
+            m_reportedSizes.insert(m_result.data.size());
             const auto wireSize = qint64(4 + frame.payloadSize() + checksumSize(info.framing));
             emit progressed(wireSize, wireSize);
             sendLater(Frame::control(info.framing, Code::Ack), State::AckingSave);
         } else if (frame.code == Code::Nak) {
             retryOrFail(TransferError::Rejected,
-                        tr("The controller answered NAK to %1: is it set to program transfer "
-                           "(KONFIG6) with the selector in PGN?")
-                            .arg(sentName()));
+                        m_family == Family::Anc
+                            ? tr("The controller answered NAK to %1: is the ANC set up for "
+                                 "program transfer and not grinding?")
+                                  .arg(sentName())
+                            : tr("The controller answered NAK to %1: is it set to program "
+                                 "transfer (KONFIG6) with the selector in PGN?")
+                                  .arg(sentName()));
         } else if (frame.code == Code::Ack) {
             // A late answer to a repeated ENQ: never an answer to a request.
             emit traced(tr("<- ACK ignored: a late answer to an earlier message"));
@@ -312,8 +291,9 @@ void TransferSession::onFrame(const Frame &frame)
             retryOrFail(TransferError::Rejected,
                         tr("The controller answered NAK to %1 (%2 times): it did not accept "
                            "the data.")
-                            .arg(sentName())
-                            .arg(m_result.naks));
+                                .arg(sentName())
+                                .arg(m_result.naks) +
+                            modeHint());
         else
             finish(TransferError::UnexpectedReply, unexpected);
         break;
@@ -328,10 +308,15 @@ void TransferSession::onFrame(const Frame &frame)
 void TransferSession::onBadChecksum(const DecodeEvent &event)
 {
     ++m_result.checksumFailures;
-    const QString text = tr("Bad checksum in %1 from the controller: received %2, computed %3.")
-                             .arg(frameName(event.frame))
-                             .arg(QString::number(event.receivedSum, 16).toUpper())
-                             .arg(QString::number(event.expectedSum, 16).toUpper());
+    QString text = tr("Bad checksum in %1 from the controller: received %2, computed %3.")
+                       .arg(frameName(event.frame))
+                       .arg(QString::number(event.receivedSum, 16).toUpper())
+                       .arg(QString::number(event.expectedSum, 16).toUpper());
+    if (event.frame.payloadSize() == 0) // a short reply in the other family's framing
+        text = tr("The controller's reply does not fit the %1 messages: is the wrong system "
+                  "selected (ANC or K51)? Choose the system the control is, then try again. "
+                  "(%2)")
+                   .arg(familyName(m_family), text);
     emit traced(QStringLiteral("<- ") + text);
     if (m_state == State::Enquiring || m_state == State::Requesting || m_state == State::Sending)
         retryOrFail(TransferError::ChecksumFailed, text, m_state == State::Requesting);
@@ -378,13 +363,31 @@ void TransferSession::retryOrFail(TransferError error, const QString &message, b
 void TransferSession::onTimeout()
 {
     const double seconds = m_timeoutMs / 1000.0;
+    syncAccepted();
+    if (m_inFlight > 0 && m_state != State::AckingSave) {
+        finish(TransferError::Transport,
+               tr("The port %1 stopped taking data: %2 bytes of %3 were not sent. Check that the "
+                  "cable and the USB adapter are plugged in.")
+                   .arg(m_transport.name())
+                   .arg(m_inFlight)
+                   .arg(sentName()));
+        return;
+    }
     switch (m_state) {
     case State::Enquiring:
         retryOrFail(TransferError::Timeout,
-                    tr("No answer to ENQ within %1 s. Check the cable, the line settings (%2 Bd) "
-                       "and that the controller is set to transfer (KONFIG6).")
-                        .arg(seconds)
-                        .arg(m_transport.baud()));
+                    m_family == Family::Anc
+                        ? tr("No answer to ENQ within %1 s. Check the cable, the line settings "
+                             "(%2 Bd), the selected system (ANC) and that the ANC is not "
+                             "grinding.")
+                              .arg(seconds)
+                              .arg(m_transport.baud())
+                        : tr("No answer to ENQ within %1 s. Check the cable, the line settings "
+                             "(%2 Bd), the selected system (%3) and that the controller is set "
+                             "to transfer (KONFIG6).")
+                              .arg(seconds)
+                              .arg(m_transport.baud())
+                              .arg(familyName(m_family)));
         break;
     case State::Requesting: {
         const std::size_t got = m_decoder.pendingBytes();
@@ -427,10 +430,12 @@ void TransferSession::onTimeout()
 
 void TransferSession::onWritten(qint64 bytes)
 {
-    m_inFlight = std::max<qint64>(0, m_inFlight - bytes);
-    if (m_state == State::Sending) {
-        emit progressed(std::max<qint64>(0, m_sentSize - m_inFlight), m_sentSize);
-        arm(m_timing.storeTimeoutMs);
+    m_reported += bytes;
+    syncAccepted();
+    if (m_state == State::Enquiring || m_state == State::Requesting || m_state == State::Sending) {
+        // Only while nothing of the reply has come: a message under way keeps its gap timer.
+        if (m_state != State::Requesting || m_decoder.pendingBytes() == 0)
+            armReplyWait();
     } else if (m_state == State::AckingSave && m_inFlight == 0) {
         finish(TransferError::None);
     }
@@ -440,35 +445,6 @@ void TransferSession::onTransportFailed(const QString &error)
 {
     if (isBusy())
         finish(TransferError::Transport, error);
-}
-
-void TransferSession::finish(TransferError error, const QString &message)
-{
-    m_clock.cancel(m_timer);
-    m_clock.cancel(m_pauseTimer);
-    m_timer = m_pauseTimer = 0;
-    m_state = State::Idle;
-    m_result.error = error;
-    m_result.elapsedUs = m_clock.nowUs() - m_startUs;
-    m_result.message = message;
-    if (error == TransferError::None) {
-        switch (m_operation) {
-        case Operation::Ping:
-            m_result.message = tr("Connected.");
-            break;
-        case Operation::Save:
-            m_result.message = tr("Received %1 bytes, header \"%2\".")
-                                   .arg(m_result.data.size())
-                                   .arg(QString::fromLatin1(headerText(m_result.header)));
-            break;
-        case Operation::Load:
-            m_result.message =
-                tr("Sent %1 bytes; the controller stored them.").arg(m_result.data.size());
-            break;
-        }
-    }
-    emit traced(m_result.message);
-    emit finished(m_result);
 }
 
 } // namespace frezka::grinder

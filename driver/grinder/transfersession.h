@@ -12,16 +12,26 @@
 // the reply timeout after a control message, the first-byte timeout after a request, the gap
 // timeout between bytes of a message, the store timeout after the last byte of a data message.
 // Every timeout, NAK and bad checksum is retried at most maxRetries times, then reported.
+//
+// Waits start on the wire, not in the port: a port reports bytes as written when its driver
+// takes them, which for a USB adapter can be the whole 21 KB message at once, 22.7 s before
+// the last byte has left at 9600 Bd. The session therefore counts bytes x 10 / baud from when
+// the port took them (WireModel) plus the adapter's latency before any reply timeout starts,
+// and its progress follows that estimate of the wire, not the port's buffer. While the port
+// has not taken everything, the timer guards the port instead (a stalled port is reported).
 
 #include "driver/grinder/clock.h"
 #include "driver/grinder/family.h"
 #include "driver/grinder/framedecoder.h"
 #include "driver/grinder/imagecheck.h"
 #include "driver/grinder/transport.h"
+#include "driver/grinder/wiremodel.h"
 
 #include <QByteArray>
 #include <QObject>
 #include <QString>
+
+#include <set>
 
 namespace frezka::grinder {
 
@@ -33,6 +43,7 @@ struct SessionTiming
     int storeTimeoutMs = 20000;     // ACK after the last byte of a data message
     int pauseMs = 50;               // before each message the PC sends
     int maxRetries = 3;             // repeats after a timeout, NAK or bad checksum
+    int adapterLatencyMs = 20;      // added to the wire time before a reply can be due
     bool operator==(const SessionTiming &) const = default;
 };
 
@@ -66,10 +77,13 @@ struct TransferResult
     int checksumFailures = 0;
     qint64 noiseBytes = 0;
     qint64 elapsedUs = 0;
+    qint64 controllerBusyUs = 0; // cancelled: how long the controller goes on sending
     bool ok() const { return error == TransferError::None; }
     bool operator==(const TransferResult &) const = default;
 };
 
+// "K51", "ANC", "HEDIT": the system as the operator knows it.
+QString familyName(Family family);
 // Seconds left from the rate so far, or from the baud rate (8N1) before there is one.
 double estimateSecondsLeft(qint64 doneBytes, qint64 totalBytes, qint64 elapsedUs, int baud);
 
@@ -92,9 +106,13 @@ public:
 
     void ping();
     void save();
-    // Sends `data` exactly as given; `header` is ignored by the ANC family (no header).
-    void load(const Header &header, const QByteArray &data);
-    void cancel();
+    // Sends `data` exactly as given; `header` is ignored by the ANC family (no header). The
+    // data are checked first (LoadCheck) and refused with InvalidInput before any byte is
+    // sent; `sendAnyway` lets through what LoadCheck allows it to.
+    void load(const Header &header, const QByteArray &data, bool sendAnyway = false);
+    // Stops the operation: what the port has not sent is dropped, and the result's message
+    // (`reason`, else "Cancelled.") says what the controller is still doing.
+    void cancel(const QString &reason = QString());
 
 signals:
     void progressed(qint64 doneBytes, qint64 totalBytes);
@@ -117,10 +135,19 @@ private:
     void sendLater(const Frame &frame, State next, int pauseMs = -1);
     // Repeats the last message (or sends NAK when `askRepeat`), or fails after maxRetries.
     void retryOrFail(TransferError error, const QString &message, bool askRepeat = false);
-    void arm(int timeoutMs);
+    // Arms the timer `extraUs + timeoutMs` from now; messages name `timeoutMs`.
+    void arm(int timeoutMs, std::int64_t extraUs = 0);
+    // Arms the wait for the reply to the message being sent, from the end of the wire.
+    void armReplyWait();
+    // Emits the progress of the data message on the wire, while it is being sent.
+    void tickProgress();
+    // Counts what the port has taken (its report or, earlier, its queue) into the wire model.
+    void syncAccepted();
     void finish(TransferError error, const QString &message = QString());
     QString frameName(const Frame &frame) const;
     QString sentName() const;
+    // " Is it set to ... (KONFIG6 = n)?" for the K51 kinds; empty for the others.
+    QString modeHint() const;
 
     Transport &m_transport;
     Clock &m_clock;
@@ -133,13 +160,19 @@ private:
     Frame m_dataFrame;     // load: the message to (re)send
     Frame m_lastSent;      // for messages and retries
     qint64 m_sentSize = 0; // wire size of the data message being sent
-    qint64 m_inFlight = 0; // bytes written but not yet reported as written
+    qint64 m_inFlight = 0; // bytes written that the port has not taken yet
+    qint64 m_written = 0;  // bytes written since start()
+    qint64 m_reported = 0; // bytes the port reported written since start()
     int m_attempt = 0;     // retries in the current step
     int m_timeoutMs = 0;
+    int m_waitMs = 0; // the reply wait of the message being sent, from the end of the wire
+    WireModel m_wire;
+    std::set<qsizetype> m_reportedSizes; // lengths of data the controller sent (saves)
     std::int64_t m_startUs = 0;
     std::int64_t m_requestDeadlineUs = 0; // first-byte deadline of the data after a request
     Clock::TimerId m_timer = 0;
     Clock::TimerId m_pauseTimer = 0;
+    Clock::TimerId m_progressTimer = 0;
 };
 
 } // namespace frezka::grinder

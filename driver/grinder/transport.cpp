@@ -1,6 +1,7 @@
 #include "driver/grinder/transport.h"
 
 #include <QFileInfo>
+#include <QLockFile>
 #include <QSerialPort>
 
 namespace frezka::grinder {
@@ -49,6 +50,32 @@ bool SerialTransport::open(QString *error)
     return true;
 }
 
+namespace {
+
+// Who holds QSerialPort's lock on `path` ("name (process N)"), or empty. QSerialPort locks a
+// port with a QLockFile "LCK..<name, '/' as '_'>" in the first writable of these directories.
+QString lockHolder(const QString &path)
+{
+    QString name = path.startsWith(QLatin1String("/dev/")) ? path.mid(5) : path;
+    name.replace(QLatin1Char('/'), QLatin1Char('_'));
+    for (const char *dir : {"/var/lock", "/etc/locks", "/var/spool/locks", "/var/spool/uucp",
+                            "/tmp", "/var/tmp", "/run/lock"}) {
+        const QString file = QLatin1String(dir) + QStringLiteral("/LCK..") + name;
+        if (!QFileInfo::exists(file))
+            continue;
+        QLockFile lock(file);
+        qint64 pid = 0;
+        QString host, app;
+        if (lock.getLockInfo(&pid, &host, &app))
+            return SerialTransport::tr("%1 (process %2)")
+                .arg(app.isEmpty() ? SerialTransport::tr("another program") : app)
+                .arg(pid);
+    }
+    return {};
+}
+
+} // namespace
+
 QString serialOpenFailure(const QString &portName, bool permissionDenied,
                           const QString &errorString)
 {
@@ -56,6 +83,19 @@ QString serialOpenFailure(const QString &portName, bool permissionDenied,
         return SerialTransport::tr("Cannot open %1: %2").arg(portName, errorString);
     const QString path =
         portName.startsWith(QLatin1Char('/')) ? portName : QStringLiteral("/dev/") + portName;
+    const QFileInfo device(path);
+    if (device.isReadable() && device.isWritable()) {
+        // Allowed to open it, yet refused: another program holds the port.
+        const QString holder = lockHolder(path);
+        return holder.isEmpty()
+                   ? SerialTransport::tr("Cannot open %1: the port is in use by another "
+                                         "program. Close it (or disconnect it), then connect "
+                                         "again.")
+                         .arg(portName)
+                   : SerialTransport::tr("Cannot open %1: the port is in use by %2. Close that "
+                                         "program (or disconnect it there), then connect again.")
+                         .arg(portName, holder);
+    }
     QString group = QFileInfo(path).group();
     if (group.isEmpty() || group == QLatin1String("root"))
         group = QStringLiteral("dialout");
@@ -91,6 +131,17 @@ void SerialTransport::write(const QByteArray &bytes)
                         .arg(m_port->errorString()));
 }
 
+qint64 SerialTransport::pendingOutput() const
+{
+    return m_port->bytesToWrite();
+}
+
+void SerialTransport::discardOutput()
+{
+    if (m_port->isOpen())
+        m_port->clear(QSerialPort::Output);
+}
+
 void SerialTransport::onError()
 {
     const QSerialPort::SerialPortError error = m_port->error();
@@ -99,6 +150,17 @@ void SerialTransport::onError()
         return;
     if (error == QSerialPort::TimeoutError)
         return;
+    const QString path = m_settings.portName.startsWith(QLatin1Char('/'))
+                             ? m_settings.portName
+                             : QStringLiteral("/dev/") + m_settings.portName;
+    if (error == QSerialPort::ResourceError || error == QSerialPort::DeviceNotFoundError ||
+        !QFileInfo::exists(path)) {
+        // The device vanished (errno ENXIO/EIO, "Inappropriate ioctl" on a dead pty).
+        emit failed(tr("The port %1 went away: is the cable or the USB adapter unplugged? Plug "
+                       "it in, then connect again.")
+                        .arg(m_settings.portName));
+        return;
+    }
     emit failed(tr("Serial port %1: %2").arg(m_settings.portName, m_port->errorString()));
 }
 

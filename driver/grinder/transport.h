@@ -32,6 +32,11 @@ public:
     virtual bool isOpen() const = 0;
     // Queues bytes for sending; a failure is reported by failed().
     virtual void write(const QByteArray &bytes) = 0;
+    // Drops what was written but has not yet left for the line (a cancelled message).
+    virtual void discardOutput() = 0;
+    // Bytes written that the port's driver has not taken yet (QSerialPort::bytesToWrite: it
+    // reports bytesWritten only when the device is writable again, which lags the take).
+    virtual qint64 pendingOutput() const = 0;
     // Line speed, for progress estimates.
     virtual int baud() const = 0;
     // Human name for messages ("/dev/ttyUSB0", "emulator").
@@ -53,6 +58,8 @@ public:
     void close() override;
     bool isOpen() const override;
     void write(const QByteArray &bytes) override;
+    void discardOutput() override;
+    qint64 pendingOutput() const override;
     int baud() const override { return m_settings.baud; }
     QString name() const override { return m_settings.portName; }
 

@@ -26,6 +26,9 @@ namespace frezka::grinder {
 std::string formatMillimetres(std::int64_t positionUm);
 // Micrometres from "[+|-]digits[(.|,)digits]" with at most 3 decimals; nullopt otherwise.
 std::optional<std::int64_t> parseMillimetres(std::string_view text);
+// The largest |position| a FORM=1 GO can name: four digits before the decimal mark
+// ("GO 9999.999 "), the same limit in the window and the CLI.
+constexpr std::int64_t kMaxGoUm = 9'999'999;
 
 std::string zQueryMessage();                          // "Z? "
 std::string goMessage(std::int64_t targetUm);         // "GO 0012.123 "

@@ -1,14 +1,17 @@
 #include "gui/grinder/grinderwindow.h"
 
 #include "driver/grinder/emulatortransport.h"
+#include "gui/grinder/hardchromeeditor.h"
 #include "gui/grinder/portsettings.h"
 #include "gui/grinder/serialmonitor.h"
 #include "gui/grinder/zpositionpanel.h"
 
+#include <QCloseEvent>
 #include <QComboBox>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
 #include <QTabWidget>
@@ -27,10 +30,12 @@ GrinderWindow::GrinderWindow(QWidget *parent)
     , m_connectButton(new QPushButton(tr("Connect"), this))
     , m_connection(new QLabel(this))
     , m_linkTimer(new QTimer(this))
+    , m_resumeTimer(new QTimer(this))
     , m_tabs(new QTabWidget(this))
     , m_transferPanel(new TransferPanel(m_clock, this))
     , m_zPanel(new ZPositionPanel(this))
     , m_monitor(new SerialMonitor(this))
+    , m_hardChrome(new HardChromeEditor(this))
 {
     setWindowFlag(Qt::Window); // a window of its own even when given a parent
     setWindowTitle(tr("Grinder transfer"));
@@ -41,6 +46,7 @@ GrinderWindow::GrinderWindow(QWidget *parent)
     m_family->addItem(tr("K51 programs (K51LOAD/K51SAVE, KCOMM)"), int(Family::K51));
     m_family->addItem(tr("ANC programs (ANCLOAD/ANCSAVE)"), int(Family::Anc));
     m_family->addItem(tr("ANC hard-chrome data (HEDIT)"), int(Family::HardChrome));
+    m_family->addItem(tr("K51 table (APROXTAB), PC → controller only"), int(Family::Table));
     m_mode->addItem(tr("Program transfer"), int(LinkMode::Programs));
     m_mode->addItem(tr("Z position, FORM=1 (ASCII)"), int(LinkMode::ZForm1));
     m_mode->addItem(tr("Z position, FORM=2 (binary)"), int(LinkMode::ZForm2));
@@ -60,10 +66,27 @@ GrinderWindow::GrinderWindow(QWidget *parent)
     m_tabs->addTab(m_transferPanel, tr("Program transfer"));
     m_tabs->addTab(m_zPanel, tr("Z position"));
     m_tabs->addTab(m_monitor, tr("Serial monitor"));
+    m_tabs->addTab(m_hardChrome, tr("HEDIT data"));
+    connect(m_hardChrome, &HardChromeEditor::receivedDataWanted, this, [this] {
+        m_hardChrome->setData(m_transferPanel->receivedData(), m_transferPanel->receivedHeader());
+    });
+    connect(m_hardChrome, &HardChromeEditor::sendRequested, this,
+            [this](const QByteArray &data, const QString &header) {
+                m_tabs->setCurrentWidget(m_transferPanel);
+                m_transferPanel->sendData(data, tr("HEDIT editor"), header, Family::HardChrome);
+            });
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(connectionBox);
     layout->addWidget(m_tabs, 1);
 
+    m_connection->setWordWrap(true); // a long message must not widen the window for good
+    m_resumeTimer->setSingleShot(true);
+    connect(m_resumeTimer, &QTimer::timeout, this, [this] {
+        if (!m_session)
+            return;
+        m_linkTimer->start();
+        checkLink();
+    });
     m_linkTimer->setInterval(kLinkCheckIntervalMs);
     connect(m_linkTimer, &QTimer::timeout, this, &GrinderWindow::checkLink);
     connect(m_connectButton, &QPushButton::clicked, this, &GrinderWindow::onConnectClicked);
@@ -100,7 +123,9 @@ void GrinderWindow::loadSettings()
         settings.value(QStringLiteral("parity"), QStringLiteral("n")).toString().at(0).toLatin1();
     s.stopBits = settings.value(QStringLiteral("stopBits"), 1).toInt();
     m_port->setSettings(s);
-    const int family = m_family->findData(settings.value(QStringLiteral("family"), 0).toInt());
+    // K51 on first start, as the documentation says.
+    const int family =
+        m_family->findData(settings.value(QStringLiteral("family"), int(Family::K51)).toInt());
     m_family->setCurrentIndex(family < 0 ? 0 : family);
 }
 
@@ -148,8 +173,11 @@ bool GrinderWindow::connectPort()
     const auto mode = static_cast<LinkMode>(m_mode->currentData().toInt());
     if (settings.portName == PortSettingsRow::emulatorPortName()) {
         EmulatorConfig config;
-        config.family = family;
-        config.mode = mode == LinkMode::Programs ? TransferMode::Programs : TransferMode::ZPosition;
+        // A table goes to a K51 set to table transfer (KONFIG6 = 3).
+        config.family = family == Family::Table ? Family::K51 : family;
+        config.mode = mode != LinkMode::Programs ? TransferMode::ZPosition
+                      : family == Family::Table  ? TransferMode::Table
+                                                 : TransferMode::Programs;
         config.zForm = mode == LinkMode::ZForm2 ? 2 : 1;
         m_transport = std::make_unique<EmulatorTransport>(m_clock, config, settings.baud, 10000);
     } else {
@@ -187,7 +215,14 @@ bool GrinderWindow::connectPort()
 
 void GrinderWindow::disconnectPort()
 {
+    // A transfer in progress ends visibly, not silently with the session.
+    if (m_session && m_session->isBusy()) {
+        m_disconnecting = true;
+        m_session->cancel(tr("Disconnected during the transfer."));
+        m_disconnecting = false;
+    }
     m_linkTimer->stop();
+    m_resumeTimer->stop();
     m_transferPanel->setSession(nullptr);
     m_zPanel->setSession(nullptr);
     m_session.reset();
@@ -218,10 +253,22 @@ void GrinderWindow::checkLink()
 
 void GrinderWindow::onTransferFinished(const TransferResult &result)
 {
-    if (result.operation == Operation::Ping || result.ok())
+    if (result.operation == Operation::Ping || result.ok()) {
         setLinkUp(result.ok(), result.ok() ? QString() : result.message);
-    else
-        checkLink(); // after a failed transfer, find out at once whether the link is there
+    } else if (m_disconnecting || !m_session) {
+        // the window is closing the port: no link check
+    } else if (result.error == TransferError::Cancelled && result.controllerBusyUs > 0) {
+        // The controller finishes (or drops) its message first: a check now would fail.
+        m_linkTimer->stop();
+        m_resumeTimer->start(int(result.controllerBusyUs / 1000) + 200);
+        m_connection->setText(tr("Waiting for the controller to finish its message (about %1 "
+                                 "s)…")
+                                  .arg(qMax(1, qRound(result.controllerBusyUs / 1e6))));
+    } else {
+        // After a failed transfer, find out at once whether the link is there (once every
+        // slot has seen this result).
+        QTimer::singleShot(0, this, &GrinderWindow::checkLink);
+    }
     m_transferPanel->updateEnabled();
 }
 
@@ -238,6 +285,26 @@ void GrinderWindow::setLinkUp(bool up, const QString &detail)
     m_connection->setStyleSheet(
         up ? QStringLiteral("QLabel { color: #1a7f1a; font-weight: bold; }")
            : QStringLiteral("QLabel { color: #b00020; font-weight: bold; }"));
+}
+
+void GrinderWindow::closeEvent(QCloseEvent *event)
+{
+    if (m_transferPanel->hasUnsavedData()) {
+        const bool close =
+            m_closeConfirmer
+                ? m_closeConfirmer()
+                : QMessageBox::question(this, tr("Grinder transfer"),
+                                        tr("The data received from the controller have not been "
+                                           "saved. Close and discard them?"),
+                                        QMessageBox::Discard | QMessageBox::Cancel,
+                                        QMessageBox::Cancel) == QMessageBox::Discard;
+        if (!close) {
+            event->ignore();
+            return;
+        }
+    }
+    disconnectPort();
+    event->accept();
 }
 
 QString GrinderWindow::connectionText() const

@@ -15,6 +15,7 @@
 
 #include <QWidget>
 
+#include <functional>
 #include <memory>
 
 class QComboBox;
@@ -25,6 +26,7 @@ class QTimer;
 
 namespace frezka::gui {
 
+class HardChromeEditor;
 class PortSettingsRow;
 class SerialMonitor;
 class ZPositionPanel;
@@ -50,10 +52,19 @@ public:
     QString connectionText() const;
     void checkLink(); // one ENQ now
 
+    // Asked before the window closes with received data not saved; true closes. The default
+    // asks with a message box; tests set their own so no modal dialog appears.
+    using CloseConfirmer = std::function<bool()>;
+    void setCloseConfirmer(CloseConfirmer confirmer) { m_closeConfirmer = std::move(confirmer); }
+
     TransferPanel *transferPanel() const { return m_transferPanel; }
     ZPositionPanel *zPositionPanel() const { return m_zPanel; }
     SerialMonitor *serialMonitor() const { return m_monitor; }
+    HardChromeEditor *hardChromeEditor() const { return m_hardChrome; }
     grinder::Transport *transport() const { return m_transport.get(); }
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
 
 private:
     void onConnectClicked();
@@ -67,6 +78,9 @@ private:
     std::unique_ptr<grinder::TransferSession> m_session;
     std::unique_ptr<grinder::ZLinkSession> m_zSession;
     bool m_linkUp = false;
+    bool m_disconnecting = false;
+    CloseConfirmer m_closeConfirmer;
+    QTimer *m_resumeTimer; // restarts the link check once a cancelled controller is done
 
     PortSettingsRow *m_port;
     QComboBox *m_family;
@@ -78,6 +92,7 @@ private:
     TransferPanel *m_transferPanel;
     ZPositionPanel *m_zPanel;
     SerialMonitor *m_monitor;
+    HardChromeEditor *m_hardChrome;
 };
 
 } // namespace frezka::gui

@@ -8,7 +8,9 @@
 #include <QWidget>
 
 #include <functional>
+#include <optional>
 
+class QCheckBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
@@ -39,10 +41,22 @@ public:
     bool saveReceived(const QString &path); // write the received data, byte for byte
     bool openFileToSend(const QString &path);
     void setHeaderText(const QString &text);
-    bool send();   // PC -> Controller
+    bool send(); // PC -> Controller
+    // Sends `data` (not from a file: the HEDIT editor) under `label` with `header`.
+    bool sendData(const QByteArray &data, const QString &label, const QString &header,
+                  grinder::Family family);
+    grinder::Header receivedHeader() const { return m_received.header; }
     void cancel(); // stop the transfer in progress
     QByteArray receivedData() const { return m_received.data; }
     QString statusText() const;
+    // The failure banner's text; empty while it is hidden.
+    QString failureText() const;
+    // Data received from the controller and not yet saved to a file.
+    bool hasUnsavedData() const { return !m_received.data.isEmpty() && !m_receivedSaved; }
+    void setSendAnyway(bool on);
+    // What the header becomes on the controller (Czech letters mapped) or why it cannot.
+    QString headerNote() const;
+    QString receivedHeaderText() const;
 
 signals:
     void transferFinished(const frezka::grinder::TransferResult &result);
@@ -55,13 +69,20 @@ private:
     void chooseSendFile();
     QString chooseFile(FileChoice choice, const QString &suggestion);
     void appendLog(const QString &line);
+    void showFailure(const QString &text);
+    void clearReceived();
 
     grinder::Clock &m_clock;
     grinder::TransferSession *m_session = nullptr;
     bool m_linkUp = false;
     int m_baud = 9600;
     FileChooser m_chooser;
+    void updateHeaderNote();
+
     grinder::TransferResult m_received;
+    grinder::Family m_receivedFamily = grinder::Family::K51;
+    std::optional<grinder::Family> m_toSendFamily; // a Frezka grinder file names its system
+    bool m_receivedSaved = false;
     QByteArray m_toSend;
     QString m_toSendPath;
     std::int64_t m_startUs = 0;
@@ -75,11 +96,14 @@ private:
     QPushButton *m_chooseButton;
     QLabel *m_sendInfo;
     QLineEdit *m_header;
+    QLabel *m_headerNote;
     QPushButton *m_sendButton;
     QPushButton *m_cancelButton;
     QProgressBar *m_progress;
     QLabel *m_progressText;
     QLabel *m_status;
+    QLabel *m_banner;
+    QCheckBox *m_sendAnyway;
     QLabel *m_hint;
     QPlainTextEdit *m_log;
 };

@@ -34,7 +34,7 @@ ZPositionPanel::ZPositionPanel(QWidget *parent)
     big.setPointSize(big.pointSize() * 2);
     big.setBold(true);
     m_position->setFont(big);
-    m_target->setRange(-9999.999, 9999.999);
+    m_target->setRange(-kMaxGoUm / 1000.0, kMaxGoUm / 1000.0);
     m_target->setDecimals(3);
     m_target->setSuffix(tr(" mm"));
     m_goButton->setToolTip(tr("Move the table to this Z position (selector in PGN)."));

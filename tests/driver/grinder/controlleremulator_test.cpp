@@ -96,6 +96,17 @@ TEST(GrinderEmulator, ResendsOnNakUpToItsLimit)
     EXPECT_TRUE(emu.takeOutput().empty());
 }
 
+// The manual: FORM=1 works only with the selector in PGN.
+TEST(GrinderEmulator, Form1AnswersOnlyWithTheSelectorInPgn)
+{
+    EmulatorConfig c = zConfig();
+    c.selectorInPgn = false;
+    ControllerEmulator emu(c);
+    emu.feed(ascii("Z? "));
+    emu.advance(1'000'000);
+    EXPECT_EQ(text(emu.takeOutput()), "");
+}
+
 TEST(GrinderEmulator, Form1GrammarAndErrors)
 {
     ControllerEmulator emu(zConfig());

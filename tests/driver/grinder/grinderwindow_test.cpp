@@ -3,12 +3,16 @@
 #include "ptyprocess.h"
 
 #include "driver/grinder/controlleremulator.h"
+#include "driver/grinder/emulatortransport.h"
 #include "gui/grinder/grinderwindow.h"
+#include "gui/grinder/hardchromeeditor.h"
 #include "gui/grinder/serialmonitor.h"
 #include "gui/grinder/zpositionpanel.h"
 
 #include <QComboBox>
 #include <QLabel>
+#include <QLineEdit>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QtTest>
@@ -29,6 +33,11 @@ private slots:
     void zPositionForm1WithTheInProcessEmulator();
     void serialMonitorShowsBothDirectionsAndCaptures();
     void choosingAControlSetsItsRate();
+    void everyFailureEndsVisiblyWithNoStaleSave();
+    void unsavedDataIsGuardedOnCloseAndLinkChecksStayOutOfTheLog();
+    void czechHeaderRoundTripsThroughSaveAndLoad();
+    void tableGoesToTheEmulatorInTableModeAndK51IsTheFirstChoice();
+    void heditEditRoundTripsThroughTheController();
 
 private:
     QTemporaryDir m_dir;
@@ -191,8 +200,231 @@ void GrinderWindowTest::choosingAControlSetsItsRate()
     };
     choose(Family::Anc);
     QCOMPARE(openedAt(QStringLiteral("4800 Bd")), QString());
+    window.setLinkMode(GrinderWindow::LinkMode::Programs); // ANC has no header: the field is off
+    QVERIFY(window.connectPort());
+    QVERIFY(!window.findChild<QLineEdit *>("header")->isEnabled());
+    window.disconnectPort();
+    window.setLinkMode(GrinderWindow::LinkMode::ZForm1);
     choose(Family::K51);
     QCOMPARE(openedAt(QStringLiteral("9600 Bd")), QString());
+}
+
+namespace {
+
+// A window connected to k51-emu (started with `args`) with its link up.
+struct WindowRig
+{
+    EmuProcess emu;
+    GrinderWindow window;
+    TransferPanel *panel;
+    QPushButton *save;
+    explicit WindowRig(const QStringList &args)
+        : emu(args)
+        , panel(window.transferPanel())
+        , save(window.findChild<QPushButton *>("saveButton"))
+    {
+        window.setCloseConfirmer([] { return true; });
+        window.setSerialSettings({emu.path(), 9600, 8, 'n', 1});
+        window.setFamily(Family::K51);
+        window.show();
+    }
+    bool connectAndWait()
+    {
+        return window.connectPort() && QTest::qWaitFor([this] { return window.isLinkUp(); });
+    }
+};
+
+} // namespace
+
+// Issue 22's second "Done when": NAKs past the limit, bad checksums, cancel, disconnect and a
+// wrong-size file each end in a visible failure (status and banner), and Save never offers the
+// data of an earlier transfer.
+void GrinderWindowTest::everyFailureEndsVisiblyWithNoStaleSave()
+{
+    const Bytes generated = generatedImage(Family::K51, kK51ImageSize);
+    QVERIFY(writeAll(file("good.bin"), QByteArray(reinterpret_cast<const char *>(generated.data()),
+                                                  qsizetype(generated.size()))));
+    QVERIFY(writeAll(file("short.bin"), QByteArray(1000, 'x')));
+    const auto ended = [](WindowRig &rig, const QString &status, const QString &banner) {
+        if (!QTest::qWaitFor([&] { return !rig.panel->failureText().isEmpty(); }, 30000))
+            return QStringLiteral("no failure banner; status: ") + rig.panel->statusText() +
+                   rig.window.findChild<QPlainTextEdit *>("transferLog")->toPlainText();
+        if (!rig.panel->statusText().startsWith(status) ||
+            !rig.panel->failureText().contains(banner))
+            return rig.panel->statusText() + QStringLiteral(" | ") + rig.panel->failureText();
+        return QString();
+    };
+    { // NAKs past the limit
+        WindowRig rig({"--fast", "--naks", "100"});
+        QVERIFY(rig.connectAndWait());
+        QVERIFY(rig.panel->openFileToSend(file("good.bin")));
+        QVERIFY(rig.panel->send());
+        QCOMPARE(ended(rig, "Transfer failed", "NAK to LOA"), QString());
+        QVERIFY(rig.panel->failureText().startsWith("Sending to the controller failed"));
+    }
+    { // bad checksums: a good receive first, then one that fails, and Save is off
+        WindowRig rig({"--fast", "--corrupt", "4", "--silent-after", "100"});
+        QVERIFY(rig.connectAndWait());
+        QVERIFY(rig.panel->receive());
+        QCOMPARE(ended(rig, "Transfer failed", "Bad checksum"), QString());
+        QVERIFY(!rig.save->isEnabled());
+        QVERIFY(rig.panel->receivedData().isEmpty());
+        QTRY_VERIFY(rig.window.isLinkUp());
+        QVERIFY(rig.panel->receive()); // the fifth message is good
+        QTRY_VERIFY(rig.save->isEnabled());
+        QVERIFY(rig.panel->failureText().isEmpty()); // a new transfer clears the banner
+    }
+    { // cancel while the controller sends (paced at 9600 Bd)
+        WindowRig rig({"--header", "OLD"});
+        QVERIFY(rig.connectAndWait());
+        QVERIFY(rig.panel->receive());
+        QTest::qWait(1500);
+        rig.panel->cancel();
+        QCOMPARE(ended(rig, "Cancelled", "may still be sending its data"), QString());
+        QVERIFY(!rig.save->isEnabled());
+        QVERIFY(rig.window.connectionText().startsWith("Waiting for the controller"));
+    }
+    { // disconnect during a load
+        WindowRig rig({});
+        QVERIFY(rig.connectAndWait());
+        QVERIFY(rig.panel->openFileToSend(file("good.bin")));
+        QVERIFY(rig.panel->send());
+        QTest::qWait(1000);
+        rig.window.disconnectPort();
+        QCOMPARE(ended(rig, "Cancelled", "Disconnected during the transfer"), QString());
+        QVERIFY(rig.panel->failureText().contains("received only part"));
+    }
+    { // a 1000-byte file as K51: refused, nothing sent
+        WindowRig rig({"--fast", "--verbose"});
+        QVERIFY(rig.connectAndWait());
+        QVERIFY(rig.panel->openFileToSend(file("short.bin")));
+        QVERIFY(rig.panel->send());
+        QCOMPARE(ended(rig, "Transfer failed", "the file has 1000"), QString());
+        QTest::qWait(100);
+        QVERIFY(!rig.emu.errorOutput().contains("rx LOA"));
+    }
+}
+
+void GrinderWindowTest::unsavedDataIsGuardedOnCloseAndLinkChecksStayOutOfTheLog()
+{
+    WindowRig rig({"--fast"});
+    bool asked = false;
+    bool allow = false;
+    rig.window.setCloseConfirmer([&] {
+        asked = true;
+        return allow;
+    });
+    QVERIFY(rig.connectAndWait());
+    rig.window.checkLink();
+    QTest::qWait(300);
+    auto *log = rig.window.findChild<QPlainTextEdit *>("transferLog");
+    QVERIFY(log);
+    QVERIFY2(!log->toPlainText().contains("ENQ"), qPrintable(log->toPlainText()));
+    QVERIFY(rig.panel->receive());
+    QTRY_VERIFY(rig.save->isEnabled());
+    QVERIFY(log->toPlainText().contains("-> DEJ"));
+    QVERIFY(!rig.window.close());
+    QVERIFY(asked);
+    QVERIFY(rig.window.isVisible());
+    QVERIFY(rig.panel->saveReceived(file("kept.bin")));
+    asked = false;
+    QVERIFY(rig.window.close()); // saved: no question
+    QVERIFY(!asked);
+}
+
+// Issue 22's second "Done when", last part: a header with Czech letters is sent with base
+// letters (the window says so before sending), comes back from the controller, is kept in the
+// saved file and restored when that file is opened to send (docs/grinder.md, "Headers").
+void GrinderWindowTest::czechHeaderRoundTripsThroughSaveAndLoad()
+{
+    const Bytes generated = generatedImage(Family::K51, kK51ImageSize);
+    QVERIFY(writeAll(file("plain.bin"), QByteArray(reinterpret_cast<const char *>(generated.data()),
+                                                   qsizetype(generated.size()))));
+    WindowRig rig({"--fast"});
+    QVERIFY(rig.connectAndWait());
+    QVERIFY(rig.panel->openFileToSend(file("plain.bin")));
+    rig.panel->setHeaderText(QStringLiteral("H\u0158\u00CDDEL \u010D.5"));
+    QVERIFY2(rig.panel->headerNote().contains("is sent as \"HRIDEL c.5\""),
+             qPrintable(rig.panel->headerNote()));
+    QVERIFY(rig.panel->send());
+    QTRY_VERIFY(rig.panel->statusText().contains("confirmed"));
+    QString emuErr; // accumulated: QTRY evaluates twice and each read consumes
+    QTRY_VERIFY2((emuErr += rig.emu.errorOutput()).contains("header \"HRIDEL c.5\""),
+                 qPrintable(emuErr));
+    auto *receive = rig.window.findChild<QPushButton *>("receiveButton");
+    QTRY_VERIFY(receive->isEnabled());
+    QVERIFY(rig.panel->receive());
+    QTRY_VERIFY(rig.save->isEnabled());
+    QCOMPARE(rig.panel->receivedHeaderText(), QStringLiteral("HRIDEL c.5"));
+    QVERIFY(rig.panel->saveReceived(file("kept.frg")));
+    rig.panel->setHeaderText(QStringLiteral("SOMETHING ELSE"));
+    QVERIFY(rig.panel->openFileToSend(file("kept.frg")));
+    QCOMPARE(rig.window.findChild<QLineEdit *>("header")->text(), QStringLiteral("HRIDEL c.5"));
+    QTRY_VERIFY(rig.window.findChild<QPushButton *>("sendButton")->isEnabled());
+    QVERIFY(rig.panel->send());
+    QTRY_VERIFY(rig.panel->statusText().contains("confirmed"));
+    rig.panel->setHeaderText(QStringLiteral("BRUS\u20AC"));
+    QVERIFY(rig.panel->headerNote().contains("cannot show"));
+}
+
+// Issue 22: the window sends a table (LOA1) to the in-process K51 in table mode; a table cannot
+// be received; on a first start (no settings) the window offers K51, as the docs say.
+void GrinderWindowTest::tableGoesToTheEmulatorInTableModeAndK51IsTheFirstChoice()
+{
+    QSettings().clear();
+    {
+        GrinderWindow fresh;
+        QCOMPARE(fresh.findChild<QComboBox *>("family")->currentData().toInt(), int(Family::K51));
+    }
+    QVERIFY(writeAll(file("shape.tab"), QByteArray(200, char(0x22))));
+    GrinderWindow window;
+    window.setSerialSettings({QStringLiteral("emulator"), 115200, 8, 'n', 1});
+    window.setFamily(Family::Table);
+    QVERIFY(window.connectPort());
+    QTRY_VERIFY(window.isLinkUp());
+    QVERIFY(!window.findChild<QPushButton *>("receiveButton")->isEnabled());
+    QVERIFY(window.findChild<QLineEdit *>("header")->isEnabled()); // a table has a header
+    TransferPanel *panel = window.transferPanel();
+    QVERIFY(panel->openFileToSend(file("shape.tab")));
+    QVERIFY(panel->send());
+    QTRY_VERIFY2(panel->statusText().contains("confirmed"), qPrintable(panel->failureText()));
+    auto *emulator = dynamic_cast<EmulatorTransport *>(window.transport());
+    QVERIFY(emulator);
+    QCOMPARE(emulator->emulator().tablesStored(), 1);
+    QCOMPARE(emulator->emulator().table(), Bytes(200, 0x22));
+}
+
+// Issue 22: HEDIT's editor — the controller's 0x2E bytes are received, one byte edited, sent
+// back (LOA2) and stored: only that byte differs; a save without edits is byte-exact.
+void GrinderWindowTest::heditEditRoundTripsThroughTheController()
+{
+    WindowRig rig({"--fast", "--family", "hedit", "--header", "CHROM 1", "--store",
+                   file("hedit-stored.bin")});
+    rig.window.setFamily(Family::HardChrome);
+    QVERIFY(rig.connectAndWait());
+    QVERIFY(rig.panel->receive());
+    QTRY_VERIFY(rig.save->isEnabled());
+    const QByteArray original = rig.panel->receivedData();
+    QCOMPARE(original.size(), 46);
+    frezka::gui::HardChromeEditor *editor = rig.window.hardChromeEditor();
+    QVERIFY(editor->setData(rig.panel->receivedData(), rig.panel->receivedHeader()));
+    QCOMPARE(editor->headerText(), QStringLiteral("CHROM 1"));
+    QVERIFY(editor->saveFile(file("unchanged.bin")));
+    QCOMPARE(readAll(file("unchanged.bin")), original);
+    QVERIFY(!editor->setByte(0x112E, 1)); // past the 0x2E bytes
+    QVERIFY(editor->setByte(0x1105, 0x7F));
+    QVERIFY(editor->saveFile(file("edited.frg")));
+    QVERIFY(editor->setByte(0x1105, 0x00));
+    QVERIFY(editor->openFile(file("edited.frg"))); // the header and the edit come back
+    QCOMPARE(editor->headerText(), QStringLiteral("CHROM 1"));
+    QByteArray expected = original;
+    expected[5] = char(0x7F);
+    QCOMPARE(editor->data(), expected);
+    QTRY_VERIFY(rig.window.findChild<QPushButton *>("receiveButton")->isEnabled());
+    rig.window.findChild<QPushButton *>("hardChromeSend")->click();
+    QTRY_VERIFY2(rig.panel->statusText().contains("confirmed"),
+                 qPrintable(rig.panel->failureText()));
+    QTRY_COMPARE(readAll(file("hedit-stored.bin")), expected);
 }
 
 #include "grinderwindow_test.moc"

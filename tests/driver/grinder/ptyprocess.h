@@ -18,6 +18,7 @@ public:
     // Sends SIGTERM and returns the exit code (-1 when it did not exit normally).
     int terminate();
     QString errorOutput();
+    QProcess &process() { return m_process; }
 
 private:
     QProcess m_process;

@@ -1,75 +1,6 @@
 // Sessions against the in-process emulator on a virtual clock: whole transfers at 9600 Bd run
 // in milliseconds, with the wire timing of the real line.
-#include "driver/grinder/emulatortransport.h"
-#include "driver/grinder/transfersession.h"
-
-#include <gtest/gtest.h>
-
-#include <optional>
-
-using namespace frezka::grinder;
-
-namespace {
-
-constexpr std::int64_t kLimitUs = 600'000'000; // 10 min of virtual time
-
-struct Rig
-{
-    VirtualClock clock;
-    EmulatorTransport transport;
-    TransferSession session;
-    std::optional<TransferResult> result;
-    std::vector<std::pair<qint64, qint64>> progress;
-    QStringList trace;
-
-    Rig(EmulatorConfig config, int baud = 9600)
-        : transport(clock, config, baud)
-        , session(transport, clock, config.family)
-    {
-        transport.open(nullptr);
-        QObject::connect(&session, &TransferSession::finished,
-                         [this](const TransferResult &r) { result = r; });
-        QObject::connect(&session, &TransferSession::progressed,
-                         [this](qint64 done, qint64 total) { progress.emplace_back(done, total); });
-        QObject::connect(&session, &TransferSession::traced,
-                         [this](const QString &line) { trace << line; });
-    }
-    TransferResult run()
-    {
-        clock.runUntil([this] { return result.has_value(); }, kLimitUs);
-        EXPECT_TRUE(result.has_value());
-        return result.value_or(TransferResult{});
-    }
-    TransferResult save()
-    {
-        result.reset();
-        session.save();
-        return run();
-    }
-    TransferResult load(const std::string &header, const Bytes &data)
-    {
-        result.reset();
-        session.load(headerFromText(header), QByteArray(reinterpret_cast<const char *>(data.data()),
-                                                        qsizetype(data.size())));
-        return run();
-    }
-};
-
-EmulatorConfig config(Family family)
-{
-    EmulatorConfig c;
-    c.family = family;
-    return c;
-}
-
-Bytes toBytes(const QByteArray &data)
-{
-    return Bytes(data.begin(), data.end());
-}
-
-const Family kFamilies[] = {Family::Anc, Family::K51, Family::HardChrome};
-
-} // namespace
+#include "sessionrig.h"
 
 TEST(GrinderSession, PingEachFamily)
 {
@@ -148,9 +79,17 @@ TEST(GrinderSession, ImageRoundTripIsByteExactEvenWithBadInnerBlocks)
     EXPECT_EQ(saved.image.summary(), "1 of 20 blocks invalid: 0x02 (checksum)");
 
     Rig to(config(Family::K51));
-    ASSERT_TRUE(to.load(headerText(saved.header), toBytes(saved.data)).ok());
+    const TransferResult refused = to.load(headerText(saved.header), toBytes(saved.data));
+    EXPECT_EQ(refused.error, TransferError::InvalidInput);
+    EXPECT_TRUE(refused.message.contains("wrong checksum: 0x02")) << refused.message.toStdString();
+    EXPECT_TRUE(refused.message.contains("Send anyway")) << refused.message.toStdString();
+    EXPECT_EQ(to.transport.deliveredToController(), 0);
+    to.result.reset();
+    to.session.load(saved.header, saved.data, /*sendAnyway=*/true);
+    ASSERT_TRUE(to.run().ok());
     EXPECT_EQ(to.transport.emulator().image(), image);
-    EXPECT_TRUE(to.trace.join('\n').contains("1 of 20 blocks invalid: 0x02 (checksum)"))
+    EXPECT_TRUE(
+        to.trace.join('\n').contains("Sent anyway: inner blocks with a wrong checksum: 0x02"))
         << to.trace.join('\n').toStdString();
 }
 
