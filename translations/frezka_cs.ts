@@ -2433,6 +2433,14 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</source>
         <translation>Používejte @ a ^ jen v rovině XY (G17), bez slov X a Y a bez G53; v bodě X0 Y0 zadejte úhel ^ spolu s absolutním poloměrem @ (G90).</translation>
     </message>
+    <message>
+        <source>The program aborts here: %1</source>
+        <translation>Program zde končí (abort): %1</translation>
+    </message>
+    <message>
+        <source>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</source>
+        <translation>Komentář (abort, ...) ukončí program, stejně jako v LinuxCNC. Upravte program tak, aby na tento řádek nedošel.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

@@ -2430,6 +2430,14 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <source>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</source>
         <translation>Use @ and ^ only in the XY plane (G17), without X and Y words and without G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).</translation>
     </message>
+    <message>
+        <source>The program aborts here: %1</source>
+        <translation>The program aborts here: %1</translation>
+    </message>
+    <message>
+        <source>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</source>
+        <translation>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>
