@@ -91,6 +91,11 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode", "Tool %1 is listed twice in the tool table"),
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "Keep one line per tool number; delete or renumber the other.")},
+    {ErrorCode::ProgramAborted, "ProgramAborted",
+     QT_TRANSLATE_NOOP("frezka::gcode", "The program aborts here: %1"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "An (abort, ...) comment ends the program, as in LinuxCNC. Change the "
+                       "program so that it does not reach this line.")},
     {ErrorCode::UnknownGCode, "UnknownGCode",
      QT_TRANSLATE_NOOP("frezka::gcode", "Unknown G code %1"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Check the number; see the list of supported codes.")},

@@ -34,6 +34,7 @@ enum class ErrorCode : std::uint16_t {
     FileWriteFailed = 115,
     ToolTableSyntax = 116,
     ToolTableDuplicate = 117,
+    ProgramAborted = 118,
     // Codes and modal groups (2xx)
     UnknownGCode = 200,
     UnsupportedGCode = 201,

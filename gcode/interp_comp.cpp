@@ -147,9 +147,10 @@ bool Interpreter::compAllows(Error *error) const
 }
 
 // An outside corner between two straight moves: an arc around the programmed corner (ou, ov)
-// to (mu, mv), where the next move starts; a rapid goes there straight.
+// to (mu, mv), where the next move starts, at that move's feed (in G93 the rate LinuxCNC sets
+// for the next move, as rs274 does); a rapid goes there straight.
 void Interpreter::compCorner(int motion, double ou, double ov, double mu, double mv,
-                             const Point4 &end)
+                             const Point4 &end, double feed)
 {
     const Axes ax = compAxes(m_plane);
     const double w = get(m_pos, ax.w); // the corner is made at the current height
@@ -159,7 +160,7 @@ void Interpreter::compCorner(int motion, double ou, double ov, double mu, double
         arc.centre = compPoint(ou, ov, w, end.a);
         arc.plane = planeOf(m_plane);
         arc.turns = m_comp.side == CompSide::Left ? -1 : 1;
-        compEnqueue(MotionKind::Arc, mid, feedMm(), 0, 0, &arc, 0);
+        compEnqueue(MotionKind::Arc, mid, feed, 0, 0, &arc, 0);
     } else {
         compEnqueue(MotionKind::Rapid, mid, feedMm(), 0, 0, nullptr, 0);
     }
@@ -262,7 +263,7 @@ bool Interpreter::compStraight(int motion, const Target &target, Error *error)
             if (!compFlush(cu, cv, error))
                 return false;
             compCorner(motion, ou, ov, ou + r * std::cos(alpha + gamma),
-                       ov + r * std::sin(alpha + gamma), target.machine);
+                       ov + r * std::sin(alpha + gamma), target.machine, feed);
         } else { // straight on (or tangent after an arc)
             m_comp.dequeue();
             m_comp.setEndpoint(cu, cv);

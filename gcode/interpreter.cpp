@@ -232,6 +232,12 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
     }
     if (!m_sawContent)
         m_sawContent = raw.find_first_not_of(" \t\r") != std::string_view::npos;
+    if (m_parser.abortColumn() != 0 && !(m_parser.hasBlockDelete() && m_options.blockDelete)) {
+        // LinuxCNC ends the program at an (abort, ...) comment: nothing after it runs.
+        m_ended = true;
+        *error = {ErrorCode::ProgramAborted, m_line, m_parser.abortColumn(), m_parser.abortText()};
+        return false;
+    }
     if (m_parser.isEmpty())
         return true;
     if (m_parser.hasBlockDelete() && m_options.blockDelete)
@@ -247,6 +253,8 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
 void Interpreter::recoverBlock()
 {
     Error ignored;
+    if (m_parser.abortColumn() != 0)
+        return; // the program ended there
     if (!m_parsed) {
         // A parse error: the line again without its unsupported codes and words (G41 D1 ...),
         // executed with its errors dropped (the first one was reported).

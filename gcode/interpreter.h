@@ -202,7 +202,8 @@ private:
     bool compFlush(double u, double v, Error *error); // the queued moves end at (u, v)
     bool compFlushHere(Error *error);                 // ... where the tool is (M0, G40)
     bool compStraight(int motion, const Target &target, Error *error);
-    void compCorner(int motion, double ou, double ov, double mu, double mv, const Point4 &end);
+    void compCorner(int motion, double ou, double ov, double mu, double mv, const Point4 &end,
+                    double feed);
     bool compArcNext(int motion, const Target &target, int turns, Error *error);
     bool compInsideCorner(double beta, double theta, double gamma, double pu, double pv, double ou,
                           double ov, Error *error);

@@ -65,6 +65,8 @@ bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error)
     m_line = line;
     m_raw = raw;
     m_blockDelete = false;
+    m_abortColumn = 0;
+    m_abortText.clear();
     if (raw.size() > 65535) {
         m_text.clear();
         *error = {ErrorCode::LineTooLong, line, 1, std::to_string(raw.size())};
@@ -97,6 +99,7 @@ bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error)
                     ErrorCode::UnclosedComment, line, static_cast<std::uint32_t>(open + 1), {}};
                 return false;
             }
+            noteAbortComment(raw.substr(open + 1, i - open - 1), open);
             continue;
         }
         *out++ = (c >= 'A' && c <= 'Z') ? static_cast<char>(c + 32) : c;
@@ -107,6 +110,24 @@ bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error)
         m_text.erase(0, 1);
     }
     return true;
+}
+
+// LinuxCNC's (abort, text): the comment's first word, any case, spaces before it allowed.
+void Parser::noteAbortComment(std::string_view comment, std::size_t open)
+{
+    const std::size_t at = comment.find_first_not_of(" \t");
+    if (at == std::string_view::npos || comment.size() - at < 6)
+        return;
+    std::string word(comment.substr(at, 6));
+    for (char &c : word)
+        c = (c >= 'A' && c <= 'Z') ? static_cast<char>(c + 32) : c;
+    if (word != "abort," || m_abortColumn != 0)
+        return;
+    m_abortColumn = static_cast<std::uint32_t>(open + 1);
+    std::string_view text = comment.substr(at + 6);
+    while (!text.empty() && text.front() == ' ')
+        text.remove_prefix(1);
+    m_abortText = std::string(text);
 }
 
 bool Parser::readLineNumber(Error *error)

@@ -119,6 +119,10 @@ public:
     bool isEmpty() const { return m_text.empty(); }
     bool isPercent() const { return m_text.size() == 1 && m_text[0] == '%'; }
     bool hasBlockDelete() const { return m_blockDelete; }
+    // The text of an (abort, text) comment on the line (LinuxCNC ends the program there), and
+    // its column (1-based); 0 when the line has none.
+    std::uint32_t abortColumn() const { return m_abortColumn; }
+    const std::string &abortText() const { return m_abortText; }
 
     // Reads the normalized line into block and assignments (cleared first).
     bool parse(Block &block, std::vector<Assignment> &assignments, Error *error);
@@ -138,6 +142,7 @@ public:
     std::uint32_t columnAt(std::size_t pos) const;
 
 private:
+    void noteAbortComment(std::string_view comment, std::size_t open);
     bool fail(ErrorCode code, std::size_t pos, std::string detail, Error *error) const;
 
     bool readOword(Block &block, Error *error);
@@ -168,6 +173,8 @@ private:
     std::uint32_t m_line = 0;
     std::size_t m_pos = 0;
     bool m_blockDelete = false;
+    std::uint32_t m_abortColumn = 0;
+    std::string m_abortText;
     bool m_skipUnsupported = false;
 };
 

@@ -2569,6 +2569,14 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>Check what ends it (its condition, its count, the exit of a recursion); if it is meant to make more moves, raise the machine profile&apos;s program.maxMoves (Settings › Machine profile › Program).</source>
         <translation>Zkontrolujte, co jej ukončí (podmínku, počet opakování, výstup z rekurze); má-li opravdu vykonat více pohybů, zvyšte v profilu stroje program.maxMoves (Nastavení › Profil stroje › Program).</translation>
     </message>
+    <message>
+        <source>The program aborts here: %1</source>
+        <translation>Program zde končí (abort): %1</translation>
+    </message>
+    <message>
+        <source>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</source>
+        <translation>Komentář (abort, ...) ukončí program, stejně jako v LinuxCNC. Upravte program tak, aby na tento řádek nedošel.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

@@ -2566,6 +2566,14 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <source>Check what ends it (its condition, its count, the exit of a recursion); if it is meant to make more moves, raise the machine profile&apos;s program.maxMoves (Settings › Machine profile › Program).</source>
         <translation>Check what ends it (its condition, its count, the exit of a recursion); if it is meant to make more moves, raise the machine profile&apos;s program.maxMoves (Settings › Machine profile › Program).</translation>
     </message>
+    <message>
+        <source>The program aborts here: %1</source>
+        <translation>The program aborts here: %1</translation>
+    </message>
+    <message>
+        <source>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</source>
+        <translation>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::grinder::EmulatorTransport</name>

@@ -1,0 +1,3 @@
+(Named parameter not terminated)
+G0 X EXISTS[#<foo]
+M2

@@ -1,0 +1,3 @@
+;bad number format (conversion failed) parsing ''
+G0 X EXISTS[#]
+M2

@@ -1,0 +1,2 @@
+;Cannot do g1 with zero feed rate
+g1x1

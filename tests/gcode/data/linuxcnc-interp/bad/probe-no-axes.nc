@@ -1,0 +1,2 @@
+;All axes missing with motion code
+g38.2 f1

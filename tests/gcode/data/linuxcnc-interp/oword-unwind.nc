@@ -1,0 +1,3 @@
+o<fail>  call
+o<fail>  call
+M2
