@@ -4,6 +4,8 @@
 #include <QLockFile>
 #include <QSerialPort>
 
+#include <unistd.h>
+
 namespace frezka::grinder {
 
 SerialTransport::SerialTransport(SerialSettings settings, QObject *parent)
@@ -84,7 +86,13 @@ QString serialOpenFailure(const QString &portName, bool permissionDenied,
     const QString path =
         portName.startsWith(QLatin1Char('/')) ? portName : QStringLiteral("/dev/") + portName;
     const QFileInfo device(path);
-    if (device.isReadable() && device.isWritable()) {
+    // QSerialPort reports a port another program holds as a permission error with its own words;
+    // a user who may read and write the device, yet is refused, meets the same (root may read
+    // and write anything, so for root only the words tell).
+    const bool locked =
+        errorString == QSerialPort::tr("Permission error while locking the device") ||
+        (::geteuid() != 0 && device.isReadable() && device.isWritable());
+    if (locked) {
         // Allowed to open it, yet refused: another program holds the port.
         const QString holder = lockHolder(path);
         return holder.isEmpty()

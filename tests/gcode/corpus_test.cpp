@@ -4,6 +4,7 @@
 // Golden traces (good/NAME.trace) are the JSON Lines of gcode/trace.h with events. They are
 // regenerated with FREZKA_UPDATE_GOLDEN=1 (then reviewed and checked against rs274 by
 // Rs274Diff, which is independent of them).
+#include "corpusfiles.h"
 #include "rs274.h"
 
 #include "gcode/interpreter.h"
@@ -20,39 +21,12 @@
 #include <sstream>
 
 using namespace frezka::gcode;
+using namespace frezka::gcode::test;
 namespace fs = std::filesystem;
 
 namespace {
 
 const fs::path kData = FREZKA_GCODE_DATA_DIR;
-
-std::vector<std::string> listPrograms(const char *dir)
-{
-    std::vector<std::string> names;
-    for (const auto &e : fs::directory_iterator(kData / dir)) {
-        if (e.path().extension() == ".nc")
-            names.push_back(e.path().stem().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-std::string readFile(const fs::path &path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::string testName(const testing::TestParamInfo<std::string> &info)
-{
-    std::string s = info.param;
-    std::replace_if(
-        s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
-        '_');
-    return s;
-}
 
 std::string sourceLine(const std::string &text, std::uint32_t line)
 {
@@ -66,17 +40,9 @@ std::string sourceLine(const std::string &text, std::uint32_t line)
 }
 
 // The tool table beside a program (NAME.tbl, mm), read for both Frezka and rs274.
-std::optional<ToolTable> toolTableFor(const fs::path &nc)
+std::optional<ToolTable> toolTableFor(fs::path nc)
 {
-    fs::path tbl = nc;
-    tbl.replace_extension(".tbl");
-    if (!fs::exists(tbl))
-        return std::nullopt;
-    ToolTable table;
-    Error error;
-    EXPECT_TRUE(readToolTableFile(tbl.string(), &table, &error, false))
-        << tbl << ":" << error.line << ": " << englishMessage(error);
-    return table;
+    return toolTableAt(nc.replace_extension(".tbl"));
 }
 
 Options optionsFor(const fs::path &nc)
@@ -114,7 +80,7 @@ TEST_P(GoodProgram, MatchesGoldenTrace)
         GTEST_SKIP() << "golden trace written: " << golden;
     }
     ASSERT_TRUE(fs::exists(golden)) << "missing " << golden << " (FREZKA_UPDATE_GOLDEN=1)";
-    const std::string expected = readFile(golden);
+    const std::string expected = readText(golden);
     if (trace == expected)
         return;
     std::istringstream a(trace), b(expected);
@@ -137,12 +103,13 @@ TEST_P(GoodProgram, MatchesRs274)
     EXPECT_TRUE(test::matchesRs274(nc.string(), {}, tools ? &*tools : nullptr));
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, GoodProgram, testing::ValuesIn(listPrograms("good")), testName);
+INSTANTIATE_TEST_SUITE_P(Corpus, GoodProgram, testing::ValuesIn(programsIn(kData / "good")),
+                         testName);
 
 TEST_P(BadProgram, ReportsExpectedErrorAt)
 {
     const fs::path nc = kData / "bad" / (GetParam() + ".nc");
-    const std::string text = readFile(nc);
+    const std::string text = readText(nc);
     // A line "; expect: ErrorName LINE:COL" (the first line, or the second after a %), and
     // "; rs274: error" when LinuxCNC's rs274 must reject the same line.
     const auto pos = text.find("; expect: ");
@@ -174,4 +141,5 @@ TEST_P(BadProgram, ReportsExpectedErrorAt)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, BadProgram, testing::ValuesIn(listPrograms("bad")), testName);
+INSTANTIATE_TEST_SUITE_P(Corpus, BadProgram, testing::ValuesIn(programsIn(kData / "bad")),
+                         testName);

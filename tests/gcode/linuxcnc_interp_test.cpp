@@ -3,6 +3,7 @@
 // the README there) against `rs274 -g` as the suite runs it: every program that is not lathe,
 // spindle-synchronised, B-axis or Python plug-in gives rs274's motions, feeds, dwells and spindle
 // speeds, or is refused by Frezka with the error listed here; every bad program is refused.
+#include "corpusfiles.h"
 #include "rs274.h"
 
 #include "gcode/interpreter.h"
@@ -22,6 +23,7 @@
 #include <vector>
 
 using namespace frezka::gcode;
+using namespace frezka::gcode::test;
 namespace fs = std::filesystem;
 
 namespace {
@@ -102,46 +104,11 @@ const std::map<std::string, const char *> &differences()
     return kDifferences;
 }
 
-std::vector<std::string> programs(const fs::path &dir)
-{
-    std::vector<std::string> names;
-    for (const auto &e : fs::directory_iterator(dir)) {
-        if (e.path().extension() == ".nc")
-            names.push_back(e.path().stem().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 // NAME.tbl (mm) when the suite runs the program with a tool table (its test.tbl, converted
 // from inches; the original is NAME.inch-tbl).
 std::optional<ToolTable> toolsFor(const std::string &name)
 {
-    const fs::path tbl = kDir / (name + ".tbl");
-    if (!fs::exists(tbl))
-        return std::nullopt;
-    ToolTable table;
-    Error error;
-    EXPECT_TRUE(readToolTableFile(tbl.string(), &table, &error, false))
-        << tbl << ":" << error.line << ": " << englishMessage(error);
-    return table;
-}
-
-std::string readText(const fs::path &path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::string testName(const testing::TestParamInfo<std::string> &info)
-{
-    std::string s = info.param;
-    std::replace_if(
-        s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
-        '_');
-    return s;
+    return toolTableAt(kDir / (name + ".tbl"));
 }
 
 class LinuxCncInterpTest : public testing::TestWithParam<std::string>
@@ -193,7 +160,7 @@ TEST_P(LinuxCncInterpTest, MatchesRs274OrIsRefusedAsListed)
     EXPECT_FALSE(translatedMessage(r.errors[0]).isEmpty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Suite, LinuxCncInterpTest, testing::ValuesIn(programs(kDir)), testName);
+INSTANTIATE_TEST_SUITE_P(Suite, LinuxCncInterpTest, testing::ValuesIn(programsIn(kDir)), testName);
 
 // Every program of tests/interp/bad is refused by Frezka with a message, as by rs274.
 TEST_P(LinuxCncInterpBad, IsRefused)
@@ -209,18 +176,18 @@ TEST_P(LinuxCncInterpBad, IsRefused)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Bad, LinuxCncInterpBad, testing::ValuesIn(programs(kDir / "bad")),
+INSTANTIATE_TEST_SUITE_P(Bad, LinuxCncInterpBad, testing::ValuesIn(programsIn(kDir / "bad")),
                          testName);
 
 // The counts: the suite's mill programs that match rs274 (not refused here) and the bad ones.
 TEST(LinuxCncInterpSuite, Counts)
 {
-    const std::vector<std::string> all = programs(kDir);
+    const std::vector<std::string> all = programsIn(kDir);
     for (const auto &[name, refusal] : refused())
         EXPECT_NE(std::find(all.begin(), all.end(), name), all.end()) << name;
     const std::size_t matched = all.size() - refused().size() - differences().size();
     RecordProperty("matched", static_cast<int>(matched));
     RecordProperty("refused", static_cast<int>(refused().size()));
     EXPECT_GE(matched, 17u); // as many as LinuxCNC's own run of the suite matches
-    EXPECT_EQ(programs(kDir / "bad").size(), 23u);
+    EXPECT_EQ(programsIn(kDir / "bad").size(), 23u);
 }

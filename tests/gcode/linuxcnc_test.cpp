@@ -3,6 +3,7 @@
 // tools.tbl -g`, motion for motion: every program gives the same motions, feeds, dwells and
 // spindle speeds as rs274, or is refused by Frezka with the error listed here, never run along
 // another path.
+#include "corpusfiles.h"
 #include "rs274.h"
 
 #include "gcode/interpreter.h"
@@ -19,6 +20,7 @@
 #include <sstream>
 
 using namespace frezka::gcode;
+using namespace frezka::gcode::test;
 namespace fs = std::filesystem;
 
 namespace {
@@ -88,50 +90,16 @@ const std::map<std::string, Edit> &edits()
     return kEdits;
 }
 
-std::string readText(const fs::path &path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::vector<std::string> programs()
-{
-    std::vector<std::string> names;
-    for (const auto &e : fs::directory_iterator(kDir)) {
-        if (e.path().extension() == ".nc")
-            names.push_back(e.path().stem().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 // NAME.tbl beside the program when it names its own tools, else tools.tbl (mm).
 ToolTable toolsFor(const std::string &name)
 {
-    fs::path tbl = kDir / (name + ".tbl");
-    if (!fs::exists(tbl))
-        tbl = kDir / "tools.tbl";
-    ToolTable table;
-    Error error;
-    EXPECT_TRUE(readToolTableFile(tbl.string(), &table, &error, false))
-        << tbl << ":" << error.line << ": " << englishMessage(error);
-    return table;
+    const fs::path own = kDir / (name + ".tbl");
+    return toolTableAt(fs::exists(own) ? own : kDir / "tools.tbl").value_or(ToolTable{});
 }
 
 class LinuxCncExample : public testing::TestWithParam<std::string>
 {
 };
-
-std::string testName(const testing::TestParamInfo<std::string> &info)
-{
-    std::string s = info.param;
-    std::replace_if(
-        s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
-        '_');
-    return s;
-}
 
 } // namespace
 
@@ -167,13 +135,13 @@ TEST_P(LinuxCncExample, MatchesRs274OrIsRefusedAsListed)
     EXPECT_FALSE(translatedMessage(r.errors[0]).isEmpty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, LinuxCncExample, testing::ValuesIn(programs()), testName);
+INSTANTIATE_TEST_SUITE_P(Examples, LinuxCncExample, testing::ValuesIn(programsIn(kDir)), testName);
 
 // The count the "Done when" asks for: at least 36 of the examples that are not lathe,
 // threading, spindle-synchronised or B-axis programs give rs274's motions.
 TEST(LinuxCncExamples, EnoughMatchRs274)
 {
-    const std::vector<std::string> all = programs();
+    const std::vector<std::string> all = programsIn(kDir);
     std::size_t excluded = 0, refusedHere = 0;
     for (const auto &[name, refusal] : refused()) {
         ASSERT_NE(std::find(all.begin(), all.end(), name), all.end()) << name;

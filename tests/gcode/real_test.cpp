@@ -3,6 +3,7 @@
 // dwells and spindle speeds: every program gives rs274's motions, or is refused by Frezka with
 // the error listed here. Where a program uses another controller's dialect that Frezka accepts
 // on purpose (and rs274 refuses), rs274 is given an edited copy, with the reason listed.
+#include "corpusfiles.h"
 #include "rs274.h"
 
 #include "gcode/interpreter.h"
@@ -21,6 +22,7 @@
 #include <vector>
 
 using namespace frezka::gcode;
+using namespace frezka::gcode::test;
 namespace fs = std::filesystem;
 
 namespace {
@@ -67,37 +69,11 @@ const std::map<std::string, std::vector<Edit>> &edits()
     return kEdits;
 }
 
-std::string readText(const fs::path &path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-std::vector<std::string> programs()
-{
-    std::vector<std::string> names;
-    for (const auto &e : fs::directory_iterator(kDir)) {
-        if (e.path().extension() == ".nc")
-            names.push_back(e.path().stem().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 // NAME.tbl beside the program (mm) when it needs tool sizes (cutter compensation, G43), for both
 // Frezka and rs274; none otherwise.
 std::optional<ToolTable> toolsFor(const std::string &name)
 {
-    const fs::path tbl = kDir / (name + ".tbl");
-    if (!fs::exists(tbl))
-        return std::nullopt;
-    ToolTable table;
-    Error error;
-    EXPECT_TRUE(readToolTableFile(tbl.string(), &table, &error, false))
-        << tbl << ":" << error.line << ": " << englishMessage(error);
-    return table;
+    return toolTableAt(kDir / (name + ".tbl"));
 }
 
 // The generator is the part of the name before the first '_' (README.md lists them); "other"
@@ -110,15 +86,6 @@ std::string generatorOf(const std::string &name)
 class RealProgram : public testing::TestWithParam<std::string>
 {
 };
-
-std::string testName(const testing::TestParamInfo<std::string> &info)
-{
-    std::string s = info.param;
-    std::replace_if(
-        s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
-        '_');
-    return s;
-}
 
 } // namespace
 
@@ -159,14 +126,14 @@ TEST_P(RealProgram, MatchesRs274OrIsRefusedAsListed)
     EXPECT_FALSE(translatedMessage(r.errors[0]).isEmpty());
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, RealProgram, testing::ValuesIn(programs()), testName);
+INSTANTIATE_TEST_SUITE_P(Corpus, RealProgram, testing::ValuesIn(programsIn(kDir)), testName);
 
 // The corpus's size and variety as they are: at least 30 programs from 7 generators. Issue 15
 // asks for 8; no Fusion 360, FreeCAD, Vectric or Estlcam output was found in a repository whose
 // licence allows copying it (README.md there), and the issue stays open for it.
 TEST(RealCorpus, IsLargeAndVaried)
 {
-    const std::vector<std::string> all = programs();
+    const std::vector<std::string> all = programsIn(kDir);
     std::set<std::string> generators;
     for (const std::string &name : all) {
         if (generatorOf(name) != "other")
