@@ -1,12 +1,18 @@
 #pragma once
-// The corpus tests' file helpers (golden, LinuxCNC examples, LinuxCNC's interpreter suite, real
-// CAM output): the programs of a folder, a file's text, the tool table beside a program, and a
-// parameterised test's name.
+// The corpus tests' helpers (golden, LinuxCNC examples, LinuxCNC's interpreter suite, real CAM
+// output): the programs of a folder, a file's text, the tool table beside a program, a
+// parameterised test's name, and the two checks the corpora share: an edited copy against rs274,
+// a program refused as listed.
+
+#include "rs274.h"
 
 #include "gcode/error.h"
+#include "gcode/interpreter.h"
 #include "gcode/tooltable.h"
 
 #include <gtest/gtest.h>
+
+#include <QTemporaryDir>
 
 #include <algorithm>
 #include <cctype>
@@ -60,6 +66,37 @@ inline std::string testName(const testing::TestParamInfo<std::string> &info)
         s.begin(), s.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
         '_');
     return s;
+}
+
+// A program Frezka refuses, with the reason (a clear error, never a wrong path).
+struct Refusal
+{
+    ErrorCode code; // Frezka's first error
+    const char *why;
+};
+
+// The program `nc` against rs274 run on `text` (an edited copy of it, written to a temporary file):
+// where rs274 needs a change that does not alter the path (`why`).
+inline void expectEditedCopyMatchesRs274(const std::filesystem::path &nc, const std::string &text,
+                                         const ToolTable *tools, const std::string &why)
+{
+    QTemporaryDir dir;
+    const std::string copy = dir.filePath(QStringLiteral("edited.ngc")).toStdString();
+    std::ofstream(copy, std::ios::binary) << text;
+    EXPECT_TRUE(matchesRs274(nc.string(), copy, tools)) << why;
+}
+
+// `nc` is refused with the listed error first, in words that are translated.
+inline void expectRefusedAsListed(const std::filesystem::path &nc,
+                                  const std::optional<ToolTable> &tools, const Refusal &refusal)
+{
+    Options options;
+    options.toolTable = tools;
+    const Result r = interpretFile(nc.string(), options);
+    ASSERT_FALSE(r.ok()) << "listed as refused (" << refusal.why << ") but accepted";
+    EXPECT_EQ(errorName(r.errors[0].code), std::string(errorName(refusal.code)))
+        << r.errors[0].line << ":" << r.errors[0].column << ": " << englishMessage(r.errors[0]);
+    EXPECT_FALSE(translatedMessage(r.errors[0]).isEmpty());
 }
 
 } // namespace frezka::gcode::test

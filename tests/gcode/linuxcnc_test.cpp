@@ -27,12 +27,6 @@ namespace {
 
 const fs::path kDir = fs::path(FREZKA_GCODE_DATA_DIR) / "linuxcnc";
 
-struct Refusal
-{
-    ErrorCode code; // Frezka's first error
-    const char *why;
-};
-
 // The examples Frezka refuses, with the reason (each a clear error, never a wrong path).
 const std::map<std::string, Refusal> &refused()
 {
@@ -120,19 +114,10 @@ TEST_P(LinuxCncExample, MatchesRs274OrIsRefusedAsListed)
         const auto at = text.find(edit->second.from);
         ASSERT_NE(at, std::string::npos) << edit->second.why;
         text.replace(at, std::strlen(edit->second.from), edit->second.to);
-        QTemporaryDir dir;
-        const std::string copy = dir.filePath(QStringLiteral("edited.ngc")).toStdString();
-        std::ofstream(copy, std::ios::binary) << text;
-        EXPECT_TRUE(test::matchesRs274(nc.string(), copy, &table)) << edit->second.why;
+        expectEditedCopyMatchesRs274(nc, text, &table, edit->second.why);
         return;
     }
-    Options options;
-    options.toolTable = table;
-    const Result r = interpretFile(nc.string(), options);
-    ASSERT_FALSE(r.ok()) << "listed as refused (" << it->second.why << ") but accepted";
-    EXPECT_EQ(errorName(r.errors[0].code), std::string(errorName(it->second.code)))
-        << r.errors[0].line << ":" << r.errors[0].column << ": " << englishMessage(r.errors[0]);
-    EXPECT_FALSE(translatedMessage(r.errors[0]).isEmpty());
+    expectRefusedAsListed(nc, table, it->second);
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, LinuxCncExample, testing::ValuesIn(programsIn(kDir)), testName);

@@ -29,12 +29,6 @@ namespace {
 
 const fs::path kDir = fs::path(FREZKA_GCODE_DATA_DIR) / "real";
 
-struct Refusal
-{
-    ErrorCode code; // Frezka's first error
-    const char *why;
-};
-
 // The programs Frezka refuses, with the reason (each a clear error, never a wrong path).
 const std::map<std::string, Refusal> &refused()
 {
@@ -110,20 +104,10 @@ TEST_P(RealProgram, MatchesRs274OrIsRefusedAsListed)
             for (; at != std::string::npos; at = text.find(e.from, at + e.to.size()))
                 text.replace(at, e.from.size(), e.to);
         }
-        QTemporaryDir dir;
-        const std::string copy = dir.filePath(QStringLiteral("edited.ngc")).toStdString();
-        std::ofstream(copy, std::ios::binary) << text;
-        EXPECT_TRUE(test::matchesRs274(nc.string(), copy, tools));
+        expectEditedCopyMatchesRs274(nc, text, tools, {});
         return;
     }
-    Options options;
-    if (table)
-        options.toolTable = *table;
-    const Result r = interpretFile(nc.string(), options);
-    ASSERT_FALSE(r.ok()) << "listed as refused (" << it->second.why << ") but accepted";
-    EXPECT_EQ(errorName(r.errors[0].code), std::string(errorName(it->second.code)))
-        << r.errors[0].line << ":" << r.errors[0].column << ": " << englishMessage(r.errors[0]);
-    EXPECT_FALSE(translatedMessage(r.errors[0]).isEmpty());
+    expectRefusedAsListed(nc, table, it->second);
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, RealProgram, testing::ValuesIn(programsIn(kDir)), testName);
