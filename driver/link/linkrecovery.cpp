@@ -113,9 +113,8 @@ bool LinkEngine::packetGapAnswer(const Reply &reply, const std::string &text, do
         const auto k = r.values.size() == 1 ? r.decimal() : std::nullopt;
         return k && (r.ok() ? *k == n : *k < n);
     };
-    if (text == *m_unitLastReply) {
-        const ReplyResult before = decodeReply(text, ChecksumMode::On);
-        if (before.reply && couldBeOurs(*before.reply)) {
+    if (text == *m_unitLastReply) { // `reply` is the one before the packet, or the same text
+        if (couldBeOurs(reply)) {
             m_packetGap = false;
             finishFailed(describe() + ": the unit's command index is " + std::to_string(*m_index) +
                              ", and its last reply '" + text +
