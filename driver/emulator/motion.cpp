@@ -258,6 +258,8 @@ void MotionEngine::completeHead()
         const double excess = m_v - allowed;
         if (excess > readings::kBrakeViolationTolerance + 1e-9 * allowed) {
             ++m_stats.brakeViolations;
+            if (m_stats.brakeViolationAtS.size() < MotionStats::kStarvationTimes)
+                m_stats.brakeViolationAtS.push_back(m_now);
             m_stats.worstBrakeExcessPulsesPerS =
                 std::max(m_stats.worstBrakeExcessPulsesPerS, excess);
         }

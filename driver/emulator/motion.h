@@ -57,6 +57,7 @@ struct MotionStats
     std::int64_t vectorsExecuted = 0;      // L and C vectors completed (homing travel not counted)
     std::int64_t brakeViolations = 0;      // vectors that arrived faster than their exit speed
     double worstBrakeExcessPulsesPerS = 0; // largest arrival speed above the allowed exit speed
+    std::vector<double> brakeViolationAtS; // when the first kStarvationTimes of them happened
     std::int64_t starvationStops = 0;      // C stopped because the queue ran dry, then a C followed
     std::vector<double> starvationAtS;     // when the first kStarvationTimes of them restarted
     std::array<double, kMaxAxes> peakAxisSpeedPulsesPerS{};

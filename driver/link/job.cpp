@@ -224,8 +224,11 @@ void Job::sendPacket(double now)
     });
 }
 
-void Job::acceptUpTo(std::size_t end)
+void Job::acceptUpTo(std::size_t end, bool arrivedJustNow)
 {
+    if (arrivedJustNow && end > m_cursor.next &&
+        m_pace.vectorsBefore(end) > m_pace.vectorsBefore(m_cursor.next))
+        m_pace.noteArrival(m_cursor.next, m_host.now() - m_host.rttS() / 2);
     for (; m_cursor.next < end; ++m_cursor.next) {
         const bool motion = isMotion(m_program.commands[m_cursor.next].op);
         if (motion)
@@ -252,7 +255,7 @@ void Job::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, do
     const std::size_t accepted = std::min<std::size_t>(static_cast<std::size_t>(o.accepted), n);
     const bool damaged = o.reply.code == ReplyCode::Syntax || o.reply.code == ReplyCode::Watchdog;
     m_lineErrors.note(static_cast<int>(o.reply.ok() ? n : accepted + 1), damaged ? 1 : 0);
-    acceptUpTo(first + accepted);
+    acceptUpTo(first + accepted, o.recovered == 0);
     switch (o.reply.code) {
     case ReplyCode::Ok:
         m_queueFullSeen = false;
@@ -300,7 +303,7 @@ void Job::onCommandOutcome(const Outcome &o, std::size_t index, double now)
     case ReplyCode::Ok:
         if (c.op == UnitOp::Vector)
             m_queueFullSeen = false;
-        acceptUpTo(index + 1);
+        acceptUpTo(index + 1, o.recovered == 0);
         return;
     case ReplyCode::QueueFull: // C: queue full; L: queue not yet empty. Not accepted: again.
         m_queueFullSeen = c.op == UnitOp::Vector;

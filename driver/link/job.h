@@ -82,7 +82,9 @@ public:
 
     // ---- the job's parts (ProgressCheck, PathGuard, ReturnToPath, ProbeMove)
     JobCursor &cursor() { return m_cursor; }
-    void acceptUpTo(std::size_t end);
+    // arrivedJustNow: the reply came at once (no recovery), so the unit took them a
+    // moment ago, which tells the pace how long the unit may have waited for them.
+    void acceptUpTo(std::size_t end, bool arrivedJustNow = false);
     void setStreamBlocked(bool on) { m_streamBlocked = on; }
     void setQueueFullSeen(bool on) { m_queueFullSeen = on; }
     void setWaitUntil(double t) { m_waitUntil = t; }

@@ -21,6 +21,8 @@ using machine::UnitOp;
 void JobPace::build()
 {
     const auto &cmds = m_program.commands;
+    m_waitS = 0;
+    m_waitExecAt = -1;
     m_vectorPrefix.assign(cmds.size() + 1, 0);
     for (std::size_t i = 0; i < cmds.size(); ++i)
         m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(cmds[i].op) ? 1 : 0);
@@ -35,6 +37,9 @@ void JobPace::build()
         m_brakeS[i + 1] =
             accel > 0 ? static_cast<double>(speed) / (1000.0 * static_cast<double>(accel)) : 0.0;
     }
+    m_lastMotion.assign(cmds.size() + 1, 0);
+    for (std::size_t i = 0; i < cmds.size(); ++i)
+        m_lastMotion[i + 1] = isMotion(cmds[i].op) ? i + 1 : m_lastMotion[i];
     m_bytePrefix.assign(cmds.size() + 1, 0);
     for (std::size_t i = 0; i < cmds.size(); ++i) {
         const machine::UnitCommand &c = cmds[i];
@@ -44,6 +49,15 @@ void JobPace::build()
                 : encode(machine::wireCommand(c, m_program.axisCount).value_or(cmd::flag()), true)
                       .size();
         m_bytePrefix[i + 1] = m_bytePrefix[i] + static_cast<std::int64_t>(bytes);
+    }
+    m_tripPrefix.assign(cmds.size() + 1, 0);
+    bool inRun = false; // in a run of C/B commands (one packet)
+    for (std::size_t i = 0; i < cmds.size(); ++i) {
+        const UnitOp op = cmds[i].op;
+        const bool packetable = op == UnitOp::Vector || op == UnitOp::Brake;
+        const bool wire = op <= UnitOp::Spindle;
+        m_tripPrefix[i + 1] = m_tripPrefix[i] + (wire && !(packetable && inRun) ? 1 : 0);
+        inRun = packetable;
     }
 }
 
@@ -85,6 +99,40 @@ double JobPace::rate() const
     return std::max(1.0, m_host.liveState().overrideSentPercent / 100.0);
 }
 
+std::size_t JobPace::exec() const
+{
+    const bool valid = m_cursor.paceKey == m_cursor.exec && m_cursor.paceKeyAt == m_cursor.execAt;
+    return valid ? m_cursor.paceExec : m_cursor.exec;
+}
+
+double JobPace::execAt() const
+{
+    const bool valid = m_cursor.paceKey == m_cursor.exec && m_cursor.paceKeyAt == m_cursor.execAt;
+    return valid ? m_cursor.paceExecAt : m_cursor.execAt;
+}
+
+double JobPace::elapsedS() const
+{
+    const bool sameAnchor = exec() == m_waitExec && execAt() == m_waitExecAt;
+    return std::max(0.0, m_host.now() - execAt() - (sameAnchor ? m_waitS : 0.0));
+}
+
+// The model runs the unit from the polled command on as if every vector were there in time;
+// one that came after the model had run the unit dry made it wait (a poll at rest, then an A and
+// a V before the chain's first packet: the model ran 0.13 s ahead of the unit, took it for
+// holding nothing while it held 0.1 s and sent a full packet it ran dry on; property seed 34).
+void JobPace::noteArrival(std::size_t oldNext, double arrivalS)
+{
+    if (exec() != m_waitExec || execAt() != m_waitExecAt) {
+        m_waitS = 0;
+        m_waitExec = exec();
+        m_waitExecAt = execAt();
+    }
+    const std::size_t from = std::min(exec(), oldNext);
+    const double drainedAt = execAt() + m_waitS + runS(from, oldNext);
+    m_waitS += std::max(0.0, arrivalS - drainedAt);
+}
+
 double JobPace::runS(std::size_t from, std::size_t to) const
 {
     return (m_timePrefix[to] - m_timePrefix[from]) / rate();
@@ -92,8 +140,8 @@ double JobPace::runS(std::size_t from, std::size_t to) const
 
 std::size_t JobPace::execEstimate() const
 {
-    double elapsed = (m_host.now() - m_cursor.execAt) * rate();
-    std::size_t i = std::min(m_cursor.exec, m_cursor.next);
+    double elapsed = elapsedS() * rate();
+    std::size_t i = std::min(exec(), m_cursor.next);
     while (i < m_cursor.next && elapsed >= m_timePrefix[i + 1] - m_timePrefix[i]) {
         elapsed -= m_timePrefix[i + 1] - m_timePrefix[i];
         ++i;
@@ -103,19 +151,23 @@ std::size_t JobPace::execEstimate() const
 
 double JobPace::bufferedS() const
 {
-    const std::size_t from = std::min(m_cursor.exec, m_cursor.next);
-    return std::max(0.0, runS(from, m_cursor.next) - (m_host.now() - m_cursor.execAt));
+    const std::size_t from = std::min(exec(), m_cursor.next);
+    return std::max(0.0, runS(from, m_cursor.next) - elapsedS());
 }
 
 double JobPace::leadS() const
 {
     const double held = bufferedS();
-    const std::size_t last = m_cursor.next;
-    if (held <= 0 || last == 0 || last >= m_brakeS.size())
+    const std::size_t next = m_cursor.next;
+    if (held <= 0 || next >= m_lastMotion.size() || m_lastMotion[next] == 0)
         return held;
-    // The last queued vector brakes for at most its own time (from V times the override).
-    const double own = runS(last - 1, last);
-    return std::max(0.0, held - std::min(m_brakeS[last] * rate(), own));
+    // The last queued vector brakes for at most its own time, from the V and A it was queued
+    // with (times the override): not from an A sent after it for the next one (the rapid's A113
+    // was taken for the plunge's A40, its 0.17 s of braking for none: the job polled with the
+    // plunge unsent, and the unit stopped before it).
+    const std::size_t last = m_lastMotion[next] - 1;
+    const double own = runS(last, last + 1);
+    return std::max(0.0, held - std::min(m_brakeS[last + 1] * rate(), own));
 }
 
 int JobPace::maxPacket() const
@@ -146,7 +198,7 @@ int JobPace::overrideCeiling() const
 {
     const std::size_t size = m_program.commands.size();
     const std::size_t span = static_cast<std::size_t>(maxPacket());
-    const std::size_t from = std::min(m_cursor.exec, m_cursor.next);
+    const std::size_t from = std::min(exec(), m_cursor.next);
     const std::size_t last = std::min(size, m_cursor.next + span);
     double ratio = kOverrideMaxPercent / 100.0;
     for (std::size_t s = from; s < last && ratio > 1.0; ++s) {
@@ -162,10 +214,14 @@ int JobPace::overrideCeiling() const
             m_host.link().wireTime(static_cast<std::size_t>(m_bytePrefix[e] - m_bytePrefix[s]));
         // Without packets every command waits for its own reply (property seed 13 ran one-step
         // vectors at 160 % with a round trip per window, and the unit ran dry).
+        // With packets, each A, V (or other command that cannot travel in one) between them is a
+        // round trip of its own, and so is each run of vectors between them (property seed 320:
+        // A alternating between 5 and 1142 at every one-step vector, each C alone, XM 200).
+        const double trips = static_cast<double>(m_tripPrefix[e] - m_tripPrefix[s]);
         const double wire =
             m_host.options().packets
                 ? bytes * (1 + 2 * m_host.rttS() / machine::detail::LinkTiming::kSteadyHeldS) +
-                      m_host.rttS()
+                      std::max(1.0, trips) * m_host.rttS()
                 : bytes + static_cast<double>(e - s) * m_host.rttS();
         ratio = std::min(ratio, motion / wire);
     }
@@ -175,7 +231,7 @@ int JobPace::overrideCeiling() const
 std::int64_t JobPace::plannedSpeedNow() const
 {
     const auto &cmds = m_program.commands;
-    for (std::size_t i = std::min(m_cursor.exec + 1, cmds.size()); i-- > 0;) {
+    for (std::size_t i = std::min(exec() + 1, cmds.size()); i-- > 0;) {
         if (cmds[i].op == machine::UnitOp::Speed)
             return cmds[i].value;
     }
@@ -185,9 +241,9 @@ std::int64_t JobPace::plannedSpeedNow() const
 std::int64_t JobPace::queuedAfter(double ahead) const
 {
     const std::size_t next = m_cursor.next;
-    const std::size_t from = std::min(m_cursor.exec, next);
-    const double at = std::min(
-        m_timePrefix[from] + (m_host.now() - m_cursor.execAt + ahead) * rate(), m_timePrefix[next]);
+    const std::size_t from = std::min(exec(), next);
+    const double at =
+        std::min(m_timePrefix[from] + (elapsedS() + ahead) * rate(), m_timePrefix[next]);
     // The command executing at program time `at`: the last k with m_timePrefix[k] <= at.
     auto it = std::upper_bound(m_timePrefix.begin() + static_cast<std::ptrdiff_t>(from),
                                m_timePrefix.begin() + static_cast<std::ptrdiff_t>(next) + 1, at);

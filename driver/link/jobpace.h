@@ -28,6 +28,13 @@ struct JobCursor
     std::size_t inflightEnd = 0; // end of the commands in flight
     double execAt = 0;           // when exec was read from the unit, s
     std::int64_t vectorsAcked = 0;
+    // Where a polled position lies on several passes of the path, the pace's own reading of the
+    // executing command (JobTracker::positionRead): the pass nearest to the model, which may lie
+    // after exec. Valid while exec and execAt are the ones it was read with (paceKey, paceKeyAt).
+    std::size_t paceExec = 0;
+    double paceExecAt = 0;
+    std::size_t paceKey = static_cast<std::size_t>(-1);
+    double paceKeyAt = -1;
 };
 
 class JobPace
@@ -72,6 +79,11 @@ public:
     std::int64_t plannedSpeedNow() const;
     // Where a packet ends to keep polls at their rate where the motion is slow (next = no cap).
     std::size_t slowMotionPacketEnd() const;
+    // Seconds since the last poll that the unit spent moving by the model (less its waits).
+    double elapsedS() const;
+    // Motion commands up to `next` were accepted at `arrivalS`: where the model had the unit run
+    // dry before then, it waited for them, and the model's clock is held back by the wait.
+    void noteArrival(std::size_t oldNext, double arrivalS);
     // The unit reported a full queue: the executing command is at most a queue-full back.
     // Returns the new estimate of the executing command.
     std::size_t executingAtFull() const;
@@ -79,6 +91,9 @@ public:
 private:
     void estimateDurations();
     double rate() const; // program seconds per second of the unit's time
+    // The executing command and when it was read, as the pace takes them (JobCursor::paceExec).
+    std::size_t exec() const;
+    double execAt() const;
 
     CoreHost &m_host;
     const machine::UnitProgram &m_program;
@@ -86,7 +101,15 @@ private:
     std::vector<double> m_timePrefix;         // estimated motion seconds before each index
     std::vector<std::int64_t> m_bytePrefix;   // wire bytes of the program commands before each
     std::vector<std::int64_t> m_vectorPrefix; // motion commands before each program index
-    std::vector<double> m_brakeS;             // braking time from V to rest before each index
+    // Round trips before each index: each command that cannot travel in a packet (A, V, $, ...)
+    // is one, and so is each run of C/B commands between them (one packet, when packets are on).
+    std::vector<std::int64_t> m_tripPrefix;
+    std::vector<std::size_t> m_lastMotion; // 1 + the last motion command before each index
+    std::vector<double> m_brakeS;          // braking time from V to rest before each index
+    // The unit's waits for motion since the poll that set (m_waitExec, m_waitExecAt), s.
+    double m_waitS = 0;
+    std::size_t m_waitExec = 0;
+    double m_waitExecAt = -1;
 };
 
 } // namespace frezka::driver

@@ -37,6 +37,8 @@ public:
     void unitStands();
 
 private:
+    bool inBox(std::size_t i, bool &atEnd, double &done) const;
+    void placeForPace(std::size_t first, double done, std::size_t guess);
     CoreHost &m_host;
     const machine::UnitProgram &m_program;
     JobCursor &m_cursor;

@@ -478,6 +478,9 @@ JobOutcome runJob(const RandomJob &job)
                 t, static_cast<long long>(stood[0]), static_cast<long long>(stood[1]),
                 static_cast<long long>(stood[2]));
         }
+        for (double t : port.unit().stats().motion.brakeViolationAtS)
+            std::fprintf(stderr, "%.6f BRAKE VIOLATION: a vector arrived faster than its exit\n",
+                         t);
         for (const emulator::TracePoint &t : port.unit().trace()) // where the machine stood
             if (t.pathSpeedPulsesPerS == 0)
                 std::fprintf(stderr, "%.6f unit at rest at %lld,%lld,%lld\n", t.timeS,

@@ -397,3 +397,31 @@ TEST(StreamPace, PacketsOnANoisyLinkStaySmallEnoughToArriveWhole)
     EXPECT_TRUE(o.wrong.empty()) << list(o.wrong);
     EXPECT_LT(o.resendShare, 0.30); // 0.345 without the cap, 0.253 with it
 }
+
+// Property seed 34 (a GVE114 at 19 200 Bd): a poll saw the unit at rest, then an A and a V went
+// out before the chain's first packet. The job's model ran the unit from the poll on, 0.13 s
+// ahead of it, took it for holding nothing while it held 0.1 s, and sent a packet of 199
+// commands (1.2 s on the wire): the unit ran dry at speed. The model now waits where the unit
+// waited for its vectors (driver/link/jobpace.cpp, noteArrival).
+TEST(StreamPace, TheUnitsWaitForItsVectorsHoldsTheModelBack)
+{
+    expectKeepsThePace(drawJob(34, 300));
+}
+
+// Property seed 320 (a GVE84 at 115 200 Bd, 14.7 ms, XM 200): A alternated between 5 and 1142
+// at every one-step vector, so each C went alone, a round trip each. The override's ceiling
+// counted one round trip per queue-full as if all travelled in packets, kept XM 200, and the
+// unit ran dry 454 times. Each command outside a packet, and each packet, is now a round trip.
+TEST(StreamPace, AnOverrideCountsARoundTripPerCommandOutsideAPacket)
+{
+    expectKeepsThePace(drawJob(320, 300));
+}
+
+// Property seed 344 (a GVE84, an X raster over the same line): a poll's position lay in the
+// boxes of several passes; the job took the first, 70 vectors behind the unit, thought it held
+// 0.25 s where it held 0.11 s, waited, and the unit ran dry at speed. The pace now takes the
+// pass nearest to its model (driver/link/jobtracker.cpp); the screen still shows the first.
+TEST(StreamPace, APollOnAPathThatComesBackIsPlacedNearTheModel)
+{
+    expectKeepsThePace(drawJob(344, 300));
+}
