@@ -33,18 +33,13 @@ void RunPlanner::wirePace()
     std::vector<double> extraPrefix(n + 1, 0.0);
     for (std::size_t k = 0; k < n; ++k)
         extraPrefix[k + 1] = extraPrefix[k] + (m_extraS.size() == n ? m_extraS[k] : 0);
+    const std::size_t window = m_link.brakeWindow();
     for (std::size_t k = 0; k < n; ++k) {
         Derived &r = m_d[k];
-        const std::size_t from = k > m_link.wireWindow() ? k - m_link.wireWindow() : 0;
-        const std::size_t to = std::min(n, k + m_link.wireWindow() + 1);
-        double widest = 0;
-        for (std::size_t j = from; j < to; ++j)
-            widest = std::max(widest, m_d[j].wireBytes);
-        const std::size_t bFrom = k > m_link.brakeWindow() ? k - m_link.brakeWindow() : 0;
-        const std::size_t bTo = std::min(n, k + m_link.brakeWindow() + 1);
+        const std::size_t bFrom = k > window ? k - window : 0;
+        const std::size_t bTo = std::min(n, k + window + 1);
         const double span = static_cast<double>(bTo - bFrom);
-        const double wireS =
-            m_link.vectorWireS(widest) + (extraPrefix[bTo] - extraPrefix[bFrom]) / span;
+        const double wireS = m_widestWireS[k] + (extraPrefix[bTo] - extraPrefix[bFrom]) / span;
         const double fastest = r.units / wireS; // units/s
         r.vMm = std::min(r.vMm, fastest / r.f);
         if (fastest >= static_cast<double>(std::min(r.speed, r.ownSpeed)))

@@ -31,13 +31,11 @@ inline double floorUnits(double x)
     return std::floor(x + 1e-9 * std::max(1.0, std::abs(x)));
 }
 
-// Everything the passes need about one move, derived once.
+// Everything the passes need about one move, derived once. Its directions (what the vertex caps
+// are made of) are not kept: the caps that follow from them are (RunPlanner::m_geoCap), and the
+// directions are derived again where the final statistics need them (RunPlanner::Directions).
 struct Derived
 {
-    Vec4 uStep{}; // axis mm (°) per path mm of the step vector: what the unit really does
-    Vec4 uPath{}; // unit direction of the intended segment (corner geometry)
-    double lengthMm = 0;
-    double pathLengthMm = 0;
     double f = 0;           // speed units per path mm (VN: major steps/mm, VK: step length/mm)
     double units = 0;       // distance in speed units
     double vMm = 0;         // cruise cap, mm/s
