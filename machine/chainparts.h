@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 namespace frezka::machine::detail {
 
@@ -94,6 +95,22 @@ public:
 private:
     const MachineConfig &m_config;
     const PlanOptions &m_options;
+    // brakeWireBytes and vectorWireBytes, memoised by value (direct-mapped): the pace asks for a
+    // B's bytes at every vertex of every plan of a run and for each vector's once, and encoding
+    // a command builds a string each time (a third of deriving a 1 M-move run).
+    static constexpr std::size_t kVectorMemo = 1024;
+    using Delta = std::array<std::int32_t, 4>;
+    mutable std::array<std::pair<Delta, double>, kVectorMemo> m_vectorMemo = [] {
+        std::array<std::pair<Delta, double>, kVectorMemo> memo;
+        memo.fill({{0, 0, 0, 0}, -1.0}); // the zero vector is never asked for: -1 marks empty
+        return memo;
+    }();
+    static constexpr std::size_t kBrakeMemo = 256;
+    mutable std::array<std::pair<std::int64_t, double>, kBrakeMemo> m_brakeMemo = [] {
+        std::array<std::pair<std::int64_t, double>, kBrakeMemo> memo;
+        memo.fill({std::numeric_limits<std::int64_t>::min(), 0.0});
+        return memo;
+    }();
 };
 
 } // namespace frezka::machine::detail
