@@ -39,7 +39,8 @@ void RunPlanner::wirePace()
         const std::size_t bFrom = k > window ? k - window : 0;
         const std::size_t bTo = std::min(n, k + window + 1);
         const double span = static_cast<double>(bTo - bFrom);
-        const double wireS = m_widestWireS[k] + (extraPrefix[bTo] - extraPrefix[bFrom]) / span;
+        const double wireS =
+            m_link.vectorWireS(r.widestBytes) + (extraPrefix[bTo] - extraPrefix[bFrom]) / span;
         const double fastest = r.units / wireS; // units/s
         r.vMm = std::min(r.vMm, fastest / r.f);
         if (fastest >= static_cast<double>(std::min(r.speed, r.ownSpeed)))

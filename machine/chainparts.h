@@ -45,11 +45,12 @@ struct Derived
     std::int64_t accel = 0; // A (thousands)
     std::int64_t twoAU = 0; // 2 · A · usable distance, integer pulses²/s², floored
     bool isShort = false;
-    bool restBefore = false;   // the unit stands when it begins (the run's start, a forced rest)
-    double wireBytes = 0;      // the C command on the serial line, bytes
-    double wireCap = kInf;     // B cap at both its ends so that it keeps the link's pace, units
-    double speedCap = kInf;    // B cap at both its ends where V lies above its own cap, units
-    std::int64_t ownSpeed = 0; // the vector's own V cap (its feed and axis limits)
+    bool restBefore = false;     // the unit stands when it begins (the run's start, a forced rest)
+    std::uint16_t wireBytes = 0; // the C command on the serial line, bytes (at most ~60)
+    std::uint16_t widestBytes = 0; // the widest C within the wire window either side (wirePace)
+    double wireCap = kInf;         // B cap at both its ends so that it keeps the link's pace, units
+    double speedCap = kInf;        // B cap at both its ends where V lies above its own cap, units
+    std::int64_t ownSpeed = 0;     // the vector's own V cap (its feed and axis limits)
 };
 
 // The serial link's timing for the link's pace (PlanOptions::wireLimited, docs/planner.md §4),

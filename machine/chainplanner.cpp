@@ -163,14 +163,13 @@ void RunPlanner::derive()
         m_d[k].restBefore = k == 0 || m_moves[k - 1].stopAfter || !softStopAllowed(k - 1);
     // The largest vector within the wire window either side, as the pace charges it.
     const std::size_t window = m_link.wireWindow();
-    m_widestWireS.assign(n, 0);
     for (std::size_t k = 0; k < n && m_options.wireLimited && m_config.link.baud > 0; ++k) {
         const std::size_t from = k > window ? k - window : 0;
         const std::size_t to = std::min(n, k + window + 1);
-        double widest = 0;
+        std::uint16_t widest = 0;
         for (std::size_t j = from; j < to; ++j)
             widest = std::max(widest, m_d[j].wireBytes);
-        m_widestWireS[k] = m_link.vectorWireS(widest);
+        m_d[k].widestBytes = widest;
     }
     chooseSpeeds(m_d, m_options, m_link);
     chooseAccels(m_d, m_options, m_link);
@@ -239,7 +238,7 @@ void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
     for (std::int32_t c : m.d)
         major = std::max<std::int64_t>(major, std::abs(c));
     r.isShort = major < m_options.shortThreshold; // the unit compares major-axis steps
-    r.wireBytes = m_link.vectorWireBytes(m.d);
+    r.wireBytes = static_cast<std::uint16_t>(m_link.vectorWireBytes(m.d));
 }
 
 // Integer passes over moves first..last (a chain), then the vectors as they go out.
@@ -256,9 +255,11 @@ void RunPlanner::chain(std::size_t first, std::size_t last)
         fullPasses(first, b);
     for (std::size_t k = first; k <= last; ++k) {
         const Derived &r = m_d[k];
-        PlannedVector v{r.speed, r.accel, b[k - first], k == last, false};
+        PlannedVector v{static_cast<std::int32_t>(r.speed), static_cast<std::int32_t>(r.accel),
+                        static_cast<std::int32_t>(b[k - first]), k == last, false};
         if (k == last) // nothing follows: the unit brakes to 0; a short vector cruises at B
-            v.brake = r.isShort ? std::min(r.speed, r.ownSpeed) : kMinSpeed;
+            v.brake =
+                static_cast<std::int32_t>(r.isShort ? std::min(r.speed, r.ownSpeed) : kMinSpeed);
         v.line = m_options.strategy == PlanStrategy::ExactStop;
         m_out.vectors.push_back(v);
     }

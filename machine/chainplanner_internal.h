@@ -107,12 +107,11 @@ private:
     // follow from the directions alone (junction deviation, curvature, the axes' speed steps)
     // on the scalar speed, as the bound takes them (m_geoCap) and, where the strategy takes
     // others (grbl's own), as the plan does (m_planGeoCap, else empty); whether the vertex can be
-    // passed at the unit's smallest speed; and per move the wire time of its window's widest
-    // vector (wirePace).
+    // passed at the unit's smallest speed (and per move its window's widest vector on the wire,
+    // Derived::widestBytes).
     std::vector<double> m_geoCap;
     std::vector<double> m_planGeoCap;
     std::vector<bool> m_softStop;
-    std::vector<double> m_widestWireS;
     std::vector<double> m_extraS; // link time of the B, V, A commands before move k (last plan)
     std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
     RunOutcome m_out;

@@ -44,6 +44,8 @@ private:
     void probe(std::size_t i, double feed);
     void setModal(UnitOp op, std::int64_t &current, std::int64_t value, std::uint32_t line);
     void flush();
+    void reserveCommands(const RunOutcome &run);
+    static constexpr std::size_t kKeptMoves = 1 << 16; // flush(): moves kept for the next run
 
     // planevents.cpp
     void event(std::size_t i);
