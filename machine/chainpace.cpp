@@ -30,7 +30,8 @@ void RunPlanner::wirePace()
     const std::size_t n = m_d.size();
     std::vector<bool> lowered(n, false); // V itself lowered to keep the pace
     // Prefix sums of the B, V and A commands' link time for their averages.
-    std::vector<double> extraPrefix(n + 1, 0.0);
+    std::vector<double> &extraPrefix = m_scratch;
+    extraPrefix.assign(n + 1, 0.0);
     for (std::size_t k = 0; k < n; ++k)
         extraPrefix[k + 1] = extraPrefix[k] + (m_extraS.size() == n ? m_extraS[k] : 0);
     const std::size_t window = m_link.brakeWindow();
@@ -122,7 +123,8 @@ void RunPlanner::paceModalChanges()
         return;
     const std::size_t n = m_d.size();
     const std::size_t queue = m_link.queueVectors();
-    std::vector<double> timeS(n + 1, 0.0); // prefix sums of the vectors' cruise times
+    std::vector<double> &timeS = m_scratch; // prefix sums of the vectors' cruise times
+    timeS.assign(n + 1, 0.0);
     auto cruise = [this](std::size_t j) {
         return m_d[j].units / static_cast<double>(std::max<std::int64_t>(m_d[j].speed, 1));
     };
@@ -283,7 +285,8 @@ void RunPlanner::flattenTightCaps()
                                  m_link.commandS(m_link.brakeWireBytes(m_d[k].speed));
         tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
     }
-    const std::vector<std::int64_t> caps(m_capUnits.begin(), m_capUnits.end() - 1);
+    std::vector<std::int64_t> &caps = m_scratchUnits; // the caps before flattening
+    caps.assign(m_capUnits.begin(), m_capUnits.end() - 1);
     for (std::size_t k = 0; k < vertices; ++k) {
         if (!tight[k])
             continue;

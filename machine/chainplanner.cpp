@@ -103,7 +103,10 @@ RunOutcome RunPlanner::run()
 // only (run()): the plans before it only tell the next one its B, V and A commands.
 void RunPlanner::planOnce()
 {
+    std::vector<PlannedVector> vectors = std::move(m_out.vectors); // its room, for this plan
+    vectors.clear();
     m_out = {};
+    m_out.vectors = std::move(vectors);
     m_out.vectors.reserve(m_d.size());
     m_out.slowLines = m_slowLines;
     m_out.firstFeedCap = m_firstFeedCap;
@@ -245,7 +248,8 @@ void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
 void RunPlanner::chain(std::size_t first, std::size_t last)
 {
     ++m_out.chains;
-    std::vector<std::int64_t> b(last - first + 1, 0);
+    std::vector<std::int64_t> &b = m_scratchUnits;
+    b.assign(last - first + 1, 0);
     for (std::size_t k = first; k < last; ++k)
         b[k - first] = m_capUnits[k];
     b.back() = 0;

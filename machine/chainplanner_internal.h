@@ -114,6 +114,11 @@ private:
     std::vector<bool> m_softStop;
     std::vector<double> m_extraS; // link time of the B, V, A commands before move k (last plan)
     std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
+    // Room one pass at a time uses (wirePace's and paceModalChanges' prefix sums, the caps
+    // before flattening, a chain's speeds), kept from plan to plan: a run of millions of moves
+    // otherwise maps, faults in and returns the same megabytes in every pass of every plan.
+    std::vector<double> m_scratch;
+    std::vector<std::int64_t> m_scratchUnits;
     RunOutcome m_out;
 };
 
