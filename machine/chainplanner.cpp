@@ -115,10 +115,9 @@ void RunPlanner::planOnce()
         const PaceStart &from = m_paceStart[k];
         Derived &r = m_d[k];
         r.vMm = from.vMm;
-        r.wireCap = from.wireCap;
+        r.wireCap = kInf;
         r.speed = from.speed;
-        r.accel = from.accel;
-        r.twoAU = from.twoAU;
+        setAccel(r, from.accel, m_options);
     }
     wirePace();
     paceModalChanges();
@@ -179,7 +178,8 @@ void RunPlanner::derive()
     m_paceStart.resize(m_d.size());
     for (std::size_t k = 0; k < m_d.size(); ++k) {
         const Derived &r = m_d[k];
-        m_paceStart[k] = {r.vMm, r.wireCap, r.speed, r.accel, r.twoAU};
+        m_paceStart[k] = {r.vMm, static_cast<std::int32_t>(r.speed),
+                          static_cast<std::int32_t>(r.accel)};
     }
 }
 

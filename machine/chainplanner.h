@@ -20,10 +20,10 @@ struct Move
     std::array<std::int32_t, 4> d{};   // relative steps (difference of rounded absolutes)
     std::array<double, 4> pathDelta{}; // the intended mm (deg) displacement, before rounding
     double feedMmPerS = 0;             // requested path speed; ignored for rapids
-    bool rapid = false;
-    bool stopAfter = false;         // the move must end at rest (G61 exact stop)
-    double junctionDeviationMm = 0; // in force for the vertex before this move
+    double junctionDeviationMm = 0;    // in force for the vertex before this move
     std::uint32_t line = 0;
+    bool rapid = false;
+    bool stopAfter = false; // the move must end at rest (G61 exact stop)
 };
 
 // The speeds of moves[k] as it goes to the unit (its steps and line stay in the Move). 32-bit:

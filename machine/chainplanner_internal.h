@@ -87,15 +87,15 @@ private:
     bool m_vk;
     std::vector<Derived> m_d;
     // What the link's pace and the modal choices of a plan change in m_d, as derive() left it:
-    // each plan starts again from this (no plan changes the rest of m_d). 40 bytes a move
-    // instead of a second copy of m_d (176): 0.6 GB less at 5 M moves (docs/benchmarks.md).
+    // each plan starts again from this (no plan changes the rest of m_d). 16 bytes a move
+    // instead of a second copy of m_d (176 before issue 17): derive() leaves every wireCap
+    // infinite (only the pace sets it), and twoAU follows from accel (setAccel), so neither is
+    // kept; V and A fit 32 bits (the pulse rate, kMaxAccel).
     struct PaceStart
     {
         double vMm;
-        double wireCap;
-        std::int64_t speed;
-        std::int64_t accel;
-        std::int64_t twoAU;
+        std::int32_t speed;
+        std::int32_t accel;
     };
     std::vector<PaceStart> m_paceStart;
     std::vector<std::uint32_t> m_slowLines; // derive(): lines below the unit's slowest speed
