@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 
 namespace frezka::machine::detail {
@@ -163,15 +164,20 @@ void RunPlanner::derive()
     }
     for (std::size_t k = 0; k < n; ++k)
         m_d[k].restBefore = k == 0 || m_moves[k - 1].stopAfter || !softStopAllowed(k - 1);
-    // The largest vector within the wire window either side, as the pace charges it.
+    // The largest vector within the wire window either side, as the pace charges it: a sliding
+    // maximum (the window's candidates, their bytes falling from front to back).
     const std::size_t window = m_link.wireWindow();
+    std::deque<std::size_t> widest;
+    std::size_t next = 0;
     for (std::size_t k = 0; k < n && m_options.wireLimited && m_config.link.baud > 0; ++k) {
-        const std::size_t from = k > window ? k - window : 0;
-        const std::size_t to = std::min(n, k + window + 1);
-        std::uint16_t widest = 0;
-        for (std::size_t j = from; j < to; ++j)
-            widest = std::max(widest, m_d[j].wireBytes);
-        m_d[k].widestBytes = widest;
+        for (; next < std::min(n, k + window + 1); ++next) {
+            while (!widest.empty() && m_d[widest.back()].wireBytes <= m_d[next].wireBytes)
+                widest.pop_back();
+            widest.push_back(next);
+        }
+        while (widest.front() + window < k)
+            widest.pop_front();
+        m_d[k].widestBytes = m_d[widest.front()].wireBytes;
     }
     chooseSpeeds(m_d, m_options, m_link);
     chooseAccels(m_d, m_options, m_link);
