@@ -81,7 +81,7 @@ void RunPlanner::vertexCaps(std::size_t k)
 {
     const Derived &a = m_d[k];
     const Derived &b = m_d[k + 1];
-    if (m_moves[k].stopAfter || m_options.strategy == PlanStrategy::ExactStop)
+    if (m_stopAfter[k] || m_options.strategy == PlanStrategy::ExactStop)
         return; // caps stay 0: the program asks for a stop here (or every vertex is one)
     double units = static_cast<double>(std::min(a.speed, b.speed));
     units = std::min(units, m_planGeoCap.empty() ? m_geoCap[k] : m_planGeoCap[k]);
@@ -95,7 +95,7 @@ void RunPlanner::vertexCaps(std::size_t k)
 // integers, its V sharing or its flattening (docs/planner.md §7).
 double RunPlanner::boundCap(std::size_t k) const
 {
-    if (m_moves[k].stopAfter)
+    if (m_stopAfter[k])
         return 0; // the program asks for a stop here
     const Derived &a = m_d[k];
     const Derived &b = m_d[k + 1];

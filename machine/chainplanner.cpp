@@ -152,12 +152,14 @@ void RunPlanner::derive()
     const std::size_t vertices = n > 0 ? n - 1 : 0;
     m_geoCap.assign(vertices, 0);
     m_softStop.assign(vertices, true);
+    m_stopAfter.assign(n, false);
     if (m_options.strategy == PlanStrategy::GrblJunction && !m_options.grblKeepsAllLimits)
         m_planGeoCap.assign(vertices, 0);
     Directions before;
     for (std::size_t k = 0; k < n; ++k) {
         const Directions dir = directions(m_moves[k]);
         deriveOne(m_moves[k], dir, m_d[k]);
+        m_stopAfter[k] = m_moves[k].stopAfter;
         if (k > 0)
             vertexGeometry(k - 1, before, dir);
         before = dir;

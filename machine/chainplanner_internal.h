@@ -108,11 +108,12 @@ private:
     // on the scalar speed, as the bound takes them (m_geoCap) and, where the strategy takes
     // others (grbl's own), as the plan does (m_planGeoCap, else empty); whether the vertex can be
     // passed at the unit's smallest speed (and per move its window's widest vector on the wire,
-    // Derived::widestBytes).
+    // Derived::widestBytes); whether the program stops after each move (m_stopAfter).
     std::vector<double> m_geoCap;
     std::vector<double> m_planGeoCap;
     std::vector<bool> m_softStop;
-    std::vector<double> m_extraS; // link time of the B, V, A commands before move k (last plan)
+    std::vector<bool> m_stopAfter; // Move::stopAfter: no pass reads the moves themselves
+    std::vector<double> m_extraS;  // link time of the B, V, A commands before move k (last plan)
     std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
     // Room one pass at a time uses (wirePace's and paceModalChanges' prefix sums, the caps
     // before flattening, a chain's speeds), kept from plan to plan: a run of millions of moves
