@@ -7,8 +7,9 @@
 
 namespace frezka::machine::detail {
 
-// Junction-deviation and curvature caps of the path speed at the vertex after move k, mm/s.
-void RunPlanner::pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double &jd,
+// Junction-deviation and curvature caps of the path speed at the vertex after move k, mm/s;
+// chordMm: the shorter of the two segments.
+void RunPlanner::pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double chordMm, double &jd,
                           double &curv) const
 {
     const double cosTheta = -dot(u0, u1);
@@ -33,44 +34,57 @@ void RunPlanner::pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double 
     const double sinHalfTheta = std::sqrt(0.5 * (1 - cosTheta));
     jd = std::sqrt(aj * m_moves[k + 1].junctionDeviationMm * sinHalfTheta / (1 - sinHalfTheta));
     const double sinHalfPhi = std::sqrt(0.5 * (1 + cosTheta)); // φ: the turn angle
-    const double chord = std::min(m_d[k].pathLengthMm, m_d[k + 1].pathLengthMm);
-    curv = std::sqrt(aj * chord / (2 * sinHalfPhi));
+    curv = std::sqrt(aj * chordMm / (2 * sinHalfPhi));
 }
 
-// Per-axis speed step at the vertex after move k, per unit of the scalar speed there.
-double RunPlanner::jumpPerUnit(std::size_t k, int i) const
+// Per-axis speed step at the vertex after move k (a, b: the directions of moves k and k+1), per
+// unit of the scalar speed there.
+double RunPlanner::jumpPerUnit(std::size_t k, const Directions &a, const Directions &b, int i) const
 {
-    return std::abs(m_d[k].uStep[i] / m_d[k].f - m_d[k + 1].uStep[i] / m_d[k + 1].f);
+    return std::abs(a.uStep[i] / m_d[k].f - b.uStep[i] / m_d[k + 1].f);
+}
+
+// The caps at the vertex after move k that only its two directions set (derive(), once per
+// run): junction deviation, curvature and the axes' speed steps on the scalar speed, and
+// whether passing it at the unit's smallest speed keeps every axis's speed step within its
+// limit (else the queue must drain there: a real stop).
+void RunPlanner::vertexGeometry(std::size_t k, const Directions &a, const Directions &b)
+{
+    const double fMin = std::min(m_d[k].f, m_d[k + 1].f);
+    const double chord = std::min(a.pathLengthMm, b.pathLengthMm);
+    double jd = 0, curv = 0;
+    pathCaps(k, a.uPath, b.uPath, chord, jd, curv);
+    double units = std::min(jd, curv) * fMin;
+    bool soft = true;
+    for (int i = 0; i < 4; ++i) {
+        // A speed step of rounding size is none (collinear vectors of different lengths give
+        // 1e-19, and an axis whose jump limit is 0 would rest there).
+        const double per = jumpPerUnit(k, a, b, i);
+        const double limit = m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS;
+        if (per > 1e-15) {
+            units = std::min(units, limit / per);
+            soft = soft && !(kMinSpeed * per > limit);
+        }
+    }
+    m_geoCap[k] = units;
+    m_softStop[k] = soft;
+    if (m_options.strategy == PlanStrategy::GrblJunction && !m_options.grblKeepsAllLimits) {
+        // grbl's own caps: geometry of the steps, no curvature, no speed steps (unless the
+        // baseline is asked to keep every limit of the full plan: then it differs from the full
+        // plan only by its short lookahead).
+        pathCaps(k, a.uStep, b.uStep, chord, jd, curv);
+        m_planGeoCap[k] = jd * fMin;
+    }
 }
 
 void RunPlanner::vertexCaps(std::size_t k)
 {
     const Derived &a = m_d[k];
     const Derived &b = m_d[k + 1];
-    if (m_moves[k].stopAfter)
-        return; // caps stay 0: the program asks for a stop here
-    boundCap(k);
-    if (m_options.strategy == PlanStrategy::ExactStop)
-        return;
-    const double fMin = std::min(a.f, b.f);
+    if (m_stopAfter[k] || m_options.strategy == PlanStrategy::ExactStop)
+        return; // caps stay 0: the program asks for a stop here (or every vertex is one)
     double units = static_cast<double>(std::min(a.speed, b.speed));
-    double jd = 0, curv = 0;
-    // grbl's own caps, unless the baseline is asked to keep every limit of the full plan
-    // (then it differs from the full plan only by its short lookahead).
-    const bool grbl =
-        m_options.strategy == PlanStrategy::GrblJunction && !m_options.grblKeepsAllLimits;
-    if (grbl) {
-        pathCaps(k, a.uStep, b.uStep, jd, curv); // grbl: geometry of the steps, no curvature
-        units = std::min(units, jd * fMin);
-    } else {
-        pathCaps(k, a.uPath, b.uPath, jd, curv);
-        units = std::min({units, jd * fMin, curv * fMin});
-    }
-    for (int i = 0; i < 4 && !grbl; ++i) {
-        const double per = jumpPerUnit(k, i);
-        if (per > 1e-15)
-            units = std::min(units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
-    }
+    units = std::min(units, m_planGeoCap.empty() ? m_geoCap[k] : m_planGeoCap[k]);
     units = std::min({units, a.wireCap, b.wireCap});   // the link's pace (infinite: off)
     units = std::min({units, a.speedCap, b.speedCap}); // V above a vector's own cap
     m_capUnits[k] = static_cast<std::int64_t>(floorUnits(units));
@@ -79,71 +93,57 @@ void RunPlanner::vertexCaps(std::size_t k)
 // The bound's cap at the vertex after move k: the same limits on a continuous speed in the
 // unit's own speed units (the scalar the unit carries across a vertex), without the plan's
 // integers, its V sharing or its flattening (docs/planner.md §7).
-void RunPlanner::boundCap(std::size_t k)
+double RunPlanner::boundCap(std::size_t k) const
 {
+    if (m_stopAfter[k])
+        return 0; // the program asks for a stop here
     const Derived &a = m_d[k];
     const Derived &b = m_d[k + 1];
-    double jd = 0, curv = 0;
-    pathCaps(k, a.uPath, b.uPath, jd, curv);
-    double units = std::min({a.vMm * a.f, b.vMm * b.f, std::min(jd, curv) * std::min(a.f, b.f)});
-    for (int i = 0; i < 4; ++i) {
-        const double per = jumpPerUnit(k, i);
-        if (per > 1e-15)
-            units = std::min(units, m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS / per);
-    }
+    double units = std::min({a.vMm * a.f, b.vMm * b.f, m_geoCap[k]});
     // The unit moves at 10 pulses/s at least: a corner whose geometric caps lie below that is
     // passed at that speed where the jump limits allow it, by any plan (planOnce's soft stop);
     // a crawl below it is no plan this unit can run (property seed 72 lay 8 % above the plan).
     if (units < kMinSpeed && softStopAllowed(k))
         units = kMinSpeed;
-    m_capBound[k] = units;
+    return units;
 }
 
-// True when passing the vertex after move k at the smallest speed (10 pulses/s) keeps every
-// axis's speed step within its limit; else the queue must drain there (a real stop).
-bool RunPlanner::softStopAllowed(std::size_t k) const
-{
-    for (int i = 0; i < 4; ++i) {
-        // As vertexCaps: a speed step of rounding size is none (collinear vectors of different
-        // lengths give 1e-19, and an axis whose jump limit is 0 would rest there).
-        const double per = jumpPerUnit(k, i);
-        if (per > 1e-15 &&
-            kMinSpeed * per > m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS)
-            return false;
-    }
-    return true;
-}
-
+// The plan's vertex statistics, once for the run's final plan: the directions are derived again
+// from the moves (two at a time) rather than kept for every move.
 void RunPlanner::jumpStats()
 {
-    for (std::size_t k = 0; k + 1 < m_out.vectors.size(); ++k) {
+    const std::size_t n = m_out.vectors.size();
+    if (n < 2)
+        return;
+    Directions a = directions(m_moves[0]);
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+        const Directions b = directions(m_moves[k + 1]);
         const PlannedVector &v = m_out.vectors[k];
-        if (v.chainEnd)
-            continue;
-        bool over = false;
-        for (int i = 0; i < 4; ++i) {
-            const double jump = static_cast<double>(v.brake) * jumpPerUnit(k, i);
-            const double limit = m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS;
-            m_out.maxJumpMmPerS = std::max(m_out.maxJumpMmPerS, jump);
-            // A jump below a nanometre per second is rounding noise, not a step (limit 0: none
-            // allowed).
-            const double ratio = limit > 0 ? jump / limit : (jump > 1e-9 ? kInf : 0);
-            m_out.maxJumpRatio = std::max(m_out.maxJumpRatio, ratio);
-            over = over || ratio > 1 + 1e-9;
+        if (!v.chainEnd) {
+            bool over = false;
+            for (int i = 0; i < 4; ++i) {
+                const double jump = static_cast<double>(v.brake) * jumpPerUnit(k, a, b, i);
+                const double limit = m_config.axes[static_cast<std::size_t>(i)].maxJumpMmPerS;
+                m_out.maxJumpMmPerS = std::max(m_out.maxJumpMmPerS, jump);
+                // A jump below a nanometre per second is rounding noise, not a step (limit 0:
+                // none allowed).
+                const double ratio = limit > 0 ? jump / limit : (jump > 1e-9 ? kInf : 0);
+                m_out.maxJumpRatio = std::max(m_out.maxJumpRatio, ratio);
+                over = over || ratio > 1 + 1e-9;
+            }
+            m_out.jumpOverLimit += over ? 1 : 0;
+            curveStats(k, a, b, static_cast<double>(v.brake));
         }
-        m_out.jumpOverLimit += over ? 1 : 0;
-        curveStats(k, static_cast<double>(v.brake));
+        a = b;
     }
 }
 
 // The axes' acceleration through the turn at the vertex after move k, as the intended path
 // turns: each axis's speed changes by v·Δu_i over the time between the two segments'
 // middles, (L_k + L_k+1) / 2v. On a chorded arc that is v²/r per unit of turn direction.
-void RunPlanner::curveStats(std::size_t k, double brake)
+void RunPlanner::curveStats(std::size_t k, const Directions &a, const Directions &b, double brake)
 {
-    const Derived &a = m_d[k];
-    const Derived &b = m_d[k + 1];
-    const double v = brake / std::min(a.f, b.f); // the faster side of the vertex, mm/s
+    const double v = brake / std::min(m_d[k].f, m_d[k + 1].f); // the faster side, mm/s
     const double span = 0.5 * (a.pathLengthMm + b.pathLengthMm);
     bool over = false;
     for (int i = 0; i < 4; ++i) {

@@ -30,21 +30,18 @@ void RunPlanner::wirePace()
     const std::size_t n = m_d.size();
     std::vector<bool> lowered(n, false); // V itself lowered to keep the pace
     // Prefix sums of the B, V and A commands' link time for their averages.
-    std::vector<double> extraPrefix(n + 1, 0.0);
+    std::vector<double> &extraPrefix = m_scratch;
+    extraPrefix.assign(n + 1, 0.0);
     for (std::size_t k = 0; k < n; ++k)
         extraPrefix[k + 1] = extraPrefix[k] + (m_extraS.size() == n ? m_extraS[k] : 0);
+    const std::size_t window = m_link.brakeWindow();
     for (std::size_t k = 0; k < n; ++k) {
         Derived &r = m_d[k];
-        const std::size_t from = k > m_link.wireWindow() ? k - m_link.wireWindow() : 0;
-        const std::size_t to = std::min(n, k + m_link.wireWindow() + 1);
-        double widest = 0;
-        for (std::size_t j = from; j < to; ++j)
-            widest = std::max(widest, m_d[j].wireBytes);
-        const std::size_t bFrom = k > m_link.brakeWindow() ? k - m_link.brakeWindow() : 0;
-        const std::size_t bTo = std::min(n, k + m_link.brakeWindow() + 1);
+        const std::size_t bFrom = k > window ? k - window : 0;
+        const std::size_t bTo = std::min(n, k + window + 1);
         const double span = static_cast<double>(bTo - bFrom);
         const double wireS =
-            m_link.vectorWireS(widest) + (extraPrefix[bTo] - extraPrefix[bFrom]) / span;
+            m_link.vectorWireS(r.widestBytes) + (extraPrefix[bTo] - extraPrefix[bFrom]) / span;
         const double fastest = r.units / wireS; // units/s
         r.vMm = std::min(r.vMm, fastest / r.f);
         if (fastest >= static_cast<double>(std::min(r.speed, r.ownSpeed)))
@@ -126,7 +123,8 @@ void RunPlanner::paceModalChanges()
         return;
     const std::size_t n = m_d.size();
     const std::size_t queue = m_link.queueVectors();
-    std::vector<double> timeS(n + 1, 0.0); // prefix sums of the vectors' cruise times
+    std::vector<double> &timeS = m_scratch; // prefix sums of the vectors' cruise times
+    timeS.assign(n + 1, 0.0);
     auto cruise = [this](std::size_t j) {
         return m_d[j].units / static_cast<double>(std::max<std::int64_t>(m_d[j].speed, 1));
     };
@@ -287,7 +285,8 @@ void RunPlanner::flattenTightCaps()
                                  m_link.commandS(m_link.brakeWireBytes(m_d[k].speed));
         tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
     }
-    const std::vector<std::int64_t> caps(m_capUnits.begin(), m_capUnits.end() - 1);
+    std::vector<std::int64_t> &caps = m_scratchUnits; // the caps before flattening
+    caps.assign(m_capUnits.begin(), m_capUnits.end() - 1);
     for (std::size_t k = 0; k < vertices; ++k) {
         if (!tight[k])
             continue;

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 namespace frezka::machine::detail {
 
@@ -31,13 +32,11 @@ inline double floorUnits(double x)
     return std::floor(x + 1e-9 * std::max(1.0, std::abs(x)));
 }
 
-// Everything the passes need about one move, derived once.
+// Everything the passes need about one move, derived once. Its directions (what the vertex caps
+// are made of) are not kept: the caps that follow from them are (RunPlanner::m_geoCap), and the
+// directions are derived again where the final statistics need them (RunPlanner::Directions).
 struct Derived
 {
-    Vec4 uStep{}; // axis mm (°) per path mm of the step vector: what the unit really does
-    Vec4 uPath{}; // unit direction of the intended segment (corner geometry)
-    double lengthMm = 0;
-    double pathLengthMm = 0;
     double f = 0;           // speed units per path mm (VN: major steps/mm, VK: step length/mm)
     double units = 0;       // distance in speed units
     double vMm = 0;         // cruise cap, mm/s
@@ -46,11 +45,12 @@ struct Derived
     std::int64_t accel = 0; // A (thousands)
     std::int64_t twoAU = 0; // 2 · A · usable distance, integer pulses²/s², floored
     bool isShort = false;
-    bool restBefore = false;   // the unit stands when it begins (the run's start, a forced rest)
-    double wireBytes = 0;      // the C command on the serial line, bytes
-    double wireCap = kInf;     // B cap at both its ends so that it keeps the link's pace, units
-    double speedCap = kInf;    // B cap at both its ends where V lies above its own cap, units
-    std::int64_t ownSpeed = 0; // the vector's own V cap (its feed and axis limits)
+    bool restBefore = false;     // the unit stands when it begins (the run's start, a forced rest)
+    std::uint16_t wireBytes = 0; // the C command on the serial line, bytes (at most ~60)
+    std::uint16_t widestBytes = 0; // the widest C within the wire window either side (wirePace)
+    double wireCap = kInf;         // B cap at both its ends so that it keeps the link's pace, units
+    double speedCap = kInf;        // B cap at both its ends where V lies above its own cap, units
+    std::int64_t ownSpeed = 0;     // the vector's own V cap (its feed and axis limits)
 };
 
 // The serial link's timing for the link's pace (PlanOptions::wireLimited, docs/planner.md §4),
@@ -96,6 +96,22 @@ public:
 private:
     const MachineConfig &m_config;
     const PlanOptions &m_options;
+    // brakeWireBytes and vectorWireBytes, memoised by value (direct-mapped): the pace asks for a
+    // B's bytes at every vertex of every plan of a run and for each vector's once, and encoding
+    // a command builds a string each time (a third of deriving a 1 M-move run).
+    static constexpr std::size_t kVectorMemo = 1024;
+    using Delta = std::array<std::int32_t, 4>;
+    mutable std::array<std::pair<Delta, double>, kVectorMemo> m_vectorMemo = [] {
+        std::array<std::pair<Delta, double>, kVectorMemo> memo;
+        memo.fill({{0, 0, 0, 0}, -1.0}); // the zero vector is never asked for: -1 marks empty
+        return memo;
+    }();
+    static constexpr std::size_t kBrakeMemo = 256;
+    mutable std::array<std::pair<std::int64_t, double>, kBrakeMemo> m_brakeMemo = [] {
+        std::array<std::pair<std::int64_t, double>, kBrakeMemo> memo;
+        memo.fill({std::numeric_limits<std::int64_t>::min(), 0.0});
+        return memo;
+    }();
 };
 
 } // namespace frezka::machine::detail

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 
 namespace frezka::machine::detail {
@@ -64,8 +65,11 @@ RunOutcome RunPlanner::run()
 {
     derive();
     planOnce();
-    if (!m_options.wireLimited || m_config.link.baud <= 0)
+    if (!m_options.wireLimited || m_config.link.baud <= 0) {
+        bound();
+        jumpStats();
         return std::move(m_out);
+    }
     m_extraS.assign(m_moves.size(), 0);
     for (int pass = 0; pass < kWirePasses; ++pass) {
         bool changed = false;
@@ -90,14 +94,21 @@ RunOutcome RunPlanner::run()
             break;
         planOnce();
     }
+    bound();
+    jumpStats();
     return std::move(m_out);
 }
 
 // One plan of the run: the derived moves, the link's pace over them (with the B bytes of the
-// last plan), caps, bound and passes.
+// last plan), caps and passes. The bound and the vertex statistics follow from the last plan
+// only (run()): the plans before it only tell the next one its B, V and A commands.
 void RunPlanner::planOnce()
 {
+    std::vector<PlannedVector> vectors = std::move(m_out.vectors); // its room, for this plan
+    vectors.clear();
     m_out = {};
+    m_out.vectors = std::move(vectors);
+    m_out.vectors.reserve(m_d.size());
     m_out.slowLines = m_slowLines;
     m_out.firstFeedCap = m_firstFeedCap;
     m_out.feedCapLines = m_feedCapLines;
@@ -105,20 +116,17 @@ void RunPlanner::planOnce()
         const PaceStart &from = m_paceStart[k];
         Derived &r = m_d[k];
         r.vMm = from.vMm;
-        r.wireCap = from.wireCap;
+        r.wireCap = kInf;
         r.speed = from.speed;
-        r.accel = from.accel;
-        r.twoAU = from.twoAU;
+        setAccel(r, from.accel, m_options);
     }
     wirePace();
     paceModalChanges();
     const std::size_t n = m_moves.size();
     m_capUnits.assign(n, 0);
-    m_capBound.assign(n, 0);
     for (std::size_t k = 0; k + 1 < n; ++k)
         vertexCaps(k);
     flattenTightCaps();
-    bound();
     std::size_t first = 0;
     for (std::size_t k = 0; k < n; ++k) {
         const bool exact = m_options.strategy == PlanStrategy::ExactStop;
@@ -132,28 +140,60 @@ void RunPlanner::planOnce()
             first = k + 1;
         }
     }
-    jumpStats();
 }
 
-// What the moves themselves give, once per run (every plan of it starts from this).
+// What the moves themselves give, once per run (every plan of it starts from this): the
+// figures of each move, the caps of each vertex that its two directions set, and each move's
+// widest neighbour on the wire.
 void RunPlanner::derive()
 {
-    m_d.resize(m_moves.size());
-    for (std::size_t k = 0; k < m_moves.size(); ++k)
-        deriveOne(m_moves[k], m_d[k]);
-    for (std::size_t k = 0; k < m_moves.size(); ++k)
+    const std::size_t n = m_moves.size();
+    m_d.resize(n);
+    const std::size_t vertices = n > 0 ? n - 1 : 0;
+    m_geoCap.assign(vertices, 0);
+    m_softStop.assign(vertices, true);
+    m_stopAfter.assign(n, false);
+    if (m_options.strategy == PlanStrategy::GrblJunction && !m_options.grblKeepsAllLimits)
+        m_planGeoCap.assign(vertices, 0);
+    Directions before;
+    for (std::size_t k = 0; k < n; ++k) {
+        const Directions dir = directions(m_moves[k]);
+        deriveOne(m_moves[k], dir, m_d[k]);
+        m_stopAfter[k] = m_moves[k].stopAfter;
+        if (k > 0)
+            vertexGeometry(k - 1, before, dir);
+        before = dir;
+    }
+    for (std::size_t k = 0; k < n; ++k)
         m_d[k].restBefore = k == 0 || m_moves[k - 1].stopAfter || !softStopAllowed(k - 1);
+    // The largest vector within the wire window either side, as the pace charges it: a sliding
+    // maximum (the window's candidates, their bytes falling from front to back).
+    const std::size_t window = m_link.wireWindow();
+    std::deque<std::size_t> widest;
+    std::size_t next = 0;
+    for (std::size_t k = 0; k < n && m_options.wireLimited && m_config.link.baud > 0; ++k) {
+        for (; next < std::min(n, k + window + 1); ++next) {
+            while (!widest.empty() && m_d[widest.back()].wireBytes <= m_d[next].wireBytes)
+                widest.pop_back();
+            widest.push_back(next);
+        }
+        while (widest.front() + window < k)
+            widest.pop_front();
+        m_d[k].widestBytes = m_d[widest.front()].wireBytes;
+    }
     chooseSpeeds(m_d, m_options, m_link);
     chooseAccels(m_d, m_options, m_link);
     m_paceStart.resize(m_d.size());
     for (std::size_t k = 0; k < m_d.size(); ++k) {
         const Derived &r = m_d[k];
-        m_paceStart[k] = {r.vMm, r.wireCap, r.speed, r.accel, r.twoAU};
+        m_paceStart[k] = {r.vMm, static_cast<std::int32_t>(r.speed),
+                          static_cast<std::int32_t>(r.accel)};
     }
 }
 
-void RunPlanner::deriveOne(const Move &m, Derived &r)
+Directions RunPlanner::directions(const Move &m) const
 {
+    Directions r;
     Vec4 stepMm{};
     for (int i = 0; i < 4; ++i)
         stepMm[i] = m.d[i] / m_config.axes[static_cast<std::size_t>(i)].stepsPerMm;
@@ -162,15 +202,21 @@ void RunPlanner::deriveOne(const Move &m, Derived &r)
     r.uPath = normalized(m.pathDelta);
     if (r.pathLengthMm <= 0) // rounding made a step out of a zero-length intent
         r.uPath = normalized(stepMm), r.pathLengthMm = r.lengthMm;
+    for (int i = 0; i < 4; ++i)
+        r.uStep[i] = stepMm[i] / r.lengthMm;
+    return r;
+}
+
+void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
+{
     r.units = speedUnitsLength(m.d, m_vk);
-    r.f = r.units / r.lengthMm;
+    r.f = r.units / dir.lengthMm;
     const double asked = m.rapid ? kInf : m.feedMmPerS * m_options.feedOverride;
     double v = asked;
     double a = kInf;
     FeedCap cap{m.line, asked, 0, 0, 0};
     for (int i = 0; i < 4; ++i) {
-        r.uStep[i] = stepMm[i] / r.lengthMm;
-        const double u = std::abs(r.uStep[i]);
+        const double u = std::abs(dir.uStep[i]);
         if (u < 1e-12)
             continue;
         const AxisConfig &ax = m_config.axes[static_cast<std::size_t>(i)];
@@ -203,14 +249,15 @@ void RunPlanner::deriveOne(const Move &m, Derived &r)
     for (std::int32_t c : m.d)
         major = std::max<std::int64_t>(major, std::abs(c));
     r.isShort = major < m_options.shortThreshold; // the unit compares major-axis steps
-    r.wireBytes = m_link.vectorWireBytes(m.d);
+    r.wireBytes = static_cast<std::uint16_t>(m_link.vectorWireBytes(m.d));
 }
 
 // Integer passes over moves first..last (a chain), then the vectors as they go out.
 void RunPlanner::chain(std::size_t first, std::size_t last)
 {
     ++m_out.chains;
-    std::vector<std::int64_t> b(last - first + 1, 0);
+    std::vector<std::int64_t> &b = m_scratchUnits;
+    b.assign(last - first + 1, 0);
     for (std::size_t k = first; k < last; ++k)
         b[k - first] = m_capUnits[k];
     b.back() = 0;
@@ -220,9 +267,11 @@ void RunPlanner::chain(std::size_t first, std::size_t last)
         fullPasses(first, b);
     for (std::size_t k = first; k <= last; ++k) {
         const Derived &r = m_d[k];
-        PlannedVector v{r.speed, r.accel, b[k - first], k == last, false};
+        PlannedVector v{static_cast<std::int32_t>(r.speed), static_cast<std::int32_t>(r.accel),
+                        static_cast<std::int32_t>(b[k - first]), k == last, false};
         if (k == last) // nothing follows: the unit brakes to 0; a short vector cruises at B
-            v.brake = r.isShort ? std::min(r.speed, r.ownSpeed) : kMinSpeed;
+            v.brake =
+                static_cast<std::int32_t>(r.isShort ? std::min(r.speed, r.ownSpeed) : kMinSpeed);
         v.line = m_options.strategy == PlanStrategy::ExactStop;
         m_out.vectors.push_back(v);
     }
@@ -279,8 +328,9 @@ void RunPlanner::bound()
         a[k] = 1000.0 * std::clamp(std::floor(r.aMm * r.f / 1000.0 + 1e-9), 1.0,
                                    static_cast<double>(kMaxAccel));
     }
-    std::vector<double> x(m_capBound);
-    x[n - 1] = 0;
+    std::vector<double> x(n, 0.0);
+    for (std::size_t k = 0; k + 1 < n; ++k)
+        x[k] = boundCap(k);
     for (std::size_t k = n - 1; k > 0; --k) {
         const double entry = std::sqrt(x[k] * x[k] + 2 * a[k] * m_d[k].units);
         x[k - 1] = std::min(x[k - 1], entry);

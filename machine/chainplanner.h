@@ -12,25 +12,27 @@
 
 namespace frezka::machine::detail {
 
-// One non-zero step vector of the path, as the walk over the toolpath produced it.
+// One non-zero step vector of the path, as the walk over the toolpath produced it. Where it
+// ends in absolute steps is the run's start plus the moves up to it (Planner::flush): 32 bytes
+// less a move than keeping it (issue 17: a run of 5 M moves).
 struct Move
 {
-    std::array<std::int32_t, 4> d{}; // relative steps (difference of rounded absolutes)
-    Steps4 endSteps{};
+    std::array<std::int32_t, 4> d{};   // relative steps (difference of rounded absolutes)
     std::array<double, 4> pathDelta{}; // the intended mm (deg) displacement, before rounding
     double feedMmPerS = 0;             // requested path speed; ignored for rapids
-    bool rapid = false;
-    bool stopAfter = false;         // the move must end at rest (G61 exact stop)
-    double junctionDeviationMm = 0; // in force for the vertex before this move
+    double junctionDeviationMm = 0;    // in force for the vertex before this move
     std::uint32_t line = 0;
+    bool rapid = false;
+    bool stopAfter = false; // the move must end at rest (G61 exact stop)
 };
 
-// The speeds of moves[k] as it goes to the unit (its steps and line stay in the Move).
+// The speeds of moves[k] as it goes to the unit (its steps and line stay in the Move). 32-bit:
+// V and B are at most the unit's pulse rate, A at most kMaxAccel (16 bytes a move, not 32).
 struct PlannedVector
 {
-    std::int64_t speed = 0; // V, pulses/s in the mode's units
-    std::int64_t accel = 0; // A, thousands of pulses/s²
-    std::int64_t brake = 0; // B, pulses/s; the chain's last vector: see chainEnd
+    std::int32_t speed = 0; // V, pulses/s in the mode's units
+    std::int32_t accel = 0; // A, thousands of pulses/s²
+    std::int32_t brake = 0; // B, pulses/s; the chain's last vector: see chainEnd
     bool chainEnd = false;  // the unit must stop after this vector (queue drains)
     bool line = false;      // send as L (stand-alone, from and to rest), not C
 };

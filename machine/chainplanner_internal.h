@@ -17,6 +17,16 @@ double dot(const Vec4 &a, const Vec4 &b);
 // v scaled to length 1 (all zero stays all zero).
 Vec4 normalized(const Vec4 &v);
 
+// The directions of one move: as the unit moves it (its step vector) and as the program meant it
+// (the unrounded segment), with their lengths.
+struct Directions
+{
+    Vec4 uStep{}; // axis mm (°) per path mm of the step vector: what the unit really does
+    Vec4 uPath{}; // unit direction of the intended segment (corner geometry)
+    double lengthMm = 0;
+    double pathLengthMm = 0;
+};
+
 class RunPlanner
 {
 public:
@@ -41,20 +51,23 @@ private:
     // chainplanner.cpp
     void planOnce();
     void derive();
-    void deriveOne(const Move &m, Derived &r);
+    Directions directions(const Move &m) const;
+    void deriveOne(const Move &m, const Directions &dir, Derived &r);
     void chain(std::size_t first, std::size_t last);
     void fullPasses(std::size_t first, std::vector<std::int64_t> &b) const;
     void windowedPasses(std::size_t first, std::vector<std::int64_t> &b) const;
     void bound();
 
     // chaincaps.cpp
-    void pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double &jd, double &curv) const;
-    double jumpPerUnit(std::size_t k, int i) const;
+    void pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double chordMm, double &jd,
+                  double &curv) const;
+    double jumpPerUnit(std::size_t k, const Directions &a, const Directions &b, int i) const;
+    void vertexGeometry(std::size_t k, const Directions &a, const Directions &b);
     void vertexCaps(std::size_t k);
-    void boundCap(std::size_t k);
-    bool softStopAllowed(std::size_t k) const;
+    double boundCap(std::size_t k) const;
+    bool softStopAllowed(std::size_t k) const { return m_softStop[k]; }
     void jumpStats();
-    void curveStats(std::size_t k, double brake);
+    void curveStats(std::size_t k, const Directions &a, const Directions &b, double brake);
 
     // chainpace.cpp
     void wirePace();
@@ -74,24 +87,39 @@ private:
     bool m_vk;
     std::vector<Derived> m_d;
     // What the link's pace and the modal choices of a plan change in m_d, as derive() left it:
-    // each plan starts again from this (no plan changes the rest of m_d). 40 bytes a move
-    // instead of a second copy of m_d (176): 0.6 GB less at 5 M moves (docs/benchmarks.md).
+    // each plan starts again from this (no plan changes the rest of m_d). 16 bytes a move
+    // instead of a second copy of m_d (176 before issue 17): derive() leaves every wireCap
+    // infinite (only the pace sets it), and twoAU follows from accel (setAccel), so neither is
+    // kept; V and A fit 32 bits (the pulse rate, kMaxAccel).
     struct PaceStart
     {
         double vMm;
-        double wireCap;
-        std::int64_t speed;
-        std::int64_t accel;
-        std::int64_t twoAU;
+        std::int32_t speed;
+        std::int32_t accel;
     };
     std::vector<PaceStart> m_paceStart;
     std::vector<std::uint32_t> m_slowLines; // derive(): lines below the unit's slowest speed
     FeedCap m_firstFeedCap;                 // derive(): the first move whose feed is capped
     std::size_t m_feedCapLines = 0;         // ... and how many lines are
     std::uint32_t m_lastCappedLine = 0;
-    std::vector<double> m_extraS; // link time of the B, V, A commands before move k (last plan)
+    // What no plan of the run changes, derived once (derive()) instead of in each of up to six
+    // plans (docs/planner.md §4, "The link's pace"): per vertex after move k, the caps that
+    // follow from the directions alone (junction deviation, curvature, the axes' speed steps)
+    // on the scalar speed, as the bound takes them (m_geoCap) and, where the strategy takes
+    // others (grbl's own), as the plan does (m_planGeoCap, else empty); whether the vertex can be
+    // passed at the unit's smallest speed (and per move its window's widest vector on the wire,
+    // Derived::widestBytes); whether the program stops after each move (m_stopAfter).
+    std::vector<double> m_geoCap;
+    std::vector<double> m_planGeoCap;
+    std::vector<bool> m_softStop;
+    std::vector<bool> m_stopAfter; // Move::stopAfter: no pass reads the moves themselves
+    std::vector<double> m_extraS;  // link time of the B, V, A commands before move k (last plan)
     std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
-    std::vector<double> m_capBound;       // the bound's cap there, speed units
+    // Room one pass at a time uses (wirePace's and paceModalChanges' prefix sums, the caps
+    // before flattening, a chain's speeds), kept from plan to plan: a run of millions of moves
+    // otherwise maps, faults in and returns the same megabytes in every pass of every plan.
+    std::vector<double> m_scratch;
+    std::vector<std::int64_t> m_scratchUnits;
     RunOutcome m_out;
 };
 

@@ -64,15 +64,25 @@ double LinkTiming::commandS(double bytes) const
 
 double LinkTiming::vectorWireBytes(const std::array<std::int32_t, 4> &d) const
 {
+    std::uint64_t h = 14695981039346656037ull; // FNV-1a over the components
+    for (std::int32_t c : d)
+        h = (h ^ static_cast<std::uint32_t>(c)) * 1099511628211ull;
+    auto &slot = m_vectorMemo[h % kVectorMemo];
+    if (slot.second >= 0 && slot.first == d)
+        return slot.second;
     UnitCommand c;
     c.op = UnitOp::Vector;
     c.d = d;
-    return wireBytes(*wireCommand(c, wireAxisCount(m_config)));
+    slot = {d, wireBytes(*wireCommand(c, wireAxisCount(m_config)))};
+    return slot.second;
 }
 
 double LinkTiming::brakeWireBytes(std::int64_t value) const
 {
-    return wireBytes(protocol::cmd::brake(value));
+    auto &slot = m_brakeMemo[static_cast<std::size_t>(value) % kBrakeMemo];
+    if (slot.first != value)
+        slot = {value, wireBytes(protocol::cmd::brake(value))};
+    return slot.second;
 }
 
 double LinkTiming::wireBytes(const protocol::Command &command) const

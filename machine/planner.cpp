@@ -54,10 +54,12 @@ PlanResult Planner::run()
     emit(UnitOp::ShortThreshold, m_options.shortThreshold, 0);
     emit(UnitOp::Pause, m_config.motion.pauseMs, 0);
     for (std::size_t i = 0; i < m_path.size(); ++i) {
-        if (m_path.isMotion(i))
+        if (m_path.isMotion(i)) {
+            reserveMoves(i);
             motion(i);
-        else
+        } else {
             event(i);
+        }
     }
     flush();
     feedCapWarning();
@@ -147,6 +149,21 @@ bool Planner::checkPoint(const Point4 &p, std::uint32_t line)
     return ok;
 }
 
+// Room for the moves of the run that starts at toolpath entry i: its motions up to the next
+// event (a lower bound: an arc chords into several, and an event may not end the run). A run of
+// millions of moves grown by doubling copies them over and over and may hold nearly twice
+// their room while it is planned (issue 17: 5 M moves, 72 bytes each).
+void Planner::reserveMoves(std::size_t i)
+{
+    if (!m_moves.empty() || i < m_reservedTo)
+        return;
+    std::size_t end = i;
+    while (end < m_path.size() && m_path.isMotion(end))
+        ++end;
+    m_reservedTo = end;
+    m_moves.reserve(end - i);
+}
+
 void Planner::motion(std::size_t i)
 {
     const MotionKind kind = m_path.kind(i);
@@ -160,14 +177,14 @@ void Planner::motion(std::size_t i)
         probe(i, feed);
         return;
     }
-    std::vector<Point4> points;
-    if (kind == MotionKind::Arc)
-        points = gcode::chordArc(m_path.start(i), m_path.end(i), m_path.arc(i),
-                                 m_config.motion.chordToleranceMm);
-    else
-        points.push_back(m_path.end(i));
+    if (kind != MotionKind::Arc) {
+        addPoint(m_path.end(i), kind == MotionKind::Rapid, feed, line);
+        return;
+    }
+    const std::vector<Point4> points = gcode::chordArc(
+        m_path.start(i), m_path.end(i), m_path.arc(i), m_config.motion.chordToleranceMm);
     for (const Point4 &p : points)
-        addPoint(p, kind == MotionKind::Rapid, feed, line);
+        addPoint(p, false, feed, line);
 }
 
 void Planner::addPoint(const Point4 &p, bool rapid, double feedMmPerS, std::uint32_t line)
@@ -189,7 +206,6 @@ void Planner::addPoint(const Point4 &p, bool rapid, double feedMmPerS, std::uint
     }
     if (!any)
         return; // no step: nothing to send; the intended position waits for the next one
-    m.endSteps = target;
     m.pathDelta = {p.x - m_posMm.x, p.y - m_posMm.y, p.z - m_posMm.z, p.a - m_posMm.a};
     m.feedMmPerS = feedMmPerS;
     m.rapid = rapid;
@@ -221,7 +237,6 @@ void Planner::probe(std::size_t i, double feed)
               "away from the current position");
         return;
     }
-    m.endSteps = target;
     m.pathDelta = {p.x - m_posMm.x, p.y - m_posMm.y, p.z - m_posMm.z, p.a - m_posMm.a};
     m.feedMmPerS = feed;
     m.line = line;
@@ -251,12 +266,15 @@ void Planner::setModal(UnitOp op, std::int64_t &current, std::int64_t value, std
     emit(op, value, line);
 }
 
-// Plans and emits the moves collected since the last synchronisation point.
+// Plans and emits the moves collected since the last synchronisation point. The run starts where
+// the last motion emitted ended (every move before it was emitted), so each move ends at that
+// position plus the moves up to it.
 void Planner::flush()
 {
     if (m_moves.empty())
         return;
     const detail::RunOutcome run = detail::planRun(m_moves, m_config, m_options, m_vk);
+    reserveCommands(run);
     for (std::size_t k = 0; k < run.vectors.size(); ++k) {
         const detail::PlannedVector &v = run.vectors[k];
         const detail::Move &m = m_moves[k];
@@ -268,9 +286,10 @@ void Planner::flush()
         c.op = v.line ? UnitOp::Line : UnitOp::Vector;
         c.d = m.d;
         c.sourceLine = m.line;
-        c.endSteps = m.endSteps;
+        for (std::size_t i = 0; i < 4; ++i)
+            m_emitted[i] += m.d[i];
+        c.endSteps = m_emitted;
         m_result.program.commands.push_back(c);
-        m_emitted = m.endSteps;
         if (v.chainEnd && !v.line)
             emit(UnitOp::WaitIdle, 0, m.line);
     }
@@ -293,6 +312,28 @@ void Planner::flush()
     s.maxCurveAccelRatio = std::max(s.maxCurveAccelRatio, run.maxCurveAccelRatio);
     s.curveAccelOverLimit += run.curveAccelOverLimit;
     m_moves.clear();
+    if (m_moves.capacity() > kKeptMoves)
+        m_moves.shrink_to_fit(); // a huge run's moves are not kept for the next (small) one
+}
+
+// Room for the commands a run emits, counted beforehand as flush() emits them: a run of millions
+// of vectors would otherwise grow the program by doubling, and hold the old and the new copy at
+// once while it moves (up to three times the program's size at the peak).
+void Planner::reserveCommands(const detail::RunOutcome &run)
+{
+    std::int64_t accel = m_accel, speed = m_speed, brake = m_brake;
+    std::size_t count = 0;
+    for (const detail::PlannedVector &v : run.vectors) {
+        count += 1 + (v.accel != accel ? 1 : 0) + (v.speed != speed ? 1 : 0) +
+                 (!v.line && v.brake != brake ? 1 : 0) + (v.chainEnd && !v.line ? 1 : 0);
+        accel = v.accel;
+        speed = v.speed;
+        brake = v.line ? brake : v.brake;
+    }
+    std::vector<UnitCommand> &commands = m_result.program.commands;
+    const std::size_t needed = commands.size() + count + 1;
+    if (needed > commands.capacity())
+        commands.reserve(std::max(needed, commands.capacity() + commands.capacity() / 2));
 }
 
 } // namespace detail

@@ -44,6 +44,9 @@ private:
     void probe(std::size_t i, double feed);
     void setModal(UnitOp op, std::int64_t &current, std::int64_t value, std::uint32_t line);
     void flush();
+    void reserveMoves(std::size_t i);
+    void reserveCommands(const RunOutcome &run);
+    static constexpr std::size_t kKeptMoves = 1 << 16; // flush(): moves kept for the next run
 
     // planevents.cpp
     void event(std::size_t i);
@@ -74,6 +77,7 @@ private:
     Steps4 m_steps{};      // absolute steps after the last collected move
     Steps4 m_emitted{};    // absolute steps after the last emitted motion command
     std::vector<Move> m_moves;
+    std::size_t m_reservedTo = 0; // reserveMoves: the toolpath entry its last reserve reached
     bool m_exactStop = false;
     double m_jd = 0;
     std::int64_t m_accel = -1, m_speed = -1, m_brake = -1; // modal values sent, -1 = unknown
