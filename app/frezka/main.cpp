@@ -7,6 +7,7 @@
 #include "gui/programview.h"
 
 #include "driver/link/machinecontroller.h"
+#include "driver/link/tracerecorder.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -65,6 +66,8 @@ int main(int argc, char **argv)
     QApplication::setOrganizationName(QStringLiteral("Frezka"));
     QApplication::setApplicationName(QStringLiteral("frezka"));
     QApplication::setApplicationVersion(QString::fromUtf8(frezka::app::versionString()));
+    frezka::driver::TraceRecorder::session().setProgramVersion(std::string("Frezka ") +
+                                                               frezka::app::versionString());
     frezka::gui::applyLanguage(
         frezka::gui::effectiveLanguage(QSettings().value(QStringLiteral("language")).toString()));
 

@@ -73,7 +73,8 @@ struct Drive
 
 bool Drive::job()
 {
-    const std::string file = dir + "/" + recipe.value("program");
+    const std::string program = recipe.value("program");
+    const std::string file = program.rfind('/', 0) == 0 ? program : dir + "/" + program;
     const gcode::Result g = gcode::interpretFile(file);
     if (!g.ok()) {
         error = gcode::formatError(QString::fromStdString(file), g.errors.front()).toStdString();
@@ -126,7 +127,8 @@ bool Drive::run()
 // The core with its events going to `sink`; `far` is the unit's end of the line.
 bool driveOperation(const SerialTrace &recipe, const std::string &dir, VirtualPort &far,
                     const std::function<void(const std::string &)> &sink,
-                    const std::function<bool()> &abandon, std::string &error)
+                    const std::function<bool()> &abandon, const std::function<bool()> &played,
+                    std::string &error)
 {
     const auto variant = protocol::variantFromId(recipe.value("variant", "gve64"));
     if (!variant) {
@@ -149,6 +151,10 @@ bool driveOperation(const SerialTrace &recipe, const std::string &dir, VirtualPo
     };
     const bool ok = d.run();
     error = d.error;
+    // A record may go on after the operation (a front end saves it later): what the driver does
+    // meanwhile (its polls) must match too.
+    if (ok)
+        runner.runUntil([&] { return played() || abandon(); }, kWaitLimitS);
     return ok;
 }
 
@@ -175,7 +181,7 @@ bool recordTrace(const SerialTrace &recipe, const std::string &dir, SerialTrace 
     recorder.begin({}, port.now());
     const bool ok = driveOperation(
         recipe, dir, port, [&](const std::string &e) { recorder.note(e, port.now()); },
-        [] { return false; }, error);
+        [] { return false; }, [] { return true; }, error);
     out = recorder.snapshot();
     for (const auto &[k, v] : recipe.header) {
         if (k != "frezka" && k != "started")
@@ -190,7 +196,8 @@ bool replayTrace(const SerialTrace &trace, const std::string &dir, std::string &
     std::vector<std::string> seen;
     const bool ok = driveOperation(
         trace, dir, port, [&](const std::string &e) { seen.push_back(e); },
-        [&] { return bool(port.replay().divergence()); }, error);
+        [&] { return bool(port.replay().divergence()); }, [&] { return port.replay().finished(); },
+        error);
     const auto &replay = port.replay();
     if (replay.divergence()) {
         error = emulator::englishText(replay.divergence());
