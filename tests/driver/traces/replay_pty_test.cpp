@@ -1,0 +1,269 @@
+// The replay in real time: gve-emu --replay on a pseudo-terminal (spoken to through QSerialPort
+// as the application speaks to hardware), ReplayTransport under the link worker, and the
+// session's record of a link worker's transport (TracingTransport), saved on an alarm.
+//
+// Every wait has a generous ceiling (kPatienceMs) that only matters when something is broken.
+
+#include "driver/emulator/serialtrace.h"
+#include "driver/link/linkworker.h"
+#include "driver/link/replaytransport.h"
+#include "driver/link/tracerecorder.h"
+#include "driver/link/tracingtransport.h"
+
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QSerialPort>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+#include <algorithm>
+#include <utility>
+
+using namespace frezka;
+
+namespace {
+
+constexpr int kPatienceMs = 20000;
+
+emulator::SerialTrace readTrace(const QString &name)
+{
+    QFile f(QStringLiteral(TRACES_DIR "/") + name);
+    emulator::SerialTrace t;
+    emulator::TraceMessage error;
+    if (!f.open(QIODevice::ReadOnly) || !emulator::parseTrace(f.readAll().toStdString(), t, error))
+        qFatal("cannot read the trace %s", qPrintable(name));
+    return t;
+}
+
+// A line the test holds: records what the driver writes, answers what the test says.
+class FakeLine : public driver::Transport
+{
+public:
+    void open() override
+    {
+        QTimer::singleShot(0, this, [this] {
+            m_open = true;
+            emit opened();
+        });
+    }
+    void close() override
+    {
+        if (std::exchange(m_open, false))
+            emit closed(QString());
+    }
+    void write(const QByteArray &bytes) override { written += bytes; }
+    bool isOpen() const override { return m_open; }
+    QString description() const override { return QStringLiteral("a line of the test"); }
+    void pullOut()
+    {
+        m_open = false;
+        emit closed(QStringLiteral("USB adapter pulled out"));
+    }
+    QByteArray written;
+
+private:
+    bool m_open = false;
+};
+
+} // namespace
+
+class ReplayPtyTest : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void cleanup();
+    void gveEmuAnswersAsRecorded();
+    void gveEmuNamesTheLineOfAnotherCommand();
+    void linkWorkerConnectsToAReplay();
+    void linkWorkerRecordsAndSavesOnAnAlarm();
+
+private:
+    void start(const QString &trace);
+    QByteArray ask(const QByteArray &command);
+
+    QProcess *m_process = nullptr;
+    QSerialPort *m_port = nullptr;
+    QByteArray m_rx;
+};
+
+void ReplayPtyTest::start(const QString &trace)
+{
+    m_rx.clear();
+    m_process = new QProcess(this);
+    m_process->setProgram(QStringLiteral(GVE_EMU_PATH));
+    m_process->setArguments({QStringLiteral("--replay"), QStringLiteral(TRACES_DIR "/") + trace});
+    m_process->start();
+    QVERIFY(m_process->waitForStarted(kPatienceMs));
+    QTRY_VERIFY_WITH_TIMEOUT(m_process->canReadLine(), kPatienceMs);
+    const QString path = QString::fromLocal8Bit(m_process->readLine()).trimmed();
+    QVERIFY2(path.startsWith(QLatin1String("/dev/pts/")), qPrintable(path));
+    m_port = new QSerialPort(path, this);
+    m_port->setBaudRate(115200);
+    QVERIFY2(m_port->open(QIODevice::ReadWrite), qPrintable(m_port->errorString()));
+    connect(m_port, &QSerialPort::readyRead, this, [this] { m_rx += m_port->readAll(); });
+}
+
+void ReplayPtyTest::cleanup()
+{
+    delete m_port;
+    m_port = nullptr;
+    if (m_process) {
+        m_process->terminate();
+        m_process->waitForFinished(kPatienceMs);
+        delete m_process;
+        m_process = nullptr;
+    }
+}
+
+QByteArray ReplayPtyTest::ask(const QByteArray &command)
+{
+    m_rx.clear();
+    m_port->write(command);
+    if (!QTest::qWaitFor([this] { return m_rx.endsWith('\r'); }, kPatienceMs))
+        return {};
+    return m_rx;
+}
+
+void ReplayPtyTest::gveEmuAnswersAsRecorded()
+{
+    const emulator::SerialTrace trace = readTrace(QStringLiteral("connect-gve84.trace"));
+    start(QStringLiteral("connect-gve84.trace"));
+    // Each run of commands (a packet is several) and the unit lines recorded after it.
+    const auto &e = trace.entries;
+    int replies = 0;
+    for (std::size_t i = 0; i < e.size();) {
+        QByteArray commands, expected;
+        for (; i < e.size() && e[i].direction != emulator::TraceDirection::ToPc; ++i) {
+            if (e[i].direction == emulator::TraceDirection::ToUnit)
+                commands += QByteArray::fromStdString(e[i].bytes);
+        }
+        for (; i < e.size() && e[i].direction != emulator::TraceDirection::ToUnit; ++i) {
+            if (e[i].direction == emulator::TraceDirection::ToPc)
+                expected += QByteArray::fromStdString(e[i].bytes);
+        }
+        m_rx.clear();
+        m_port->write(commands);
+        if (expected.isEmpty())
+            break; // the record ends with commands whose reply it did not keep
+        QTRY_VERIFY_WITH_TIMEOUT(m_rx.size() >= expected.size(), kPatienceMs);
+        QCOMPARE(m_rx, expected);
+        ++replies;
+    }
+    QVERIFY(replies > 10);
+    QByteArray err;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        (err += m_process->readAllStandardError()).contains("the trace was played to its end"),
+        kPatienceMs);
+    QCOMPARE(m_process->state(), QProcess::Running);
+}
+
+void ReplayPtyTest::gveEmuNamesTheLineOfAnotherCommand()
+{
+    const emulator::SerialTrace trace = readTrace(QStringLiteral("connect-gve64.trace"));
+    start(QStringLiteral("connect-gve64.trace"));
+    const emulator::TraceEntry &first = trace.entries[1]; // entry 0: the mode event
+    QCOMPARE(first.direction, emulator::TraceDirection::ToUnit);
+    QCOMPARE(ask(QByteArray::fromStdString(first.bytes)),
+             QByteArray::fromStdString(trace.entries[2].bytes));
+    m_port->write("!0J\r"); // the record goes on with '?'
+    QTRY_VERIFY_WITH_TIMEOUT(m_process->state() == QProcess::NotRunning, kPatienceMs);
+    QCOMPARE(m_process->exitCode(), 3);
+    const QString err = QString::fromLocal8Bit(m_process->readAllStandardError());
+    const QString expected =
+        QStringLiteral("trace line %1: expected '%2', got '!0J\\r'")
+            .arg(trace.entries[3].fileLine)
+            .arg(QString::fromStdString(emulator::escapeTraceBytes(trace.entries[3].bytes)));
+    QVERIFY2(err.contains(expected), qPrintable(err + QStringLiteral(" / ") + expected));
+}
+
+void ReplayPtyTest::linkWorkerConnectsToAReplay()
+{
+    driver::TraceRecorder::session().setLimitBytes(0); // only the replay on this link
+    driver::LinkWorker worker;
+    worker.setMachineConfig(machine::defaultMachineConfig(protocol::Variant::Gve114));
+    driver::ReplayTransport *replay = nullptr;
+    worker.setTransportFactory([&](const driver::ConnectionSettings &,
+                                   const machine::MachineConfig &, QObject *parent, QString *) {
+        replay = new driver::ReplayTransport(readTrace(QStringLiteral("connect-gve114.trace")),
+                                             QStringLiteral("connect-gve114.trace"), parent);
+        return replay;
+    });
+    driver::MachineMode mode = driver::MachineMode::Disconnected;
+    connect(&worker, &driver::LinkWorker::stateChanged, this,
+            [&](const driver::MachineState &s) { mode = s.mode; });
+    worker.connectTo({});
+    QTRY_VERIFY_WITH_TIMEOUT(mode == driver::MachineMode::Idle, kPatienceMs);
+    QVERIFY(replay);
+    QVERIFY2(!replay->replay().divergence(),
+             emulator::englishText(replay->replay().divergence()).c_str());
+    QTRY_VERIFY_WITH_TIMEOUT(replay->replay().finished(), kPatienceMs);
+    driver::TraceRecorder::session().setLimitBytes(driver::TraceRecorder::kDefaultLimitBytes);
+}
+
+void ReplayPtyTest::linkWorkerRecordsAndSavesOnAnAlarm()
+{
+    QTemporaryDir state;
+    qputenv("XDG_STATE_HOME", state.path().toLocal8Bit());
+    driver::TraceRecorder::session().setLimitBytes(driver::TraceRecorder::kDefaultLimitBytes);
+    driver::LinkWorker worker;
+    QStringList log;
+    connect(&worker, &driver::LinkWorker::logLine, this, [&](const QString &l) { log << l; });
+    // The default factory around a line this test holds: it answers the first command, then the
+    // adapter is pulled out.
+    FakeLine *line = nullptr;
+    worker.setTransportFactory([&](const driver::ConnectionSettings &s,
+                                   const machine::MachineConfig &c, QObject *parent, QString *e) {
+        driver::Transport *t = driver::createTransport(s, c, parent, e);
+        auto *traced = qobject_cast<driver::TracingTransport *>(t);
+        line = new FakeLine;
+        auto *replaced = new driver::TracingTransport(line, driver::TraceRecorder::session(),
+                                                      {{"variant", "gve64"}}, parent);
+        replaced->observe(&worker);
+        delete traced;
+        return replaced;
+    });
+    QSignalSpy errors(&worker, &driver::LinkWorker::errorOccurred);
+    worker.connectTo({});
+    QTRY_VERIFY_WITH_TIMEOUT(line && line->written.contains("!0%+\r"), kPatienceMs);
+    emit line->bytesReceived("0,5C\r");
+    QTRY_VERIFY_WITH_TIMEOUT(line->written.contains("!0?"), kPatienceMs);
+    line->pullOut();
+    QTRY_VERIFY_WITH_TIMEOUT(errors.count() > 0, kPatienceMs);
+    const QString folder = driver::TraceRecorder::alarmFolder();
+    QVERIFY2(folder.startsWith(state.path()), qPrintable(folder));
+    QTRY_VERIFY_WITH_TIMEOUT(!QDir(folder).entryList(QDir::Files).isEmpty(), kPatienceMs);
+    const QStringList files = QDir(folder).entryList(QDir::Files);
+    QCOMPARE(files.size(), 1); // one alarm, one file: its error and its closed link together
+    QFile f(folder + QLatin1Char('/') + files.first());
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    emulator::SerialTrace saved;
+    emulator::TraceMessage bad;
+    QVERIFY(emulator::parseTrace(f.readAll().toStdString(), saved, bad));
+    QCOMPARE(saved.value("variant"), std::string("gve64"));
+    QCOMPARE(saved.value("port"), std::string("a line of the test"));
+    std::vector<std::string> lines; // the wire both ways, then the events
+    for (const auto &e : saved.entries) {
+        if (e.direction != emulator::TraceDirection::Event)
+            lines.push_back(
+                std::string(e.direction == emulator::TraceDirection::ToUnit ? "> " : "< ") +
+                e.bytes);
+    }
+    for (const auto &e : saved.entries) {
+        if (e.direction == emulator::TraceDirection::Event)
+            lines.push_back("= " + e.bytes);
+    }
+    QVERIFY(lines.size() >= 5);
+    QCOMPARE(lines[0], std::string("> !0%+\r"));
+    QCOMPARE(lines[1], std::string("< 0,5C\r"));
+    QCOMPARE(lines[2].substr(0, 5), std::string("> !0?"));
+    QVERIFY(std::find(lines.begin(), lines.end(), "= link closed: USB adapter pulled out") !=
+            lines.end());
+    QVERIFY(log.join(QLatin1Char('\n')).contains(QStringLiteral("serial trace saved to ")));
+}
+
+QTEST_GUILESS_MAIN(ReplayPtyTest)
+#include "replay_pty_test.moc"
