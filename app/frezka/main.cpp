@@ -5,6 +5,7 @@
 #include "gui/language.h"
 #include "gui/mainwindow.h"
 #include "gui/programview.h"
+#include "gui/settingsdialog.h"
 
 #include "driver/link/machinecontroller.h"
 #include "driver/link/tracerecorder.h"

@@ -62,8 +62,13 @@ void TracingTransport::noteState(const MachineState &state)
         state.mode != MachineMode::Stopping)
         m_alarmSaved = false; // the next alarm is a new one: save again
     m_recorder.note(traceModeEvent(state.mode), now());
-    if (state.mode == MachineMode::Alarm)
-        saveAlarm(traceModeEvent(state.mode));
+    // An alarm: the machine needs the operator, or an input (the STOP button, a limit) or the
+    // path guard stopped the job.
+    const bool stopped =
+        state.mode == MachineMode::Paused &&
+        (state.hold == HoldReason::Interrupt || state.hold == HoldReason::PathFault);
+    if (state.mode == MachineMode::Alarm || stopped)
+        saveAlarm(traceModeEvent(state.mode) + (stopped ? ": " + state.holdText : std::string()));
 }
 
 void TracingTransport::noteError(const MachineError &error)
