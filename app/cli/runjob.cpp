@@ -251,7 +251,8 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     const auto &variant = protocol::variantInfo(config.unit.variant);
     recorder.begin({{"variant", std::string(variant.id)},
                     {"baud", std::to_string(wire.baud)},
-                    {"port", "built-in emulator, virtual clock"}},
+                    {"port", "built-in emulator"},
+                    {"clock", "virtual"}},
                    0);
     session::SimLink link(config, unit, wire, options, nullptr,
                           a.traceFile.isEmpty() ? nullptr : &recorder);

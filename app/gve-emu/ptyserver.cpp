@@ -149,7 +149,8 @@ void PtyServer::log(const char *direction, const std::string &bytes) const
 
 void PtyServer::setReplay(emulator::SerialTrace trace)
 {
-    m_replay = std::make_unique<emulator::TraceReplay>(std::move(trace));
+    // The driver's polls come when its wall clock says: free (emulator::TraceReplay).
+    m_replay = std::make_unique<emulator::TraceReplay>(std::move(trace), true);
 }
 
 double PtyServer::farNow() const

@@ -13,8 +13,9 @@ std::int64_t nsOfMs(double ms)
 
 } // namespace
 
-TraceReplay::TraceReplay(SerialTrace trace)
+TraceReplay::TraceReplay(SerialTrace trace, bool freePolls)
     : m_trace(std::move(trace))
+    , m_freePolls(freePolls)
 {
     scheduleReplies(0); // what the unit said before the first command (a banner, a stray byte)
 }
@@ -71,9 +72,20 @@ void TraceReplay::onLine(const std::string &line)
                  escapeTraceBytes(reply.bytes)});
         return;
     }
-    if (m_next >= m_trace.entries.size()) {
+    if (!m_freePolls && m_next >= m_trace.entries.size()) {
         ++m_afterEnd;
         return;
+    }
+    if (m_freePolls) {
+        skipPollsExpected(line);
+        if (m_next >= m_trace.entries.size() || m_trace.entries[m_next].bytes != line) {
+            if (isRoutinePoll(line) && answerPoll(line))
+                return;
+        }
+        if (m_next >= m_trace.entries.size()) {
+            ++m_afterEnd;
+            return;
+        }
     }
     const TraceEntry &expected = m_trace.entries[m_next];
     if (expected.bytes != line) {
@@ -87,6 +99,66 @@ void TraceReplay::onLine(const std::string &line)
     }
     ++m_next;
     scheduleReplies(expected.timeMs);
+}
+
+bool TraceReplay::isRoutinePoll(std::string_view line)
+{
+    if (line.size() < 4 || line.substr(0, 2) != "!0")
+        return false;
+    const std::string_view body = line.substr(2, line.find_first_of(",\r") - 2);
+    return body == "P" || body == "PF" || body == "P4" || body == "F" || body == "I1" ||
+           body == "I2";
+}
+
+// The index after entry `i`'s unit lines (and events).
+std::size_t TraceReplay::afterReplies(std::size_t i) const
+{
+    for (++i; i < m_trace.entries.size() && m_trace.entries[i].direction != TraceDirection::ToUnit;)
+        ++i;
+    return i;
+}
+
+// Free polls: a poll the record has next but the driver did not send (now) is passed over,
+// with its replies, while the driver's line is not that poll.
+void TraceReplay::skipPollsExpected(const std::string &line)
+{
+    for (skipEvents(); m_next < m_trace.entries.size(); skipEvents()) {
+        const TraceEntry &e = m_trace.entries[m_next];
+        if (e.direction != TraceDirection::ToUnit || e.bytes == line || !isRoutinePoll(e.bytes))
+            return;
+        m_next = afterReplies(m_next);
+    }
+}
+
+// Free polls: a poll the record does not have here is answered as the unit answered the same
+// poll last before this point of the record (or first after it), with that reply's delay.
+bool TraceReplay::answerPoll(const std::string &line)
+{
+    std::size_t found = m_trace.entries.size();
+    for (std::size_t i = std::min(m_next, m_trace.entries.size()); i-- > 0;) {
+        if (m_trace.entries[i].direction == TraceDirection::ToUnit &&
+            m_trace.entries[i].bytes == line) {
+            found = i;
+            break;
+        }
+    }
+    for (std::size_t i = m_next; found == m_trace.entries.size() && i < m_trace.entries.size();
+         ++i) {
+        if (m_trace.entries[i].direction == TraceDirection::ToUnit &&
+            m_trace.entries[i].bytes == line)
+            found = i;
+    }
+    if (found == m_trace.entries.size())
+        return false;
+    const std::int64_t anchor = nsOfMs(m_trace.entries[found].timeMs);
+    const std::size_t end = afterReplies(found);
+    for (std::size_t i = found + 1; i < end; ++i) {
+        const TraceEntry &e = m_trace.entries[i];
+        if (e.direction == TraceDirection::ToPc)
+            m_due.push_back({m_nowNs + std::max<std::int64_t>(0, nsOfMs(e.timeMs) - anchor), i});
+    }
+    ++m_pollsAnsweredFree;
+    return true;
 }
 
 std::string TraceReplay::pcRead()
@@ -116,8 +188,15 @@ void TraceReplay::advance(double seconds)
 bool TraceReplay::finished() const
 {
     std::size_t i = m_next;
-    while (i < m_trace.entries.size() && m_trace.entries[i].direction == TraceDirection::Event)
-        ++i;
+    while (i < m_trace.entries.size()) {
+        const TraceEntry &e = m_trace.entries[i];
+        if (e.direction == TraceDirection::Event)
+            ++i;
+        else if (m_freePolls && e.direction == TraceDirection::ToUnit && isRoutinePoll(e.bytes))
+            i = afterReplies(i); // polls the driver need not send at the end
+        else
+            break;
+    }
     return !m_divergence && m_due.empty() && i >= m_trace.entries.size();
 }
 

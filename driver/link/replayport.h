@@ -10,8 +10,9 @@ namespace frezka::driver {
 class ReplayPort : public VirtualPort
 {
 public:
-    explicit ReplayPort(emulator::SerialTrace trace)
-        : m_replay(std::move(trace))
+    // freePolls: see emulator::TraceReplay.
+    explicit ReplayPort(emulator::SerialTrace trace, bool freePolls = false)
+        : m_replay(std::move(trace), freePolls)
     {}
 
     void write(std::string_view bytes) override { m_replay.pcWrite(bytes); }

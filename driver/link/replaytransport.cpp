@@ -19,7 +19,7 @@ QString translatedTraceMessage(const emulator::TraceMessage &message)
 
 ReplayTransport::ReplayTransport(emulator::SerialTrace trace, QString name, QObject *parent)
     : Transport(parent)
-    , m_replay(std::move(trace))
+    , m_replay(std::move(trace), true)
     , m_name(std::move(name))
 {}
 

@@ -1,8 +1,9 @@
 #pragma once
 // ReplayTransport: a recorded unit (emulator::TraceReplay) in real time, for the link worker:
 // each recorded reply comes as long after the driver's matching command as it did in the
-// record. A divergence from the record closes the transport with the trace line, what it
-// expected and what the driver sent.
+// record. Its polls are free (emulator::TraceReplay): on the wall clock they cannot come where
+// the record has them. A divergence from the record closes the transport with the trace line,
+// what it expected and what the driver sent.
 
 #include "driver/emulator/tracereplay.h"
 #include "driver/link/transport.h"

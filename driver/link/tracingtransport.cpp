@@ -18,6 +18,7 @@ TracingTransport::TracingTransport(Transport *inner, TraceRecorder &recorder,
     m_inner->setParent(this);
     connect(m_inner, &Transport::opened, this, [this] {
         m_header.emplace_back("port", m_inner->description().toStdString());
+        m_header.emplace_back("clock", "real");
         m_recorder.begin(m_header, now());
         emit opened();
     });

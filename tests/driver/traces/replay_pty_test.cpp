@@ -13,6 +13,7 @@
 #include <QDir>
 #include <QFile>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSerialPort>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -79,10 +80,13 @@ private slots:
     void gveEmuAnswersAsRecorded();
     void gveEmuNamesTheLineOfAnotherCommand();
     void linkWorkerConnectsToAReplay();
+    void aJobRecordedInRealTimeRunsAgainstItsReplay();
     void linkWorkerRecordsAndSavesOnAnAlarm();
 
 private:
-    void start(const QString &trace);
+    // gve-emu --replay trace (a name in tests/driver/traces/ or a path); the pty opened here
+    // unless openPort is false (another program opens it). Returns the pty's path.
+    QString start(const QString &trace, bool openPort = true);
     QByteArray ask(const QByteArray &command);
 
     QProcess *m_process = nullptr;
@@ -90,21 +94,27 @@ private:
     QByteArray m_rx;
 };
 
-void ReplayPtyTest::start(const QString &trace)
+QString ReplayPtyTest::start(const QString &trace, bool openPort)
 {
     m_rx.clear();
     m_process = new QProcess(this);
     m_process->setProgram(QStringLiteral(GVE_EMU_PATH));
-    m_process->setArguments({QStringLiteral("--replay"), QStringLiteral(TRACES_DIR "/") + trace});
+    m_process->setArguments(
+        {QStringLiteral("--replay"),
+         trace.startsWith(QLatin1Char('/')) ? trace : QStringLiteral(TRACES_DIR "/") + trace});
     m_process->start();
-    QVERIFY(m_process->waitForStarted(kPatienceMs));
-    QTRY_VERIFY_WITH_TIMEOUT(m_process->canReadLine(), kPatienceMs);
+    if (!m_process->waitForStarted(kPatienceMs) ||
+        !QTest::qWaitFor([this] { return m_process->canReadLine(); }, kPatienceMs))
+        return {};
     const QString path = QString::fromLocal8Bit(m_process->readLine()).trimmed();
-    QVERIFY2(path.startsWith(QLatin1String("/dev/pts/")), qPrintable(path));
+    if (!path.startsWith(QLatin1String("/dev/pts/")) || !openPort)
+        return path;
     m_port = new QSerialPort(path, this);
     m_port->setBaudRate(115200);
-    QVERIFY2(m_port->open(QIODevice::ReadWrite), qPrintable(m_port->errorString()));
+    if (!m_port->open(QIODevice::ReadWrite))
+        return {};
     connect(m_port, &QSerialPort::readyRead, this, [this] { m_rx += m_port->readAll(); });
+    return path;
 }
 
 void ReplayPtyTest::cleanup()
@@ -131,7 +141,7 @@ QByteArray ReplayPtyTest::ask(const QByteArray &command)
 void ReplayPtyTest::gveEmuAnswersAsRecorded()
 {
     const emulator::SerialTrace trace = readTrace(QStringLiteral("connect-gve84.trace"));
-    start(QStringLiteral("connect-gve84.trace"));
+    QVERIFY(!start(QStringLiteral("connect-gve84.trace")).isEmpty());
     // Each run of commands (a packet is several) and the unit lines recorded after it.
     const auto &e = trace.entries;
     int replies = 0;
@@ -164,7 +174,7 @@ void ReplayPtyTest::gveEmuAnswersAsRecorded()
 void ReplayPtyTest::gveEmuNamesTheLineOfAnotherCommand()
 {
     const emulator::SerialTrace trace = readTrace(QStringLiteral("connect-gve64.trace"));
-    start(QStringLiteral("connect-gve64.trace"));
+    QVERIFY(!start(QStringLiteral("connect-gve64.trace")).isEmpty());
     const emulator::TraceEntry &first = trace.entries[1]; // entry 0: the mode event
     QCOMPARE(first.direction, emulator::TraceDirection::ToUnit);
     QCOMPARE(ask(QByteArray::fromStdString(first.bytes)),
@@ -263,6 +273,50 @@ void ReplayPtyTest::linkWorkerRecordsAndSavesOnAnAlarm()
     QVERIFY(std::find(lines.begin(), lines.end(), "= link closed: USB adapter pulled out") !=
             lines.end());
     QVERIFY(log.join(QLatin1Char('\n')).contains(QStringLiteral("serial trace saved to ")));
+}
+
+// The whole way of a trace from a session to a test: frezka-cli runs a job on the built-in
+// emulator in real time and saves the trace; gve-emu --replay plays that unit on a pty and
+// frezka-cli runs the same job there to its end, the replay matching every command (its polls
+// free). The same trace under another program ends gve-emu naming the trace line.
+void ReplayPtyTest::aJobRecordedInRealTimeRunsAgainstItsReplay()
+{
+    QTemporaryDir dir;
+    const QString trace = dir.filePath(QStringLiteral("job.trace"));
+    const QString job = QStringLiteral(TRACES_DIR "/short-job.nc");
+    auto cli = [](const QStringList &args, QString *err) {
+        QProcess p;
+        p.start(QStringLiteral(FREZKA_CLI_PATH), args);
+        p.waitForFinished(120000);
+        *err = QString::fromLocal8Bit(p.readAllStandardError());
+        return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    };
+    QString err;
+    QCOMPARE(cli({QStringLiteral("run"), job, QStringLiteral("--clock"), QStringLiteral("real"),
+                  QStringLiteral("--trace"), trace},
+                 &err),
+             0);
+    QVERIFY2(err.contains(QStringLiteral("serial trace saved to")), qPrintable(err));
+    QString pty = start(trace, false);
+    QVERIFY(!pty.isEmpty());
+    QCOMPARE(cli({QStringLiteral("run"), job, QStringLiteral("--port"), pty}, &err), 0);
+    QByteArray emu;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        (emu += m_process->readAllStandardError()).contains("the trace was played to its end"),
+        kPatienceMs);
+    QCOMPARE(m_process->state(), QProcess::Running);
+    cleanup();
+
+    pty = start(trace, false);
+    QVERIFY(!pty.isEmpty());
+    QVERIFY(cli({QStringLiteral("run"), QStringLiteral(TRACES_DIR "/slow-job.nc"),
+                 QStringLiteral("--port"), pty},
+                &err) != 0);
+    QTRY_VERIFY_WITH_TIMEOUT(m_process->state() == QProcess::NotRunning, kPatienceMs);
+    QCOMPARE(m_process->exitCode(), 3);
+    const QString why = QString::fromLocal8Bit(m_process->readAllStandardError());
+    QVERIFY2(why.contains(QRegularExpression(QStringLiteral("trace line \\d+: expected '"))),
+             qPrintable(why));
 }
 
 QTEST_GUILESS_MAIN(ReplayPtyTest)

@@ -128,6 +128,43 @@ TEST(TraceReplay, ACommandBeforeTheRecordedReplyIsADivergence)
     EXPECT_EQ(r.divergence().line, 4);
 }
 
+// A record made on the wall clock: the driver's polls come where its own clock puts them.
+TEST(TraceReplay, FreePollsMayComeElsewhereOtherCommandsMayNot)
+{
+    const std::string text = kHead + "0 > !0P4,01\\r\n1 < 0,5,0,0,0,AA\\r\n"
+                                     "2 > !0F,C3\\r\n3 < 0,40,E8\\r\n"
+                                     "4 > !0L10,0,0,6C\\r\n5 < 0,5C\\r\n"
+                                     "6 > !0P4,01\\r\n7 < 0,15,0,0,0,AB\\r\n";
+    {
+        emulator::TraceReplay strict(parsed(text));
+        strict.pcWrite("!0L10,0,0,6C\r"); // the driver did not poll first
+        EXPECT_TRUE(strict.divergence());
+    }
+    emulator::TraceReplay r(parsed(text), true);
+    r.pcWrite("!0L10,0,0,6C\r"); // the polls before it are passed over
+    r.advance(0.001);
+    EXPECT_EQ(r.pcRead(), "0,5C\r");
+    r.pcWrite("!0F,C3\r"); // a poll the record has not here: answered as last recorded
+    r.advance(0.001);
+    EXPECT_EQ(r.pcRead(), "0,40,E8\r");
+    EXPECT_EQ(r.pollsAnsweredFree(), 1);
+    EXPECT_TRUE(r.finished()); // the last poll of the record need not come
+    r.pcWrite("!0P4,01\r");
+    r.advance(0.001);
+    EXPECT_EQ(r.pcRead(), "0,15,0,0,0,AB\r");
+    EXPECT_TRUE(r.finished());
+    r.pcWrite("!0D\r"); // after the end: not an error
+    r.pcWrite("!0L1,0,0,00\r");
+    EXPECT_FALSE(r.divergence());
+    emulator::TraceReplay other(parsed(text), true);
+    other.pcWrite("!0L11,0,0,6D\r"); // another move is never free
+    ASSERT_TRUE(other.divergence());
+    EXPECT_EQ(other.divergence().line, 7);
+    EXPECT_TRUE(emulator::TraceReplay::isRoutinePoll("!0PF,13\r"));
+    EXPECT_FALSE(emulator::TraceReplay::isRoutinePoll("!0P4X\r"));
+    EXPECT_FALSE(emulator::TraceReplay::isRoutinePoll("!7F\r"));
+}
+
 TEST(TraceRecorder, CutsLinesAtCrAndKeepsTheNewestWithinItsLimit)
 {
     driver::TraceRecorder rec;

@@ -158,6 +158,73 @@ bool driveOperation(const SerialTrace &recipe, const std::string &dir, VirtualPo
     return ok;
 }
 
+// A record on the virtual clock: the driver shows exactly the recorded events, in order.
+bool sameEvents(const SerialTrace &trace, const std::vector<std::string> &seen, std::string &error)
+{
+    std::size_t next = 0;
+    for (const TraceEntry &e : trace.entries) {
+        if (e.direction != TraceDirection::Event)
+            continue;
+        if (next >= seen.size() || seen[next] != e.bytes) {
+            error = "trace line " + std::to_string(e.fileLine) + ": the trace shows '" + e.bytes +
+                    "', the driver showed " +
+                    (next < seen.size() ? "'" + seen[next] + "'" : std::string("nothing more"));
+            return false;
+        }
+        ++next;
+    }
+    if (next < seen.size()) {
+        error = "the driver showed '" + seen[next] + "' after the trace's last event";
+        return false;
+    }
+    return true;
+}
+
+// A record on the wall clock was noted from the link worker's snapshots, which merge changes
+// that come quickly one after the other (Idle between connecting and a job the front end started
+// at once), and goes on after the operation (the front end disconnected): the events it has up
+// to its last wire line must come in order among the driver's, and the errors must be the same.
+bool recordedEventsShown(const SerialTrace &trace, const std::vector<std::string> &seen,
+                         std::string &error)
+{
+    std::size_t lastWire = 0;
+    for (std::size_t i = 0; i < trace.entries.size(); ++i) {
+        if (trace.entries[i].direction != TraceDirection::Event)
+            lastWire = i;
+    }
+    std::size_t next = 0;
+    std::vector<std::string> recordedErrors, seenErrors;
+    for (std::size_t i = 0; i < trace.entries.size(); ++i) {
+        const TraceEntry &e = trace.entries[i];
+        if (e.direction != TraceDirection::Event)
+            continue;
+        if (e.bytes.rfind("error ", 0) == 0)
+            recordedErrors.push_back(e.bytes);
+        if (i > lastWire)
+            continue;
+        while (next < seen.size() && seen[next] != e.bytes)
+            ++next;
+        if (next >= seen.size()) {
+            error = "trace line " + std::to_string(e.fileLine) + ": the trace shows '" + e.bytes +
+                    "', the driver did not show it";
+            return false;
+        }
+        ++next;
+    }
+    for (const std::string &s : seen) {
+        if (s.rfind("error ", 0) == 0)
+            seenErrors.push_back(s);
+    }
+    if (seenErrors != recordedErrors) {
+        error = "the driver showed " + std::to_string(seenErrors.size()) + " errors (" +
+                (seenErrors.empty() ? std::string() : seenErrors.front()) + "), the trace " +
+                std::to_string(recordedErrors.size()) + " (" +
+                (recordedErrors.empty() ? std::string() : recordedErrors.front()) + ")";
+        return false;
+    }
+    return true;
+}
+
 } // namespace
 
 bool recordTrace(const SerialTrace &recipe, const std::string &dir, SerialTrace &out,
@@ -187,12 +254,15 @@ bool recordTrace(const SerialTrace &recipe, const std::string &dir, SerialTrace 
         if (k != "frezka" && k != "started")
             out.set(k, v);
     }
+    out.set("clock", "virtual");
     return ok;
 }
 
 bool replayTrace(const SerialTrace &trace, const std::string &dir, std::string &error)
 {
-    ReplayPort port(trace);
+    // A record made on the virtual clock replays instant for instant: every poll where it was.
+    // One made on the wall clock has its polls where the wall clock put them: they are free.
+    ReplayPort port(trace, trace.value("clock") != "virtual");
     std::vector<std::string> seen;
     const bool ok = driveOperation(
         trace, dir, port, [&](const std::string &e) { seen.push_back(e); },
@@ -209,21 +279,9 @@ bool replayTrace(const SerialTrace &trace, const std::string &dir, std::string &
         error += after;
         return false;
     }
-    std::size_t next = 0;
-    for (const TraceEntry &e : trace.entries) {
-        if (e.direction != TraceDirection::Event)
-            continue;
-        if (next >= seen.size() || seen[next] != e.bytes) {
-            error = "trace line " + std::to_string(e.fileLine) + ": the trace shows '" + e.bytes +
-                    "', the driver showed " +
-                    (next < seen.size() ? "'" + seen[next] + "'" : std::string("nothing more")) +
-                    after;
-            return false;
-        }
-        ++next;
-    }
-    if (next < seen.size()) {
-        error = "the driver showed '" + seen[next] + "' after the trace's last event" + after;
+    if (!(trace.value("clock") == "virtual" ? sameEvents(trace, seen, error)
+                                            : recordedEventsShown(trace, seen, error))) {
+        error += after;
         return false;
     }
     if (!replay.finished()) {
