@@ -239,7 +239,7 @@ void SettingsDialog::retranslate()
     m_traceMb->setSpecialValueText(tr("off"));
     m_traceMb->setToolTip(tr("The last part of the serial line, both ways, saved with Machine › "
                              "Save serial trace and by itself on an alarm into %1")
-                              .arg(driver::TraceRecorder::alarmFolder()));
+                              .arg(driver::TraceRecorder::defaultAlarmFolder()));
     m_units->setItemText(0, tr("millimetres (mm)"));
     m_units->setItemText(1, tr("inches (in)"));
     m_units->setToolTip(tr("The DRO, the jog steps and feed, the status panel and the speed plot. "

@@ -80,6 +80,8 @@ int main(int argc, char *argv[])
     frezka::app::installTranslator();
     frezka::driver::TraceRecorder::session().setProgramVersion(std::string("Frezka ") +
                                                                frezka::app::versionString());
+    frezka::driver::TraceRecorder::session().setAlarmFolder(
+        frezka::driver::TraceRecorder::defaultAlarmFolder());
     QStringList args = app.arguments().mid(1);
     if (args.isEmpty()) {
         err(usageText());

@@ -69,6 +69,8 @@ int main(int argc, char **argv)
     QApplication::setApplicationVersion(QString::fromUtf8(frezka::app::versionString()));
     frezka::driver::TraceRecorder::session().setProgramVersion(std::string("Frezka ") +
                                                                frezka::app::versionString());
+    frezka::driver::TraceRecorder::session().setAlarmFolder(
+        frezka::driver::TraceRecorder::defaultAlarmFolder());
     frezka::gui::applyLanguage(
         frezka::gui::effectiveLanguage(QSettings().value(QStringLiteral("language")).toString()));
 

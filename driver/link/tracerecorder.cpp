@@ -164,7 +164,19 @@ bool TraceRecorder::save(const QString &path, QString *error) const
     return true;
 }
 
-QString TraceRecorder::alarmFolder()
+void TraceRecorder::setAlarmFolder(const QString &folder)
+{
+    std::lock_guard lock(m_mutex);
+    m_alarmFolder = folder;
+}
+
+QString TraceRecorder::alarmFolder() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_alarmFolder;
+}
+
+QString TraceRecorder::defaultAlarmFolder()
 {
     QString state = qEnvironmentVariable("XDG_STATE_HOME");
     if (state.isEmpty())
@@ -174,10 +186,11 @@ QString TraceRecorder::alarmFolder()
 
 QString TraceRecorder::saveAlarm(QString *error) const
 {
-    if (!enabled())
+    const QString folder = alarmFolder();
+    if (!enabled() || folder.isEmpty())
         return {};
     const QString path =
-        alarmFolder() +
+        folder +
         QStringLiteral("/trace-%1.txt")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz")));
     return save(path, error) ? path : QString();

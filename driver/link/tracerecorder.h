@@ -61,10 +61,14 @@ public:
     // Writes snapshot() to `path` (folders created). False with the reason, translated.
     bool save(const QString &path, QString *error) const;
     // Saves into alarmFolder() as trace-YYYYMMDD-hhmmss-zzz.txt; the path, or empty when
-    // recording is off or the file cannot be written (the reason in *error).
+    // recording is off, no folder is set, or the file cannot be written (the reason in *error).
     QString saveAlarm(QString *error) const;
-    // Where saveAlarm writes: $XDG_STATE_HOME/frezka/traces (~/.local/state/frezka/traces).
-    static QString alarmFolder();
+    // Where saveAlarm writes; empty (the default) = nowhere. The front ends set
+    // defaultAlarmFolder(); tests and other users of the driver leave the user's folders alone.
+    void setAlarmFolder(const QString &folder);
+    QString alarmFolder() const;
+    // $XDG_STATE_HOME/frezka/traces (~/.local/state/frezka/traces).
+    static QString defaultAlarmFolder();
 
 private:
     struct Open
@@ -85,6 +89,7 @@ private:
     std::int64_t m_dropped = 0;
     Open m_open[2]; // the line being received per direction: [0] to the unit, [1] to the PC
     double m_startS = 0;
+    QString m_alarmFolder;
 };
 
 } // namespace frezka::driver

@@ -20,6 +20,7 @@ TracingTransport::TracingTransport(Transport *inner, TraceRecorder &recorder,
         m_header.emplace_back("port", m_inner->description().toStdString());
         m_header.emplace_back("clock", "real");
         m_recorder.begin(m_header, now());
+        m_wasOpened = true;
         emit opened();
     });
     connect(m_inner, &Transport::bytesReceived, this, [this](const QByteArray &bytes) {
@@ -29,7 +30,7 @@ TracingTransport::TracingTransport(Transport *inner, TraceRecorder &recorder,
         emit bytesReceived(bytes);
     });
     connect(m_inner, &Transport::closed, this, [this](const QString &why) {
-        if (!why.isEmpty()) {
+        if (!why.isEmpty() && m_wasOpened) { // a port that never opened has no record
             m_recorder.note("link closed: " + why.toStdString(), now());
             saveAlarm(why.toStdString());
         }

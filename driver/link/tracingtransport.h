@@ -2,7 +2,7 @@
 // TracingTransport: a Transport that records both ways of another into a TraceRecorder (the
 // session's serial trace, docs/serial-trace.md) and passes everything through unchanged. The
 // link worker's snapshots and errors are noted as event entries (observe()), and an alarm
-// saves the record into TraceRecorder::alarmFolder() by itself.
+// saves the record into the recorder's alarm folder by itself (when the front end set one).
 
 #include "driver/link/tracerecorder.h"
 #include "driver/link/transport.h"
@@ -45,6 +45,7 @@ private:
     QElapsedTimer m_clock;
     MachineMode m_lastMode = MachineMode::Disconnected;
     bool m_alarmSaved = false;
+    bool m_wasOpened = false;
 };
 
 } // namespace frezka::driver

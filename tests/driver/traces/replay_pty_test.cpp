@@ -15,6 +15,7 @@
 #include <QFile>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QScopeGuard>
 #include <QSerialPort>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -220,6 +221,8 @@ void ReplayPtyTest::linkWorkerRecordsAndSavesOnAnAlarm()
 {
     QTemporaryDir state;
     qputenv("XDG_STATE_HOME", state.path().toLocal8Bit());
+    driver::TraceRecorder::session().setAlarmFolder(driver::TraceRecorder::defaultAlarmFolder());
+    auto noAlarmFolder = qScopeGuard([] { driver::TraceRecorder::session().setAlarmFolder({}); });
     driver::TraceRecorder::session().setLimitBytes(driver::TraceRecorder::kDefaultLimitBytes);
     driver::LinkWorker worker;
     QStringList log;
@@ -245,7 +248,7 @@ void ReplayPtyTest::linkWorkerRecordsAndSavesOnAnAlarm()
     QTRY_VERIFY_WITH_TIMEOUT(line->written.contains("!0?"), kPatienceMs);
     line->pullOut();
     QTRY_VERIFY_WITH_TIMEOUT(errors.count() > 0, kPatienceMs);
-    const QString folder = driver::TraceRecorder::alarmFolder();
+    const QString folder = driver::TraceRecorder::session().alarmFolder();
     QVERIFY2(folder.startsWith(state.path()), qPrintable(folder));
     QTRY_VERIFY_WITH_TIMEOUT(!QDir(folder).entryList(QDir::Files).isEmpty(), kPatienceMs);
     const QStringList files = QDir(folder).entryList(QDir::Files);
