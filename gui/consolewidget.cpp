@@ -1,5 +1,7 @@
 #include "consolewidget.h"
 
+#include "driver/link/tracerecorder.h"
+
 #include <QCheckBox>
 #include <QEvent>
 #include <QFile>
@@ -31,11 +33,21 @@ ConsoleWidget::ConsoleWidget(QWidget *parent)
     m_pollBox->setObjectName(QStringLiteral("consolePolls"));
     connect(m_pollBox, &QCheckBox::toggled, this, &ConsoleWidget::setShowPolls);
     m_save = new QPushButton(this);
+    // The serial trace first (both ways, timed, ASCII and hex: what a report of a problem
+    // needs, docs/serial-trace.md), the log as shown as the other choice.
     connect(m_save, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save log"), QString(),
-                                                          tr("Text files (*.txt *.log)"));
+        const QString traceFilter = tr("Serial trace (*.trace)");
+        QString chosen;
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Save log"), QString(),
+            traceFilter + QStringLiteral(";;") + tr("Console log as shown (*.txt *.log)"), &chosen);
+        if (path.isEmpty())
+            return;
         QString error;
-        if (!path.isEmpty() && !saveTo(path, &error))
+        const bool saved = chosen == traceFilter
+                               ? driver::TraceRecorder::session().save(path, &error)
+                               : saveTo(path, &error);
+        if (!saved)
             QMessageBox::warning(this, tr("Save log"), error);
     });
     m_clear = new QPushButton(this);

@@ -175,6 +175,7 @@ void MainWindow::buildMenus()
     m_unitConfigAction = m_machineMenu->addAction(QString(), this, [this] { openUnitConfig(); });
     buildToolTableAction();
     buildFromLineActions();
+    buildTraceAction();
 
     m_viewMenu = menuBar()->addMenu(QString());
     for (auto *d : {m_statusDock, m_droDock, m_runDock, m_jogDock, m_outputsDock, m_programDock,
@@ -234,6 +235,7 @@ void MainWindow::retranslate()
     m_toolTableAction->setText(tr("&Tool table…"));
     m_runFromLineAction->setText(tr("Run from &line…"));
     m_wholeProgramAction->setText(tr("Run the &whole program"));
+    m_saveTraceAction->setText(tr("Save serial &trace…"));
     m_viewMenu->setTitle(tr("&View"));
     m_resetLayoutAction->setText(tr("&Reset layout"));
     m_toolsMenu->setTitle(tr("&Tools"));

@@ -78,6 +78,9 @@ public:
     JogPanel *jogPanel() const { return m_jog; }
     OutputsPanel *outputsPanel() const { return m_outputs; }
     ConsoleWidget *console() const { return m_console; }
+    // Machine › Save serial trace… without its file dialog: the session's serial trace
+    // (driver/link/tracerecorder.h) to `path`; false with the reason, translated.
+    bool saveSerialTrace(const QString &path, QString *error) const;
     ProgramListing *listing() const { return m_listing; }
     SpeedPlot *speedPlot() const { return m_plot; }
     IoPanel *ioPanel() const { return m_io; }
@@ -197,6 +200,7 @@ private:
     void installShortcuts();
     void buildFromLineActions(); // Machine › Run from line…, Run the whole program
     void buildToolTableAction(); // Machine › Tool table…
+    void buildTraceAction();     // Machine › Save serial trace… (mainwindow_trace.cpp)
     void loadToolTable();        // the profile's table into the program session
     void writeBackToolTable();   // after a run: the table as the program's G10 L1.. left it
     // At an M6 hold: the tool's comment, length and diameter from the table (empty: none).
@@ -225,7 +229,7 @@ private:
     QAction *m_openAction, *m_reloadAction, *m_infoAction, *m_quitAction, *m_connectAction,
         *m_disconnectAction, *m_settingsAction, *m_unitConfigAction, *m_runFromLineAction,
         *m_wholeProgramAction, *m_aboutAction, *m_shortcutsAction,
-        *m_grinderAction = nullptr, *m_resetLayoutAction, *m_toolTableAction;
+        *m_grinderAction = nullptr, *m_resetLayoutAction, *m_toolTableAction, *m_saveTraceAction;
     ProgramSession *m_program;
     QFileSystemWatcher *m_watcher; // the loaded program's file
     bool m_reloadAfterJob = false; // it changed while its job ran: ask when the job ends

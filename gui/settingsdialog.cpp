@@ -6,6 +6,8 @@
 #include "profilestore.h"
 #include "shortcuteditor.h"
 
+#include "driver/link/tracerecorder.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -16,6 +18,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
@@ -76,6 +79,12 @@ QWidget *SettingsDialog::createProfilePage(const machine::MachineConfig &config)
     return profilePage;
 }
 
+void applyTraceSetting()
+{
+    const int mb = QSettings().value(kTraceKey, kTraceDefaultMb).toInt();
+    driver::TraceRecorder::session().setLimitBytes(std::int64_t{std::max(0, mb)} * 1024 * 1024);
+}
+
 // The application's own settings: the language and reconnecting by itself.
 QWidget *SettingsDialog::createApplicationPage()
 {
@@ -95,6 +104,15 @@ QWidget *SettingsDialog::createApplicationPage()
     m_reconnect->setChecked(QSettings().value(QStringLiteral("link/autoReconnect"), true).toBool());
     connect(m_reconnect, &QCheckBox::toggled, this,
             [](bool on) { QSettings().setValue(QStringLiteral("link/autoReconnect"), on); });
+    m_traceLabel = new QLabel(appPage);
+    m_traceMb = new QSpinBox(appPage);
+    m_traceMb->setObjectName(QStringLiteral("traceMb"));
+    m_traceMb->setRange(0, 1024);
+    m_traceMb->setValue(QSettings().value(kTraceKey, kTraceDefaultMb).toInt());
+    connect(m_traceMb, &QSpinBox::valueChanged, this, [](int mb) {
+        QSettings().setValue(kTraceKey, mb);
+        applyTraceSetting();
+    });
     m_unitsLabel = new QLabel(appPage);
     m_units = new QComboBox(appPage);
     m_units->setObjectName(QStringLiteral("displayUnits"));
@@ -108,6 +126,7 @@ QWidget *SettingsDialog::createApplicationPage()
     appForm->addRow(m_languageLabel, m_language);
     appForm->addRow(m_unitsLabel, m_units);
     appForm->addRow(m_reconnect);
+    appForm->addRow(m_traceLabel, m_traceMb);
     return appPage;
 }
 
@@ -215,6 +234,12 @@ void SettingsDialog::retranslate()
     m_language->setItemText(0, tr("System language"));
     m_reconnect->setText(tr("Reconnect automatically after a lost link"));
     m_unitsLabel->setText(tr("Lengths shown in"));
+    m_traceLabel->setText(tr("Serial trace kept in memory"));
+    m_traceMb->setSuffix(tr(" MB"));
+    m_traceMb->setSpecialValueText(tr("off"));
+    m_traceMb->setToolTip(tr("The last part of the serial line, both ways, saved with Machine › "
+                             "Save serial trace and by itself on an alarm into %1")
+                              .arg(driver::TraceRecorder::defaultAlarmFolder()));
     m_units->setItemText(0, tr("millimetres (mm)"));
     m_units->setItemText(1, tr("inches (in)"));
     m_units->setToolTip(tr("The DRO, the jog steps and feed, the status panel and the speed plot. "

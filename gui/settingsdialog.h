@@ -12,9 +12,16 @@ class QComboBox;
 class QDialogButtonBox;
 class QLabel;
 class QPushButton;
+class QSpinBox;
 class QTabWidget;
 
 namespace frezka::gui {
+
+// The serial trace's ring (driver/link/tracerecorder.h): QSettings "link/traceMb", megabytes kept
+// in memory, 0 = off, 4 unless set. applyTraceSetting() gives the session's recorder that size.
+inline const QString kTraceKey = QStringLiteral("link/traceMb");
+constexpr int kTraceDefaultMb = 4;
+void applyTraceSetting();
 
 class ProfileEditor;
 class ShortcutEditor;
@@ -66,6 +73,8 @@ private:
     QComboBox *m_language, *m_units;
     QLabel *m_unitsLabel;
     QCheckBox *m_reconnect;
+    QLabel *m_traceLabel;
+    QSpinBox *m_traceMb;
     QPushButton *m_load, *m_save, *m_export, *m_defaults, *m_apply;
     QDialogButtonBox *m_buttons;
 };

@@ -4,22 +4,33 @@ namespace frezka::session {
 
 SimLink::SimLink(const machine::MachineConfig &config, const emulator::UnitOptions &unit,
                  const driver::WireOptions &wire, const driver::CoreOptions &options,
-                 QObject *parent)
+                 QObject *parent, driver::TraceRecorder *recorder)
     : MachineLink(parent)
     , m_port(unit, wire)
+    , m_tracing(recorder ? std::make_unique<driver::TracingPort>(m_port, *recorder) : nullptr)
     , m_core(config, options)
-    , m_runner(m_core, m_port)
+    , m_runner(m_core, m_tracing ? static_cast<driver::VirtualPort &>(*m_tracing) : m_port)
 {
-    m_core.onStateChanged = [this](const driver::MachineState &s) {
+    auto note = [this, recorder](const std::string &event) {
+        if (recorder)
+            recorder->note(event, m_runner.now());
+    };
+    m_core.onStateChanged = [this, note, last = driver::MachineMode::Disconnected](
+                                const driver::MachineState &s) mutable {
+        if (s.mode != last)
+            note(driver::traceModeEvent(s.mode));
+        last = s.mode;
         m_pending.push_back([this, s] {
             m_state = s;
             emit stateChanged(s);
         });
     };
-    m_core.onError = [this](const driver::MachineError &e) {
+    m_core.onError = [this, note](const driver::MachineError &e) {
+        note(driver::traceErrorEvent(e));
         m_pending.push_back([this, e] { emit errorOccurred(e); });
     };
-    m_core.onJobFinished = [this](bool ok) {
+    m_core.onJobFinished = [this, note](bool ok) {
+        note(driver::traceJobEvent(ok));
         m_pending.push_back([this, ok] { emit jobFinished(ok); });
     };
 }

@@ -4,15 +4,19 @@
 // headless tests of the run workflow. Nothing runs until the owner turns the clock
 // (runUntil / runFor); the core's events are queued and delivered between the runner's steps,
 // never from inside the core, so a workflow may call the next operation from its handler as it
-// does on a real link. state() is the last state delivered.
+// does on a real link. state() is the last state delivered. With a recorder, the line both ways
+// and the driver's modes and errors go into it (frezka-cli run --trace), on a clock of whole
+// nanoseconds (driver::TracingPort).
 
 #include "session/machinelink.h"
 
 #include "driver/link/emulatorport.h"
 #include "driver/link/machinecore.h"
 #include "driver/link/simrunner.h"
+#include "driver/link/tracingport.h"
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace frezka::session {
@@ -22,7 +26,7 @@ class SimLink final : public MachineLink
 public:
     SimLink(const machine::MachineConfig &config, const emulator::UnitOptions &unit,
             const driver::WireOptions &wire, const driver::CoreOptions &options,
-            QObject *parent = nullptr);
+            QObject *parent = nullptr, driver::TraceRecorder *recorder = nullptr);
     ~SimLink() override;
 
     // Turns the virtual clock until done() holds (checked after every delivery) or limitS
@@ -57,6 +61,7 @@ private:
     void deliver();
 
     driver::EmulatorPort m_port;
+    std::unique_ptr<driver::TracingPort> m_tracing; // with a recorder: the port the runner uses
     driver::MachineCore m_core;
     driver::SimRunner m_runner;
     driver::MachineState m_state;

@@ -318,6 +318,20 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>QSerialPort</name>
+    <message>
+        <source>Permission error while locking the device</source>
+        <translation>Permission error while locking the device</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayTransport</name>
+    <message>
+        <source>replay of the serial trace %1</source>
+        <translation>přehrávání sériového záznamu %1</translation>
+    </message>
+</context>
+<context>
     <name>RunCli</name>
     <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
@@ -366,15 +380,21 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
-</source>
-        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
-</translation>
-    </message>
-    <message>
         <source>Run from line %1. %2
 </source>
         <translation>Spuštění od řádku %1. %2
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE]
+</source>
+        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace SOUBOR]
+</translation>
+    </message>
+    <message>
+        <source>serial trace saved to %1
+</source>
+        <translation>sériový záznam uložen do %1
 </translation>
     </message>
 </context>
@@ -426,6 +446,37 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>SerialTrace</name>
+    <message>
+        <source>line %1: not an entry (time in ms, then &gt;, &lt; or =, then the bytes): %2</source>
+        <translation>řádek %1: není záznam (čas v ms, pak &gt;, &lt; nebo =, pak bajty): %2</translation>
+    </message>
+    <message>
+        <source>line %1: the direction must be &gt; (to the unit), &lt; (from the unit) or = (an event), not &apos;%2&apos;</source>
+        <translation>řádek %1: směr musí být &gt; (do jednotky), &lt; (z jednotky) nebo = (událost), ne &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>line %1: a bad escape in &apos;%2&apos; (use \r, \n, \\ or \xHH)</source>
+        <translation>řádek %1: chybná úniková sekvence v &apos;%2&apos; (použijte \r, \n, \\ nebo \xHH)</translation>
+    </message>
+    <message>
+        <source>line %1: the hex column does not match the text &apos;%2&apos;: correct it or delete it (from the &apos;|&apos; on)</source>
+        <translation>řádek %1: šestnáctkový sloupec neodpovídá textu &apos;%2&apos;: opravte ho, nebo ho smažte (od &apos;|&apos; dál)</translation>
+    </message>
+    <message>
+        <source>line 1: not a Frezka serial trace (it must start with &apos;%1&apos;)</source>
+        <translation>řádek 1: není sériový záznam Frezky (musí začínat &apos;%1&apos;)</translation>
+    </message>
+    <message>
+        <source>trace line %1: the driver sent &apos;%2&apos; before the unit&apos;s line &apos;%3&apos; that the trace has first</source>
+        <translation>řádek záznamu %1: ovladač poslal &apos;%2&apos; dříve než řádek jednotky &apos;%3&apos;, který je v záznamu první</translation>
+    </message>
+    <message>
+        <source>trace line %1: expected &apos;%2&apos;, got &apos;%3&apos; (the last unit line given was trace line %4)</source>
+        <translation>řádek záznamu %1: očekáváno &apos;%2&apos;, přišlo &apos;%3&apos; (poslední předaný řádek jednotky byl řádek záznamu %4)</translation>
+    </message>
+</context>
+<context>
     <name>SerialTransport</name>
     <message>
         <source>%1 at %2 Bd</source>
@@ -458,6 +509,20 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     <message>
         <source>cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</source>
         <translation>%1 nelze otevřít: přístup odepřen. Port patří skupině %2: přidejte se do ní příkazem &quot;sudo usermod -aG %2 $USER&quot;, pak se odhlaste a znovu přihlaste.</translation>
+    </message>
+</context>
+<context>
+    <name>TraceRecorder</name>
+    <message>
+        <source>cannot write the serial trace to %1: %2. Choose a folder you may write to.</source>
+        <translation>sériový záznam nelze zapsat do %1: %2. Zvolte složku, do které smíte zapisovat.</translation>
+    </message>
+</context>
+<context>
+    <name>TracingTransport</name>
+    <message>
+        <source>serial trace saved to %1 (%2)</source>
+        <translation>sériový záznam uložen do %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -3056,10 +3121,6 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>Uložit záznam</translation>
     </message>
     <message>
-        <source>Text files (*.txt *.log)</source>
-        <translation>Textové soubory (*.txt *.log)</translation>
-    </message>
-    <message>
         <source>Cannot write %1: %2</source>
         <translation>Do %1 nelze zapisovat: %2</translation>
     </message>
@@ -3090,6 +3151,14 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Also show the periodic position and status polls</source>
         <translation>Zobrazit i pravidelné dotazy na polohu a stav</translation>
+    </message>
+    <message>
+        <source>Serial trace (*.trace)</source>
+        <translation>Sériový záznam (*.trace)</translation>
+    </message>
+    <message>
+        <source>Console log as shown (*.txt *.log)</source>
+        <translation>Výpis konzole, jak je zobrazen (*.txt *.log)</translation>
     </message>
 </context>
 <context>
@@ -3889,6 +3958,26 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Loading %1 was cancelled; %2 stays loaded.</source>
         <translation>Načítání %1 bylo zrušeno; zůstává načten %2.</translation>
+    </message>
+    <message>
+        <source>Save serial &amp;trace…</source>
+        <translation>Uložit sériový &amp;záznam…</translation>
+    </message>
+    <message>
+        <source>Save serial trace</source>
+        <translation>Uložit sériový záznam</translation>
+    </message>
+    <message>
+        <source>Serial traces (*.trace *.txt)</source>
+        <translation>Sériové záznamy (*.trace *.txt)</translation>
+    </message>
+    <message>
+        <source>Serial trace saved to %1</source>
+        <translation>Sériový záznam uložen do %1</translation>
+    </message>
+    <message>
+        <source>The serial trace is off. Set how much of it to keep in Settings › Application, then repeat what went wrong and save it again.</source>
+        <translation>Sériový záznam je vypnutý. V Nastavení › Aplikace nastavte, kolik ho uchovávat, pak zopakujte, co se pokazilo, a uložte ho znovu.</translation>
     </message>
 </context>
 <context>
@@ -4893,6 +4982,22 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>The DRO, the jog steps and feed, the status panel and the speed plot. The machine, its profile and the programs&apos; own G20/G21 are not affected.</source>
         <translation>Ukazatel polohy, kroky a rychlost ručního posuvu, stavový panel a graf rychlosti. Stroj, jeho profil ani vlastní G20/G21 programů se tím nemění.</translation>
     </message>
+    <message>
+        <source>Serial trace kept in memory</source>
+        <translation>Sériový záznam uchovávaný v paměti</translation>
+    </message>
+    <message>
+        <source> MB</source>
+        <translation> MB</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>vypnuto</translation>
+    </message>
+    <message>
+        <source>The last part of the serial line, both ways, saved with Machine › Save serial trace and by itself on an alarm into %1</source>
+        <translation>Poslední část provozu na sériové lince oběma směry; ukládá se příkazem Stroj › Uložit sériový záznam a sama při poplachu do %1</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ShortcutEditor</name>
@@ -5671,6 +5776,10 @@ Options:
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
   --link PATH         also create a symlink PATH to the terminal
+  --replay TRACE      answer as the unit recorded in TRACE did (a serial trace,
+                      docs/serial-trace.md): each recorded reply when the driver
+                      sends the command before it, with its timing; a command
+                      that differs ends gve-emu with the trace line (exit 3)
   --verbose           log every byte to stderr
   --help              this text
   --version           the version
@@ -5702,6 +5811,10 @@ Volby:
   --limit IN:OSA=POLOHA[,+|-]  vstup IN (0..15) sepnutý OSOU za POLOHOU, např.
                       --limit 6:X=200000,+ (koncový spínač X u GVE64)
   --link CESTA        vytvořit také symbolický odkaz CESTA na terminál
+  --replay ZÁZNAM     odpovídat tak, jak odpovídala jednotka v ZÁZNAMU (sériový
+                      záznam, docs/serial-trace.md): každou zaznamenanou odpověď,
+                      když ovladač pošle příkaz před ní, s jejím časováním; jiný
+                      příkaz ukončí gve-emu s řádkem záznamu (kód 3)
   --verbose           vypisovat každý bajt na stderr
   --help              tento text
   --version           verze
@@ -5896,6 +6009,14 @@ Volby:
     <message>
         <source>cannot create the pseudo-terminal (%1): %2</source>
         <translation>nelze vytvořit pseudoterminál (%1): %2</translation>
+    </message>
+    <message>
+        <source>cannot read the trace %1: %2</source>
+        <translation>záznam %1 nelze přečíst: %2</translation>
+    </message>
+    <message>
+        <source>the trace was played to its end; further commands get no reply</source>
+        <translation>záznam byl přehrán do konce; další příkazy nedostanou odpověď</translation>
     </message>
 </context>
 <context>

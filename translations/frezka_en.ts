@@ -318,6 +318,20 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>QSerialPort</name>
+    <message>
+        <source>Permission error while locking the device</source>
+        <translation>Permission error while locking the device</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayTransport</name>
+    <message>
+        <source>replay of the serial trace %1</source>
+        <translation>replay of the serial trace %1</translation>
+    </message>
+</context>
+<context>
     <name>RunCli</name>
     <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
@@ -366,15 +380,21 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
-</source>
-        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
-</translation>
-    </message>
-    <message>
         <source>Run from line %1. %2
 </source>
         <translation>Run from line %1. %2
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE]
+</source>
+        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE]
+</translation>
+    </message>
+    <message>
+        <source>serial trace saved to %1
+</source>
+        <translation>serial trace saved to %1
 </translation>
     </message>
 </context>
@@ -426,6 +446,37 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>SerialTrace</name>
+    <message>
+        <source>line %1: not an entry (time in ms, then &gt;, &lt; or =, then the bytes): %2</source>
+        <translation>line %1: not an entry (time in ms, then &gt;, &lt; or =, then the bytes): %2</translation>
+    </message>
+    <message>
+        <source>line %1: the direction must be &gt; (to the unit), &lt; (from the unit) or = (an event), not &apos;%2&apos;</source>
+        <translation>line %1: the direction must be &gt; (to the unit), &lt; (from the unit) or = (an event), not &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>line %1: a bad escape in &apos;%2&apos; (use \r, \n, \\ or \xHH)</source>
+        <translation>line %1: a bad escape in &apos;%2&apos; (use \r, \n, \\ or \xHH)</translation>
+    </message>
+    <message>
+        <source>line %1: the hex column does not match the text &apos;%2&apos;: correct it or delete it (from the &apos;|&apos; on)</source>
+        <translation>line %1: the hex column does not match the text &apos;%2&apos;: correct it or delete it (from the &apos;|&apos; on)</translation>
+    </message>
+    <message>
+        <source>line 1: not a Frezka serial trace (it must start with &apos;%1&apos;)</source>
+        <translation>line 1: not a Frezka serial trace (it must start with &apos;%1&apos;)</translation>
+    </message>
+    <message>
+        <source>trace line %1: the driver sent &apos;%2&apos; before the unit&apos;s line &apos;%3&apos; that the trace has first</source>
+        <translation>trace line %1: the driver sent &apos;%2&apos; before the unit&apos;s line &apos;%3&apos; that the trace has first</translation>
+    </message>
+    <message>
+        <source>trace line %1: expected &apos;%2&apos;, got &apos;%3&apos; (the last unit line given was trace line %4)</source>
+        <translation>trace line %1: expected &apos;%2&apos;, got &apos;%3&apos; (the last unit line given was trace line %4)</translation>
+    </message>
+</context>
+<context>
     <name>SerialTransport</name>
     <message>
         <source>%1 at %2 Bd</source>
@@ -458,6 +509,20 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     <message>
         <source>cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</source>
         <translation>cannot open %1: permission denied. The port belongs to the group %2: join it with &quot;sudo usermod -aG %2 $USER&quot;, then log out and in again.</translation>
+    </message>
+</context>
+<context>
+    <name>TraceRecorder</name>
+    <message>
+        <source>cannot write the serial trace to %1: %2. Choose a folder you may write to.</source>
+        <translation>cannot write the serial trace to %1: %2. Choose a folder you may write to.</translation>
+    </message>
+</context>
+<context>
+    <name>TracingTransport</name>
+    <message>
+        <source>serial trace saved to %1 (%2)</source>
+        <translation>serial trace saved to %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -3053,10 +3118,6 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>Save log</translation>
     </message>
     <message>
-        <source>Text files (*.txt *.log)</source>
-        <translation>Text files (*.txt *.log)</translation>
-    </message>
-    <message>
         <source>Cannot write %1: %2</source>
         <translation>Cannot write %1: %2</translation>
     </message>
@@ -3087,6 +3148,14 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Also show the periodic position and status polls</source>
         <translation>Also show the periodic position and status polls</translation>
+    </message>
+    <message>
+        <source>Serial trace (*.trace)</source>
+        <translation>Serial trace (*.trace)</translation>
+    </message>
+    <message>
+        <source>Console log as shown (*.txt *.log)</source>
+        <translation>Console log as shown (*.txt *.log)</translation>
     </message>
 </context>
 <context>
@@ -3882,6 +3951,26 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Loading %1 was cancelled; %2 stays loaded.</source>
         <translation>Loading %1 was cancelled; %2 stays loaded.</translation>
+    </message>
+    <message>
+        <source>Save serial &amp;trace…</source>
+        <translation>Save serial &amp;trace…</translation>
+    </message>
+    <message>
+        <source>Save serial trace</source>
+        <translation>Save serial trace</translation>
+    </message>
+    <message>
+        <source>Serial traces (*.trace *.txt)</source>
+        <translation>Serial traces (*.trace *.txt)</translation>
+    </message>
+    <message>
+        <source>Serial trace saved to %1</source>
+        <translation>Serial trace saved to %1</translation>
+    </message>
+    <message>
+        <source>The serial trace is off. Set how much of it to keep in Settings › Application, then repeat what went wrong and save it again.</source>
+        <translation>The serial trace is off. Set how much of it to keep in Settings › Application, then repeat what went wrong and save it again.</translation>
     </message>
 </context>
 <context>
@@ -4885,6 +4974,22 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>The DRO, the jog steps and feed, the status panel and the speed plot. The machine, its profile and the programs&apos; own G20/G21 are not affected.</source>
         <translation>The DRO, the jog steps and feed, the status panel and the speed plot. The machine, its profile and the programs&apos; own G20/G21 are not affected.</translation>
     </message>
+    <message>
+        <source>Serial trace kept in memory</source>
+        <translation>Serial trace kept in memory</translation>
+    </message>
+    <message>
+        <source> MB</source>
+        <translation> MB</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>off</translation>
+    </message>
+    <message>
+        <source>The last part of the serial line, both ways, saved with Machine › Save serial trace and by itself on an alarm into %1</source>
+        <translation>The last part of the serial line, both ways, saved with Machine › Save serial trace and by itself on an alarm into %1</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ShortcutEditor</name>
@@ -5658,6 +5763,10 @@ Options:
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
   --link PATH         also create a symlink PATH to the terminal
+  --replay TRACE      answer as the unit recorded in TRACE did (a serial trace,
+                      docs/serial-trace.md): each recorded reply when the driver
+                      sends the command before it, with its timing; a command
+                      that differs ends gve-emu with the trace line (exit 3)
   --verbose           log every byte to stderr
   --help              this text
   --version           the version
@@ -5689,6 +5798,10 @@ Options:
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
   --link PATH         also create a symlink PATH to the terminal
+  --replay TRACE      answer as the unit recorded in TRACE did (a serial trace,
+                      docs/serial-trace.md): each recorded reply when the driver
+                      sends the command before it, with its timing; a command
+                      that differs ends gve-emu with the trace line (exit 3)
   --verbose           log every byte to stderr
   --help              this text
   --version           the version
@@ -5883,6 +5996,14 @@ Options:
     <message>
         <source>cannot create the pseudo-terminal (%1): %2</source>
         <translation>cannot create the pseudo-terminal (%1): %2</translation>
+    </message>
+    <message>
+        <source>cannot read the trace %1: %2</source>
+        <translation>cannot read the trace %1: %2</translation>
+    </message>
+    <message>
+        <source>the trace was played to its end; further commands get no reply</source>
+        <translation>the trace was played to its end; further commands get no reply</translation>
     </message>
 </context>
 <context>

@@ -2,7 +2,7 @@
 //                     [--port PATH|sim] [--baud N] [--latency-ms N]
 //                     [--faults RATE --seed N] [--clock virtual|real] [--home]
 //                     [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]]
-//                     [--continue-at-stops] [--from-line N]
+//                     [--continue-at-stops] [--from-line N] [--trace FILE]
 //
 // Interprets FILE from its work offsets (programoptions.h) and plans it for the machine
 // profile, then the session's run workflow (the one
@@ -35,11 +35,15 @@
 // choose (exit 1). Such a run prints one more JSON line before the report: the line, the safe
 // height and the start point in steps, and where the emulator's counters first went below the
 // safe height (unit_first_below_safe_z: straight above the start when the approach came first).
+//
+// --trace FILE saves the serial line of the run both ways, whether the job ended or not, in the
+// format of docs/serial-trace.md (the session's record, driver/link/tracerecorder.h).
 #include "cli.h"
 
 #include "programoptions.h"
 #include "runjob.h"
 
+#include "driver/link/tracerecorder.h"
 #include "machine/planner.h"
 #include "machine/steps.h"
 #include "session/plannedspeed.h"
@@ -66,7 +70,7 @@ int usage()
     cli::err(RunCli::tr("usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] "
                         "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] "
                         "[--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] "
-                        "[--continue-at-stops] [--from-line N]\n")
+                        "[--continue-at-stops] [--from-line N] [--trace FILE]\n")
                  .arg(cli::programOptionsUsage()));
     return 2;
 }
@@ -115,6 +119,8 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
         } else if (k == QLatin1String("--from-line") && hasValue) {
             a.fromLine = args[++i].toInt(&ok);
             ok = ok && a.fromLine >= 1;
+        } else if (k == QLatin1String("--trace") && hasValue) {
+            a.traceFile = args[++i];
         } else if (a.file.isEmpty() && !k.startsWith(QLatin1String("--"))) {
             a.file = k;
         } else {
@@ -295,6 +301,21 @@ void printFromLine(const RunOutcome &o, const session::FromLine &from,
              QLatin1Char('\n'));
 }
 
+// Saves the session's serial trace to --trace FILE, naming the run in its header.
+bool saveTrace(const RunArgs &a)
+{
+    driver::TraceRecorder &recorder = driver::TraceRecorder::session();
+    recorder.setValue("operation", a.home ? "home, job" : "job");
+    recorder.setValue("program", a.file.toStdString());
+    QString error;
+    if (!recorder.save(a.traceFile, &error)) {
+        cli::err(error + QLatin1Char('\n'));
+        return false;
+    }
+    cli::err(RunCli::tr("serial trace saved to %1\n").arg(a.traceFile));
+    return true;
+}
+
 int runRun(const QStringList &args)
 {
     const auto a = parseArgs(args);
@@ -311,6 +332,8 @@ int runRun(const QStringList &args)
     const RunOutcome o = run.virtualClock ? cli::runVirtual(run, config, program, top, remaining)
                                           : cli::runReal(run, config, program, remaining);
     const int baud = a->baud > 0 ? a->baud : config.link.baud;
+    if (!a->traceFile.isEmpty() && !saveTrace(*a))
+        return 1;
     if (!o.ok) {
         cli::err(
             RunCli::tr("%1: %2\n")
@@ -339,7 +362,7 @@ FREZKA_CLI_COMMAND(
     "run FILE [--machine PROFILE] [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]] "
     "[--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] "
     "[--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] "
-    "[--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]",
+    "[--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE]",
     QT_TRANSLATE_NOOP(
         "frezka::cli",
         "Run a G-code job on a GVE unit or the emulator, with progress and a JSON report"),

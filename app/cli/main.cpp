@@ -3,6 +3,8 @@
 
 #include "app/common/datadir.h"
 #include "app/common/translator.h"
+#include "app/common/version.h"
+#include "driver/link/tracerecorder.h"
 
 #include <QCoreApplication>
 
@@ -76,6 +78,10 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationName(QStringLiteral("frezka-cli"));
     QCoreApplication::setOrganizationName(QStringLiteral("Frezka"));
     frezka::app::installTranslator();
+    frezka::driver::TraceRecorder::session().setProgramVersion(std::string("Frezka ") +
+                                                               frezka::app::versionString());
+    frezka::driver::TraceRecorder::session().setAlarmFolder(
+        frezka::driver::TraceRecorder::defaultAlarmFolder());
     QStringList args = app.arguments().mid(1);
     if (args.isEmpty()) {
         err(usageText());

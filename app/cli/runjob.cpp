@@ -7,6 +7,7 @@
 
 #include "driver/link/emulatortransport.h"
 #include "driver/link/linkworker.h"
+#include "driver/link/tracingtransport.h"
 #include "machine/steps.h"
 #include "session/programtext.h"
 #include "session/qtmachinelink.h"
@@ -246,7 +247,15 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
         unit.machine.workSurfaceZSteps = machine::stepsOf(*workTopMm, config.axes[2].stepsPerMm);
     }
     unit.trace = a.watchBelowZMm.has_value();
-    session::SimLink link(config, unit, wire, options);
+    driver::TraceRecorder &recorder = driver::TraceRecorder::session();
+    const auto &variant = protocol::variantInfo(config.unit.variant);
+    recorder.begin({{"variant", std::string(variant.id)},
+                    {"baud", std::to_string(wire.baud)},
+                    {"port", "built-in emulator"},
+                    {"clock", "virtual"}},
+                   0);
+    session::SimLink link(config, unit, wire, options, nullptr,
+                          a.traceFile.isEmpty() ? nullptr : &recorder);
     session::RunWorkflow workflow(link);
     workflow.setProfile(config);
     workflow.setEndOnHold(true); // nobody at the machine to answer a hold
@@ -310,7 +319,8 @@ RunOutcome runReal(const RunArgs &a, const machine::MachineConfig &config,
                                    const machine::MachineConfig &c, QObject *parent,
                                    QString *error) -> driver::Transport * {
         driver::Transport *t = driver::createTransport(s, c, parent, error);
-        emulated = qobject_cast<driver::EmulatorTransport *>(t);
+        auto *traced = qobject_cast<driver::TracingTransport *>(t);
+        emulated = qobject_cast<driver::EmulatorTransport *>(traced ? traced->inner() : t);
         return t;
     });
     session::QtMachineLink<driver::LinkWorker> link(worker);

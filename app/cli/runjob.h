@@ -48,6 +48,7 @@ struct RunArgs
     // Run from a line (virtual clock): the approach's safe height (machine mm); the outcome says
     // where the emulator's counters first went below it.
     std::optional<double> watchBelowZMm;
+    QString traceFile; // --trace: the serial trace is saved here when the run ends
 };
 
 // What a run came to: the driver's job report and the unit's end state (emulator: its counters).

@@ -5,8 +5,10 @@
 #include "gui/language.h"
 #include "gui/mainwindow.h"
 #include "gui/programview.h"
+#include "gui/settingsdialog.h"
 
 #include "driver/link/machinecontroller.h"
+#include "driver/link/tracerecorder.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -65,6 +67,10 @@ int main(int argc, char **argv)
     QApplication::setOrganizationName(QStringLiteral("Frezka"));
     QApplication::setApplicationName(QStringLiteral("frezka"));
     QApplication::setApplicationVersion(QString::fromUtf8(frezka::app::versionString()));
+    frezka::driver::TraceRecorder::session().setProgramVersion(std::string("Frezka ") +
+                                                               frezka::app::versionString());
+    frezka::driver::TraceRecorder::session().setAlarmFolder(
+        frezka::driver::TraceRecorder::defaultAlarmFolder());
     frezka::gui::applyLanguage(
         frezka::gui::effectiveLanguage(QSettings().value(QStringLiteral("language")).toString()));
 

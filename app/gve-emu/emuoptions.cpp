@@ -86,6 +86,10 @@ QString emuHelpText()
         "  --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.\n"
         "                      --limit 6:X=200000,+ (GVE64 end switch X)\n"
         "  --link PATH         also create a symlink PATH to the terminal\n"
+        "  --replay TRACE      answer as the unit recorded in TRACE did (a serial trace,\n"
+        "                      docs/serial-trace.md): each recorded reply when the driver\n"
+        "                      sends the command before it, with its timing; a command\n"
+        "                      that differs ends gve-emu with the trace line (exit 3)\n"
         "  --verbose           log every byte to stderr\n"
         "  --help              this text\n"
         "  --version           the version\n");
@@ -168,6 +172,8 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
                 unit.switches.push_back(sw);
         } else if (a == QLatin1String("--link")) {
             options.linkPath = v;
+        } else if (a == QLatin1String("--replay")) {
+            options.replayFile = v;
         } else {
             error = tr("unknown option %1 (see --help)").arg(a);
             return false;

@@ -12,6 +12,7 @@ struct EmuOptions
 {
     emulator::SimulationOptions simulation;
     QString linkPath;     // --link: symlink to the slave pty
+    QString replayFile;   // --replay: play this serial trace instead of emulating
     bool verbose = false; // --verbose: log traffic to stderr
     bool help = false;
 };

@@ -66,6 +66,27 @@ int main(int argc, char **argv)
     QObject::connect(&signalNotifier, &QSocketNotifier::activated, &app, &QCoreApplication::quit);
 
     PtyServer server(options);
+    if (!options.replayFile.isEmpty()) {
+        QFile file(options.replayFile);
+        if (!file.open(QIODevice::ReadOnly)) {
+            printErr(QCoreApplication::translate("gve-emu", "cannot read the trace %1: %2")
+                         .arg(options.replayFile, file.errorString()));
+            return 2;
+        }
+        const QByteArray text = file.readAll();
+        frezka::emulator::SerialTrace trace;
+        frezka::emulator::TraceMessage bad;
+        if (!frezka::emulator::parseTrace(
+                std::string_view(text.constData(), static_cast<std::size_t>(text.size())), trace,
+                bad)) {
+            QString why = QCoreApplication::translate("SerialTrace", bad.text);
+            for (const std::string &arg : bad.args)
+                why = why.arg(QString::fromStdString(arg));
+            printErr(QStringLiteral("%1: %2").arg(options.replayFile, why));
+            return 2;
+        }
+        server.setReplay(std::move(trace));
+    }
     if (!server.open(error)) {
         printErr(error);
         return 1;

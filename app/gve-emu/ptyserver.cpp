@@ -75,7 +75,7 @@ void PtyServer::onReadable()
         if (n > 0) {
             const std::string bytes(buf, static_cast<std::size_t>(n));
             log("pc>", bytes);
-            m_sim.pcWrite(bytes);
+            farWrite(bytes);
             continue;
         }
         if (n < 0 && errno == EINTR)
@@ -88,16 +88,17 @@ void PtyServer::onReadable()
 void PtyServer::pump()
 {
     const double wall = static_cast<double>(m_clock.nsecsElapsed()) / 1e9;
-    if (wall > m_sim.now())
-        m_sim.advance(wall - m_sim.now());
-    if (std::string out = m_sim.pcRead(); !out.empty()) {
+    if (wall > farNow())
+        farAdvance(wall - farNow());
+    if (std::string out = farRead(); !out.empty()) {
         log("<unit", out);
         m_out += out;
         flushOut();
     }
     // Wake up at the next event (a byte, a reply, a vector end...). A far event is re-checked
     // hourly: that keeps the interval inside an int and costs nothing.
-    const double next = m_sim.nextEventIn();
+    checkReplay();
+    const double next = farNextEventIn();
     constexpr double kLongestWaitMs = 3600.0 * 1000.0;
     if (std::isfinite(next))
         m_timer.start(static_cast<int>(std::ceil(std::min(next * 1000.0, kLongestWaitMs))));
@@ -143,7 +144,67 @@ void PtyServer::log(const char *direction, const std::string &bytes) const
             shown += c;
         }
     }
-    std::fprintf(stderr, "%10.6f %s %s\n", m_sim.now(), direction, shown.c_str());
+    std::fprintf(stderr, "%10.6f %s %s\n", farNow(), direction, shown.c_str());
+}
+
+void PtyServer::setReplay(emulator::SerialTrace trace)
+{
+    // The driver's polls come when its wall clock says: free (emulator::TraceReplay).
+    m_replay = std::make_unique<emulator::TraceReplay>(std::move(trace), true);
+}
+
+double PtyServer::farNow() const
+{
+    return m_replay ? m_replay->now() : m_sim.now();
+}
+
+void PtyServer::farAdvance(double seconds)
+{
+    if (m_replay)
+        m_replay->advance(seconds);
+    else
+        m_sim.advance(seconds);
+}
+
+void PtyServer::farWrite(const std::string &bytes)
+{
+    if (m_replay)
+        m_replay->pcWrite(bytes);
+    else
+        m_sim.pcWrite(bytes);
+}
+
+std::string PtyServer::farRead()
+{
+    return m_replay ? m_replay->pcRead() : m_sim.pcRead();
+}
+
+double PtyServer::farNextEventIn() const
+{
+    return m_replay ? m_replay->nextEventIn() : m_sim.nextEventIn();
+}
+
+// A replay that diverged ends gve-emu (exit 3) with the trace line; its end is told once.
+void PtyServer::checkReplay()
+{
+    if (!m_replay)
+        return;
+    if (const emulator::TraceMessage &d = m_replay->divergence()) {
+        QString text = QCoreApplication::translate("SerialTrace", d.text);
+        for (const std::string &arg : d.args)
+            text = text.arg(QString::fromStdString(arg));
+        std::fprintf(stderr, "gve-emu: %s\n", text.toLocal8Bit().constData());
+        QCoreApplication::exit(3);
+        return;
+    }
+    if (m_replay->finished() && !m_replayEndTold) {
+        m_replayEndTold = true;
+        std::fprintf(stderr, "gve-emu: %s\n",
+                     QCoreApplication::translate("gve-emu", "the trace was played to its end; "
+                                                            "further commands get no reply")
+                         .toLocal8Bit()
+                         .constData());
+    }
 }
 
 } // namespace frezka::gveemu

@@ -1,7 +1,8 @@
 #pragma once
 // Transport: the byte pipe under the link worker. Implementations: SerialTransport (QSerialPort:
 // a real port or a pty path from gve-emu) and EmulatorTransport (the in-process emulator in real
-// time). Created and used in the link worker's thread only.
+// time), wrapped by TracingTransport (the session's serial trace, docs/serial-trace.md); and
+// ReplayTransport (a recorded unit). Created and used in the link worker's thread only.
 
 #include <QByteArray>
 #include <QObject>

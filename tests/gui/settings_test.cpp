@@ -4,6 +4,8 @@
 #include "gui/profileeditor.h"
 #include "gui/settingsdialog.h"
 
+#include "driver/link/tracerecorder.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -28,6 +30,24 @@ private slots:
         QSettings::setDefaultFormat(QSettings::IniFormat);
         QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
         QCoreApplication::setOrganizationName(QStringLiteral("FrezkaTest"));
+    }
+
+    // The serial trace's size (issue 21): kept in the settings, given to the session's recorder.
+    void theSerialTraceSizeIsASetting()
+    {
+        SettingsDialog dialog(machine::defaultMachineConfig(protocol::Variant::Gve64), QString());
+        auto *mb = dialog.findChild<QSpinBox *>(QStringLiteral("traceMb"));
+        QVERIFY(mb);
+        QCOMPARE(mb->value(), kTraceDefaultMb);
+        mb->setValue(0);
+        QVERIFY(!driver::TraceRecorder::session().enabled());
+        QCOMPARE(QSettings().value(kTraceKey).toInt(), 0);
+        mb->setValue(2);
+        QCOMPARE(driver::TraceRecorder::session().limitBytes(), 2 * 1024 * 1024);
+        QSettings().remove(kTraceKey);
+        applyTraceSetting();
+        QCOMPARE(driver::TraceRecorder::session().limitBytes(),
+                 driver::TraceRecorder::kDefaultLimitBytes);
     }
 
     void everyKeyOfTheProfileHasAnEditor()

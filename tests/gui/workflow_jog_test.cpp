@@ -4,6 +4,9 @@
 
 #include "workflowfixture.h"
 
+#include "driver/emulator/serialtrace.h"
+#include "driver/link/tracerecorder.h"
+
 class WorkflowJogTest : public WorkflowFixture
 {
     Q_OBJECT
@@ -115,6 +118,41 @@ private slots:
         QVERIFY2(!modes.isEmpty(), "the mode changes are logged");
         QVERIFY(state().positionMm[0] > x0 + 0.5);
         radio("jogStep2")->click(); // the default step again for the tests after
+    }
+
+    // Machine › Save serial trace (issue 21): the session's record of the line, with the jogs
+    // above on it as the unit saw them, and what the window showed.
+    void theSerialTraceHoldsTheJogs()
+    {
+        QVERIFY(waitIdle());
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("saved.trace"));
+        QString error;
+        QVERIFY2(m_window->saveSerialTrace(path, &error), qPrintable(error));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        emulator::SerialTrace trace;
+        emulator::TraceMessage bad;
+        QVERIFY2(emulator::parseTrace(f.readAll().toStdString(), trace, bad),
+                 emulator::englishText(bad).c_str());
+        QCOMPARE(trace.value("variant"), std::string("gve64"));
+        QCOMPARE(trace.value("firmware"), state().firmware);
+        int jogs = 0, jogging = 0;
+        for (std::size_t i = 0; i + 1 < trace.entries.size(); ++i) {
+            const emulator::TraceEntry &e = trace.entries[i];
+            if (e.direction == emulator::TraceDirection::ToUnit && e.bytes.rfind("!0L", 0) == 0 &&
+                e.bytes.rfind("!0L0,0,0", 0) != 0) {
+                ++jogs;
+                QCOMPARE(trace.entries[i + 1].direction, emulator::TraceDirection::ToPc);
+            }
+            jogging += e.direction == emulator::TraceDirection::Event && e.bytes == "mode Jogging";
+        }
+        QVERIFY2(jogs >= 3, qPrintable(QString::number(jogs))); // X-, Z+, and the continuous one
+        QVERIFY(jogging >= 3);
+        driver::TraceRecorder::session().setLimitBytes(0);
+        QVERIFY(!m_window->saveSerialTrace(path, &error));
+        QVERIFY2(error.contains(QStringLiteral("Settings")), qPrintable(error));
+        driver::TraceRecorder::session().setLimitBytes(driver::TraceRecorder::kDefaultLimitBytes);
     }
 };
 
