@@ -13,11 +13,6 @@ namespace frezka::gcode {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("frezka::gcode::HeightMap", text);
-}
-
 constexpr double kNodeTolerance = 0.001; // mm: a row's X/Y must name a node this closely
 
 QString num(double v)
@@ -122,15 +117,19 @@ bool readHeaderLine(const QString &line, int lineNo, Header &h, QString *error)
                    : key == u"probe_feed_mm_min" ? &h.probing.feedMmPerMin
                                                  : nullptr;
     if (!slot) {
-        *error = tr("Height map line %1: unknown key '%2'. Use the keys of docs/height-map.md "
-                    "or make the line a plain comment without a colon.")
+        *error = QCoreApplication::translate(
+                     "frezka::gcode::HeightMap",
+                     "Height map line %1: unknown key '%2'. Use the keys of docs/height-map.md "
+                     "or make the line a plain comment without a colon.")
                      .arg(lineNo)
                      .arg(key);
         return false;
     }
     if (!ok || !std::isfinite(value)) {
-        *error = tr("Height map line %1: '%2' is not a number. Write it as a number in "
-                    "millimetres, such as 10 or -0.25.")
+        *error = QCoreApplication::translate(
+                     "frezka::gcode::HeightMap",
+                     "Height map line %1: '%2' is not a number. Write it as a number in "
+                     "millimetres, such as 10 or -0.25.")
                      .arg(lineNo)
                      .arg(key);
         return false;
@@ -143,16 +142,20 @@ std::optional<HeightMap> mapOf(const Header &h, QString *error)
 {
     for (double v : {h.originX, h.originY, h.spacingX, h.spacingY, h.countX, h.countY})
         if (std::isnan(v)) {
-            *error = tr("The height map lacks a grid key. Its header needs origin_x_mm, "
-                        "origin_y_mm, spacing_x_mm, spacing_y_mm, count_x and count_y.");
+            *error = QCoreApplication::translate(
+                "frezka::gcode::HeightMap",
+                "The height map lacks a grid key. Its header needs origin_x_mm, "
+                "origin_y_mm, spacing_x_mm, spacing_y_mm, count_x and count_y.");
             return std::nullopt;
         }
     if (h.spacingX <= 0 || h.spacingY <= 0 || h.countX < 2 || h.countY < 2 ||
         h.countX != std::floor(h.countX) || h.countY != std::floor(h.countY) ||
         h.countX * h.countY > 1e6) {
-        *error = tr("The height map's grid is not usable: the spacings must be above 0 and the "
-                    "counts whole numbers of at least 2 (at most a million points). Probe the "
-                    "grid again or correct the header.");
+        *error = QCoreApplication::translate(
+            "frezka::gcode::HeightMap",
+            "The height map's grid is not usable: the spacings must be above 0 and the "
+            "counts whole numbers of at least 2 (at most a million points). Probe the "
+            "grid again or correct the header.");
         return std::nullopt;
     }
     HeightMap map(h.originX, h.originY, h.spacingX, h.spacingY, static_cast<int>(h.countX),
@@ -173,9 +176,11 @@ std::optional<HeightMap> HeightMap::read(const QString &text, QString *error)
     const QStringList lines = text.split(u'\n');
     if (lines.isEmpty() ||
         lines.front().trimmed() != QStringLiteral("# frezka-height-map %1").arg(kFormatVersion)) {
-        *error = tr("Height map line 1: not a height map of version %1 (the first line must be "
-                    "'# frezka-height-map %1'). Probe the grid again with this version of "
-                    "Frezka.")
+        *error = QCoreApplication::translate(
+                     "frezka::gcode::HeightMap",
+                     "Height map line 1: not a height map of version %1 (the first line must be "
+                     "'# frezka-height-map %1'). Probe the grid again with this version of "
+                     "Frezka.")
                      .arg(kFormatVersion);
         return std::nullopt;
     }
@@ -189,8 +194,10 @@ std::optional<HeightMap> HeightMap::read(const QString &text, QString *error)
             continue;
         if (line.startsWith(u'#')) {
             if (map) {
-                *error = tr("Height map line %1: a header line after the first row. Move it "
-                            "above the rows.")
+                *error = QCoreApplication::translate(
+                             "frezka::gcode::HeightMap",
+                             "Height map line %1: a header line after the first row. Move it "
+                             "above the rows.")
                              .arg(lineNo);
                 return std::nullopt;
             }
@@ -210,8 +217,10 @@ std::optional<HeightMap> HeightMap::read(const QString &text, QString *error)
         const double y = cells.size() == 3 ? cells[1].trimmed().toDouble(&okY) : 0;
         const double zv = cells.size() == 3 ? cells[2].trimmed().toDouble(&okZ) : 0;
         if (!okX || !okY || !okZ || !std::isfinite(zv)) {
-            *error = tr("Height map line %1: expected three numbers X,Y,Z separated by commas. "
-                        "Correct the row or probe the grid again.")
+            *error = QCoreApplication::translate(
+                         "frezka::gcode::HeightMap",
+                         "Height map line %1: expected three numbers X,Y,Z separated by commas. "
+                         "Correct the row or probe the grid again.")
                          .arg(lineNo);
             return std::nullopt;
         }
@@ -221,8 +230,10 @@ std::optional<HeightMap> HeightMap::read(const QString &text, QString *error)
         if (i < 0 || j < 0 || i >= map->m_countX || j >= map->m_countY ||
             std::abs(x - map->nodeX(int(i))) > kNodeTolerance ||
             std::abs(y - map->nodeY(int(j))) > kNodeTolerance) {
-            *error = tr("Height map line %1: X %2, Y %3 is not a point of the grid in the "
-                        "header. Correct the row or the header.")
+            *error = QCoreApplication::translate(
+                         "frezka::gcode::HeightMap",
+                         "Height map line %1: X %2, Y %3 is not a point of the grid in the "
+                         "header. Correct the row or the header.")
                          .arg(lineNo)
                          .arg(x)
                          .arg(y);
@@ -230,8 +241,10 @@ std::optional<HeightMap> HeightMap::read(const QString &text, QString *error)
         }
         const std::size_t k = static_cast<std::size_t>(j * map->m_countX + i);
         if (seen[k]) {
-            *error = tr("Height map line %1: the point X %2, Y %3 is given twice. Remove one "
-                        "of the rows.")
+            *error = QCoreApplication::translate(
+                         "frezka::gcode::HeightMap",
+                         "Height map line %1: the point X %2, Y %3 is given twice. Remove one "
+                         "of the rows.")
                          .arg(lineNo)
                          .arg(x)
                          .arg(y);
@@ -249,8 +262,10 @@ std::optional<HeightMap> HeightMap::read(const QString &text, QString *error)
     const auto missing = std::find(seen.begin(), seen.end(), false);
     if (missing != seen.end()) {
         const int k = static_cast<int>(missing - seen.begin());
-        *error = tr("The height map has no row for X %1, Y %2. Every point of the grid needs "
-                    "one; probe the grid again.")
+        *error = QCoreApplication::translate(
+                     "frezka::gcode::HeightMap",
+                     "The height map has no row for X %1, Y %2. Every point of the grid needs "
+                     "one; probe the grid again.")
                      .arg(map->nodeX(k % map->m_countX))
                      .arg(map->nodeY(k / map->m_countX));
         return std::nullopt;
@@ -264,7 +279,9 @@ bool HeightMap::save(const QString &path, QString *error) const
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text) || file.write(write().toUtf8()) < 0 ||
         !file.commit()) {
         if (error)
-            *error = tr("Cannot write the height map %1: %2. Choose a folder you may write to.")
+            *error = QCoreApplication::translate(
+                         "frezka::gcode::HeightMap",
+                         "Cannot write the height map %1: %2. Choose a folder you may write to.")
                          .arg(path, file.errorString());
         return false;
     }
@@ -276,8 +293,10 @@ std::optional<HeightMap> HeightMap::load(const QString &path, QString *error)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
         if (error)
-            *error = tr("Cannot read the height map %1: %2. Check that the file exists and is "
-                        "readable.")
+            *error = QCoreApplication::translate(
+                         "frezka::gcode::HeightMap",
+                         "Cannot read the height map %1: %2. Check that the file exists and is "
+                         "readable.")
                          .arg(path, file.errorString());
         return std::nullopt;
     }

@@ -316,6 +316,19 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>frezka-cli: %1 %2: očekáváno %3 (strojní mm nuly programu)
 </translation>
     </message>
+    <message>
+        <source>Height map %1 applied: X %2 to %3, Y %4 to %5 mm, heights %6 to %7 mm (%8 x %9 points)
+</source>
+        <translation>Výšková mapa %1 použita: X %2 až %3, Y %4 až %5 mm, výšky %6 až %7 mm (%8 × %9 bodů)
+</translation>
+    </message>
+</context>
+<context>
+    <name>QSerialPort</name>
+    <message>
+        <source>Permission error while locking the device</source>
+        <translation>Chyba oprávnění při zamykání zařízení</translation>
+    </message>
 </context>
 <context>
     <name>RunCli</name>
@@ -2576,6 +2589,61 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</source>
         <translation>Komentář (abort, ...) ukončí program, stejně jako v LinuxCNC. Upravte program tak, aby na tento řádek nedošel.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gcode::HeightMap</name>
+    <message>
+        <source>Height map line %1: unknown key &apos;%2&apos;. Use the keys of docs/height-map.md or make the line a plain comment without a colon.</source>
+        <translation>Výšková mapa, řádek %1: neznámý klíč &apos;%2&apos;. Použijte klíče z docs/height-map.md, nebo z řádku udělejte prostý komentář bez dvojtečky.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: &apos;%2&apos; is not a number. Write it as a number in millimetres, such as 10 or -0.25.</source>
+        <translation>Výšková mapa, řádek %1: &apos;%2&apos; není číslo. Zapište ho jako číslo v milimetrech, např. 10 nebo -0.25.</translation>
+    </message>
+    <message>
+        <source>The height map lacks a grid key. Its header needs origin_x_mm, origin_y_mm, spacing_x_mm, spacing_y_mm, count_x and count_y.</source>
+        <translation>Výškové mapě chybí klíč mřížky. Její hlavička potřebuje origin_x_mm, origin_y_mm, spacing_x_mm, spacing_y_mm, count_x a count_y.</translation>
+    </message>
+    <message>
+        <source>The height map&apos;s grid is not usable: the spacings must be above 0 and the counts whole numbers of at least 2 (at most a million points). Probe the grid again or correct the header.</source>
+        <translation>Mřížku výškové mapy nelze použít: rozteče musí být větší než 0 a počty celá čísla alespoň 2 (nejvýše milion bodů). Změřte mřížku znovu nebo opravte hlavičku.</translation>
+    </message>
+    <message>
+        <source>Height map line 1: not a height map of version %1 (the first line must be &apos;# frezka-height-map %1&apos;). Probe the grid again with this version of Frezka.</source>
+        <translation>Výšková mapa, řádek 1: není to výšková mapa verze %1 (první řádek musí být &apos;# frezka-height-map %1&apos;). Změřte mřížku znovu touto verzí Frezky.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: a header line after the first row. Move it above the rows.</source>
+        <translation>Výšková mapa, řádek %1: řádek hlavičky za prvním řádkem dat. Přesuňte ho nad data.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: expected three numbers X,Y,Z separated by commas. Correct the row or probe the grid again.</source>
+        <translation>Výšková mapa, řádek %1: očekávána tři čísla X,Y,Z oddělená čárkami. Opravte řádek nebo změřte mřížku znovu.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: X %2, Y %3 is not a point of the grid in the header. Correct the row or the header.</source>
+        <translation>Výšková mapa, řádek %1: X %2, Y %3 není bodem mřížky z hlavičky. Opravte řádek nebo hlavičku.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: the point X %2, Y %3 is given twice. Remove one of the rows.</source>
+        <translation>Výšková mapa, řádek %1: bod X %2, Y %3 je uveden dvakrát. Jeden z řádků odstraňte.</translation>
+    </message>
+    <message>
+        <source>The height map has no row for X %1, Y %2. Every point of the grid needs one; probe the grid again.</source>
+        <translation>Výšková mapa nemá řádek pro X %1, Y %2. Každý bod mřížky ho potřebuje; změřte mřížku znovu.</translation>
+    </message>
+    <message>
+        <source>Cannot write the height map %1: %2. Choose a folder you may write to.</source>
+        <translation>Výškovou mapu %1 nelze zapsat: %2. Zvolte složku, do které smíte zapisovat.</translation>
+    </message>
+    <message>
+        <source>Cannot read the height map %1: %2. Check that the file exists and is readable.</source>
+        <translation>Výškovou mapu %1 nelze přečíst: %2. Zkontrolujte, že soubor existuje a je čitelný.</translation>
+    </message>
+    <message>
+        <source>Line %1 cuts at X %2, Y %3, outside the height map (X %4 to %5, Y %6 to %7). Probe a grid that covers the whole program, or run it without the height map.</source>
+        <translation>Řádek %1 řeže v X %2, Y %3, mimo výškovou mapu (X %4 až %5, Y %6 až %7). Změřte mřížku, která pokryje celý program, nebo ho spusťte bez výškové mapy.</translation>
     </message>
 </context>
 <context>

@@ -316,6 +316,19 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>frezka-cli: %1 %2: expected %3 (machine mm of the program&apos;s zero)
 </translation>
     </message>
+    <message>
+        <source>Height map %1 applied: X %2 to %3, Y %4 to %5 mm, heights %6 to %7 mm (%8 x %9 points)
+</source>
+        <translation>Height map %1 applied: X %2 to %3, Y %4 to %5 mm, heights %6 to %7 mm (%8 x %9 points)
+</translation>
+    </message>
+</context>
+<context>
+    <name>QSerialPort</name>
+    <message>
+        <source>Permission error while locking the device</source>
+        <translation>Permission error while locking the device</translation>
+    </message>
 </context>
 <context>
     <name>RunCli</name>
@@ -2573,6 +2586,61 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</source>
         <translation>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gcode::HeightMap</name>
+    <message>
+        <source>Height map line %1: unknown key &apos;%2&apos;. Use the keys of docs/height-map.md or make the line a plain comment without a colon.</source>
+        <translation>Height map line %1: unknown key &apos;%2&apos;. Use the keys of docs/height-map.md or make the line a plain comment without a colon.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: &apos;%2&apos; is not a number. Write it as a number in millimetres, such as 10 or -0.25.</source>
+        <translation>Height map line %1: &apos;%2&apos; is not a number. Write it as a number in millimetres, such as 10 or -0.25.</translation>
+    </message>
+    <message>
+        <source>The height map lacks a grid key. Its header needs origin_x_mm, origin_y_mm, spacing_x_mm, spacing_y_mm, count_x and count_y.</source>
+        <translation>The height map lacks a grid key. Its header needs origin_x_mm, origin_y_mm, spacing_x_mm, spacing_y_mm, count_x and count_y.</translation>
+    </message>
+    <message>
+        <source>The height map&apos;s grid is not usable: the spacings must be above 0 and the counts whole numbers of at least 2 (at most a million points). Probe the grid again or correct the header.</source>
+        <translation>The height map&apos;s grid is not usable: the spacings must be above 0 and the counts whole numbers of at least 2 (at most a million points). Probe the grid again or correct the header.</translation>
+    </message>
+    <message>
+        <source>Height map line 1: not a height map of version %1 (the first line must be &apos;# frezka-height-map %1&apos;). Probe the grid again with this version of Frezka.</source>
+        <translation>Height map line 1: not a height map of version %1 (the first line must be &apos;# frezka-height-map %1&apos;). Probe the grid again with this version of Frezka.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: a header line after the first row. Move it above the rows.</source>
+        <translation>Height map line %1: a header line after the first row. Move it above the rows.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: expected three numbers X,Y,Z separated by commas. Correct the row or probe the grid again.</source>
+        <translation>Height map line %1: expected three numbers X,Y,Z separated by commas. Correct the row or probe the grid again.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: X %2, Y %3 is not a point of the grid in the header. Correct the row or the header.</source>
+        <translation>Height map line %1: X %2, Y %3 is not a point of the grid in the header. Correct the row or the header.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: the point X %2, Y %3 is given twice. Remove one of the rows.</source>
+        <translation>Height map line %1: the point X %2, Y %3 is given twice. Remove one of the rows.</translation>
+    </message>
+    <message>
+        <source>The height map has no row for X %1, Y %2. Every point of the grid needs one; probe the grid again.</source>
+        <translation>The height map has no row for X %1, Y %2. Every point of the grid needs one; probe the grid again.</translation>
+    </message>
+    <message>
+        <source>Cannot write the height map %1: %2. Choose a folder you may write to.</source>
+        <translation>Cannot write the height map %1: %2. Choose a folder you may write to.</translation>
+    </message>
+    <message>
+        <source>Cannot read the height map %1: %2. Check that the file exists and is readable.</source>
+        <translation>Cannot read the height map %1: %2. Check that the file exists and is readable.</translation>
+    </message>
+    <message>
+        <source>Line %1 cuts at X %2, Y %3, outside the height map (X %4 to %5, Y %6 to %7). Probe a grid that covers the whole program, or run it without the height map.</source>
+        <translation>Line %1 cuts at X %2, Y %3, outside the height map (X %4 to %5, Y %6 to %7). Probe a grid that covers the whole program, or run it without the height map.</translation>
     </message>
 </context>
 <context>
