@@ -379,15 +379,21 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
-</source>
-        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
-</translation>
-    </message>
-    <message>
         <source>Run from line %1. %2
 </source>
         <translation>Spuštění od řádku %1. %2
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--surface SPEC]
+</source>
+        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--surface POPIS]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
+</source>
+        <translation>frezka-cli run: --surface %1: očekáváno plane:Z0,DZDX,DZDY nebo sine:AMP,PERIODA[,Z0] (mm stroje), např. plane:-5,0.001,0
 </translation>
     </message>
 </context>

@@ -379,15 +379,21 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
-</source>
-        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N]
-</translation>
-    </message>
-    <message>
         <source>Run from line %1. %2
 </source>
         <translation>Run from line %1. %2
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--surface SPEC]
+</source>
+        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--surface SPEC]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
+</source>
+        <translation>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
 </translation>
     </message>
 </context>

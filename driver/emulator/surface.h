@@ -1,8 +1,8 @@
 #pragma once
 // ProbeSurface: the top of the work under the emulated machine, for probing (issue 19).
 //
-// A height function of the machine's X and Y (mm) that trips the tool probe input (IN15,
-// normally closed: touching reads 1) while the Z counter is at or below the surface there.
+// A height function of the machine's X and Y (mm) that trips the tool probe input (IN15 at
+// contactHigh's level) while the Z counter is at or below the surface there.
 // The unit re-aims a Z watch at the surface under the current X/Y at every motion event, so a
 // vertical probe move (G38.2 Z at fixed X/Y, as the probing of a grid makes) stops exactly at
 // the surface's step; a move that also travels in X/Y trips at the latest event's aim or at
@@ -26,6 +26,10 @@ struct ProbeSurface
     std::array<double, 3> p{};                       // plane: Z0, DZDX, DZDY; sine: AMP, PERIOD, Z0
     std::array<double, 3> stepsPerMm{200, 200, 200}; // X, Y, Z of the machine
     int input = 15;
+    // The input's level at contact: 1 for a normally closed probe (the unit's own reading of
+    // IN15 pressed), 0 when the profile's EEPROM polarity (ST3 bit 7 clear) says contact reads
+    // 0; away from the surface the input reads the other level.
+    bool contactHigh = true;
 
     bool active() const { return kind != Kind::None; }
     double heightMm(double xMm, double yMm) const;

@@ -326,8 +326,11 @@ std::uint16_t Unit::Impl::inputLevels() const
             levels |= static_cast<std::uint16_t>(1u << s.input);
     }
     const ProbeSurface &surface = options.surface;
-    if (surface.active() && pos[2] <= surface.touchZSteps(pos[0], pos[1]))
-        levels |= static_cast<std::uint16_t>(1u << surface.input);
+    if (surface.active()) {
+        const bool touching = pos[2] <= surface.touchZSteps(pos[0], pos[1]);
+        const auto bit = static_cast<std::uint16_t>(1u << surface.input);
+        levels = touching == surface.contactHigh ? levels | bit : levels & ~bit;
+    }
     return levels;
 }
 

@@ -1,6 +1,7 @@
 // frezka-cli check/plan/run --height-map (issue 19 item 3): the map's range said, the program
 // bent to it before planning (the emulator's counters end on the raised point), and a program
-// that cuts outside the map refused naming its line.
+// that cuts outside the map refused naming its line; run --surface: G38.2 on the emulator's
+// simulated work top trips at its height.
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -8,6 +9,8 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cmath>
 
 class CliHeightMapTest : public QObject
 {
@@ -129,6 +132,42 @@ private slots:
         QVERIFY2(r.err.contains(QStringLiteral("Line 5 cuts at X 10.000, Y 10.000, outside the "
                                                "height map")),
                  qPrintable(r.err));
+    }
+
+    // run --surface: G38.2 at each node of a 3 x 3 grid (10 mm) on the emulator's tilted work
+    // top stops within a step (200 steps/mm) of the plane's height there, and the run reports
+    // the trip point; without the surface the probe never trips and the run fails.
+    void probesATiltedSurfaceOnTheEmulator()
+    {
+        const QString plane = QStringLiteral("plane:-5,0.01,-0.02");
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) {
+                const double x = 10 * i, y = 10 * j, z = -5 + 0.01 * x - 0.02 * y;
+                const QString file =
+                    write(QStringLiteral("probe.nc"), QStringLiteral("G21 G90\nG0 X%1 Y%2 Z0\n"
+                                                                     "G38.2 Z-20 F100\nM2\n")
+                                                          .arg(x)
+                                                          .arg(y)
+                                                          .toUtf8());
+                const Run r = cli({QStringLiteral("run"), file, QStringLiteral("--port"),
+                                   QStringLiteral("sim"), QStringLiteral("--surface"), plane});
+                QVERIFY2(r.code == 0, qPrintable(r.err));
+                const QJsonArray at = lastJson(r.out)[QStringLiteral("probe_steps")].toArray();
+                QCOMPARE(at.size(), 4);
+                QCOMPARE(at[0].toInt(), int(x * 200));
+                QCOMPARE(at[1].toInt(), int(y * 200));
+                QVERIFY2(std::abs(at[2].toDouble() / 200 - z) <= 1.0 / 200 + 1e-9,
+                         qPrintable(QStringLiteral("%1,%2: %3").arg(x).arg(y).arg(at[2].toInt())));
+                QCOMPARE(lastJson(r.out)[QStringLiteral("unit_steps")].toArray(), at);
+            }
+        const QString file = write(QStringLiteral("probe.nc"), "G0 X0 Y0 Z0\nG38.2 Z-20 F100\n");
+        QCOMPARE(cli({QStringLiteral("run"), file, QStringLiteral("--port"), QStringLiteral("sim")})
+                     .code,
+                 1);
+        QCOMPARE(cli({QStringLiteral("run"), file, QStringLiteral("--surface"),
+                      QStringLiteral("cone:1")})
+                     .code,
+                 2);
     }
 
     void aBadMapFileNamesItsLine()
