@@ -5744,6 +5744,11 @@ Options:
                       pressed at and below POS (-, default) or at and above (+)
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
+  --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
+                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+  --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
+  --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
+                      profiles&apos; EEPROM polarity)
   --link PATH         also create a symlink PATH to the terminal
   --verbose           log every byte to stderr
   --help              this text
@@ -5775,6 +5780,11 @@ Volby:
                       sepnut na POLOZE a pod ní (-, výchozí) nebo na ní a nad ní (+)
   --limit IN:OSA=POLOHA[,+|-]  vstup IN (0..15) sepnutý OSOU za POLOHOU, např.
                       --limit 6:X=200000,+ (koncový spínač X u GVE64)
+  --surface POPIS     horní plocha obrobku, které se dotkne sonda nástroje (IN15),
+                      v mm stroje: plane:Z0,DZDX,DZDY nebo sine:AMP,PERIODA[,Z0]
+  --steps-per-mm N[,N,N]  kroky na mm os X, Y, Z pro --surface (výchozí 200)
+  --probe-contact 0|1 úroveň IN15 při dotyku (výchozí 0, jako polarita EEPROM
+                      dodávaných profilů)
   --link CESTA        vytvořit také symbolický odkaz CESTA na terminál
   --verbose           vypisovat každý bajt na stderr
   --help              tento text

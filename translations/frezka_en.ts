@@ -5731,6 +5731,11 @@ Options:
                       pressed at and below POS (-, default) or at and above (+)
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
+  --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
+                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+  --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
+  --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
+                      profiles&apos; EEPROM polarity)
   --link PATH         also create a symlink PATH to the terminal
   --verbose           log every byte to stderr
   --help              this text
@@ -5762,6 +5767,11 @@ Options:
                       pressed at and below POS (-, default) or at and above (+)
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
+  --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
+                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+  --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
+  --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
+                      profiles&apos; EEPROM polarity)
   --link PATH         also create a symlink PATH to the terminal
   --verbose           log every byte to stderr
   --help              this text
