@@ -316,12 +316,18 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>frezka-cli: %1 %2: očekáváno %3 (strojní mm nuly programu)
 </translation>
     </message>
+    <message>
+        <source>Height map %1 applied: X %2 to %3, Y %4 to %5 mm, heights %6 to %7 mm (%8 x %9 points)
+</source>
+        <translation>Výšková mapa %1 použita: X %2 až %3, Y %4 až %5 mm, výšky %6 až %7 mm (%8 × %9 bodů)
+</translation>
+    </message>
 </context>
 <context>
     <name>QSerialPort</name>
     <message>
         <source>Permission error while locking the device</source>
-        <translation>Permission error while locking the device</translation>
+        <translation>Chyba oprávnění při zamykání zařízení</translation>
     </message>
 </context>
 <context>
@@ -386,15 +392,21 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE]
-</source>
-        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace SOUBOR]
-</translation>
-    </message>
-    <message>
         <source>serial trace saved to %1
 </source>
         <translation>sériový záznam uložen do %1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
+</source>
+        <translation>frezka-cli run: --surface %1: očekáváno plane:Z0,DZDX,DZDY nebo sine:AMP,PERIODA[,Z0] (mm stroje), např. plane:-5,0.001,0
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC]
+</source>
+        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace SOUBOR] [--surface POPIS]
 </translation>
     </message>
 </context>
@@ -2641,6 +2653,61 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</source>
         <translation>Komentář (abort, ...) ukončí program, stejně jako v LinuxCNC. Upravte program tak, aby na tento řádek nedošel.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gcode::HeightMap</name>
+    <message>
+        <source>Height map line %1: unknown key &apos;%2&apos;. Use the keys of docs/height-map.md or make the line a plain comment without a colon.</source>
+        <translation>Výšková mapa, řádek %1: neznámý klíč &apos;%2&apos;. Použijte klíče z docs/height-map.md, nebo z řádku udělejte prostý komentář bez dvojtečky.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: &apos;%2&apos; is not a number. Write it as a number in millimetres, such as 10 or -0.25.</source>
+        <translation>Výšková mapa, řádek %1: &apos;%2&apos; není číslo. Zapište ho jako číslo v milimetrech, např. 10 nebo -0.25.</translation>
+    </message>
+    <message>
+        <source>The height map lacks a grid key. Its header needs origin_x_mm, origin_y_mm, spacing_x_mm, spacing_y_mm, count_x and count_y.</source>
+        <translation>Výškové mapě chybí klíč mřížky. Její hlavička potřebuje origin_x_mm, origin_y_mm, spacing_x_mm, spacing_y_mm, count_x a count_y.</translation>
+    </message>
+    <message>
+        <source>The height map&apos;s grid is not usable: the spacings must be above 0 and the counts whole numbers of at least 2 (at most a million points). Probe the grid again or correct the header.</source>
+        <translation>Mřížku výškové mapy nelze použít: rozteče musí být větší než 0 a počty celá čísla alespoň 2 (nejvýše milion bodů). Změřte mřížku znovu nebo opravte hlavičku.</translation>
+    </message>
+    <message>
+        <source>Height map line 1: not a height map of version %1 (the first line must be &apos;# frezka-height-map %1&apos;). Probe the grid again with this version of Frezka.</source>
+        <translation>Výšková mapa, řádek 1: není to výšková mapa verze %1 (první řádek musí být &apos;# frezka-height-map %1&apos;). Změřte mřížku znovu touto verzí Frezky.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: a header line after the first row. Move it above the rows.</source>
+        <translation>Výšková mapa, řádek %1: řádek hlavičky za prvním řádkem dat. Přesuňte ho nad data.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: expected three numbers X,Y,Z separated by commas. Correct the row or probe the grid again.</source>
+        <translation>Výšková mapa, řádek %1: očekávána tři čísla X,Y,Z oddělená čárkami. Opravte řádek nebo změřte mřížku znovu.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: X %2, Y %3 is not a point of the grid in the header. Correct the row or the header.</source>
+        <translation>Výšková mapa, řádek %1: X %2, Y %3 není bodem mřížky z hlavičky. Opravte řádek nebo hlavičku.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: the point X %2, Y %3 is given twice. Remove one of the rows.</source>
+        <translation>Výšková mapa, řádek %1: bod X %2, Y %3 je uveden dvakrát. Jeden z řádků odstraňte.</translation>
+    </message>
+    <message>
+        <source>The height map has no row for X %1, Y %2. Every point of the grid needs one; probe the grid again.</source>
+        <translation>Výšková mapa nemá řádek pro X %1, Y %2. Každý bod mřížky ho potřebuje; změřte mřížku znovu.</translation>
+    </message>
+    <message>
+        <source>Cannot write the height map %1: %2. Choose a folder you may write to.</source>
+        <translation>Výškovou mapu %1 nelze zapsat: %2. Zvolte složku, do které smíte zapisovat.</translation>
+    </message>
+    <message>
+        <source>Cannot read the height map %1: %2. Check that the file exists and is readable.</source>
+        <translation>Výškovou mapu %1 nelze přečíst: %2. Zkontrolujte, že soubor existuje a je čitelný.</translation>
+    </message>
+    <message>
+        <source>Line %1 cuts at X %2, Y %3, outside the height map (X %4 to %5, Y %6 to %7). Probe a grid that covers the whole program, or run it without the height map.</source>
+        <translation>Řádek %1 řeže v X %2, Y %3, mimo výškovou mapu (X %4 až %5, Y %6 až %7). Změřte mřížku, která pokryje celý program, nebo ho spusťte bez výškové mapy.</translation>
     </message>
 </context>
 <context>
@@ -5775,6 +5842,11 @@ Options:
                       pressed at and below POS (-, default) or at and above (+)
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
+  --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
+                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+  --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
+  --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
+                      profiles&apos; EEPROM polarity)
   --link PATH         also create a symlink PATH to the terminal
   --replay TRACE      answer as the unit recorded in TRACE did (a serial trace,
                       docs/serial-trace.md): each recorded reply when the driver
@@ -5810,6 +5882,11 @@ Volby:
                       sepnut na POLOZE a pod ní (-, výchozí) nebo na ní a nad ní (+)
   --limit IN:OSA=POLOHA[,+|-]  vstup IN (0..15) sepnutý OSOU za POLOHOU, např.
                       --limit 6:X=200000,+ (koncový spínač X u GVE64)
+  --surface POPIS     horní plocha obrobku, které se dotkne sonda nástroje (IN15),
+                      v mm stroje: plane:Z0,DZDX,DZDY nebo sine:AMP,PERIODA[,Z0]
+  --steps-per-mm N[,N,N]  kroky na mm os X, Y, Z pro --surface (výchozí 200)
+  --probe-contact 0|1 úroveň IN15 při dotyku (výchozí 0, jako polarita EEPROM
+                      dodávaných profilů)
   --link CESTA        vytvořit také symbolický odkaz CESTA na terminál
   --replay ZÁZNAM     odpovídat tak, jak odpovídala jednotka v ZÁZNAMU (sériový
                       záznam, docs/serial-trace.md): každou zaznamenanou odpověď,

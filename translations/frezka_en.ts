@@ -316,6 +316,12 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>frezka-cli: %1 %2: expected %3 (machine mm of the program&apos;s zero)
 </translation>
     </message>
+    <message>
+        <source>Height map %1 applied: X %2 to %3, Y %4 to %5 mm, heights %6 to %7 mm (%8 x %9 points)
+</source>
+        <translation>Height map %1 applied: X %2 to %3, Y %4 to %5 mm, heights %6 to %7 mm (%8 x %9 points)
+</translation>
+    </message>
 </context>
 <context>
     <name>QSerialPort</name>
@@ -386,15 +392,21 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE]
-</source>
-        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE]
-</translation>
-    </message>
-    <message>
         <source>serial trace saved to %1
 </source>
         <translation>serial trace saved to %1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
+</source>
+        <translation>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC]
+</source>
+        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC]
 </translation>
     </message>
 </context>
@@ -2638,6 +2650,61 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</source>
         <translation>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gcode::HeightMap</name>
+    <message>
+        <source>Height map line %1: unknown key &apos;%2&apos;. Use the keys of docs/height-map.md or make the line a plain comment without a colon.</source>
+        <translation>Height map line %1: unknown key &apos;%2&apos;. Use the keys of docs/height-map.md or make the line a plain comment without a colon.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: &apos;%2&apos; is not a number. Write it as a number in millimetres, such as 10 or -0.25.</source>
+        <translation>Height map line %1: &apos;%2&apos; is not a number. Write it as a number in millimetres, such as 10 or -0.25.</translation>
+    </message>
+    <message>
+        <source>The height map lacks a grid key. Its header needs origin_x_mm, origin_y_mm, spacing_x_mm, spacing_y_mm, count_x and count_y.</source>
+        <translation>The height map lacks a grid key. Its header needs origin_x_mm, origin_y_mm, spacing_x_mm, spacing_y_mm, count_x and count_y.</translation>
+    </message>
+    <message>
+        <source>The height map&apos;s grid is not usable: the spacings must be above 0 and the counts whole numbers of at least 2 (at most a million points). Probe the grid again or correct the header.</source>
+        <translation>The height map&apos;s grid is not usable: the spacings must be above 0 and the counts whole numbers of at least 2 (at most a million points). Probe the grid again or correct the header.</translation>
+    </message>
+    <message>
+        <source>Height map line 1: not a height map of version %1 (the first line must be &apos;# frezka-height-map %1&apos;). Probe the grid again with this version of Frezka.</source>
+        <translation>Height map line 1: not a height map of version %1 (the first line must be &apos;# frezka-height-map %1&apos;). Probe the grid again with this version of Frezka.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: a header line after the first row. Move it above the rows.</source>
+        <translation>Height map line %1: a header line after the first row. Move it above the rows.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: expected three numbers X,Y,Z separated by commas. Correct the row or probe the grid again.</source>
+        <translation>Height map line %1: expected three numbers X,Y,Z separated by commas. Correct the row or probe the grid again.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: X %2, Y %3 is not a point of the grid in the header. Correct the row or the header.</source>
+        <translation>Height map line %1: X %2, Y %3 is not a point of the grid in the header. Correct the row or the header.</translation>
+    </message>
+    <message>
+        <source>Height map line %1: the point X %2, Y %3 is given twice. Remove one of the rows.</source>
+        <translation>Height map line %1: the point X %2, Y %3 is given twice. Remove one of the rows.</translation>
+    </message>
+    <message>
+        <source>The height map has no row for X %1, Y %2. Every point of the grid needs one; probe the grid again.</source>
+        <translation>The height map has no row for X %1, Y %2. Every point of the grid needs one; probe the grid again.</translation>
+    </message>
+    <message>
+        <source>Cannot write the height map %1: %2. Choose a folder you may write to.</source>
+        <translation>Cannot write the height map %1: %2. Choose a folder you may write to.</translation>
+    </message>
+    <message>
+        <source>Cannot read the height map %1: %2. Check that the file exists and is readable.</source>
+        <translation>Cannot read the height map %1: %2. Check that the file exists and is readable.</translation>
+    </message>
+    <message>
+        <source>Line %1 cuts at X %2, Y %3, outside the height map (X %4 to %5, Y %6 to %7). Probe a grid that covers the whole program, or run it without the height map.</source>
+        <translation>Line %1 cuts at X %2, Y %3, outside the height map (X %4 to %5, Y %6 to %7). Probe a grid that covers the whole program, or run it without the height map.</translation>
     </message>
 </context>
 <context>
@@ -5762,6 +5829,11 @@ Options:
                       pressed at and below POS (-, default) or at and above (+)
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
+  --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
+                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+  --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
+  --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
+                      profiles&apos; EEPROM polarity)
   --link PATH         also create a symlink PATH to the terminal
   --replay TRACE      answer as the unit recorded in TRACE did (a serial trace,
                       docs/serial-trace.md): each recorded reply when the driver
@@ -5797,6 +5869,11 @@ Options:
                       pressed at and below POS (-, default) or at and above (+)
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
+  --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
+                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+  --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
+  --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
+                      profiles&apos; EEPROM polarity)
   --link PATH         also create a symlink PATH to the terminal
   --replay TRACE      answer as the unit recorded in TRACE did (a serial trace,
                       docs/serial-trace.md): each recorded reply when the driver

@@ -70,7 +70,7 @@ int usage()
     cli::err(RunCli::tr("usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] "
                         "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] "
                         "[--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] "
-                        "[--continue-at-stops] [--from-line N] [--trace FILE]\n")
+                        "[--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC]\n")
                  .arg(cli::programOptionsUsage()));
     return 2;
 }
@@ -121,6 +121,15 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
             ok = ok && a.fromLine >= 1;
         } else if (k == QLatin1String("--trace") && hasValue) {
             a.traceFile = args[++i];
+        } else if (k == QLatin1String("--surface") && hasValue) {
+            a.surface = args[++i];
+            emulator::ProbeSurface surface;
+            ok = emulator::parseProbeSurface(a.surface.toStdString(), &surface);
+            if (!ok)
+                cli::err(RunCli::tr("frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY "
+                                    "or sine:AMP,PERIOD[,Z0] (machine mm), such as "
+                                    "plane:-5,0.001,0\n")
+                             .arg(a.surface));
         } else if (a.file.isEmpty() && !k.startsWith(QLatin1String("--"))) {
             a.file = k;
         } else {
@@ -136,6 +145,8 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
         a.virtualClock = false;
     if (!sim && (a.virtualClock || a.faults > 0 || a.latencyMs > 0))
         return std::nullopt; // a real port runs in real time, with its own faults and latency
+    if (!a.surface.isEmpty() && !(sim && a.virtualClock))
+        return std::nullopt; // the simulated surface is the in-process emulator's
     if ((a.lift && a.holdAtLine == 0) || (a.holdAtLine > 0 && !(sim && a.virtualClock)))
         return std::nullopt; // the scripted operator plays on the virtual clock only
     return a;
@@ -268,6 +279,9 @@ void printReport(const RunOutcome &o, const machine::UnitProgram &program,
     // The emulator's own counters (null on a real port: only the polled ones are known).
     j[QStringLiteral("unit_steps")] =
         o.unitSteps ? QJsonValue(steps(*o.unitSteps, axes)) : QJsonValue(QJsonValue::Null);
+    // Where the last probe move (G38.x) tripped (null: none did).
+    j[QStringLiteral("probe_steps")] =
+        o.probeSteps ? QJsonValue(steps(*o.probeSteps, axes)) : QJsonValue(QJsonValue::Null);
     j[QStringLiteral("spindle_on_at_end")] =
         o.spindleOnAtEnd ? QJsonValue(*o.spindleOnAtEnd) : QJsonValue(QJsonValue::Null);
     // The feed override the link could not feed was held down to this (null: never).
@@ -343,8 +357,11 @@ int runRun(const QStringList &args)
     if (from) // before the report, which stays the last line
         printFromLine(o, *from, config, program.axisCount);
     printReport(o, program, stats, baud);
-    const machine::Steps4 expected =
-        program.commands.empty() ? program.startSteps : program.commands.back().endSteps;
+    // A program that ends with a probe that tripped ends where it tripped, not at its
+    // programmed end (the job stops short there, driver/link/probemove.h).
+    const machine::Steps4 expected = o.probeSteps && *o.probeSteps == o.finalSteps ? *o.probeSteps
+                                     : program.commands.empty() ? program.startSteps
+                                                                : program.commands.back().endSteps;
     for (int i = 0; i < program.axisCount; ++i) {
         if (o.finalSteps[static_cast<std::size_t>(i)] != expected[static_cast<std::size_t>(i)]) {
             cli::err(RunCli::tr("%1: the unit's counters differ from the planned end position\n")

@@ -5,6 +5,7 @@
 #include "app/common/datadir.h"
 
 #include "gcode/error.h"
+#include "gcode/heightmap.h"
 #include "session/tooltablefile.h"
 
 #include <QFile>
@@ -47,17 +48,47 @@ bool parseOffset(const QString &text, int *system, session::Axes4 *axes)
 
 } // namespace
 
+// The map of `path` applied to the outcome's toolpath, said on stdout with the map's range;
+// false (the reason on stderr) when the file is bad or the program cuts outside the map.
+static bool applyHeightMapFile(const QString &path, session::InterpretOutcome *outcome)
+{
+    QString error;
+    const std::optional<gcode::HeightMap> map = gcode::HeightMap::load(path, &error);
+    if (!map) {
+        err(error + QLatin1Char('\n'));
+        return false;
+    }
+    gcode::HeightMapApplied applied = gcode::applyHeightMap(*outcome->toolpath, *map);
+    if (!applied.path) {
+        err(applied.error + QLatin1Char('\n'));
+        return false;
+    }
+    out(ProgramCli::tr("Height map %1 applied: X %2 to %3, Y %4 to %5 mm, heights %6 to %7 mm "
+                       "(%8 x %9 points)\n")
+            .arg(path)
+            .arg(map->originX(), 0, 'f', 3)
+            .arg(map->endX(), 0, 'f', 3)
+            .arg(map->originY(), 0, 'f', 3)
+            .arg(map->endY(), 0, 'f', 3)
+            .arg(map->minZ(), 0, 'f', 3)
+            .arg(map->maxZ(), 0, 'f', 3)
+            .arg(map->countX())
+            .arg(map->countY()));
+    outcome->toolpath = std::make_shared<gcode::Toolpath>(std::move(*applied.path));
+    return true;
+}
+
 QString programOptionsUsage()
 {
-    return QStringLiteral(
-        "[--machine PROFILE] [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]]");
+    return QStringLiteral("[--machine PROFILE] [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]] "
+                          "[--height-map FILE]");
 }
 
 bool takeProgramOption(const QStringList &args, int &i, ProgramOptions *options, bool *ok)
 {
     const QString &key = args[i];
     const bool known = key == QLatin1String("--machine") || key == QLatin1String("--offset") ||
-                       key == QLatin1String("--work-zero");
+                       key == QLatin1String("--work-zero") || key == QLatin1String("--height-map");
     if (!known)
         return false;
     if (i + 1 >= args.size()) {
@@ -70,6 +101,8 @@ bool takeProgramOption(const QStringList &args, int &i, ProgramOptions *options,
     session::Axes4 axes{};
     if (key == QLatin1String("--machine")) {
         options->machine = value;
+    } else if (key == QLatin1String("--height-map")) {
+        options->heightMap = value;
     } else if (key == QLatin1String("--offset") ? parseOffset(value, &system, &axes)
                                                 : parseAxes(value, &axes)) {
         options->offsets.systems[std::size_t(system)] = axes;
@@ -139,6 +172,12 @@ std::optional<session::InterpretOutcome> interpretFile(const QString &file,
     if (errorCount) // the errors shown (the last line may say how many more) and those not
         *errorCount = int(outcome.errors.size() - (outcome.errorsNotShown > 0 ? 1 : 0) +
                           outcome.errorsNotShown);
+    if (outcome.errors.empty() && !options.heightMap.isEmpty() && outcome.toolpath &&
+        !applyHeightMapFile(options.heightMap, &outcome)) {
+        if (errorCount)
+            *errorCount = 1;
+        return std::nullopt;
+    }
     if (outcome.errors.empty())
         return outcome;
     for (const session::ProgramMessage &e : outcome.errors)

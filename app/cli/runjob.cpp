@@ -246,6 +246,12 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
         unit.machine.hasWorkSurface = true;
         unit.machine.workSurfaceZSteps = machine::stepsOf(*workTopMm, config.axes[2].stepsPerMm);
     }
+    if (!a.surface.isEmpty() && // checked by parseArgs; the surface in machine mm
+        emulator::parseProbeSurface(a.surface.toStdString(), &unit.surface)) {
+        for (std::size_t i = 0; i < 3; ++i)
+            unit.surface.stepsPerMm[i] = config.axes[i].stepsPerMm;
+        unit.surface.contactHigh = (config.eeprom.polarityHigh & 0x80) != 0; // as the profile
+    }
     unit.trace = a.watchBelowZMm.has_value();
     driver::TraceRecorder &recorder = driver::TraceRecorder::session();
     const auto &variant = protocol::variantInfo(config.unit.variant);
@@ -302,6 +308,8 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     out.unitStats = link.port().unit().stats();
     out.spindleOnAtEnd = link.port().unit().spindleTurning();
     out.unitSteps = link.port().unit().position();
+    if (link.liveState().probeTripped)
+        out.probeSteps = link.liveState().probeSteps;
     return out;
 }
 

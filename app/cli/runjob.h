@@ -49,6 +49,8 @@ struct RunArgs
     // where the emulator's counters first went below it.
     std::optional<double> watchBelowZMm;
     QString traceFile; // --trace: the serial trace is saved here when the run ends
+    // --surface SPEC: the emulator's work top for probing (driver/emulator/surface.h), sim only.
+    QString surface;
 };
 
 // What a run came to: the driver's job report and the unit's end state (emulator: its counters).
@@ -62,6 +64,7 @@ struct RunOutcome
     std::optional<std::array<std::int64_t, 4>> unitSteps; // the emulator's own counters at the end
     int programStops = 0;                                 // M0 / M1 / M6 the run continued after
     std::optional<std::array<std::int64_t, 4>> firstBelowSteps; // RunArgs::watchBelowZMm's
+    std::optional<std::array<std::int64_t, 4>> probeSteps;      // the last probe's trip point
     QString error;
 };
 

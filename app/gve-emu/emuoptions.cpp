@@ -1,5 +1,6 @@
 #include "emuoptions.h"
 
+#include "driver/emulator/surface.h"
 #include "protocol/variant.h"
 
 #include <QCoreApplication>
@@ -85,6 +86,11 @@ QString emuHelpText()
         "                      pressed at and below POS (-, default) or at and above (+)\n"
         "  --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.\n"
         "                      --limit 6:X=200000,+ (GVE64 end switch X)\n"
+        "  --surface SPEC      the work's top, touched by the tool probe (IN15), in machine\n"
+        "                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]\n"
+        "  --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)\n"
+        "  --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped\n"
+        "                      profiles' EEPROM polarity)\n"
         "  --link PATH         also create a symlink PATH to the terminal\n"
         "  --replay TRACE      answer as the unit recorded in TRACE did (a serial trace,\n"
         "                      docs/serial-trace.md): each recorded reply when the driver\n"
@@ -103,6 +109,7 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
     auto &unit = options.simulation.unit;
     auto &wire = options.simulation.wire;
     int baud = 0;
+    unit.surface.contactHigh = false; // the shipped profiles' IN15 polarity (EEPROM ST3 bit 7)
     for (int i = 0; i < args.size(); ++i) {
         const QString &a = args.at(i);
         if (a == QLatin1String("--help") || a == QLatin1String("-h")) {
@@ -170,6 +177,19 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
             ok = ok && input >= 0 && input <= 15 && parseSwitch(v.mid(colon + 1), input, sw);
             if (ok)
                 unit.switches.push_back(sw);
+        } else if (a == QLatin1String("--surface")) {
+            ok = emulator::parseProbeSurface(v.toStdString(), &unit.surface);
+        } else if (a == QLatin1String("--steps-per-mm")) {
+            const QStringList parts = v.split(QLatin1Char(','));
+            ok = parts.size() == 1 || parts.size() == 3;
+            for (std::size_t k = 0; ok && k < 3; ++k) {
+                const double n = parts[parts.size() == 1 ? 0 : qsizetype(k)].toDouble(&ok);
+                ok = ok && n > 0;
+                unit.surface.stepsPerMm[k] = n;
+            }
+        } else if (a == QLatin1String("--probe-contact")) {
+            ok = v == QLatin1String("0") || v == QLatin1String("1");
+            unit.surface.contactHigh = v == QLatin1String("1");
         } else if (a == QLatin1String("--link")) {
             options.linkPath = v;
         } else if (a == QLatin1String("--replay")) {

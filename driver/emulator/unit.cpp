@@ -295,6 +295,8 @@ void Unit::Impl::advanceBy(double seconds)
         const double dt = reached ? event : left;
         engine.step(dt);
         left = std::max(0.0, left - dt);
+        if (options.surface.active())
+            updateWatches(); // the surface under the new X/Y
         observeSafety();
         checkInterrupts();
         checkHoming();
@@ -323,6 +325,12 @@ std::uint16_t Unit::Impl::inputLevels() const
         if (on)
             levels |= static_cast<std::uint16_t>(1u << s.input);
     }
+    const ProbeSurface &surface = options.surface;
+    if (surface.active()) {
+        const bool touching = pos[2] <= surface.touchZSteps(pos[0], pos[1]);
+        const auto bit = static_cast<std::uint16_t>(1u << surface.input);
+        levels = touching == surface.contactHigh ? levels | bit : levels & ~bit;
+    }
     return levels;
 }
 
@@ -331,6 +339,10 @@ void Unit::Impl::updateWatches()
     std::vector<MotionEngine::Watch> watches;
     for (const PositionSwitch &s : switches)
         watches.push_back({s.axis, s.side < 0 ? s.positionSteps + 1 : s.positionSteps});
+    if (options.surface.active()) { // aimed under the current X/Y (surface.h)
+        const auto pos = engine.position();
+        watches.push_back({2, options.surface.touchZSteps(pos[0], pos[1]) + 1});
+    }
     engine.setWatches(std::move(watches));
 }
 

@@ -12,6 +12,7 @@
 
 #include "driver/emulator/motion.h"
 #include "driver/emulator/safetywatch.h"
+#include "driver/emulator/surface.h"
 #include "protocol/variant.h"
 
 #include <array>
@@ -60,6 +61,8 @@ struct UnitOptions
     std::string firmware{};
     // The machine behind the unit: spin-up, axis maxima, the work, for the safety counters.
     MachineModel machine{};
+    // The work's top for probing (surface.h); Kind::None: the probe input only as set.
+    ProbeSurface surface{};
     bool operator==(const UnitOptions &) const = default;
 };
 

@@ -36,6 +36,7 @@ private slots:
     void exitsCleanlyOnSigint();
     void optionsShapeTheUnit();
     void rejectsBadOptions();
+    void surfaceTouchesTheProbe();
 
 private:
     QByteArray ask(const QByteArray &command);
@@ -239,10 +240,33 @@ void GveEmuPtyTest::rejectsBadOptions()
     QVERIFY(p.waitForFinished(kPatienceMs));
     QCOMPARE(p.exitCode(), 0);
     const QByteArray help = p.readAllStandardOutput();
-    for (const char *opt : {"--variant", "--baud", "--max-rate", "--address", "--latency", "--seed",
-                            "--corrupt", "--drop", "--duplicate", "--lose-reply", "--eeprom",
-                            "--home", "--limit", "--link", "--verbose"})
+    for (const char *opt :
+         {"--variant", "--baud", "--max-rate", "--address", "--latency", "--seed", "--corrupt",
+          "--drop", "--duplicate", "--lose-reply", "--eeprom", "--home", "--limit", "--surface",
+          "--steps-per-mm", "--probe-contact", "--link", "--verbose"})
         QVERIFY2(help.contains(opt), opt);
+}
+
+// --surface: the tool probe input IN15 (I2 bit 7) reads the shipped profiles' contact level 0
+// once Z is at or below the work's top (a plane at Z -5 mm, 200 steps/mm: Z counter -1000).
+void GveEmuPtyTest::surfaceTouchesTheProbe()
+{
+    start({QStringLiteral("--surface"), QStringLiteral("plane:-5,0,0"),
+           QStringLiteral("--steps-per-mm"), QStringLiteral("200")});
+    QCOMPARE(ask("!0Y-\r"), QByteArray("0,Y-\r"));
+    QCOMPARE(ask("!0V20000\r"), QByteArray("0\r"));
+    QCOMPARE(ask("!0I2\r"), QByteArray("0,80\r"));
+    QCOMPARE(ask("!0L0,0,-999\r"), QByteArray("0\r"));
+    QVERIFY(waitUntilDrained());
+    QCOMPARE(ask("!0I2\r"), QByteArray("0,80\r")); // 0.005 mm above
+    QCOMPARE(ask("!0L0,0,-1\r"), QByteArray("0\r"));
+    QVERIFY(waitUntilDrained());
+    QCOMPARE(ask("!0I2\r"), QByteArray("0,00\r")); // touching
+    QProcess p;
+    p.start(QStringLiteral(GVE_EMU_PATH), {QStringLiteral("--surface"), QStringLiteral("cone:1")});
+    QVERIFY(p.waitForFinished(kPatienceMs));
+    QCOMPARE(p.exitCode(), 2);
+    QVERIFY(p.readAllStandardError().contains("--surface"));
 }
 
 QTEST_GUILESS_MAIN(GveEmuPtyTest)
