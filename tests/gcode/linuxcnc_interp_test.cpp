@@ -66,9 +66,7 @@ const std::map<std::string, Refusal> &refused()
         // Meant to fail: the (abort, ...) comment at the loop's 20th pass ends the program.
         {"abort-hot-comment", {E::ProgramAborted, "(abort, ...) in a loop, as LinuxCNC"}},
         // LinuxCNC dialect Frezka does not read yet.
-        {"exists", {E::BadParameterName, "EXISTS[#<name>]"}},
         {"machine-coord-params", {E::UnsupportedRotation, "coordinate system rotation G10 L2 R"}},
-        {"oword-bug315-p2", {E::OwordSyntax, "an O number read from a parameter, o#<sub> call"}},
         {"return-value", {E::ReturnOutsideSub, "return at the top level"}},
     };
     return kRefused;
