@@ -239,15 +239,16 @@ bool Interpreter::returnFromSub(Error *error)
     const std::string what = labelText(label) + " " + okindName(m_block.oKind);
     if (!m_parser.owordArgs(m_block, &m_args, error))
         return false;
-    // Leave every if/loop opened inside the subroutine.
+    // Leave every if/loop opened inside the subroutine. As rs274, return and endsub end the
+    // running call whatever their label (o1010 return inside o1010 if of o1000 sub returns from
+    // o1000); outside a call they are an error.
     std::size_t i = m_frames.size();
     while (i > 0 && m_frames[i - 1].kind != FrameKind::Call)
         --i;
-    if (i == 0 || m_frames[i - 1].label != label)
+    if (i == 0)
         return failAt(ErrorCode::ReturnOutsideSub, m_block.oColumn, what, error);
     m_valueReturned = !m_args.empty();
-    if (m_valueReturned)
-        m_value = m_args[0];
+    m_value = m_valueReturned ? m_args[0] : 0.0; // #<_value> is 0 after a plain return
     const Frame call = m_frames[i - 1];
     m_frames.resize(i - 1);
     m_params.popScope();

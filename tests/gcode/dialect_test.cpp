@@ -55,3 +55,28 @@ TEST(Dialect, ComputedSubroutineNumbers)
     ASSERT_EQ(undefined.errors.size(), 1u);
     EXPECT_EQ(undefined.errors[0].code, ErrorCode::NamedParameterUndefined);
 }
+
+// rs274: return and endsub end the running call whatever their O label (the suite's
+// return-value returns with the label of the if it stands in), set #<_value> (0 for a plain
+// return); outside a call they are an error.
+TEST(Dialect, ReturnEndsTheRunningCallWhateverItsLabel)
+{
+    const Result r = run("o1 sub\no2 if [#1 GT 0]\no2 return [5]\no2 endif\no1 endsub [7]\n"
+                         "o4 sub\no4 return\no4 endsub\n"
+                         "o1 call [1]\nG0 X#<_value> Y#<_value_returned>\n"
+                         "o1 call [0]\nG0 X#<_value>\no4 call\nG0 X#<_value> Y#<_value_returned>\n"
+                         "M2\n");
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    EXPECT_EQ(r.toolpath.end(0), (Point4{5, 1, 0, 0}));
+    EXPECT_EQ(r.toolpath.end(1), (Point4{7, 1, 0, 0}));
+    EXPECT_EQ(r.toolpath.end(2), (Point4{0, 0, 0, 0}));
+    // A definition ends at its own label's endsub only; an endsub of another label returns.
+    const Result other = run("o1 sub\nG0 X1\no2 endsub\nG0 X5\no1 endsub\no1 call\nG0 X3\nM2\n");
+    ASSERT_TRUE(other.ok()) << englishMessage(other.errors[0]);
+    ASSERT_EQ(other.toolpath.size(), 3u); // X1, X3, M2
+    EXPECT_EQ(other.toolpath.end(1).x, 3);
+    const Result top = run("G0 X1\no2 return\nG0 X3\nM2\n");
+    ASSERT_EQ(top.errors.size(), 1u);
+    EXPECT_EQ(top.errors[0].code, ErrorCode::ReturnOutsideSub);
+    EXPECT_EQ(top.errors[0].line, 2u);
+}

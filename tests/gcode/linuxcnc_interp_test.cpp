@@ -67,7 +67,6 @@ const std::map<std::string, Refusal> &refused()
         {"abort-hot-comment", {E::ProgramAborted, "(abort, ...) in a loop, as LinuxCNC"}},
         // LinuxCNC dialect Frezka does not read yet.
         {"machine-coord-params", {E::UnsupportedRotation, "coordinate system rotation G10 L2 R"}},
-        {"return-value", {E::ReturnOutsideSub, "return at the top level"}},
     };
     return kRefused;
 }
