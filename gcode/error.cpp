@@ -157,8 +157,11 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "P0 is the active coordinate system, P1 to P9 are G54 to G59.3.")},
     {ErrorCode::UnsupportedRotation, "UnsupportedRotation",
-     QT_TRANSLATE_NOOP("frezka::gcode", "Coordinate system rotation (G10 R) is not supported"),
-     QT_TRANSLATE_NOOP("frezka::gcode", "Remove the R word.")},
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "%1 is not supported under a coordinate system rotation (G10 L2 R)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Arcs outside G17 and cutter radius compensation need the rotation off: "
+                       "set R0 (G10 L2 P0 R0) for that part, or rotate the part in the CAM.")},
     {ErrorCode::ValueOutOfRange, "ValueOutOfRange",
      QT_TRANSLATE_NOOP("frezka::gcode", "Value of %1 is out of range"),
      QT_TRANSLATE_NOOP("frezka::gcode",

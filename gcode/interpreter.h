@@ -238,6 +238,17 @@ private:
     // After an offset changed: the program position moves by the change (rs274ngc's
     // current = current + old offset - new offset), the machine position stays.
     void shiftProgram(const std::array<double, 4> &oldOffsets);
+    // Coordinate-system rotation (interp_rotation.cpp).
+    double rotation() const { return m_rotationDeg[m_coord]; } // degrees, counter-clockwise
+    Point4 toMachine(const Point4 &prog) const;                // every offset and the rotation
+    Point4 toProgram(const Point4 &machine) const;
+    // After the active system or an offset changed: as shiftProgram, or with a rotation before or
+    // after the change the current point found anew in the system (rs274ngc's
+    // find_current_in_system).
+    void shiftProgram(const std::array<double, 4> &oldOffsets, double oldRotationDeg);
+    void setSystemXY(int system, bool l20, double rotationDeg); // G10 L2/L20 X Y R
+    void carryActiveSystem(const std::array<double, 4> &oldOrigin, double oldRotationDeg);
+    bool rotationAllows(int motion, Error *error) const; // arcs in G17 only under a rotation
     double unit() const { return m_metric ? 1.0 : 25.4; }
     double lengthWord(char c) const { return m_block.get(c) * unit(); }
     bool fail(ErrorCode code, char word, std::string detail, Error *error) const;
@@ -289,6 +300,7 @@ private:
     // the program compares, e.g. a cycle's clearance height, stay exactly as programmed).
     Point4 m_prog;
     std::array<std::array<double, 4>, 9> m_origin{}; // G54..G59.3 offsets, mm
+    std::array<double, 9> m_rotationDeg{};           // G10 L2 R of G54..G59.3, degrees
     std::array<double, 4> m_g92{};                   // active G92 offset, mm
     std::array<double, 4> m_g92Saved{};              // #5211.. (kept by G92.2, restored by G92.3)
     bool m_g92Enabled = false;

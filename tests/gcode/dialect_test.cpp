@@ -1,9 +1,16 @@
 // LinuxCNC dialect the interpreter suite exercises: EXISTS of numbered parameters, computed
 // O numbers, coordinate-system rotation, top-level return. Each case checked against what
 // `rs274 -g` gives for the same text (its values noted beside each).
+#include "rs274.h"
+
 #include "gcode/interpreter.h"
 
 #include <gtest/gtest.h>
+
+#include <QTemporaryDir>
+
+#include <cmath>
+#include <fstream>
 
 using namespace frezka::gcode;
 
@@ -79,4 +86,62 @@ TEST(Dialect, ReturnEndsTheRunningCallWhateverItsLabel)
     ASSERT_EQ(top.errors.size(), 1u);
     EXPECT_EQ(top.errors[0].code, ErrorCode::ReturnOutsideSub);
     EXPECT_EQ(top.errors[0].line, 2u);
+}
+
+// G10 L2 R turns the system's XY plane about its origin, with the G92 offset inside the turn
+// (rs274ngc and its canon): straight moves, both arc forms, G91, G92, G10 L20 in the turned
+// system, another system with its own angle, a canned cycle, polar words, G53 and G28 read back
+// through the turn, and R0 again. Compared with rs274 move by move, feeds included.
+TEST(Dialect, CoordinateRotationMatchesRs274)
+{
+    if (test::rs274Path().empty())
+        GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const std::string file = dir.filePath("rotation.ngc").toStdString();
+    std::ofstream(file) << "G21 G17 G90 G94 F600\nG10 L2 P1 X10 Y5 R30\nG0 X10 Y0 Z5\n"
+                           "G1 X20 Y10\nG2 X30 Y0 I5 J-5\nG3 X20 Y-10 R10\nG91 G1 X5 Y5\nG90\n"
+                           "G92 X0 Y0\nG1 X10 Y10\nG2 X20 Y0 I5 J-5 F300\nG92.1\n"
+                           "G10 L20 P1 X0 Y0\nG1 X5 Y5\nG10 L2 P2 X-10 R-45\nG55 G0 X1 Y1\n"
+                           "G81 R2 Z-1 X5 Y5\nG80\nG54 G1 X2 Y3\nG10 L2 P0 R90\nG1 X1 Y0\n"
+                           "G0 @5 ^45\nG53 G0 X0 Y0\nG1 X3\nG28 X0\nG1 Y4\nG10 L2 P0 R0\n"
+                           "G1 X1 Y1\nM2\n";
+    EXPECT_TRUE(test::matchesRs274(file));
+    const Result r = interpretFile(file);
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    // G53 X0 Y0 under a 90 degree turn is the machine origin all the same.
+    bool sawOrigin = false;
+    for (std::size_t i = 0; i < r.toolpath.size(); ++i)
+        sawOrigin =
+            sawOrigin || (r.toolpath.line(i) == 23 && std::fabs(r.toolpath.end(i).x) < 1e-9 &&
+                          std::fabs(r.toolpath.end(i).y) < 1e-9);
+    EXPECT_TRUE(sawOrigin);
+}
+
+// Under a rotation, arcs outside G17 and cutter radius compensation are refused with the code
+// that names them; R in G10 L20 is refused as rs274 refuses it.
+TEST(Dialect, RotationRefusesWhatItCannotTurn)
+{
+    struct Case
+    {
+        const char *text;
+        ErrorCode code;
+        std::uint32_t line;
+    };
+    const Case cases[] = {
+        {"G10 L2 P1 R10\nG18 G2 X1 Z0 I0.5 K0 F100\nM2\n", ErrorCode::UnsupportedRotation, 2},
+        {"G10 L2 P1 R10\nG41.1 D2\nM2\n", ErrorCode::UnsupportedRotation, 2},
+        {"G10 L20 P1 X0 R10\nM2\n", ErrorCode::WordNotUsed, 1},
+    };
+    for (const Case &c : cases) {
+        const Result r = run(c.text);
+        ASSERT_EQ(r.errors.size(), 1u) << c.text;
+        EXPECT_EQ(r.errors[0].code, c.code) << c.text;
+        EXPECT_EQ(r.errors[0].line, c.line) << c.text;
+    }
+    const Result angle = run("G10 L2 P2 R12.5\nG0 X#5250\nM2\n"); // #5210 + 20 x 2
+    ASSERT_TRUE(angle.ok());
+    EXPECT_EQ(angle.toolpath.end(0).x, 12.5);
+    const Result plain = run("G10 L2 P1 R0\nG18 G2 X1 Z0 I0.5 K0 F100\nM2\n");
+    EXPECT_TRUE(plain.ok());
 }
