@@ -220,6 +220,16 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "Use @ and ^ only in the XY plane (G17), without X and Y words and without "
                        "G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).")},
+    {ErrorCode::ModalStateNotAlone, "ModalStateNotAlone",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 shares its line with other words"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Put M70, M71, M72 and M73 on a line of their own (LinuxCNC runs them in "
+                       "the middle of the line's other codes).")},
+    {ErrorCode::ModalStateNotSaved, "ModalStateNotSaved",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 restores a state that was not saved at this level"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Save the modal state with M70 (or M73) in the same subroutine, or at the "
+                       "top level, before M72, and do not invalidate it with M71 in between.")},
     {ErrorCode::ZeroFeedRate, "ZeroFeedRate",
      QT_TRANSLATE_NOOP("frezka::gcode", "%1 with zero feed rate"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Set a feed rate with F before the first feed move.")},

@@ -273,11 +273,8 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
     info.centre = m_pos;
     axisRef(info.centre, ax.u) = cu + offset(ax.u);
     axisRef(info.centre, ax.v) = cv + offset(ax.v);
-    if (rotation() != 0) { // G17 only (rotationAllows)
-        const Point4 c = toMachine({cu, cv, m_prog.z, m_prog.a});
-        info.centre.x = c.x;
-        info.centre.y = c.y;
-    }
+    if (rotation() != 0) // G17 only (rotationAllows)
+        info.centre = turnedCentre(cu, cv);
 
     double feed = m_feedMm;
     if (m_inverseTime)

@@ -229,6 +229,7 @@ bool Interpreter::callSub(Error *error)
     for (int i = 0; i < Parameters::kArgCount; ++i)
         m_params.setNumbered(i + 1, i < static_cast<int>(m_args.size()) ? m_args[i] : 0.0);
     m_frames.push_back({FrameKind::Call, label, m_next, m_line, 0, oColumn()});
+    contextHere() = {}; // the call level starts with no saved state
     jump(it->second.offset, it->second.line);
     return true;
 }
@@ -253,7 +254,7 @@ bool Interpreter::returnFromSub(Error *error)
     m_frames.resize(i - 1);
     m_params.popScope();
     jump(call.offset, call.line);
-    return true;
+    return leaveCallContext(error);
 }
 
 bool Interpreter::loopJump(bool isBreak, Error *error)

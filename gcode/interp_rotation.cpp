@@ -54,6 +54,12 @@ Point4 Interpreter::toProgram(const Point4 &machine) const
     return {x - m_g92[0], y - m_g92[1], machine.z - offset(2), machine.a - offset(3)};
 }
 
+Point4 Interpreter::turnedCentre(double cu, double cv) const
+{
+    const Point4 c = toMachine({cu, cv, m_prog.z, m_prog.a});
+    return {c.x, c.y, m_pos.z, m_pos.a}; // the normal coordinate is the start's (ArcInfo)
+}
+
 void Interpreter::shiftProgram(const std::array<double, 4> &oldOffsets, double oldRotationDeg)
 {
     if (oldRotationDeg != 0 || rotation() != 0) {

@@ -90,6 +90,7 @@ bool Interpreter::toolLengthOffset(Error *error)
 {
     const Block &b = m_block;
     const int g = b.g[kGToolLength];
+    m_toolLengthG = g;
     std::array<double, 4> next = m_toolOffset;
     auto fromEntry = [](const ToolEntry &e) {
         return std::array<double, 4>{e.offsetMm[0], e.offsetMm[1], e.offsetMm[2], e.offsetMm[3]};

@@ -247,6 +247,8 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
     if (m_block.oKind != OKind::None)
         return executeOword(error);
     m_parsed = true;
+    if (m_block.hasM(kMState))
+        return modalState(error);
     return executeBlock(error);
 }
 

@@ -231,6 +231,27 @@ private:
     // recursive call), naming the line reached; at that line when no loop or call runs.
     Error boundError(ErrorCode plain, ErrorCode inLoop, std::uint64_t bound) const;
 
+    // Modal state save and restore, M70-M73 (interp_state.cpp).
+    struct ModalContext
+    {
+        bool valid = false, restoreOnReturn = false;
+        bool metric = true;
+        // 10 x the G code: plane, compensation, distance, feed mode, coordinate system, tool
+        // length, retract mode, arc distance, G92 applied (G92.3) or not (G92.2).
+        std::array<int, 9> codes{};
+        int pathMode = 2;
+        double pathP = 0, pathQ = 0, feed = 0, speed = 0; // in the saved units
+        int spindle = 0;
+        bool mist = false, flood = false;
+    };
+    ModalContext modalNow() const;
+    std::size_t callDepth() const;
+    ModalContext &contextHere();
+    bool modalState(Error *error); // a line with M70-M73
+    bool restoreModal(const ModalContext &saved, Error *error);
+    bool runStateLine(const std::string &text, Error *error);
+    bool leaveCallContext(Error *error); // after return/endsub: M73's restore
+
     // Coordinates.
     double offset(int axis) const;
     Point4 programPosition() const { return m_prog; }
@@ -242,6 +263,7 @@ private:
     double rotation() const { return m_rotationDeg[m_coord]; } // degrees, counter-clockwise
     Point4 toMachine(const Point4 &prog) const;                // every offset and the rotation
     Point4 toProgram(const Point4 &machine) const;
+    Point4 turnedCentre(double cu, double cv) const; // a G17 arc's centre (program) in machine
     // After the active system or an offset changed: as shiftProgram, or with a rotation before or
     // after the change the current point found anew in the system (rs274ngc's
     // find_current_in_system).
@@ -306,6 +328,8 @@ private:
     bool m_g92Enabled = false;
     std::array<double, 4> m_g28{}, m_g30{}; // stored positions, machine mm
     std::array<double, 4> m_toolOffset{};   // G43's offsets in force, mm (A degrees)
+    int m_toolLengthG = 490;                // the last G43/G43.1/G43.2/G49, 10 x the code
+    std::vector<ModalContext> m_contexts;   // M70/M73 state per call level (0: top)
     ToolTable m_tools;                      // Options::toolTable as the program changes it
     bool m_toolsStrict = false;             // a table was given: tools must be in it
     bool m_toolsChanged = false;

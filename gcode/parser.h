@@ -43,6 +43,7 @@ enum MGroup : int {
     kMToolChange = 6,
     kMSpindle = 7,
     kMCoolant = 8,
+    kMState = 10, // M70-M73 (Frezka's own group; M100-M199 are refused in it)
     kMGroupCount = 11,
 };
 

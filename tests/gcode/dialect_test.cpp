@@ -145,3 +145,47 @@ TEST(Dialect, RotationRefusesWhatItCannotTurn)
     const Result plain = run("G10 L2 P1 R0\nG18 G2 X1 Z0 I0.5 K0 F100\nM2\n");
     EXPECT_TRUE(plain.ok());
 }
+
+// M70 saves the modal state, M72 restores it (units first, F to one decimal, S, the G modes
+// that differ, spindle and coolant), M73 restores it when the subroutine ends by endsub or by a
+// return inside an if, M71 forgets it. Feeds and spindle speeds compared with rs274.
+TEST(Dialect, ModalStateSaveAndRestoreMatchesRs274)
+{
+    if (test::rs274Path().empty())
+        GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const std::string file = dir.filePath("m7x.ngc").toStdString();
+    const char *program =
+        "G21 G90 F200 S1000 M3\nG1 X1\nM70\nG20 G91 F5 S300 M4 M8\nG1 X1\n"
+        "M72\nG1 X2\no<s> sub\nM73\nG20 G91 F7.25 S100 M5 M7\nG1 X1\n"
+        "o<s> endsub\no<s> call\nG1 X3\no<r> sub\nM73\nF33 G91 S5\n"
+        "o1 if [1]\no1 return\no1 endif\no<r> endsub\no<r> call\nG1 X4\nM71\nM2\n";
+    std::ofstream(file) << program;
+    EXPECT_TRUE(test::matchesRs274(file));
+    const Result r = interpretFile(file);
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    // After M72 the feed is 200 mm/min again and the spindle turns clockwise at 1000 rpm.
+    std::size_t g1x2 = 0;
+    while (g1x2 < r.toolpath.size() && r.toolpath.line(g1x2) != 7)
+        ++g1x2;
+    ASSERT_LT(g1x2, r.toolpath.size());
+    EXPECT_DOUBLE_EQ(r.toolpath.feedMmPerMin(g1x2), 200);
+    EXPECT_EQ(r.toolpath.end(g1x2).x, 2);
+}
+
+TEST(Dialect, ModalStateErrors)
+{
+    const Result unsaved = run("M70\nM71\nM72\nM2\n");
+    ASSERT_EQ(unsaved.errors.size(), 1u);
+    EXPECT_EQ(unsaved.errors[0].code, ErrorCode::ModalStateNotSaved);
+    EXPECT_EQ(unsaved.errors[0].line, 3u);
+    // A call level has its own saved state: the caller's M70 is not the subroutine's.
+    const Result level = run("M70\no1 sub\nM72\no1 endsub\no1 call\nM2\n");
+    ASSERT_EQ(level.errors.size(), 1u);
+    EXPECT_EQ(level.errors[0].code, ErrorCode::ModalStateNotSaved);
+    const Result shared = run("M70 G1 X1 F10\nM2\n");
+    ASSERT_EQ(shared.errors.size(), 1u);
+    EXPECT_EQ(shared.errors[0].code, ErrorCode::ModalStateNotAlone);
+    EXPECT_EQ(shared.errors[0].column, 1u);
+}
