@@ -189,7 +189,7 @@ int mGroup(int code, bool *supported, const char **reason)
     case 71:
     case 72:
     case 73:
-        return refuse(10, "modal state save/restore");
+        return kMState;
     default:
         if (code >= 100 && code <= 199)
             return refuse(10, "user-defined M code");

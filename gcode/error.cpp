@@ -157,8 +157,11 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "P0 is the active coordinate system, P1 to P9 are G54 to G59.3.")},
     {ErrorCode::UnsupportedRotation, "UnsupportedRotation",
-     QT_TRANSLATE_NOOP("frezka::gcode", "Coordinate system rotation (G10 R) is not supported"),
-     QT_TRANSLATE_NOOP("frezka::gcode", "Remove the R word.")},
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "%1 is not supported under a coordinate system rotation (G10 L2 R)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Arcs outside G17 and cutter radius compensation need the rotation off: "
+                       "set R0 (G10 L2 P0 R0) for that part, or rotate the part in the CAM.")},
     {ErrorCode::ValueOutOfRange, "ValueOutOfRange",
      QT_TRANSLATE_NOOP("frezka::gcode", "Value of %1 is out of range"),
      QT_TRANSLATE_NOOP("frezka::gcode",
@@ -217,6 +220,16 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "Use @ and ^ only in the XY plane (G17), without X and Y words and without "
                        "G53; at X0 Y0 give the angle ^ with an absolute radius @ (G90).")},
+    {ErrorCode::ModalStateNotAlone, "ModalStateNotAlone",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 shares its line with other words"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Put M70, M71, M72 and M73 on a line of their own (LinuxCNC runs them in "
+                       "the middle of the line's other codes).")},
+    {ErrorCode::ModalStateNotSaved, "ModalStateNotSaved",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 restores a state that was not saved at this level"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Save the modal state with M70 (or M73) in the same subroutine, or at the "
+                       "top level, before M72, and do not invalidate it with M71 in between.")},
     {ErrorCode::ZeroFeedRate, "ZeroFeedRate",
      QT_TRANSLATE_NOOP("frezka::gcode", "%1 with zero feed rate"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Set a feed rate with F before the first feed move.")},

@@ -66,6 +66,8 @@ enum class ErrorCode : std::uint16_t {
     CompNotAllowed = 227,
     CompMissingD = 228,
     PolarNotAllowed = 229,
+    ModalStateNotAlone = 230,
+    ModalStateNotSaved = 231,
     // Motion (3xx)
     ZeroFeedRate = 300,
     InverseTimeFeedMissing = 301,

@@ -269,22 +269,8 @@ bool Parser::readUnary(double *value, Error *error)
         return fail(ErrorCode::UnknownFunction, start, name, error);
     if (m_pos >= m_text.size() || m_text[m_pos] != '[')
         return fail(ErrorCode::ExpressionExpected, m_pos, "after " + name, error);
-    if (name == "exists") {
-        // exists[#<name>]
-        ++m_pos;
-        if (m_pos + 1 >= m_text.size() || m_text[m_pos] != '#' || m_text[m_pos + 1] != '<')
-            return fail(ErrorCode::BadParameterName, m_pos, "exists", error);
-        ++m_pos;
-        std::string_view pname;
-        if (!readName(&pname, error))
-            return false;
-        if (m_pos >= m_text.size() || m_text[m_pos] != ']')
-            return fail(ErrorCode::UnclosedBracket, start, {}, error);
-        ++m_pos;
-        double dummy = 0;
-        *value = m_params.named(pname, &dummy) ? 1.0 : 0.0;
-        return true;
-    }
+    if (name == "exists")
+        return readExists(start, value, error);
     double a = 0;
     if (!readExpression(&a, error))
         return false;
@@ -335,6 +321,32 @@ bool Parser::readUnary(double *value, Error *error)
     } else { // tan
         *value = std::tan(a * kDegToRad);
     }
+    return true;
+}
+
+// exists[#<name>] (1 when the parameter has a value) or exists[#n] (LinuxCNC: 1 when n, any
+// integer value such as ##1 or #[1+1], names a parameter of #1..#5601; 0 otherwise, no error).
+bool Parser::readExists(std::size_t start, double *value, Error *error)
+{
+    ++m_pos; // '['
+    if (m_pos >= m_text.size() || m_text[m_pos] != '#')
+        return fail(ErrorCode::BadParameterName, m_pos, "exists", error);
+    ++m_pos;
+    if (m_pos < m_text.size() && m_text[m_pos] == '<') {
+        std::string_view pname;
+        if (!readName(&pname, error))
+            return false;
+        double dummy = 0;
+        *value = m_params.named(pname, &dummy) ? 1.0 : 0.0;
+    } else {
+        double index = 0;
+        if (!readInteger(&index, m_pos - 1, error))
+            return false;
+        *value = index >= 1 && index < Parameters::kCount ? 1.0 : 0.0;
+    }
+    if (m_pos >= m_text.size() || m_text[m_pos] != ']')
+        return fail(ErrorCode::UnclosedBracket, start, {}, error);
+    ++m_pos;
     return true;
 }
 

@@ -50,6 +50,8 @@ bool Interpreter::compOn(Error *error)
         return failAt(ErrorCode::CompPlane, col, gName(g), error);
     if (m_comp.on())
         return failAt(ErrorCode::CompAlreadyOn, col, gName(g), error);
+    if (rotation() != 0) // interp_rotation.cpp
+        return failAt(ErrorCode::UnsupportedRotation, col, gName(g), error);
     CompSide side = g == 410 || g == 411 ? CompSide::Left : CompSide::Right;
     double radius = 0;
     if (g == 411 || g == 421) { // D is the diameter

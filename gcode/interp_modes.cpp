@@ -136,8 +136,9 @@ bool Interpreter::executeModalGroups(Error *error)
     if (b.hasG(kGCoordSystem)) {
         const int g = b.g[kGCoordSystem];
         const auto before = offsets();
+        const double oldRotation = rotation();
         m_coord = g < 590 ? (g - 540) / 10 : 5 + (g - 590);
-        shiftProgram(before);
+        shiftProgram(before, oldRotation);
     }
     if (b.hasG(kGPathControl)) {
         const int g = b.g[kGPathControl];
@@ -220,10 +221,21 @@ bool Interpreter::setOffsets(Error *error)
     if (p < 0 || p > 9 || p != std::floor(p))
         return fail(ErrorCode::G10BadP, 'p', std::to_string(p), error);
     const int system = p == 0 ? m_coord : static_cast<int>(p) - 1;
+    if (b.has('r') && l == 20)
+        return fail(ErrorCode::WordNotUsed, 'r', "R", error); // rs274: R not allowed in G10 L20
+    const double rotationDeg = b.has('r') ? b.get('r') : m_rotationDeg[system];
     const auto before = offsets();
     const auto active = m_origin[m_coord];
+    const double oldRotation = rotation();
+    const bool rotated = b.has('r') || m_rotationDeg[system] != 0;
+    if (rotated) {
+        // X and Y with the system's rotation (interp_rotation.cpp), then Z and A as below.
+        if (system == m_coord && m_comp.on())
+            return failAt(ErrorCode::CompNotAllowed, col, "G10 L2 R", error);
+        setSystemXY(system, l == 20, rotationDeg);
+    }
     const double *prog = &m_prog.x;
-    for (int i = 0; i < 4; ++i) {
+    for (int i = rotated ? 2 : 0; i < 4; ++i) {
         const char c = kAxisLetters[i];
         if (!b.has(c))
             continue;
@@ -231,7 +243,12 @@ bool Interpreter::setOffsets(Error *error)
         // L20: the offset that makes the current position read v.
         m_origin[system][i] = l == 2 ? v : prog[i] + active[i] - v;
     }
-    shiftProgram(before); // no change unless the active system was set
+    if (system != m_coord)
+        return true;
+    if (oldRotation != 0 || rotation() != 0)
+        carryActiveSystem(active, oldRotation);
+    else
+        shiftProgram(before);
     return true;
 }
 
@@ -252,6 +269,17 @@ bool Interpreter::homeMove(bool g30, Error *error)
             p[i] = home[i];
             prog[i] = home[i] - offset(i);
         }
+    }
+    if (rotation() != 0) {
+        // rs274ngc's convert_home: the axes given take the stored point's program coordinates
+        // in the turned system, so a G28 X0 moves machine Y as well.
+        const Point4 homeProg = toProgram({home[0], home[1], home[2], home[3]});
+        m_prog = mid.prog;
+        for (int i = 0; i < 4; ++i) {
+            if (all || m_block.has(kAxisLetters[i]))
+                prog[i] = (&homeProg.x)[i];
+        }
+        m_pos = toMachine(m_prog);
     }
     m_toolpath.appendRapid(m_pos, feedMm(), m_line);
     return true;

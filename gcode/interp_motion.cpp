@@ -97,6 +97,13 @@ Interpreter::Target Interpreter::targetOf(bool machineCoords) const
     }
     if (m_block.hasPolar() && !machineCoords)
         polarTarget(&t);
+    if (rotation() != 0) {
+        // X and Y turn together (interp_rotation.cpp); G53 gives machine X and Y.
+        if (machineCoords)
+            t.prog = toProgram(t.machine);
+        else
+            t.machine = toMachine(t.prog);
+    }
     return t;
 }
 
@@ -120,6 +127,8 @@ bool Interpreter::executeMotion(int motion, Error *error)
         return false;
     if (motion != 0)
         checkFeedUnits();
+    if (!rotationAllows(motion, error))
+        return false;
     if (motion == 0 || motion == 10)
         ok = straight(motion, targetOf(g53), error);
     else if (motion == 20 || motion == 30)
@@ -264,6 +273,8 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
     info.centre = m_pos;
     axisRef(info.centre, ax.u) = cu + offset(ax.u);
     axisRef(info.centre, ax.v) = cv + offset(ax.v);
+    if (rotation() != 0) // G17 only (rotationAllows)
+        info.centre = turnedCentre(cu, cv);
 
     double feed = m_feedMm;
     if (m_inverseTime)
@@ -302,6 +313,8 @@ void Interpreter::cycleTraverse(int plane, double aa, double bb, double cc)
     axisRef(t.prog, ax.w) = cc;
     for (int i : {ax.u, ax.v, ax.w})
         axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
+    if (rotation() != 0)
+        t.machine = toMachine(t.prog);
     m_toolpath.appendRapid(t.machine, m_feedMm, m_line);
     moveTo(t);
 }
@@ -315,6 +328,8 @@ void Interpreter::cycleFeed(int plane, double aa, double bb, double cc)
     axisRef(t.prog, ax.w) = cc;
     for (int i : {ax.u, ax.v, ax.w})
         axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
+    if (rotation() != 0)
+        t.machine = toMachine(t.prog);
     m_toolpath.appendFeed(t.machine, m_feedMm, m_line);
     moveTo(t);
 }

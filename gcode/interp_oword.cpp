@@ -229,6 +229,7 @@ bool Interpreter::callSub(Error *error)
     for (int i = 0; i < Parameters::kArgCount; ++i)
         m_params.setNumbered(i + 1, i < static_cast<int>(m_args.size()) ? m_args[i] : 0.0);
     m_frames.push_back({FrameKind::Call, label, m_next, m_line, 0, oColumn()});
+    contextHere() = {}; // the call level starts with no saved state
     jump(it->second.offset, it->second.line);
     return true;
 }
@@ -239,20 +240,21 @@ bool Interpreter::returnFromSub(Error *error)
     const std::string what = labelText(label) + " " + okindName(m_block.oKind);
     if (!m_parser.owordArgs(m_block, &m_args, error))
         return false;
-    // Leave every if/loop opened inside the subroutine.
+    // Leave every if/loop opened inside the subroutine. As rs274, return and endsub end the
+    // running call whatever their label (o1010 return inside o1010 if of o1000 sub returns from
+    // o1000); outside a call they are an error.
     std::size_t i = m_frames.size();
     while (i > 0 && m_frames[i - 1].kind != FrameKind::Call)
         --i;
-    if (i == 0 || m_frames[i - 1].label != label)
+    if (i == 0)
         return failAt(ErrorCode::ReturnOutsideSub, m_block.oColumn, what, error);
     m_valueReturned = !m_args.empty();
-    if (m_valueReturned)
-        m_value = m_args[0];
+    m_value = m_valueReturned ? m_args[0] : 0.0; // #<_value> is 0 after a plain return
     const Frame call = m_frames[i - 1];
     m_frames.resize(i - 1);
     m_params.popScope();
     jump(call.offset, call.line);
-    return true;
+    return leaveCallContext(error);
 }
 
 bool Interpreter::loopJump(bool isBreak, Error *error)

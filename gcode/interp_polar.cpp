@@ -37,7 +37,7 @@ void Interpreter::polarTarget(Target *t) const
     t->prog.x = px;
     t->prog.y = py;
     t->machine.x = px + offset(0);
-    t->machine.y = py + offset(1);
+    t->machine.y = py + offset(1); // targetOf turns it when a rotation is set
 }
 
 bool Interpreter::polarCheck(Error *error) const

@@ -43,7 +43,7 @@ bool Interpreter::systemNumbered(int index, double *value) const
     if (index >= 5221 && index <= 5390) {
         const int system = (index - 5221) / 20;
         const int i = (index - 5221) % 20;
-        *value = i < 4 ? length(m_origin[system][i], i) : 0;
+        *value = i < 4 ? length(m_origin[system][i], i) : i == 9 ? m_rotationDeg[system] : 0;
         return true;
     }
     if (index == 5400) {

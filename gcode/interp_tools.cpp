@@ -69,8 +69,7 @@ bool Interpreter::selectTool(Error *error)
         // (where the next move would have started) gives way to where the tool is.
         if (!(m_pos == m_toolpath.last())) {
             m_pos = m_toolpath.last();
-            m_prog = {m_pos.x - offset(0), m_pos.y - offset(1), m_pos.z - offset(2),
-                      m_pos.a - offset(3)};
+            m_prog = toProgram(m_pos);
         }
         m_tool = m_selectedTool;
         event(EventKind::ToolChange, m_tool);
@@ -91,6 +90,7 @@ bool Interpreter::toolLengthOffset(Error *error)
 {
     const Block &b = m_block;
     const int g = b.g[kGToolLength];
+    m_toolLengthG = g;
     std::array<double, 4> next = m_toolOffset;
     auto fromEntry = [](const ToolEntry &e) {
         return std::array<double, 4>{e.offsetMm[0], e.offsetMm[1], e.offsetMm[2], e.offsetMm[3]};

@@ -40,7 +40,7 @@ Interpreter::Interpreter(Options options)
     m_toolsStrict = m_options.toolTable.has_value();
     if (m_toolsStrict)
         m_tools = *m_options.toolTable;
-    m_prog = {m_pos.x - offset(0), m_pos.y - offset(1), m_pos.z - offset(2), m_pos.a - offset(3)};
+    m_prog = toProgram(m_pos);
 }
 
 Interpreter::~Interpreter() = default;
@@ -247,6 +247,8 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
     if (m_block.oKind != OKind::None)
         return executeOword(error);
     m_parsed = true;
+    if (m_block.hasM(kMState))
+        return modalState(error);
     return executeBlock(error);
 }
 
@@ -363,11 +365,9 @@ bool Interpreter::checkWords(int motion, Error *error)
         if (m_block.has(c) && !arcMove && !(toolG10 && c != 'k'))
             return unused(c);
     }
-    if (m_block.has('r') && !arcMove && !cycleMove && !toolG10) {
-        if (mode0 == 100)
-            return fail(ErrorCode::UnsupportedRotation, 'r', {}, error);
+    // G10 L2 (and L20, which refuses it as rs274 does) take R, the system's rotation.
+    if (m_block.has('r') && !arcMove && !cycleMove && !toolG10 && mode0 != 100)
         return unused('r');
-    }
     if (m_block.has('l') && !cycleMove && mode0 != 100)
         return unused('l');
     const bool g64 = m_block.hasG(kGPathControl) && m_block.g[kGPathControl] == 640;

@@ -231,6 +231,27 @@ private:
     // recursive call), naming the line reached; at that line when no loop or call runs.
     Error boundError(ErrorCode plain, ErrorCode inLoop, std::uint64_t bound) const;
 
+    // Modal state save and restore, M70-M73 (interp_state.cpp).
+    struct ModalContext
+    {
+        bool valid = false, restoreOnReturn = false;
+        bool metric = true;
+        // 10 x the G code: plane, compensation, distance, feed mode, coordinate system, tool
+        // length, retract mode, arc distance, G92 applied (G92.3) or not (G92.2).
+        std::array<int, 9> codes{};
+        int pathMode = 2;
+        double pathP = 0, pathQ = 0, feed = 0, speed = 0; // in the saved units
+        int spindle = 0;
+        bool mist = false, flood = false;
+    };
+    ModalContext modalNow() const;
+    std::size_t callDepth() const;
+    ModalContext &contextHere();
+    bool modalState(Error *error); // a line with M70-M73
+    bool restoreModal(const ModalContext &saved, Error *error);
+    bool runStateLine(const std::string &text, Error *error);
+    bool leaveCallContext(Error *error); // after return/endsub: M73's restore
+
     // Coordinates.
     double offset(int axis) const;
     Point4 programPosition() const { return m_prog; }
@@ -238,6 +259,18 @@ private:
     // After an offset changed: the program position moves by the change (rs274ngc's
     // current = current + old offset - new offset), the machine position stays.
     void shiftProgram(const std::array<double, 4> &oldOffsets);
+    // Coordinate-system rotation (interp_rotation.cpp).
+    double rotation() const { return m_rotationDeg[m_coord]; } // degrees, counter-clockwise
+    Point4 toMachine(const Point4 &prog) const;                // every offset and the rotation
+    Point4 toProgram(const Point4 &machine) const;
+    Point4 turnedCentre(double cu, double cv) const; // a G17 arc's centre (program) in machine
+    // After the active system or an offset changed: as shiftProgram, or with a rotation before or
+    // after the change the current point found anew in the system (rs274ngc's
+    // find_current_in_system).
+    void shiftProgram(const std::array<double, 4> &oldOffsets, double oldRotationDeg);
+    void setSystemXY(int system, bool l20, double rotationDeg); // G10 L2/L20 X Y R
+    void carryActiveSystem(const std::array<double, 4> &oldOrigin, double oldRotationDeg);
+    bool rotationAllows(int motion, Error *error) const; // arcs in G17 only under a rotation
     double unit() const { return m_metric ? 1.0 : 25.4; }
     double lengthWord(char c) const { return m_block.get(c) * unit(); }
     bool fail(ErrorCode code, char word, std::string detail, Error *error) const;
@@ -289,11 +322,14 @@ private:
     // the program compares, e.g. a cycle's clearance height, stay exactly as programmed).
     Point4 m_prog;
     std::array<std::array<double, 4>, 9> m_origin{}; // G54..G59.3 offsets, mm
+    std::array<double, 9> m_rotationDeg{};           // G10 L2 R of G54..G59.3, degrees
     std::array<double, 4> m_g92{};                   // active G92 offset, mm
     std::array<double, 4> m_g92Saved{};              // #5211.. (kept by G92.2, restored by G92.3)
     bool m_g92Enabled = false;
     std::array<double, 4> m_g28{}, m_g30{}; // stored positions, machine mm
     std::array<double, 4> m_toolOffset{};   // G43's offsets in force, mm (A degrees)
+    int m_toolLengthG = 490;                // the last G43/G43.1/G43.2/G49, 10 x the code
+    std::vector<ModalContext> m_contexts;   // M70/M73 state per call level (0: top)
     ToolTable m_tools;                      // Options::toolTable as the program changes it
     bool m_toolsStrict = false;             // a table was given: tools must be in it
     bool m_toolsChanged = false;

@@ -349,8 +349,30 @@ bool Parser::readAssignment(std::vector<Assignment> &assignments, Error *error)
     return true;
 }
 
+std::size_t Parser::skipComputedLabel(std::size_t p) const
+{
+    while (p < m_text.size() && m_text[p] == '#')
+        ++p;
+    if (p < m_text.size() && m_text[p] == '<') {
+        const std::size_t end = m_text.find('>', p);
+        return end == std::string::npos ? m_text.size() : end + 1;
+    }
+    if (p < m_text.size() && m_text[p] == '[') {
+        int depth = 0;
+        for (; p < m_text.size(); ++p) {
+            depth += m_text[p] == '[' ? 1 : m_text[p] == ']' ? -1 : 0;
+            if (depth == 0)
+                return p + 1;
+        }
+        return p;
+    }
+    while (p < m_text.size() && ((m_text[p] >= '0' && m_text[p] <= '9') || m_text[p] == '.'))
+        ++p;
+    return p;
+}
+
 bool Parser::readOwordHead(std::size_t *pos, OKind *kind, std::string *label, std::uint32_t *col,
-                           Error *error)
+                           bool evaluate, Error *error)
 {
     const std::size_t at = *pos;
     *col = static_cast<std::uint32_t>(at);
@@ -362,6 +384,21 @@ bool Parser::readOwordHead(std::size_t *pos, OKind *kind, std::string *label, st
             return fail(ErrorCode::OwordSyntax, at, "O<", error);
         label->assign(m_text, p + 1, end - p - 1);
         p = end + 1;
+    } else if (p < m_text.size() && (m_text[p] == '#' || m_text[p] == '[') && !evaluate) {
+        // Skipping: the value is not computed (no error from a parameter the skipped code
+        // would set), and the label matches no block.
+        p = skipComputedLabel(p);
+    } else if (p < m_text.size() && (m_text[p] == '#' || m_text[p] == '[')) {
+        // A computed number (LinuxCNC): o#<sub> call, o[#1+1] call, any integer value.
+        const std::size_t saved = m_pos;
+        m_pos = p;
+        double v = 0;
+        const bool ok = readInteger(&v, p, error);
+        p = m_pos;
+        m_pos = saved;
+        if (!ok)
+            return false;
+        label->assign(std::to_string(static_cast<long long>(v)));
     } else {
         const std::size_t digits = p;
         while (p < m_text.size() && m_text[p] >= '0' && m_text[p] <= '9')
@@ -401,7 +438,7 @@ bool Parser::readOwordHead(std::size_t *pos, OKind *kind, std::string *label, st
 
 bool Parser::readOword(Block &block, Error *error)
 {
-    if (!readOwordHead(&m_pos, &block.oKind, &block.oLabel, &block.oColumn, error))
+    if (!readOwordHead(&m_pos, &block.oKind, &block.oLabel, &block.oColumn, true, error))
         return false;
     block.oArgsPos = m_pos;
     return true;
@@ -419,7 +456,7 @@ bool Parser::peekOword(OKind *kind, std::string *label, Error *error)
     if (p >= m_text.size() || m_text[p] != 'o')
         return false;
     std::uint32_t col = 0;
-    return readOwordHead(&p, kind, label, &col, error);
+    return readOwordHead(&p, kind, label, &col, false, error);
 }
 
 bool Parser::owordArgs(const Block &block, std::vector<double> *args, Error *error)

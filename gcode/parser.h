@@ -43,6 +43,7 @@ enum MGroup : int {
     kMToolChange = 6,
     kMSpindle = 7,
     kMCoolant = 8,
+    kMState = 10, // M70-M73 (Frezka's own group; M100-M199 are refused in it)
     kMGroupCount = 11,
 };
 
@@ -146,8 +147,11 @@ private:
     bool fail(ErrorCode code, std::size_t pos, std::string detail, Error *error) const;
 
     bool readOword(Block &block, Error *error);
+    // evaluate: compute a label given as a value (o#<sub>, o[...]); false (skipping): step over
+    // it, the label left empty so that it closes no block.
     bool readOwordHead(std::size_t *pos, OKind *kind, std::string *label, std::uint32_t *col,
-                       Error *error);
+                       bool evaluate, Error *error);
+    std::size_t skipComputedLabel(std::size_t p) const; // at '#' or '[': the offset after it
     bool readGCode(Block &block, Error *error);
     bool readMCode(Block &block, Error *error);
     bool readAssignment(std::vector<Assignment> &assignments, Error *error);
@@ -157,6 +161,7 @@ private:
     bool readRealValue(double *value, Error *error);
     bool readNumber(double *value, Error *error);
     bool readInteger(double *value, std::size_t startPos, Error *error);
+    bool readExists(std::size_t start, double *value, Error *error); // after "exists", at '['
     bool readExpression(double *value, Error *error);
     bool readBinary(int minPrecedence, double *value, Error *error);
     bool readOperator(int *op, std::size_t *length) const;

@@ -1987,14 +1987,6 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>P0 je aktivní souřadný systém, P1 až P9 jsou G54 až G59.3.</translation>
     </message>
     <message>
-        <source>Coordinate system rotation (G10 R) is not supported</source>
-        <translation>Natočení souřadného systému (G10 R) není podporováno</translation>
-    </message>
-    <message>
-        <source>Remove the R word.</source>
-        <translation>Odstraňte slovo R.</translation>
-    </message>
-    <message>
         <source>%1 with zero feed rate</source>
         <translation>%1 s nulovým posuvem</translation>
     </message>
@@ -2653,6 +2645,30 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</source>
         <translation>Komentář (abort, ...) ukončí program, stejně jako v LinuxCNC. Upravte program tak, aby na tento řádek nedošel.</translation>
+    </message>
+    <message>
+        <source>%1 is not supported under a coordinate system rotation (G10 L2 R)</source>
+        <translation>%1 není podporováno při natočení souřadného systému (G10 L2 R)</translation>
+    </message>
+    <message>
+        <source>Arcs outside G17 and cutter radius compensation need the rotation off: set R0 (G10 L2 P0 R0) for that part, or rotate the part in the CAM.</source>
+        <translation>Oblouky mimo G17 a korekce poloměru nástroje vyžadují vypnuté natočení: pro tuto část nastavte R0 (G10 L2 P0 R0), nebo díl natočte v CAM.</translation>
+    </message>
+    <message>
+        <source>%1 shares its line with other words</source>
+        <translation>%1 sdílí řádek s dalšími slovy</translation>
+    </message>
+    <message>
+        <source>Put M70, M71, M72 and M73 on a line of their own (LinuxCNC runs them in the middle of the line&apos;s other codes).</source>
+        <translation>Napište M70, M71, M72 a M73 každé na samostatný řádek (LinuxCNC je provádí uprostřed ostatních kódů řádku).</translation>
+    </message>
+    <message>
+        <source>%1 restores a state that was not saved at this level</source>
+        <translation>%1 obnovuje stav, který na této úrovni nebyl uložen</translation>
+    </message>
+    <message>
+        <source>Save the modal state with M70 (or M73) in the same subroutine, or at the top level, before M72, and do not invalidate it with M71 in between.</source>
+        <translation>Uložte modální stav pomocí M70 (nebo M73) ve stejném podprogramu, nebo na nejvyšší úrovni, před M72, a mezitím jej nezneplatňujte pomocí M71.</translation>
     </message>
 </context>
 <context>

@@ -1987,14 +1987,6 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>P0 is the active coordinate system, P1 to P9 are G54 to G59.3.</translation>
     </message>
     <message>
-        <source>Coordinate system rotation (G10 R) is not supported</source>
-        <translation>Coordinate system rotation (G10 R) is not supported</translation>
-    </message>
-    <message>
-        <source>Remove the R word.</source>
-        <translation>Remove the R word.</translation>
-    </message>
-    <message>
         <source>%1 with zero feed rate</source>
         <translation>%1 with zero feed rate</translation>
     </message>
@@ -2650,6 +2642,30 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</source>
         <translation>An (abort, ...) comment ends the program, as in LinuxCNC. Change the program so that it does not reach this line.</translation>
+    </message>
+    <message>
+        <source>%1 is not supported under a coordinate system rotation (G10 L2 R)</source>
+        <translation>%1 is not supported under a coordinate system rotation (G10 L2 R)</translation>
+    </message>
+    <message>
+        <source>Arcs outside G17 and cutter radius compensation need the rotation off: set R0 (G10 L2 P0 R0) for that part, or rotate the part in the CAM.</source>
+        <translation>Arcs outside G17 and cutter radius compensation need the rotation off: set R0 (G10 L2 P0 R0) for that part, or rotate the part in the CAM.</translation>
+    </message>
+    <message>
+        <source>%1 shares its line with other words</source>
+        <translation>%1 shares its line with other words</translation>
+    </message>
+    <message>
+        <source>Put M70, M71, M72 and M73 on a line of their own (LinuxCNC runs them in the middle of the line&apos;s other codes).</source>
+        <translation>Put M70, M71, M72 and M73 on a line of their own (LinuxCNC runs them in the middle of the line&apos;s other codes).</translation>
+    </message>
+    <message>
+        <source>%1 restores a state that was not saved at this level</source>
+        <translation>%1 restores a state that was not saved at this level</translation>
+    </message>
+    <message>
+        <source>Save the modal state with M70 (or M73) in the same subroutine, or at the top level, before M72, and do not invalidate it with M71 in between.</source>
+        <translation>Save the modal state with M70 (or M73) in the same subroutine, or at the top level, before M72, and do not invalidate it with M71 in between.</translation>
     </message>
 </context>
 <context>

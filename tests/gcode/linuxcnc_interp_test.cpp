@@ -51,9 +51,7 @@ const std::map<std::string, Refusal> &refused()
         // here, refuses them too: "EOF ... seeking o-word").
         {"pymove", {E::SubroutineUndefined, "Python plug-in o<canonmove>"}},
         {"python-self", {E::SubroutineUndefined, "Python plug-in o<retainparam1>"}},
-        {"value-returned",
-         {E::ReturnOutsideSub, "Python plug-in o<returns4711>; then return "
-                               "at the top level"}},
+        {"value-returned", {E::SubroutineUndefined, "Python plug-in o<returns4711>"}},
         {"nested-sub-error", {E::SubroutineUndefined, "o<nested> from the INI's subroutine path"}},
         {"nested-sub-in-file-error",
          {E::SubroutineUndefined, "o<sequential> from the INI's subroutine path"}},
@@ -66,10 +64,6 @@ const std::map<std::string, Refusal> &refused()
         // Meant to fail: the (abort, ...) comment at the loop's 20th pass ends the program.
         {"abort-hot-comment", {E::ProgramAborted, "(abort, ...) in a loop, as LinuxCNC"}},
         // LinuxCNC dialect Frezka does not read yet.
-        {"exists", {E::BadParameterName, "EXISTS[#<name>]"}},
-        {"machine-coord-params", {E::UnsupportedRotation, "coordinate system rotation G10 L2 R"}},
-        {"oword-bug315-p2", {E::OwordSyntax, "an O number read from a parameter, o#<sub> call"}},
-        {"return-value", {E::ReturnOutsideSub, "return at the top level"}},
     };
     return kRefused;
 }

@@ -50,13 +50,10 @@ const std::map<std::string, Refusal> &refused()
         {"tool-length-probe", {E::ProbeNoMotion, "a probe from its end point (rs274 too)"}},
         {"x-trim", {E::SubroutineUndefined, "o<touchoff> from a subroutine file (rs274 too)"}},
         // LinuxCNC dialect Frezka does not read yet (issue 15, item 3).
-        {"m70m72-demo", {E::UnsupportedMCode, "M70/M72 modal state save and restore"}},
-        {"m73-demo", {E::UnsupportedMCode, "M73 modal state restored at the sub's end"}},
-        {"toplevel", {E::UnsupportedMCode, "M70 modal state save"}},
+
         {"smartprobe",
          {E::ReadOnlyParameter, "#5070=1 to loop until the probe trips: needs "
                                 "the probe's real result"}},
-        {"retval", {E::ReturnOutsideSub, "return at the top level"}},
         {"systems", {E::UnsupportedGCode, "G5.1 quadratic spline"}},
     };
     return kRefused;

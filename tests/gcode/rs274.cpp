@@ -16,6 +16,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <sstream>
 
 namespace frezka::gcode::test {
@@ -99,7 +100,7 @@ Rs274Run runRs274(const std::string &file, const ToolTable *toolTable)
     double unit = 1;
     std::array<double, 6> g5x{}, g92{};
     std::array<double, 4> tool{}; // USE_TOOL_LENGTH_OFFSET, mm (A degrees)
-    double feedMm = 0, rpm = 0;
+    double feedMm = 0, rpm = 0, rotationDeg = 0;
     int spindleDir = 0;
     Plane plane = Plane::XY;
     std::string line;
@@ -133,9 +134,14 @@ Rs274Run runRs274(const std::string &file, const ToolTable *toolTable)
         const std::vector<double> v = numbersIn(open == std::string::npos ? "" : call.substr(open));
         // Offsets are kept in mm as printed (rs274 does not print them again when the units
         // change); positions are in the units in force when printed. A is in degrees.
+        // LinuxCNC's canon (emccanon.cc from_prog): the XY rotation turns the point with its
+        // G92 offset, before the work and tool offsets.
         auto machine = [&](double x, double y, double z, double a) {
-            return Point4{x * unit + g5x[0] + g92[0] + tool[0],
-                          y * unit + g5x[1] + g92[1] + tool[1],
+            const double t = rotationDeg * std::numbers::pi / 180.0;
+            const double px = x * unit + g92[0], py = y * unit + g92[1];
+            const double rx = px * std::cos(t) - py * std::sin(t);
+            const double ry = px * std::sin(t) + py * std::cos(t);
+            return Point4{rx + g5x[0] + tool[0], ry + g5x[1] + tool[1],
                           z * unit + g5x[2] + g92[2] + tool[2], a + g5x[3] + g92[3] + tool[3]};
         };
         auto toMm = [&](std::array<double, 6> &o) {
@@ -154,6 +160,8 @@ Rs274Run runRs274(const std::string &file, const ToolTable *toolTable)
         } else if (name == "SET_G5X_OFFSET" && v.size() >= 7) {
             std::copy(v.begin() + 1, v.begin() + 7, g5x.begin());
             toMm(g5x);
+        } else if (name == "SET_XY_ROTATION" && !v.empty()) {
+            rotationDeg = v[0];
         } else if (name == "SET_G92_OFFSET" && v.size() >= 6) {
             std::copy(v.begin(), v.begin() + 6, g92.begin());
             toMm(g92);
