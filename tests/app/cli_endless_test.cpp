@@ -5,6 +5,8 @@
 // under 800 MB. The loop that moves runs to the default bound; the others to a profile's bound
 // (program.maxLinesExecuted, program.maxMoves), which --machine brings.
 
+#include "cliprocess.h"
+
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -30,11 +32,7 @@ private:
 
     QString write(const QString &name, const QByteArray &text)
     {
-        const QString path = m_dir.filePath(name);
-        QFile f(path);
-        f.open(QIODevice::WriteOnly);
-        f.write(text);
-        return path;
+        return clitest::writeFile(m_dir, name, text);
     }
 
     static Run check(const QStringList &args)

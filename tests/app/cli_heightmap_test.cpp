@@ -3,6 +3,8 @@
 // that cuts outside the map refused naming its line; run --surface: G38.2 on the emulator's
 // simulated work top trips at its height.
 
+#include "cliprocess.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -19,30 +21,16 @@ class CliHeightMapTest : public QObject
 private:
     QTemporaryDir m_dir;
 
-    struct Run
-    {
-        int code = -1;
-        QString out;
-        QString err;
-    };
+    using Run = clitest::Run;
 
     QString write(const QString &name, const QByteArray &text)
     {
-        const QString path = m_dir.filePath(name);
-        QFile f(path);
-        f.open(QIODevice::WriteOnly);
-        f.write(text);
-        return path;
+        return clitest::writeFile(m_dir, name, text);
     }
 
     static Run cli(const QStringList &args)
     {
-        QProcess p;
-        p.start(QStringLiteral(FREZKA_CLI), args);
-        p.closeWriteChannel();
-        p.waitForFinished(120000);
-        return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
-                QString::fromUtf8(p.readAllStandardError())};
+        return clitest::runCli(QStringLiteral(FREZKA_CLI), args);
     }
 
     // Machine X 10..30, Y 10..20: a plane rising 0.01 mm/mm in X and 0.005 mm/mm in Y.
@@ -79,11 +67,7 @@ private:
                    extra);
     }
 
-    static QJsonObject lastJson(const QString &out)
-    {
-        const QStringList lines = out.trimmed().split(QLatin1Char('\n'));
-        return QJsonDocument::fromJson(lines.last().toUtf8()).object();
-    }
+    static QJsonObject lastJson(const QString &out) { return clitest::lastJson(out); }
 
 private slots:
     // The run ends at machine X30 Y20 (200 steps/mm), Z -20.1 + 0.25 with the map (the

@@ -4,6 +4,8 @@
 // the lines before it had (M6), never cuts without the spindle, and says the state it took; a
 // line inside a loop is refused with the line to choose.
 
+#include "cliprocess.h"
+
 #include "../session/runfromline_program.h"
 
 #include <QJsonArray>
@@ -20,37 +22,19 @@ class CliRunFromLineTest : public QObject
 private:
     QTemporaryDir m_dir;
 
-    struct Run
-    {
-        int code = -1;
-        QString out;
-        QString err;
-    };
+    using Run = clitest::Run;
 
     QString write(const QString &name, const QByteArray &text)
     {
-        const QString path = m_dir.filePath(name);
-        QFile f(path);
-        f.open(QIODevice::WriteOnly);
-        f.write(text);
-        return path;
+        return clitest::writeFile(m_dir, name, text);
     }
 
     static Run cli(const QStringList &args)
     {
-        QProcess p;
-        p.start(QStringLiteral(FREZKA_CLI), args);
-        p.closeWriteChannel();
-        p.waitForFinished(120000);
-        return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
-                QString::fromUtf8(p.readAllStandardError())};
+        return clitest::runCli(QStringLiteral(FREZKA_CLI), args);
     }
 
-    static QJsonObject lastJson(const QString &out)
-    {
-        const QStringList lines = out.trimmed().split(QLatin1Char('\n'));
-        return QJsonDocument::fromJson(lines.last().toUtf8()).object();
-    }
+    static QJsonObject lastJson(const QString &out) { return clitest::lastJson(out); }
 
     static QStringList runArgs(const QString &file)
     {

@@ -4,6 +4,8 @@
 // and the program's stops (M0, M1, M6) answered by Enter, by --continue-at-stops, or ending the
 // run when nobody answers.
 
+#include "cliprocess.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -18,38 +20,19 @@ class CliShopJobTest : public QObject
 private:
     QTemporaryDir m_dir;
 
-    struct Run
-    {
-        int code = -1;
-        QString out;
-        QString err;
-    };
+    using Run = clitest::Run;
 
     QString write(const QString &name, const QByteArray &text)
     {
-        const QString path = m_dir.filePath(name);
-        QFile f(path);
-        f.open(QIODevice::WriteOnly);
-        f.write(text);
-        return path;
+        return clitest::writeFile(m_dir, name, text);
     }
 
     static Run cli(const QStringList &args, bool closeInput = true)
     {
-        QProcess p;
-        p.start(QStringLiteral(FREZKA_CLI), args);
-        if (closeInput)
-            p.closeWriteChannel();
-        p.waitForFinished(120000);
-        return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
-                QString::fromUtf8(p.readAllStandardError())};
+        return clitest::runCli(QStringLiteral(FREZKA_CLI), args, closeInput);
     }
 
-    static QJsonObject lastJson(const QString &out)
-    {
-        const QStringList lines = out.trimmed().split(QLatin1Char('\n'));
-        return QJsonDocument::fromJson(lines.last().toUtf8()).object();
-    }
+    static QJsonObject lastJson(const QString &out) { return clitest::lastJson(out); }
 
     static QJsonArray steps(std::initializer_list<qint64> s)
     {
