@@ -1,5 +1,7 @@
 #include "serialtrace.h"
 
+#include "protocol/checksum.h"
+
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
@@ -25,17 +27,6 @@ char directionChar(TraceDirection d)
     return '?';
 }
 
-int hexDigit(char c)
-{
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'A' && c <= 'F')
-        return c - 'A' + 10;
-    if (c >= 'a' && c <= 'f')
-        return c - 'a' + 10;
-    return -1;
-}
-
 // The ASCII column back to bytes; false on a bad escape.
 bool unescape(std::string_view text, std::string &out)
 {
@@ -59,11 +50,10 @@ bool unescape(std::string_view text, std::string &out)
             out += '\\';
             break;
         case 'x': {
-            const int hi = i + 1 < text.size() ? hexDigit(text[i + 1]) : -1;
-            const int lo = i + 2 < text.size() ? hexDigit(text[i + 2]) : -1;
-            if (hi < 0 || lo < 0)
+            const auto byte = protocol::parseHexByte(text.substr(i + 1, 2));
+            if (!byte)
                 return false;
-            out += static_cast<char>(hi * 16 + lo);
+            out += static_cast<char>(*byte);
             i += 2;
             break;
         }
@@ -85,11 +75,10 @@ bool unhex(std::string_view text, std::string &out)
         }
         if (i + 1 >= text.size())
             return false;
-        const int hi = hexDigit(text[i]);
-        const int lo = hexDigit(text[i + 1]);
-        if (hi < 0 || lo < 0 || (i + 2 < text.size() && text[i + 2] != ' '))
+        const auto byte = protocol::parseHexByte(text.substr(i, 2));
+        if (!byte || (i + 2 < text.size() && text[i + 2] != ' '))
             return false;
-        out += static_cast<char>(hi * 16 + lo);
+        out += static_cast<char>(*byte);
         i += 2;
     }
     return true;
