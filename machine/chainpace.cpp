@@ -174,8 +174,11 @@ void RunPlanner::paceModalChanges()
                     // (property seed 95: a chain's first vector counted 40 ms it did not gain,
                     // and the unit ran dry behind the V after it).
                     for (int tries = 0; tries < kSlowTries && held < need; ++tries) {
+                        // From rest the stretch may last longer than its cruise time: the
+                        // cruise must outlast that (seed 343: V 589 -> 209 gained nothing on a
+                        // vector that never reached either).
                         const double before = stretchS(first, k);
-                        slowStretch(first, k, need - held);
+                        slowStretch(first, k, need - held + before - (timeS[k] - timeS[first]));
                         for (std::size_t j = first; j < k; ++j)
                             timeS[j + 1] = timeS[j] + cruise(j);
                         const double gained = stretchS(first, k) - before;
@@ -234,8 +237,13 @@ void RunPlanner::mergeStretches(std::size_t first, std::size_t k)
     }
 }
 
-// The time of vectors [first, last), one V and one A, from rest: at least the time to cover their
-// distance accelerating at A toward V (cruiseS: at V throughout).
+// How long vectors [first, last), one V and one A, from rest, keep the unit moving before it must
+// begin to brake to a stop if nothing more arrives: what the next packet must beat. Up to V and
+// down again the brake point is where half the distance is covered, sqrt(units / A) from the
+// start; where the vectors reach V it lies units / V from the start (cruiseS: at V throughout).
+// Not the time to their end: a chain's first vector of six steps from rest braked from its
+// midpoint, and the vector after the V and A behind it arrived 5 ms after that (property seed
+// 343, a stop at nearly every chain's start once the A and V were no longer merged there).
 double RunPlanner::fromRestS(double cruiseS, std::size_t first, std::size_t last) const
 {
     double units = 0;
@@ -243,8 +251,7 @@ double RunPlanner::fromRestS(double cruiseS, std::size_t first, std::size_t last
         units += m_d[j].units;
     const double a = 1000.0 * static_cast<double>(std::max<std::int64_t>(m_d[first].accel, 1));
     const double v = static_cast<double>(std::max<std::int64_t>(m_d[first].speed, 1));
-    const double ramp = v * v / (2 * a); // units covered reaching V
-    const double t = units < ramp ? std::sqrt(2 * units / a) : v / a + (units - ramp) / v;
+    const double t = units < v * v / a ? std::sqrt(units / a) : units / v;
     return std::max(cruiseS, t);
 }
 

@@ -63,7 +63,11 @@ TEST_P(BundledProgram, WholeProgramPassesBeatGrblsLookaheadUnderTheSameLimits)
     const PlanResult full = plan(tp, c);
     const PlanResult g = plan(tp, c, grbl);
     ASSERT_TRUE(full.ok() && g.ok());
-    EXPECT_LE(full.stats.estimatedS, g.stats.estimatedS * 1.0001);
+    // Within 0.02 %: the full plan also pays where a V or an A changes early in a chain (the
+    // pace waits for the change's round trips, RunPlanner::paceModalChanges), which the grbl
+    // baseline does not model (its A changes at every block; on a link it would run dry).
+    // Contour: 0.011 % above since a stretch from rest counts only until the unit must brake.
+    EXPECT_LE(full.stats.estimatedS, g.stats.estimatedS * 1.0002);
 }
 
 INSTANTIATE_TEST_SUITE_P(Planner, BundledProgram,

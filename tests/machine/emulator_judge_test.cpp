@@ -86,8 +86,9 @@ TEST(EmulatorJudge, DenseHelixWithDifferentAxisScales)
     // With unequal scales the same path speed is a different V on every chord; V cannot travel
     // in a packet, so the plan shares one V over stretches of chords and holds each chord below
     // its own cap with its Bs: 2.3 % above the bound (a V per chord was 0.3 % here, but a round
-    // trip per 5 ms chord, which no serial link carries; docs/planner.md §4).
-    expectHonoured(r, c, 1.03);
+    // trip per 5 ms chord, which no serial link carries; docs/planner.md §4). 3.1 % since the
+    // pace counts a stretch from rest only until the unit must brake (RunPlanner::fromRestS).
+    expectHonoured(r, c, 1.035);
 }
 
 TEST(EmulatorJudge, DenseHelixInVnMode)

@@ -425,3 +425,13 @@ TEST(StreamPace, APollOnAPathThatComesBackIsPlacedNearTheModel)
 {
     expectKeepsThePace(drawJob(344, 300));
 }
+
+// Property seed 376 (a chain's first vector from rest, then a V or an A): the pace counted the
+// first vector's whole time as what the unit holds, but with nothing after it queued the unit
+// brakes from the vector's midpoint; the change's round trips and the next packet arrived after
+// that, 10 starvation stops. From rest the pace now counts to the brake point
+// (RunPlanner::fromRestS), and a stretch it slows outlasts that, not just its cruise time.
+TEST(StreamPace, AChainsFirstVectorCountsUntilTheUnitMustBrake)
+{
+    expectKeepsThePace(drawJob(376, 300));
+}

@@ -11,7 +11,8 @@
 //   stream_soak --dump SEED MAX_LINES DIR       writes that case's program and profile (its link
 //                                                in link.baud/latencyMs/packets) to DIR/seed-N.*
 //   stream_soak --ratios CASES FIRST_SEED MAX_LINES  each case's estimate / bound as planned,
-//                                                without V and A sharing, without the link's pace
+//                                                without V and A sharing, without the link's pace,
+//                                                and without either
 //   STREAM_SOAK_VERBOSE=1 also lists every case off the link's pace (else only those that
 //   stopped with an error on a clean link, which it must never do).
 #include "randomjob.h"
@@ -59,22 +60,24 @@ int runOne(const char *programPath, const char *profilePath)
 }
 
 // Where a case's estimate lies above its bound: the plan's estimate and bound with the link's
-// pace as planned, without V and A sharing (speedChangeCost 0), and without the link's pace.
+// pace as planned, without V and A sharing (speedChangeCost 0), without the link's pace, and
+// without either.
 int ratios(long cases, long first, int maxLines)
 {
     for (long i = 0; i < cases; ++i) {
         const RandomJob job = drawJob(static_cast<std::uint64_t>(first + i), maxLines);
         const auto toolpath = frezka::gcode::interpretText(job.program).toolpath;
         std::printf("seed %ld:", first + i);
-        for (int variant = 0; variant < 3; ++variant) {
+        for (int variant = 0; variant < 4; ++variant) {
             frezka::machine::PlanOptions o;
-            o.speedChangeCost = variant == 1 ? 0.0 : 1.0;
-            o.wireLimited = variant != 2;
+            o.speedChangeCost = variant == 1 || variant == 3 ? 0.0 : 1.0;
+            o.wireLimited = variant < 2;
             const auto p = frezka::machine::plan(toolpath, job.config, o);
             std::printf(" %s %.3f/%.3f=%.4f",
                         variant == 0   ? "plan"
                         : variant == 1 ? "noshare"
-                                       : "nopace",
+                        : variant == 2 ? "nopace"
+                                       : "neither",
                         p.stats.estimatedS, p.stats.boundS,
                         p.stats.boundS > 0 ? p.stats.estimatedS / p.stats.boundS : 0.0);
         }
