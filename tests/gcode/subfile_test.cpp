@@ -203,3 +203,19 @@ TEST_F(SubFiles, MatchesRs274WithTheSameIni)
                                                   "o<pocket> call [3]\nG0 Z5\nM2\n");
     EXPECT_TRUE(test::matchesRs274(nc, {}, nullptr, ini));
 }
+
+// Run from a line: the lines of a subroutine file are not the program's, so a skipped block in
+// the file does not refuse a start line of the same number in the program.
+TEST_F(SubFiles, RunFromLineCountsOnlyTheProgramsLines)
+{
+    write("lib/s.ngc", "o<s> sub\no1 if [0]\nG0 Y1\no1 endif\no<s> endsub\n");
+    const std::string nc = write("prog/part.ngc", "o<s> call\nG0 X1\nG0 X2\nM2\n");
+    Options options;
+    options.subroutinePath = {dir("lib")};
+    options.startLine = 3;
+    const Result r = interpretFile(nc, options);
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    EXPECT_EQ(r.mark.refusal, LineMarkRefusal::None);
+    EXPECT_EQ(r.mark.line, 3u);
+    EXPECT_EQ(r.mark.entry, 1u); // after G0 X1
+}
