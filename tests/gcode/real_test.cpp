@@ -40,6 +40,11 @@ const std::map<std::string, Refusal> &refused()
         {"hand_shapeoko_calibration",
          {E::ArcRadiusMismatch, "an arc whose end is 1.4 mm off its circle (rs274 too)"}},
         {"hand_ugs_line_skip", {E::ZeroFeedRate, "G1 before any F (rs274 too)"}},
+        {"hand_tinyg_coordinate_offsets",
+         {E::GrblCommand, "TinyG's $sr status request in the program (rs274 too)"}},
+        {"hand_tinyg_inverse_time",
+         {E::InverseTimeFeedMissing,
+          "G93 with F once for many moves, as TinyG reads it (rs274 too)"}},
     };
     return kRefused;
 }
@@ -113,8 +118,9 @@ TEST_P(RealProgram, MatchesRs274OrIsRefusedAsListed)
 INSTANTIATE_TEST_SUITE_P(Corpus, RealProgram, testing::ValuesIn(programsIn(kDir)), testName);
 
 // The corpus's size and variety: at least 30 programs from 8 generators (issue 15), among them
-// programs without a program end and FreeCAD's Fanuc post with its safety line (G17 G54 G40 G49
-// G80 G90 G94). FreeCAD's K0 arcs are not among them yet (README.md there).
+// programs without a program end, FreeCAD's Fanuc post with its safety line (G17 G54 G40 G49
+// G80 G90 G94) and TinyG's tests with G00 and G80 on one line (G00 G17 G21 G40 G49 G80 G90).
+// FreeCAD's K0 arcs are not among them yet (README.md there).
 TEST(RealCorpus, IsLargeAndVaried)
 {
     const std::vector<std::string> all = programsIn(kDir);
