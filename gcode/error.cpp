@@ -1,3 +1,7 @@
+// The table of every error code with its English message and hint (about 450 of its 530 lines):
+// one table on purpose, in code order, so that docs/gcode.md's table
+// (tests/gcode/gen_error_table.py) and lupdate read it whole; the few functions below only look
+// codes up in it.
 #include "error.h"
 
 #include <QCoreApplication>

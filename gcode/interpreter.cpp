@@ -113,7 +113,7 @@ void Interpreter::jump(std::size_t offset, std::uint32_t lineBefore)
     m_line = lineBefore;
 }
 
-// Long (about 95 lines) on purpose: the per-line order of the checks (pages released,
+// Long (about 110 lines) on purpose: the per-line order of the checks (pages released,
 // progress, the lines-executed bound, cancel, the start line, the block, the moves bound, the
 // error) and the end-of-file checks that depend on how the loop ended read best in one place.
 Result Interpreter::run(std::string_view text, const std::function<void(std::size_t)> &consumed)
