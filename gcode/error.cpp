@@ -1,3 +1,7 @@
+// The table of every error code with its English message and hint (about 450 of its 530 lines):
+// one table on purpose, in code order, so that docs/gcode.md's table
+// (tests/gcode/gen_error_table.py) and lupdate read it whole; the few functions below only look
+// codes up in it.
 #include "error.h"
 
 #include <QCoreApplication>
@@ -385,7 +389,9 @@ constexpr ErrorInfo kErrors[] = {
     {ErrorCode::SubroutineUndefined, "SubroutineUndefined",
      QT_TRANSLATE_NOOP("frezka::gcode", "Subroutine %1 is not defined"),
      QT_TRANSLATE_NOOP("frezka::gcode",
-                       "Define it in this file with o<name> sub ... o<name> endsub.")},
+                       "Define it in this file with o<name> sub ... o<name> endsub, or in a file "
+                       "name.ngc beside the program or in a folder of the machine profile's "
+                       "program.subroutinePath (Settings › Machine profile › Program).")},
     {ErrorCode::CallTooDeep, "CallTooDeep",
      QT_TRANSLATE_NOOP("frezka::gcode", "Subroutine calls nested too deeply"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Check for unbounded recursion.")},
@@ -422,6 +428,28 @@ constexpr ErrorInfo kErrors[] = {
                        "Check what ends it (its condition, its count, the exit of a recursion); "
                        "if it is meant to make more moves, raise the machine profile's "
                        "program.maxMoves (Settings › Machine profile › Program).")},
+    {ErrorCode::IniSyntax, "IniSyntax",
+     QT_TRANSLATE_NOOP("frezka::gcode", "This INI line is not [SECTION] nor NAME = VALUE: %1"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Fix the line or make it a comment (starting with # or ;).")},
+    {ErrorCode::NestedSubDefinition, "NestedSubDefinition",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 sub is defined inside the running subroutine %2"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Move the definition out of %2: define it before or after it (in its own "
+                       "file name.ngc when %2 is in a file), as LinuxCNC requires.")},
+    {ErrorCode::SubroutineNotFound, "SubroutineNotFound",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Subroutine %1 is not defined yet and there is no file %2 on the "
+                       "subroutine path"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "A subroutine file holds only its own subroutine (as in LinuxCNC): put %1 "
+                       "in a file %2 beside the program or in a folder of the machine profile's "
+                       "program.subroutinePath, or define it in the program.")},
+    {ErrorCode::SubroutineFileWithoutSub, "SubroutineFileWithoutSub",
+     QT_TRANSLATE_NOOP("frezka::gcode", "The file %2 has no line %1 sub"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "A file name.ngc found for o<name> call must define o<name> sub ... "
+                       "o<name> endsub; rename the file or fix its sub line.")},
     {ErrorCode::FeedUnitsChanged, "FeedUnitsChanged",
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "F%1 was read in %2 (line %3) before this change of units: the feed moves "

@@ -35,6 +35,7 @@ enum class ErrorCode : std::uint16_t {
     ToolTableSyntax = 116,
     ToolTableDuplicate = 117,
     ProgramAborted = 118,
+    IniSyntax = 119,
     // Codes and modal groups (2xx)
     UnknownGCode = 200,
     UnsupportedGCode = 201,
@@ -121,6 +122,9 @@ enum class ErrorCode : std::uint16_t {
     TooManyMoves = 510,
     LoopNeverEnds = 511,
     LoopMovesNeverEnd = 512,
+    NestedSubDefinition = 513,
+    SubroutineNotFound = 514,
+    SubroutineFileWithoutSub = 515,
     // Warnings (6xx): the program runs as LinuxCNC runs it; the user should check it.
     FeedUnitsChanged = 600,
     ImpliedProgramEnd = 601,
@@ -142,6 +146,7 @@ struct Error
     std::uint32_t line = 0;   // 1-based source line, 0 if none
     std::uint32_t column = 0; // 1-based column (bytes) of the offending word, 0 if none
     std::string detail;       // the offending word or value, inserted into the message (%1)
+    std::string file; // a subroutine file the error is in (o<name> call); empty: the program
     friend bool operator==(const Error &, const Error &) = default;
 };
 
@@ -157,7 +162,8 @@ std::string englishMessage(const Error &error);
 // The same in the user's language (QCoreApplication::translate, context "frezka::gcode").
 QString translatedMessage(const Error &error);
 // "FILE:LINE:COL: message" in the user's language ("FILE: message" without a line); warnings and
-// notes say so ("FILE:LINE:COL: warning: message").
+// notes say so ("FILE:LINE:COL: warning: message"). An error in a subroutine file names that file
+// (Error::file) instead of FILE.
 QString formatError(const QString &file, const Error &error);
 
 } // namespace frezka::gcode

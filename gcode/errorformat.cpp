@@ -83,9 +83,10 @@ QString formatError(const QString &file, const Error &error)
         message = QCoreApplication::translate("frezka::gcode", "warning: ") + message;
     else if (severity(error.code) == Severity::Note)
         message = QCoreApplication::translate("frezka::gcode", "note: ") + message;
+    const QString where = error.file.empty() ? file : QString::fromStdString(error.file);
     if (error.line == 0)
-        return QStringLiteral("%1: %2").arg(file, message);
-    return QStringLiteral("%1:%2:%3: %4").arg(file).arg(error.line).arg(error.column).arg(message);
+        return QStringLiteral("%1: %2").arg(where, message);
+    return QStringLiteral("%1:%2:%3: %4").arg(where).arg(error.line).arg(error.column).arg(message);
 }
 
 } // namespace frezka::gcode

@@ -33,11 +33,11 @@ void Interpreter::compEnqueue(MotionKind kind, const Point4 &end, double feed, d
 {
     const std::size_t entry = m_toolpath.size();
     if (kind == MotionKind::Arc)
-        m_toolpath.appendArc(end, *arc, feed, m_line);
+        m_toolpath.appendArc(end, *arc, feed, pathLine());
     else if (kind == MotionKind::Rapid)
-        m_toolpath.appendRapid(end, feed, m_line);
+        m_toolpath.appendRapid(end, feed, pathLine());
     else
-        m_toolpath.appendFeed(end, feed, m_line);
+        m_toolpath.appendFeed(end, feed, pathLine());
     m_comp.queue.push_back({entry, du, dv, originalTurns});
 }
 

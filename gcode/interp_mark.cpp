@@ -91,6 +91,8 @@ void Interpreter::noteSkipped(std::uint32_t from, OKind opening, const std::stri
     const std::uint32_t asked = m_options.startLine;
     if (asked == 0 || m_marked || m_lookingAhead || m_skipRefusal != LineMarkRefusal::None)
         return;
+    if (m_source != 0)
+        return; // lines of a subroutine file, not the program's
     if (asked <= from || asked > m_line)
         return;
     m_skipRefusal =

@@ -11,7 +11,7 @@ namespace frezka::gcode {
 
 void Interpreter::event(EventKind kind, double value, double p, double q)
 {
-    m_toolpath.appendEvent({kind, value, p, q}, feedMm(), m_line);
+    m_toolpath.appendEvent({kind, value, p, q}, feedMm(), pathLine());
 }
 
 namespace {
@@ -110,7 +110,7 @@ bool Interpreter::executeModes(Error *error)
             warnAt(ErrorCode::DwellLooksLikeMilliseconds, b.col('p'),
                    feedText(p) + sep + feedText(p / 60) + " min" + sep + feedText(p / 1000));
         }
-        m_toolpath.appendEvent({EventKind::Dwell, b.get('p'), 0, 0}, feedMm(), m_line);
+        m_toolpath.appendEvent({EventKind::Dwell, b.get('p'), 0, 0}, feedMm(), pathLine());
     }
     return executeModalGroups(error);
 }
@@ -258,7 +258,7 @@ bool Interpreter::homeMove(bool g30, Error *error)
     // Rapid to the intermediate point (program coordinates, G90/G91 honoured), then to the
     // stored position: all axes when none is given, else only the given ones.
     const Target mid = targetOf(false);
-    m_toolpath.appendRapid(mid.machine, feedMm(), m_line);
+    m_toolpath.appendRapid(mid.machine, feedMm(), pathLine());
     moveTo(mid);
     const std::array<double, 4> &home = g30 ? m_g30 : m_g28;
     const bool all = !(m_block.letters & kAxisBits);
@@ -281,7 +281,7 @@ bool Interpreter::homeMove(bool g30, Error *error)
         }
         m_pos = toMachine(m_prog);
     }
-    m_toolpath.appendRapid(m_pos, feedMm(), m_line);
+    m_toolpath.appendRapid(m_pos, feedMm(), pathLine());
     return true;
 }
 

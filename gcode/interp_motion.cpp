@@ -156,14 +156,14 @@ bool Interpreter::straight(int motion, const Target &target, Error *error)
     if (m_comp.active())
         return compStraight(motion, target, error);
     if (motion == 0) {
-        m_toolpath.appendRapid(end, feedMm(), m_line);
+        m_toolpath.appendRapid(end, feedMm(), pathLine());
         moveTo(target);
         return true;
     }
     const double length =
         std::sqrt((end.x - m_pos.x) * (end.x - m_pos.x) + (end.y - m_pos.y) * (end.y - m_pos.y) +
                   (end.z - m_pos.z) * (end.z - m_pos.z));
-    m_toolpath.appendFeed(end, feedFor(length), m_line);
+    m_toolpath.appendFeed(end, feedFor(length), pathLine());
     moveTo(target);
     return true;
 }
@@ -280,7 +280,7 @@ bool Interpreter::arc(int motion, const Target &target, Error *error)
     if (m_inverseTime)
         feed = feedFor(arcLength(motion, su, sv, eu, ev, cu, cv, turns,
                                  axisOf(end, ax.w) - axisOf(m_pos, ax.w)));
-    m_toolpath.appendArc(end, info, feed, m_line);
+    m_toolpath.appendArc(end, info, feed, pathLine());
     moveTo(target);
     return true;
 }
@@ -297,7 +297,7 @@ bool Interpreter::probe(int motion, const Target &target, Error *error)
         return failAt(ErrorCode::ZeroFeedRate, col, gName(motion), error);
     if (end == m_pos)
         return failAt(ErrorCode::ProbeNoMotion, col, {}, error);
-    m_toolpath.appendProbe(end, static_cast<ProbeKind>(motion - 382), m_feedMm, m_line);
+    m_toolpath.appendProbe(end, static_cast<ProbeKind>(motion - 382), m_feedMm, pathLine());
     moveTo(target);
     m_probe = m_prog;
     m_probed = true;
@@ -315,7 +315,7 @@ void Interpreter::cycleTraverse(int plane, double aa, double bb, double cc)
         axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
     if (rotation() != 0)
         t.machine = toMachine(t.prog);
-    m_toolpath.appendRapid(t.machine, m_feedMm, m_line);
+    m_toolpath.appendRapid(t.machine, m_feedMm, pathLine());
     moveTo(t);
 }
 
@@ -330,7 +330,7 @@ void Interpreter::cycleFeed(int plane, double aa, double bb, double cc)
         axisRef(t.machine, i) = axisOf(t.prog, i) + offset(i);
     if (rotation() != 0)
         t.machine = toMachine(t.prog);
-    m_toolpath.appendFeed(t.machine, m_feedMm, m_line);
+    m_toolpath.appendFeed(t.machine, m_feedMm, pathLine());
     moveTo(t);
 }
 

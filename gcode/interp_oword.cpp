@@ -60,7 +60,8 @@ bool Interpreter::skipTo(const std::string &label, std::initializer_list<OKind> 
             }
         }
     }
-    *error = {ErrorCode::OwordNotClosed, startLine, 1, labelText(label) + " " + okindName(opening)};
+    *error = {
+        ErrorCode::OwordNotClosed, startLine, 1, labelText(label) + " " + okindName(opening), {}};
     return false;
 }
 
@@ -85,7 +86,9 @@ bool Interpreter::executeOword(Error *error)
                       {}, error);
     switch (kind) {
     case OKind::Sub:
-        m_subs[label] = {m_next, m_line};
+        if (!checkNestedSub(label, error))
+            return false;
+        m_subs[label] = {m_next, m_line, m_source};
         return skipTo(label, {OKind::EndSub}, &found, error);
     case OKind::Call:
         return callSub(error);
@@ -199,8 +202,19 @@ bool Interpreter::callSub(Error *error)
     if (!m_parser.owordArgs(m_block, &m_args, error))
         return false;
     const std::uint32_t col = m_block.oColumn;
+    const std::uint32_t column = oColumn();
     auto it = m_subs.find(label);
-    if (it == m_subs.end()) {
+    std::string file;
+    if (it == m_subs.end() && subFileFor(label, &file)) {
+        if (!loadSubFile(label, file, column, error))
+            return false;
+        it = m_subs.find(label);
+    } else if (it == m_subs.end() && m_source != 0) {
+        // LinuxCNC looks further down only in the program itself: a subroutine file holds its
+        // own subroutine.
+        return failAt(ErrorCode::SubroutineNotFound, col,
+                      labelText(label) + kDetailSeparator + label + ".ngc", error);
+    } else if (it == m_subs.end()) {
         // Like rs274ngc, look for the definition further down the file (subroutines are often
         // written after M2) without executing anything on the way.
         const std::size_t next = m_next, start = m_lineStart;
@@ -211,7 +225,7 @@ bool Interpreter::callSub(Error *error)
         const bool defined = skipTo(label, {OKind::Sub}, &found, &ignored);
         m_lookingAhead = false;
         if (defined)
-            it = m_subs.emplace(label, SubDef{m_next, m_line}).first;
+            it = m_subs.emplace(label, SubDef{m_next, m_line, 0}).first;
         m_next = next;
         m_lineStart = start;
         m_line = line;
@@ -228,8 +242,11 @@ bool Interpreter::callSub(Error *error)
     m_params.pushScope();
     for (int i = 0; i < Parameters::kArgCount; ++i)
         m_params.setNumbered(i + 1, i < static_cast<int>(m_args.size()) ? m_args[i] : 0.0);
-    m_frames.push_back({FrameKind::Call, label, m_next, m_line, 0, oColumn()});
+    m_frames.push_back({FrameKind::Call, label, m_next, m_line, 0, column, 0, m_source});
     contextHere() = {}; // the call level starts with no saved state
+    if (m_source == 0 && it->second.source != 0)
+        m_fileCallLine = m_line;
+    enterSource(it->second.source);
     jump(it->second.offset, it->second.line);
     return true;
 }
@@ -253,6 +270,7 @@ bool Interpreter::returnFromSub(Error *error)
     const Frame call = m_frames[i - 1];
     m_frames.resize(i - 1);
     m_params.popScope();
+    enterSource(call.source);
     jump(call.offset, call.line);
     return leaveCallContext(error);
 }
@@ -334,16 +352,19 @@ Error Interpreter::boundError(ErrorCode plain, ErrorCode inLoop, std::uint64_t b
     }
     const std::string limit = std::to_string(bound);
     if (!at)
-        return {plain, m_line, 1, limit};
+        return {plain, m_line, 1, limit, {}};
     const OKind kind = at->kind == FrameKind::While  ? OKind::While
                        : at->kind == FrameKind::Do   ? OKind::Do
                        : at->kind == FrameKind::Call ? OKind::Call
                                                      : OKind::Repeat;
     // A while frame is kept at the line before its while line (the jump re-reads it).
     const std::uint32_t line = at->kind == FrameKind::While ? at->line + 1 : at->line;
-    return {inLoop, line, at->column,
+    return {inLoop,
+            line,
+            at->column,
             limit + kDetailSeparator + std::to_string(m_line) + kDetailSeparator +
-                labelText(at->label) + " " + okindName(kind)};
+                labelText(at->label) + " " + okindName(kind),
+            {}};
 }
 
 } // namespace frezka::gcode

@@ -72,6 +72,13 @@ bool Interpreter::systemNumbered(int index, double *value) const
 
 bool Interpreter::systemNamed(std::string_view name, double *value) const
 {
+    if (name.starts_with("_ini[")) { // LinuxCNC's INI_VARS: #<_ini[section]name>
+        const auto it = m_options.iniValues.find(std::string(name.substr(5)));
+        if (it == m_options.iniValues.end())
+            return false;
+        *value = it->second;
+        return true;
+    }
     const double u = unit();
     const Point4 prog = programPosition();
     struct Entry

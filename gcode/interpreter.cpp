@@ -1,6 +1,7 @@
 #include "interpreter.h"
 
 #include <QFile>
+#include <QFileInfo>
 
 #include <algorithm>
 #include <cmath>
@@ -52,7 +53,7 @@ bool Interpreter::fail(ErrorCode code, char word, std::string detail, Error *err
 
 bool Interpreter::failAt(ErrorCode code, std::uint32_t pos, std::string detail, Error *error) const
 {
-    *error = {code, m_line, m_parser.columnAt(pos), std::move(detail)};
+    *error = {code, m_line, m_parser.columnAt(pos), std::move(detail), sourcePath()};
     return false;
 }
 
@@ -68,7 +69,7 @@ void Interpreter::warn(ErrorCode code, std::uint32_t line, std::uint32_t column,
         ++m_warningsNotShown;
         return;
     }
-    m_warnings.push_back({code, line, column, std::move(detail)});
+    m_warnings.push_back({code, line, column, std::move(detail), sourcePath()});
 }
 
 double Interpreter::offset(int axis) const
@@ -112,14 +113,15 @@ void Interpreter::jump(std::size_t offset, std::uint32_t lineBefore)
     m_line = lineBefore;
 }
 
-// Long (about 95 lines) on purpose: the per-line order of the checks (pages released,
+// Long (about 110 lines) on purpose: the per-line order of the checks (pages released,
 // progress, the lines-executed bound, cancel, the start line, the block, the moves bound, the
 // error) and the end-of-file checks that depend on how the loop ended read best in one place.
 Result Interpreter::run(std::string_view text, const std::function<void(std::size_t)> &consumed)
 {
     constexpr std::size_t kReleaseStep = 1u << 20;
     std::size_t releaseMark = kReleaseStep;
-    m_text = text;
+    m_text = m_program = text;
+    m_source = 0;
     m_next = 0;
     m_line = 0;
     Result result;
@@ -134,6 +136,8 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
 
     std::set<std::tuple<std::uint32_t, std::uint32_t, int>> seen; // an error repeated by a loop
     auto report = [&](Error e) {
+        if (e.file.empty())
+            e.file = sourcePath();
         if (!seen.insert({e.line, e.column, int(e.code)}).second)
             return;
         if (result.errors.size() < m_options.maxErrors)
@@ -145,11 +149,11 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
     Error error;
     bool bounded = false; // a bound of Options stopped the program (no end-of-file errors)
     while (!m_ended && nextLine(&raw)) {
-        if (m_next >= releaseMark && consumed) {
+        if (m_source == 0 && m_next >= releaseMark && consumed) {
             consumed(releaseMark - kReleaseStep);
             releaseMark += kReleaseStep;
         }
-        if (m_options.progress && (m_line & 0xFFFF) == 0)
+        if (m_options.progress && m_source == 0 && (m_line & 0xFFFF) == 0)
             m_options.progress(m_next, text.size());
         if (++m_executed > m_options.maxBlocks) {
             report(boundError(ErrorCode::TooManyBlocks, ErrorCode::LoopNeverEnds,
@@ -161,7 +165,7 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
             result.cancelled = true;
             break;
         }
-        if (m_options.startLine != 0 && !m_marked && m_line >= m_options.startLine)
+        if (m_options.startLine != 0 && !m_marked && m_source == 0 && m_line >= m_options.startLine)
             markBefore();
         const bool done = processLine(raw, &error);
         if (m_toolpath.size() > m_options.maxMoves) {
@@ -182,25 +186,36 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
         if (!m_frames.empty()) {
             const Frame &f = m_frames.back();
             const char *what = f.kind == FrameKind::Call ? "call" : "o";
-            report({ErrorCode::OwordNotClosed, f.line + 1, 1, std::string(what) + " " + f.label});
+            if (m_source != 0) { // a subroutine file ended inside its subroutine
+                const auto sub =
+                    std::find_if(m_frames.rbegin(), m_frames.rend(),
+                                 [](const Frame &c) { return c.kind == FrameKind::Call; });
+                const std::string &label = sub->label;
+                report({ErrorCode::OwordNotClosed, m_subs[label].line, 1, "o<" + label + "> sub",
+                        sourcePath()});
+            } else
+                report({ErrorCode::OwordNotClosed,
+                        f.line + 1,
+                        1,
+                        std::string(what) + " " + f.label,
+                        {}});
         } else if (m_options.acceptMissingEnd) {
             const std::uint32_t last = std::max(m_line, 1u);
             warn(ErrorCode::ImpliedProgramEnd, last, 1, {});
             m_toolpath.appendEvent({EventKind::ProgramEnd, 0, 0, 0}, feedMm(), last);
         } else if (m_percentStarted) {
-            report({ErrorCode::FileEndedWithoutPercent, std::max(m_line, 1u), 1, {}});
+            report({ErrorCode::FileEndedWithoutPercent, std::max(m_line, 1u), 1, {}, {}});
         } else {
-            report({ErrorCode::FileEndedWithoutEnd, std::max(m_line, 1u), 1, {}});
+            report({ErrorCode::FileEndedWithoutEnd, std::max(m_line, 1u), 1, {}, {}});
         }
     }
-    // File order (a subroutine defined below its call reports its errors when called).
-    std::stable_sort(result.errors.begin(), result.errors.end(),
-                     [](const Error &a, const Error &b) {
-                         return a.line != b.line ? a.line < b.line : a.column < b.column;
-                     });
-    std::stable_sort(m_warnings.begin(), m_warnings.end(), [](const Error &a, const Error &b) {
-        return a.line != b.line ? a.line < b.line : a.column < b.column;
-    });
+    // File order (a subroutine defined below its call reports its errors when called); the
+    // program's own first, then each subroutine file's.
+    const auto fileOrder = [](const Error &a, const Error &b) {
+        return std::tie(a.file, a.line, a.column) < std::tie(b.file, b.line, b.column);
+    };
+    std::stable_sort(result.errors.begin(), result.errors.end(), fileOrder);
+    std::stable_sort(m_warnings.begin(), m_warnings.end(), fileOrder);
     result.warnings = std::move(m_warnings);
     result.warningsNotShown = m_warningsNotShown;
     result.linesRead = m_line;
@@ -235,7 +250,8 @@ bool Interpreter::processLine(std::string_view raw, Error *error)
     if (m_parser.abortColumn() != 0 && !(m_parser.hasBlockDelete() && m_options.blockDelete)) {
         // LinuxCNC ends the program at an (abort, ...) comment: nothing after it runs.
         m_ended = true;
-        *error = {ErrorCode::ProgramAborted, m_line, m_parser.abortColumn(), m_parser.abortText()};
+        *error = {ErrorCode::ProgramAborted, m_line, m_parser.abortColumn(), m_parser.abortText(),
+                  sourcePath()};
         return false;
     }
     if (m_parser.isEmpty())
@@ -285,9 +301,9 @@ void Interpreter::adoptTarget()
     // A straight stand-in keeps the toolpath continuous (it is not run: the program has errors).
     const Target target = targetOf(mode0 == 530);
     if (motion == 0)
-        m_toolpath.appendRapid(target.machine, feedMm(), m_line);
+        m_toolpath.appendRapid(target.machine, feedMm(), pathLine());
     else
-        m_toolpath.appendFeed(target.machine, feedMm(), m_line);
+        m_toolpath.appendFeed(target.machine, feedMm(), pathLine());
     moveTo(target);
 }
 
@@ -430,12 +446,16 @@ Result interpretText(std::string_view text, const Options &options)
     return interpreter.run(text);
 }
 
-Result interpretFile(const std::string &path, const Options &options)
+Result interpretFile(const std::string &path, const Options &given)
 {
+    Options options = given;
+    if (options.programDirectory.empty())
+        options.programDirectory =
+            QFileInfo(QString::fromStdString(path)).absolutePath().toStdString();
     QFile file(QString::fromStdString(path));
     if (!file.open(QIODevice::ReadOnly)) {
         Result r;
-        r.errors.push_back({ErrorCode::FileOpenFailed, 0, 0, path});
+        r.errors.push_back({ErrorCode::FileOpenFailed, 0, 0, path, {}});
         return r;
     }
     const qint64 size = file.size();

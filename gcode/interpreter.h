@@ -25,6 +25,7 @@
 #include <atomic>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -59,6 +60,16 @@ struct Options
     // the length toolLengthMm gives it (0 when not listed) and no diameter.
     std::optional<ToolTable> toolTable;
     std::map<int, double> toolLengthMm;
+    // Subroutine files, as LinuxCNC's `o<name> call` of a subroutine not defined yet: the file
+    // name.ngc (o100 call: 100.ngc) in programDirectory (interpretFile sets it to the program's
+    // folder when empty), then in each folder of subroutinePath in order (the machine profile's
+    // program.subroutinePath, LinuxCNC's [RS274NGC]SUBROUTINE_PATH). The file's `o<name> sub`
+    // .. `endsub` runs; errors there name the file (Error::file).
+    std::string programDirectory;
+    std::vector<std::string> subroutinePath;
+    // #<_ini[section]name> values (LinuxCNC's INI_VARS), keyed "section]name" in lower case
+    // (gcode/linuxcncini.h reads them from a LinuxCNC INI file); read-only to the program.
+    std::map<std::string, double> iniValues;
     // State at the start of the program (added for the GUI: persisted work offsets and the
     // machine position the program starts from).
     std::array<std::array<double, 4>, 9> workOffsetsMm{}; // G54..G59.3, machine mm (#5221..)
@@ -118,11 +129,18 @@ private:
         std::int64_t remaining = 0; // Repeat
         std::uint32_t column = 1;   // of the O word on its opening line
         std::uint64_t turns = 0;    // While/Do/Repeat: jumps back to the body so far
+        std::size_t source = 0;     // Call: the text to return to (SubDef::source)
     };
     struct SubDef
     {
         std::size_t offset = 0; // first body line
         std::uint32_t line = 0; // line number of the sub line
+        std::size_t source = 0; // 0: the program; n: m_files[n - 1]
+    };
+    struct SubFile // a subroutine file read for o<name> call
+    {
+        std::string path;
+        std::string text;
     };
 
     // Reading lines.
@@ -224,6 +242,18 @@ private:
     bool owordIf(const std::string &label, Error *error);
     bool owordWhile(const std::string &label, Error *error);
     bool callSub(Error *error);
+    // Subroutine files (interp_subfile.cpp).
+    bool subFileFor(const std::string &label, std::string *path) const; // on the search path
+    // Reads `path` and finds its `o<label> sub` line: m_subs[label] names it; the reading
+    // position stays where it was.
+    bool loadSubFile(const std::string &label, const std::string &path, std::uint32_t column,
+                     Error *error);
+    void enterSource(std::size_t source); // reading goes on in that text (jump sets where)
+    // The program's line a toolpath entry is attributed to: inside a subroutine file, the line
+    // of the program's call that led there.
+    std::uint32_t pathLine() const { return m_source == 0 ? m_line : m_fileCallLine; }
+    const std::string &sourcePath() const; // empty for the program
+    bool checkNestedSub(const std::string &label, Error *error) const;
     bool returnFromSub(Error *error);
     bool loopJump(bool isBreak, Error *error);
     std::uint32_t oColumn() const { return m_parser.columnAt(m_block.oColumn); }
@@ -309,6 +339,12 @@ private:
     std::vector<Error> m_warnings;
     std::size_t m_warningsNotShown = 0;
     std::unordered_map<int, int> m_warningCount; // per code
+
+    // Subroutine files read so far and the text being read (0: the program, m_program).
+    std::vector<std::unique_ptr<SubFile>> m_files;
+    std::size_t m_source = 0;
+    std::string_view m_program;
+    std::uint32_t m_fileCallLine = 0; // the program's line whose call entered a file
 
     // Control flow.
     std::vector<Frame> m_frames;

@@ -57,6 +57,7 @@ bool Parser::fail(ErrorCode code, std::size_t pos, std::string detail, Error *er
     error->line = m_line;
     error->column = columnAt(pos);
     error->detail = std::move(detail);
+    error->file.clear(); // the interpreter names a subroutine file
     return false;
 }
 
@@ -69,7 +70,7 @@ bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error)
     m_abortText.clear();
     if (raw.size() > 65535) {
         m_text.clear();
-        *error = {ErrorCode::LineTooLong, line, 1, std::to_string(raw.size())};
+        *error = {ErrorCode::LineTooLong, line, 1, std::to_string(raw.size()), {}};
         return false;
     }
     const char *s = raw.data();
@@ -89,14 +90,14 @@ bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error)
                 if (s[i] == '(') {
                     m_text.clear();
                     *error = {
-                        ErrorCode::NestedComment, line, static_cast<std::uint32_t>(i + 1), {}};
+                        ErrorCode::NestedComment, line, static_cast<std::uint32_t>(i + 1), {}, {}};
                     return false;
                 }
             }
             if (i >= n) {
                 m_text.clear();
                 *error = {
-                    ErrorCode::UnclosedComment, line, static_cast<std::uint32_t>(open + 1), {}};
+                    ErrorCode::UnclosedComment, line, static_cast<std::uint32_t>(open + 1), {}, {}};
                 return false;
             }
             noteAbortComment(raw.substr(open + 1, i - open - 1), open);

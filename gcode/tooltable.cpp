@@ -67,7 +67,7 @@ bool readWord(std::string_view word, ToolEntry *e, bool *sawT)
 
 Error lineError(ErrorCode code, std::uint32_t line, std::size_t column, std::string detail)
 {
-    return Error{code, line, static_cast<std::uint32_t>(column + 1), std::move(detail)};
+    return Error{code, line, static_cast<std::uint32_t>(column + 1), std::move(detail), {}};
 }
 
 // Reads one line (without its newline) into *e; false with *error on a bad word.
@@ -194,7 +194,7 @@ bool readToolTableFile(const std::string &path, ToolTable *table, Error *error, 
         return true;
     }
     if (!file.open(QIODevice::ReadOnly)) {
-        *error = Error{ErrorCode::FileOpenFailed, 0, 0, path};
+        *error = Error{ErrorCode::FileOpenFailed, 0, 0, path, {}};
         return false;
     }
     const QByteArray bytes = file.readAll();
@@ -210,8 +210,11 @@ bool writeToolTableFile(const std::string &path, const ToolTable &table, Error *
         file.write(text.data(), static_cast<qint64>(text.size())) !=
             static_cast<qint64>(text.size()) ||
         !file.commit()) {
-        *error = Error{ErrorCode::FileWriteFailed, 0, 0,
-                       path + kDetailSeparator + file.errorString().toStdString()};
+        *error = Error{ErrorCode::FileWriteFailed,
+                       0,
+                       0,
+                       path + kDetailSeparator + file.errorString().toStdString(),
+                       {}};
         return false;
     }
     return true;

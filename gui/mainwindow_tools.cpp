@@ -27,6 +27,8 @@ void MainWindow::loadToolTable()
 {
     const session::ToolTableFile tools = session::readProfileToolTable(profile(), m_profilePath);
     m_program->setToolTable(tools.table, tools.error);
+    m_program->setSubroutinePath(
+        machine::subroutineFolders(profile(), m_profilePath.toStdString()));
     if (!tools.error.isEmpty())
         showError(tools.error);
 }

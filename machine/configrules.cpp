@@ -252,6 +252,23 @@ std::string toolTablePath(const MachineConfig &config, const std::string &profil
     return QDir::cleanPath(dir.filePath(table.filePath())).toStdString();
 }
 
+std::vector<std::string> subroutineFolders(const MachineConfig &config,
+                                           const std::string &profilePath)
+{
+    std::vector<std::string> out;
+    const QDir base = QFileInfo(QString::fromStdString(profilePath)).absoluteDir();
+    for (const QString &folder :
+         QString::fromStdString(config.program.subroutinePath).split(QLatin1Char(':'))) {
+        const QString f = folder.trimmed();
+        if (f.isEmpty())
+            continue;
+        out.push_back(QDir::isAbsolutePath(f) || profilePath.empty()
+                          ? QDir::cleanPath(f).toStdString()
+                          : QDir::cleanPath(base.filePath(f)).toStdString());
+    }
+    return out;
+}
+
 int wireAxisCount(const MachineConfig &config)
 {
     return protocol::variantInfo(config.unit.variant).axisCount;

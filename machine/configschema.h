@@ -153,6 +153,7 @@ void visitProfile(V &v, MachineConfig &c)
     v.object("program", [&](V &s) {
         s.integer("maxLinesExecuted", c.program.maxLinesExecuted, 1000, 2'000'000'000, "");
         s.integer("maxMoves", c.program.maxMoves, 1000, 200'000'000, "");
+        s.text("subroutinePath", c.program.subroutinePath);
     });
 }
 

@@ -116,6 +116,10 @@ struct ProgramConfig
 {
     int maxLinesExecuted = 50'000'000;
     int maxMoves = 10'000'000;
+    // Folders searched for subroutine files (o<name> call of name.ngc) after the program's own
+    // folder, separated by ':' as LinuxCNC's [RS274NGC]SUBROUTINE_PATH; relative ones from the
+    // profile's folder. Empty: the program's folder only.
+    std::string subroutinePath;
     friend bool operator==(const ProgramConfig &, const ProgramConfig &) = default;
 };
 
@@ -234,6 +238,9 @@ MachineConfig defaultMachineConfig(protocol::Variant variant);
 // profile's folder (an absolute path as it is); empty when the profile names none. A profile
 // that was never saved (empty profilePath) resolves against the current directory.
 std::string toolTablePath(const MachineConfig &config, const std::string &profilePath);
+// The folders of program.subroutinePath, absolute (relative ones from the profile's folder).
+std::vector<std::string> subroutineFolders(const MachineConfig &config,
+                                           const std::string &profilePath);
 
 // Number of interpolated axes the unit's L/C commands carry (3 or 4).
 int wireAxisCount(const MachineConfig &config);

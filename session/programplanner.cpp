@@ -24,6 +24,8 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     options.startMm = {req.startMm[0], req.startMm[1], req.startMm[2], req.startMm[3]};
     options.startLine = req.startLine;
     options.toolTable = req.toolTable;
+    options.programDirectory = req.programDirectory;
+    options.subroutinePath = req.subroutinePath;
     options.maxBlocks = std::uint64_t(std::max(1, req.limits.maxLinesExecuted));
     options.maxMoves = std::uint64_t(std::max(1, req.limits.maxMoves));
     options.cancel = req.cancel;

@@ -50,6 +50,10 @@ struct InterpretRequest
     // run with lengths that could not be read).
     std::optional<gcode::ToolTable> toolTable;
     QString toolTableError;
+    // Where o<name> call finds name.ngc: the program's folder, then the profile's
+    // program.subroutinePath folders (machine::subroutineFolders).
+    std::string programDirectory;
+    std::vector<std::string> subroutinePath;
 };
 
 struct InterpretOutcome

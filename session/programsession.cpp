@@ -57,6 +57,7 @@ struct LoadJob
     std::uint32_t startLine = 0;
     std::optional<gcode::ToolTable> toolTable;
     QString toolTableError;
+    std::vector<std::string> subroutinePath;
     bool measurePeaks = false;
 };
 
@@ -124,6 +125,8 @@ InterpretRequest interpretRequest(const LoadJob &job, const QByteArray &data,
     req.startLine = job.startLine;
     req.toolTable = job.toolTable;
     req.toolTableError = job.toolTableError;
+    req.programDirectory = QFileInfo(job.path).absolutePath().toStdString();
+    req.subroutinePath = job.subroutinePath;
     req.limits = job.profile ? job.profile->program : machine::ProgramConfig{};
     return req;
 }
@@ -275,6 +278,7 @@ void ProgramSession::load(const QString &path)
                       .startLine = m_startLine,
                       .toolTable = m_toolTable,
                       .toolTableError = m_toolTableError,
+                      .subroutinePath = m_subroutinePath,
                       .measurePeaks = m_measurePeaks};
     emit loadStarted(path);
 

@@ -106,6 +106,12 @@ public:
         m_toolTableError = error;
     }
     const std::optional<gcode::ToolTable> &toolTable() const { return m_toolTable; }
+    // The folders o<name> call searches after the program's own (machine::subroutineFolders of
+    // the profile), from the next load on.
+    void setSubroutinePath(std::vector<std::string> folders)
+    {
+        m_subroutinePath = std::move(folders);
+    }
     std::uint32_t startLine() const { return m_startLine; }
     // Each load's stages (LoadedProgram::stages) with the peak memory of each, which resets the
     // process's high-water mark at every stage (bench_gui_load; off by default).
@@ -140,6 +146,7 @@ private:
 
     ViewBuilder m_buildView;
     std::optional<machine::MachineConfig> m_profile;
+    std::vector<std::string> m_subroutinePath;
     double m_feedOverride = 1.0;
     OffsetState m_offsets;
     std::array<double, 4> m_startMm{};

@@ -2327,10 +2327,6 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>Hodnoty musí být konečné a v absolutní hodnotě menší než 1e12; zkontrolujte výraz.</translation>
     </message>
     <message>
-        <source>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</source>
-        <translation>Definujte jej v tomto souboru pomocí o&lt;název&gt; sub ... o&lt;název&gt; endsub.</translation>
-    </message>
-    <message>
         <source>%1: OK, %2 lines</source>
         <translation>%1: v pořádku, %2 řádků</translation>
     </message>
@@ -2669,6 +2665,42 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Save the modal state with M70 (or M73) in the same subroutine, or at the top level, before M72, and do not invalidate it with M71 in between.</source>
         <translation>Uložte modální stav pomocí M70 (nebo M73) ve stejném podprogramu, nebo na nejvyšší úrovni, před M72, a mezitím jej nezneplatňujte pomocí M71.</translation>
+    </message>
+    <message>
+        <source>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub, or in a file name.ngc beside the program or in a folder of the machine profile&apos;s program.subroutinePath (Settings › Machine profile › Program).</source>
+        <translation>Definujte jej v tomto souboru pomocí o&lt;název&gt; sub ... o&lt;název&gt; endsub, nebo v souboru název.ngc vedle programu či ve složce z program.subroutinePath v profilu stroje (Nastavení › Profil stroje › Program).</translation>
+    </message>
+    <message>
+        <source>This INI line is not [SECTION] nor NAME = VALUE: %1</source>
+        <translation>Tento řádek INI není [SEKCE] ani NÁZEV = HODNOTA: %1</translation>
+    </message>
+    <message>
+        <source>Fix the line or make it a comment (starting with # or ;).</source>
+        <translation>Opravte řádek, nebo z něj udělejte komentář (začínající # nebo ;).</translation>
+    </message>
+    <message>
+        <source>%1 sub is defined inside the running subroutine %2</source>
+        <translation>%1 sub je definován uvnitř právě běžícího podprogramu %2</translation>
+    </message>
+    <message>
+        <source>Move the definition out of %2: define it before or after it (in its own file name.ngc when %2 is in a file), as LinuxCNC requires.</source>
+        <translation>Přesuňte definici ven z %2: definujte ji před ním nebo za ním (v samostatném souboru název.ngc, je-li %2 v souboru), jak to vyžaduje LinuxCNC.</translation>
+    </message>
+    <message>
+        <source>Subroutine %1 is not defined yet and there is no file %2 on the subroutine path</source>
+        <translation>Podprogram %1 zatím není definován a na cestě podprogramů není soubor %2</translation>
+    </message>
+    <message>
+        <source>A subroutine file holds only its own subroutine (as in LinuxCNC): put %1 in a file %2 beside the program or in a folder of the machine profile&apos;s program.subroutinePath, or define it in the program.</source>
+        <translation>Soubor podprogramu obsahuje jen svůj vlastní podprogram (jako v LinuxCNC): dejte %1 do souboru %2 vedle programu nebo do složky z program.subroutinePath v profilu stroje, nebo jej definujte v programu.</translation>
+    </message>
+    <message>
+        <source>The file %2 has no line %1 sub</source>
+        <translation>Soubor %2 nemá řádek %1 sub</translation>
+    </message>
+    <message>
+        <source>A file name.ngc found for o&lt;name&gt; call must define o&lt;name&gt; sub ... o&lt;name&gt; endsub; rename the file or fix its sub line.</source>
+        <translation>Soubor název.ngc nalezený pro o&lt;název&gt; call musí definovat o&lt;název&gt; sub ... o&lt;název&gt; endsub; soubor přejmenujte, nebo opravte jeho řádek sub.</translation>
     </message>
 </context>
 <context>
@@ -4698,6 +4730,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Moves at most (a program that never ends)</source>
         <translation>Nejvýše pohybů (program, který nikdy neskončí)</translation>
+    </message>
+    <message>
+        <source>Subroutine folders (o&lt;name&gt; call of name.ngc; separated by :)</source>
+        <translation>Složky podprogramů (o&lt;název&gt; call souboru název.ngc; oddělené :)</translation>
     </message>
 </context>
 <context>

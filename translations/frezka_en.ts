@@ -2327,10 +2327,6 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>Values must be finite and below 1e12 in size; check the expression.</translation>
     </message>
     <message>
-        <source>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</source>
-        <translation>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub.</translation>
-    </message>
-    <message>
         <source>%1: OK, %2 lines</source>
         <translation>%1: OK, %2 lines</translation>
     </message>
@@ -2666,6 +2662,42 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Save the modal state with M70 (or M73) in the same subroutine, or at the top level, before M72, and do not invalidate it with M71 in between.</source>
         <translation>Save the modal state with M70 (or M73) in the same subroutine, or at the top level, before M72, and do not invalidate it with M71 in between.</translation>
+    </message>
+    <message>
+        <source>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub, or in a file name.ngc beside the program or in a folder of the machine profile&apos;s program.subroutinePath (Settings › Machine profile › Program).</source>
+        <translation>Define it in this file with o&lt;name&gt; sub ... o&lt;name&gt; endsub, or in a file name.ngc beside the program or in a folder of the machine profile&apos;s program.subroutinePath (Settings › Machine profile › Program).</translation>
+    </message>
+    <message>
+        <source>This INI line is not [SECTION] nor NAME = VALUE: %1</source>
+        <translation>This INI line is not [SECTION] nor NAME = VALUE: %1</translation>
+    </message>
+    <message>
+        <source>Fix the line or make it a comment (starting with # or ;).</source>
+        <translation>Fix the line or make it a comment (starting with # or ;).</translation>
+    </message>
+    <message>
+        <source>%1 sub is defined inside the running subroutine %2</source>
+        <translation>%1 sub is defined inside the running subroutine %2</translation>
+    </message>
+    <message>
+        <source>Move the definition out of %2: define it before or after it (in its own file name.ngc when %2 is in a file), as LinuxCNC requires.</source>
+        <translation>Move the definition out of %2: define it before or after it (in its own file name.ngc when %2 is in a file), as LinuxCNC requires.</translation>
+    </message>
+    <message>
+        <source>Subroutine %1 is not defined yet and there is no file %2 on the subroutine path</source>
+        <translation>Subroutine %1 is not defined yet and there is no file %2 on the subroutine path</translation>
+    </message>
+    <message>
+        <source>A subroutine file holds only its own subroutine (as in LinuxCNC): put %1 in a file %2 beside the program or in a folder of the machine profile&apos;s program.subroutinePath, or define it in the program.</source>
+        <translation>A subroutine file holds only its own subroutine (as in LinuxCNC): put %1 in a file %2 beside the program or in a folder of the machine profile&apos;s program.subroutinePath, or define it in the program.</translation>
+    </message>
+    <message>
+        <source>The file %2 has no line %1 sub</source>
+        <translation>The file %2 has no line %1 sub</translation>
+    </message>
+    <message>
+        <source>A file name.ngc found for o&lt;name&gt; call must define o&lt;name&gt; sub ... o&lt;name&gt; endsub; rename the file or fix its sub line.</source>
+        <translation>A file name.ngc found for o&lt;name&gt; call must define o&lt;name&gt; sub ... o&lt;name&gt; endsub; rename the file or fix its sub line.</translation>
     </message>
 </context>
 <context>
@@ -4691,6 +4723,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Moves at most (a program that never ends)</source>
         <translation>Moves at most (a program that never ends)</translation>
+    </message>
+    <message>
+        <source>Subroutine folders (o&lt;name&gt; call of name.ngc; separated by :)</source>
+        <translation>Subroutine folders (o&lt;name&gt; call of name.ngc; separated by :)</translation>
     </message>
 </context>
 <context>

@@ -9,6 +9,7 @@
 #include "session/tooltablefile.h"
 
 #include <QFile>
+#include <QFileInfo>
 
 namespace frezka::cli {
 namespace {
@@ -139,7 +140,8 @@ std::optional<session::InterpretOutcome> interpretFile(const QString &file,
 {
     QFile f(file);
     if (!f.open(QIODevice::ReadOnly)) {
-        err(gcode::formatError(file, {gcode::ErrorCode::FileOpenFailed, 0, 0, file.toStdString()}) +
+        err(gcode::formatError(file,
+                               {gcode::ErrorCode::FileOpenFailed, 0, 0, file.toStdString(), {}}) +
             QLatin1Char('\n'));
         if (errorCount)
             *errorCount = 1;
@@ -148,13 +150,17 @@ std::optional<session::InterpretOutcome> interpretFile(const QString &file,
     session::InterpretRequest request;
     request.text = f.readAll();
     request.fileName = file;
+    request.programDirectory = QFileInfo(file).absolutePath().toStdString();
     request.offsets = options.offsets;
     request.startLine = startLine;
     if (!options.machine.isEmpty()) { // the profile's tool table (its errors come as the first)
         const machine::ConfigResult named =
             machine::loadMachineConfig(app::resolveProfile(options.machine).toStdString());
-        if (named.config) // its bounds on a program that never ends (a file or a shipped name)
+        if (named.config) { // its bounds on a program that never ends, its subroutine folders
             request.limits = named.config->program;
+            request.subroutinePath = machine::subroutineFolders(
+                *named.config, app::resolveProfile(options.machine).toStdString());
+        }
         const machine::ConfigResult profile =
             machine::loadMachineConfig(options.machine.toStdString());
         if (profile.config) {

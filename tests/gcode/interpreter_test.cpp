@@ -145,7 +145,7 @@ TEST(Errors, EveryCodeHasNameTextAndHint)
         EXPECT_EQ(back, code);
         EXPECT_GT(std::string(errorHint(code)).size(), 5u) << name;
     }
-    const Error e{ErrorCode::UnknownGCode, 12, 7, "G12.3"};
+    const Error e{ErrorCode::UnknownGCode, 12, 7, "G12.3", {}};
     EXPECT_EQ(englishMessage(e),
               "Unknown G code G12.3. Check the number; see the list of supported codes.");
     EXPECT_EQ(formatError(QStringLiteral("a.nc"), e).toStdString(),

@@ -1,9 +1,12 @@
 #include "rs274.h"
 
 #include "gcode/interpreter.h"
+#include "gcode/linuxcncini.h"
 #include "gcode/trace.h"
 
 #include <QDir>
+#include <QFile>
+#include <QFileInfo>
 #include <QLockFile>
 #include <QProcess>
 #include <QStandardPaths>
@@ -47,7 +50,36 @@ std::string rs274Path()
     return QStandardPaths::findExecutable(QStringLiteral("rs274")).toStdString();
 }
 
-Rs274Run runRs274(const std::string &file, const ToolTable *toolTable)
+namespace {
+
+// A copy of the INI in dir with SUBROUTINE_PATH's folders absolute (from the INI's folder).
+QString iniCopy(const std::string &ini, const QTemporaryDir &dir)
+{
+    QFile in(QString::fromStdString(ini));
+    if (!in.open(QIODevice::ReadOnly))
+        return {};
+    const QDir base = QFileInfo(in).absoluteDir();
+    QString text;
+    for (QString line : QString::fromUtf8(in.readAll()).split(QLatin1Char('\n'))) {
+        const qsizetype eq = line.indexOf(QLatin1Char('='));
+        if (eq > 0 && line.left(eq).trimmed().compare(QLatin1String("SUBROUTINE_PATH"),
+                                                      Qt::CaseInsensitive) == 0) {
+            QStringList dirs;
+            for (const QString &d : line.mid(eq + 1).split(QLatin1Char(':')))
+                dirs << QDir::cleanPath(base.absoluteFilePath(d.trimmed()));
+            line = QStringLiteral("SUBROUTINE_PATH = ") + dirs.join(QLatin1Char(':'));
+        }
+        text += line + QLatin1Char('\n');
+    }
+    QFile out(dir.filePath(QStringLiteral("test.ini")));
+    if (!out.open(QIODevice::WriteOnly) || out.write(text.toUtf8()) < 0)
+        return {};
+    return out.fileName();
+}
+
+} // namespace
+
+Rs274Run runRs274(const std::string &file, const ToolTable *toolTable, const std::string &ini)
 {
     Rs274Run run;
     const std::string exe = rs274Path();
@@ -88,14 +120,22 @@ Rs274Run runRs274(const std::string &file, const ToolTable *toolTable)
     }
     QTemporaryDir workDir;
     process.setWorkingDirectory(workDir.path());
-    process.start(QString::fromStdString(exe),
-                  {QStringLiteral("-t"), tools.fileName(), QStringLiteral("-g"),
-                   QString::fromStdString(file)});
+    QStringList args{QStringLiteral("-t"), tools.fileName(), QStringLiteral("-g")};
+    if (!ini.empty()) {
+        const QString copy = iniCopy(ini, workDir);
+        if (copy.isEmpty()) {
+            run.error = "cannot copy the INI file";
+            return run;
+        }
+        args << QStringLiteral("-i") << copy;
+    }
+    process.start(QString::fromStdString(exe), args << QString::fromStdString(file));
     process.closeWriteChannel();
     if (!process.waitForFinished(60000)) {
         run.error = "rs274 did not finish";
         return run;
     }
+    const bool succeeded = process.exitStatus() == QProcess::NormalExit && process.exitCode() == 0;
     std::istringstream in(process.readAll().toStdString());
     double unit = 1;
     std::array<double, 6> g5x{}, g92{};
@@ -215,6 +255,10 @@ Rs274Run runRs274(const std::string &file, const ToolTable *toolTable)
             spindleDir = 0;
         }
     }
+    if (succeeded) { // what was taken for an error was printed by (PRINT, ...)
+        run.error.clear();
+        run.errorLine.clear();
+    }
     return run;
 }
 
@@ -256,12 +300,16 @@ std::vector<double> spindleInForce(const Toolpath &tp)
 } // namespace
 
 testing::AssertionResult matchesRs274(const std::string &file, const std::string &rs274File,
-                                      const ToolTable *tools)
+                                      const ToolTable *tools, const std::string &ini)
 {
-    const Rs274Run ref = runRs274(rs274File.empty() ? file : rs274File, tools);
+    const Rs274Run ref = runRs274(rs274File.empty() ? file : rs274File, tools, ini);
     if (!ref.error.empty() && !ref.endedWithoutEnd())
         return testing::AssertionFailure() << "rs274: " << ref.error << " at: " << ref.errorLine;
     Options options;
+    Error iniError;
+    if (!ini.empty() && !readLinuxCncIniFile(ini, &options, &iniError))
+        return testing::AssertionFailure()
+               << ini << ":" << iniError.line << ": " << englishMessage(iniError);
     if (tools)
         options.toolTable = *tools;
     const Result r = interpretFile(file, options);

@@ -45,15 +45,20 @@ struct Rs274Run
 std::string rs274Path(); // empty when not installed
 // tools: the tool table (mm) both see; none: every tool 1..99 of length 0 for rs274, no table
 // for Frezka. rs274 reads the table in inches (its standalone machine units), so it gets a copy
-// converted from mm.
-Rs274Run runRs274(const std::string &file, const ToolTable *tools = nullptr);
+// converted from mm. ini: a LinuxCNC INI file rs274 is given (-i; a copy with SUBROUTINE_PATH's
+// folders made absolute from the INI's folder, as rs274 runs in a folder of its own). A run that
+// ends with exit status 0 has no error (lines a PRINT comment printed are not errors).
+Rs274Run runRs274(const std::string &file, const ToolTable *tools = nullptr,
+                  const std::string &ini = {});
 
 // Runs the file through both interpreters: same motion and dwell sequence, kinds, end points and
 // arc centres within 1e-4 program units (rs274 prints 4 decimals), same arc planes and turns,
 // the same feed (mm/min) on every feed, arc and probe move, the same dwell times and the same
 // spindle speed in force at every motion and dwell. rs274 sees rs274File when given (a copy
 // edited to LinuxCNC's dialect, e.g. without the K0 words Frezka accepts and rs274 refuses).
+// ini: the LinuxCNC INI file both see (Frezka: readLinuxCncIniFile; rs274: -i).
 testing::AssertionResult matchesRs274(const std::string &file, const std::string &rs274File = {},
-                                      const ToolTable *tools = nullptr);
+                                      const ToolTable *tools = nullptr,
+                                      const std::string &ini = {});
 
 } // namespace frezka::gcode::test

@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+
 namespace frezka::session {
 namespace {
 
@@ -73,6 +77,44 @@ TEST(ProgramPlanner, TheProfilesBoundsAndTheCancelFlagReachTheInterpreter)
     const machine::ProgramConfig profile;
     EXPECT_EQ(std::uint64_t(profile.maxLinesExecuted), interpreter.maxBlocks);
     EXPECT_EQ(std::uint64_t(profile.maxMoves), interpreter.maxMoves);
+}
+
+// Issue 15: o<name> call finds name.ngc in the program's folder and in the profile's
+// program.subroutinePath folders (relative ones from the profile's folder); an error in the file
+// names the file.
+TEST(ProgramPlanner, SubroutineFilesFromTheProgramsFolderAndTheProfilesPath)
+{
+    QTemporaryDir dir;
+    ASSERT_TRUE(QDir(dir.path()).mkpath(QStringLiteral("profiles/subs")));
+    ASSERT_TRUE(QDir(dir.path()).mkpath(QStringLiteral("jobs")));
+    const auto write = [&](const QString &name, const QByteArray &text) {
+        QFile f(dir.filePath(name));
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(text);
+    };
+    write(QStringLiteral("profiles/subs/drill.ngc"), "o<drill> sub\nG0 X#1\no<drill> endsub\n");
+    write(QStringLiteral("jobs/pocket.ngc"), "o<pocket> sub\nG0 Y#1\n#2=[1/0]\no<pocket> endsub\n");
+    machine::MachineConfig config = machine::defaultMachineConfig(protocol::Variant::Gve64);
+    config.program.subroutinePath = "subs:/nowhere";
+    const std::string profile = dir.filePath(QStringLiteral("profiles/mill.json")).toStdString();
+    InterpretRequest r;
+    r.text = "o<drill> call [12]\nM2\n";
+    r.fileName = QStringLiteral("job.nc");
+    r.programDirectory = dir.filePath(QStringLiteral("jobs")).toStdString();
+    r.subroutinePath = machine::subroutineFolders(config, profile);
+    ASSERT_EQ(r.subroutinePath.size(), 2u);
+    EXPECT_EQ(r.subroutinePath[0], dir.filePath(QStringLiteral("profiles/subs")).toStdString());
+    InterpretOutcome out = interpretProgram(r);
+    ASSERT_TRUE(out.errors.empty()) << out.errors[0].text.toStdString();
+    EXPECT_EQ(out.toolpath->end(0).x, 12);
+    r.text = "o<pocket> call [3]\nM2\n";
+    out = interpretProgram(r);
+    ASSERT_EQ(out.errors.size(), 1u);
+    EXPECT_TRUE(out.errors[0].text.startsWith(dir.filePath(QStringLiteral("jobs/pocket.ngc:3:"))))
+        << out.errors[0].text.toStdString();
+    r.subroutinePath.clear();
+    r.text = "o<drill> call [12]\nM2\n";
+    EXPECT_EQ(interpretProgram(r).errors.size(), 1u) << "not found without the profile's path";
 }
 
 TEST(ProgramPlanner, PlansOrWordsThePlanError)
