@@ -59,6 +59,48 @@ void JobPace::build()
         m_tripPrefix[i + 1] = m_tripPrefix[i] + (wire && !(packetable && inRun) ? 1 : 0);
         inRun = packetable;
     }
+    findModalChanges();
+}
+
+void JobPace::findModalChanges()
+{
+    const auto &cmds = m_program.commands;
+    m_changes.clear();
+    std::size_t stretchStart = 0; // program index where the stretch before the next change began
+    bool moved = false;           // motion since the last rest
+    for (std::size_t i = 0; i < cmds.size(); ++i) {
+        const UnitOp op = cmds[i].op;
+        if (op == UnitOp::Vector || op == UnitOp::Brake) {
+            moved = moved || op == UnitOp::Vector;
+            continue;
+        }
+        if (op > UnitOp::Spindle || op == UnitOp::Line) { // a rest: the queue drains here
+            moved = false;
+            stretchStart = i + 1;
+            continue;
+        }
+        if (!moved ||
+            (i > 0 && cmds[i - 1].op != UnitOp::Vector && cmds[i - 1].op != UnitOp::Brake))
+            continue; // before the chain's first vector, or not the change's first command
+        ModalChange c;
+        c.at = i;
+        const std::size_t last = m_lastMotion[i] - 1; // the stretch's last vector
+        const double own = m_timePrefix[last + 1] - m_timePrefix[last];
+        c.stretchS = std::max(0.0, m_timePrefix[i] - m_timePrefix[stretchStart] -
+                                       std::min(m_brakeS[last + 1], own));
+        std::size_t j = i;
+        for (; j < cmds.size() && cmds[j].op != UnitOp::Vector && cmds[j].op != UnitOp::Brake &&
+               cmds[j].op <= UnitOp::Spindle && cmds[j].op != UnitOp::Line;
+             ++j)
+            ++c.commands;
+        std::size_t k = j;
+        while (k < cmds.size() && cmds[k].op == UnitOp::Brake)
+            ++k;
+        if (k < cmds.size() && cmds[k].op == UnitOp::Vector)
+            c.nextBytes = m_bytePrefix[k + 1] - m_bytePrefix[j];
+        m_changes.push_back(c);
+        stretchStart = j;
+    }
 }
 
 // Motion time per command under the unit's model (machine/unitmodel.h, the planner's own, exact
@@ -224,6 +266,18 @@ int JobPace::overrideCeiling() const
                       std::max(1.0, trips) * m_host.rttS()
                 : bytes + static_cast<double>(e - s) * m_host.rttS();
         ratio = std::min(ratio, motion / wire);
+    }
+    // A change inside a chain needs what the planner's pace gave it at 100 %: the stretch before
+    // it must outlast its round trips and the next packet. XM shortens the stretch, not them
+    // (property seed 390, XM 170: a vector slowed to V53 so that the V2447 after it and the
+    // next packet arrive in time ran at 90 pulses/s, and the unit ran dry 19 times).
+    const auto firstChange =
+        std::lower_bound(m_changes.begin(), m_changes.end(), from,
+                         [](const ModalChange &c, std::size_t index) { return c.at < index; });
+    for (auto c = firstChange; c != m_changes.end() && c->at < last && ratio > 1.0; ++c) {
+        const double need = (c->commands + 1) * m_host.rttS() +
+                            m_host.link().wireTime(static_cast<std::size_t>(c->nextBytes));
+        ratio = std::min(ratio, c->stretchS / need);
     }
     return std::clamp(static_cast<int>(std::floor(ratio * 100.0)), 100, kOverrideMaxPercent);
 }

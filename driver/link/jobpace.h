@@ -106,6 +106,19 @@ private:
     std::vector<std::int64_t> m_tripPrefix;
     std::vector<std::size_t> m_lastMotion; // 1 + the last motion command before each index
     std::vector<double> m_brakeS;          // braking time from V to rest before each index
+    // A change inside a chain: commands that cannot travel in a packet (A, V, ...) after motion
+    // that has not rested since. What the unit holds when it goes out is at least the motion of
+    // the stretch before it (since the last change or rest); the change's round trips and the
+    // next packet's first B and C must arrive within that (the planner's pace, at 100 %).
+    struct ModalChange
+    {
+        std::size_t at = 0;         // program index of its first command
+        double stretchS = 0;        // motion of the stretch before it at 100 %, less its braking
+        int commands = 0;           // its commands, each a round trip
+        std::int64_t nextBytes = 0; // the B and C that follow it, up to the first C, on the wire
+    };
+    void findModalChanges();
+    std::vector<ModalChange> m_changes; // in program order
     // The unit's waits for motion since the poll that set (m_waitExec, m_waitExecAt), s.
     double m_waitS = 0;
     std::size_t m_waitExec = 0;

@@ -435,3 +435,12 @@ TEST(StreamPace, AChainsFirstVectorCountsUntilTheUnitMustBrake)
 {
     expectKeepsThePace(drawJob(376, 300));
 }
+
+// Property seed 390 (a GVE64 at 57 600 Bd, XM 170): the plan slowed a chain's first vector to
+// V53 so that the V2447 after it and the next packet arrive before it ends; XM 170 ran it at 90
+// pulses/s, and the unit ran dry 19 times. The override's ceiling now keeps each change inside a
+// chain within the stretch before it (JobPace::overrideCeiling).
+TEST(StreamPace, AnOverrideLeavesAChangeInsideAChainTheTimeItNeeds)
+{
+    expectKeepsThePace(drawJob(390, 300));
+}
