@@ -125,6 +125,27 @@ TEST(EepromMpg, TheEepromInterruptMasksStopTheWheelsMove)
     EXPECT_FALSE(unit.turnWheel(1)) << "the wheel waits for G or D";
 }
 
+// 0x09 and 0x0B (manuals 12.3/12.4): IN14/IN15 in bits 6/7, their cause in ST5.
+TEST(EepromMpg, TheHighInterruptMasksStopTheWheelsMoveByTheProbe)
+{
+    Sim sim;
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    ASSERT_TRUE(writeThroughDriver(sim, [](auto &c) {
+        c.eeprom.interruptEnableHigh = 0x80; // IN15
+        c.eeprom.polarityHigh = 0x80;        // active at level 1
+    }));
+    ASSERT_TRUE(mpgOn(sim));
+    emulator::Unit &unit = sim.port.unit();
+    unit.setWheelAxis(2);
+    unit.setWheelMultiplier(100);
+    ASSERT_TRUE(unit.turnWheel(-4)); // Z 4 mm down
+    sim.runner.runFor(0.1);
+    unit.setProbe(true);
+    sim.runner.runFor(3.0);
+    EXPECT_GT(unit.position()[2], -800) << "stopped by the probe";
+    EXPECT_EQ(unit.status(5), 0x80) << "ST5: IN15 fired";
+}
+
 // 0x07 (GVE64 manual 12.3): an input held for 1 s starts homing of the wheel's axis.
 TEST(EepromMpg, AnInputHeldForASecondHomesTheWheelsAxis)
 {

@@ -34,6 +34,24 @@ TEST(EepromBehaviour, AnOutputSetToInterruptSignalFollowsInta)
     EXPECT_TRUE(relayOn(sim, kOut3)) << "OUT3 signals the interrupt";
 }
 
+// GVE84 0x01 (manual 000): the relay switches the spindle only as function 00.
+TEST(EepromBehaviour, TheGve84RelaySwitchesTheSpindleOnlyAsItsFunction)
+{
+    Sim sim(protocol::Variant::Gve84);
+    ASSERT_TRUE(sim.connect()) << sim.lastLog();
+    ASSERT_FALSE(sim.core.sendRaw("!0O0,FE", sim.runner.now()));
+    sim.runner.runFor(0.5);
+    EXPECT_TRUE(sim.port.unit().spindleTurning()) << "function 00: the spindle";
+    ASSERT_FALSE(sim.core.sendRaw("!0O0,FF", sim.runner.now()));
+    ASSERT_TRUE(writeThroughDriver(
+        sim, [](machine::MachineConfig &c) { c.outputs.out[0] = OutputFunction::Coolant; }));
+    EXPECT_EQ(sim.port.unit().eepromByte(0x01), 0x02);
+    ASSERT_FALSE(sim.core.sendRaw("!0O0,FE", sim.runner.now()));
+    sim.runner.runFor(0.5);
+    EXPECT_FALSE(sim.port.unit().spindleTurning()) << "the relay now switches the coolant";
+    EXPECT_FALSE(sim.port.unit().relays() & 0x01) << "the relay itself is on";
+}
+
 // 0x03 = 08 and 0xFD (manuals 11.1, 11.2): the brake output is released by the unit the
 // delay after power-on, whatever O0 says.
 TEST(EepromBehaviour, TheBrakeOutputIsReleasedTheDelayAfterPowerOn)
