@@ -49,6 +49,8 @@ Unit::Impl::Impl(UnitOptions opts)
             eepromError = err;
     }
     cfg = decodeSettings(eeprom, options.variant, maxRate);
+    for (int i = 0; i < 4; ++i) // the machine was wired so that its axes run with the counters
+        wiring[i] = cfg.dirReversed[i] ? -1 : 1;
     resetState(true);
 }
 

@@ -90,9 +90,10 @@ struct Unit::Impl
     Stats stats;
     SafetyWatch safety;
     // EEPROM-driven behaviour (unit_eeprom.cpp, unit_mpg.cpp)
-    UnitSettings cfg;           // decoded at start and after every EEPROM write
-    bool highBaudRange = false; // 0x0D as read at power-on
-    double brakeReleaseAt = 0;  // power-on or J + 0xFD
+    UnitSettings cfg;                      // decoded at start and after every EEPROM write
+    std::array<int, 4> wiring{1, 1, 1, 1}; // DIR sign of the EEPROM at start (see axisSign)
+    bool highBaudRange = false;            // 0x0D as read at power-on
+    double brakeReleaseAt = 0;             // power-on or J + 0xFD
     struct Wheel
     {
         int axis = 0;       // axis switch: 0..3 = X, Y, Z, 4th
@@ -134,7 +135,9 @@ struct Unit::Impl
     std::uint8_t relayPort() const;
     std::array<std::int64_t, 4> counters() const; // as P4 reports them (A slaving)
     std::array<std::int64_t, 4> motorPosition() const;
-    int axisSign(int axis) const { return cfg.dirReversed[axis] ? -1 : 1; }
+    // The motor's direction against the counter: the DIR bit now against the one the machine
+    // was wired for (the EEPROM the unit started with).
+    int axisSign(int axis) const { return (cfg.dirReversed[axis] ? -1 : 1) * wiring[axis]; }
     bool mpgOn() const { return mpg != Mpg::Off; }
     std::uint16_t interruptMask(bool polarity) const;
     // ---- unit_mpg.cpp

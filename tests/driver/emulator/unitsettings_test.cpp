@@ -1,5 +1,6 @@
 // The EEPROM readings of driver/emulator/unitsettings.h (issue 20 item 3), each pinned to the
 // manual's example or table it follows (docs/emulator.md, "EEPROM-driven behaviour").
+#include "driver/emulator/unit.h"
 #include "driver/emulator/unitsettings.h"
 
 #include <gtest/gtest.h>
@@ -93,6 +94,22 @@ TEST(UnitSettings, OutputsBrakeDelayAndSlaving)
     EXPECT_EQ(s.aSlavedTo, 1);
     e.setByte(0x0C, 0x04);
     EXPECT_EQ(decodeSettings(e, Variant::Gve64, 50000).aSlavedTo, -1);
+}
+
+// The machine is wired for the EEPROM the unit starts with: a DIR bit preset (the built-in
+// emulator of a profile with an inverted axis) runs with the counter; changing it reverses.
+TEST(UnitSettings, DirIsAgainstTheWiringOfTheStartingEeprom)
+{
+    UnitOptions o{.variant = Variant::Gve64};
+    o.eepromPreset = {{0x05, EepromPreset::Kind::Byte, 0xFE}}; // X's DIR cleared
+    Unit unit(o);
+    unit.receive("!0Y-\r!0L100,0,0\r");
+    while (unit.nextEventIn() < kNever)
+        unit.advance(unit.nextEventIn());
+    EXPECT_EQ(unit.position()[0], 100);
+    EXPECT_EQ(unit.motorPosition()[0], 100);
+    unit.receive("!0EW05,FF\r");
+    EXPECT_EQ(unit.motorPosition()[0], -100);
 }
 
 } // namespace
