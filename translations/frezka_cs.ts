@@ -5904,6 +5904,14 @@ Options:
                       docs/serial-trace.md): each recorded reply when the driver
                       sends the command before it, with its timing; a command
                       that differs ends gve-emu with the trace line (exit 3)
+  --com-switch N      the COM SPEED switch, 0..3 (sw1 sw2 OFF OFF .. ON ON): the
+                      unit listens at its speed in the range of EEPROM 0x0D,
+                      read at start; a client at another speed is not heard
+                      (default: not modelled, any speed is heard)
+  --analog-jumper ana|pwm  the board&apos;s ANA/PWM jumper (default ana)
+  --wheel             turn the MPG handwheel from stdin, one line per turn:
+                      AXIS STEP DETENTS, e.g. &quot;X 10 -5&quot; (AXIS X, Y, Z, A or 4,
+                      STEP 1, 10 or 100; the unit moves by its EEPROM&apos;s MPG)
   --verbose           log every byte to stderr
   --help              this text
   --version           the version
@@ -5944,10 +5952,22 @@ Volby:
                       záznam, docs/serial-trace.md): každou zaznamenanou odpověď,
                       když ovladač pošle příkaz před ní, s jejím časováním; jiný
                       příkaz ukončí gve-emu s řádkem záznamu (kód 3)
+  --com-switch N      přepínač COM SPEED, 0..3 (sw1 sw2 OFF OFF .. ON ON): jednotka
+                      poslouchá jeho rychlostí v rozsahu podle EEPROM 0x0D,
+                      čtené při startu; klienta s jinou rychlostí neslyší
+                      (výchozí: nemodelováno, slyší každou rychlost)
+  --analog-jumper ana|pwm  propojka ANA/PWM na desce (výchozí ana)
+  --wheel             otáčet ručním kolečkem MPG ze stdin, jeden řádek na otočení:
+                      OSA KROK DÍLKY, např. &quot;X 10 -5&quot; (OSA X, Y, Z, A nebo 4,
+                      KROK 1, 10 nebo 100; jednotka jede podle MPG ve své EEPROM)
   --verbose           vypisovat každý bajt na stderr
   --help              tento text
   --version           verze
 </translation>
+    </message>
+    <message>
+        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
+        <translation>otočení kolečka &apos;%1&apos; nelze přečíst: napište OSA KROK DÍLKY, např. X 10 -5</translation>
     </message>
 </context>
 <context>
@@ -6146,6 +6166,10 @@ Volby:
     <message>
         <source>the trace was played to its end; further commands get no reply</source>
         <translation>záznam byl přehrán do konce; další příkazy nedostanou odpověď</translation>
+    </message>
+    <message>
+        <source>the wheel does nothing: the MPG is off (Y-), not enabled in the EEPROM (0x06 and its parameters) or an interrupt waits for G</source>
+        <translation>kolečko nic nedělá: MPG je vypnuté (Y-), není povolené v EEPROM (0x06 a jeho parametry) nebo přerušení čeká na G</translation>
     </message>
 </context>
 <context>

@@ -5891,6 +5891,14 @@ Options:
                       docs/serial-trace.md): each recorded reply when the driver
                       sends the command before it, with its timing; a command
                       that differs ends gve-emu with the trace line (exit 3)
+  --com-switch N      the COM SPEED switch, 0..3 (sw1 sw2 OFF OFF .. ON ON): the
+                      unit listens at its speed in the range of EEPROM 0x0D,
+                      read at start; a client at another speed is not heard
+                      (default: not modelled, any speed is heard)
+  --analog-jumper ana|pwm  the board&apos;s ANA/PWM jumper (default ana)
+  --wheel             turn the MPG handwheel from stdin, one line per turn:
+                      AXIS STEP DETENTS, e.g. &quot;X 10 -5&quot; (AXIS X, Y, Z, A or 4,
+                      STEP 1, 10 or 100; the unit moves by its EEPROM&apos;s MPG)
   --verbose           log every byte to stderr
   --help              this text
   --version           the version
@@ -5931,10 +5939,22 @@ Options:
                       docs/serial-trace.md): each recorded reply when the driver
                       sends the command before it, with its timing; a command
                       that differs ends gve-emu with the trace line (exit 3)
+  --com-switch N      the COM SPEED switch, 0..3 (sw1 sw2 OFF OFF .. ON ON): the
+                      unit listens at its speed in the range of EEPROM 0x0D,
+                      read at start; a client at another speed is not heard
+                      (default: not modelled, any speed is heard)
+  --analog-jumper ana|pwm  the board&apos;s ANA/PWM jumper (default ana)
+  --wheel             turn the MPG handwheel from stdin, one line per turn:
+                      AXIS STEP DETENTS, e.g. &quot;X 10 -5&quot; (AXIS X, Y, Z, A or 4,
+                      STEP 1, 10 or 100; the unit moves by its EEPROM&apos;s MPG)
   --verbose           log every byte to stderr
   --help              this text
   --version           the version
 </translation>
+    </message>
+    <message>
+        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
+        <translation>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</translation>
     </message>
 </context>
 <context>
@@ -6133,6 +6153,10 @@ Options:
     <message>
         <source>the trace was played to its end; further commands get no reply</source>
         <translation>the trace was played to its end; further commands get no reply</translation>
+    </message>
+    <message>
+        <source>the wheel does nothing: the MPG is off (Y-), not enabled in the EEPROM (0x06 and its parameters) or an interrupt waits for G</source>
+        <translation>the wheel does nothing: the MPG is off (Y-), not enabled in the EEPROM (0x06 and its parameters) or an interrupt waits for G</translation>
     </message>
 </context>
 <context>

@@ -96,6 +96,14 @@ QString emuHelpText()
         "                      docs/serial-trace.md): each recorded reply when the driver\n"
         "                      sends the command before it, with its timing; a command\n"
         "                      that differs ends gve-emu with the trace line (exit 3)\n"
+        "  --com-switch N      the COM SPEED switch, 0..3 (sw1 sw2 OFF OFF .. ON ON): the\n"
+        "                      unit listens at its speed in the range of EEPROM 0x0D,\n"
+        "                      read at start; a client at another speed is not heard\n"
+        "                      (default: not modelled, any speed is heard)\n"
+        "  --analog-jumper ana|pwm  the board's ANA/PWM jumper (default ana)\n"
+        "  --wheel             turn the MPG handwheel from stdin, one line per turn:\n"
+        "                      AXIS STEP DETENTS, e.g. \"X 10 -5\" (AXIS X, Y, Z, A or 4,\n"
+        "                      STEP 1, 10 or 100; the unit moves by its EEPROM's MPG)\n"
         "  --verbose           log every byte to stderr\n"
         "  --help              this text\n"
         "  --version           the version\n");
@@ -116,8 +124,8 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
             options.help = true;
             return true;
         }
-        if (a == QLatin1String("--verbose")) {
-            options.verbose = true;
+        if (a == QLatin1String("--verbose") || a == QLatin1String("--wheel")) {
+            (a == QLatin1String("--wheel") ? options.wheel : options.verbose) = true;
             continue;
         }
         if (i + 1 >= args.size()) {
@@ -190,6 +198,13 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
         } else if (a == QLatin1String("--probe-contact")) {
             ok = v == QLatin1String("0") || v == QLatin1String("1");
             unit.surface.contactHigh = v == QLatin1String("1");
+        } else if (a == QLatin1String("--com-switch")) {
+            unit.baudSwitch = v.toInt(&ok);
+            ok = ok && unit.baudSwitch >= 0 && unit.baudSwitch <= 3;
+        } else if (a == QLatin1String("--analog-jumper")) {
+            ok = v == QLatin1String("ana") || v == QLatin1String("pwm");
+            unit.analogJumper = v == QLatin1String("pwm") ? emulator::AnalogJumper::Pwm
+                                                          : emulator::AnalogJumper::Analog;
         } else if (a == QLatin1String("--link")) {
             options.linkPath = v;
         } else if (a == QLatin1String("--replay")) {
@@ -235,6 +250,25 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
         }
     }
     return true;
+}
+
+bool parseWheelLine(const QString &line, WheelTurn &turn, QString &error)
+{
+    const QStringList parts = line.simplified().split(QLatin1Char(' '));
+    static const QString kAxes = QStringLiteral("XYZA4");
+    bool ok = parts.size() == 3 && parts[0].size() == 1 && kAxes.contains(parts[0].toUpper());
+    if (ok) {
+        const int axis = int(kAxes.indexOf(parts[0].toUpper()));
+        turn.axisPosition = axis == 4 ? 3 : axis;
+        turn.multiplier = parts[1].toInt(&ok);
+        ok = ok && (turn.multiplier == 1 || turn.multiplier == 10 || turn.multiplier == 100);
+    }
+    if (ok)
+        turn.detents = parts[2].toInt(&ok);
+    if (!ok)
+        error = tr("cannot read the wheel turn '%1': write AXIS STEP DETENTS, e.g. X 10 -5")
+                    .arg(line.trimmed());
+    return ok;
 }
 
 } // namespace frezka::gveemu

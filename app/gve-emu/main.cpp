@@ -108,6 +108,33 @@ int main(int argc, char **argv)
     }
     std::printf("%s\n", server.slavePath().toLocal8Bit().constData());
     std::fflush(stdout);
+    // --wheel: the MPG handwheel from stdin, a line per turn; the end of stdin ends nothing.
+    QSocketNotifier wheelNotifier(STDIN_FILENO, QSocketNotifier::Read);
+    wheelNotifier.setEnabled(options.wheel);
+    QByteArray wheelText;
+    QObject::connect(&wheelNotifier, &QSocketNotifier::activated, &app, [&] {
+        char buf[256];
+        const ssize_t n = ::read(STDIN_FILENO, buf, sizeof buf);
+        if (n <= 0) {
+            wheelNotifier.setEnabled(false);
+            return;
+        }
+        wheelText.append(buf, n);
+        for (qsizetype nl; (nl = wheelText.indexOf('\n')) >= 0;) {
+            const QString line = QString::fromLocal8Bit(wheelText.left(nl));
+            wheelText.remove(0, nl + 1);
+            WheelTurn turn;
+            QString why;
+            if (line.trimmed().isEmpty())
+                continue;
+            if (!parseWheelLine(line, turn, why))
+                printErr(why);
+            else if (!server.turnWheel(turn))
+                printErr(QCoreApplication::translate(
+                    "gve-emu", "the wheel does nothing: the MPG is off (Y-), not enabled in the "
+                               "EEPROM (0x06 and its parameters) or an interrupt waits for G"));
+        }
+    });
     const int rc = app.exec();
     if (!options.linkPath.isEmpty())
         QFile::remove(options.linkPath);

@@ -85,6 +85,19 @@ void PtyServer::onReadable()
     pump();
 }
 
+bool PtyServer::turnWheel(const WheelTurn &turn)
+{
+    if (m_replay)
+        return false;
+    pump(); // the unit at the wall clock's time first
+    emulator::Unit &unit = m_sim.unit();
+    unit.setWheelAxis(turn.axisPosition);
+    unit.setWheelMultiplier(turn.multiplier);
+    const bool moved = unit.turnWheel(turn.detents);
+    pump();
+    return moved;
+}
+
 void PtyServer::pump()
 {
     const double wall = static_cast<double>(m_clock.nsecsElapsed()) / 1e9;

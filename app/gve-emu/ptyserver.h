@@ -32,6 +32,9 @@ public:
     // Creates the terminal (raw mode). Returns false with a message on failure.
     bool open(QString &error);
     QString slavePath() const { return m_slavePath; }
+    // Turns the simulated MPG wheel now (--wheel); false when the unit ignores it (MPG off,
+    // not enabled in its EEPROM, an interrupt pending).
+    bool turnWheel(const WheelTurn &turn);
 
 private:
     void onReadable();

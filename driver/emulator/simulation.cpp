@@ -34,14 +34,24 @@ void Simulation::deliverUntil(double t)
         if (next > t)
             break;
         m_unit.advance(std::max(0.0, next - m_unit.now()));
-        m_unit.receive(m_wire.toUnit().takeArrived(m_unit.now()));
-        if (std::string out = m_unit.takeTransmit(); !out.empty())
+        const std::string in = m_wire.toUnit().takeArrived(m_unit.now());
+        if (speedsMatch())
+            m_unit.receive(in);
+        if (std::string out = m_unit.takeTransmit(); !out.empty() && speedsMatch())
             m_wire.toPc().send(m_unit.now(), out);
     }
     m_unit.advance(std::max(0.0, t - m_unit.now()));
-    if (std::string out = m_unit.takeTransmit(); !out.empty())
+    if (std::string out = m_unit.takeTransmit(); !out.empty() && speedsMatch())
         m_wire.toPc().send(m_unit.now(), out);
     m_pcInbox += m_wire.toPc().takeArrived(t);
+}
+
+// A UART at another speed than the line's sees framing errors, not bytes: nothing gets through
+// either way (the unit's speed: COM SPEED switch and EEPROM 0x0D, Unit::lineBaud()).
+bool Simulation::speedsMatch() const
+{
+    const int unitBaud = m_unit.lineBaud();
+    return unitBaud == 0 || unitBaud == m_wire.options().baud;
 }
 
 void Simulation::advance(double seconds)

@@ -44,6 +44,7 @@ public:
 
 private:
     void deliverUntil(double t);
+    bool speedsMatch() const;
 
     Unit m_unit;
     Wire m_wire;

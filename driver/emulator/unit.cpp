@@ -48,6 +48,9 @@ Unit::Impl::Impl(UnitOptions opts)
         if (!err.empty() && !err.starts_with("cannot open"))
             eepromError = err;
     }
+    cfg = decodeSettings(eeprom, options.variant, maxRate);
+    for (int i = 0; i < 4; ++i) // the machine was wired so that its axes run with the counters
+        wiring[i] = cfg.dirReversed[i] ? -1 : 1;
     resetState(true);
 }
 
@@ -85,6 +88,9 @@ void Unit::Impl::resetState(bool powerOn)
     backlog.clear();
     if (powerOn)
         deafUntil = -1;
+    wheel.moving = false;
+    homingInputSince = -1;
+    latchPowerOn();
     updateWatches();
     checkInterrupts(); // takes the current input state as the reference, nothing is enabled
 }
@@ -279,6 +285,7 @@ double Unit::Impl::nextEventIn() const
         next = std::min(next, std::max(0.0, watchdogAt() - now));
     if (deafUntil > now)
         next = std::min(next, deafUntil - now);
+    next = std::min(next, std::max(0.0, wheelEventAt() - now));
     return next;
 }
 
@@ -298,6 +305,7 @@ void Unit::Impl::advanceBy(double seconds)
         if (options.surface.active())
             updateWatches(); // the surface under the new X/Y
         observeSafety();
+        checkWheel();
         checkInterrupts();
         checkHoming();
         if (deferred == Deferred::None && watchdogAt() <= engine.now())
@@ -318,9 +326,10 @@ void Unit::Impl::advanceBy(double seconds)
 std::uint16_t Unit::Impl::inputLevels() const
 {
     std::uint16_t levels = manualInputs;
+    const auto motor = motorPosition(); // switches sit on the machine (EEPROM 0x05, 0x0C)
     const auto pos = engine.position();
     for (const PositionSwitch &s : switches) {
-        const std::int64_t p = pos[s.axis];
+        const std::int64_t p = motor[s.axis];
         const bool on = s.side < 0 ? p <= s.positionSteps : p >= s.positionSteps;
         if (on)
             levels |= static_cast<std::uint16_t>(1u << s.input);
@@ -337,8 +346,14 @@ std::uint16_t Unit::Impl::inputLevels() const
 void Unit::Impl::updateWatches()
 {
     std::vector<MotionEngine::Watch> watches;
-    for (const PositionSwitch &s : switches)
-        watches.push_back({s.axis, s.side < 0 ? s.positionSteps + 1 : s.positionSteps});
+    for (const PositionSwitch &s : switches) {
+        // In counter coordinates: the motor runs against the counter when DIR is reversed,
+        // and a slaved A runs with its master's counter.
+        const int axis = s.axis == 3 && cfg.aSlavedTo >= 0 ? cfg.aSlavedTo : s.axis;
+        const int sign = axisSign(axis);
+        const std::int64_t at = sign * s.positionSteps;
+        watches.push_back({axis, sign * s.side < 0 ? at + 1 : at});
+    }
     if (options.surface.active()) { // aimed under the current X/Y (surface.h)
         const auto pos = engine.position();
         watches.push_back({2, options.surface.touchZSteps(pos[0], pos[1]) + 1});
@@ -349,8 +364,8 @@ void Unit::Impl::updateWatches()
 void Unit::Impl::checkInterrupts()
 {
     const std::uint16_t levels = inputLevels();
-    const std::uint16_t enabled = static_cast<std::uint16_t>(st[0] | (st[1] << 8));
-    const std::uint16_t polarity = static_cast<std::uint16_t>(st[2] | (st[3] << 8));
+    const std::uint16_t enabled = interruptMask(false);
+    const std::uint16_t polarity = interruptMask(true);
     std::uint16_t active = 0;
     for (int i = 0; i < 16; ++i) {
         if (readings::inputActive((levels >> i) & 1, (polarity >> i) & 1))
@@ -358,6 +373,7 @@ void Unit::Impl::checkInterrupts()
     }
     std::uint16_t fired = active & ~prevActive & enabled;
     prevActive = active;
+    checkInputHoming(active);
     if (homing)
         fired &= static_cast<std::uint16_t>(~(1u << homing->axis)); // its own switch
     if (!fired)
@@ -376,56 +392,14 @@ void Unit::Impl::checkInterrupts()
     engine.requestStop();
 }
 
-bool Unit::Impl::homeSwitchPressed() const
-{
-    return (inputLevels() >> homing->axis) & 1;
-}
-
-void Unit::Impl::checkHoming()
-{
-    if (!homing || deferred != Deferred::Homing)
-        return;
-    const bool pressed = homeSwitchPressed();
-    if (!homing->backingOff) {
-        if (pressed) {
-            engine.abortHead();
-            homing->backingOff = true;
-            if (homing->backSteps == 0) {
-                finishHoming(readings::kHomingNotFoundCode);
-                return;
-            }
-            MotionVector v;
-            v.isHoming = true;
-            v.steps[homing->axis] = homing->backSteps;
-            v.speedPulsesPerS = homing->backRate;
-            engine.enqueue(v);
-        } else if (engine.isIdle()) {
-            finishHoming(readings::kHomingNotFoundCode);
-        }
-        return;
-    }
-    if (!pressed) {
-        engine.abortHead();
-        finishHoming(0);
-    } else if (engine.isIdle()) {
-        finishHoming(readings::kHomingNotFoundCode);
-    }
-}
-
-void Unit::Impl::finishHoming(int code)
-{
-    homing.reset();
-    if (deferred != Deferred::Homing)
-        return;
-    deferred = Deferred::None;
-    const Reply r{code, {}};
-    sendReply(r);
-    lastReply = formatReply(r);
-}
-
 void Unit::Impl::onStopped()
 {
     stopBit = false;
+    if (wheel.moving) { // wheel moves are not continued: what is left is dropped
+        wheel.moving = false;
+        engine.clear();
+        engine.release();
+    }
     if (deferred != Deferred::Halt)
         return;
     deferred = Deferred::None;
@@ -437,7 +411,9 @@ void Unit::Impl::onStopped()
 bool Unit::Impl::spindleTurning() const
 {
     const bool out0 = !(outputs & 0x01);
-    return info->hasSpindleAddress7 ? out0 && spindle > 0 : out0;
+    if (!info->hasSpindleAddress7) // GVE84: the relay switches the spindle only as function 00
+        return out0 && cfg.outputFunction[0] == OutputFunction::Spindle;
+    return out0 && spindle > 0;
 }
 
 void Unit::Impl::noteSpindle()

@@ -13,6 +13,7 @@
 #include "driver/emulator/motion.h"
 #include "driver/emulator/safetywatch.h"
 #include "driver/emulator/surface.h"
+#include "driver/emulator/unitsettings.h"
 #include "protocol/variant.h"
 
 #include <array>
@@ -63,6 +64,11 @@ struct UnitOptions
     MachineModel machine{};
     // The work's top for probing (surface.h); Kind::None: the probe input only as set.
     ProbeSurface surface{};
+    // The board's ANA/PWM jumper (the analog output's kind, unitsettings.h).
+    AnalogJumper analogJumper = AnalogJumper::Analog;
+    // The COM SPEED switch, 0..3 (sw1 sw2 OFF OFF .. ON ON); with EEPROM 0x0D it sets the
+    // unit's line speed at power-on (lineBaud()). -1: not modelled, the unit hears any speed.
+    int baudSwitch = -1;
     bool operator==(const UnitOptions &) const = default;
 };
 
@@ -117,7 +123,32 @@ public:
     void setStopButton(bool pressed) { setInput(7, pressed); }
     void setProbe(bool touching) { setInput(15, touching); }
 
-    std::uint8_t outputs() const;     // port 0 as written by O0 (active low)
+    std::uint8_t outputs() const; // port 0 as written by O0 (active low)
+    // The relays as they are switched, port 0's bit layout (active low): O0's bits, except
+    // the outputs the unit drives by their EEPROM function (brake: released 0xFD after power-on
+    // or J; interrupt signal: on with INTA).
+    std::uint8_t relays() const;
+    // The analog output: volts (ANA jumper) or PWM duty in percent, per EEPROM 0x04.
+    double analogOutput() const;
+    // The motors' positions: the counters through the DIR polarity of EEPROM 0x05 and the A
+    // slaving of 0x0C. Position switches are placed in these coordinates.
+    std::array<std::int64_t, 4> motorPosition() const;
+    // The settings the EEPROM gives the unit now (unitsettings.h).
+    const UnitSettings &settings() const;
+    // Switch off and on: the reset state of §3, the EEPROM kept, 0x0D and 0xFD read again.
+    void powerCycle();
+    // The line speed the unit listens at (COM SPEED switch and 0x0D at power-on); 0 when the
+    // switch is not modelled.
+    int lineBaud() const;
+
+    // The simulated MPG handwheel (GVE64/114): the axis switch (0..3 = X, Y, Z, 4th), the step
+    // switch (1, 10, 100) and detents turned (signed). Moves only while the MPG is on (Y+/Y&)
+    // and enabled in the EEPROM (0x06 and its parameters); returns false when ignored.
+    void setWheelAxis(int position);
+    void setWheelMultiplier(int multiplier);
+    bool turnWheel(int detents);
+    int wheelAxis() const;
+    int wheelMultiplier() const;
     int spindlePermille() const;      // last !7V value
     bool spindleTurning() const;      // !7V > 0 with OUT0 on (GVE84: its relay, bit0, on)
     std::uint8_t status(int n) const; // ST0..ST6 as SRn would answer

@@ -67,7 +67,7 @@ Stats Unit::stats() const
 
 std::array<std::int64_t, 4> Unit::position() const
 {
-    return m_impl->engine.position();
+    return m_impl->counters();
 }
 
 double Unit::pathSpeed() const

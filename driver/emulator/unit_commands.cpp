@@ -290,7 +290,7 @@ Reply Unit::Impl::cmdExchange(std::string_view args)
 // §5: P, PF, P4.
 Reply Unit::Impl::cmdPosition(std::string_view rest)
 {
-    const auto pos = engine.position();
+    const auto pos = counters();
     int count = 0;
     if (rest.empty())
         count = 2;

@@ -84,10 +84,27 @@ struct Unit::Impl
         std::int64_t seekSteps = 0, backSteps = 0;
         int seekRate = 0, backRate = 0;
         bool backingOff = false;
+        bool fromInput = false; // started by the EEPROM 0x07 input: no reply, counter set
     };
     std::optional<Homing> homing;
     Stats stats;
     SafetyWatch safety;
+    // EEPROM-driven behaviour (unit_eeprom.cpp, unit_mpg.cpp)
+    UnitSettings cfg;                      // decoded at start and after every EEPROM write
+    std::array<int, 4> wiring{1, 1, 1, 1}; // DIR sign of the EEPROM at start (see axisSign)
+    bool highBaudRange = false;            // 0x0D as read at power-on
+    double brakeReleaseAt = 0;             // power-on or J + 0xFD
+    struct Wheel
+    {
+        int axis = 0;       // axis switch: 0..3 = X, Y, Z, 4th
+        int multiplier = 1; // step switch
+        double lastTurnAt = -1;
+        bool moving = false; // the queue holds wheel moves
+        std::array<std::int64_t, 4> target{};
+    };
+    Wheel wheel;
+    double homingInputSince = -1; // the 0x07 input active (and homing armed) since
+    bool homingInputUsed = false; // this press has started homing: release it first
 
     // ---- unit.cpp
     void resetState(bool powerOn);
@@ -104,15 +121,36 @@ struct Unit::Impl
     std::uint16_t inputLevels() const;
     void checkInterrupts();
     void updateWatches();
-    bool homeSwitchPressed() const;
-    void checkHoming();
-    void finishHoming(int code);
     void onStopped();
     std::uint8_t st6() const;
     bool runBit() const;
     bool spindleTurning() const;
     void noteSpindle();   // the spindle's state after !7V, O0 or J, for the safety counters
     void observeSafety(); // at every event: the job held while the machine stands?
+
+    // ---- unit_eeprom.cpp (unit_mpg.cpp, unit_homing.cpp)
+    static constexpr double kHomingInputHoldS = 1.0; // "déle než 1 s" (GVE64 manual 12.3)
+    void settingsChanged();                          // after an EEPROM write (and at start)
+    void latchPowerOn();                             // 0x0D and 0xFD, at power-on and J
+    std::uint8_t relayPort() const;
+    std::array<std::int64_t, 4> counters() const; // as P4 reports them (A slaving)
+    std::array<std::int64_t, 4> motorPosition() const;
+    // The motor's direction against the counter: the DIR bit now against the one the machine
+    // was wired for (the EEPROM the unit started with).
+    int axisSign(int axis) const { return (cfg.dirReversed[axis] ? -1 : 1) * wiring[axis]; }
+    bool mpgOn() const { return mpg != Mpg::Off; }
+    std::uint16_t interruptMask(bool polarity) const;
+    // ---- unit_mpg.cpp
+    bool turnWheel(int detents);
+    double wheelEventAt() const; // the MPG delay, the 1 s of the homing input
+    void checkWheel();
+    // ---- unit_homing.cpp
+    bool homeSwitchPressed() const;
+    void checkHoming();
+    void finishHoming(int code);
+    bool inputHomingArmed() const;
+    void checkInputHoming(std::uint16_t active);
+    void startInputHoming();
 
     // ---- unit_commands.cpp
     Reply execute(int address, std::string_view body);

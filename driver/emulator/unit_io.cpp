@@ -67,6 +67,7 @@ Reply Unit::Impl::cmdEeprom(std::string_view rest)
     }
     if (!options.eepromFile.empty())
         eepromError = eeprom.save(options.eepromFile);
+    settingsChanged(); // the unit acts on what it holds now (unitsettings.h)
     return {0, {}};
 }
 

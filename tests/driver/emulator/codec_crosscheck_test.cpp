@@ -54,7 +54,7 @@ std::vector<p::Command> corpus()
             zeroAll(),
             setCounter(p::Axis::Y, -1234),
             eepromReadByte(0x05),
-            eepromWriteByte(0x05, 0xAC),
+            eepromWriteByte(0x05, 0xFD), // X's DIR kept: the W below seeks X's switch
             eepromReadFloat(0x30),
             eepromWriteFloat(0x30, 400.5),
             eepromReadUint(0x48),

@@ -37,6 +37,8 @@ private slots:
     void optionsShapeTheUnit();
     void rejectsBadOptions();
     void surfaceTouchesTheProbe();
+    void wheelFromStdinMovesByTheEeprom();
+    void comSwitchSetsTheLineSpeed();
 
 private:
     QByteArray ask(const QByteArray &command);
@@ -267,6 +269,36 @@ void GveEmuPtyTest::surfaceTouchesTheProbe()
     QVERIFY(p.waitForFinished(kPatienceMs));
     QCOMPARE(p.exitCode(), 2);
     QVERIFY(p.readAllStandardError().contains("--surface"));
+}
+
+// --wheel (issue 20): the handwheel turned on stdin moves the unit only with the MPG enabled in
+// its EEPROM (0x06), by the EEPROM's steps per mm (factory 100).
+void GveEmuPtyTest::wheelFromStdinMovesByTheEeprom()
+{
+    start({QStringLiteral("--variant"), QStringLiteral("gve64"), QStringLiteral("--wheel")});
+    QCOMPARE(ask("!0SR6\r"), QByteArray("0,40\r")); // Y& after reset: the MPG on
+    m_process->write("X 10 5\n");
+    QByteArray said;
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        (said += m_process->readAllStandardError()).contains("the wheel does nothing"),
+        said.constData(), kPatienceMs);
+    QCOMPARE(ask("!0PF\r"), QByteArray("0,0,0,0\r"));
+    QCOMPARE(ask("!0EW06,01\r"), QByteArray("0\r"));
+    m_process->write("X 10 5\n"); // 5 x 0.1 mm
+    QByteArray pf;
+    QTRY_VERIFY_WITH_TIMEOUT((pf = ask("!0PF\r")) == "0,50,0,0\r", kPatienceMs);
+    m_process->write("Y 1 -3\n"); // 3 x 0.01 mm down
+    QTRY_VERIFY_WITH_TIMEOUT((pf = ask("!0PF\r")) == "0,50,-3,0\r", kPatienceMs);
+}
+
+// --com-switch (issue 20): the unit listens at the switch's speed.
+void GveEmuPtyTest::comSwitchSetsTheLineSpeed()
+{
+    start({QStringLiteral("--variant"), QStringLiteral("gve64"), QStringLiteral("--baud"),
+           QStringLiteral("38400"), QStringLiteral("--com-switch"), QStringLiteral("1")});
+    QCOMPARE(ask("!0Q\r"), QByteArray("0,25020304\r")); // OFF ON = 38 400 Bd
+    // A client at another speed is not heard: tests/driver/link/eeprom_outputs_test.cpp (the
+    // same Simulation, where silence can be asserted without waiting on a clock).
 }
 
 QTEST_GUILESS_MAIN(GveEmuPtyTest)
