@@ -8,10 +8,16 @@ namespace frezka::session {
 RawLine::RawLine(driver::Transport &transport)
     : m_transport(transport)
 {
-    QObject::connect(&m_transport, &driver::Transport::bytesReceived, &m_transport,
-                     [this](const QByteArray &bytes) { onBytes(bytes); });
-    QObject::connect(&m_transport, &driver::Transport::closed, &m_transport,
-                     [this](const QString &) { m_closed = true; });
+    m_received = QObject::connect(&m_transport, &driver::Transport::bytesReceived, &m_transport,
+                                  [this](const QByteArray &bytes) { onBytes(bytes); });
+    m_closedConnection = QObject::connect(&m_transport, &driver::Transport::closed, &m_transport,
+                                          [this](const QString &) { m_closed = true; });
+}
+
+RawLine::~RawLine()
+{
+    QObject::disconnect(m_received);
+    QObject::disconnect(m_closedConnection);
 }
 
 void RawLine::onBytes(const QByteArray &bytes)

@@ -31,6 +31,10 @@ public:
 
     // Uses `transport` (not owned); it must not be open yet.
     explicit RawLine(driver::Transport &transport);
+    // Lets go of the transport's signals (the transport may live on: the driver reuses it).
+    ~RawLine();
+    RawLine(const RawLine &) = delete;
+    RawLine &operator=(const RawLine &) = delete;
 
     // Opens the transport and waits for it; false with the reason.
     bool open(double timeoutS, QString *why);
@@ -49,6 +53,8 @@ private:
     void onBytes(const QByteArray &bytes);
 
     driver::Transport &m_transport;
+    QMetaObject::Connection m_received;
+    QMetaObject::Connection m_closedConnection;
     std::string m_partial;
     std::vector<std::string> m_lines;
     bool m_closed = false;
