@@ -90,15 +90,8 @@ CommissionDialog::CommissionDialog(const machine::MachineConfig &profile,
     layout->addWidget(m_prompt);
     layout->addLayout(answers);
     layout->addLayout(files);
-    connect(m_start, &QPushButton::clicked, this, &CommissionDialog::start);
-    connect(m_run, &QPushButton::clicked, this, [this] { answer(Answer::Run); });
-    connect(m_skip, &QPushButton::clicked, this, [this] { answer(Answer::Skip); });
-    connect(m_yes, &QPushButton::clicked, this, [this] { answer(Answer::Yes); });
-    connect(m_no, &QPushButton::clicked, this, [this] { answer(Answer::No); });
-    connect(m_ok, &QPushButton::clicked, this, [this] { answer(Answer::Number); });
-    connect(m_saveReport, &QPushButton::clicked, this, &CommissionDialog::saveReportAs);
-    connect(m_saveProfile, &QPushButton::clicked, this, &CommissionDialog::saveProfileAs);
     connect(close, &QPushButton::clicked, this, &CommissionDialog::reject);
+    connectButtons();
     if (isEmulator(profile)) {
         m_emulator = new driver::EmulatorTransport(driver::unitOptionsFor(profile), {});
         m_transport =
@@ -109,6 +102,18 @@ CommissionDialog::CommissionDialog(const machine::MachineConfig &profile,
 }
 
 CommissionDialog::~CommissionDialog() = default;
+
+void CommissionDialog::connectButtons()
+{
+    connect(m_start, &QPushButton::clicked, this, &CommissionDialog::start);
+    connect(m_run, &QPushButton::clicked, this, [this] { answer(Answer::Run); });
+    connect(m_skip, &QPushButton::clicked, this, [this] { answer(Answer::Skip); });
+    connect(m_yes, &QPushButton::clicked, this, [this] { answer(Answer::Yes); });
+    connect(m_no, &QPushButton::clicked, this, [this] { answer(Answer::No); });
+    connect(m_ok, &QPushButton::clicked, this, [this] { answer(Answer::Number); });
+    connect(m_saveReport, &QPushButton::clicked, this, &CommissionDialog::saveReportAs);
+    connect(m_saveProfile, &QPushButton::clicked, this, &CommissionDialog::saveProfileAs);
+}
 
 emulator::Unit *CommissionDialog::emulatedUnit()
 {

@@ -71,6 +71,7 @@ private:
     void instruct(const QString &text) override;
     Answer waitFor(const QString &prompt, std::initializer_list<QWidget *> enabled);
     void answer(Answer a);
+    void connectButtons();
     void showSteps();
     void saveReportAs();
     void saveProfileAs();

@@ -8,9 +8,10 @@ namespace frezka::session {
 
 namespace {
 
+// lupdate files the tr() calls of this namespace under its name: the same context here.
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("frezka::session::Commission", text);
+    return QCoreApplication::translate("frezka::session", text);
 }
 
 CommissionStep make(std::string id, QString title, QString does, bool moves, bool needsOperator)

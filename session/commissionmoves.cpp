@@ -11,9 +11,10 @@ namespace frezka::session {
 
 namespace {
 
+// lupdate files the tr() calls of this namespace under its name: the same context here.
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("frezka::session::CommissionMoves", text);
+    return QCoreApplication::translate("frezka::session", text);
 }
 
 QChar letter(int axis)

@@ -69,6 +69,7 @@ private slots:
     void eachVariantWithoutTerminal_data();
     void eachVariantWithoutTerminal();
     void aReadingThatDoesNotHold();
+    void anOlderFirmware();
     void refusesToOverwriteTheProfile();
 };
 
@@ -161,6 +162,27 @@ void CliCommissionTest::aReadingThatDoesNotHold()
     QVERIFY(text.contains(QLatin1String("!0F,")) && text.contains(QLatin1String("-> 5")));
     // The other readings still held.
     QVERIFY(text.contains(QStringLiteral("[held] §8 > repeats the last reply")));
+}
+
+// A GVE64 with firmware v9 against the shipped v19 profile: the identification says so, the
+// EEPROM float reading cannot be checked on it (no EFR/EUR), the rest still holds.
+void CliCommissionTest::anOlderFirmware()
+{
+    Emulator emu({QStringLiteral("--variant"), QStringLiteral("gve64"),
+                  QStringLiteral("--firmware"), QStringLiteral("IP64MPG v9 1.2.2009")});
+    QTemporaryDir dir;
+    const QString report = dir.filePath(QStringLiteral("report.txt"));
+    const auto run = clitest::runCli(QStringLiteral(FREZKA_CLI),
+                                     {QStringLiteral("commission"), QStringLiteral("--port"),
+                                      emu.path, QStringLiteral("--machine"),
+                                      QStringLiteral("gve64"), QStringLiteral("--report"), report});
+    QCOMPARE(run.code, 1);
+    const QString text = readAll(report);
+    QVERIFY2(text.contains(QLatin1String("[did not hold] Identify the unit")), qPrintable(text));
+    QVERIFY(text.contains(QLatin1String("the firmware is v9, the profile says v19")));
+    QVERIFY(text.contains(
+        QStringLiteral("[not checked] §12 float and 32-bit EEPROM values travel as decimal text")));
+    QVERIFY(text.contains(QLatin1String("[held] Check the protocol readings")));
 }
 
 void CliCommissionTest::refusesToOverwriteTheProfile()
