@@ -7,6 +7,8 @@
 
 #include "cliprocess.h"
 
+#include "machine/machineconfig.h"
+
 #include <QFile>
 #include <QProcess>
 #include <QSerialPort>
@@ -70,6 +72,7 @@ private slots:
     void eachVariantWithoutTerminal();
     void aReadingThatDoesNotHold();
     void anOlderFirmware();
+    void aSlowerLinkThanTheProfile();
     void refusesToOverwriteTheProfile();
 };
 
@@ -183,6 +186,32 @@ void CliCommissionTest::anOlderFirmware()
     QVERIFY(text.contains(
         QStringLiteral("[not checked] §12 float and 32-bit EEPROM values travel as decimal text")));
     QVERIFY(text.contains(QLatin1String("[held] Check the protocol readings")));
+}
+
+// An adapter slower than the profile's 8 ms each way (the emulator adds 12 ms each way): the
+// link step says so and the updated profile carries at least the added latency (only a lower
+// bound: a loaded machine can only add to it).
+void CliCommissionTest::aSlowerLinkThanTheProfile()
+{
+    Emulator emu({QStringLiteral("--variant"), QStringLiteral("gve64"), QStringLiteral("--latency"),
+                  QStringLiteral("12")});
+    QTemporaryDir dir;
+    const QString report = dir.filePath(QStringLiteral("report.txt"));
+    const QString out = dir.filePath(QStringLiteral("out.json"));
+    const auto run =
+        clitest::runCli(QStringLiteral(FREZKA_CLI),
+                        {QStringLiteral("commission"), QStringLiteral("--port"), emu.path,
+                         QStringLiteral("--machine"), QStringLiteral("gve64"),
+                         QStringLiteral("--report"), report, QStringLiteral("--profile-out"), out});
+    QCOMPARE(run.code, 1);
+    const QString text = readAll(report);
+    QVERIFY2(text.contains(QLatin1String("[did not hold] Measure the link")), qPrintable(text));
+    QVERIFY(text.contains(QLatin1String("The link is slower than the profile says")));
+    QVERIFY(text.contains(QLatin1String("[held] Check the protocol readings")));
+    const auto saved = frezka::machine::loadMachineConfig(out.toStdString());
+    QVERIFY(saved.config);
+    QVERIFY2(saved.config->link.latencyMs >= 12.0,
+             qPrintable(QString::number(saved.config->link.latencyMs)));
 }
 
 void CliCommissionTest::refusesToOverwriteTheProfile()
