@@ -176,6 +176,7 @@ void MainWindow::buildMenus()
     buildToolTableAction();
     buildFromLineActions();
     buildTraceAction();
+    buildCommissionAction();
 
     m_viewMenu = menuBar()->addMenu(QString());
     for (auto *d : {m_statusDock, m_droDock, m_runDock, m_jogDock, m_outputsDock, m_programDock,
@@ -236,6 +237,7 @@ void MainWindow::retranslate()
     m_runFromLineAction->setText(tr("Run from &line…"));
     m_wholeProgramAction->setText(tr("Run the &whole program"));
     m_saveTraceAction->setText(tr("Save serial &trace…"));
+    m_commissionAction->setText(tr("C&ommission this machine…"));
     m_viewMenu->setTitle(tr("&View"));
     m_resetLayoutAction->setText(tr("&Reset layout"));
     m_toolsMenu->setTitle(tr("&Tools"));

@@ -203,6 +203,8 @@ private:
     void buildTraceAction();     // Machine › Save serial trace… (mainwindow_trace.cpp)
     void loadToolTable();        // the profile's table into the program session
     void writeBackToolTable();   // after a run: the table as the program's G10 L1.. left it
+    // Machine › Commission this machine… (mainwindow_commission.cpp)
+    void buildCommissionAction();
     // At an M6 hold: the tool's comment, length and diameter from the table (empty: none).
     QString toolChangeText(const driver::MachineState &state) const;
     void askRunFromLine();
@@ -229,7 +231,8 @@ private:
     QAction *m_openAction, *m_reloadAction, *m_infoAction, *m_quitAction, *m_connectAction,
         *m_disconnectAction, *m_settingsAction, *m_unitConfigAction, *m_runFromLineAction,
         *m_wholeProgramAction, *m_aboutAction, *m_shortcutsAction,
-        *m_grinderAction = nullptr, *m_resetLayoutAction, *m_toolTableAction, *m_saveTraceAction;
+        *m_grinderAction = nullptr, *m_resetLayoutAction, *m_toolTableAction, *m_saveTraceAction,
+        *m_commissionAction = nullptr;
     ProgramSession *m_program;
     QFileSystemWatcher *m_watcher; // the loaded program's file
     bool m_reloadAfterJob = false; // it changed while its job ran: ask when the job ends

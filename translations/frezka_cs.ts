@@ -2,6 +2,63 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
 <context>
+    <name>CommissionCli</name>
+    <message>
+        <source>usage: frezka-cli commission --port PATH [--machine PROFILE] [--baud N] --report FILE [--profile-out FILE]
+</source>
+        <translation>použití: frezka-cli commission --port CESTA [--machine PROFIL] [--baud N] --report SOUBOR [--profile-out SOUBOR]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli commission: bad option &apos;%1&apos;
+</source>
+        <translation>frezka-cli commission: chybná volba &apos;%1&apos;
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli commission: --port and --report are needed
+</source>
+        <translation>frezka-cli commission: je třeba zadat --port a --report
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli commission: cannot open %1: %2
+</source>
+        <translation>frezka-cli commission: nelze otevřít %1: %2
+</translation>
+    </message>
+    <message>
+        <source>Run this step? (y = run, n = skip)</source>
+        <translation>Provést tento krok? (y = provést, n = přeskočit)</translation>
+    </message>
+    <message>
+        <source>no terminal on standard input: nobody to confirm it; run frezka-cli commission in a terminal</source>
+        <translation>na standardním vstupu není terminál: nikdo by krok nepotvrdil; spusťte frezka-cli commission v terminálu</translation>
+    </message>
+    <message>
+        <source>the port could not be opened</source>
+        <translation>port nelze otevřít</translation>
+    </message>
+    <message>
+        <source>Skipped (they move or need the operator):
+</source>
+        <translation>Přeskočeno (pohybují strojem nebo potřebují obsluhu):
+</translation>
+    </message>
+    <message>
+        <source>Report written to %1
+</source>
+        <translation>Protokol zapsán do %1
+</translation>
+    </message>
+    <message>
+        <source>Updated profile written to %1
+</source>
+        <translation>Upravený profil zapsán do %1
+</translation>
+    </message>
+</context>
+<context>
     <name>ControllerHeader</name>
     <message>
         <source>The header &quot;%1&quot; holds &apos;%2&apos;, which the controller cannot show (it shows letters without diacritics, digits and signs). Replace it.</source>
@@ -651,6 +708,10 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>--version vypíše verzi a složku dat (dodávané profily strojů a ukázkové programy).
 
 </translation>
+    </message>
+    <message>
+        <source>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</source>
+        <translation>Uvedení jednotky do provozu: identifikuje ji, ověří výklady protokolu, změří linku, přečte EEPROM, pak (v terminálu) po dotazu vyzkouší každou osu, spínače, vřeteno, výstupy a referování; zapíše protokol a upravený profil</translation>
     </message>
 </context>
 <context>
@@ -3230,6 +3291,85 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     </message>
 </context>
 <context>
+    <name>frezka::gui::CommissionDialog</name>
+    <message>
+        <source>Commission this machine</source>
+        <translation>Uvést tento stroj do provozu</translation>
+    </message>
+    <message>
+        <source>Start runs the steps that move nothing at once; each step that moves or switches something waits for Run or Skip.</source>
+        <translation>Start hned provede kroky, které ničím nepohybují; každý krok, který pohybuje nebo něco spíná, čeká na Provést nebo Přeskočit.</translation>
+    </message>
+    <message>
+        <source>measured mm (empty: as asked)</source>
+        <translation>naměřené mm (prázdné: jak bylo zadáno)</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Start</translation>
+    </message>
+    <message>
+        <source>&amp;Run step</source>
+        <translation>&amp;Provést krok</translation>
+    </message>
+    <message>
+        <source>S&amp;kip step</source>
+        <translation>Př&amp;eskočit krok</translation>
+    </message>
+    <message>
+        <source>&amp;Yes</source>
+        <translation>&amp;Ano</translation>
+    </message>
+    <message>
+        <source>&amp;No</source>
+        <translation>&amp;Ne</translation>
+    </message>
+    <message>
+        <source>&amp;OK</source>
+        <translation>&amp;OK</translation>
+    </message>
+    <message>
+        <source>Save &amp;report…</source>
+        <translation>Uložit p&amp;rotokol…</translation>
+    </message>
+    <message>
+        <source>Save &amp;profile…</source>
+        <translation>Uložit pro&amp;fil…</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Zavřít</translation>
+    </message>
+    <message>
+        <source>Checking the unit (nothing moves)…</source>
+        <translation>Kontrola jednotky (nic se nepohybuje)…</translation>
+    </message>
+    <message>
+        <source>the port could not be opened: %1</source>
+        <translation>port nelze otevřít: %1</translation>
+    </message>
+    <message>
+        <source>Done. Save the report (and the updated profile, under a new name).</source>
+        <translation>Hotovo. Uložte protokol (a upravený profil pod novým jménem).</translation>
+    </message>
+    <message>
+        <source>Save the commissioning report</source>
+        <translation>Uložit protokol o uvedení do provozu</translation>
+    </message>
+    <message>
+        <source>Text (*.txt)</source>
+        <translation>Text (*.txt)</translation>
+    </message>
+    <message>
+        <source>Save the updated profile under a new name</source>
+        <translation>Uložit upravený profil pod novým jménem</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Profily strojů (*.json)</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::ConsoleWidget</name>
     <message>
         <source>Save log</source>
@@ -4093,6 +4233,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>The serial trace is off. Set how much of it to keep in Settings › Application, then repeat what went wrong and save it again.</source>
         <translation>Sériový záznam je vypnutý. V Nastavení › Aplikace nastavte, kolik ho uchovávat, pak zopakujte, co se pokazilo, a uložte ho znovu.</translation>
+    </message>
+    <message>
+        <source>C&amp;ommission this machine…</source>
+        <translation>&amp;Uvést tento stroj do provozu…</translation>
     </message>
 </context>
 <context>
@@ -5881,6 +6025,8 @@ Options:
   --firmware TEXT     the reply to &apos;?&apos;, e.g. &quot;IP64MPG v17 1.2.2009&quot;: an older
                       GVE64 firmware lacks MPG and EEPROM floats (v10), VK/VL/XM
                       and N&lt;axis&gt; (v19) (default the variant&apos;s)
+  --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for
+                      testing a unit that differs from the adopted reading (4)
   --address N         unit address 0..6 (default 0)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
@@ -5929,6 +6075,8 @@ Volby:
   --firmware TEXT     odpověď na &apos;?&apos;, např. &quot;IP64MPG v17 1.2.2009&quot;: starší
                       firmware GVE64 nemá MPG a EEPROM float (v10), VK/VL/XM
                       a N&lt;osa&gt; (v19) (výchozí podle varianty)
+  --bad-checksum-code N  kód odpovědi 0..7 na příkaz se špatným kontrolním součtem,
+                      pro zkoušku jednotky, která se liší od přijatého výkladu (4)
   --address N         adresa jednotky 0..6 (výchozí 0)
   --latency MS        přidané zpoždění v každém směru, milisekundy (výchozí 0)
   --latency-to-unit MS, --latency-to-pc MS   totéž pro jeden směr
@@ -5968,6 +6116,527 @@ Volby:
     <message>
         <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
         <translation>otočení kolečka &apos;%1&apos; nelze přečíst: napište OSA KROK DÍLKY, např. X 10 -5</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session</name>
+    <message>
+        <source>held</source>
+        <translation>platí</translation>
+    </message>
+    <message>
+        <source>did not hold</source>
+        <translation>neplatí</translation>
+    </message>
+    <message>
+        <source>not checked</source>
+        <translation>neověřeno</translation>
+    </message>
+    <message>
+        <source>skipped</source>
+        <translation>přeskočeno</translation>
+    </message>
+    <message>
+        <source>Identify the unit</source>
+        <translation>Identifikovat jednotku</translation>
+    </message>
+    <message>
+        <source>Asks the unit for its firmware (?) and its number (Q) and compares them with the profile.</source>
+        <translation>Zeptá se jednotky na firmware (?) a číslo (Q) a porovná je s profilem.</translation>
+    </message>
+    <message>
+        <source>Check the protocol readings</source>
+        <translation>Ověřit výklady protokolu</translation>
+    </message>
+    <message>
+        <source>Checks the readings of the manuals that can be checked without motion: checksums, @ and &gt;, packet replies, error replies, EEPROM reads.</source>
+        <translation>Ověří výklady manuálů, které lze ověřit bez pohybu: kontrolní součty, @ a &gt;, odpovědi na pakety, chybové odpovědi, čtení EEPROM.</translation>
+    </message>
+    <message>
+        <source>Measure the link</source>
+        <translation>Změřit linku</translation>
+    </message>
+    <message>
+        <source>Times round trips per command class, the bytes per second and the adapter&apos;s latency, and proposes link.latencyMs.</source>
+        <translation>Změří dobu odezvy podle druhu příkazu, bajty za sekundu a zpoždění převodníku a navrhne link.latencyMs.</translation>
+    </message>
+    <message>
+        <source>Read the EEPROM</source>
+        <translation>Přečíst EEPROM</translation>
+    </message>
+    <message>
+        <source>Reads the unit&apos;s EEPROM settings, decodes them and compares them with the profile (nothing is written).</source>
+        <translation>Přečte nastavení v EEPROM jednotky, dekóduje je a porovná s profilem (nic se nezapisuje).</translation>
+    </message>
+    <message>
+        <source>Move axis %1</source>
+        <translation>Pohnout osou %1</translation>
+    </message>
+    <message>
+        <source>Moves axis %1 a little in + and then back in − at a low speed; you confirm the direction and enter the distance you measured, which corrects its steps per mm.</source>
+        <translation>Pohne osou %1 malou rychlostí kousek v + a pak zpět v −; potvrdíte směr a zadáte naměřenou vzdálenost, podle které se opraví její kroky na mm.</translation>
+    </message>
+    <message>
+        <source>Test the home and limit switches</source>
+        <translation>Vyzkoušet referenční a koncové spínače</translation>
+    </message>
+    <message>
+        <source>You press each switch by hand; the step watches its input.</source>
+        <translation>Každý spínač stisknete rukou; krok sleduje jeho vstup.</translation>
+    </message>
+    <message>
+        <source>Test the STOP button</source>
+        <translation>Vyzkoušet tlačítko STOP</translation>
+    </message>
+    <message>
+        <source>You press the STOP button; the step watches its input.</source>
+        <translation>Stisknete tlačítko STOP; krok sleduje jeho vstup.</translation>
+    </message>
+    <message>
+        <source>Run the spindle at two speeds</source>
+        <translation>Roztočit vřeteno na dvě rychlosti</translation>
+    </message>
+    <message>
+        <source>Switches the spindle on at a quarter and at half of its maximum speed, then off; you confirm it turned.</source>
+        <translation>Zapne vřeteno na čtvrtinu a na polovinu nejvyšších otáček a pak ho vypne; potvrdíte, že se točilo.</translation>
+    </message>
+    <message>
+        <source>Switch the outputs</source>
+        <translation>Přepnout výstupy</translation>
+    </message>
+    <message>
+        <source>Switches each output the profile uses (coolant, air ...) on and off; you confirm it switched.</source>
+        <translation>Zapne a vypne každý výstup, který profil používá (chlazení, vzduch …); potvrdíte, že sepnul.</translation>
+    </message>
+    <message>
+        <source>Home the machine</source>
+        <translation>Referovat stroj</translation>
+    </message>
+    <message>
+        <source>Homes the axes the profile homes, in its order (last, when the switches are known to work).</source>
+        <translation>Zreferuje osy, které profil referuje, v jeho pořadí (nakonec, když je ověřeno, že spínače fungují).</translation>
+    </message>
+    <message>
+        <source>+ move: %1 steps counted</source>
+        <translation>pohyb +: napočítáno %1 kroků</translation>
+    </message>
+    <message>
+        <source>(the axis did not move: at its soft limit, or the driver refused it)</source>
+        <translation>(osa se nepohnula: je na softwarovém limitu, nebo ovladač pohyb odmítl)</translation>
+    </message>
+    <message>
+        <source>Did axis %1 move in + (by about %2 mm)?</source>
+        <translation>Pohnula se osa %1 v + (asi o %2 mm)?</translation>
+    </message>
+    <message>
+        <source>How far did axis %1 move, measured in mm? (empty: as asked)</source>
+        <translation>O kolik se osa %1 posunula, naměřeno v mm? (prázdné: jak bylo zadáno)</translation>
+    </message>
+    <message>
+        <source>− move: %1 steps counted</source>
+        <translation>pohyb −: napočítáno %1 kroků</translation>
+    </message>
+    <message>
+        <source>Did axis %1 move back in −?</source>
+        <translation>Vrátila se osa %1 zpět v −?</translation>
+    </message>
+    <message>
+        <source>steps per mm %1 -&gt; %2</source>
+        <translation>kroky na mm %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>Press the home switch of %1 (IN%2) now.</source>
+        <translation>Stiskněte teď referenční spínač osy %1 (IN%2).</translation>
+    </message>
+    <message>
+        <source>home %1 (IN%2): %3</source>
+        <translation>reference %1 (IN%2): %3</translation>
+    </message>
+    <message>
+        <source>the profile homes no axis</source>
+        <translation>profil nereferuje žádnou osu</translation>
+    </message>
+    <message>
+        <source>Press the STOP button (IN7) now.</source>
+        <translation>Stiskněte teď tlačítko STOP (IN7).</translation>
+    </message>
+    <message>
+        <source>IN7 changed when the button was pressed</source>
+        <translation>IN7 se při stisku tlačítka změnil</translation>
+    </message>
+    <message>
+        <source>IN7 did not change within %1 s: check the button&apos;s wiring</source>
+        <translation>IN7 se do %1 s nezměnil: zkontrolujte zapojení tlačítka</translation>
+    </message>
+    <message>
+        <source>Does the spindle turn at about %1 rpm?</source>
+        <translation>Točí se vřeteno asi na %1 ot/min?</translation>
+    </message>
+    <message>
+        <source>%1 rpm (%2 ‰): %3</source>
+        <translation>%1 ot/min (%2 ‰): %3</translation>
+    </message>
+    <message>
+        <source>Did OUT%1 switch on?</source>
+        <translation>Sepnul výstup OUT%1?</translation>
+    </message>
+    <message>
+        <source>OUT%1: %2</source>
+        <translation>OUT%1: %2</translation>
+    </message>
+    <message>
+        <source>the profile uses no output</source>
+        <translation>profil nepoužívá žádný výstup</translation>
+    </message>
+    <message>
+        <source>every axis the profile homes was homed</source>
+        <translation>všechny osy, které profil referuje, jsou zreferované</translation>
+    </message>
+    <message>
+        <source>homing did not finish: %1</source>
+        <translation>referování neskončilo: %1</translation>
+    </message>
+    <message>
+        <source>no error reported</source>
+        <translation>žádná chyba nebyla hlášena</translation>
+    </message>
+    <message>
+        <source>the driver could not connect: %1</source>
+        <translation>ovladač se nemohl připojit: %1</translation>
+    </message>
+    <message>
+        <source>no reply</source>
+        <translation>bez odpovědi</translation>
+    </message>
+    <message>
+        <source>skipped by the operator</source>
+        <translation>přeskočeno obsluhou</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Jednotka</translation>
+    </message>
+    <message>
+        <source>port: %1
+</source>
+        <translation>port: %1
+</translation>
+    </message>
+    <message>
+        <source>identified as: %1
+</source>
+        <translation>identifikována jako: %1
+</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>neznámá</translation>
+    </message>
+    <message>
+        <source>firmware: %1
+</source>
+        <translation>firmware: %1
+</translation>
+    </message>
+    <message>
+        <source>(no answer)</source>
+        <translation>(bez odpovědi)</translation>
+    </message>
+    <message>
+        <source>unit number: %1
+</source>
+        <translation>číslo jednotky: %1
+</translation>
+    </message>
+    <message>
+        <source>profile: %1 (%2, firmware v%3)
+</source>
+        <translation>profil: %1 (%2, firmware v%3)
+</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Kroky</translation>
+    </message>
+    <message>
+        <source> (moves)</source>
+        <translation> (pohybuje)</translation>
+    </message>
+    <message>
+        <source>Protocol readings (docs/gve-protocol.md)</source>
+        <translation>Výklady protokolu (docs/gve-protocol.md)</translation>
+    </message>
+    <message>
+        <source>none checked
+</source>
+        <translation>nic neověřeno
+</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Linka</translation>
+    </message>
+    <message>
+        <source>baud: %1
+</source>
+        <translation>baud: %1
+</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 samples, %4 bytes each, round trip min %5 ms, median %6 ms, max %7 ms
+</source>
+        <translation>%1 %2: %3 vzorků, %4 bajtů každý, odezva min %5 ms, medián %6 ms, max %7 ms
+</translation>
+    </message>
+    <message>
+        <source>bytes/s in packets (both ways): %1
+</source>
+        <translation>bajty/s v paketech (oba směry): %1
+</translation>
+    </message>
+    <message>
+        <source>estimated adapter latency, one way: %1 ms
+</source>
+        <translation>odhadnuté zpoždění převodníku, jeden směr: %1 ms
+</translation>
+    </message>
+    <message>
+        <source>link.latencyMs: profile %1, proposed %2
+</source>
+        <translation>link.latencyMs: profil %1, návrh %2
+</translation>
+    </message>
+    <message>
+        <source>EEPROM (decoded, against the profile)</source>
+        <translation>EEPROM (dekódovaná, proti profilu)</translation>
+    </message>
+    <message>
+        <source>not read
+</source>
+        <translation>nepřečteno
+</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nepřečteno</translation>
+    </message>
+    <message>
+        <source>0x%1 %2: unit %3, profile %4 - %5
+</source>
+        <translation>0x%1 %2: jednotka %3, profil %4 - %5
+</translation>
+    </message>
+    <message>
+        <source>same</source>
+        <translation>shodné</translation>
+    </message>
+    <message>
+        <source>differs</source>
+        <translation>liší se</translation>
+    </message>
+    <message>
+        <source>Axes</source>
+        <translation>Osy</translation>
+    </message>
+    <message>
+        <source>no axis was moved
+</source>
+        <translation>žádnou osou se nepohnulo
+</translation>
+    </message>
+    <message>
+        <source>%1: + %2, − %3, moved %4 mm each way, steps/mm %5</source>
+        <translation>%1: + %2, − %3, posun %4 mm každým směrem, kroky/mm %5</translation>
+    </message>
+    <message>
+        <source>, measured %1 mm</source>
+        <translation>, naměřeno %1 mm</translation>
+    </message>
+    <message>
+        <source>, proposed steps/mm %1</source>
+        <translation>, navržené kroky/mm %1</translation>
+    </message>
+    <message>
+        <source>Frezka commissioning report
+===========================
+</source>
+        <translation>Protokol o uvedení do provozu (Frezka)
+======================================
+</translation>
+    </message>
+    <message>
+        <source>Serial trace (docs/serial-trace.md)</source>
+        <translation>Záznam sériové linky (docs/serial-trace.md)</translation>
+    </message>
+    <message>
+        <source>not recorded
+</source>
+        <translation>nezaznamenáno
+</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>nelze zapsat %1: %2</translation>
+    </message>
+    <message>
+        <source>the updated profile would replace %1; name a new file (--profile-out)</source>
+        <translation>upravený profil by přepsal %1; zadejte nový soubor (--profile-out)</translation>
+    </message>
+    <message>
+        <source>%+ switches checksums on and its reply already carries one (0,5C)</source>
+        <translation>%+ zapne kontrolní součty a už jeho odpověď jeden nese (0,5C)</translation>
+    </message>
+    <message>
+        <source>a command with a wrong checksum is answered 4 and does not advance the index (@)</source>
+        <translation>na příkaz se špatným kontrolním součtem jednotka odpoví 4 a nezvýší index (@)</translation>
+    </message>
+    <message>
+        <source>every valid command advances the index by one, @ itself does not</source>
+        <translation>každý platný příkaz zvýší index o jedna, @ sám ne</translation>
+    </message>
+    <message>
+        <source>&gt; repeats the last reply without executing the command again</source>
+        <translation>&gt; zopakuje poslední odpověď, aniž by příkaz znovu provedl</translation>
+    </message>
+    <message>
+        <source>an unknown command is answered 3</source>
+        <translation>na neznámý příkaz jednotka odpoví 3</translation>
+    </message>
+    <message>
+        <source>a malformed parameter is answered 4</source>
+        <translation>na chybně zapsaný parametr jednotka odpoví 4</translation>
+    </message>
+    <message>
+        <source>a parameter out of range is answered 5 (T99)</source>
+        <translation>na parametr mimo rozsah jednotka odpoví 5 (T99)</translation>
+    </message>
+    <message>
+        <source>a LF after the CR is ignored</source>
+        <translation>LF za CR se ignoruje</translation>
+    </message>
+    <message>
+        <source>a packet is answered once, at its end, with the number of commands (0,2)</source>
+        <translation>na paket jednotka odpoví jednou, na jeho konci, počtem příkazů (0,2)</translation>
+    </message>
+    <message>
+        <source>a packet whose command fails stops there and answers that code and the number accepted before it (5,1)</source>
+        <translation>paket, jehož příkaz selže, se tam zastaví a odpoví kódem chyby a počtem příkazů přijatých před ním (5,1)</translation>
+    </message>
+    <message>
+        <source>a 4-axis unit takes L with three components (A = 0); fewer than three is answered 4</source>
+        <translation>čtyřosá jednotka přijme L se třemi složkami (A = 0); na méně než tři odpoví 4</translation>
+    </message>
+    <message>
+        <source>a 3-axis unit answers 4 to a vector of four components or of two</source>
+        <translation>tříosá jednotka odpoví 4 na vektor se čtyřmi nebo dvěma složkami</translation>
+    </message>
+    <message>
+        <source>ERaa reads an EEPROM byte as two hex digits</source>
+        <translation>ERaa čte bajt EEPROM jako dvě šestnáctkové číslice</translation>
+    </message>
+    <message>
+        <source>float and 32-bit EEPROM values travel as decimal text</source>
+        <translation>hodnoty EEPROM typu float a 32bitové se přenášejí jako desítkový text</translation>
+    </message>
+    <message>
+        <source>the unit&apos;s firmware has no EFR/EUR</source>
+        <translation>firmware jednotky nemá EFR/EUR</translation>
+    </message>
+    <message>
+        <source>needs motion or a reset; not checked here</source>
+        <translation>vyžaduje pohyb nebo reset; zde neověřeno</translation>
+    </message>
+    <message>
+        <source>the speed mode after a reset is VN</source>
+        <translation>po resetu je režim rychlosti VN</translation>
+    </message>
+    <message>
+        <source>VL limits are in pulses/s</source>
+        <translation>limity VL jsou v pulzech/s</translation>
+    </message>
+    <message>
+        <source>a home switch not found within the travel is answered 5</source>
+        <translation>na referenční spínač nenalezený v rámci dráhy jednotka odpoví 5</translation>
+    </message>
+    <message>
+        <source>the homing step shows it</source>
+        <translation>ukáže to krok referování</translation>
+    </message>
+    <message>
+        <source>%1 readings held, %2 did not hold, %3 not checked.</source>
+        <translation>%1 výkladů platí, %2 neplatí, %3 neověřeno.</translation>
+    </message>
+    <message>
+        <source>Send the report (README: when a unit does something unexpected).</source>
+        <translation>Pošlete protokol (README: když jednotka dělá něco neočekávaného).</translation>
+    </message>
+    <message>
+        <source>The unit did not answer &apos;?&apos; (%1). Check the cable, the port and the baud rate set on the unit.</source>
+        <translation>Jednotka neodpověděla na &apos;?&apos; (%1). Zkontrolujte kabel, port a rychlost nastavenou na jednotce.</translation>
+    </message>
+    <message>
+        <source>the firmware &apos;%1&apos; names no known unit</source>
+        <translation>firmware &apos;%1&apos; neoznačuje žádnou známou jednotku</translation>
+    </message>
+    <message>
+        <source>the unit is a %1, the profile is for a %2</source>
+        <translation>jednotka je %1, profil je pro %2</translation>
+    </message>
+    <message>
+        <source>the firmware is v%1, the profile says v%2 (unit.firmwareVersion)</source>
+        <translation>firmware je v%1, profil uvádí v%2 (unit.firmwareVersion)</translation>
+    </message>
+    <message>
+        <source>Firmware &apos;%1&apos;, unit number &apos;%2&apos;.</source>
+        <translation>Firmware &apos;%1&apos;, číslo jednotky &apos;%2&apos;.</translation>
+    </message>
+    <message>
+        <source>. Correct the profile (unit.variant, unit.firmwareVersion) to the unit.</source>
+        <translation>. Opravte profil (unit.variant, unit.firmwareVersion) podle jednotky.</translation>
+    </message>
+    <message>
+        <source>status (F)</source>
+        <translation>stav (F)</translation>
+    </message>
+    <message>
+        <source>position (PF/P4)</source>
+        <translation>poloha (PF/P4)</translation>
+    </message>
+    <message>
+        <source>EEPROM byte (ER)</source>
+        <translation>bajt EEPROM (ER)</translation>
+    </message>
+    <message>
+        <source>packet of 10 B</source>
+        <translation>paket 10× B</translation>
+    </message>
+    <message>
+        <source>The unit did not answer the timed commands.</source>
+        <translation>Jednotka neodpověděla na měřené příkazy.</translation>
+    </message>
+    <message>
+        <source>Adapter latency about %1 ms each way; %2 bytes/s in packets; proposed link.latencyMs = %3 (the profile had %4).</source>
+        <translation>Zpoždění převodníku asi %1 ms každým směrem; %2 bajtů/s v paketech; navržené link.latencyMs = %3 (profil měl %4).</translation>
+    </message>
+    <message>
+        <source>The link is slower than the profile says: the planner would pace jobs for a faster line. Save the proposed profile.</source>
+        <translation>Linka je pomalejší, než uvádí profil: plánovač by úlohy dávkoval pro rychlejší linku. Uložte navržený profil.</translation>
+    </message>
+    <message>
+        <source>not on this firmware</source>
+        <translation>u tohoto firmwaru není</translation>
+    </message>
+    <message>
+        <source>%1 settings read, %2 differ from the profile, %3 could not be read.</source>
+        <translation>%1 nastavení přečteno, %2 se liší od profilu, %3 nelze přečíst.</translation>
+    </message>
+    <message>
+        <source>Write the profile&apos;s values with Machine › Unit configuration (EEPROM), or correct the profile.</source>
+        <translation>Zapište hodnoty profilu přes Stroj › Konfigurace jednotky (EEPROM), nebo opravte profil.</translation>
+    </message>
+    <message>
+        <source>The unit was not identified.</source>
+        <translation>Jednotka nebyla identifikována.</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,63 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>CommissionCli</name>
+    <message>
+        <source>usage: frezka-cli commission --port PATH [--machine PROFILE] [--baud N] --report FILE [--profile-out FILE]
+</source>
+        <translation>usage: frezka-cli commission --port PATH [--machine PROFILE] [--baud N] --report FILE [--profile-out FILE]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli commission: bad option &apos;%1&apos;
+</source>
+        <translation>frezka-cli commission: bad option &apos;%1&apos;
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli commission: --port and --report are needed
+</source>
+        <translation>frezka-cli commission: --port and --report are needed
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli commission: cannot open %1: %2
+</source>
+        <translation>frezka-cli commission: cannot open %1: %2
+</translation>
+    </message>
+    <message>
+        <source>Run this step? (y = run, n = skip)</source>
+        <translation>Run this step? (y = run, n = skip)</translation>
+    </message>
+    <message>
+        <source>no terminal on standard input: nobody to confirm it; run frezka-cli commission in a terminal</source>
+        <translation>no terminal on standard input: nobody to confirm it; run frezka-cli commission in a terminal</translation>
+    </message>
+    <message>
+        <source>the port could not be opened</source>
+        <translation>the port could not be opened</translation>
+    </message>
+    <message>
+        <source>Skipped (they move or need the operator):
+</source>
+        <translation>Skipped (they move or need the operator):
+</translation>
+    </message>
+    <message>
+        <source>Report written to %1
+</source>
+        <translation>Report written to %1
+</translation>
+    </message>
+    <message>
+        <source>Updated profile written to %1
+</source>
+        <translation>Updated profile written to %1
+</translation>
+    </message>
+</context>
+<context>
     <name>ControllerHeader</name>
     <message>
         <source>The header &quot;%1&quot; holds &apos;%2&apos;, which the controller cannot show (it shows letters without diacritics, digits and signs). Replace it.</source>
@@ -651,6 +708,10 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>--version prints the version and the data folder (shipped machine profiles and sample programs).
 
 </translation>
+    </message>
+    <message>
+        <source>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</source>
+        <translation>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</translation>
     </message>
 </context>
 <context>
@@ -3227,6 +3288,85 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     </message>
 </context>
 <context>
+    <name>frezka::gui::CommissionDialog</name>
+    <message>
+        <source>Commission this machine</source>
+        <translation>Commission this machine</translation>
+    </message>
+    <message>
+        <source>Start runs the steps that move nothing at once; each step that moves or switches something waits for Run or Skip.</source>
+        <translation>Start runs the steps that move nothing at once; each step that moves or switches something waits for Run or Skip.</translation>
+    </message>
+    <message>
+        <source>measured mm (empty: as asked)</source>
+        <translation>measured mm (empty: as asked)</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Start</translation>
+    </message>
+    <message>
+        <source>&amp;Run step</source>
+        <translation>&amp;Run step</translation>
+    </message>
+    <message>
+        <source>S&amp;kip step</source>
+        <translation>S&amp;kip step</translation>
+    </message>
+    <message>
+        <source>&amp;Yes</source>
+        <translation>&amp;Yes</translation>
+    </message>
+    <message>
+        <source>&amp;No</source>
+        <translation>&amp;No</translation>
+    </message>
+    <message>
+        <source>&amp;OK</source>
+        <translation>&amp;OK</translation>
+    </message>
+    <message>
+        <source>Save &amp;report…</source>
+        <translation>Save &amp;report…</translation>
+    </message>
+    <message>
+        <source>Save &amp;profile…</source>
+        <translation>Save &amp;profile…</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Close</translation>
+    </message>
+    <message>
+        <source>Checking the unit (nothing moves)…</source>
+        <translation>Checking the unit (nothing moves)…</translation>
+    </message>
+    <message>
+        <source>the port could not be opened: %1</source>
+        <translation>the port could not be opened: %1</translation>
+    </message>
+    <message>
+        <source>Done. Save the report (and the updated profile, under a new name).</source>
+        <translation>Done. Save the report (and the updated profile, under a new name).</translation>
+    </message>
+    <message>
+        <source>Save the commissioning report</source>
+        <translation>Save the commissioning report</translation>
+    </message>
+    <message>
+        <source>Text (*.txt)</source>
+        <translation>Text (*.txt)</translation>
+    </message>
+    <message>
+        <source>Save the updated profile under a new name</source>
+        <translation>Save the updated profile under a new name</translation>
+    </message>
+    <message>
+        <source>Machine profiles (*.json)</source>
+        <translation>Machine profiles (*.json)</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::ConsoleWidget</name>
     <message>
         <source>Save log</source>
@@ -4086,6 +4226,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>The serial trace is off. Set how much of it to keep in Settings › Application, then repeat what went wrong and save it again.</source>
         <translation>The serial trace is off. Set how much of it to keep in Settings › Application, then repeat what went wrong and save it again.</translation>
+    </message>
+    <message>
+        <source>C&amp;ommission this machine…</source>
+        <translation>C&amp;ommission this machine…</translation>
     </message>
 </context>
 <context>
@@ -5868,6 +6012,8 @@ Options:
   --firmware TEXT     the reply to &apos;?&apos;, e.g. &quot;IP64MPG v17 1.2.2009&quot;: an older
                       GVE64 firmware lacks MPG and EEPROM floats (v10), VK/VL/XM
                       and N&lt;axis&gt; (v19) (default the variant&apos;s)
+  --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for
+                      testing a unit that differs from the adopted reading (4)
   --address N         unit address 0..6 (default 0)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
@@ -5916,6 +6062,8 @@ Options:
   --firmware TEXT     the reply to &apos;?&apos;, e.g. &quot;IP64MPG v17 1.2.2009&quot;: an older
                       GVE64 firmware lacks MPG and EEPROM floats (v10), VK/VL/XM
                       and N&lt;axis&gt; (v19) (default the variant&apos;s)
+  --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for
+                      testing a unit that differs from the adopted reading (4)
   --address N         unit address 0..6 (default 0)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
@@ -5955,6 +6103,527 @@ Options:
     <message>
         <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
         <translation>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session</name>
+    <message>
+        <source>held</source>
+        <translation>held</translation>
+    </message>
+    <message>
+        <source>did not hold</source>
+        <translation>did not hold</translation>
+    </message>
+    <message>
+        <source>not checked</source>
+        <translation>not checked</translation>
+    </message>
+    <message>
+        <source>skipped</source>
+        <translation>skipped</translation>
+    </message>
+    <message>
+        <source>Identify the unit</source>
+        <translation>Identify the unit</translation>
+    </message>
+    <message>
+        <source>Asks the unit for its firmware (?) and its number (Q) and compares them with the profile.</source>
+        <translation>Asks the unit for its firmware (?) and its number (Q) and compares them with the profile.</translation>
+    </message>
+    <message>
+        <source>Check the protocol readings</source>
+        <translation>Check the protocol readings</translation>
+    </message>
+    <message>
+        <source>Checks the readings of the manuals that can be checked without motion: checksums, @ and &gt;, packet replies, error replies, EEPROM reads.</source>
+        <translation>Checks the readings of the manuals that can be checked without motion: checksums, @ and &gt;, packet replies, error replies, EEPROM reads.</translation>
+    </message>
+    <message>
+        <source>Measure the link</source>
+        <translation>Measure the link</translation>
+    </message>
+    <message>
+        <source>Times round trips per command class, the bytes per second and the adapter&apos;s latency, and proposes link.latencyMs.</source>
+        <translation>Times round trips per command class, the bytes per second and the adapter&apos;s latency, and proposes link.latencyMs.</translation>
+    </message>
+    <message>
+        <source>Read the EEPROM</source>
+        <translation>Read the EEPROM</translation>
+    </message>
+    <message>
+        <source>Reads the unit&apos;s EEPROM settings, decodes them and compares them with the profile (nothing is written).</source>
+        <translation>Reads the unit&apos;s EEPROM settings, decodes them and compares them with the profile (nothing is written).</translation>
+    </message>
+    <message>
+        <source>Move axis %1</source>
+        <translation>Move axis %1</translation>
+    </message>
+    <message>
+        <source>Moves axis %1 a little in + and then back in − at a low speed; you confirm the direction and enter the distance you measured, which corrects its steps per mm.</source>
+        <translation>Moves axis %1 a little in + and then back in − at a low speed; you confirm the direction and enter the distance you measured, which corrects its steps per mm.</translation>
+    </message>
+    <message>
+        <source>Test the home and limit switches</source>
+        <translation>Test the home and limit switches</translation>
+    </message>
+    <message>
+        <source>You press each switch by hand; the step watches its input.</source>
+        <translation>You press each switch by hand; the step watches its input.</translation>
+    </message>
+    <message>
+        <source>Test the STOP button</source>
+        <translation>Test the STOP button</translation>
+    </message>
+    <message>
+        <source>You press the STOP button; the step watches its input.</source>
+        <translation>You press the STOP button; the step watches its input.</translation>
+    </message>
+    <message>
+        <source>Run the spindle at two speeds</source>
+        <translation>Run the spindle at two speeds</translation>
+    </message>
+    <message>
+        <source>Switches the spindle on at a quarter and at half of its maximum speed, then off; you confirm it turned.</source>
+        <translation>Switches the spindle on at a quarter and at half of its maximum speed, then off; you confirm it turned.</translation>
+    </message>
+    <message>
+        <source>Switch the outputs</source>
+        <translation>Switch the outputs</translation>
+    </message>
+    <message>
+        <source>Switches each output the profile uses (coolant, air ...) on and off; you confirm it switched.</source>
+        <translation>Switches each output the profile uses (coolant, air ...) on and off; you confirm it switched.</translation>
+    </message>
+    <message>
+        <source>Home the machine</source>
+        <translation>Home the machine</translation>
+    </message>
+    <message>
+        <source>Homes the axes the profile homes, in its order (last, when the switches are known to work).</source>
+        <translation>Homes the axes the profile homes, in its order (last, when the switches are known to work).</translation>
+    </message>
+    <message>
+        <source>+ move: %1 steps counted</source>
+        <translation>+ move: %1 steps counted</translation>
+    </message>
+    <message>
+        <source>(the axis did not move: at its soft limit, or the driver refused it)</source>
+        <translation>(the axis did not move: at its soft limit, or the driver refused it)</translation>
+    </message>
+    <message>
+        <source>Did axis %1 move in + (by about %2 mm)?</source>
+        <translation>Did axis %1 move in + (by about %2 mm)?</translation>
+    </message>
+    <message>
+        <source>How far did axis %1 move, measured in mm? (empty: as asked)</source>
+        <translation>How far did axis %1 move, measured in mm? (empty: as asked)</translation>
+    </message>
+    <message>
+        <source>− move: %1 steps counted</source>
+        <translation>− move: %1 steps counted</translation>
+    </message>
+    <message>
+        <source>Did axis %1 move back in −?</source>
+        <translation>Did axis %1 move back in −?</translation>
+    </message>
+    <message>
+        <source>steps per mm %1 -&gt; %2</source>
+        <translation>steps per mm %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <source>Press the home switch of %1 (IN%2) now.</source>
+        <translation>Press the home switch of %1 (IN%2) now.</translation>
+    </message>
+    <message>
+        <source>home %1 (IN%2): %3</source>
+        <translation>home %1 (IN%2): %3</translation>
+    </message>
+    <message>
+        <source>the profile homes no axis</source>
+        <translation>the profile homes no axis</translation>
+    </message>
+    <message>
+        <source>Press the STOP button (IN7) now.</source>
+        <translation>Press the STOP button (IN7) now.</translation>
+    </message>
+    <message>
+        <source>IN7 changed when the button was pressed</source>
+        <translation>IN7 changed when the button was pressed</translation>
+    </message>
+    <message>
+        <source>IN7 did not change within %1 s: check the button&apos;s wiring</source>
+        <translation>IN7 did not change within %1 s: check the button&apos;s wiring</translation>
+    </message>
+    <message>
+        <source>Does the spindle turn at about %1 rpm?</source>
+        <translation>Does the spindle turn at about %1 rpm?</translation>
+    </message>
+    <message>
+        <source>%1 rpm (%2 ‰): %3</source>
+        <translation>%1 rpm (%2 ‰): %3</translation>
+    </message>
+    <message>
+        <source>Did OUT%1 switch on?</source>
+        <translation>Did OUT%1 switch on?</translation>
+    </message>
+    <message>
+        <source>OUT%1: %2</source>
+        <translation>OUT%1: %2</translation>
+    </message>
+    <message>
+        <source>the profile uses no output</source>
+        <translation>the profile uses no output</translation>
+    </message>
+    <message>
+        <source>every axis the profile homes was homed</source>
+        <translation>every axis the profile homes was homed</translation>
+    </message>
+    <message>
+        <source>homing did not finish: %1</source>
+        <translation>homing did not finish: %1</translation>
+    </message>
+    <message>
+        <source>no error reported</source>
+        <translation>no error reported</translation>
+    </message>
+    <message>
+        <source>the driver could not connect: %1</source>
+        <translation>the driver could not connect: %1</translation>
+    </message>
+    <message>
+        <source>no reply</source>
+        <translation>no reply</translation>
+    </message>
+    <message>
+        <source>skipped by the operator</source>
+        <translation>skipped by the operator</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>port: %1
+</source>
+        <translation>port: %1
+</translation>
+    </message>
+    <message>
+        <source>identified as: %1
+</source>
+        <translation>identified as: %1
+</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unknown</translation>
+    </message>
+    <message>
+        <source>firmware: %1
+</source>
+        <translation>firmware: %1
+</translation>
+    </message>
+    <message>
+        <source>(no answer)</source>
+        <translation>(no answer)</translation>
+    </message>
+    <message>
+        <source>unit number: %1
+</source>
+        <translation>unit number: %1
+</translation>
+    </message>
+    <message>
+        <source>profile: %1 (%2, firmware v%3)
+</source>
+        <translation>profile: %1 (%2, firmware v%3)
+</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Steps</translation>
+    </message>
+    <message>
+        <source> (moves)</source>
+        <translation> (moves)</translation>
+    </message>
+    <message>
+        <source>Protocol readings (docs/gve-protocol.md)</source>
+        <translation>Protocol readings (docs/gve-protocol.md)</translation>
+    </message>
+    <message>
+        <source>none checked
+</source>
+        <translation>none checked
+</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Link</translation>
+    </message>
+    <message>
+        <source>baud: %1
+</source>
+        <translation>baud: %1
+</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 samples, %4 bytes each, round trip min %5 ms, median %6 ms, max %7 ms
+</source>
+        <translation>%1 %2: %3 samples, %4 bytes each, round trip min %5 ms, median %6 ms, max %7 ms
+</translation>
+    </message>
+    <message>
+        <source>bytes/s in packets (both ways): %1
+</source>
+        <translation>bytes/s in packets (both ways): %1
+</translation>
+    </message>
+    <message>
+        <source>estimated adapter latency, one way: %1 ms
+</source>
+        <translation>estimated adapter latency, one way: %1 ms
+</translation>
+    </message>
+    <message>
+        <source>link.latencyMs: profile %1, proposed %2
+</source>
+        <translation>link.latencyMs: profile %1, proposed %2
+</translation>
+    </message>
+    <message>
+        <source>EEPROM (decoded, against the profile)</source>
+        <translation>EEPROM (decoded, against the profile)</translation>
+    </message>
+    <message>
+        <source>not read
+</source>
+        <translation>not read
+</translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>not read</translation>
+    </message>
+    <message>
+        <source>0x%1 %2: unit %3, profile %4 - %5
+</source>
+        <translation>0x%1 %2: unit %3, profile %4 - %5
+</translation>
+    </message>
+    <message>
+        <source>same</source>
+        <translation>same</translation>
+    </message>
+    <message>
+        <source>differs</source>
+        <translation>differs</translation>
+    </message>
+    <message>
+        <source>Axes</source>
+        <translation>Axes</translation>
+    </message>
+    <message>
+        <source>no axis was moved
+</source>
+        <translation>no axis was moved
+</translation>
+    </message>
+    <message>
+        <source>%1: + %2, − %3, moved %4 mm each way, steps/mm %5</source>
+        <translation>%1: + %2, − %3, moved %4 mm each way, steps/mm %5</translation>
+    </message>
+    <message>
+        <source>, measured %1 mm</source>
+        <translation>, measured %1 mm</translation>
+    </message>
+    <message>
+        <source>, proposed steps/mm %1</source>
+        <translation>, proposed steps/mm %1</translation>
+    </message>
+    <message>
+        <source>Frezka commissioning report
+===========================
+</source>
+        <translation>Frezka commissioning report
+===========================
+</translation>
+    </message>
+    <message>
+        <source>Serial trace (docs/serial-trace.md)</source>
+        <translation>Serial trace (docs/serial-trace.md)</translation>
+    </message>
+    <message>
+        <source>not recorded
+</source>
+        <translation>not recorded
+</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>the updated profile would replace %1; name a new file (--profile-out)</source>
+        <translation>the updated profile would replace %1; name a new file (--profile-out)</translation>
+    </message>
+    <message>
+        <source>%+ switches checksums on and its reply already carries one (0,5C)</source>
+        <translation>%+ switches checksums on and its reply already carries one (0,5C)</translation>
+    </message>
+    <message>
+        <source>a command with a wrong checksum is answered 4 and does not advance the index (@)</source>
+        <translation>a command with a wrong checksum is answered 4 and does not advance the index (@)</translation>
+    </message>
+    <message>
+        <source>every valid command advances the index by one, @ itself does not</source>
+        <translation>every valid command advances the index by one, @ itself does not</translation>
+    </message>
+    <message>
+        <source>&gt; repeats the last reply without executing the command again</source>
+        <translation>&gt; repeats the last reply without executing the command again</translation>
+    </message>
+    <message>
+        <source>an unknown command is answered 3</source>
+        <translation>an unknown command is answered 3</translation>
+    </message>
+    <message>
+        <source>a malformed parameter is answered 4</source>
+        <translation>a malformed parameter is answered 4</translation>
+    </message>
+    <message>
+        <source>a parameter out of range is answered 5 (T99)</source>
+        <translation>a parameter out of range is answered 5 (T99)</translation>
+    </message>
+    <message>
+        <source>a LF after the CR is ignored</source>
+        <translation>a LF after the CR is ignored</translation>
+    </message>
+    <message>
+        <source>a packet is answered once, at its end, with the number of commands (0,2)</source>
+        <translation>a packet is answered once, at its end, with the number of commands (0,2)</translation>
+    </message>
+    <message>
+        <source>a packet whose command fails stops there and answers that code and the number accepted before it (5,1)</source>
+        <translation>a packet whose command fails stops there and answers that code and the number accepted before it (5,1)</translation>
+    </message>
+    <message>
+        <source>a 4-axis unit takes L with three components (A = 0); fewer than three is answered 4</source>
+        <translation>a 4-axis unit takes L with three components (A = 0); fewer than three is answered 4</translation>
+    </message>
+    <message>
+        <source>a 3-axis unit answers 4 to a vector of four components or of two</source>
+        <translation>a 3-axis unit answers 4 to a vector of four components or of two</translation>
+    </message>
+    <message>
+        <source>ERaa reads an EEPROM byte as two hex digits</source>
+        <translation>ERaa reads an EEPROM byte as two hex digits</translation>
+    </message>
+    <message>
+        <source>float and 32-bit EEPROM values travel as decimal text</source>
+        <translation>float and 32-bit EEPROM values travel as decimal text</translation>
+    </message>
+    <message>
+        <source>the unit&apos;s firmware has no EFR/EUR</source>
+        <translation>the unit&apos;s firmware has no EFR/EUR</translation>
+    </message>
+    <message>
+        <source>needs motion or a reset; not checked here</source>
+        <translation>needs motion or a reset; not checked here</translation>
+    </message>
+    <message>
+        <source>the speed mode after a reset is VN</source>
+        <translation>the speed mode after a reset is VN</translation>
+    </message>
+    <message>
+        <source>VL limits are in pulses/s</source>
+        <translation>VL limits are in pulses/s</translation>
+    </message>
+    <message>
+        <source>a home switch not found within the travel is answered 5</source>
+        <translation>a home switch not found within the travel is answered 5</translation>
+    </message>
+    <message>
+        <source>the homing step shows it</source>
+        <translation>the homing step shows it</translation>
+    </message>
+    <message>
+        <source>%1 readings held, %2 did not hold, %3 not checked.</source>
+        <translation>%1 readings held, %2 did not hold, %3 not checked.</translation>
+    </message>
+    <message>
+        <source>Send the report (README: when a unit does something unexpected).</source>
+        <translation>Send the report (README: when a unit does something unexpected).</translation>
+    </message>
+    <message>
+        <source>The unit did not answer &apos;?&apos; (%1). Check the cable, the port and the baud rate set on the unit.</source>
+        <translation>The unit did not answer &apos;?&apos; (%1). Check the cable, the port and the baud rate set on the unit.</translation>
+    </message>
+    <message>
+        <source>the firmware &apos;%1&apos; names no known unit</source>
+        <translation>the firmware &apos;%1&apos; names no known unit</translation>
+    </message>
+    <message>
+        <source>the unit is a %1, the profile is for a %2</source>
+        <translation>the unit is a %1, the profile is for a %2</translation>
+    </message>
+    <message>
+        <source>the firmware is v%1, the profile says v%2 (unit.firmwareVersion)</source>
+        <translation>the firmware is v%1, the profile says v%2 (unit.firmwareVersion)</translation>
+    </message>
+    <message>
+        <source>Firmware &apos;%1&apos;, unit number &apos;%2&apos;.</source>
+        <translation>Firmware &apos;%1&apos;, unit number &apos;%2&apos;.</translation>
+    </message>
+    <message>
+        <source>. Correct the profile (unit.variant, unit.firmwareVersion) to the unit.</source>
+        <translation>. Correct the profile (unit.variant, unit.firmwareVersion) to the unit.</translation>
+    </message>
+    <message>
+        <source>status (F)</source>
+        <translation>status (F)</translation>
+    </message>
+    <message>
+        <source>position (PF/P4)</source>
+        <translation>position (PF/P4)</translation>
+    </message>
+    <message>
+        <source>EEPROM byte (ER)</source>
+        <translation>EEPROM byte (ER)</translation>
+    </message>
+    <message>
+        <source>packet of 10 B</source>
+        <translation>packet of 10 B</translation>
+    </message>
+    <message>
+        <source>The unit did not answer the timed commands.</source>
+        <translation>The unit did not answer the timed commands.</translation>
+    </message>
+    <message>
+        <source>Adapter latency about %1 ms each way; %2 bytes/s in packets; proposed link.latencyMs = %3 (the profile had %4).</source>
+        <translation>Adapter latency about %1 ms each way; %2 bytes/s in packets; proposed link.latencyMs = %3 (the profile had %4).</translation>
+    </message>
+    <message>
+        <source>The link is slower than the profile says: the planner would pace jobs for a faster line. Save the proposed profile.</source>
+        <translation>The link is slower than the profile says: the planner would pace jobs for a faster line. Save the proposed profile.</translation>
+    </message>
+    <message>
+        <source>not on this firmware</source>
+        <translation>not on this firmware</translation>
+    </message>
+    <message>
+        <source>%1 settings read, %2 differ from the profile, %3 could not be read.</source>
+        <translation>%1 settings read, %2 differ from the profile, %3 could not be read.</translation>
+    </message>
+    <message>
+        <source>Write the profile&apos;s values with Machine › Unit configuration (EEPROM), or correct the profile.</source>
+        <translation>Write the profile&apos;s values with Machine › Unit configuration (EEPROM), or correct the profile.</translation>
+    </message>
+    <message>
+        <source>The unit was not identified.</source>
+        <translation>The unit was not identified.</translation>
     </message>
 </context>
 <context>

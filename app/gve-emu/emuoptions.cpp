@@ -73,6 +73,8 @@ QString emuHelpText()
         "  --firmware TEXT     the reply to '?', e.g. \"IP64MPG v17 1.2.2009\": an older\n"
         "                      GVE64 firmware lacks MPG and EEPROM floats (v10), VK/VL/XM\n"
         "                      and N<axis> (v19) (default the variant's)\n"
+        "  --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for\n"
+        "                      testing a unit that differs from the adopted reading (4)\n"
         "  --address N         unit address 0..6 (default 0)\n"
         "  --latency MS        added delay each way, milliseconds (default 0)\n"
         "  --latency-to-unit MS, --latency-to-pc MS   the same for one direction\n"
@@ -146,6 +148,9 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
         } else if (a == QLatin1String("--firmware")) {
             unit.firmware = v.toStdString();
             ok = !unit.firmware.empty();
+        } else if (a == QLatin1String("--bad-checksum-code")) {
+            unit.badChecksumCode = v.toInt(&ok);
+            ok = ok && unit.badChecksumCode >= 0 && unit.badChecksumCode <= 7;
         } else if (a == QLatin1String("--address")) {
             unit.address = v.toInt(&ok);
             ok = ok && unit.address >= 0 && unit.address <= 6;

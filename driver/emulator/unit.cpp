@@ -160,10 +160,12 @@ void Unit::Impl::lineComplete()
         const std::string summed = "!" + line.substr(0, comma + 2);
         if (!given || protocol::checksum(summed) != *given) {
             ++stats.checksumErrors;
+            const int code =
+                options.badChecksumCode >= 0 ? options.badChecksumCode : readings::kBadChecksumCode;
             if (packetOpen)
-                packet.push_back({{}, readings::kBadChecksumCode});
+                packet.push_back({{}, code});
             else
-                sendReply({readings::kBadChecksumCode, {}});
+                sendReply({code, {}});
             return; // readings::kBadChecksumAdvancesIndex == false
         }
         body = body.substr(0, comma);

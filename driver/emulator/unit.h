@@ -60,6 +60,10 @@ struct UnitOptions
     // (protocol::featuresOf): an older GVE64 answers 3 (unknown) to VL/VK/VN/XM/N<axis> below
     // v19 and to Y and the EEPROM float/uint32 commands below v10.
     std::string firmware{};
+    // The reply code to a command with a wrong checksum; -1 = the adopted reading
+    // (readings::kBadChecksumCode, 4). Another code plays a unit that reads the manual
+    // otherwise (gve-emu --bad-checksum-code), for the commissioning assistant's tests.
+    int badChecksumCode = -1;
     // The machine behind the unit: spin-up, axis maxima, the work, for the safety counters.
     MachineModel machine{};
     // The work's top for probing (surface.h); Kind::None: the probe input only as set.
