@@ -60,8 +60,7 @@ void identifyUnit(ProbeContext &context, CommissionResult &result)
     QStringList problems;
     if (!variant)
         problems << tr("the firmware '%1' names no known unit").arg(q(result.firmware));
-    else if (protocol::variantInfo(*variant).axisCount != wanted.axisCount ||
-             protocol::variantInfo(*variant).hasSpindleAddress7 != wanted.hasSpindleAddress7)
+    else if (*variant != context.profile.unit.variant) // queue, rates and EEPROM differ too
         problems << tr("the unit is a %1, the profile is for a %2")
                         .arg(q(std::string(protocol::variantInfo(*variant).displayName)),
                              q(std::string(wanted.displayName)));

@@ -72,6 +72,7 @@ private slots:
     void eachVariantWithoutTerminal();
     void aReadingThatDoesNotHold();
     void anOlderFirmware();
+    void anotherUnitThanTheProfiles();
     void aSlowerLinkThanTheProfile();
     void refusesToOverwriteTheProfile();
 };
@@ -186,6 +187,23 @@ void CliCommissionTest::anOlderFirmware()
     QVERIFY(text.contains(
         QStringLiteral("[not checked] §12 float and 32-bit EEPROM values travel as decimal text")));
     QVERIFY(text.contains(QLatin1String("[held] Check the protocol readings")));
+}
+
+// A GVE114 on the line of a GVE64 profile: both have four axes and the spindle at address 7,
+// but the queue, the rates and the EEPROM differ, so the identification does not hold.
+void CliCommissionTest::anotherUnitThanTheProfiles()
+{
+    Emulator emu({QStringLiteral("--variant"), QStringLiteral("gve114")});
+    QTemporaryDir dir;
+    const QString report = dir.filePath(QStringLiteral("report.txt"));
+    const auto run = clitest::runCli(QStringLiteral(FREZKA_CLI),
+                                     {QStringLiteral("commission"), QStringLiteral("--port"),
+                                      emu.path, QStringLiteral("--machine"),
+                                      QStringLiteral("gve64"), QStringLiteral("--report"), report});
+    QCOMPARE(run.code, 1);
+    const QString text = readAll(report);
+    QVERIFY2(text.contains(QLatin1String("[did not hold] Identify the unit")), qPrintable(text));
+    QVERIFY(text.contains(QLatin1String("the unit is a GVE114, the profile is for a GVE64")));
 }
 
 // An adapter slower than the profile's 8 ms each way (the emulator adds 12 ms each way): the
