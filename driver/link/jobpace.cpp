@@ -233,7 +233,16 @@ bool JobPace::wireBoundAhead() const
     const double motion = runS(next, end);
     const double wire =
         m_host.link().wireTime(static_cast<std::size_t>(m_bytePrefix[end] - m_bytePrefix[next]));
-    return motion < wire + m_host.rttS();
+    // Each command that cannot travel in a packet (A, V, ...) is a round trip of its own, and so
+    // is each packet between them (with packets off, every command). Bytes alone took a stretch
+    // with an A and a V at nearly every vector for one with time to spare: the poller read
+    // position, F and inputs at full rate while the first, 9 s long move ran, the stream got a
+    // command in between, and the unit ran dry 17 times once those vectors came (seed 255,
+    // 19 200 Bd at 11.5 ms).
+    const double trips = m_host.options().packets
+                             ? static_cast<double>(m_tripPrefix[end] - m_tripPrefix[next])
+                             : static_cast<double>(end - next);
+    return motion < wire + std::max(1.0, trips) * m_host.rttS();
 }
 
 int JobPace::overrideCeiling() const

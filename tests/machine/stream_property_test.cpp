@@ -444,3 +444,14 @@ TEST(StreamPace, AnOverrideLeavesAChangeInsideAChainTheTimeItNeeds)
 {
     expectKeepsThePace(drawJob(390, 300));
 }
+
+// Property seed 255 (a GVE64 at 19 200 Bd, 11.5 ms): an A and a V at nearly every vector after a
+// first move of 9 s. The stream counted the bytes ahead, not their round trips, so it took the
+// motion ahead for slower than the wire; the poller read position, F and inputs at full rate
+// while the long move ran, one command went out between polls, and the unit ran dry 17 times
+// once the short vectors came. JobPace::wireBoundAhead now counts a round trip per command
+// outside a packet.
+TEST(StreamPace, RoundTripsAheadCountWhenThePollerShares)
+{
+    expectKeepsThePace(drawJob(255, 300));
+}
