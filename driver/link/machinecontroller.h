@@ -90,6 +90,9 @@ public slots:
     void jogContinuous(int axis, int direction, double speedMmPerMin);
     void jogStop();
     void setMpg(bool on);
+    // Turns the built-in emulator's handwheel (LinkWorker::turnEmulatedWheel): axis 0..3,
+    // multiplier 1/10/100, detents signed. Elsewhere a no-op with a logLine saying so.
+    void turnEmulatedWheel(int axis, int multiplier, int detents);
 
     void setSpindleRpm(double rpm);      // !7V, per mille from the profile's max rpm
     void setOutput(int output, bool on); // OUTn (0..3) on or off, others kept
