@@ -19,6 +19,8 @@
 //     when the probe stops short and motion follows, the job ends: the planner planned the rest
 //     from the probe's end point).
 //   writeEeprom: writes the profile's EEPROM settings when asked (connect only compares them).
+//   turnEmulatedWheel: the built-in emulator's MPG wheel, not a unit operation (tested in
+//     tests/gui/workflow_wheel_test.cpp).
 
 #include "driver/link/machinecommand.h"
 #include "driver/link/machinestate.h"
