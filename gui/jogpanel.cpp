@@ -1,5 +1,7 @@
 #include "jogpanel.h"
 
+#include "simulatedwheel.h"
+
 #include <QButtonGroup>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -41,6 +43,10 @@ JogPanel::JogPanel(QWidget *parent)
     layout->addLayout(grid);
     layout->addLayout(steps);
     layout->addLayout(feedRow);
+    m_wheel = new SimulatedWheel(this);
+    m_wheel->hide();
+    connect(m_wheel, &SimulatedWheel::turned, this, &JogPanel::wheelTurned);
+    layout->addWidget(m_wheel);
     layout->addStretch();
     retranslate();
 }
@@ -183,7 +189,15 @@ void JogPanel::setUnit(LengthUnit unit)
 
 void JogPanel::setMpgAvailable(bool available)
 {
+    m_mpgAvailable = available;
     m_mpg->setVisible(available);
+    m_wheel->setVisible(m_mpgAvailable && m_wheelAvailable);
+}
+
+void JogPanel::setSimulatedWheelAvailable(bool available)
+{
+    m_wheelAvailable = available;
+    m_wheel->setVisible(m_mpgAvailable && m_wheelAvailable);
 }
 
 void JogPanel::setMpgOn(bool on)

@@ -1,7 +1,8 @@
 #pragma once
 // JogPanel: jog buttons per axis (step 0.01 / 0.1 / 1 / 10 mm or continuous while held),
-// jog feed, homing (all / per axis) and the MPG switch. It only asks; the soft-limit policy
-// (machine/softlimits.h) decides in the driver. Shows which axes are not homed (limits off).
+// jog feed, homing (all / per axis), the MPG switch and the built-in emulator's handwheel. It only
+// asks; the soft-limit policy (machine/softlimits.h) decides in the driver. Shows which axes are
+// not homed (limits off).
 
 #include "displayunits.h"
 
@@ -21,6 +22,8 @@ class QRadioButton;
 
 namespace frezka::gui {
 
+class SimulatedWheel;
+
 class JogPanel : public QWidget
 {
     Q_OBJECT
@@ -36,6 +39,9 @@ public:
     // stay in mm. The chosen step keeps its place in the row.
     void setUnit(LengthUnit unit);
     void setMpgAvailable(bool available);
+    // The simulated handwheel (SimulatedWheel) under the MPG switch: only while connected to
+    // the built-in emulator of a unit with an MPG.
+    void setSimulatedWheelAvailable(bool available);
     // Per-axis homing buttons (hidden while the driver homes only the whole machine).
     void setPerAxisHoming(bool available);
     void setMpgOn(bool on);
@@ -51,6 +57,8 @@ signals:
     void jogContinuousStopped();
     void homeRequested(int axis); // -1 = all axes in the profile's order
     void mpgToggled(bool on);
+    // The simulated handwheel turned (SimulatedWheel::turned).
+    void wheelTurned(int axis, int multiplier, int detents);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -71,6 +79,9 @@ private:
     QDoubleSpinBox *m_feed;
     QLabel *m_feedLabel, *m_stepLabel;
     QCheckBox *m_mpg;
+    SimulatedWheel *m_wheel;
+    bool m_mpgAvailable = true;
+    bool m_wheelAvailable = false;
     QLabel *m_limits = nullptr;
     std::array<bool, 4> m_homed{};
     bool m_connected = false;

@@ -205,6 +205,8 @@ void MainWindow::connectControls()
     connect(m_jog, &JogPanel::homeRequested, m_controller,
             [this](int axis) { m_controller->home(axis < 0 ? 0xFu : 1u << axis); });
     connect(m_jog, &JogPanel::mpgToggled, m_controller, &driver::MachineController::setMpg);
+    connect(m_jog, &JogPanel::wheelTurned, m_controller,
+            &driver::MachineController::turnEmulatedWheel);
 
     connectOutputs();
 
@@ -313,6 +315,9 @@ void MainWindow::onState(const driver::MachineState &state)
     m_outputs->showFeedOverride(state.overridePercent, state.overrideHeldPercent());
     m_outputs->showSpindleOverride(state.spindleOverridePercent);
     m_jog->setMpgOn(state.mpgOn);
+    m_jog->setSimulatedWheelAvailable(isConnected(state.mode) &&
+                                      m_workflow->connection().kind ==
+                                          driver::ConnectionSettings::Kind::Emulator);
     m_jog->setHomedAxes(homed, isConnected(state.mode));
     m_connection->setText(connectionText(state));
     m_connection->setStyleSheet(isConnected(state.mode) ? QString()

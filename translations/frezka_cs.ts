@@ -295,6 +295,14 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>unknown connection kind</source>
         <translation>neznámý druh připojení</translation>
     </message>
+    <message>
+        <source>simulated handwheel: not connected to the built-in emulator; turn the unit&apos;s own MPG wheel</source>
+        <translation>simulované kolečko: nepřipojeno k vestavěnému emulátoru; otočte skutečným kolečkem MPG jednotky</translation>
+    </message>
+    <message>
+        <source>simulated handwheel: the unit ignored the turn; switch Handwheel (MPG) on, and enable the MPG in the profile&apos;s EEPROM settings</source>
+        <translation>simulované kolečko: jednotka otočení nepřijala; zapněte Ruční kolečko (MPG) a povolte MPG v nastavení EEPROM profilu</translation>
+    </message>
 </context>
 <context>
     <name>LoadCheck</name>
@@ -5426,6 +5434,33 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>%1 is the key of the menu command “%2”. Choose a different key.</source>
         <translation>%1 je klávesa příkazu nabídky „%2“. Zvolte jinou klávesu.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::SimulatedWheel</name>
+    <message>
+        <source>Simulated wheel:</source>
+        <translation>Simulované kolečko:</translation>
+    </message>
+    <message>
+        <source>Simulates the unit&apos;s MPG handwheel on the built-in emulator: choose the axis and the step switch (x1 = 0.01 mm per detent), then turn with − / + (hold to keep turning). It moves the axis only while Handwheel (MPG) is on.</source>
+        <translation>Simuluje ruční kolečko MPG jednotky na vestavěném emulátoru: zvolte osu a přepínač kroku (x1 = 0,01 mm na zaklapnutí), pak otáčejte tlačítky − / + (podržením otáčíte dál). Osou pohne jen při zapnutém Ručním kolečku (MPG).</translation>
+    </message>
+    <message>
+        <source>The wheel&apos;s axis switch (4 = the fourth axis or the spindle, as the unit&apos;s EEPROM sets it)</source>
+        <translation>Přepínač osy kolečka (4 = čtvrtá osa nebo vřeteno podle nastavení EEPROM jednotky)</translation>
+    </message>
+    <message>
+        <source>The wheel&apos;s step switch: x1 = 0.01 mm, x10 = 0.1 mm, x100 = 1 mm per detent</source>
+        <translation>Přepínač kroku kolečka: x1 = 0,01 mm, x10 = 0,1 mm, x100 = 1 mm na zaklapnutí</translation>
+    </message>
+    <message>
+        <source>Turn the simulated wheel one detent back</source>
+        <translation>Otočit simulovaným kolečkem o jedno zaklapnutí zpět</translation>
+    </message>
+    <message>
+        <source>Turn the simulated wheel one detent forward</source>
+        <translation>Otočit simulovaným kolečkem o jedno zaklapnutí vpřed</translation>
     </message>
 </context>
 <context>

@@ -295,6 +295,14 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>unknown connection kind</source>
         <translation>unknown connection kind</translation>
     </message>
+    <message>
+        <source>simulated handwheel: not connected to the built-in emulator; turn the unit&apos;s own MPG wheel</source>
+        <translation>simulated handwheel: not connected to the built-in emulator; turn the unit&apos;s own MPG wheel</translation>
+    </message>
+    <message>
+        <source>simulated handwheel: the unit ignored the turn; switch Handwheel (MPG) on, and enable the MPG in the profile&apos;s EEPROM settings</source>
+        <translation>simulated handwheel: the unit ignored the turn; switch Handwheel (MPG) on, and enable the MPG in the profile&apos;s EEPROM settings</translation>
+    </message>
 </context>
 <context>
     <name>LoadCheck</name>
@@ -5418,6 +5426,33 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>%1 is the key of the menu command “%2”. Choose a different key.</source>
         <translation>%1 is the key of the menu command “%2”. Choose a different key.</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::SimulatedWheel</name>
+    <message>
+        <source>Simulated wheel:</source>
+        <translation>Simulated wheel:</translation>
+    </message>
+    <message>
+        <source>Simulates the unit&apos;s MPG handwheel on the built-in emulator: choose the axis and the step switch (x1 = 0.01 mm per detent), then turn with − / + (hold to keep turning). It moves the axis only while Handwheel (MPG) is on.</source>
+        <translation>Simulates the unit&apos;s MPG handwheel on the built-in emulator: choose the axis and the step switch (x1 = 0.01 mm per detent), then turn with − / + (hold to keep turning). It moves the axis only while Handwheel (MPG) is on.</translation>
+    </message>
+    <message>
+        <source>The wheel&apos;s axis switch (4 = the fourth axis or the spindle, as the unit&apos;s EEPROM sets it)</source>
+        <translation>The wheel&apos;s axis switch (4 = the fourth axis or the spindle, as the unit&apos;s EEPROM sets it)</translation>
+    </message>
+    <message>
+        <source>The wheel&apos;s step switch: x1 = 0.01 mm, x10 = 0.1 mm, x100 = 1 mm per detent</source>
+        <translation>The wheel&apos;s step switch: x1 = 0.01 mm, x10 = 0.1 mm, x100 = 1 mm per detent</translation>
+    </message>
+    <message>
+        <source>Turn the simulated wheel one detent back</source>
+        <translation>Turn the simulated wheel one detent back</translation>
+    </message>
+    <message>
+        <source>Turn the simulated wheel one detent forward</source>
+        <translation>Turn the simulated wheel one detent forward</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,7 @@
 #include "linkworker.h"
 
+#include "driver/link/emulatortransport.h"
+#include "driver/link/tracingtransport.h"
 #include "driver/link/transport.h"
 
 #include <QCoreApplication>
@@ -131,6 +133,27 @@ void LinkWorker::onClosed(const QString &why)
 void LinkWorker::execute(const MachineCommand &command)
 {
     apply(core().execute(command, now()));
+}
+
+void LinkWorker::turnEmulatedWheel(int axis, int multiplier, int detents)
+{
+    Transport *t = m_transport;
+    if (auto *tracing = qobject_cast<TracingTransport *>(t))
+        t = tracing->inner();
+    auto *emulated = qobject_cast<EmulatorTransport *>(t);
+    if (!emulated || !emulated->isOpen()) {
+        emit logLine(QCoreApplication::translate(
+            "LinkWorker", "simulated handwheel: not connected to the built-in emulator; "
+                          "turn the unit's own MPG wheel"));
+        return;
+    }
+    emulator::Unit &unit = emulated->unit();
+    unit.setWheelAxis(axis);
+    unit.setWheelMultiplier(multiplier);
+    if (!unit.turnWheel(detents))
+        emit logLine(QCoreApplication::translate(
+            "LinkWorker", "simulated handwheel: the unit ignored the turn; switch Handwheel (MPG) "
+                          "on, and enable the MPG in the profile's EEPROM settings"));
 }
 
 } // namespace frezka::driver

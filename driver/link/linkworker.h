@@ -47,6 +47,11 @@ public slots:
     // An operation for the core (MachineController builds them); a refusal comes back as
     // errorOccurred.
     void execute(const frezka::driver::MachineCommand &command);
+    // The built-in emulator's MPG handwheel (no hardware needed): sets its axis switch (0..3 =
+    // X, Y, Z, 4th) and step switch (1, 10, 100), then turns it by detents (signed). The unit
+    // moves only while its MPG is on and enabled in its EEPROM; a turn it ignores, or any turn
+    // on another port, changes nothing and says why in a logLine.
+    void turnEmulatedWheel(int axis, int multiplier, int detents);
     // The same operations by name, as MachineController has them, for the direct users of a
     // worker without a controller (frezka-cli run, session::QtMachineLink<LinkWorker>).
     void run(const frezka::machine::UnitProgram &program) { execute(op::Run{program}); }

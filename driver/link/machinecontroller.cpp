@@ -100,6 +100,12 @@ void MachineController::setMpg(bool on)
 {
     execute(op::SetMpg{on});
 }
+void MachineController::turnEmulatedWheel(int axis, int multiplier, int detents)
+{
+    QMetaObject::invokeMethod(m_worker, [w = m_worker, axis, multiplier, detents] {
+        w->turnEmulatedWheel(axis, multiplier, detents);
+    });
+}
 void MachineController::setSpindleRpm(double rpm)
 {
     execute(op::SetSpindleRpm{rpm});

@@ -19,6 +19,8 @@
 //     when the probe stops short and motion follows, the job ends: the planner planned the rest
 //     from the probe's end point).
 //   writeEeprom: writes the profile's EEPROM settings when asked (connect only compares them).
+//   turnEmulatedWheel: the built-in emulator's MPG wheel, not a unit operation (tested in
+//     tests/gui/workflow_wheel_test.cpp).
 
 #include "driver/link/machinecommand.h"
 #include "driver/link/machinestate.h"
@@ -90,6 +92,9 @@ public slots:
     void jogContinuous(int axis, int direction, double speedMmPerMin);
     void jogStop();
     void setMpg(bool on);
+    // Turns the built-in emulator's handwheel (LinkWorker::turnEmulatedWheel): axis 0..3,
+    // multiplier 1/10/100, detents signed. Elsewhere a no-op with a logLine saying so.
+    void turnEmulatedWheel(int axis, int multiplier, int detents);
 
     void setSpindleRpm(double rpm);      // !7V, per mille from the profile's max rpm
     void setOutput(int output, bool on); // OUTn (0..3) on or off, others kept
