@@ -11,8 +11,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
+
+namespace frezka::machine {
+struct ModelResult;
+}
 
 namespace frezka::machine::detail {
 
@@ -62,7 +68,10 @@ private:
         double linkS = 0;      // the link's part of the rests, beyond the unit's T pauses
         double unitPauseS = 0; // the unit's T pauses after them (what dwells did not cover)
     };
-    RestCosts restCosts() const;
+    // The link's part of each rest; `holds`: the chains the driver holds at their start and what
+    // each hold costs the link (leadInHolds), by the chain's first command.
+    RestCosts restCosts(std::span<const std::pair<std::size_t, double>> holds) const;
+    std::vector<std::pair<std::size_t, double>> leadInHolds(const ModelResult &model) const;
     // restCosts: the driver's status poll interval (driver/link CoreOptions::pollIntervalS) and
     // the bytes of one command and its reply.
     static constexpr double kStatusPollS = 0.05;

@@ -4,8 +4,11 @@
 #include "machine/planner_internal.h"
 
 #include "machine/chainparts.h"
+#include "machine/leadin.h"
 #include "machine/unitmodel.h"
 #include "machine/unitwire.h"
+#include "protocol/command.h"
+#include "protocol/variant.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,7 +47,7 @@ void Planner::feedCapWarning()
 // stands from its next status poll (half the poll interval on average), reads the position
 // (the path guard), sends the commands that cannot travel in a packet one round trip each, and
 // the unit starts again when the first packet's first vector arrives.
-Planner::RestCosts Planner::restCosts() const
+Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, double>> holds) const
 {
     const LinkConfig &link = m_config.link;
     if (!m_options.wireLimited || link.baud <= 0)
@@ -56,14 +59,32 @@ Planner::RestCosts Planner::restCosts() const
     double pauseS = kInitialPauseS; // T, as the unit model starts
     double dwellS = 0;              // PC-side dwell since the rest began
     int commands = 0;
-    for (const UnitCommand &c : m_result.program.commands) {
+    std::size_t chainStart = 0; // the first command after the last rest
+    auto hold = holds.begin();  // the chains the driver holds at their start (leadInHolds)
+    const auto &cmds = m_result.program.commands;
+    for (std::size_t i = 0; i < cmds.size(); ++i) {
+        const UnitCommand &c = cmds[i];
+        double holdS = 0;
+        if (c.op == UnitOp::Vector) {
+            while (hold != holds.end() && hold->first < chainStart)
+                ++hold;
+            if (hold != holds.end() && hold->first == chainStart) {
+                holdS = hold->second;
+                ++hold;
+            }
+        }
         if (c.op == UnitOp::Vector || c.op == UnitOp::Line) {
             if (atRest) {
                 // The unit's own T pause after the rest (what a dwell has not covered) runs
-                // while the link does its part: the estimate counts the longer of the two.
+                // while the link does its part, a hold at the chain's start included: the
+                // estimate counts the longer of the two (seed 45, packets off: 50 holds charged
+                // beside the pause put the estimate 9 % above the job).
                 const double unitS = moved ? std::max(0.0, pauseS - dwellS) : 0.0;
-                costs.linkS += std::max(0.0, kStatusPollS / 2 + (2 + commands) * exchangeS - unitS);
+                costs.linkS +=
+                    std::max(0.0, kStatusPollS / 2 + (2 + commands) * exchangeS + holdS - unitS);
                 costs.unitPauseS += unitS;
+            } else {
+                costs.linkS += holdS; // after an L: nothing to overlap
             }
             atRest = false;
             moved = true;
@@ -78,8 +99,93 @@ Planner::RestCosts Planner::restCosts() const
             atRest = true; // a PC-side wait: the queue drains
             dwellS += c.op == UnitOp::Dwell ? static_cast<double>(c.value) / 1000.0 : 0.0;
         }
+        if (restsAt(c.op))
+            chainStart = i + 1;
     }
     return costs;
+}
+
+// The driver holds the unit at the start of a chain its wire cannot feed from an empty queue
+// (machine/leadin.h, driver/link/leadinhold.h): the H, the reads of the interrupt causes and the
+// G, and the wire time of what it queues beyond the first packet before the unit moves, are the
+// link's part of that rest. Each chain's lead-in is judged over a window of the program: its first
+// queue-full of vectors and the packets the slack looks ahead to.
+std::vector<std::pair<std::size_t, double>> Planner::leadInHolds(const ModelResult &model) const
+{
+    std::vector<std::pair<std::size_t, double>> holds;
+    const LinkConfig &linkConfig = m_config.link;
+    if (!m_options.wireLimited || linkConfig.baud <= 0)
+        return holds;
+    const detail::LinkTiming timing(m_config, m_options);
+    const auto &cmds = m_result.program.commands;
+    const std::int64_t capacity = protocol::variantInfo(m_config.unit.variant).queueCapacity - 1;
+    LeadInLink link;
+    link.roundTripS = timing.roundTripS();
+    link.secondsPerByte = 10.0 / linkConfig.baud;
+    link.packets = linkConfig.packets;
+    link.maxPacket = static_cast<std::size_t>(capacity);
+    link.steadyHeldS = detail::LinkTiming::kSteadyHeldS;
+    const int reads = m_config.unit.variant == protocol::Variant::Gve84 ? 1 : 2;
+    // H, the reads of ST4/ST5 and G, each with its reply (a status digit, INTA set, and for the
+    // reads a byte), one round trip each.
+    const double replyBytes = linkConfig.checksums ? 5 : 2;
+    double holdS = timing.nonPacketS(timing.wireBytes(protocol::cmd::halt()) + replyBytes) +
+                   timing.nonPacketS(timing.wireBytes(protocol::cmd::go()) + replyBytes);
+    for (int n = 4; n < 4 + reads; ++n)
+        holdS += timing.nonPacketS(timing.wireBytes(protocol::cmd::statusRead(n)) + replyBytes + 3);
+    std::vector<double> time, brake;
+    std::vector<std::int64_t> bytes, trips;
+    std::vector<std::size_t> lastMotion;
+    std::int64_t speed = 0, accel = 0; // modal V and A
+    std::size_t vector = 0;            // motion commands before i (the model's vectorTimes)
+    for (std::size_t i = 0; i < cmds.size(); ++i) {
+        if (chainStartsAt(cmds, i)) {
+            time.assign(1, 0.0);
+            brake.assign(1, 0.0);
+            bytes.assign(1, 0);
+            trips.assign(1, 0);
+            lastMotion.assign(1, 0);
+            std::int64_t v = speed, a = accel, vectors = 0;
+            std::size_t vec = vector, beyond = 0;
+            bool inRun = false;
+            for (std::size_t k = i;
+                 k < cmds.size() && !restsAt(cmds[k].op) && beyond < 4 * link.maxPacket; ++k) {
+                const UnitCommand &c = cmds[k];
+                const bool motion = c.op == UnitOp::Vector || c.op == UnitOp::Line;
+                const double t =
+                    motion && vec < model.vectorTimes.size() ? model.vectorTimes[vec++] : 0.0;
+                v = c.op == UnitOp::Speed ? c.value : v;
+                a = c.op == UnitOp::Accel ? c.value : a;
+                const bool packetable = c.op == UnitOp::Vector || c.op == UnitOp::Brake;
+                const auto wire = wireCommand(c, m_result.program.axisCount);
+                time.push_back(time.back() + t);
+                brake.push_back(a > 0 ? static_cast<double>(v) / (1000.0 * a) : 0.0);
+                bytes.push_back(bytes.back() +
+                                static_cast<std::int64_t>(wire ? timing.wireBytes(*wire) : 0));
+                trips.push_back(trips.back() + (wire && !(packetable && inRun) ? 1 : 0));
+                lastMotion.push_back(motion ? k + 1 : lastMotion.back());
+                inRun = packetable;
+                vectors += c.op == UnitOp::Vector ? 1 : 0;
+                beyond += vectors > capacity ? 1 : 0;
+            }
+            const LeadInPrefixes p{cmds, i, time, bytes, trips, brake, lastMotion};
+            const std::size_t first = std::min(firstPacketEnd(cmds, i, link), p.end());
+            if (leadInSlackS(p, link, i, first) < link.reserveS()) {
+                const std::size_t release = std::max(first, leadInRelease(p, link, i, capacity));
+                holds.emplace_back(i,
+                                   holdS +
+                                       static_cast<double>(bytes[release - i] - bytes[first - i]) *
+                                           link.secondsPerByte +
+                                       static_cast<double>(trips[release - i] - trips[first - i]) *
+                                           link.roundTripS);
+            }
+        }
+        const UnitCommand &c = cmds[i];
+        speed = c.op == UnitOp::Speed ? c.value : speed;
+        accel = c.op == UnitOp::Accel ? c.value : accel;
+        vector += c.op == UnitOp::Vector || c.op == UnitOp::Line ? 1 : 0;
+    }
+    return holds;
 }
 
 void Planner::finishStats()
@@ -92,7 +198,7 @@ void Planner::finishStats()
     // the machine's (a reversal its jump limits cannot pass moving), not the plan's: the bound
     // pays it as the estimate does (seed 30: 181 such rests, the estimate 2.9 % above a bound
     // that left them out). Rests the plan chooses (exact stop's L moves) stay out of it.
-    const RestCosts rests = restCosts();
+    const RestCosts rests = restCosts(leadInHolds(model));
     s.linkWaitS = rests.linkS;
     s.waitS = m_waitS;
     s.estimatedS = model.motionS + model.waitS + s.linkWaitS;

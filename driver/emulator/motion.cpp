@@ -353,7 +353,10 @@ void MotionEngine::enqueue(const MotionVector &v)
 
 void MotionEngine::requestStop()
 {
-    m_prevEndedDry = false;
+    // H at rest with nothing queued changes nothing about how the last vector ended: the C that
+    // starts after it (a chain the driver held at its start) still restarts a unit that ran dry.
+    if (!m_queue.empty() || m_v > 0)
+        m_prevEndedDry = false;
     if (m_queue.empty() || m_held || !m_started || m_v <= 0) {
         m_held = true;
         m_stopping = false;

@@ -25,6 +25,8 @@ struct CoreOptions
     // and hold the job for the operator (resume returns to the path); true = return to the
     // path and run on without asking (headless runs, soak tests).
     bool returnToPathAutomatically = false;
+    // Hold the unit (H) at a chain's start until the wire can feed its lead-in (leadinhold.h).
+    bool leadInHold = true;
     friend bool operator==(const CoreOptions &, const CoreOptions &) = default;
 };
 
@@ -45,6 +47,7 @@ struct JobReport
     double maxStreamPollGapS = 0; // the longest time without one then (from the start)
     double firstStreamPollS = -1; // when the first and last of them started
     double lastStreamPollS = -1;
+    std::int64_t leadInHolds = 0; // chains the unit was held at until their start was queued
     std::int64_t pathFaults = 0;  // times the position left the planned path (path guard)
     std::int64_t rerun = 0;       // vectors sent again after returning (queued ones too)
     std::int64_t returnMoves = 0; // L moves that took the machine back to the path

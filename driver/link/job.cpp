@@ -68,6 +68,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     m_streamBlocked = m_queueFullSeen = m_afterRest = false;
     m_check.reset();
     m_guard.reset();
+    m_lead.reset();
     m_waitUntil = -1;
     m_pace.build();
     m_packetLimit = m_pace.maxPacket();
@@ -121,6 +122,8 @@ void Job::streamStep(double now)
         m_cursor.exec = m_cursor.next;
         m_cursor.execAt = now;
     }
+    if (m_lead.step(now))
+        return;
     if (m_cursor.next >= m_program.commands.size()) {
         m_streamBlocked = true;
         m_host.afterJobIdle([this] { finishWithPosition(); });
@@ -173,7 +176,11 @@ void Job::sendPacket(double now)
     // least one vector: where the unit holds too little for any budget, the smallest packet
     // is the one that may still arrive in time. A full packet there (30 commands, 40 ms on the
     // wire, where the unit held a few ms after a V) made it run dry (property seed 154).
-    const bool paced = held > 0;
+    // A unit held at its chain's start runs nothing until the lead-in is queued: full packets,
+    // as many vectors as its queue takes.
+    const bool paced = held > 0 && !m_lead.held();
+    const std::int64_t heldQueued =
+        m_lead.held() ? m_pace.vectorsBefore(end) - m_pace.vectorsBefore(m_lead.start()) : 0;
     while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
         const UnitOp op = cmds[end].op;
         if (op != UnitOp::Vector && op != UnitOp::Brake)
@@ -186,8 +193,9 @@ void Job::sendPacket(double now)
         // queue, and the job waited a poll interval while the unit ran dry (property seed 100).
         if (paced && vectors > 0 && link.wireTime(bytes + size) > budget)
             break;
-        if (op == UnitOp::Vector &&
-            m_pace.queuedAfter(link.wireTime(bytes + size)) + vectors + 1 > capacity)
+        const std::int64_t queued =
+            m_lead.held() ? heldQueued : m_pace.queuedAfter(link.wireTime(bytes + size));
+        if (op == UnitOp::Vector && queued + vectors + 1 > capacity)
             break;
         bytes += size;
         vectors += op == UnitOp::Vector ? 1 : 0;
@@ -458,6 +466,7 @@ void Job::abandon()
     m_streamBlocked = false;
     m_check.cancel();
     m_guard.clearFault();
+    m_lead.reset();
     m_override.follow(false);
 }
 
@@ -491,6 +500,7 @@ void Job::linkLost()
 {
     m_check.linkLost();
     m_guard.clearFault(); // the check of the counters after reconnecting takes over
+    m_lead.reset();       // a unit still held reports INTA when the link is back: the job is held
 }
 
 bool Job::resumeAfterReconnect()

@@ -20,6 +20,7 @@
 #include "driver/link/joboverride.h"
 #include "driver/link/jobpace.h"
 #include "driver/link/jobtracker.h"
+#include "driver/link/leadinhold.h"
 #include "driver/link/lineerrors.h"
 #include "driver/link/machinestate.h"
 #include "driver/link/pathguard.h"
@@ -119,6 +120,7 @@ private:
     ProgressCheck m_check;
     PathGuard m_guard;
     ProbeMove m_probe;
+    LeadInHold m_lead{m_host, *this};
 };
 
 } // namespace frezka::driver

@@ -10,6 +10,7 @@
 // a packet should end so that polls keep their rate. Estimates only: they size packets and pace
 // polls, never the motion itself, and a wrong one costs time, not position.
 
+#include "machine/leadin.h"
 #include "machine/unitprogram.h"
 
 #include <cstddef>
@@ -75,6 +76,12 @@ public:
     // queue-full of motion from the executing command to a queue-full past the next to send:
     // XM scales speeds, so a stretch paced to the wire at 100 % runs dry above it.
     int overrideCeiling() const;
+    // A chain's lead-in on this link at the override (machine/leadin.h).
+    machine::LeadInLink leadInLink() const;
+    machine::LeadInPrefixes leadInPrefixes() const;
+    bool chainStartsAt(std::size_t i) const;
+    std::size_t firstPacketEnd(std::size_t start) const;
+    double leadInSlackS(std::size_t start, std::size_t queuedEnd) const;
     // The planned V (pulses/s) in effect at the command the unit executes (0: none yet).
     std::int64_t plannedSpeedNow() const;
     // Where a packet ends to keep polls at their rate where the motion is slow (next = no cap).

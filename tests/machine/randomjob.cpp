@@ -394,7 +394,8 @@ JobOutcome runJob(const RandomJob &job)
     driver::CoreOptions options;
     options.packets = job.config.link.packets;
     options.checksums = job.config.link.checksums;
-    options.returnToPathAutomatically = true; // no operator here
+    options.returnToPathAutomatically = true;                              // no operator here
+    options.leadInHold = std::getenv("FREZKA_NO_LEAD_IN_HOLD") == nullptr; // A/B in the soak
     driver::MachineCore core(job.config, options);
     driver::SimRunner runner(core, port);
     std::vector<bool> finished;
@@ -434,6 +435,7 @@ JobOutcome runJob(const RandomJob &job)
     o.brakeViolations = stats.motion.brakeViolations;
     o.starvationStops = stats.motion.starvationStops - plannedStops;
     o.pathFaults = rep.pathFaults;
+    o.leadInHolds = rep.leadInHolds;
     o.resendShare = rep.commands > 0 ? static_cast<double>(rep.resent) /
                                            static_cast<double>(rep.commands + rep.resent)
                                      : 0;

@@ -56,7 +56,8 @@ struct JobOutcome
     double maxJumpRatio = 0;
     bool exact = false;
     std::int64_t pathFaults = 0;
-    double resendShare = 0; // resent commands / commands sent in the job
+    std::int64_t leadInHolds = 0; // chains the driver held the unit at (driver/link/leadinhold.h)
+    double resendShare = 0;       // resent commands / commands sent in the job
     // What broke, in two groups. wrong: the job ended somewhere the program does not (counters,
     // a vector run twice or never), the plan breaks a limit of the machine, or its estimate lies
     // below the time-optimal bound (a plan faster than the limits allow, or a wrong bound): never

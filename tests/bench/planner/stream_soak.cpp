@@ -116,6 +116,7 @@ int main(int argc, char **argv)
     const bool verbose = std::getenv("STREAM_SOAK_VERBOSE") != nullptr;
     long offPace = 0, starvedCases = 0, brakeCases = 0, starved = 0, estimateOff = 0;
     long failed = 0, clean = 0, faulty = 0, pathFaults = 0, packetsOff = 0, cleanStopped = 0;
+    long heldCases = 0, holds = 0;
     double worstBoundRatio = 0, worstClean = 0, sumClean = 0, worstResend = 0, sumResend = 0;
     double virtualS = 0;
     long vectors = 0;
@@ -155,6 +156,8 @@ int main(int argc, char **argv)
             continue;
         vectors += o.vectorsPlanned;
         virtualS += o.jobS;
+        heldCases += o.leadInHolds > 0 ? 1 : 0;
+        holds += o.leadInHolds;
         packetsOff += job.config.link.packets ? 0 : 1;
         if (o.stats.boundS > 0)
             worstBoundRatio = std::max(worstBoundRatio, o.stats.estimatedS / o.stats.boundS);
@@ -187,6 +190,7 @@ int main(int argc, char **argv)
     std::printf("vectors streamed                %ld (%.0f s of virtual job time)\n", vectors,
                 virtualS);
     std::printf("packets off                     %ld cases\n", packetsOff);
+    std::printf("chains held at their start      %ld (in %ld cases)\n", holds, heldCases);
     std::printf("estimate / bound, worst         %.4f\n", worstBoundRatio);
     std::printf("clean links: job / estimate - 1 mean %.4f %%, worst %.4f %% (%ld cases)\n",
                 clean ? 100 * sumClean / clean : 0.0, 100 * worstClean, clean);

@@ -1,0 +1,135 @@
+// LeadInHold: the unit held at a chain's start until the wire can feed it. See leadinhold.h.
+
+#include "leadinhold.h"
+
+#include "driver/link/corehost.h"
+#include "driver/link/job.h"
+#include "driver/link/machinecore_internal.h"
+
+#include <string>
+
+namespace frezka::driver {
+
+using namespace frezka::protocol;
+
+namespace {
+constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+} // namespace
+
+void LeadInHold::reset()
+{
+    if (m_state == State::Halting)
+        m_host.setHaltExpected(false);
+    m_state = State::Off;
+    m_decided = kNone;
+}
+
+bool LeadInHold::step(double now)
+{
+    JobCursor &cursor = m_job.cursor();
+    switch (m_state) {
+    case State::Halting:
+    case State::Releasing:
+        return true;
+    case State::Held:
+        if (!m_host.liveState().inta) { // a pause was resumed meanwhile: its G started the chain
+            m_state = State::Off;
+            return false;
+        }
+        // The unit stands: the estimate's clock starts when it goes.
+        cursor.exec = m_start;
+        cursor.execAt = now;
+        cursor.paceKey = kNone;
+        if (!fed())
+            return false;
+        m_state = State::Releasing;
+        readCause(4);
+        return true;
+    case State::Off:
+        break;
+    }
+    const std::size_t next = cursor.next;
+    const JobPace &pace = m_job.pace();
+    if (next == m_decided || !m_host.options().leadInHold || !pace.chainStartsAt(next))
+        return false;
+    m_decided = next;
+    if (pace.leadInSlackS(next, pace.firstPacketEnd(next)) >= pace.leadInLink().reserveS())
+        return false;
+    m_state = State::Halting;
+    m_start = next;
+    ++m_job.report().leadInHolds;
+    m_host.setHaltExpected(true); // its INTA is no input's interrupt
+    m_host.send(cmd::halt(), [this](const Outcome &o) {
+        if (m_state != State::Halting)
+            return; // the job ended meanwhile
+        m_host.setHaltExpected(false);
+        m_state = State::Off;
+        if (m_host.unitError(o, "holding the unit until the chain's start is queued (H)",
+                             MachineMode::Alarm))
+            return;
+        m_state = State::Held;
+        m_host.liveState().inta = true;
+    });
+    return true;
+}
+
+// The whole chain is queued, the queue is full, or the queued motion covers the wire's part.
+bool LeadInHold::fed()
+{
+    const JobPace &pace = m_job.pace();
+    const auto &cmds = m_job.program().commands;
+    const std::size_t next = m_job.cursor().next;
+    if (next >= cmds.size() || machine::restsAt(cmds[next].op))
+        return true;
+    const std::int64_t capacity = variantInfo(m_host.config().unit.variant).queueCapacity - 1;
+    if (pace.vectorsBefore(next) - pace.vectorsBefore(m_start) >= capacity)
+        return true;
+    return pace.leadInSlackS(m_start, next) >= pace.leadInLink().reserveS();
+}
+
+// ST4 then ST5: an enabled input that fired while the unit was held (the STOP button, a limit)
+// must not be released by G, which clears the causes: the job is held as for any interrupt.
+void LeadInHold::readCause(int n)
+{
+    m_host.send(cmd::statusRead(n), [this, n](const Outcome &o) {
+        if (m_state != State::Releasing)
+            return;
+        m_state = State::Off;
+        if (m_host.unitError(o,
+                             "reading the interrupt causes before a held chain starts (SR" +
+                                 std::to_string(n) + ")",
+                             MachineMode::Alarm))
+            return;
+        if (o.reply.hexValue().value_or(0) != 0) {
+            // Taken for an interrupt at this very reply (it carries INTA): Hold::interrupted.
+            m_host.liveState().inta = false;
+            m_host.markDirty();
+            return;
+        }
+        m_state = State::Releasing;
+        if (n == 4 && m_host.config().unit.variant != Variant::Gve84)
+            readCause(5);
+        else
+            go();
+    });
+}
+
+void LeadInHold::go()
+{
+    m_host.send(cmd::go(), [this](const Outcome &o) {
+        if (m_state != State::Releasing)
+            return;
+        m_state = State::Off;
+        const bool nothing =
+            o.status == OutcomeStatus::Ok && o.reply.code == ReplyCode::NothingToContinue;
+        if (!nothing && m_host.unitError(o, "starting the held chain (G)", MachineMode::Alarm))
+            return;
+        m_host.liveState().inta = false;
+        JobCursor &cursor = m_job.cursor();
+        cursor.exec = m_start;
+        cursor.execAt = m_host.now() - m_host.rttS() / 2;
+        cursor.paceKey = kNone;
+    });
+}
+
+} // namespace frezka::driver

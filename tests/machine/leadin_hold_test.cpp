@@ -1,0 +1,157 @@
+// The unit held at a chain's start until the wire can feed it (driver/link/leadinhold.h), read
+// on the wire and on the emulated unit: property seed 235 (a GVE114 at 19 200 Bd), whose chain
+// begins with a slow vector, then an A and a V, then vectors faster than packets of two or three
+// could bring them. Without the hold the unit ran dry and stopped dead twice (brake violations).
+
+#include "driver/link/emulatorport.h"
+#include "driver/link/machinecore.h"
+#include "driver/link/simrunner.h"
+#include "gcode/interpreter.h"
+#include "machine/planner.h"
+#include "randomjob.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <string_view>
+#include <vector>
+
+using namespace frezka;
+using namespace frezka::machine::test;
+
+namespace {
+
+// A random job's program planned and streamed through the driver to the in-process emulator,
+// every line the driver put on the wire kept.
+struct HeldJob
+{
+    explicit HeldJob(const RandomJob &j, bool hold, bool stopEnabled = false)
+        : job(j)
+        , port(unitOptions(j, stopEnabled), j.wire)
+        , core(config(j, stopEnabled), options(j, hold))
+        , runner(core, port)
+    {
+        port.tamper = [this](std::string_view bytes) {
+            pending += bytes;
+            for (std::size_t cr; (cr = pending.find('\r')) != std::string::npos;) {
+                std::string line = pending.substr(0, cr);
+                pending.erase(0, cr + 1);
+                if (line.size() > 3 && line[line.size() - 3] == ',')
+                    line.resize(line.size() - 3); // the checksum
+                wire.push_back(line);
+            }
+            return std::string(bytes);
+        };
+        core.onJobFinished = [this](bool ok) { finished.push_back(ok); };
+        plan = machine::plan(gcode::interpretText(j.program).toolpath, core.config());
+    }
+    static machine::MachineConfig config(const RandomJob &j, bool stopEnabled)
+    {
+        machine::MachineConfig c = j.config;
+        if (stopEnabled) {
+            c.eeprom.interruptEnable |= 0x80; // IN7 = STOP
+            c.eeprom.polarity |= 0x80;        // active high: pressed reads 1 in the emulator
+        }
+        return c;
+    }
+    static emulator::UnitOptions unitOptions(const RandomJob &j, bool stopEnabled)
+    {
+        return driver::unitOptionsFor(config(j, stopEnabled));
+    }
+    static driver::CoreOptions options(const RandomJob &j, bool hold)
+    {
+        driver::CoreOptions o;
+        o.packets = j.config.link.packets;
+        o.returnToPathAutomatically = true;
+        o.leadInHold = hold;
+        return o;
+    }
+    bool connectAndRun()
+    {
+        runner.open();
+        runner.runUntil([&] { return core.state().mode != driver::MachineMode::Connecting; }, 300);
+        return core.state().mode == driver::MachineMode::Idle && plan.ok() &&
+               !core.run(plan.program, runner.now());
+    }
+    std::size_t find(std::string_view prefix, std::size_t from = 0) const
+    {
+        for (std::size_t i = from; i < wire.size(); ++i) {
+            if (wire[i].starts_with(prefix))
+                return i;
+        }
+        return wire.size();
+    }
+
+    RandomJob job;
+    driver::EmulatorPort port;
+    driver::MachineCore core;
+    driver::SimRunner runner;
+    machine::PlanResult plan;
+    std::string pending;
+    std::vector<std::string> wire;
+    std::vector<bool> finished;
+};
+
+} // namespace
+
+TEST(LeadInHold, AChainTheWireCannotFeedFromRestStartsWhenItsLeadInIsQueued)
+{
+    HeldJob held(drawJob(235, 300), true);
+    ASSERT_TRUE(held.connectAndRun());
+    ASSERT_TRUE(held.runner.runUntil([&] { return !held.finished.empty(); }, 600));
+    EXPECT_TRUE(held.finished.front());
+    const auto &stats = held.port.unit().stats().motion;
+    EXPECT_EQ(stats.brakeViolations, 0);
+    EXPECT_EQ(held.core.jobReport().leadInHolds, 1);
+    EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
+    // On the wire: H with the unit at rest, the lead-in queued (its A and V too), the interrupt
+    // causes read, then G; nothing moved before G.
+    const std::size_t h = held.find("!0H");
+    ASSERT_LT(h, held.wire.size());
+    const std::size_t g = held.find("!0G", h);
+    ASSERT_LT(g, held.wire.size());
+    EXPECT_EQ(held.wire[g - 2], "!0SR4");
+    EXPECT_EQ(held.wire[g - 1], "!0SR5");
+    long vectors = 0, speeds = 0;
+    for (std::size_t i = h; i < g; ++i) {
+        vectors += held.wire[i].starts_with("!0C") ? 1 : 0;
+        speeds += held.wire[i].starts_with("!0V") || held.wire[i].starts_with("!0A") ? 1 : 0;
+    }
+    EXPECT_GT(vectors, 100); // the packets while held are full ones
+    EXPECT_GE(speeds, 2);
+
+    // The same job without the hold: the unit runs dry in that chain and stops dead.
+    HeldJob free(drawJob(235, 300), false);
+    ASSERT_TRUE(free.connectAndRun());
+    ASSERT_TRUE(free.runner.runUntil([&] { return !free.finished.empty(); }, 600));
+    EXPECT_EQ(free.find("!0H"), free.wire.size());
+    EXPECT_GT(free.port.unit().stats().motion.brakeViolations, 0);
+}
+
+// The STOP button pressed while the unit is held at the chain's start: G would clear the cause
+// and start the chain; the job is held for the operator instead, and the unit has not moved.
+TEST(LeadInHold, AnInputThatFiresWhileHeldHoldsTheJobInsteadOfStartingIt)
+{
+    HeldJob held(drawJob(235, 300), true, true);
+    ASSERT_TRUE(held.connectAndRun());
+    ASSERT_TRUE(held.runner.runUntil(
+        [&] { return held.core.jobReport().leadInHolds > 0 && held.core.state().inta; }, 600));
+    const auto at = held.port.unit().position();
+    held.port.unit().setStopButton(true);
+    ASSERT_TRUE(held.runner.runUntil(
+        [&] { return held.core.state().mode == driver::MachineMode::Paused; }, 30));
+    held.runner.runFor(1.0);
+    EXPECT_EQ(held.core.state().hold, driver::HoldReason::Interrupt);
+    EXPECT_NE(held.core.state().holdText.find("IN7"), std::string::npos)
+        << held.core.state().holdText;
+    EXPECT_EQ(held.find("!0G", held.find("!0H")), held.wire.size());
+    EXPECT_EQ(held.port.unit().position(), at);
+    // Released and resumed by the operator, the job runs to its end exactly.
+    held.port.unit().setStopButton(false);
+    ASSERT_FALSE(held.core.resume(held.runner.now()));
+    ASSERT_TRUE(held.runner.runUntil([&] { return !held.finished.empty(); }, 600));
+    EXPECT_TRUE(held.finished.front());
+    EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
+    EXPECT_EQ(held.port.unit().stats().motion.brakeViolations, 0);
+}
