@@ -6047,6 +6047,18 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>&apos;%1&apos; není řetězec firmwaru jednotky %2</translation>
     </message>
     <message>
+        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
+        <translation>otočení kolečka &apos;%1&apos; nelze přečíst: napište OSA KROK DÍLKY, např. X 10 -5</translation>
+    </message>
+    <message>
+        <source>cannot read the unit &apos;%1&apos; of --units: write ADDRESS:VARIANT with an address 0..6, e.g. 0:gve114,1:gve114</source>
+        <translation>jednotku &apos;%1&apos; ve volbě --units nelze přečíst: napište ADRESA:VARIANTA s adresou 0..6, např. 0:gve114,1:gve114</translation>
+    </message>
+    <message>
+        <source>--units names address %1 twice: give each unit its own address</source>
+        <translation>--units uvádí adresu %1 dvakrát: dejte každé jednotce vlastní adresu</translation>
+    </message>
+    <message>
         <source>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
 The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
@@ -6063,6 +6075,11 @@ Options:
   --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for
                       testing a unit that differs from the adopted reading (4)
   --address N         unit address 0..6 (default 0)
+  --units A:ID,...    several units on the one line, e.g. 0:gve114,1:gve114:
+                      each answers only its address (0..6), all share the wire
+                      and its time; address 7 (the spindle) is the first unit&apos;s
+                      that has one; the other options apply to every unit
+                      (--eeprom FILE keeps unit A&apos;s EEPROM in FILE.A)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
   --seed N            seed of the fault injector (default 1)
@@ -6113,6 +6130,11 @@ Volby:
   --bad-checksum-code N  kód odpovědi 0..7 na příkaz se špatným kontrolním součtem,
                       pro zkoušku jednotky, která se liší od přijatého výkladu (4)
   --address N         adresa jednotky 0..6 (výchozí 0)
+  --units A:ID,...    několik jednotek na jedné lince, např. 0:gve114,1:gve114:
+                      každá odpovídá jen na svou adresu (0..6), všechny sdílejí
+                      vedení a jeho čas; adresa 7 (vřeteno) patří první jednotce,
+                      která ji má; ostatní volby platí pro každou jednotku
+                      (--eeprom SOUBOR uchová EEPROM jednotky A v SOUBOR.A)
   --latency MS        přidané zpoždění v každém směru, milisekundy (výchozí 0)
   --latency-to-unit MS, --latency-to-pc MS   totéž pro jeden směr
   --seed N            semínko generátoru poruch (výchozí 1)
@@ -6147,10 +6169,6 @@ Volby:
   --help              tento text
   --version           verze
 </translation>
-    </message>
-    <message>
-        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
-        <translation>otočení kolečka &apos;%1&apos; nelze přečíst: napište OSA KROK DÍLKY, např. X 10 -5</translation>
     </message>
 </context>
 <context>

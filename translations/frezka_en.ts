@@ -6034,6 +6034,18 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>&apos;%1&apos; is not a firmware string of the %2</translation>
     </message>
     <message>
+        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
+        <translation>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</translation>
+    </message>
+    <message>
+        <source>cannot read the unit &apos;%1&apos; of --units: write ADDRESS:VARIANT with an address 0..6, e.g. 0:gve114,1:gve114</source>
+        <translation>cannot read the unit &apos;%1&apos; of --units: write ADDRESS:VARIANT with an address 0..6, e.g. 0:gve114,1:gve114</translation>
+    </message>
+    <message>
+        <source>--units names address %1 twice: give each unit its own address</source>
+        <translation>--units names address %1 twice: give each unit its own address</translation>
+    </message>
+    <message>
         <source>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
 The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
@@ -6050,6 +6062,11 @@ Options:
   --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for
                       testing a unit that differs from the adopted reading (4)
   --address N         unit address 0..6 (default 0)
+  --units A:ID,...    several units on the one line, e.g. 0:gve114,1:gve114:
+                      each answers only its address (0..6), all share the wire
+                      and its time; address 7 (the spindle) is the first unit&apos;s
+                      that has one; the other options apply to every unit
+                      (--eeprom FILE keeps unit A&apos;s EEPROM in FILE.A)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
   --seed N            seed of the fault injector (default 1)
@@ -6100,6 +6117,11 @@ Options:
   --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for
                       testing a unit that differs from the adopted reading (4)
   --address N         unit address 0..6 (default 0)
+  --units A:ID,...    several units on the one line, e.g. 0:gve114,1:gve114:
+                      each answers only its address (0..6), all share the wire
+                      and its time; address 7 (the spindle) is the first unit&apos;s
+                      that has one; the other options apply to every unit
+                      (--eeprom FILE keeps unit A&apos;s EEPROM in FILE.A)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
   --seed N            seed of the fault injector (default 1)
@@ -6134,10 +6156,6 @@ Options:
   --help              this text
   --version           the version
 </translation>
-    </message>
-    <message>
-        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
-        <translation>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</translation>
     </message>
 </context>
 <context>
