@@ -54,6 +54,19 @@ EmulatorPort::EmulatorPort(emulator::UnitOptions unit, WireOptions wire)
     : m_sim(emulator::SimulationOptions{std::move(unit), emulatorWireOptions(wire)})
 {}
 
+namespace {
+emulator::SimulationOptions lineOf(std::vector<emulator::UnitOptions> units, WireOptions wire)
+{
+    emulator::SimulationOptions o{std::move(units.front()), emulatorWireOptions(wire), {}};
+    o.moreUnits.assign(units.begin() + 1, units.end());
+    return o;
+}
+} // namespace
+
+EmulatorPort::EmulatorPort(std::vector<emulator::UnitOptions> units, WireOptions wire)
+    : m_sim(lineOf(std::move(units), wire))
+{}
+
 WireStats EmulatorPort::wireStats() const
 {
     const emulator::WireStats &up = m_sim.wire().toUnit().stats();
