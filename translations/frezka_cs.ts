@@ -523,6 +523,43 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>RunLineCli</name>
+    <message>
+        <source>usage: frezka-cli run-line --unit ADDRESS:FILE [--unit ADDRESS:FILE]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</source>
+        <translation>použití: frezka-cli run-line --unit ADRESA:SOUBOR [--unit ADRESA:SOUBOR]... %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: cannot read --unit &apos;%1&apos;: write ADDRESS:FILE with an address 0..6, e.g. --unit 1:part.nc
+</source>
+        <translation>frezka-cli run-line: --unit &apos;%1&apos; nelze přečíst: napište ADRESA:SOUBOR s adresou 0..6, např. --unit 1:dil.nc
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: address %1 is given twice: each unit on the line has its own address
+</source>
+        <translation>frezka-cli run-line: adresa %1 je uvedena dvakrát: každá jednotka na lince má vlastní adresu
+</translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>varování: </translation>
+    </message>
+    <message>
+        <source>unit %1: %2
+</source>
+        <translation>jednotka %1: %2
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: %1
+</source>
+        <translation>frezka-cli run-line: %1
+</translation>
+    </message>
+</context>
+<context>
     <name>SerialTrace</name>
     <message>
         <source>line %1: not an entry (time in ms, then &gt;, &lt; or =, then the bytes): %2</source>
@@ -720,6 +757,10 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</source>
         <translation>Uvedení jednotky do provozu: identifikuje ji, ověří výklady protokolu, změří linku, přečte EEPROM, pak (v terminálu) po dotazu vyzkouší každou osu, spínače, vřeteno, výstupy a referování; zapíše protokol a upravený profil</translation>
+    </message>
+    <message>
+        <source>Run a program on each of several units sharing one serial line</source>
+        <translation>Spustit program na každé z několika jednotek na jedné sériové lince</translation>
     </message>
 </context>
 <context>

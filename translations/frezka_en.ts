@@ -523,6 +523,43 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>RunLineCli</name>
+    <message>
+        <source>usage: frezka-cli run-line --unit ADDRESS:FILE [--unit ADDRESS:FILE]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</source>
+        <translation>usage: frezka-cli run-line --unit ADDRESS:FILE [--unit ADDRESS:FILE]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: cannot read --unit &apos;%1&apos;: write ADDRESS:FILE with an address 0..6, e.g. --unit 1:part.nc
+</source>
+        <translation>frezka-cli run-line: cannot read --unit &apos;%1&apos;: write ADDRESS:FILE with an address 0..6, e.g. --unit 1:part.nc
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: address %1 is given twice: each unit on the line has its own address
+</source>
+        <translation>frezka-cli run-line: address %1 is given twice: each unit on the line has its own address
+</translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>warning: </translation>
+    </message>
+    <message>
+        <source>unit %1: %2
+</source>
+        <translation>unit %1: %2
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: %1
+</source>
+        <translation>frezka-cli run-line: %1
+</translation>
+    </message>
+</context>
+<context>
     <name>SerialTrace</name>
     <message>
         <source>line %1: not an entry (time in ms, then &gt;, &lt; or =, then the bytes): %2</source>
@@ -720,6 +757,10 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</source>
         <translation>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</translation>
+    </message>
+    <message>
+        <source>Run a program on each of several units sharing one serial line</source>
+        <translation>Run a program on each of several units sharing one serial line</translation>
     </message>
 </context>
 <context>
