@@ -4928,6 +4928,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Subroutine folders (o&lt;name&gt; call of name.ngc; separated by :)</source>
         <translation>Složky podprogramů (o&lt;název&gt; call souboru název.ngc; oddělené :)</translation>
     </message>
+    <message>
+        <source>Unit address on the line (0..6)</source>
+        <translation>Adresa jednotky na lince (0..6)</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ProfileEditor</name>

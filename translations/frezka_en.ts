@@ -4921,6 +4921,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Subroutine folders (o&lt;name&gt; call of name.ngc; separated by :)</source>
         <translation>Subroutine folders (o&lt;name&gt; call of name.ngc; separated by :)</translation>
     </message>
+    <message>
+        <source>Unit address on the line (0..6)</source>
+        <translation>Unit address on the line (0..6)</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ProfileEditor</name>

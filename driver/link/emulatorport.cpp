@@ -11,6 +11,7 @@ emulator::UnitOptions unitOptionsFor(const machine::MachineConfig &config)
     emulator::UnitOptions o;
     o.variant = config.unit.variant;
     o.maxPulseRate = config.unit.maxPulseRate;
+    o.address = config.unit.address;
     for (int a = 0; a < 4; ++a) {
         const machine::AxisConfig &ax = config.axes[static_cast<std::size_t>(a)];
         if (!ax.present || ax.homing.order <= 0)

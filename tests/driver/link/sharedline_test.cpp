@@ -309,3 +309,40 @@ TEST(SharedLine, ADamagedAddressByteRunsOnNeitherUnit)
 }
 
 } // namespace frezka::driver::test
+
+namespace frezka::driver::test {
+
+// A unit alone on its line at another address (the profile's unit.address): the driver sends
+// every command to it and the built-in emulator answers on it; a job runs to exact counters.
+TEST(UnitAddress, AUnitAloneAtAnotherAddressRunsItsJob)
+{
+    machine::MachineConfig config = machine::defaultMachineConfig(Variant::Gve114);
+    config.unit.address = 3;
+    EmulatorPort port(unitOptionsFor(config), {});
+    EXPECT_EQ(port.unit().options().address, 3);
+    MachineCore core(config, {});
+    std::vector<std::string> sent;
+    core.onLog = [&sent](const std::string &line) {
+        if (line.rfind("> ", 0) == 0)
+            sent.push_back(line);
+    };
+    bool finished = false;
+    core.onJobFinished = [&finished](bool ok) { finished = ok; };
+    SimRunner runner(core, port);
+    runner.open();
+    ASSERT_TRUE(runner.runUntil([&] { return core.state().mode == MachineMode::Idle; }, 30));
+    const auto program = programA();
+    ASSERT_FALSE(core.run(program, runner.now()));
+    ASSERT_TRUE(runner.runUntil([&] { return finished; }, 600));
+    const auto end = endOf(program);
+    EXPECT_EQ(port.unit().position(),
+              (std::array<std::int64_t, 4>{end[0], end[1], end[2], end[3]}));
+    EXPECT_EQ(port.unit().stats().motion.vectorsExecuted, vectorsOf(program));
+    ASSERT_FALSE(sent.empty());
+    for (const std::string &line : sent)
+        EXPECT_TRUE(line.find("!0") == std::string::npos &&
+                    (line.find("!3") != std::string::npos || line.find("!7") != std::string::npos))
+            << line;
+}
+
+} // namespace frezka::driver::test
