@@ -525,12 +525,6 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 <context>
     <name>RunLineCli</name>
     <message>
-        <source>usage: frezka-cli run-line --unit ADDRESS:FILE [--unit ADDRESS:FILE]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
-</source>
-        <translation>použití: frezka-cli run-line --unit ADRESA:SOUBOR [--unit ADRESA:SOUBOR]... %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
-</translation>
-    </message>
-    <message>
         <source>frezka-cli run-line: cannot read --unit &apos;%1&apos;: write ADDRESS:FILE with an address 0..6, e.g. --unit 1:part.nc
 </source>
         <translation>frezka-cli run-line: --unit &apos;%1&apos; nelze přečíst: napište ADRESA:SOUBOR s adresou 0..6, např. --unit 1:dil.nc
@@ -556,6 +550,18 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>frezka-cli run-line: %1
 </source>
         <translation>frezka-cli run-line: %1
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</source>
+        <translation>použití: frezka-cli run-line --unit ADRESA:SOUBOR[:PROFIL] [--unit ...]... %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: unit %1: a %2 answers on address 0 only; give it address 0, or use a GVE114 profile (--machine gve114)
+</source>
+        <translation>frezka-cli run-line: jednotka %1: %2 odpovídá jen na adrese 0; dejte jí adresu 0, nebo použijte profil GVE114 (--machine gve114)
 </translation>
     </message>
 </context>

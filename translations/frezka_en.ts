@@ -525,12 +525,6 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 <context>
     <name>RunLineCli</name>
     <message>
-        <source>usage: frezka-cli run-line --unit ADDRESS:FILE [--unit ADDRESS:FILE]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
-</source>
-        <translation>usage: frezka-cli run-line --unit ADDRESS:FILE [--unit ADDRESS:FILE]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
-</translation>
-    </message>
-    <message>
         <source>frezka-cli run-line: cannot read --unit &apos;%1&apos;: write ADDRESS:FILE with an address 0..6, e.g. --unit 1:part.nc
 </source>
         <translation>frezka-cli run-line: cannot read --unit &apos;%1&apos;: write ADDRESS:FILE with an address 0..6, e.g. --unit 1:part.nc
@@ -556,6 +550,18 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>frezka-cli run-line: %1
 </source>
         <translation>frezka-cli run-line: %1
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</source>
+        <translation>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: unit %1: a %2 answers on address 0 only; give it address 0, or use a GVE114 profile (--machine gve114)
+</source>
+        <translation>frezka-cli run-line: unit %1: a %2 answers on address 0 only; give it address 0, or use a GVE114 profile (--machine gve114)
 </translation>
     </message>
 </context>

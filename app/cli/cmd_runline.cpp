@@ -1,14 +1,14 @@
-// frezka-cli run-line --unit ADDR:FILE [--unit ADDR:FILE]... [--machine PROFILE]
+// frezka-cli run-line --unit ADDR:FILE[:PROFILE] [--unit ...]... [--machine PROFILE]
 //                     [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]]
 //                     [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N]
 //                     [--timeout S]
 //
 // Several units on one serial line (GVE114 manual §9.5: further units on the EXT branch
 // cable, each with its own address), each running its own program at the same time: every
-// --unit names a unit's address (0..6) and the program it runs, planned for the profile (the
-// same profile and offsets for every unit). Each unit gets its own MachineCore on the one line
-// (driver/link/sharedline.h): one exchange on the wire at a time, polling and streaming of all
-// units taking turns.
+// --unit names a unit's address (0..6), the program it runs and, optionally, the profile of
+// what it drives (default --machine; the offsets are the same for every unit). Each unit gets its
+// own MachineCore on the one line (driver/link/sharedline.h): one exchange on the wire at a time,
+// polling and streaming of all units taking turns.
 //
 // --port sim (default) runs the in-process emulator with one unit per --unit on one emulated
 // wire, on a virtual clock; --port PATH a real line (gve-emu --units 0:gve114,1:gve114) in real
@@ -29,6 +29,7 @@
 #include "driver/link/sharedline.h"
 #include "driver/link/sharedlineworker.h"
 #include "machine/planner.h"
+#include "protocol/variant.h"
 
 #include <QCoreApplication>
 #include <QEventLoop>
@@ -54,6 +55,7 @@ struct UnitArg
 {
     int address = 0;
     QString file;
+    QString profile; // what the unit drives; empty: --machine
 };
 
 struct Args
@@ -70,7 +72,7 @@ struct Args
 int usage()
 {
     cli::err(RunLineCli::tr(
-                 "usage: frezka-cli run-line --unit ADDRESS:FILE [--unit ADDRESS:FILE]... %1 "
+                 "usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 "
                  "[--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]\n")
                  .arg(cli::programOptionsUsage()));
     return 2;
@@ -97,7 +99,10 @@ bool takeUnit(const QString &value, Args &args)
             return false;
         }
     }
-    args.units.push_back({address, value.mid(colon + 1)});
+    const QString rest = value.mid(colon + 1);
+    const auto second = rest.indexOf(QLatin1Char(':'));
+    args.units.push_back({address, second < 0 ? rest : rest.left(second),
+                          second < 0 ? QString() : rest.mid(second + 1)});
     return true;
 }
 
@@ -156,6 +161,25 @@ std::optional<machine::UnitProgram> planFile(const QString &file, const Args &ar
     return plan.program;
 }
 
+// The unit's profile (its own, else --machine) at the unit's address; only a GVE114 is ordered
+// with another address than 0 (unit.address).
+std::optional<machine::MachineConfig> unitProfile(const UnitArg &unit, const Args &args)
+{
+    auto config = cli::loadProfile(unit.profile.isEmpty() ? args.program.machine : unit.profile);
+    if (!config)
+        return std::nullopt;
+    config->unit.address = unit.address;
+    if (unit.address != 0 && config->unit.variant != protocol::Variant::Gve114) {
+        const auto name = protocol::variantInfo(config->unit.variant).displayName;
+        cli::err(RunLineCli::tr("frezka-cli run-line: unit %1: a %2 answers on address 0 only; "
+                                "give it address 0, or use a GVE114 profile (--machine gve114)\n")
+                     .arg(unit.address)
+                     .arg(QString::fromUtf8(name.data(), static_cast<int>(name.size()))));
+        return std::nullopt;
+    }
+    return config;
+}
+
 // The units on the line: their cores, the arbiter, what became of each job.
 struct Line
 {
@@ -179,7 +203,7 @@ struct Line
     }
 };
 
-void build(Line &l, const Args &args, const machine::MachineConfig &config)
+void build(Line &l, const Args &args, const std::vector<machine::MachineConfig> &configs)
 {
     std::vector<driver::MachineCore *> raw;
     for (std::size_t i = 0; i < args.units.size(); ++i) {
@@ -188,7 +212,7 @@ void build(Line &l, const Args &args, const machine::MachineConfig &config)
         options.link.unitAddress = args.units[i].address;
         if (args.baud > 0)
             options.link.baud = args.baud;
-        auto core = std::make_unique<driver::MachineCore>(config, options);
+        auto core = std::make_unique<driver::MachineCore>(configs[i], options);
         const int address = args.units[i].address;
         core->onError = [address](const driver::MachineError &e) {
             cli::err(RunLineCli::tr("unit %1: %2\n")
@@ -205,7 +229,7 @@ void build(Line &l, const Args &args, const machine::MachineConfig &config)
     }
     l.finished.assign(args.units.size(), -1);
     driver::SharedLineOptions lineOptions;
-    lineOptions.baud = args.baud > 0 ? args.baud : config.link.baud;
+    lineOptions.baud = args.baud > 0 ? args.baud : configs.front().link.baud;
     lineOptions.quietS = args.quietMs / 1000.0;
     l.line = std::make_unique<driver::SharedLine>(raw, lineOptions);
 }
@@ -227,17 +251,17 @@ bool startJobs(Line &l, const std::vector<machine::UnitProgram> &programs, const
 }
 
 bool runSim(Line &l, const std::vector<machine::UnitProgram> &programs, const Args &args,
-            const machine::MachineConfig &config, double &now)
+            const std::vector<machine::MachineConfig> &configs, double &now)
 {
     std::vector<emulator::UnitOptions> units;
     for (std::size_t i = 0; i < args.units.size(); ++i) {
-        emulator::UnitOptions u = driver::unitOptionsFor(config);
+        emulator::UnitOptions u = driver::unitOptionsFor(configs[i]);
         u.address = args.units[i].address;
         u.spindleAddress = i == 0;
         units.push_back(std::move(u));
     }
     driver::WireOptions wire;
-    wire.baud = args.baud > 0 ? args.baud : config.link.baud;
+    wire.baud = args.baud > 0 ? args.baud : configs.front().link.baud;
     wire.latencyS = args.latencyMs / 1000.0;
     driver::EmulatorPort port(std::move(units), wire);
     driver::LineRunner runner(*l.line, port);
@@ -254,9 +278,9 @@ bool runSim(Line &l, const std::vector<machine::UnitProgram> &programs, const Ar
 }
 
 bool runPort(Line &l, const std::vector<machine::UnitProgram> &programs, const Args &args,
-             const machine::MachineConfig &config, double &now)
+             const std::vector<machine::MachineConfig> &configs, double &now)
 {
-    const int baud = args.baud > 0 ? args.baud : config.link.baud;
+    const int baud = args.baud > 0 ? args.baud : configs.front().link.baud;
     driver::SharedLineWorker worker(*l.line, new driver::SerialTransport(args.port, baud));
     QEventLoop loop;
     bool ok = true;
@@ -323,21 +347,21 @@ int runLine(const QStringList &raw)
     Args args;
     if (const int code = parseArgs(raw, args))
         return code;
-    const std::optional<machine::MachineConfig> config = cli::loadProfile(args.program.machine);
-    if (!config)
-        return 1;
+    std::vector<machine::MachineConfig> configs;
     std::vector<machine::UnitProgram> programs;
     for (const UnitArg &u : args.units) {
-        auto program = planFile(u.file, args, *config);
+        auto config = unitProfile(u, args);
+        auto program = config ? planFile(u.file, args, *config) : std::nullopt;
         if (!program)
             return 1;
+        configs.push_back(std::move(*config));
         programs.push_back(std::move(*program));
     }
     Line l;
-    build(l, args, *config);
+    build(l, args, configs);
     double now = 0;
-    const bool ok = args.port == QLatin1String("sim") ? runSim(l, programs, args, *config, now)
-                                                      : runPort(l, programs, args, *config, now);
+    const bool ok = args.port == QLatin1String("sim") ? runSim(l, programs, args, configs, now)
+                                                      : runPort(l, programs, args, configs, now);
     cli::out(QString::fromUtf8(QJsonDocument(report(l, args, now)).toJson(QJsonDocument::Compact)) +
              QLatin1Char('\n'));
     return ok ? 0 : 1;
@@ -348,7 +372,7 @@ int runLine(const QStringList &raw)
 // Registered by hand: the command's name is not an identifier (FREZKA_CLI_COMMAND).
 static const bool frezkaCliRegisteredRunLine = frezka::cli::registerCommand(
     "run-line",
-    {"run-line --unit ADDRESS:FILE [--unit ADDRESS:FILE]... [--machine PROFILE] "
+    {"run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... [--machine PROFILE] "
      "[--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]",
      QT_TRANSLATE_NOOP("frezka::cli",
                        "Run a program on each of several units sharing one serial line"),

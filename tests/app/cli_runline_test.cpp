@@ -97,10 +97,11 @@ void CliRunLineTest::checkUnits(const QJsonObject &report)
 
 void CliRunLineTest::twoJobsOnTheEmulatedLine()
 {
+    // Unit 1 with a profile of its own (the shipped GVE114 one, named per unit).
     const auto r = runCli(QStringLiteral(FREZKA_CLI),
                           QStringList{QStringLiteral("run-line"), QStringLiteral("--unit"),
                                       QStringLiteral("0:") + m_a, QStringLiteral("--unit"),
-                                      QStringLiteral("1:") + m_b} +
+                                      QStringLiteral("1:") + m_b + QStringLiteral(":gve114")} +
                               kProfile);
     QVERIFY2(r.code == 0, qPrintable(r.err + r.out));
     checkUnits(lastJson(r.out));
@@ -157,6 +158,14 @@ void CliRunLineTest::refusesBadUnits()
                {QStringLiteral("run-line"), QStringLiteral("--unit"), QStringLiteral("7:") + m_a});
     QCOMPARE(r.code, 2);
     QVERIFY2(r.err.contains(QStringLiteral("0..6")), qPrintable(r.err));
+    // Only a GVE114 is ordered with another address: a GVE64 profile for unit 1 is refused.
+    r = runCli(QStringLiteral(FREZKA_CLI),
+               QStringList{QStringLiteral("run-line"), QStringLiteral("--unit"),
+                           QStringLiteral("0:") + m_a, QStringLiteral("--unit"),
+                           QStringLiteral("1:") + m_b + QStringLiteral(":gve64")} +
+                   kProfile);
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("address 0 only")), qPrintable(r.err));
 }
 
 QTEST_GUILESS_MAIN(CliRunLineTest)
