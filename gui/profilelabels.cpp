@@ -19,6 +19,7 @@ const Label kKeys[] = {
     {"maxPulseRate", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Maximum pulse rate")},
     {"firmwareVersion", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Firmware version")},
     {"startInput", QT_TRANSLATE_NOOP("frezka::gui::Profile", "START button input (0 = none)")},
+    {"address", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Unit address on the line (0..6)")},
     {"link", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Connection")},
     {"port", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Port")},
     {"baud", QT_TRANSLATE_NOOP("frezka::gui::Profile", "Baud rate")},

@@ -136,6 +136,9 @@ struct Rules
             (c.unit.startInput < 3 || info.variant == protocol::Variant::Gve84))
             fail("unit.startInput", "must be 0 (no START button) or an input 3..7 (GVE64/GVE114 "
                                     "only; the GVE84's inputs are its home switches)");
+        if (c.unit.address != 0 && info.variant != protocol::Variant::Gve114)
+            fail("unit.address", "must be 0: only a GVE114 is ordered with another address (to "
+                                 "share its line with other units)");
         if (c.eeprom.homingInput != 0 && (c.eeprom.homingInput < 3 || !info.hasMpg))
             fail("eeprom.homingInput", "must be 0 (off) or an input 3..7 (GVE64/GVE114 only)");
         if (c.eeprom.aSlavedTo != 0 && info.axisCount < 4)

@@ -98,6 +98,7 @@ void visitProfile(V &v, MachineConfig &c)
         s.integer("maxPulseRate", c.unit.maxPulseRate, 10, 500000, "pulses/s");
         s.integer("firmwareVersion", c.unit.firmwareVersion, 1, 99, "");
         s.integer("startInput", c.unit.startInput, 0, 7, "");
+        s.integer("address", c.unit.address, 0, 6, "");
     });
     v.object("link", [&](V &s) {
         s.text("port", c.link.port);

@@ -59,6 +59,9 @@ struct UnitConfig
     // checked program or resumes a held one; 0 = the machine has none. Active at the level of
     // its bit in eeprom.polarity (0 = active low, the button grounds the input).
     int startInput = 0;
+    // The unit's address on the line, 0..6: fixed when the unit is ordered (GVE114 manual
+    // §13.3, §13.6); other than 0 for a unit that shares its line with others (GVE114 only).
+    int address = 0;
     friend bool operator==(const UnitConfig &, const UnitConfig &) = default;
 };
 

@@ -399,13 +399,17 @@ std::string encodePacket(std::span<const Command> commands, bool checksums)
 {
     if (commands.empty())
         return {};
-    std::string s = encode(cmd::packetStart(), checksums);
+    // *S and *E go to the packet's address (a unit other than 0 on a shared line).
+    Command start = cmd::packetStart();
+    Command end = cmd::packetEnd(static_cast<std::int64_t>(commands.size()));
+    start.address = end.address = commands.front().address;
+    std::string s = encode(start, checksums);
     for (const Command &c : commands) {
         if (!allowedInPacket(c.op))
             return {};
         s += encode(c, checksums);
     }
-    s += encode(cmd::packetEnd(static_cast<std::int64_t>(commands.size())), checksums);
+    s += encode(end, checksums);
     return s;
 }
 

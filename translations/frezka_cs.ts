@@ -523,6 +523,49 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>RunLineCli</name>
+    <message>
+        <source>frezka-cli run-line: cannot read --unit &apos;%1&apos;: write ADDRESS:FILE with an address 0..6, e.g. --unit 1:part.nc
+</source>
+        <translation>frezka-cli run-line: --unit &apos;%1&apos; nelze přečíst: napište ADRESA:SOUBOR s adresou 0..6, např. --unit 1:dil.nc
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: address %1 is given twice: each unit on the line has its own address
+</source>
+        <translation>frezka-cli run-line: adresa %1 je uvedena dvakrát: každá jednotka na lince má vlastní adresu
+</translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>varování: </translation>
+    </message>
+    <message>
+        <source>unit %1: %2
+</source>
+        <translation>jednotka %1: %2
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: %1
+</source>
+        <translation>frezka-cli run-line: %1
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</source>
+        <translation>použití: frezka-cli run-line --unit ADRESA:SOUBOR[:PROFIL] [--unit ...]... %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: unit %1: a %2 answers on address 0 only; give it address 0, or use a GVE114 profile (--machine gve114)
+</source>
+        <translation>frezka-cli run-line: jednotka %1: %2 odpovídá jen na adrese 0; dejte jí adresu 0, nebo použijte profil GVE114 (--machine gve114)
+</translation>
+    </message>
+</context>
+<context>
     <name>SerialTrace</name>
     <message>
         <source>line %1: not an entry (time in ms, then &gt;, &lt; or =, then the bytes): %2</source>
@@ -720,6 +763,10 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</source>
         <translation>Uvedení jednotky do provozu: identifikuje ji, ověří výklady protokolu, změří linku, přečte EEPROM, pak (v terminálu) po dotazu vyzkouší každou osu, spínače, vřeteno, výstupy a referování; zapíše protokol a upravený profil</translation>
+    </message>
+    <message>
+        <source>Run a program on each of several units sharing one serial line</source>
+        <translation>Spustit program na každé z několika jednotek na jedné sériové lince</translation>
     </message>
 </context>
 <context>
@@ -4887,6 +4934,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Subroutine folders (o&lt;name&gt; call of name.ngc; separated by :)</source>
         <translation>Složky podprogramů (o&lt;název&gt; call souboru název.ngc; oddělené :)</translation>
     </message>
+    <message>
+        <source>Unit address on the line (0..6)</source>
+        <translation>Adresa jednotky na lince (0..6)</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ProfileEditor</name>
@@ -6047,6 +6098,18 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>&apos;%1&apos; není řetězec firmwaru jednotky %2</translation>
     </message>
     <message>
+        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
+        <translation>otočení kolečka &apos;%1&apos; nelze přečíst: napište OSA KROK DÍLKY, např. X 10 -5</translation>
+    </message>
+    <message>
+        <source>cannot read the unit &apos;%1&apos; of --units: write ADDRESS:VARIANT with an address 0..6, e.g. 0:gve114,1:gve114</source>
+        <translation>jednotku &apos;%1&apos; ve volbě --units nelze přečíst: napište ADRESA:VARIANTA s adresou 0..6, např. 0:gve114,1:gve114</translation>
+    </message>
+    <message>
+        <source>--units names address %1 twice: give each unit its own address</source>
+        <translation>--units uvádí adresu %1 dvakrát: dejte každé jednotce vlastní adresu</translation>
+    </message>
+    <message>
         <source>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
 The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
@@ -6063,6 +6126,11 @@ Options:
   --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for
                       testing a unit that differs from the adopted reading (4)
   --address N         unit address 0..6 (default 0)
+  --units A:ID,...    several units on the one line, e.g. 0:gve114,1:gve114:
+                      each answers only its address (0..6), all share the wire
+                      and its time; address 7 (the spindle) is the first unit&apos;s
+                      that has one; the other options apply to every unit
+                      (--eeprom FILE keeps unit A&apos;s EEPROM in FILE.A)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
   --seed N            seed of the fault injector (default 1)
@@ -6113,6 +6181,11 @@ Volby:
   --bad-checksum-code N  kód odpovědi 0..7 na příkaz se špatným kontrolním součtem,
                       pro zkoušku jednotky, která se liší od přijatého výkladu (4)
   --address N         adresa jednotky 0..6 (výchozí 0)
+  --units A:ID,...    několik jednotek na jedné lince, např. 0:gve114,1:gve114:
+                      každá odpovídá jen na svou adresu (0..6), všechny sdílejí
+                      vedení a jeho čas; adresa 7 (vřeteno) patří první jednotce,
+                      která ji má; ostatní volby platí pro každou jednotku
+                      (--eeprom SOUBOR uchová EEPROM jednotky A v SOUBOR.A)
   --latency MS        přidané zpoždění v každém směru, milisekundy (výchozí 0)
   --latency-to-unit MS, --latency-to-pc MS   totéž pro jeden směr
   --seed N            semínko generátoru poruch (výchozí 1)
@@ -6147,10 +6220,6 @@ Volby:
   --help              tento text
   --version           verze
 </translation>
-    </message>
-    <message>
-        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
-        <translation>otočení kolečka &apos;%1&apos; nelze přečíst: napište OSA KROK DÍLKY, např. X 10 -5</translation>
     </message>
 </context>
 <context>

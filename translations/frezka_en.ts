@@ -523,6 +523,49 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>RunLineCli</name>
+    <message>
+        <source>frezka-cli run-line: cannot read --unit &apos;%1&apos;: write ADDRESS:FILE with an address 0..6, e.g. --unit 1:part.nc
+</source>
+        <translation>frezka-cli run-line: cannot read --unit &apos;%1&apos;: write ADDRESS:FILE with an address 0..6, e.g. --unit 1:part.nc
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: address %1 is given twice: each unit on the line has its own address
+</source>
+        <translation>frezka-cli run-line: address %1 is given twice: each unit on the line has its own address
+</translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>warning: </translation>
+    </message>
+    <message>
+        <source>unit %1: %2
+</source>
+        <translation>unit %1: %2
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: %1
+</source>
+        <translation>frezka-cli run-line: %1
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</source>
+        <translation>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: unit %1: a %2 answers on address 0 only; give it address 0, or use a GVE114 profile (--machine gve114)
+</source>
+        <translation>frezka-cli run-line: unit %1: a %2 answers on address 0 only; give it address 0, or use a GVE114 profile (--machine gve114)
+</translation>
+    </message>
+</context>
+<context>
     <name>SerialTrace</name>
     <message>
         <source>line %1: not an entry (time in ms, then &gt;, &lt; or =, then the bytes): %2</source>
@@ -720,6 +763,10 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</source>
         <translation>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</translation>
+    </message>
+    <message>
+        <source>Run a program on each of several units sharing one serial line</source>
+        <translation>Run a program on each of several units sharing one serial line</translation>
     </message>
 </context>
 <context>
@@ -4880,6 +4927,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Subroutine folders (o&lt;name&gt; call of name.ngc; separated by :)</source>
         <translation>Subroutine folders (o&lt;name&gt; call of name.ngc; separated by :)</translation>
     </message>
+    <message>
+        <source>Unit address on the line (0..6)</source>
+        <translation>Unit address on the line (0..6)</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::ProfileEditor</name>
@@ -6034,6 +6085,18 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>&apos;%1&apos; is not a firmware string of the %2</translation>
     </message>
     <message>
+        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
+        <translation>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</translation>
+    </message>
+    <message>
+        <source>cannot read the unit &apos;%1&apos; of --units: write ADDRESS:VARIANT with an address 0..6, e.g. 0:gve114,1:gve114</source>
+        <translation>cannot read the unit &apos;%1&apos; of --units: write ADDRESS:VARIANT with an address 0..6, e.g. 0:gve114,1:gve114</translation>
+    </message>
+    <message>
+        <source>--units names address %1 twice: give each unit its own address</source>
+        <translation>--units names address %1 twice: give each unit its own address</translation>
+    </message>
+    <message>
         <source>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
 The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
@@ -6050,6 +6113,11 @@ Options:
   --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for
                       testing a unit that differs from the adopted reading (4)
   --address N         unit address 0..6 (default 0)
+  --units A:ID,...    several units on the one line, e.g. 0:gve114,1:gve114:
+                      each answers only its address (0..6), all share the wire
+                      and its time; address 7 (the spindle) is the first unit&apos;s
+                      that has one; the other options apply to every unit
+                      (--eeprom FILE keeps unit A&apos;s EEPROM in FILE.A)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
   --seed N            seed of the fault injector (default 1)
@@ -6100,6 +6168,11 @@ Options:
   --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for
                       testing a unit that differs from the adopted reading (4)
   --address N         unit address 0..6 (default 0)
+  --units A:ID,...    several units on the one line, e.g. 0:gve114,1:gve114:
+                      each answers only its address (0..6), all share the wire
+                      and its time; address 7 (the spindle) is the first unit&apos;s
+                      that has one; the other options apply to every unit
+                      (--eeprom FILE keeps unit A&apos;s EEPROM in FILE.A)
   --latency MS        added delay each way, milliseconds (default 0)
   --latency-to-unit MS, --latency-to-pc MS   the same for one direction
   --seed N            seed of the fault injector (default 1)
@@ -6134,10 +6207,6 @@ Options:
   --help              this text
   --version           the version
 </translation>
-    </message>
-    <message>
-        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
-        <translation>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</translation>
     </message>
 </context>
 <context>

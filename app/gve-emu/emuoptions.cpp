@@ -55,6 +55,63 @@ bool parseRate(const QString &text, double &out)
     return true;
 }
 
+// --units A:ID,... -> the units of the shared line, each a copy of `base` with its address and
+// variant; address 7 for the first that has a spindle output.
+bool parseUnits(const QString &spec, emulator::SimulationOptions &sim, QString &error)
+{
+    const emulator::UnitOptions base = sim.unit;
+    std::vector<emulator::UnitOptions> units;
+    bool spindleTaken = false;
+    for (const QString &item : spec.split(QLatin1Char(','))) {
+        const QStringList parts = item.split(QLatin1Char(':'));
+        bool ok = parts.size() == 2;
+        const int address = ok ? parts[0].toInt(&ok) : -1;
+        const auto variant = ok ? protocol::variantFromId(parts[1].toStdString()) : std::nullopt;
+        if (!ok || address < 0 || address > 6 || !variant) {
+            error = tr("cannot read the unit '%1' of --units: write ADDRESS:VARIANT with an "
+                       "address 0..6, e.g. 0:gve114,1:gve114")
+                        .arg(item);
+            return false;
+        }
+        for (const auto &other : units) {
+            if (other.address == address) {
+                error = tr("--units names address %1 twice: give each unit its own address")
+                            .arg(address);
+                return false;
+            }
+        }
+        emulator::UnitOptions u = base;
+        u.address = address;
+        u.variant = *variant;
+        u.spindleAddress = !spindleTaken && protocol::variantInfo(*variant).hasSpindleAddress7;
+        spindleTaken = spindleTaken || u.spindleAddress;
+        if (!base.eepromFile.empty())
+            u.eepromFile = base.eepromFile + "." + std::to_string(address);
+        units.push_back(std::move(u));
+    }
+    sim.unit = units.front();
+    sim.moreUnits.assign(units.begin() + 1, units.end());
+    return true;
+}
+
+// Every unit of a shared line hears the line's one speed (GVE114 manual §9.5).
+bool checkLineBaud(const emulator::SimulationOptions &sim, QString &error)
+{
+    std::vector<emulator::UnitOptions> units{sim.unit};
+    units.insert(units.end(), sim.moreUnits.begin(), sim.moreUnits.end());
+    for (const auto &u : units) {
+        const auto &info = protocol::variantInfo(u.variant);
+        if (std::find(info.bauds.begin(), info.bauds.end(), sim.wire.baud) == info.bauds.end()) {
+            error =
+                tr("%1 Bd is not a baud rate of the %2")
+                    .arg(sim.wire.baud)
+                    .arg(QString::fromUtf8(info.displayName.data(), int(info.displayName.size())));
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace
 
 QString emuHelpText()
@@ -76,6 +133,11 @@ QString emuHelpText()
         "  --bad-checksum-code N  reply code 0..7 to a command with a wrong checksum, for\n"
         "                      testing a unit that differs from the adopted reading (4)\n"
         "  --address N         unit address 0..6 (default 0)\n"
+        "  --units A:ID,...    several units on the one line, e.g. 0:gve114,1:gve114:\n"
+        "                      each answers only its address (0..6), all share the wire\n"
+        "                      and its time; address 7 (the spindle) is the first unit's\n"
+        "                      that has one; the other options apply to every unit\n"
+        "                      (--eeprom FILE keeps unit A's EEPROM in FILE.A)\n"
         "  --latency MS        added delay each way, milliseconds (default 0)\n"
         "  --latency-to-unit MS, --latency-to-pc MS   the same for one direction\n"
         "  --seed N            seed of the fault injector (default 1)\n"
@@ -119,6 +181,7 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
     auto &unit = options.simulation.unit;
     auto &wire = options.simulation.wire;
     int baud = 0;
+    QString units;                    // --units, applied after the options every unit shares
     unit.surface.contactHigh = false; // the shipped profiles' IN15 polarity (EEPROM ST3 bit 7)
     for (int i = 0; i < args.size(); ++i) {
         const QString &a = args.at(i);
@@ -154,6 +217,8 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
         } else if (a == QLatin1String("--address")) {
             unit.address = v.toInt(&ok);
             ok = ok && unit.address >= 0 && unit.address <= 6;
+        } else if (a == QLatin1String("--units")) {
+            units = v;
         } else if (a == QLatin1String("--latency") || a == QLatin1String("--latency-to-unit") ||
                    a == QLatin1String("--latency-to-pc")) {
             const double ms = v.toDouble(&ok);
@@ -223,14 +288,12 @@ bool parseEmuOptions(const QStringList &args, EmuOptions &options, QString &erro
             return false;
         }
     }
+    if (!units.isEmpty() && !parseUnits(units, options.simulation, error))
+        return false;
     const auto &info = variantInfo(unit.variant);
     wire.baud = baud ? baud : info.defaultBaud;
-    if (std::find(info.bauds.begin(), info.bauds.end(), wire.baud) == info.bauds.end()) {
-        error = tr("%1 Bd is not a baud rate of the %2")
-                    .arg(wire.baud)
-                    .arg(QString::fromUtf8(info.displayName.data(), int(info.displayName.size())));
+    if (!checkLineBaud(options.simulation, error))
         return false;
-    }
     if (unit.maxPulseRate != 0 && std::find(info.maxPulseRates.begin(), info.maxPulseRates.end(),
                                             unit.maxPulseRate) == info.maxPulseRates.end()) {
         error = tr("%1 pulses/s is not an orderable rate of the %2")

@@ -140,7 +140,7 @@ void Unit::Impl::lineComplete()
         return;
     }
     const int address = line[0] - '0';
-    if (address != options.address && !(address == 7 && info->hasSpindleAddress7))
+    if (address != options.address && !(address == 7 && answersSpindle()))
         return; // another unit on the line answers this one
     ++stats.commands;
     if (lineOverlong) {
@@ -236,7 +236,7 @@ double Unit::Impl::watchdogAt() const
 {
     if (rx == Rx::InLine && !line.empty()) {
         const int address = line[0] - '0';
-        if (address == options.address || (address == 7 && info->hasSpindleAddress7))
+        if (address == options.address || (address == 7 && answersSpindle()))
             return lineStart + readings::kWatchdogSeconds;
         return kNever;
     }

@@ -50,7 +50,10 @@ struct EepromPreset
 struct UnitOptions
 {
     protocol::Variant variant = protocol::Variant::Gve64;
-    int address = 0;      // 0..7; address 7 is the spindle on GVE64/114
+    int address = 0; // 0..7; address 7 is the spindle on GVE64/114
+    // Whether the unit answers address 7 (its spindle output, GVE64/114). On a line shared by
+    // several units (Simulation with more units) only the unit that has the spindle does.
+    bool spindleAddress = true;
     int maxPulseRate = 0; // pulses/s; 0 = the variant's default
     std::vector<PositionSwitch> switches{};
     std::string eepromFile{}; // "" = not persisted; else loaded at start, saved on write

@@ -111,6 +111,8 @@ struct Unit::Impl
     void feed(char c);
     void lineComplete();
     void handleLine(int address, std::string_view body);
+    // Address 7 is this unit's: the variant has it and the unit has the line's spindle.
+    bool answersSpindle() const { return info->hasSpindleAddress7 && options.spindleAddress; }
     void sendReply(const Reply &r);
     std::string formatReply(const Reply &r) const;
     void advanceBy(double seconds);

@@ -11,6 +11,7 @@ emulator::UnitOptions unitOptionsFor(const machine::MachineConfig &config)
     emulator::UnitOptions o;
     o.variant = config.unit.variant;
     o.maxPulseRate = config.unit.maxPulseRate;
+    o.address = config.unit.address;
     for (int a = 0; a < 4; ++a) {
         const machine::AxisConfig &ax = config.axes[static_cast<std::size_t>(a)];
         if (!ax.present || ax.homing.order <= 0)
@@ -52,6 +53,19 @@ emulator::WireOptions emulatorWireOptions(const WireOptions &wire)
 
 EmulatorPort::EmulatorPort(emulator::UnitOptions unit, WireOptions wire)
     : m_sim(emulator::SimulationOptions{std::move(unit), emulatorWireOptions(wire)})
+{}
+
+namespace {
+emulator::SimulationOptions lineOf(std::vector<emulator::UnitOptions> units, WireOptions wire)
+{
+    emulator::SimulationOptions o{std::move(units.front()), emulatorWireOptions(wire), {}};
+    o.moreUnits.assign(units.begin() + 1, units.end());
+    return o;
+}
+} // namespace
+
+EmulatorPort::EmulatorPort(std::vector<emulator::UnitOptions> units, WireOptions wire)
+    : m_sim(lineOf(std::move(units), wire))
 {}
 
 WireStats EmulatorPort::wireStats() const

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace frezka::driver {
 
@@ -52,6 +53,8 @@ class EmulatorPort : public VirtualPort
 {
 public:
     EmulatorPort(emulator::UnitOptions unit, WireOptions wire);
+    // Several units on the one line (a shared line, emulator::Simulation's moreUnits).
+    EmulatorPort(std::vector<emulator::UnitOptions> units, WireOptions wire);
 
     void write(std::string_view bytes) override
     {
@@ -66,6 +69,7 @@ public:
     void advance(double seconds) override { m_sim.advance(seconds); }
 
     emulator::Unit &unit() { return m_sim.unit(); }
+    emulator::Simulation &simulation() { return m_sim; }
     WireStats wireStats() const;
 
     // Test hook: rewrites what the PC writes before it enters the line, e.g. to damage a command

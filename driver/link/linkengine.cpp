@@ -91,33 +91,61 @@ std::string LinkEngine::takeOutput()
     return out;
 }
 
+Command LinkEngine::routed(Command c) const
+{
+    if (c.address == 0)
+        c.address = static_cast<std::uint8_t>(m_options.unitAddress);
+    return c;
+}
+
 void LinkEngine::start(const Command &command, double now, std::uint64_t tag)
 {
-    m_commands = {command};
+    m_commands = {routed(command)};
     m_packet = false;
     m_syncing = false;
     m_tag = tag;
     m_attempts = m_resent = m_recovered = 0;
-    beginTransaction(now);
+    beginOrWait(now);
 }
 
 void LinkEngine::startPacket(std::vector<Command> commands, double now, std::uint64_t tag)
 {
+    for (Command &c : commands)
+        c = routed(std::move(c));
     m_commands = std::move(commands);
     m_packet = true;
     m_syncing = false;
     m_tag = tag;
     m_attempts = m_resent = m_recovered = 0;
-    beginTransaction(now);
+    beginOrWait(now);
 }
 
 void LinkEngine::syncIndex(double now, std::uint64_t tag)
 {
-    m_commands = {cmd::index()};
+    m_commands = {routed(cmd::index())};
     m_packet = false;
     m_syncing = true;
     m_tag = tag;
     m_attempts = m_resent = m_recovered = 0;
+    beginOrWait(now);
+}
+
+void LinkEngine::beginOrWait(double now)
+{
+    if (m_options.sharedLine) {
+        m_state = State::AwaitGrant;
+        m_deadline = kNoDeadline;
+        return;
+    }
+    grantLine(now);
+}
+
+void LinkEngine::grantLine(double now)
+{
+    if (!m_syncing) {
+        beginTransaction(now);
+        return;
+    }
     m_indexBefore = m_index;
     ++m_stats.transactions;
     transmitMain(now);
@@ -144,7 +172,7 @@ void LinkEngine::transmitMain(double now)
     m_doubtfulSeen = false;
     m_wire = m_packet ? encodePacket(m_commands, m_checksums) : encode(m_commands[0], m_checksums);
     if (m_packet && m_options.doublePacketStart)
-        m_wire = encode(cmd::packetStart(), m_checksums) + m_wire;
+        m_wire = encode(routed(cmd::packetStart()), m_checksums) + m_wire;
     m_out += m_wire;
     m_stats.bytesOut += static_cast<std::int64_t>(m_wire.size());
     log(LinkLogKind::Sent, m_packet ? describe() : encodeBody(m_commands[0]));
@@ -152,8 +180,9 @@ void LinkEngine::transmitMain(double now)
     m_deadline = now + timeoutFor(mainCommand(), m_wire.size(), now);
 }
 
-void LinkEngine::sendAux(const Command &c, State next, double now, LinkLogKind kind)
+void LinkEngine::sendAux(const Command &command, State next, double now, LinkLogKind kind)
 {
+    const Command c = routed(command);
     const std::string bytes = encode(c, m_checksums);
     m_out += bytes;
     m_stats.bytesOut += static_cast<std::int64_t>(bytes.size());
@@ -179,6 +208,7 @@ void LinkEngine::handleLine(const Line &line, double now)
     }
     switch (m_state) {
     case State::Idle:
+    case State::AwaitGrant:
     case State::Settle:
         ++m_stats.noiseLines;
         log(LinkLogKind::Noise, line.text);
@@ -267,6 +297,7 @@ void LinkEngine::onTime(double now)
         return;
     switch (m_state) {
     case State::Idle:
+    case State::AwaitGrant:
         m_deadline = kNoDeadline;
         return;
     case State::AwaitReply:

@@ -60,6 +60,12 @@ struct LinkOptions
     // second *S inside an open packet merely restarts it. The connect sequence tests that the
     // unit accepts it and switches it off otherwise.
     bool doublePacketStart = true;
+    // The unit's address on the line (0..6; GVE114 manual §9.5, ordered with the unit): every
+    // command for address 0 goes to it instead (address 7, the spindle, stays 7).
+    int unitAddress = 0;
+    // The line is shared with other units (sharedline.h): a transaction waits, without
+    // sending anything, until grantLine() gives it the line; it holds the line until it ends.
+    bool sharedLine = false;
     friend bool operator==(const LinkOptions &, const LinkOptions &) = default;
 };
 
@@ -122,6 +128,14 @@ public:
     // desynchronisation). Outcome: the '@' reply.
     void syncIndex(double now, std::uint64_t tag = 0);
 
+    // ---- a shared line (LinkOptions::sharedLine)
+    // A transaction waits for the line (nothing sent yet).
+    bool wantsLine() const { return m_state == State::AwaitGrant; }
+    // Starts the waiting transaction: its bytes go out now.
+    void grantLine(double now);
+    // The commands of the transaction in flight (or waiting), for the shared line's log.
+    std::size_t commandsInFlight() const { return m_commands.size(); }
+
     // ---- I/O
     void receive(std::string_view bytes, double now);
     void onTime(double now);
@@ -152,9 +166,20 @@ public:
     std::function<void(LinkLogKind, const std::string &)> onLog;
 
 private:
-    enum class State : std::uint8_t { Idle, AwaitReply, Settle, AwaitIndex, AwaitRepeat };
+    enum class State : std::uint8_t {
+        Idle,
+        AwaitGrant,
+        AwaitReply,
+        Settle,
+        AwaitIndex,
+        AwaitRepeat
+    };
 
     void beginTransaction(double now);
+    // The transaction starts now, or waits for the shared line (grantLine).
+    void beginOrWait(double now);
+    // The command as it goes to this unit: address 0 becomes LinkOptions::unitAddress.
+    protocol::Command routed(protocol::Command c) const;
     void transmitMain(double now);
     void sendAux(const protocol::Command &c, State next, double now,
                  LinkLogKind kind = LinkLogKind::Recovery);

@@ -12,10 +12,20 @@ namespace frezka::driver {
 
 using namespace frezka::protocol;
 
+namespace {
+// The unit's address: the caller's (a shared line), else the profile's.
+LinkOptions linkOptionsFor(LinkOptions link, const machine::MachineConfig &config)
+{
+    if (link.unitAddress == 0)
+        link.unitAddress = config.unit.address;
+    return link;
+}
+} // namespace
+
 MachineCore::MachineCore(machine::MachineConfig config, CoreOptions options)
     : m_config(std::move(config))
     , m_options(options)
-    , m_engine(options.link)
+    , m_engine(linkOptionsFor(options.link, m_config))
 {
     if (m_options.link.baud <= 0)
         m_engine.setBaud(m_config.link.baud);

@@ -83,6 +83,14 @@ public:
     void onTime(double now);
     double deadline() const;
     std::string takeOutput() { return m_engine.takeOutput(); }
+    // ---- a line shared with other units (LinkOptions::sharedLine; SharedLine grants it)
+    bool wantsLine() const { return m_engine.wantsLine(); }
+    bool holdsLine() const { return !m_engine.idle() && !m_engine.wantsLine(); }
+    void grantLine(double now)
+    {
+        m_now = now;
+        m_engine.grantLine(now);
+    }
 
     // ---- operations. Each returns nullopt when accepted, else why not (state unchanged).
     using Result = std::optional<MachineError>;

@@ -332,3 +332,25 @@ TEST(MachineConfig, Gve114BaudRangeIsInTheEepromImage)
     EXPECT_EQ(eepromValue(c, 0x0D), -1);
     EXPECT_EQ(eepromValue(defaultMachineConfig(protocol::Variant::Gve64), 0x0D), -1);
 }
+
+// unit.address: the unit's address on a shared line (GVE114 only), read, written, range-checked.
+TEST(MachineConfig, UnitAddressIsReadWrittenAndChecked)
+{
+    const ConfigResult r = parseMachineConfig(
+        R"({"unit": {"variant": "gve114", "maxPulseRate": 125000, "address": 3}})");
+    ASSERT_TRUE(r.config.has_value()) << errorsText(r);
+    EXPECT_EQ(r.config->unit.address, 3);
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("m.json").toStdString();
+    ASSERT_FALSE(saveMachineConfig(*r.config, path).has_value());
+    const ConfigResult back = loadMachineConfig(path);
+    ASSERT_TRUE(back.config.has_value()) << errorsText(back);
+    EXPECT_EQ(back.config->unit.address, 3);
+    const ConfigResult far = parseMachineConfig(R"({"unit": {"variant": "gve114", "address": 7}})");
+    ASSERT_FALSE(far.errors.empty());
+    EXPECT_NE(errorsText(far).find("unit.address: is 7, must be 0 .. 6"), std::string::npos)
+        << errorsText(far);
+    const ConfigResult gve64 = parseMachineConfig(R"({"unit": {"address": 1}})");
+    EXPECT_TRUE(hasError(gve64, ConfigErrorCode::Inconsistent, "unit.address"))
+        << errorsText(gve64);
+}

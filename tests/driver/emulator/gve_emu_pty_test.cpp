@@ -39,6 +39,7 @@ private slots:
     void surfaceTouchesTheProbe();
     void wheelFromStdinMovesByTheEeprom();
     void comSwitchSetsTheLineSpeed();
+    void twoUnitsShareOnePty();
 
 private:
     QByteArray ask(const QByteArray &command);
@@ -299,6 +300,35 @@ void GveEmuPtyTest::comSwitchSetsTheLineSpeed()
     QCOMPARE(ask("!0Q\r"), QByteArray("0,25020304\r")); // OFF ON = 38 400 Bd
     // A client at another speed is not heard: tests/driver/link/eeprom_outputs_test.cpp (the
     // same Simulation, where silence can be asserted without waiting on a clock).
+}
+
+// --units: two GVE114 on one pty, each answering only its address, with its own counters and
+// index; address 7 is the first unit's; an address nobody has gets no reply.
+void GveEmuPtyTest::twoUnitsShareOnePty()
+{
+    start({QStringLiteral("--units"), QStringLiteral("0:gve114,1:gve114")});
+    QCOMPARE(ask("!0Y-\r"), QByteArray("0,Y-\r"));
+    QCOMPARE(ask("!1Y-\r"), QByteArray("0,Y-\r"));
+    QCOMPARE(ask("!1L0,-300,0\r"), QByteArray("0\r"));
+    QCOMPARE(ask("!0L500,0,0\r"), QByteArray("0\r"));
+    QElapsedTimer clock;
+    clock.start();
+    while (ask("!0L0,0,0\r") != "0\r" || ask("!1L0,0,0\r") != "0\r") {
+        QVERIFY(clock.elapsed() < kPatienceMs);
+        QTest::qWait(10);
+    }
+    QCOMPARE(ask("!0P4\r"), QByteArray("0,500,0,0,0\r"));
+    QCOMPARE(ask("!1P4\r"), QByteArray("0,0,-300,0,0\r"));
+    QCOMPARE(ask("!7V250\r"), QByteArray("0\r")); // one reply: only unit 0 has address 7
+    m_port->write("!4?\r");                       // nobody: no reply, the next is answered
+    QCOMPARE(ask("!1Q\r"), QByteArray("0,16091801\r"));
+    QVERIFY(m_rx.isEmpty());
+    QProcess p;
+    p.start(QStringLiteral(GVE_EMU_PATH),
+            {QStringLiteral("--units"), QStringLiteral("0:gve114,0:gve114")});
+    QVERIFY(p.waitForFinished(kPatienceMs));
+    QCOMPARE(p.exitCode(), 2);
+    QVERIFY(p.readAllStandardError().contains("twice"));
 }
 
 QTEST_GUILESS_MAIN(GveEmuPtyTest)
