@@ -7,10 +7,10 @@
 
 namespace frezka::machine {
 
-const Steps4 &plannedBefore(const UnitProgram &program, std::size_t index)
+Steps4 plannedBefore(const UnitProgram &program, std::size_t index)
 {
     return index == 0 ? program.startSteps
-                      : program.commands[std::min(index, program.commands.size()) - 1].endSteps;
+                      : program.commands.endSteps(std::min(index, program.commands.size()) - 1);
 }
 
 bool sameSteps(const Steps4 &a, const Steps4 &b, int axes)

@@ -16,7 +16,7 @@ namespace frezka::machine {
 
 // The planned position before program command `index` (after the motion before it; an index
 // past the end: the program's end).
-const Steps4 &plannedBefore(const UnitProgram &program, std::size_t index);
+Steps4 plannedBefore(const UnitProgram &program, std::size_t index);
 
 // Whether the first `axes` counters of a and b are equal.
 bool sameSteps(const Steps4 &a, const Steps4 &b, int axes);

@@ -330,7 +330,7 @@ void Planner::reserveCommands(const detail::RunOutcome &run)
         speed = v.speed;
         brake = v.line ? brake : v.brake;
     }
-    std::vector<UnitCommand> &commands = m_result.program.commands;
+    UnitCommands &commands = m_result.program.commands;
     const std::size_t needed = commands.size() + count + 1;
     if (needed > commands.capacity())
         commands.reserve(std::max(needed, commands.capacity() + commands.capacity() / 2));

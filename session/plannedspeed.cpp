@@ -36,12 +36,17 @@ std::vector<SpeedSample> decimateSpeed(const std::vector<SpeedSample> &in, std::
     return out;
 }
 
-std::vector<SpeedSample> plannedSpeed(const machine::UnitProgram &program,
-                                      const machine::MachineConfig &config, bool speedModeVk)
+namespace {
+
+// Calls sample(s) for each planned speed sample in order: three a vector (its start at the
+// speed before it, its middle at V, its end at the brake speed or 0).
+template<typename Sample>
+void forEachSpeedSample(const machine::UnitProgram &program, const machine::MachineConfig &config,
+                        bool speedModeVk, Sample &&sample)
 {
-    std::vector<SpeedSample> out;
-    double distance = 0;
+    double distance = 0, last = 0;
     double v = 0, b = 0; // pulses/s
+    bool any = false;
     for (const auto &c : program.commands) {
         using Op = machine::UnitOp;
         if (c.op == Op::Speed) {
@@ -63,12 +68,73 @@ std::vector<SpeedSample> plannedSpeed(const machine::UnitProgram &program,
                 continue;
             const double toMmPerMin = lengthMm / stepLength * 60.0;
             const bool continuous = c.op == Op::Vector;
-            out.push_back({distance, out.empty() ? 0.0 : out.back().speedMmPerMin, c.sourceLine});
-            out.push_back({distance + lengthMm / 2, v * toMmPerMin, c.sourceLine});
+            sample(SpeedSample{distance, any ? last : 0.0, c.sourceLine});
+            sample(SpeedSample{distance + lengthMm / 2, v * toMmPerMin, c.sourceLine});
             distance += lengthMm;
-            out.push_back({distance, continuous ? std::min(v, b) * toMmPerMin : 0.0, c.sourceLine});
+            last = continuous ? std::min(v, b) * toMmPerMin : 0.0;
+            sample(SpeedSample{distance, last, c.sourceLine});
+            any = true;
         }
     }
+}
+
+} // namespace
+
+std::vector<SpeedSample> plannedSpeed(const machine::UnitProgram &program,
+                                      const machine::MachineConfig &config, bool speedModeVk)
+{
+    std::vector<SpeedSample> out;
+    forEachSpeedSample(program, config, speedModeVk,
+                       [&out](const SpeedSample &s) { out.push_back(s); });
+    return out;
+}
+
+// The buckets and the choice in each are decimateSpeed's, sample for sample: bucket b holds the
+// samples [b per, (b + 1) per), its minimum is the first smallest and its maximum the last
+// largest (std::minmax_element), and the samples past the last bucket are left out.
+std::vector<SpeedSample> plannedSpeedDecimated(const machine::UnitProgram &program,
+                                               const machine::MachineConfig &config,
+                                               bool speedModeVk, std::size_t maxPoints)
+{
+    std::size_t total = 0;
+    forEachSpeedSample(program, config, speedModeVk, [&total](const SpeedSample &) { ++total; });
+    if (total <= maxPoints || maxPoints < 4)
+        return plannedSpeed(program, config, speedModeVk);
+    std::vector<SpeedSample> out;
+    out.reserve(maxPoints);
+    const std::size_t buckets = maxPoints / 2;
+    const double per = double(total) / double(buckets);
+    const auto bucketEnd = [&](std::size_t b) {
+        return std::min(total, std::size_t(double(b + 1) * per));
+    };
+    std::size_t bucket = 0, to = bucketEnd(0), index = 0, count = 0;
+    SpeedSample lo, hi;
+    std::size_t loAt = 0, hiAt = 0;
+    const auto close = [&] {
+        if (count == 0)
+            return;
+        const bool loFirst = lo.distanceMm <= hi.distanceMm;
+        out.push_back(loFirst ? lo : hi);
+        if (loAt != hiAt)
+            out.push_back(loFirst ? hi : lo);
+    };
+    forEachSpeedSample(program, config, speedModeVk, [&](const SpeedSample &s) {
+        const std::size_t i = index++;
+        while (bucket < buckets && i >= to) {
+            close();
+            count = 0;
+            to = ++bucket < buckets ? bucketEnd(bucket) : 0;
+        }
+        if (bucket >= buckets || i < std::size_t(double(bucket) * per))
+            return;
+        if (count == 0 || s.speedMmPerMin < lo.speedMmPerMin)
+            lo = s, loAt = i;
+        if (count == 0 || !(s.speedMmPerMin < hi.speedMmPerMin))
+            hi = s, hiAt = i;
+        ++count;
+    });
+    if (bucket < buckets)
+        close();
     return out;
 }
 

@@ -86,8 +86,7 @@ void planLoaded(const LoadJob &job, LoadedProgram &result, StageClock &clock)
     if (!plan.ok())
         return;
     result.estimatedS = plan.stats.estimatedS;
-    result.speed =
-        decimateSpeed(plannedSpeed(*plan.program, *job.profile, plan.stats.speedModeVk), 4000);
+    result.speed = plannedSpeedDecimated(*plan.program, *job.profile, plan.stats.speedModeVk, 4000);
     clock.done("planned speed (plot)");
     result.lineEndS =
         plannedLineTimes(*plan.program, plan.stats.speedModeVk, plan.stats.estimatedS);

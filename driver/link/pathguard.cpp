@@ -27,7 +27,7 @@ void PathGuard::reset()
     m_pathFault = m_off = false;
 }
 
-const machine::Steps4 &PathGuard::plannedBefore(std::size_t index) const
+machine::Steps4 PathGuard::plannedBefore(std::size_t index) const
 {
     return machine::plannedBefore(m_job.program(), index);
 }
@@ -104,16 +104,18 @@ void PathGuard::holdOrReturn()
 {
     const auto &cmds = m_job.program().commands;
     const std::size_t g = std::min(m_verified, cmds.size());
-    const machine::UnitCommand *at = cmds.empty() ? nullptr : &cmds[std::min(g, cmds.size() - 1)];
+    const bool any = !cmds.empty();
+    const machine::UnitCommand at =
+        any ? cmds[std::min(g, cmds.size() - 1)] : machine::UnitCommand{};
     const DriverMessage text{DriverCode::OffPath,
-                             {m_faultText, at ? detail::lineArg(*at) : std::string("setup")}};
+                             {m_faultText, any ? detail::lineArg(at) : std::string("setup")}};
     if (m_host.options().returnToPathAutomatically) {
         m_host.log(englishText(text, true));
         m_return.start(1);
         return;
     }
     MachineState &state = m_host.liveState();
-    detail::setHold(state, HoldReason::PathFault, text, at ? at->sourceLine : 0);
+    detail::setHold(state, HoldReason::PathFault, text, any ? at.sourceLine : 0);
     m_host.fail(text, nullptr, MachineMode::Paused);
 }
 

@@ -45,7 +45,7 @@ public:
     // Commands before it ran as planned (the unit was seen on the path at or after its start).
     std::size_t verified() const { return m_verified; }
     // The planned position before program command `index` (after the motion before it).
-    const machine::Steps4 &plannedBefore(std::size_t index) const;
+    machine::Steps4 plannedBefore(std::size_t index) const;
     // Whether the polled position lies on the planned path between the last verified command
     // and the last one sent; moves verified() to the first segment that holds it.
     bool onPlannedPath();

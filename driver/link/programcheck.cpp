@@ -38,8 +38,7 @@ std::optional<MachineError> checkProgram(machine::UnitProgram &program, const Ma
             return refusal(DriverCode::ProgramNeedsVk,
                            {detail::lineArg(*vk), std::to_string(state.firmwareVersion)});
         const auto before = cmds.size();
-        std::erase_if(cmds,
-                      [](const machine::UnitCommand &c) { return c.op == UnitOp::SpeedModeVn; });
+        erase_if(cmds, [](const machine::UnitCommand &c) { return c.op == UnitOp::SpeedModeVn; });
         if (cmds.size() != before)
             *note = "VN not sent: firmware v" + std::to_string(state.firmwareVersion) +
                     " has no speed modes and always runs as VN";

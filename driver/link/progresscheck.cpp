@@ -59,8 +59,8 @@ void ProgressCheck::matchProgress()
     JobCursor &cursor = m_job.cursor();
     const std::size_t hi = std::min(std::max(cursor.inflightEnd, cursor.next), cmds.size());
     std::size_t lo = cursor.next;
-    auto endOf = [&](std::size_t j) -> const machine::Steps4 & {
-        return j == 0 ? program.startSteps : cmds[j - 1].endSteps;
+    auto endOf = [&](std::size_t j) -> machine::Steps4 {
+        return j == 0 ? program.startSteps : cmds.endSteps(j - 1);
     };
     std::vector<std::size_t> matches;
     for (std::size_t j = lo; j <= hi; ++j) {

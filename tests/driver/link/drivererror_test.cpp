@@ -248,8 +248,8 @@ private slots:
         refusals.push_back(sim.core.sendRaw("V5", now).value_or(MachineError{}));
         refusals.push_back(sim.core.sendRaw("V1x", now).value_or(MachineError{}));
         machine::UnitProgram bad = test::slowProgram(3);
-        bad.commands.insert(bad.commands.begin(), {.op = machine::UnitOp::Speed, .value = 5});
-        bad.commands.front().sourceLine = 7;
+        bad.commands.insert(bad.commands.begin(),
+                            {.op = machine::UnitOp::Speed, .value = 5, .sourceLine = 7});
         refusals.push_back(sim.core.run(bad, now).value_or(MachineError{}));
         QCOMPARE(refusals[0].reason.code, DriverCode::OverrideInvalid);
         QCOMPARE(refusals[0].message,

@@ -59,7 +59,8 @@ TEST(MachineCore, OlderFirmwareGatesFeatures)
     auto refused = sim.core.run(program, sim.runner.now());
     ASSERT_TRUE(refused);
     EXPECT_NE(refused->message.find("VK"), std::string::npos) << refused->message;
-    program.commands.front().op = machine::UnitOp::SpeedModeVn;
+    mode.op = machine::UnitOp::SpeedModeVn;
+    program.commands.set(0, mode);
     ASSERT_FALSE(sim.core.run(program, sim.runner.now()));
     ASSERT_TRUE(sim.runner.runUntil([&] { return !sim.finished.empty(); }, 60)) << sim.lastLog();
     EXPECT_TRUE(sim.finished.front()) << sim.lastLog();

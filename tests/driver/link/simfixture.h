@@ -139,16 +139,18 @@ inline machine::UnitProgram slowProgram(int n)
 {
     auto p = denseProgram(n, 3, 4000, 4000, 400);
     // Start below Z = 0 (the default profile's Z runs -120..0) so that the tool can be lifted.
-    for (auto &c : p.commands) {
+    std::vector<machine::UnitCommand> commands = p.commands.toVector();
+    for (auto &c : commands) {
         if (c.op == machine::UnitOp::Vector)
             c.d[2] = -1;
     }
     machine::Steps4 at = p.startSteps;
-    for (auto &c : p.commands) {
+    for (auto &c : commands) {
         for (int a = 0; a < 4; ++a)
             at[a] += c.d[a];
         c.endSteps = at;
     }
+    p.commands = commands;
     return p;
 }
 
