@@ -7,12 +7,12 @@
 
 namespace frezka::machine {
 
-bool chainStartsAt(std::span<const UnitCommand> commands, std::size_t i)
+bool chainStartsAt(const UnitCommands &commands, std::size_t i)
 {
-    if (i >= commands.size() || (i > 0 && !restsAt(commands[i - 1].op)))
+    if (i >= commands.size() || (i > 0 && !restsAt(commands.op(i - 1))))
         return false;
-    for (std::size_t k = i; k < commands.size() && !restsAt(commands[k].op); ++k) {
-        if (commands[k].op == UnitOp::Vector)
+    for (std::size_t k = i; k < commands.size() && !restsAt(commands.op(k)); ++k) {
+        if (commands.op(k) == UnitOp::Vector)
             return true;
     }
     return false;
@@ -25,19 +25,19 @@ bool packetable(UnitOp op)
 }
 } // namespace
 
-std::size_t firstPacketEnd(std::span<const UnitCommand> commands, std::size_t start,
+std::size_t firstPacketEnd(const UnitCommands &commands, std::size_t start,
                            const LeadInLink &link)
 {
     std::size_t k = start;
-    while (k < commands.size() && !restsAt(commands[k].op) && !packetable(commands[k].op))
+    while (k < commands.size() && !restsAt(commands.op(k)) && !packetable(commands.op(k)))
         ++k;
     if (!link.packets) { // one command at a time: the unit starts with the first C
-        while (k < commands.size() && !restsAt(commands[k].op) && commands[k].op != UnitOp::Vector)
+        while (k < commands.size() && !restsAt(commands.op(k)) && commands.op(k) != UnitOp::Vector)
             ++k;
         return std::min(commands.size(), k + 1);
     }
     const std::size_t end = std::min(commands.size(), k + link.maxPacket);
-    while (k < end && packetable(commands[k].op))
+    while (k < end && packetable(commands.op(k)))
         ++k;
     return k;
 }
@@ -57,7 +57,7 @@ double leadInSlackS(const LeadInPrefixes &p, const LeadInLink &link, std::size_t
     std::size_t run = 0;
     const std::size_t last = std::min(p.end(), queuedEnd + 4 * link.maxPacket);
     for (std::size_t k = queuedEnd; k < last; ++k) {
-        const UnitOp op = p.commands[k].op;
+        const UnitOp op = p.commands.op(k);
         if (restsAt(op))
             break;
         run = packetable(op) ? run + 1 : 0;
@@ -93,8 +93,8 @@ std::size_t leadInRelease(const LeadInPrefixes &p, const LeadInLink &link, std::
     std::size_t cap = firstPacketEnd(p.commands, start, link);
     std::int64_t vectors = 0;
     std::size_t limit = start;
-    for (; limit < p.end() && !restsAt(p.commands[limit].op); ++limit) {
-        vectors += p.commands[limit].op == UnitOp::Vector ? 1 : 0;
+    for (; limit < p.end() && !restsAt(p.commands.op(limit)); ++limit) {
+        vectors += p.commands.op(limit) == UnitOp::Vector ? 1 : 0;
         if (vectors > queueVectors)
             break;
     }

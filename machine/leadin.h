@@ -39,7 +39,7 @@ struct LeadInLink
 // belonging to command base + i (a prefix: the sum before it).
 struct LeadInPrefixes
 {
-    std::span<const UnitCommand> commands; // the whole program
+    const UnitCommands &commands; // the whole program
     std::size_t base = 0;
     std::span<const double> timeS;           // motion seconds before each
     std::span<const std::int64_t> bytes;     // wire bytes before each
@@ -50,10 +50,10 @@ struct LeadInPrefixes
 };
 
 // A chain begins at index i of `commands`.
-bool chainStartsAt(std::span<const UnitCommand> commands, std::size_t i);
+bool chainStartsAt(const UnitCommands &commands, std::size_t i);
 // Where a free unit's first packet of the chain at `start` ends: the commands that travel alone
 // before it, then C/B up to the largest packet (one command without packets).
-std::size_t firstPacketEnd(std::span<const UnitCommand> commands, std::size_t start,
+std::size_t firstPacketEnd(const UnitCommands &commands, std::size_t start,
                            const LeadInLink &link);
 // The time the wire leaves to spare when the unit starts the chain at `start` with
 // [start, queuedEnd) queued: the least, over the chain's next vectors, of when the unit needs

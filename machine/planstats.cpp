@@ -149,7 +149,7 @@ std::vector<std::pair<std::size_t, double>> Planner::leadInHolds(const ModelResu
             std::size_t vec = vector, beyond = 0;
             bool inRun = false;
             for (std::size_t k = i;
-                 k < cmds.size() && !restsAt(cmds[k].op) && beyond < 4 * link.maxPacket; ++k) {
+                 k < cmds.size() && !restsAt(cmds.op(k)) && beyond < 4 * link.maxPacket; ++k) {
                 const UnitCommand &c = cmds[k];
                 const bool motion = c.op == UnitOp::Vector || c.op == UnitOp::Line;
                 const double t =

@@ -115,6 +115,12 @@ public:
     UnitCommand at(std::size_t i) const { return (*this)[i]; }
     UnitCommand front() const { return (*this)[0]; }
     UnitCommand back() const { return (*this)[size() - 1]; }
+    // Command i's op alone (no end position summed).
+    UnitOp op(std::size_t i) const
+    {
+        const Record &r = m_records[i];
+        return r.whole ? m_whole[std::size_t(r.arg[0])].op : r.op;
+    }
     // The end position of command i alone (cheaper than the whole command).
     Steps4 endSteps(std::size_t i) const;
     const_iterator begin() const;

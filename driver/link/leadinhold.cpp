@@ -79,7 +79,7 @@ bool LeadInHold::fed()
     const JobPace &pace = m_job.pace();
     const auto &cmds = m_job.program().commands;
     const std::size_t next = m_job.cursor().next;
-    if (next >= cmds.size() || machine::restsAt(cmds[next].op))
+    if (next >= cmds.size() || machine::restsAt(cmds.op(next)))
         return true;
     const std::int64_t capacity = variantInfo(m_host.config().unit.variant).queueCapacity - 1;
     if (pace.vectorsBefore(next) - pace.vectorsBefore(m_start) >= capacity)

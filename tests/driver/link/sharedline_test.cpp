@@ -188,12 +188,14 @@ machine::UnitProgram programB()
 {
     auto p = denseProgram(700, 4, 12000, 12000, 90);
     machine::Steps4 at = p.startSteps;
-    for (auto &c : p.commands) {
+    for (std::size_t i = 0; i < p.commands.size(); ++i) {
+        machine::UnitCommand c = p.commands[i];
         if (c.op == machine::UnitOp::Vector)
             c.d = {-c.d[1], c.d[0], 0, 3}; // another shape, with A
         for (int k = 0; k < 4; ++k)
             at[k] += c.d[k];
         c.endSteps = at;
+        p.commands.set(i, c);
     }
     return p;
 }
