@@ -3,6 +3,7 @@
 #include "heightprobe.h"
 
 #include "session/programplanner.h"
+#include "session/runworkflow.h"
 
 #include "machine/steps.h"
 
@@ -122,7 +123,7 @@ bool HeightProbe::start(const HeightProbeSettings &settings)
     if (m_link.state().mode != driver::MachineMode::Idle) {
         m_error = tr("The machine is not ready to probe (%1): connect it and wait until it is "
                      "idle, then probe again.")
-                      .arg(QString::fromLatin1(driver::machineModeName(m_link.state().mode)));
+                      .arg(RunWorkflow::modeText(m_link.state().mode));
         return false;
     }
     std::optional<gcode::HeightMap> grid = heightProbeGrid(settings, &m_error);

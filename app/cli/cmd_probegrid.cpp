@@ -112,8 +112,8 @@ std::optional<Args> parseArgs(const QStringList &args)
             ok = emulator::parseProbeSurface(a.surface.toStdString(), &surface);
             if (!ok)
                 cli::err(ProbeGridCli::tr("frezka-cli probe-grid: --surface %1: expected "
-                                          "plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine "
-                                          "mm)\n")
+                                          "plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or "
+                                          "warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)\n")
                              .arg(a.surface));
         } else {
             ok = false;
