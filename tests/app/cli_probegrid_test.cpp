@@ -12,6 +12,7 @@
 
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -137,6 +138,36 @@ private slots:
         QCOMPARE(j[QStringLiteral("unit_steps")].toArray(),
                  (QJsonArray{10 * 200, 10 * 200, -19 * 200, 0}));
         QVERIFY(!QFile::exists(out));
+    }
+
+    // The same sequence on a serial line: gve-emu on a pty with a tilted work top, probed in
+    // real time through the link worker (as on hardware): the heights of the plane's nodes.
+    void probesGveEmuOnAPty()
+    {
+        QProcess emu;
+        emu.start(QStringLiteral(GVE_EMU_PATH),
+                  {QStringLiteral("--variant"), QStringLiteral("gve64"),
+                   QStringLiteral("--surface"), QStringLiteral("plane:-5,0.01,0.005")});
+        QVERIFY(emu.waitForStarted(20000));
+        QTRY_VERIFY_WITH_TIMEOUT(emu.canReadLine(), 20000);
+        const QString pty = QString::fromLocal8Bit(emu.readLine()).trimmed();
+        const QString out = m_dir.filePath(QStringLiteral("pty.csv"));
+        const Run r =
+            cli({QStringLiteral("probe-grid"), QStringLiteral("--port"), pty,
+                 QStringLiteral("--area"), QStringLiteral("0,0,10,10"), QStringLiteral("--spacing"),
+                 QStringLiteral("10"), QStringLiteral("--clearance"), QStringLiteral("-4"),
+                 QStringLiteral("--depth"), QStringLiteral("7"), QStringLiteral("--feed"),
+                 QStringLiteral("200"), QStringLiteral("--out"), out});
+        emu.terminate();
+        emu.waitForFinished(20000);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QString error;
+        const auto map = frezka::gcode::HeightMap::load(out, &error);
+        QVERIFY2(map, qPrintable(error));
+        QCOMPARE(lastJson(r.out)[QStringLiteral("points_probed")].toInt(), 4);
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i)
+                QVERIFY(std::abs(map->z(i, j) - (0.1 * i + 0.05 * j)) <= kStepMm + 1e-9);
     }
 
     void badUsageAndValuesAreRefused()
