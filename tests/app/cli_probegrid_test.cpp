@@ -1,9 +1,9 @@
 // frezka-cli probe-grid (issue 19): a height map probed on the emulator's tilted and warped work
 // top matches the surface within a motor step at every node (heights relative to the first); a
-// probe that never trips stops with its error naming the node, never below the depth, and the tool
-// back at the clearance; and the issue's done-when through the CLI: a PCB-isolation-style program
-// (0.1 mm deep, 80 x 80 mm) run with its probed map keeps the tool tip 0.08 .. 0.12 mm below the
-// surface (run
+// probe that never trips stops with its error naming the node, never below the depth, and the
+// tool back at the clearance; gve-emu on a pty is probed through the link worker as hardware is;
+// and the issue's done-when through the CLI: a PCB-isolation-style program (0.1 mm deep, 80 x 80
+// mm) run with its probed map keeps the tool tip 0.08 .. 0.12 mm below the surface (run
 // --cut-depth samples the emulator's counters), and without the map it does not.
 
 #include "cliprocess.h"
