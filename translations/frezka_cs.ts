@@ -510,15 +510,15 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
-</source>
-        <translation>frezka-cli run: --surface %1: očekáváno plane:Z0,DZDX,DZDY nebo sine:AMP,PERIODA[,Z0] (mm stroje), např. plane:-5,0.001,0
-</translation>
-    </message>
-    <message>
         <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC [--cut-depth]]
 </source>
         <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace SOUBOR] [--surface POPIS [--cut-depth]]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm), such as plane:-5,0.001,0
+</source>
+        <translation>frezka-cli run: --surface %1: očekáváno plane:Z0,DZDX,DZDY, sine:AMP,PERIODA[,Z0] nebo warp:Z0,DZDX,DZDY,AMP,PERIODA (mm stroje), např. plane:-5,0.001,0
 </translation>
     </message>
 </context>
@@ -6221,6 +6221,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>&apos;%1&apos; není řetězec firmwaru jednotky %2</translation>
     </message>
     <message>
+        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
+        <translation>otočení kolečka &apos;%1&apos; nelze přečíst: napište OSA KROK DÍLKY, např. X 10 -5</translation>
+    </message>
+    <message>
         <source>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
 The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
@@ -6250,7 +6254,8 @@ Options:
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
   --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
-                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+                      mm: plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or
+                      warp:Z0,DZDX,DZDY,AMP,PERIOD (the plane plus the sine)
   --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
   --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
                       profiles&apos; EEPROM polarity)
@@ -6300,7 +6305,8 @@ Volby:
   --limit IN:OSA=POLOHA[,+|-]  vstup IN (0..15) sepnutý OSOU za POLOHOU, např.
                       --limit 6:X=200000,+ (koncový spínač X u GVE64)
   --surface POPIS     horní plocha obrobku, které se dotkne sonda nástroje (IN15),
-                      v mm stroje: plane:Z0,DZDX,DZDY nebo sine:AMP,PERIODA[,Z0]
+                      v mm stroje: plane:Z0,DZDX,DZDY, sine:AMP,PERIODA[,Z0] nebo
+                      warp:Z0,DZDX,DZDY,AMP,PERIODA (rovina plus sinus)
   --steps-per-mm N[,N,N]  kroky na mm os X, Y, Z pro --surface (výchozí 200)
   --probe-contact 0|1 úroveň IN15 při dotyku (výchozí 0, jako polarita EEPROM
                       dodávaných profilů)
@@ -6321,10 +6327,6 @@ Volby:
   --help              tento text
   --version           verze
 </translation>
-    </message>
-    <message>
-        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
-        <translation>otočení kolečka &apos;%1&apos; nelze přečíst: napište OSA KROK DÍLKY, např. X 10 -5</translation>
     </message>
 </context>
 <context>

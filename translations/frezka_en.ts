@@ -510,15 +510,15 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
-</source>
-        <translation>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
-</translation>
-    </message>
-    <message>
         <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC [--cut-depth]]
 </source>
         <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC [--cut-depth]]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm), such as plane:-5,0.001,0
+</source>
+        <translation>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm), such as plane:-5,0.001,0
 </translation>
     </message>
 </context>
@@ -6208,6 +6208,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>&apos;%1&apos; is not a firmware string of the %2</translation>
     </message>
     <message>
+        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
+        <translation>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</translation>
+    </message>
+    <message>
         <source>Usage: gve-emu [options]
 Serves an emulated GVE interpolator on a new pseudo-terminal in real time.
 The first line printed on stdout is the terminal path to open (e.g. /dev/pts/5).
@@ -6237,7 +6241,8 @@ Options:
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
   --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
-                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+                      mm: plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or
+                      warp:Z0,DZDX,DZDY,AMP,PERIOD (the plane plus the sine)
   --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
   --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
                       profiles&apos; EEPROM polarity)
@@ -6287,7 +6292,8 @@ Options:
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
   --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
-                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+                      mm: plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or
+                      warp:Z0,DZDX,DZDY,AMP,PERIOD (the plane plus the sine)
   --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
   --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
                       profiles&apos; EEPROM polarity)
@@ -6308,10 +6314,6 @@ Options:
   --help              this text
   --version           the version
 </translation>
-    </message>
-    <message>
-        <source>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</source>
-        <translation>cannot read the wheel turn &apos;%1&apos;: write AXIS STEP DETENTS, e.g. X 10 -5</translation>
     </message>
 </context>
 <context>

@@ -131,9 +131,9 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
             emulator::ProbeSurface surface;
             ok = emulator::parseProbeSurface(a.surface.toStdString(), &surface);
             if (!ok)
-                cli::err(RunCli::tr("frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY "
-                                    "or sine:AMP,PERIOD[,Z0] (machine mm), such as "
-                                    "plane:-5,0.001,0\n")
+                cli::err(RunCli::tr("frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, "
+                                    "sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD "
+                                    "(machine mm), such as plane:-5,0.001,0\n")
                              .arg(a.surface));
         } else if (k == QLatin1String("--cut-depth")) {
             a.cutDepth = true;
