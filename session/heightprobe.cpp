@@ -72,6 +72,14 @@ std::optional<gcode::HeightMap> heightProbeGrid(const HeightProbeSettings &s, QS
     return map;
 }
 
+OffsetState touchPlateZero(const OffsetState &offsets, double tripZMm, double plateMm)
+{
+    OffsetState next = offsets;
+    const auto active = static_cast<std::size_t>(std::clamp(offsets.active, 0, kWorkSystems - 1));
+    next.systems[active][2] = tripZMm - plateMm - offsets.g92[2];
+    return next;
+}
+
 std::vector<std::pair<int, int>> serpentineOrder(int countX, int countY)
 {
     std::vector<std::pair<int, int>> order;
@@ -116,6 +124,30 @@ HeightProbe::HeightProbe(MachineLink &link, const machine::MachineConfig &config
 bool HeightProbe::start(const HeightProbeSettings &settings)
 {
     m_error.clear();
+    std::optional<gcode::HeightMap> grid = heightProbeGrid(settings, &m_error);
+    if (!grid)
+        return false;
+    return begin(settings, *grid, false);
+}
+
+bool HeightProbe::startAt(double xMm, double yMm, const HeightProbeSettings &settings)
+{
+    m_error.clear();
+    HeightProbeSettings s = settings; // the grid's checks on a 1 mm square at the point
+    s.x0Mm = xMm;
+    s.y0Mm = yMm;
+    s.x1Mm = xMm + 1;
+    s.y1Mm = yMm + 1;
+    s.spacingMm = 1;
+    std::optional<gcode::HeightMap> grid = heightProbeGrid(s, &m_error);
+    if (!grid)
+        return false;
+    return begin(s, *grid, true);
+}
+
+bool HeightProbe::begin(const HeightProbeSettings &settings, const gcode::HeightMap &grid,
+                        bool point)
+{
     if (running()) {
         m_error = tr("Probing is already running.");
         return false;
@@ -126,15 +158,22 @@ bool HeightProbe::start(const HeightProbeSettings &settings)
                       .arg(RunWorkflow::modeText(m_link.state().mode));
         return false;
     }
-    std::optional<gcode::HeightMap> grid = heightProbeGrid(settings, &m_error);
-    if (!grid)
+    if (settings.slowFeedMmPerMin > 0 && !(settings.retractMm > 0)) {
+        m_error = tr("Probing fast then slow needs a retract above 0 mm (%1 given): the tool "
+                     "backs off by it before the slow probe.")
+                      .arg(mm(settings.retractMm));
         return false;
+    }
+    m_point = point;
     m_settings = settings;
-    m_map = *grid;
+    m_map = grid;
     m_order = serpentineOrder(m_map.countX(), m_map.countY());
+    if (m_point)
+        m_order.resize(1);
     m_zMm.clear();
     m_done = 0;
     m_failed = false;
+    m_slowPass = false;
     m_jobEnded.reset();
     probeNext();
     return true;
@@ -169,15 +208,35 @@ void HeightProbe::probeNext()
     QString text = QStringLiteral("G21 G90 G94\n");
     if (z < m_settings.clearanceZMm)
         text += clearance;
-    text += QStringLiteral("G0 X%1 Y%2\n").arg(word(m_map.nodeX(i)), word(m_map.nodeY(j)));
+    const driver::MachineState &at = m_link.state();
+    const bool over =
+        std::abs(at.positionMm[0] - m_map.nodeX(i)) < 0.5 / m_config.axes[0].stepsPerMm &&
+        std::abs(at.positionMm[1] - m_map.nodeY(j)) < 0.5 / m_config.axes[1].stepsPerMm;
+    if (!over) // a move of no length is no move (the touch plate under the tool)
+        text += QStringLiteral("G0 X%1 Y%2\n").arg(word(m_map.nodeX(i)), word(m_map.nodeY(j)));
     if (z > m_settings.clearanceZMm)
         text += clearance;
     text += QStringLiteral("G38.2 Z%1 F%2\n")
                 .arg(word(m_settings.bottomZMm), word(m_settings.feedMmPerMin));
     m_phase = Phase::Probing;
+    m_slowPass = false;
     if (!runText(text)) {
         m_failed = true;
         finish();
+    }
+}
+
+// The slow probe of the node just found: back off by the retract above the fast trip point
+// (a Z move alone, never below the clearance's limit), then G38.2 at the slow feed.
+void HeightProbe::probeSlow(double tripZMm)
+{
+    const QString text = QStringLiteral("G21 G90 G94\nG0 Z%1\nG38.2 Z%2 F%3\n")
+                             .arg(word(tripZMm + m_settings.retractMm), word(m_settings.bottomZMm),
+                                  word(m_settings.slowFeedMmPerMin));
+    m_slowPass = true;
+    if (!runText(text)) {
+        m_failed = true;
+        retract();
     }
 }
 
@@ -294,6 +353,10 @@ void HeightProbe::settle(const driver::MachineState &s)
         near(s.probeSteps[1], machine::stepsOf(m_map.nodeY(j), m_config.axes[1].stepsPerMm));
     if (ok && s.probeTripped && atNode) {
         const double z = static_cast<double>(s.probeSteps[2]) / m_config.axes[2].stepsPerMm;
+        if (m_settings.slowFeedMmPerMin > 0 && !m_slowPass) {
+            probeSlow(z);
+            return;
+        }
         m_zMm.push_back(z);
         m_map.setZ(i, j, z - m_zMm.front());
         ++m_done;
@@ -332,14 +395,17 @@ void HeightProbe::fail(const QString &why)
     m_error = why;
 }
 
-// A Z move alone up to the clearance, when the tool is below it.
+// A Z move alone up to the clearance (startAt(): the retract above the trip point), when the
+// tool is below it.
 void HeightProbe::retract()
 {
     m_phase = Phase::Retracting;
     const double z = m_link.state().positionMm[2];
     const double tolerance = 0.5 / m_config.axes[2].stepsPerMm;
-    if (z >= m_settings.clearanceZMm - tolerance ||
-        !runText(QStringLiteral("G21 G90\nG0 Z%1\n").arg(word(m_settings.clearanceZMm))))
+    const double top = m_point && m_settings.retractMm > 0 && !m_zMm.empty()
+                           ? m_zMm.front() + m_settings.retractMm
+                           : m_settings.clearanceZMm;
+    if (z >= top - tolerance || !runText(QStringLiteral("G21 G90\nG0 Z%1\n").arg(word(top))))
         finish();
 }
 

@@ -16,6 +16,7 @@
 // alone), unless the link is gone. Every failure names the node (X, Y) and what to do.
 
 #include "session/machinelink.h"
+#include "session/workoffsets.h"
 
 #include "gcode/heightmap.h"
 #include "gcode/toolpath.h"
@@ -38,6 +39,10 @@ struct HeightProbeSettings
     double clearanceZMm = 0;                       // machine Z of the moves between nodes
     double bottomZMm = 0; // machine Z the probe may go down to (below the clearance)
     double feedMmPerMin = 100;
+    // Fast then slow (G38.2 twice): when above 0, each point found at feedMmPerMin is probed
+    // again at this feed from retractMm above its trip point; the slow trip is the result.
+    double slowFeedMmPerMin = 0;
+    double retractMm = 0; // the back-off before the slow probe; see also startAt()
     friend bool operator==(const HeightProbeSettings &, const HeightProbeSettings &) = default;
 };
 
@@ -45,6 +50,10 @@ struct HeightProbeSettings
 // the user's language, naming the value and what to do).
 std::optional<gcode::HeightMap> heightProbeGrid(const HeightProbeSettings &settings,
                                                 QString *error);
+// The offsets with the active system's Z set so that the work's top is Z 0 when a touch plate
+// plateMm thick on it tripped the probe at machine Z tripZMm (the plate's top is Z plateMm;
+// G92 stays as it is, as G10 L20 does).
+OffsetState touchPlateZero(const OffsetState &offsets, double tripZMm, double plateMm);
 // The nodes (i, j) of a countX x countY grid in serpentine order.
 std::vector<std::pair<int, int>> serpentineOrder(int countX, int countY);
 // X0, Y0, X1, Y1 (machine mm) of the program's cuts (what a height map must cover: its feed
@@ -61,6 +70,16 @@ public:
     // Starts probing the grid; the link must be connected and idle. False (and error()) when
     // it cannot start; otherwise finished() follows once.
     bool start(const HeightProbeSettings &settings);
+    // Probes one point (X, Y machine mm; the area and spacing of the settings unused), e.g. a
+    // touch plate under the tool: map() is then a 2 x 2 grid whose node (0, 0) is the point and
+    // pointZMm() its trip Z. At the end the tool goes up to retractMm above the trip point (the
+    // clearance when retractMm is 0).
+    bool startAt(double xMm, double yMm, const HeightProbeSettings &settings);
+    // Machine Z of the first point's trip (nullopt before it tripped).
+    std::optional<double> pointZMm() const
+    {
+        return m_zMm.empty() ? std::nullopt : std::optional<double>(m_zMm.front());
+    }
     // Stops the motion (the job aborted), then the tool goes up to the clearance; finished(false).
     void cancel();
     bool running() const { return m_phase != Phase::Idle; }
@@ -82,7 +101,9 @@ private:
     void onJobFinished(bool ok);
     void onError(const driver::MachineError &error);
     void settle(const driver::MachineState &state);
+    bool begin(const HeightProbeSettings &settings, const gcode::HeightMap &grid, bool point);
     void probeNext();
+    void probeSlow(double tripZMm);
     bool runText(const QString &text);
     void fail(const QString &why);
     void retract();
@@ -96,6 +117,8 @@ private:
     std::vector<std::pair<int, int>> m_order;
     std::vector<double> m_zMm; // machine Z of the nodes probed, in m_order's order
     int m_done = 0;
+    bool m_slowPass = false; // the current job is a node's slow probe
+    bool m_point = false;    // startAt(): one point, the retract above its trip
     Phase m_phase = Phase::Idle;
     std::optional<bool> m_jobEnded; // the current job's jobFinished(ok), until settled
     bool m_jobStarted = false;      // a state showed the current job active
