@@ -15,24 +15,17 @@
 
 #include "cli.h"
 
+#include "proberun.h"
 #include "programoptions.h"
 
-#include "driver/link/emulatorport.h"
-#include "driver/link/linkworker.h"
-#include "machine/steps.h"
+#include "driver/emulator/surface.h"
 #include "session/heightprobe.h"
-#include "session/qtmachinelink.h"
-#include "session/runworkflow.h"
-#include "session/simlink.h"
 
-#include <QEventLoop>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QTimer>
 
 #include <algorithm>
-#include <limits>
 #include <optional>
 
 namespace {
@@ -181,108 +174,6 @@ std::optional<session::HeightProbeSettings> settingsFor(const Args &a)
     return s;
 }
 
-void take(Outcome &out, const session::HeightProbe &probe, bool ok)
-{
-    out.ok = ok;
-    out.error = probe.error();
-    out.map = probe.map();
-    out.done = probe.pointsDone();
-    out.total = probe.pointsTotal();
-}
-
-// The in-process emulator on a virtual clock, with the simulated work top.
-Outcome probeVirtual(const Args &a, const machine::MachineConfig &config,
-                     const session::HeightProbeSettings &settings)
-{
-    Outcome out;
-    emulator::UnitOptions unit = driver::unitOptionsFor(config);
-    if (!a.surface.isEmpty()) // checked by parseArgs; the surface in machine mm
-        driver::setProbeSurface(unit, a.surface.toStdString(), config);
-    unit.trace = true; // the lowest Z reached, from every motion event
-    driver::WireOptions wire;
-    wire.baud = config.link.baud;
-    driver::CoreOptions options;
-    options.link.baud = wire.baud;
-    session::SimLink link(config, unit, wire, options);
-    std::int64_t lowest = std::numeric_limits<std::int64_t>::max();
-    auto watch = [&] {
-        emulator::Unit &u = link.port().unit();
-        for (const emulator::TracePoint &p : u.trace())
-            lowest = std::min(lowest, p.position[2]);
-        lowest = std::min(lowest, u.position()[2]);
-        u.clearTrace();
-    };
-    link.connectTo(session::RunWorkflow::connectionFor(config));
-    if (!link.runUntil([&] { return link.state().mode == driver::MachineMode::Idle; }, 120)) {
-        out.error = ProbeGridCli::tr("could not connect to the emulator");
-        return out;
-    }
-    session::HeightProbe probe(link, config);
-    bool ended = false;
-    QObject::connect(&probe, &session::HeightProbe::finished, [&](bool ok) {
-        ended = true;
-        take(out, probe, ok);
-    });
-    if (!probe.start(settings)) {
-        out.error = probe.error();
-        return out;
-    }
-    while (!ended && link.now() < 24 * 3600.0) {
-        link.runFor(0.25);
-        watch();
-    }
-    if (!ended)
-        out.error = ProbeGridCli::tr("probing did not end within a day of the emulator's time");
-    out.unitSteps = link.port().unit().position();
-    out.unitLowestZSteps = lowest;
-    return out;
-}
-
-// A serial port or pty: the link worker on this thread's event loop, as frezka-cli run does.
-Outcome probeReal(const Args &a, const machine::MachineConfig &config,
-                  const session::HeightProbeSettings &settings)
-{
-    Outcome out;
-    driver::LinkWorker worker;
-    driver::CoreOptions options;
-    options.link.baud = config.link.baud;
-    worker.setCoreOptions(options);
-    worker.setMachineConfig(config);
-    session::QtMachineLink<driver::LinkWorker> link(worker);
-    session::HeightProbe probe(link, config);
-    QEventLoop loop;
-    bool started = false;
-    QObject::connect(&link, &session::MachineLink::stateChanged, &loop,
-                     [&](const driver::MachineState &s) {
-                         if (started || s.mode != driver::MachineMode::Idle)
-                             return;
-                         started = true;
-                         if (!probe.start(settings)) {
-                             out.error = probe.error();
-                             loop.quit();
-                         }
-                     });
-    QObject::connect(&link, &session::MachineLink::errorOccurred, &loop,
-                     [&](const driver::MachineError &e) {
-                         if (!started) {
-                             out.error = driver::translatedText(e.reason, true);
-                             loop.quit();
-                         }
-                     });
-    QObject::connect(&probe, &session::HeightProbe::finished, &loop, [&](bool ok) {
-        take(out, probe, ok);
-        loop.quit();
-    });
-    driver::ConnectionSettings connection;
-    connection.kind = driver::ConnectionSettings::Kind::SerialPort;
-    connection.portName = a.port;
-    connection.baud = config.link.baud;
-    QTimer::singleShot(0, &worker, [&] { worker.connectTo(connection); });
-    loop.exec();
-    worker.disconnectFromUnit();
-    return out;
-}
-
 void printReport(const Outcome &o)
 {
     QJsonObject j;
@@ -314,8 +205,21 @@ int runProbeGrid(const QStringList &args)
     const auto settings = settingsFor(*a);
     if (!settings)
         return 1;
-    const Outcome o = a->port == QLatin1String("sim") ? probeVirtual(*a, *config, *settings)
-                                                      : probeReal(*a, *config, *settings);
+    Outcome o;
+    const cli::ProbeRunOutcome run = cli::runProbe(
+        a->port, a->surface, *config,
+        [&](session::HeightProbe &probe, const driver::MachineState &) {
+            return probe.start(*settings);
+        },
+        [&](const session::HeightProbe &probe, bool) {
+            o.map = probe.map();
+            o.done = probe.pointsDone();
+            o.total = probe.pointsTotal();
+        });
+    o.ok = run.ok;
+    o.error = run.error;
+    o.unitSteps = run.unitSteps;
+    o.unitLowestZSteps = run.unitLowestZSteps;
     printReport(o);
     if (!o.ok) {
         cli::err(ProbeGridCli::tr("frezka-cli probe-grid: %1\n").arg(o.error));
