@@ -368,6 +368,49 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>ProbeCli</name>
+    <message>
+        <source>usage: frezka-cli probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</source>
+        <translation>použití: frezka-cli probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM] [--retract MM] [--port CESTA|sim] [--surface SPEC] %1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
+</source>
+        <translation>frezka-cli probe: --surface %1: očekává se plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] nebo warp:Z0,DZDX,DZDY,AMP,PERIOD (strojové mm)
+</translation>
+    </message>
+    <message>
+        <source>--plate %1: the plate&apos;s thickness must be 0 mm or more (0: the tool touches the work itself).</source>
+        <translation>--plate %1: tloušťka destičky musí být 0 mm nebo více (0: nástroj se dotkne přímo obrobku).</translation>
+    </message>
+    <message>
+        <source>--depth %1: how far below the start the probe may go must be above 0 mm.</source>
+        <translation>--depth %1: jak hluboko pod výchozí polohu smí sonda sjet, musí být víc než 0 mm.</translation>
+    </message>
+    <message>
+        <source>--retract %1: the back-off above the plate must be above 0 mm.</source>
+        <translation>--retract %1: odjetí nad destičku musí být víc než 0 mm.</translation>
+    </message>
+    <message>
+        <source>--slow-feed %1: the slow probe&apos;s feed must be above 0 mm/min.</source>
+        <translation>--slow-feed %1: posuv pomalého sondování musí být víc než 0 mm/min.</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe z-plate: %1
+</source>
+        <translation>frezka-cli probe z-plate: %1
+</translation>
+    </message>
+    <message>
+        <source>The plate&apos;s top touched at machine Z %1; %2 Z is now %3 (was %4), so the work&apos;s top under the %5 mm plate is Z 0 and the tool stands at Z %6. Give the next commands --offset %7.
+</source>
+        <translation>Sonda se dotkla horní plochy destičky ve strojovém Z %1; Z systému %2 je nyní %3 (bylo %4), takže horní plocha obrobku pod destičkou tlustou %5 mm je Z 0 a nástroj stojí v Z %6. Dalším příkazům zadejte --offset %7.
+</translation>
+    </message>
+</context>
+<context>
     <name>ProbeGridCli</name>
     <message>
         <source>usage: frezka-cli probe-grid (--area X0,Y0,X1,Y1 | --program FILE) --spacing MM --clearance MM --depth MM --feed MM/MIN --out MAP.csv [--port PATH|sim] [--surface SPEC] %1
@@ -388,14 +431,6 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>could not connect to the emulator</source>
-        <translation>nelze se připojit k emulátoru</translation>
-    </message>
-    <message>
-        <source>probing did not end within a day of the emulator&apos;s time</source>
-        <translation>sondování neskončilo do jednoho dne času emulátoru</translation>
-    </message>
-    <message>
         <source>frezka-cli probe-grid: %1
 </source>
         <translation>frezka-cli probe-grid: %1
@@ -412,6 +447,17 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </source>
         <translation>frezka-cli probe-grid: --surface %1: očekáváno plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] nebo warp:Z0,DZDX,DZDY,AMP,PERIOD (mm stroje)
 </translation>
+    </message>
+</context>
+<context>
+    <name>ProbeRunCli</name>
+    <message>
+        <source>could not connect to the emulator</source>
+        <translation>nelze se připojit k emulátoru</translation>
+    </message>
+    <message>
+        <source>probing did not end within a day of the emulator&apos;s time</source>
+        <translation>sondování neskončilo do jednoho dne času emulátoru</translation>
     </message>
 </context>
 <context>
@@ -771,6 +817,10 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Probe a height map on the unit (G38.2 on a grid) and write its file</source>
         <translation>Nasondovat výškovou mapu na jednotce (G38.2 v mřížce) a zapsat ji do souboru</translation>
+    </message>
+    <message>
+        <source>Probe the work: its Z zero from a touch plate (fast then slow G38.2)</source>
+        <translation>Sondovat obrobek: jeho nulu Z z dotykové destičky (G38.2 rychle, pak pomalu)</translation>
     </message>
 </context>
 <context>
@@ -6930,6 +6980,10 @@ Volby:
     <message>
         <source>the job did not finish.</source>
         <translation>úloha nedoběhla.</translation>
+    </message>
+    <message>
+        <source>Probing fast then slow needs a retract above 0 mm (%1 given): the tool backs off by it before the slow probe.</source>
+        <translation>Sondování rychle a pak pomalu potřebuje odjetí větší než 0 mm (zadáno %1): o ně nástroj odjede před pomalým sondováním.</translation>
     </message>
 </context>
 <context>

@@ -368,6 +368,49 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>ProbeCli</name>
+    <message>
+        <source>usage: frezka-cli probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</source>
+        <translation>usage: frezka-cli probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
+</source>
+        <translation>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
+</translation>
+    </message>
+    <message>
+        <source>--plate %1: the plate&apos;s thickness must be 0 mm or more (0: the tool touches the work itself).</source>
+        <translation>--plate %1: the plate&apos;s thickness must be 0 mm or more (0: the tool touches the work itself).</translation>
+    </message>
+    <message>
+        <source>--depth %1: how far below the start the probe may go must be above 0 mm.</source>
+        <translation>--depth %1: how far below the start the probe may go must be above 0 mm.</translation>
+    </message>
+    <message>
+        <source>--retract %1: the back-off above the plate must be above 0 mm.</source>
+        <translation>--retract %1: the back-off above the plate must be above 0 mm.</translation>
+    </message>
+    <message>
+        <source>--slow-feed %1: the slow probe&apos;s feed must be above 0 mm/min.</source>
+        <translation>--slow-feed %1: the slow probe&apos;s feed must be above 0 mm/min.</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe z-plate: %1
+</source>
+        <translation>frezka-cli probe z-plate: %1
+</translation>
+    </message>
+    <message>
+        <source>The plate&apos;s top touched at machine Z %1; %2 Z is now %3 (was %4), so the work&apos;s top under the %5 mm plate is Z 0 and the tool stands at Z %6. Give the next commands --offset %7.
+</source>
+        <translation>The plate&apos;s top touched at machine Z %1; %2 Z is now %3 (was %4), so the work&apos;s top under the %5 mm plate is Z 0 and the tool stands at Z %6. Give the next commands --offset %7.
+</translation>
+    </message>
+</context>
+<context>
     <name>ProbeGridCli</name>
     <message>
         <source>usage: frezka-cli probe-grid (--area X0,Y0,X1,Y1 | --program FILE) --spacing MM --clearance MM --depth MM --feed MM/MIN --out MAP.csv [--port PATH|sim] [--surface SPEC] %1
@@ -388,14 +431,6 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>could not connect to the emulator</source>
-        <translation>could not connect to the emulator</translation>
-    </message>
-    <message>
-        <source>probing did not end within a day of the emulator&apos;s time</source>
-        <translation>probing did not end within a day of the emulator&apos;s time</translation>
-    </message>
-    <message>
         <source>frezka-cli probe-grid: %1
 </source>
         <translation>frezka-cli probe-grid: %1
@@ -412,6 +447,17 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </source>
         <translation>frezka-cli probe-grid: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
 </translation>
+    </message>
+</context>
+<context>
+    <name>ProbeRunCli</name>
+    <message>
+        <source>could not connect to the emulator</source>
+        <translation>could not connect to the emulator</translation>
+    </message>
+    <message>
+        <source>probing did not end within a day of the emulator&apos;s time</source>
+        <translation>probing did not end within a day of the emulator&apos;s time</translation>
     </message>
 </context>
 <context>
@@ -771,6 +817,10 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Probe a height map on the unit (G38.2 on a grid) and write its file</source>
         <translation>Probe a height map on the unit (G38.2 on a grid) and write its file</translation>
+    </message>
+    <message>
+        <source>Probe the work: its Z zero from a touch plate (fast then slow G38.2)</source>
+        <translation>Probe the work: its Z zero from a touch plate (fast then slow G38.2)</translation>
     </message>
 </context>
 <context>
@@ -6917,6 +6967,10 @@ Options:
     <message>
         <source>the job did not finish.</source>
         <translation>the job did not finish.</translation>
+    </message>
+    <message>
+        <source>Probing fast then slow needs a retract above 0 mm (%1 given): the tool backs off by it before the slow probe.</source>
+        <translation>Probing fast then slow needs a retract above 0 mm (%1 given): the tool backs off by it before the slow probe.</translation>
     </message>
 </context>
 <context>
