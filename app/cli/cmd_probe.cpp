@@ -19,7 +19,7 @@
 #include "proberun.h"
 #include "programoptions.h"
 
-#include "driver/emulator/surface.h"
+#include "driver/link/emulatorport.h"
 #include "driver/link/machinestate.h"
 #include "session/heightprobe.h"
 

@@ -18,7 +18,7 @@
 #include "proberun.h"
 #include "programoptions.h"
 
-#include "driver/emulator/surface.h"
+#include "driver/link/emulatorport.h"
 #include "session/heightprobe.h"
 
 #include <QJsonArray>
