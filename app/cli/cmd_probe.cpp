@@ -150,6 +150,28 @@ QString offsetArg(const session::OffsetState &o)
         .arg(v[3], 0, 'f', 4);
 }
 
+// The JSON line on stdout: the trip point, the offsets after, the emulator's counters.
+void printReport(const session::OffsetState &after, std::optional<double> tripZ, double plateMm,
+                 const cli::ProbeRunOutcome &run)
+{
+    QJsonObject j;
+    j[QStringLiteral("trip_z_mm")] = tripZ ? QJsonValue(*tripZ) : QJsonValue();
+    j[QStringLiteral("plate_mm")] = plateMm;
+    j[QStringLiteral("work_offset")] = session::workSystemName(after.active);
+    j[QStringLiteral("offset_mm")] = axes(after.systems[static_cast<std::size_t>(after.active)]);
+    j[QStringLiteral("g92_mm")] = axes(after.g92);
+    j[QStringLiteral("offset_arg")] = tripZ ? QJsonValue(offsetArg(after)) : QJsonValue();
+    auto steps = [](const machine::Steps4 &s) {
+        return QJsonArray{qint64(s[0]), qint64(s[1]), qint64(s[2]), qint64(s[3])};
+    };
+    j[QStringLiteral("unit_steps")] =
+        run.unitSteps ? QJsonValue(steps(*run.unitSteps)) : QJsonValue();
+    j[QStringLiteral("unit_lowest_z_steps")] =
+        run.unitLowestZSteps ? QJsonValue(qint64(*run.unitLowestZSteps)) : QJsonValue();
+    cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
+             QLatin1Char('\n'));
+}
+
 int runZPlate(const QStringList &args)
 {
     const auto a = parseArgs(args);
@@ -181,22 +203,7 @@ int runZPlate(const QStringList &args)
     const session::OffsetState before = a->program.offsets;
     const session::OffsetState after =
         tripZ ? session::touchPlateZero(before, *tripZ, *a->plateMm) : before;
-    QJsonObject j;
-    j[QStringLiteral("trip_z_mm")] = tripZ ? QJsonValue(*tripZ) : QJsonValue();
-    j[QStringLiteral("plate_mm")] = *a->plateMm;
-    j[QStringLiteral("work_offset")] = session::workSystemName(after.active);
-    j[QStringLiteral("offset_mm")] = axes(after.systems[static_cast<std::size_t>(after.active)]);
-    j[QStringLiteral("g92_mm")] = axes(after.g92);
-    j[QStringLiteral("offset_arg")] = tripZ ? QJsonValue(offsetArg(after)) : QJsonValue();
-    auto steps = [](const machine::Steps4 &s) {
-        return QJsonArray{qint64(s[0]), qint64(s[1]), qint64(s[2]), qint64(s[3])};
-    };
-    j[QStringLiteral("unit_steps")] =
-        run.unitSteps ? QJsonValue(steps(*run.unitSteps)) : QJsonValue();
-    j[QStringLiteral("unit_lowest_z_steps")] =
-        run.unitLowestZSteps ? QJsonValue(qint64(*run.unitLowestZSteps)) : QJsonValue();
-    cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
-             QLatin1Char('\n'));
+    printReport(after, tripZ, *a->plateMm, run);
     if (!run.ok || !tripZ) {
         cli::err(ProbeCli::tr("frezka-cli probe z-plate: %1\n").arg(run.error));
         return 1;
