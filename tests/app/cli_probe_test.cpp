@@ -3,12 +3,14 @@
 // (within a motor step), the tool ends the retract above the plate, and a program engraving 0.1
 // mm deep with that offset cuts 0.1 mm into the surface (run --cut-depth reads the emulator's
 // counters); a probe that never trips fails with its error, never below the depth, back at the
-// start; bad values and usage are refused.
+// start; gve-emu on a pty is probed through the link worker as hardware is; bad values and
+// usage are refused.
 
 #include "cliprocess.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -67,7 +69,8 @@ private slots:
         QCOMPARE(at[2].toInt(), qRound((trip + 1) * 200));
         QVERIFY2(j[QStringLiteral("unit_lowest_z_steps")].toInt() >= -17.437 * 200 - 20,
                  qPrintable(r.out));
-        QVERIFY2(r.err.contains(QStringLiteral("G54 Z is now -18.940 (was 3.000)")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("G54 Z is now -18.940 (was 3.000)")),
+                 qPrintable(r.err));
         QVERIFY2(r.err.contains(QStringLiteral("the tool stands at Z 2.500")), qPrintable(r.err));
     }
 
@@ -109,6 +112,31 @@ private slots:
         QVERIFY(j[QStringLiteral("trip_z_mm")].isNull());
         QCOMPARE(j[QStringLiteral("unit_lowest_z_steps")].toInt(), -5 * 200);
         QCOMPARE(j[QStringLiteral("unit_steps")].toArray(), (QJsonArray{0, 0, 0, 0}));
+    }
+
+    // The same on a serial line: gve-emu on a pty, probed in real time through the link worker.
+    void probesGveEmuOnAPty()
+    {
+        QProcess emu;
+        emu.start(QStringLiteral(GVE_EMU_PATH),
+                  {QStringLiteral("--variant"), QStringLiteral("gve64"),
+                   QStringLiteral("--surface"), QStringLiteral("plane:-3.21,0,0")});
+        QVERIFY(emu.waitForStarted(20000));
+        QTRY_VERIFY_WITH_TIMEOUT(emu.canReadLine(), 20000);
+        const QString pty = QString::fromLocal8Bit(emu.readLine()).trimmed();
+        const Run r =
+            cli({QStringLiteral("probe"), QStringLiteral("z-plate"), QStringLiteral("--port"), pty,
+                 QStringLiteral("--plate"), QStringLiteral("0.5"), QStringLiteral("--depth"),
+                 QStringLiteral("5"), QStringLiteral("--feed"), QStringLiteral("200")});
+        emu.terminate();
+        emu.waitForFinished(20000);
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        const QJsonObject j = clitest::lastJson(r.out);
+        QVERIFY2(std::abs(j[QStringLiteral("trip_z_mm")].toDouble() + 3.21) <= kStepMm,
+                 qPrintable(r.out));
+        QVERIFY2(std::abs(j[QStringLiteral("offset_mm")].toArray()[2].toDouble() + 3.71) <= kStepMm,
+                 qPrintable(r.out));
+        QVERIFY(j[QStringLiteral("unit_steps")].isNull()); // not the in-process emulator
     }
 
     void badUsageAndValuesAreRefused()
