@@ -174,6 +174,7 @@ void MainWindow::buildMenus()
     m_settingsAction = m_machineMenu->addAction(QString(), this, [this] { openSettings(); });
     m_unitConfigAction = m_machineMenu->addAction(QString(), this, [this] { openUnitConfig(); });
     buildToolTableAction();
+    buildHeightMapAction();
     buildFromLineActions();
     buildTraceAction();
     buildCommissionAction();
@@ -234,6 +235,7 @@ void MainWindow::retranslate()
     m_settingsAction->setText(tr("&Settings…"));
     m_unitConfigAction->setText(tr("&Unit configuration (EEPROM)…"));
     m_toolTableAction->setText(tr("&Tool table…"));
+    m_heightMapAction->setText(tr("&Height map…"));
     m_runFromLineAction->setText(tr("Run from &line…"));
     m_wholeProgramAction->setText(tr("Run the &whole program"));
     m_saveTraceAction->setText(tr("Save serial &trace…"));

@@ -8,6 +8,7 @@
 #include "actualspeed.h"
 
 #include "driver/link/machinestate.h"
+#include "gcode/heightmap.h"
 #include "machine/machineconfig.h"
 #include "programview.h"
 
@@ -22,6 +23,7 @@
 #include <QPointer>
 
 #include <memory>
+#include <optional>
 
 class QLabel;
 class QMenu;
@@ -40,6 +42,7 @@ class ConsoleWidget;
 class DroWidget;
 class IoPanel;
 class ToolTableDialog;
+class HeightMapDialog;
 class JogPanel;
 class LoadProgress;
 class OutputsPanel;
@@ -133,6 +136,10 @@ public:
     // Machine › Tool table: opens the profile's tool table (non-modal) and returns it; null (with
     // the error shown) when the profile names no table file. mainwindow_tools.cpp.
     class ToolTableDialog *openToolTable();
+    // Machine › Height map…: probe, show, save / load, apply to the program (non-modal), shown
+    // and returned; it probes on `link` (tests: a simulated one), null: the window's own.
+    // mainwindow_heightmap.cpp.
+    HeightMapDialog *openHeightMap(session::MachineLink *link = nullptr);
     // The last message shown to the user as an error (tests read it; no modal dialog needed).
     QString lastError() const { return m_lastError; }
 
@@ -200,9 +207,13 @@ private:
     void installShortcuts();
     void buildFromLineActions(); // Machine › Run from line…, Run the whole program
     void buildToolTableAction(); // Machine › Tool table…
-    void buildTraceAction();     // Machine › Save serial trace… (mainwindow_trace.cpp)
-    void loadToolTable();        // the profile's table into the program session
-    void writeBackToolTable();   // after a run: the table as the program's G10 L1.. left it
+    void buildHeightMapAction(); // Machine › Height map…
+    // The program loaded again bent to the map (nullopt: as written); the work's Z zero on the
+    // map's first point when zeroAtReference.
+    void applyHeightMap(const std::optional<gcode::HeightMap> &map, bool zeroAtReference);
+    void buildTraceAction();   // Machine › Save serial trace… (mainwindow_trace.cpp)
+    void loadToolTable();      // the profile's table into the program session
+    void writeBackToolTable(); // after a run: the table as the program's G10 L1.. left it
     // Machine › Commission this machine… (mainwindow_commission.cpp)
     void buildCommissionAction();
     // At an M6 hold: the tool's comment, length and diameter from the table (empty: none).
@@ -232,7 +243,7 @@ private:
         *m_disconnectAction, *m_settingsAction, *m_unitConfigAction, *m_runFromLineAction,
         *m_wholeProgramAction, *m_aboutAction, *m_shortcutsAction,
         *m_grinderAction = nullptr, *m_resetLayoutAction, *m_toolTableAction, *m_saveTraceAction,
-        *m_commissionAction = nullptr;
+        *m_commissionAction = nullptr, *m_heightMapAction = nullptr;
     ProgramSession *m_program;
     QFileSystemWatcher *m_watcher; // the loaded program's file
     bool m_reloadAfterJob = false; // it changed while its job ran: ask when the job ends
@@ -260,6 +271,7 @@ private:
     QPointer<UnitConfigDialog> m_unitConfig;
     QPointer<ProgramInfoDialog> m_programInfo;
     QPointer<ToolTableDialog> m_toolTable;
+    QPointer<HeightMapDialog> m_heightMap;
     QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };

@@ -58,6 +58,7 @@ struct LoadJob
     std::optional<gcode::ToolTable> toolTable;
     QString toolTableError;
     std::vector<std::string> subroutinePath;
+    std::optional<gcode::HeightMap> heightMap;
     bool measurePeaks = false;
 };
 
@@ -166,6 +167,14 @@ bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
         return !cancelFlag->load();
     if (job.startLine != 0 && result.errors.empty() && job.profile)
         startFromLine(job, req.fileName, outcome, result);
+    if (job.heightMap && result.errors.empty()) { // bent after the run from a line's approach
+        gcode::HeightMapApplied bent = gcode::applyHeightMap(*outcome.toolpath, *job.heightMap);
+        if (bent.path)
+            outcome.toolpath = std::make_shared<gcode::Toolpath>(std::move(*bent.path));
+        else
+            result.errors.push_back({int(bent.refusedLine), 0, bent.error});
+        clock.done("height map");
+    }
     indexToolpath(*outcome.toolpath, result);
     clock.done("index toolpath");
     if (job.buildView) {
@@ -278,6 +287,7 @@ void ProgramSession::load(const QString &path)
                       .toolTable = m_toolTable,
                       .toolTableError = m_toolTableError,
                       .subroutinePath = m_subroutinePath,
+                      .heightMap = m_heightMap,
                       .measurePeaks = m_measurePeaks};
     emit loadStarted(path);
 

@@ -16,6 +16,7 @@
 #include "session/runfromline.h"
 #include "session/workoffsets.h"
 
+#include "gcode/heightmap.h"
 #include "gcode/toolpath.h"
 #include "machine/machineconfig.h"
 #include "machine/planner.h"
@@ -113,6 +114,11 @@ public:
         m_subroutinePath = std::move(folders);
     }
     std::uint32_t startLine() const { return m_startLine; }
+    // A height map (gcode/heightmap.h) from the next load on: the interpreted toolpath is bent
+    // to it before the view and the plan (a cut outside it is the load's error at its line);
+    // nullopt: none. The listing keeps the program's own lines.
+    void setHeightMap(std::optional<gcode::HeightMap> map) { m_heightMap = std::move(map); }
+    const std::optional<gcode::HeightMap> &heightMap() const { return m_heightMap; }
     // Each load's stages (LoadedProgram::stages) with the peak memory of each, which resets the
     // process's high-water mark at every stage (bench_gui_load; off by default).
     void setMeasurePeaks(bool on) { m_measurePeaks = on; }
@@ -153,6 +159,7 @@ private:
     std::uint32_t m_startLine = 0;
     std::optional<gcode::ToolTable> m_toolTable;
     QString m_toolTableError;
+    std::optional<gcode::HeightMap> m_heightMap;
     bool m_measurePeaks = false;
     LoadedProgram m_program;
     QThread *m_thread = nullptr;

@@ -58,6 +58,8 @@ driver::ConnectionSettings RunWorkflow::connectionFor(const machine::MachineConf
     const QString port = QString::fromStdString(config.link.port);
     if (port.isEmpty() || port == QLatin1String("emulator")) {
         settings.kind = driver::ConnectionSettings::Kind::Emulator;
+        // A simulated work top to probe on (README, "Height map"), without hardware.
+        settings.surface = qEnvironmentVariable("FREZKA_EMULATOR_SURFACE");
     } else {
         settings.kind = driver::ConnectionSettings::Kind::SerialPort;
         settings.portName = port;

@@ -50,7 +50,8 @@ public:
     const driver::MachineState &state() const { return m_link.state(); }
     // The state of the machine in the user's words ("Ready", "Tool lifted").
     static QString modeText(driver::MachineMode mode);
-    // How a profile reaches its unit: "emulator" (or no port) is the built-in emulator.
+    // How a profile reaches its unit: "emulator" (or no port) is the built-in emulator, with the
+    // simulated work top of the environment's FREZKA_EMULATOR_SURFACE (a --surface spec), if any.
     static driver::ConnectionSettings connectionFor(const machine::MachineConfig &config);
 
     void setProfile(const machine::MachineConfig &config);

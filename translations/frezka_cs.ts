@@ -368,6 +368,99 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>ProbeCli</name>
+    <message>
+        <source>usage: frezka-cli probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</source>
+        <translation>použití: frezka-cli probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM] [--retract MM] [--port CESTA|sim] [--surface SPEC] %1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
+</source>
+        <translation>frezka-cli probe: --surface %1: očekává se plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] nebo warp:Z0,DZDX,DZDY,AMP,PERIOD (strojové mm)
+</translation>
+    </message>
+    <message>
+        <source>--plate %1: the plate&apos;s thickness must be 0 mm or more (0: the tool touches the work itself).</source>
+        <translation>--plate %1: tloušťka destičky musí být 0 mm nebo více (0: nástroj se dotkne přímo obrobku).</translation>
+    </message>
+    <message>
+        <source>--depth %1: how far below the start the probe may go must be above 0 mm.</source>
+        <translation>--depth %1: jak hluboko pod výchozí polohu smí sonda sjet, musí být víc než 0 mm.</translation>
+    </message>
+    <message>
+        <source>--retract %1: the back-off above the plate must be above 0 mm.</source>
+        <translation>--retract %1: odjetí nad destičku musí být víc než 0 mm.</translation>
+    </message>
+    <message>
+        <source>--slow-feed %1: the slow probe&apos;s feed must be above 0 mm/min.</source>
+        <translation>--slow-feed %1: posuv pomalého sondování musí být víc než 0 mm/min.</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe z-plate: %1
+</source>
+        <translation>frezka-cli probe z-plate: %1
+</translation>
+    </message>
+    <message>
+        <source>The plate&apos;s top touched at machine Z %1; %2 Z is now %3 (was %4), so the work&apos;s top under the %5 mm plate is Z 0 and the tool stands at Z %6. Give the next commands --offset %7.
+</source>
+        <translation>Sonda se dotkla horní plochy destičky ve strojovém Z %1; Z systému %2 je nyní %3 (bylo %4), takže horní plocha obrobku pod destičkou tlustou %5 mm je Z 0 a nástroj stojí v Z %6. Dalším příkazům zadejte --offset %7.
+</translation>
+    </message>
+</context>
+<context>
+    <name>ProbeGridCli</name>
+    <message>
+        <source>usage: frezka-cli probe-grid (--area X0,Y0,X1,Y1 | --program FILE) --spacing MM --clearance MM --depth MM --feed MM/MIN --out MAP.csv [--port PATH|sim] [--surface SPEC] %1
+</source>
+        <translation>použití: frezka-cli probe-grid (--area X0,Y0,X1,Y1 | --program SOUBOR) --spacing MM --clearance MM --depth MM --feed MM/MIN --out MAPA.csv [--port CESTA|sim] [--surface POPIS] %1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe-grid: --area %1: expected four numbers X0,Y0,X1,Y1 (mm), such as 0,0,80,60
+</source>
+        <translation>frezka-cli probe-grid: --area %1: očekávána čtyři čísla X0,Y0,X1,Y1 (mm), např. 0,0,80,60
+</translation>
+    </message>
+    <message>
+        <source>%1: the program cuts nothing (no feed move or arc): give the area with --area X0,Y0,X1,Y1
+</source>
+        <translation>%1: program nic neobrábí (žádný pracovní posuv ani oblouk): zadejte oblast pomocí --area X0,Y0,X1,Y1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe-grid: %1
+</source>
+        <translation>frezka-cli probe-grid: %1
+</translation>
+    </message>
+    <message>
+        <source>%1 points probed, heights %2 to %3 mm from the first point (machine Z %4); the map is in %5. Set the work&apos;s Z zero on the surface at the first point (X %6, Y %7) before running with --height-map.
+</source>
+        <translation>Nasondováno %1 bodů, výšky %2 až %3 mm vůči prvnímu bodu (Z stroje %4); mapa je v %5. Před spuštěním s --height-map nastavte nulu Z obrobku na povrch v prvním bodě (X %6, Y %7).
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe-grid: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
+</source>
+        <translation>frezka-cli probe-grid: --surface %1: očekáváno plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] nebo warp:Z0,DZDX,DZDY,AMP,PERIOD (mm stroje)
+</translation>
+    </message>
+</context>
+<context>
+    <name>ProbeRunCli</name>
+    <message>
+        <source>could not connect to the emulator</source>
+        <translation>nelze se připojit k emulátoru</translation>
+    </message>
+    <message>
+        <source>probing did not end within a day of the emulator&apos;s time</source>
+        <translation>sondování neskončilo do jednoho dne času emulátoru</translation>
+    </message>
+</context>
+<context>
     <name>ProgramCli</name>
     <message>
         <source>frezka-cli: %1 needs a value
@@ -463,15 +556,15 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC [--cut-depth]]
 </source>
-        <translation>frezka-cli run: --surface %1: očekáváno plane:Z0,DZDX,DZDY nebo sine:AMP,PERIODA[,Z0] (mm stroje), např. plane:-5,0.001,0
+        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace SOUBOR] [--surface POPIS [--cut-depth]]
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC]
+        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm), such as plane:-5,0.001,0
 </source>
-        <translation>použití: frezka-cli run SOUBOR %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--faults PODÍL --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PROCENTA] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace SOUBOR] [--surface POPIS]
+        <translation>frezka-cli run: --surface %1: očekáváno plane:Z0,DZDX,DZDY, sine:AMP,PERIODA[,Z0] nebo warp:Z0,DZDX,DZDY,AMP,PERIODA (mm stroje), např. plane:-5,0.001,0
 </translation>
     </message>
 </context>
@@ -763,6 +856,14 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</source>
         <translation>Uvedení jednotky do provozu: identifikuje ji, ověří výklady protokolu, změří linku, přečte EEPROM, pak (v terminálu) po dotazu vyzkouší každou osu, spínače, vřeteno, výstupy a referování; zapíše protokol a upravený profil</translation>
+    </message>
+    <message>
+        <source>Probe a height map on the unit (G38.2 on a grid) and write its file</source>
+        <translation>Nasondovat výškovou mapu na jednotce (G38.2 v mřížce) a zapsat ji do souboru</translation>
+    </message>
+    <message>
+        <source>Probe the work: its Z zero from a touch plate (fast then slow G38.2)</source>
+        <translation>Sondovat obrobek: jeho nulu Z z dotykové destičky (G38.2 rychle, pak pomalu)</translation>
     </message>
     <message>
         <source>Run a program on each of several units sharing one serial line</source>
@@ -3713,6 +3814,117 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     </message>
 </context>
 <context>
+    <name>frezka::gui::HeightMapDialog</name>
+    <message>
+        <source>Save height map</source>
+        <translation>Uložit výškovou mapu</translation>
+    </message>
+    <message>
+        <source>Height maps (*.csv)</source>
+        <translation>Výškové mapy (*.csv)</translation>
+    </message>
+    <message>
+        <source>Load height map</source>
+        <translation>Načíst výškovou mapu</translation>
+    </message>
+    <message>
+        <source>Height map</source>
+        <translation>Výšková mapa</translation>
+    </message>
+    <message>
+        <source>Area X from / to (mm)</source>
+        <translation>Oblast X od / do (mm)</translation>
+    </message>
+    <message>
+        <source>Area Y from / to (mm)</source>
+        <translation>Oblast Y od / do (mm)</translation>
+    </message>
+    <message>
+        <source>Spacing (mm)</source>
+        <translation>Rozteč (mm)</translation>
+    </message>
+    <message>
+        <source>Clearance above Z 0 (mm)</source>
+        <translation>Bezpečná výška nad Z 0 (mm)</translation>
+    </message>
+    <message>
+        <source>Probe depth below Z 0 (mm)</source>
+        <translation>Hloubka sondování pod Z 0 (mm)</translation>
+    </message>
+    <message>
+        <source>Probe feed (mm/min)</source>
+        <translation>Posuv sondování (mm/min)</translation>
+    </message>
+    <message>
+        <source>Area of the loaded program</source>
+        <translation>Oblast načteného programu</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>Sondovat</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Uložit…</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Načíst…</translation>
+    </message>
+    <message>
+        <source>Apply to the program</source>
+        <translation>Použít na program</translation>
+    </message>
+    <message>
+        <source>Remove from the program</source>
+        <translation>Odebrat z programu</translation>
+    </message>
+    <message>
+        <source>On Apply, set the work&apos;s Z zero on the surface at the first point</source>
+        <translation>Při použití nastavit nulu Z obrobku na povrch v prvním bodě</translation>
+    </message>
+    <message>
+        <source>Probes the grid with G38.2 at every point (the probe input IN15), back up to the clearance between the points.</source>
+        <translation>Sonduje mřížku pomocí G38.2 v každém bodě (vstup sondy IN15), mezi body se vrací do bezpečné výšky.</translation>
+    </message>
+    <message>
+        <source>Probing %1 points…</source>
+        <translation>Sondování %1 bodů…</translation>
+    </message>
+    <message>
+        <source>Probed %1 of %2 points.</source>
+        <translation>Nasondováno %1 z %2 bodů.</translation>
+    </message>
+    <message>
+        <source>All %1 points probed.</source>
+        <translation>Nasondováno všech %1 bodů.</translation>
+    </message>
+    <message>
+        <source>Probing stopped after %1 of %2 points.</source>
+        <translation>Sondování se zastavilo po %1 z %2 bodů.</translation>
+    </message>
+    <message>
+        <source>There is no height map to save: probe or load one.</source>
+        <translation>Není co uložit: výškovou mapu nejprve nasondujte nebo načtěte.</translation>
+    </message>
+    <message>
+        <source>Height map saved to %1.</source>
+        <translation>Výšková mapa uložena do %1.</translation>
+    </message>
+    <message>
+        <source>Height map loaded from %1.</source>
+        <translation>Výšková mapa načtena z %1.</translation>
+    </message>
+    <message>
+        <source>%1 x %2 points, heights %3 to %4 mm from the first point (machine Z %5)</source>
+        <translation>%1 x %2 bodů, výšky %3 až %4 mm vůči prvnímu bodu (Z stroje %5)</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::HoldBanner</name>
     <message>
         <source>at line %1</source>
@@ -4292,6 +4504,18 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>C&amp;ommission this machine…</source>
         <translation>&amp;Uvést tento stroj do provozu…</translation>
+    </message>
+    <message>
+        <source>&amp;Height map…</source>
+        <translation>&amp;Výšková mapa…</translation>
+    </message>
+    <message>
+        <source>Height map applied: the program is bent to it (heights %1 to %2 mm).</source>
+        <translation>Výšková mapa použita: program je přizpůsoben povrchu (výšky %1 až %2 mm).</translation>
+    </message>
+    <message>
+        <source>Height map removed: the program runs as written.</source>
+        <translation>Výšková mapa odebrána: program poběží tak, jak je napsán.</translation>
     </message>
 </context>
 <context>
@@ -6144,7 +6368,8 @@ Options:
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
   --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
-                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+                      mm: plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or
+                      warp:Z0,DZDX,DZDY,AMP,PERIOD (the plane plus the sine)
   --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
   --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
                       profiles&apos; EEPROM polarity)
@@ -6199,7 +6424,8 @@ Volby:
   --limit IN:OSA=POLOHA[,+|-]  vstup IN (0..15) sepnutý OSOU za POLOHOU, např.
                       --limit 6:X=200000,+ (koncový spínač X u GVE64)
   --surface POPIS     horní plocha obrobku, které se dotkne sonda nástroje (IN15),
-                      v mm stroje: plane:Z0,DZDX,DZDY nebo sine:AMP,PERIODA[,Z0]
+                      v mm stroje: plane:Z0,DZDX,DZDY, sine:AMP,PERIODA[,Z0] nebo
+                      warp:Z0,DZDX,DZDY,AMP,PERIODA (rovina plus sinus)
   --steps-per-mm N[,N,N]  kroky na mm os X, Y, Z pro --surface (výchozí 200)
   --probe-contact 0|1 úroveň IN15 při dotyku (výchozí 0, jako polarita EEPROM
                       dodávaných profilů)
@@ -6756,6 +6982,77 @@ Volby:
     <message>
         <source>Manual: %1 (%2)</source>
         <translation>Ručně: %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session::HeightProbe</name>
+    <message>
+        <source>The area to probe is empty (X %1 to %2, Y %3 to %4): give its corners with X0 &lt; X1 and Y0 &lt; Y1.</source>
+        <translation>Oblast sondování je prázdná (X %1 až %2, Y %3 až %4): zadejte její rohy tak, aby X0 &lt; X1 a Y0 &lt; Y1.</translation>
+    </message>
+    <message>
+        <source>The spacing of the grid must be above 0 mm (%1 given).</source>
+        <translation>Rozteč mřížky musí být větší než 0 mm (zadáno %1).</translation>
+    </message>
+    <message>
+        <source>The probing feed must be above 0 mm/min (%1 given).</source>
+        <translation>Posuv sondování musí být větší než 0 mm/min (zadáno %1).</translation>
+    </message>
+    <message>
+        <source>The probe&apos;s lowest Z (%1) must be below the clearance height (%2): give a depth above 0 mm.</source>
+        <translation>Nejnižší Z sondy (%1) musí být pod bezpečnou výškou (%2): zadejte hloubku větší než 0 mm.</translation>
+    </message>
+    <message>
+        <source>A spacing of %1 mm gives %2 x %3 points to probe (at most %4): choose a larger spacing or a smaller area.</source>
+        <translation>Rozteč %1 mm dává %2 x %3 bodů k sondování (nejvýše %4): zvolte větší rozteč nebo menší oblast.</translation>
+    </message>
+    <message>
+        <source>Probing is already running.</source>
+        <translation>Sondování už běží.</translation>
+    </message>
+    <message>
+        <source>The machine is not ready to probe (%1): connect it and wait until it is idle, then probe again.</source>
+        <translation>Stroj není připraven k sondování (%1): připojte ho, počkejte, až bude v klidu, a sondujte znovu.</translation>
+    </message>
+    <message>
+        <source>Probing cancelled after %1 of %2 points; the tool goes up to the clearance.</source>
+        <translation>Sondování zrušeno po %1 z %2 bodů; nástroj vyjede do bezpečné výšky.</translation>
+    </message>
+    <message>
+        <source>X %1, Y %2</source>
+        <translation>X %1, Y %2</translation>
+    </message>
+    <message>
+        <source>probing</source>
+        <translation>sondování</translation>
+    </message>
+    <message>
+        <source>The move to probe at %1 cannot be planned: %2</source>
+        <translation>Pohyb k sondování v bodě %1 nelze naplánovat: %2</translation>
+    </message>
+    <message>
+        <source>The link to the machine was lost while probing at %1: probe the grid again once it is connected.</source>
+        <translation>Spojení se strojem se ztratilo při sondování v bodě %1: po opětovném připojení mřížku nasondujte znovu.</translation>
+    </message>
+    <message>
+        <source>The probe at %1 went down to Z %2 without touching the surface: the work is lower than the depth allows, or the probe is not connected. Check the probe and the clearance, or probe again with a larger depth.</source>
+        <translation>Sonda v bodě %1 sjela až na Z %2, aniž se dotkla povrchu: obrobek je níž, než hloubka dovoluje, nebo sonda není připojena. Zkontrolujte sondu a bezpečnou výšku, nebo sondujte znovu s větší hloubkou.</translation>
+    </message>
+    <message>
+        <source>The probe at %1 was already in contact before moving down: check the probe and its wiring, and that the tool is clear of the work.</source>
+        <translation>Sonda v bodě %1 byla v kontaktu už před pohybem dolů: zkontrolujte sondu a její zapojení a zda nástroj nepřekáží obrobku.</translation>
+    </message>
+    <message>
+        <source>Probing at %1 stopped: %2</source>
+        <translation>Sondování v bodě %1 se zastavilo: %2</translation>
+    </message>
+    <message>
+        <source>the job did not finish.</source>
+        <translation>úloha nedoběhla.</translation>
+    </message>
+    <message>
+        <source>Probing fast then slow needs a retract above 0 mm (%1 given): the tool backs off by it before the slow probe.</source>
+        <translation>Sondování rychle a pak pomalu potřebuje odjetí větší než 0 mm (zadáno %1): o ně nástroj odjede před pomalým sondováním.</translation>
     </message>
 </context>
 <context>

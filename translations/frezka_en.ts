@@ -368,6 +368,99 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>ProbeCli</name>
+    <message>
+        <source>usage: frezka-cli probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</source>
+        <translation>usage: frezka-cli probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
+</source>
+        <translation>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
+</translation>
+    </message>
+    <message>
+        <source>--plate %1: the plate&apos;s thickness must be 0 mm or more (0: the tool touches the work itself).</source>
+        <translation>--plate %1: the plate&apos;s thickness must be 0 mm or more (0: the tool touches the work itself).</translation>
+    </message>
+    <message>
+        <source>--depth %1: how far below the start the probe may go must be above 0 mm.</source>
+        <translation>--depth %1: how far below the start the probe may go must be above 0 mm.</translation>
+    </message>
+    <message>
+        <source>--retract %1: the back-off above the plate must be above 0 mm.</source>
+        <translation>--retract %1: the back-off above the plate must be above 0 mm.</translation>
+    </message>
+    <message>
+        <source>--slow-feed %1: the slow probe&apos;s feed must be above 0 mm/min.</source>
+        <translation>--slow-feed %1: the slow probe&apos;s feed must be above 0 mm/min.</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe z-plate: %1
+</source>
+        <translation>frezka-cli probe z-plate: %1
+</translation>
+    </message>
+    <message>
+        <source>The plate&apos;s top touched at machine Z %1; %2 Z is now %3 (was %4), so the work&apos;s top under the %5 mm plate is Z 0 and the tool stands at Z %6. Give the next commands --offset %7.
+</source>
+        <translation>The plate&apos;s top touched at machine Z %1; %2 Z is now %3 (was %4), so the work&apos;s top under the %5 mm plate is Z 0 and the tool stands at Z %6. Give the next commands --offset %7.
+</translation>
+    </message>
+</context>
+<context>
+    <name>ProbeGridCli</name>
+    <message>
+        <source>usage: frezka-cli probe-grid (--area X0,Y0,X1,Y1 | --program FILE) --spacing MM --clearance MM --depth MM --feed MM/MIN --out MAP.csv [--port PATH|sim] [--surface SPEC] %1
+</source>
+        <translation>usage: frezka-cli probe-grid (--area X0,Y0,X1,Y1 | --program FILE) --spacing MM --clearance MM --depth MM --feed MM/MIN --out MAP.csv [--port PATH|sim] [--surface SPEC] %1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe-grid: --area %1: expected four numbers X0,Y0,X1,Y1 (mm), such as 0,0,80,60
+</source>
+        <translation>frezka-cli probe-grid: --area %1: expected four numbers X0,Y0,X1,Y1 (mm), such as 0,0,80,60
+</translation>
+    </message>
+    <message>
+        <source>%1: the program cuts nothing (no feed move or arc): give the area with --area X0,Y0,X1,Y1
+</source>
+        <translation>%1: the program cuts nothing (no feed move or arc): give the area with --area X0,Y0,X1,Y1
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe-grid: %1
+</source>
+        <translation>frezka-cli probe-grid: %1
+</translation>
+    </message>
+    <message>
+        <source>%1 points probed, heights %2 to %3 mm from the first point (machine Z %4); the map is in %5. Set the work&apos;s Z zero on the surface at the first point (X %6, Y %7) before running with --height-map.
+</source>
+        <translation>%1 points probed, heights %2 to %3 mm from the first point (machine Z %4); the map is in %5. Set the work&apos;s Z zero on the surface at the first point (X %6, Y %7) before running with --height-map.
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe-grid: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
+</source>
+        <translation>frezka-cli probe-grid: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
+</translation>
+    </message>
+</context>
+<context>
+    <name>ProbeRunCli</name>
+    <message>
+        <source>could not connect to the emulator</source>
+        <translation>could not connect to the emulator</translation>
+    </message>
+    <message>
+        <source>probing did not end within a day of the emulator&apos;s time</source>
+        <translation>probing did not end within a day of the emulator&apos;s time</translation>
+    </message>
+</context>
+<context>
     <name>ProgramCli</name>
     <message>
         <source>frezka-cli: %1 needs a value
@@ -463,15 +556,15 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
+        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC [--cut-depth]]
 </source>
-        <translation>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0] (machine mm), such as plane:-5,0.001,0
+        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC [--cut-depth]]
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC]
+        <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm), such as plane:-5,0.001,0
 </source>
-        <translation>usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC]
+        <translation>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm), such as plane:-5,0.001,0
 </translation>
     </message>
 </context>
@@ -763,6 +856,14 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</source>
         <translation>Commission a unit: identify it, check the protocol&apos;s readings, measure the link, read the EEPROM, then (in a terminal) test each axis, switch, the spindle, the outputs and homing after asking; write a report and an updated profile</translation>
+    </message>
+    <message>
+        <source>Probe a height map on the unit (G38.2 on a grid) and write its file</source>
+        <translation>Probe a height map on the unit (G38.2 on a grid) and write its file</translation>
+    </message>
+    <message>
+        <source>Probe the work: its Z zero from a touch plate (fast then slow G38.2)</source>
+        <translation>Probe the work: its Z zero from a touch plate (fast then slow G38.2)</translation>
     </message>
     <message>
         <source>Run a program on each of several units sharing one serial line</source>
@@ -3710,6 +3811,117 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     </message>
 </context>
 <context>
+    <name>frezka::gui::HeightMapDialog</name>
+    <message>
+        <source>Save height map</source>
+        <translation>Save height map</translation>
+    </message>
+    <message>
+        <source>Height maps (*.csv)</source>
+        <translation>Height maps (*.csv)</translation>
+    </message>
+    <message>
+        <source>Load height map</source>
+        <translation>Load height map</translation>
+    </message>
+    <message>
+        <source>Height map</source>
+        <translation>Height map</translation>
+    </message>
+    <message>
+        <source>Area X from / to (mm)</source>
+        <translation>Area X from / to (mm)</translation>
+    </message>
+    <message>
+        <source>Area Y from / to (mm)</source>
+        <translation>Area Y from / to (mm)</translation>
+    </message>
+    <message>
+        <source>Spacing (mm)</source>
+        <translation>Spacing (mm)</translation>
+    </message>
+    <message>
+        <source>Clearance above Z 0 (mm)</source>
+        <translation>Clearance above Z 0 (mm)</translation>
+    </message>
+    <message>
+        <source>Probe depth below Z 0 (mm)</source>
+        <translation>Probe depth below Z 0 (mm)</translation>
+    </message>
+    <message>
+        <source>Probe feed (mm/min)</source>
+        <translation>Probe feed (mm/min)</translation>
+    </message>
+    <message>
+        <source>Area of the loaded program</source>
+        <translation>Area of the loaded program</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>Probe</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Save…</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Load…</translation>
+    </message>
+    <message>
+        <source>Apply to the program</source>
+        <translation>Apply to the program</translation>
+    </message>
+    <message>
+        <source>Remove from the program</source>
+        <translation>Remove from the program</translation>
+    </message>
+    <message>
+        <source>On Apply, set the work&apos;s Z zero on the surface at the first point</source>
+        <translation>On Apply, set the work&apos;s Z zero on the surface at the first point</translation>
+    </message>
+    <message>
+        <source>Probes the grid with G38.2 at every point (the probe input IN15), back up to the clearance between the points.</source>
+        <translation>Probes the grid with G38.2 at every point (the probe input IN15), back up to the clearance between the points.</translation>
+    </message>
+    <message>
+        <source>Probing %1 points…</source>
+        <translation>Probing %1 points…</translation>
+    </message>
+    <message>
+        <source>Probed %1 of %2 points.</source>
+        <translation>Probed %1 of %2 points.</translation>
+    </message>
+    <message>
+        <source>All %1 points probed.</source>
+        <translation>All %1 points probed.</translation>
+    </message>
+    <message>
+        <source>Probing stopped after %1 of %2 points.</source>
+        <translation>Probing stopped after %1 of %2 points.</translation>
+    </message>
+    <message>
+        <source>There is no height map to save: probe or load one.</source>
+        <translation>There is no height map to save: probe or load one.</translation>
+    </message>
+    <message>
+        <source>Height map saved to %1.</source>
+        <translation>Height map saved to %1.</translation>
+    </message>
+    <message>
+        <source>Height map loaded from %1.</source>
+        <translation>Height map loaded from %1.</translation>
+    </message>
+    <message>
+        <source>%1 x %2 points, heights %3 to %4 mm from the first point (machine Z %5)</source>
+        <translation>%1 x %2 points, heights %3 to %4 mm from the first point (machine Z %5)</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::HoldBanner</name>
     <message>
         <source>at line %1</source>
@@ -4285,6 +4497,18 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>C&amp;ommission this machine…</source>
         <translation>C&amp;ommission this machine…</translation>
+    </message>
+    <message>
+        <source>&amp;Height map…</source>
+        <translation>&amp;Height map…</translation>
+    </message>
+    <message>
+        <source>Height map applied: the program is bent to it (heights %1 to %2 mm).</source>
+        <translation>Height map applied: the program is bent to it (heights %1 to %2 mm).</translation>
+    </message>
+    <message>
+        <source>Height map removed: the program runs as written.</source>
+        <translation>Height map removed: the program runs as written.</translation>
     </message>
 </context>
 <context>
@@ -6131,7 +6355,8 @@ Options:
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
   --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
-                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+                      mm: plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or
+                      warp:Z0,DZDX,DZDY,AMP,PERIOD (the plane plus the sine)
   --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
   --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
                       profiles&apos; EEPROM polarity)
@@ -6186,7 +6411,8 @@ Options:
   --limit IN:AXIS=POS[,+|-]  input IN (0..15) pressed by AXIS beyond POS, e.g.
                       --limit 6:X=200000,+ (GVE64 end switch X)
   --surface SPEC      the work&apos;s top, touched by the tool probe (IN15), in machine
-                      mm: plane:Z0,DZDX,DZDY or sine:AMP,PERIOD[,Z0]
+                      mm: plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or
+                      warp:Z0,DZDX,DZDY,AMP,PERIOD (the plane plus the sine)
   --steps-per-mm N[,N,N]  steps per mm of X, Y, Z for --surface (default 200)
   --probe-contact 0|1 the IN15 level at contact (default 0, as the shipped
                       profiles&apos; EEPROM polarity)
@@ -6743,6 +6969,77 @@ Options:
     <message>
         <source>Manual: %1 (%2)</source>
         <translation>Manual: %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::session::HeightProbe</name>
+    <message>
+        <source>The area to probe is empty (X %1 to %2, Y %3 to %4): give its corners with X0 &lt; X1 and Y0 &lt; Y1.</source>
+        <translation>The area to probe is empty (X %1 to %2, Y %3 to %4): give its corners with X0 &lt; X1 and Y0 &lt; Y1.</translation>
+    </message>
+    <message>
+        <source>The spacing of the grid must be above 0 mm (%1 given).</source>
+        <translation>The spacing of the grid must be above 0 mm (%1 given).</translation>
+    </message>
+    <message>
+        <source>The probing feed must be above 0 mm/min (%1 given).</source>
+        <translation>The probing feed must be above 0 mm/min (%1 given).</translation>
+    </message>
+    <message>
+        <source>The probe&apos;s lowest Z (%1) must be below the clearance height (%2): give a depth above 0 mm.</source>
+        <translation>The probe&apos;s lowest Z (%1) must be below the clearance height (%2): give a depth above 0 mm.</translation>
+    </message>
+    <message>
+        <source>A spacing of %1 mm gives %2 x %3 points to probe (at most %4): choose a larger spacing or a smaller area.</source>
+        <translation>A spacing of %1 mm gives %2 x %3 points to probe (at most %4): choose a larger spacing or a smaller area.</translation>
+    </message>
+    <message>
+        <source>Probing is already running.</source>
+        <translation>Probing is already running.</translation>
+    </message>
+    <message>
+        <source>The machine is not ready to probe (%1): connect it and wait until it is idle, then probe again.</source>
+        <translation>The machine is not ready to probe (%1): connect it and wait until it is idle, then probe again.</translation>
+    </message>
+    <message>
+        <source>Probing cancelled after %1 of %2 points; the tool goes up to the clearance.</source>
+        <translation>Probing cancelled after %1 of %2 points; the tool goes up to the clearance.</translation>
+    </message>
+    <message>
+        <source>X %1, Y %2</source>
+        <translation>X %1, Y %2</translation>
+    </message>
+    <message>
+        <source>probing</source>
+        <translation>probing</translation>
+    </message>
+    <message>
+        <source>The move to probe at %1 cannot be planned: %2</source>
+        <translation>The move to probe at %1 cannot be planned: %2</translation>
+    </message>
+    <message>
+        <source>The link to the machine was lost while probing at %1: probe the grid again once it is connected.</source>
+        <translation>The link to the machine was lost while probing at %1: probe the grid again once it is connected.</translation>
+    </message>
+    <message>
+        <source>The probe at %1 went down to Z %2 without touching the surface: the work is lower than the depth allows, or the probe is not connected. Check the probe and the clearance, or probe again with a larger depth.</source>
+        <translation>The probe at %1 went down to Z %2 without touching the surface: the work is lower than the depth allows, or the probe is not connected. Check the probe and the clearance, or probe again with a larger depth.</translation>
+    </message>
+    <message>
+        <source>The probe at %1 was already in contact before moving down: check the probe and its wiring, and that the tool is clear of the work.</source>
+        <translation>The probe at %1 was already in contact before moving down: check the probe and its wiring, and that the tool is clear of the work.</translation>
+    </message>
+    <message>
+        <source>Probing at %1 stopped: %2</source>
+        <translation>Probing at %1 stopped: %2</translation>
+    </message>
+    <message>
+        <source>the job did not finish.</source>
+        <translation>the job did not finish.</translation>
+    </message>
+    <message>
+        <source>Probing fast then slow needs a retract above 0 mm (%1 given): the tool backs off by it before the slow probe.</source>
+        <translation>Probing fast then slow needs a retract above 0 mm (%1 given): the tool backs off by it before the slow probe.</translation>
     </message>
 </context>
 <context>

@@ -36,6 +36,10 @@
 // height and the start point in steps, and where the emulator's counters first went below the
 // safe height (unit_first_below_safe_z: straight above the start when the approach came first).
 //
+// --cut-depth (with --surface) samples the emulator's counters while the job runs and reports
+// the tool's depth below the simulated surface while it cuts (runjob.h, CutDepth): cut_depth
+// with the samples, the least and the greatest depth and where they were.
+//
 // --trace FILE saves the serial line of the run both ways, whether the job ended or not, in the
 // format of docs/serial-trace.md (the session's record, driver/link/tracerecorder.h).
 #include "cli.h"
@@ -70,7 +74,8 @@ int usage()
     cli::err(RunCli::tr("usage: frezka-cli run FILE %1 [--port PATH|sim] [--baud N] "
                         "[--latency-ms N] [--faults RATE --seed N] [--clock virtual|real] [--home] "
                         "[--return-to-path] [--feed-override PCT] [--hold-at-line N [--lift]] "
-                        "[--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC]\n")
+                        "[--continue-at-stops] [--from-line N] [--trace FILE] [--surface SPEC "
+                        "[--cut-depth]]\n")
                  .arg(cli::programOptionsUsage()));
     return 2;
 }
@@ -126,10 +131,12 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
             emulator::ProbeSurface surface;
             ok = emulator::parseProbeSurface(a.surface.toStdString(), &surface);
             if (!ok)
-                cli::err(RunCli::tr("frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY "
-                                    "or sine:AMP,PERIOD[,Z0] (machine mm), such as "
-                                    "plane:-5,0.001,0\n")
+                cli::err(RunCli::tr("frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, "
+                                    "sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD "
+                                    "(machine mm), such as plane:-5,0.001,0\n")
                              .arg(a.surface));
+        } else if (k == QLatin1String("--cut-depth")) {
+            a.cutDepth = true;
         } else if (a.file.isEmpty() && !k.startsWith(QLatin1String("--"))) {
             a.file = k;
         } else {
@@ -147,6 +154,8 @@ std::optional<RunArgs> parseArgs(const QStringList &args)
         return std::nullopt; // a real port runs in real time, with its own faults and latency
     if (!a.surface.isEmpty() && !(sim && a.virtualClock))
         return std::nullopt; // the simulated surface is the in-process emulator's
+    if (a.cutDepth && a.surface.isEmpty())
+        return std::nullopt; // the depth is measured below the simulated surface
     if ((a.lift && a.holdAtLine == 0) || (a.holdAtLine > 0 && !(sim && a.virtualClock)))
         return std::nullopt; // the scripted operator plays on the virtual clock only
     return a;
@@ -292,6 +301,15 @@ void printReport(const RunOutcome &o, const machine::UnitProgram &program,
     j[QStringLiteral("recovered")] = static_cast<qint64>(r.recovered);
     j[QStringLiteral("path_faults")] = static_cast<qint64>(r.pathFaults);
     j[QStringLiteral("program_stops")] = o.programStops;
+    if (o.cutDepth) { // --cut-depth: the tool's depth below the simulated surface while cutting
+        const cli::CutDepth &d = *o.cutDepth;
+        auto at = [](const std::array<double, 3> &p) { return QJsonArray{p[0], p[1], p[2]}; };
+        j[QStringLiteral("cut_depth")] = QJsonObject{{QStringLiteral("samples"), d.samples},
+                                                     {QStringLiteral("min_mm"), d.minMm},
+                                                     {QStringLiteral("max_mm"), d.maxMm},
+                                                     {QStringLiteral("min_at_mm"), at(d.minAtMm)},
+                                                     {QStringLiteral("max_at_mm"), at(d.maxAtMm)}};
+    }
     cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
              QLatin1Char('\n'));
 }
@@ -379,7 +397,8 @@ FREZKA_CLI_COMMAND(
     "run FILE [--machine PROFILE] [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]] "
     "[--port PATH|sim] [--baud N] [--latency-ms N] [--faults RATE --seed N] "
     "[--clock virtual|real] [--home] [--return-to-path] [--feed-override PCT] "
-    "[--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE]",
+    "[--hold-at-line N [--lift]] [--continue-at-stops] [--from-line N] [--trace FILE] "
+    "[--surface SPEC [--cut-depth]]",
     QT_TRANSLATE_NOOP(
         "frezka::cli",
         "Run a G-code job on a GVE unit or the emulator, with progress and a JSON report"),

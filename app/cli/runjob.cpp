@@ -225,6 +225,30 @@ void watchBelow(const RunArgs &a, const machine::MachineConfig &config, emulator
     unit.clearTrace();
 }
 
+// --cut-depth: one sample of the unit's counters (see CutDepth); *last: the previous sample.
+void sampleCutDepth(const emulator::Unit &unit, const emulator::ProbeSurface &surface,
+                    std::array<std::int64_t, 4> *last, CutDepth &depth)
+{
+    const std::array<std::int64_t, 4> at = unit.position();
+    const bool movedXY = at[0] != (*last)[0] || at[1] != (*last)[1];
+    *last = at;
+    const std::array<double, 3> mm{double(at[0]) / surface.stepsPerMm[0],
+                                   double(at[1]) / surface.stepsPerMm[1],
+                                   double(at[2]) / surface.stepsPerMm[2]};
+    const double below = surface.heightMm(mm[0], mm[1]) - mm[2];
+    if (!movedXY || below < -CutDepth::kCutBandMm)
+        return;
+    if (depth.samples == 0 || below < depth.minMm) {
+        depth.minMm = below;
+        depth.minAtMm = mm;
+    }
+    if (depth.samples == 0 || below > depth.maxMm) {
+        depth.maxMm = below;
+        depth.maxAtMm = mm;
+    }
+    ++depth.samples;
+}
+
 } // namespace
 
 RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
@@ -246,12 +270,8 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
         unit.machine.hasWorkSurface = true;
         unit.machine.workSurfaceZSteps = machine::stepsOf(*workTopMm, config.axes[2].stepsPerMm);
     }
-    if (!a.surface.isEmpty() && // checked by parseArgs; the surface in machine mm
-        emulator::parseProbeSurface(a.surface.toStdString(), &unit.surface)) {
-        for (std::size_t i = 0; i < 3; ++i)
-            unit.surface.stepsPerMm[i] = config.axes[i].stepsPerMm;
-        unit.surface.contactHigh = (config.eeprom.polarityHigh & 0x80) != 0; // as the profile
-    }
+    if (!a.surface.isEmpty()) // checked by parseArgs; the surface in machine mm
+        driver::setProbeSurface(unit, a.surface.toStdString(), config);
     unit.trace = a.watchBelowZMm.has_value();
     driver::TraceRecorder &recorder = driver::TraceRecorder::session();
     const auto &variant = protocol::variantInfo(config.unit.variant);
@@ -288,8 +308,13 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
             return out;
         }
     }
+    std::array<std::int64_t, 4> lastSample = link.port().unit().position();
+    if (a.cutDepth)
+        out.cutDepth = CutDepth{};
     while (!workflow.hasEnded()) {
-        link.runFor(0.25);
+        link.runFor(a.cutDepth ? CutDepth::kCutSampleS : 0.25);
+        if (a.cutDepth)
+            sampleCutDepth(link.port().unit(), unit.surface, &lastSample, *out.cutDepth);
         watchBelow(a, config, link.port().unit(), out);
         if (link.liveState().jobActive)
             progress.show(link.liveState(), link.now());

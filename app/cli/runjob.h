@@ -51,6 +51,21 @@ struct RunArgs
     QString traceFile; // --trace: the serial trace is saved here when the run ends
     // --surface SPEC: the emulator's work top for probing (driver/emulator/surface.h), sim only.
     QString surface;
+    // --cut-depth (with --surface): the tool's depth below the surface sampled while it cuts.
+    bool cutDepth = false;
+};
+
+// --cut-depth: the tool tip's depth below the simulated surface (mm, positive below), sampled
+// from the emulator's counters every kCutSampleS of the virtual clock while the tool moves in
+// X/Y no higher than kCutBandMm above the surface (a cut; rapids above the work and vertical
+// plunges and retracts are left out).
+struct CutDepth
+{
+    static constexpr double kCutSampleS = 0.002;
+    static constexpr double kCutBandMm = 0.5;
+    int samples = 0;
+    double minMm = 0, maxMm = 0;
+    std::array<double, 3> minAtMm{}, maxAtMm{}; // where the tool was (machine X, Y, Z)
 };
 
 // What a run came to: the driver's job report and the unit's end state (emulator: its counters).
@@ -65,6 +80,7 @@ struct RunOutcome
     int programStops = 0;                                 // M0 / M1 / M6 the run continued after
     std::optional<std::array<std::int64_t, 4>> firstBelowSteps; // RunArgs::watchBelowZMm's
     std::optional<std::array<std::int64_t, 4>> probeSteps;      // the last probe's trip point
+    std::optional<CutDepth> cutDepth;                           // RunArgs::cutDepth's
     QString error;
 };
 

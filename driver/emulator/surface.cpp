@@ -18,6 +18,10 @@ double ProbeSurface::heightMm(double x, double y) const
         const double w = 2 * std::numbers::pi / p[1];
         return p[2] + p[0] * std::sin(w * x) * std::sin(w * y);
     }
+    case Kind::Warp: {
+        const double w = 2 * std::numbers::pi / p[4];
+        return p[0] + p[1] * x + p[2] * y + p[3] * std::sin(w * x) * std::sin(w * y);
+    }
     }
     return 0;
 }
@@ -35,9 +39,9 @@ bool parseProbeSurface(const std::string &spec, ProbeSurface *out)
         return false;
     const std::string name = spec.substr(0, colon);
     std::istringstream in(spec.substr(colon + 1));
-    std::array<double, 3> v{};
+    std::array<double, 5> v{};
     int n = 0;
-    for (std::string cell; n < 3 && std::getline(in, cell, ',');) {
+    for (std::string cell; n < 5 && std::getline(in, cell, ',');) {
         std::size_t used = 0;
         try {
             v[std::size_t(n)] = std::stod(cell, &used);
@@ -49,12 +53,14 @@ bool parseProbeSurface(const std::string &spec, ProbeSurface *out)
         ++n;
     }
     if (in.rdbuf()->in_avail() > 0)
-        return false; // more than three numbers
+        return false; // more than five numbers
     ProbeSurface s = *out;
     if (name == "plane" && n == 3) {
         s.kind = ProbeSurface::Kind::Plane;
     } else if (name == "sine" && (n == 2 || n == 3) && v[1] > 0) {
         s.kind = ProbeSurface::Kind::Sine;
+    } else if (name == "warp" && n == 5 && v[4] > 0) {
+        s.kind = ProbeSurface::Kind::Warp;
     } else {
         return false;
     }

@@ -11,6 +11,7 @@
 // Specs (gve-emu --surface, frezka-cli --surface):
 //   plane:Z0,DZDX,DZDY       z = Z0 + DZDX * x + DZDY * y
 //   sine:AMP,PERIOD[,Z0]     z = Z0 + AMP * sin(2 pi x / PERIOD) * sin(2 pi y / PERIOD)
+//   warp:Z0,DZDX,DZDY,AMP,PERIOD   the plane plus the sine (a tilted, warped board)
 // with x, y, z in machine millimetres.
 
 #include <array>
@@ -21,9 +22,10 @@ namespace frezka::emulator {
 
 struct ProbeSurface
 {
-    enum class Kind { None, Plane, Sine };
+    enum class Kind { None, Plane, Sine, Warp };
     Kind kind = Kind::None;
-    std::array<double, 3> p{};                       // plane: Z0, DZDX, DZDY; sine: AMP, PERIOD, Z0
+    // plane: Z0, DZDX, DZDY; sine: AMP, PERIOD, Z0; warp: Z0, DZDX, DZDY, AMP, PERIOD
+    std::array<double, 5> p{};
     std::array<double, 3> stepsPerMm{200, 200, 200}; // X, Y, Z of the machine
     int input = 15;
     // The input's level at contact: 1 for a normally closed probe (the unit's own reading of

@@ -6,6 +6,19 @@
 
 namespace frezka::driver {
 
+bool setProbeSurface(emulator::UnitOptions &unit, const std::string &spec,
+                     const machine::MachineConfig &config)
+{
+    emulator::ProbeSurface surface = unit.surface;
+    if (!emulator::parseProbeSurface(spec, &surface))
+        return false;
+    for (std::size_t i = 0; i < 3; ++i)
+        surface.stepsPerMm[i] = config.axes[i].stepsPerMm;
+    surface.contactHigh = (config.eeprom.polarityHigh & 0x80) != 0; // as the profile
+    unit.surface = surface;
+    return true;
+}
+
 emulator::UnitOptions unitOptionsFor(const machine::MachineConfig &config)
 {
     emulator::UnitOptions o;

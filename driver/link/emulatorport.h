@@ -45,6 +45,11 @@ struct WireStats
 // machine model of its safety counters: the spindle's spin-up and the axes' maximum speeds (the
 // work surface is not known from a profile: set it where the program tells it).
 emulator::UnitOptions unitOptionsFor(const machine::MachineConfig &config);
+// Gives the unit the simulated work top of `spec` (driver/emulator/surface.h) with the profile's
+// steps per mm and its probe input's contact level (EEPROM polarity, ST3 bit 7); false and
+// nothing changed when the spec is malformed.
+bool setProbeSurface(emulator::UnitOptions &unit, const std::string &spec,
+                     const machine::MachineConfig &config);
 
 // The emulator's wire options for the driver's short form.
 emulator::WireOptions emulatorWireOptions(const WireOptions &wire);

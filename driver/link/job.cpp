@@ -64,6 +64,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     }
     m_program = std::move(program);
     m_active = true;
+    ++m_serial;
     m_cursor = {};
     m_streamBlocked = m_queueFullSeen = m_afterRest = false;
     m_check.reset();

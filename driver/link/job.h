@@ -28,6 +28,7 @@
 #include "driver/link/progresscheck.h"
 #include "machine/unitprogram.h"
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -47,6 +48,8 @@ public:
     // Accepts the program (nullopt) or says why not, changing nothing.
     std::optional<MachineError> start(machine::UnitProgram program, double now);
     bool active() const { return m_active; }
+    // Counts the jobs started: an operation of one job tells it from the next.
+    std::uint64_t serial() const { return m_serial; }
     // Running, not waiting for the machine, the operator or a check, and not before waitUntil.
     bool mayStream(double now) const;
     // ... and commands are left to send.
@@ -105,6 +108,7 @@ private:
 
     CoreHost &m_host;
     bool m_active = false;
+    std::uint64_t m_serial = 0;
     machine::UnitProgram m_program;
     JobCursor m_cursor;
     bool m_streamBlocked = false; // waiting for idle / operator / verification

@@ -52,6 +52,9 @@ struct ConnectionSettings
     double latencyMs = 0; // Emulator: USB-serial latency per direction
     double faultRate = 0; // Emulator: byte errors per byte (1e-3 = one per 1000 bytes)
     quint32 seed = 1;     // Emulator: fault injector seed
+    // Emulator: the simulated work top for probing (driver/emulator/surface.h, such as
+    // plane:-20,0.001,0); empty or malformed: none.
+    QString surface;
     friend bool operator==(const ConnectionSettings &, const ConnectionSettings &) = default;
 };
 

@@ -39,7 +39,11 @@ void ProbeMove::start(std::size_t index)
                     if (m_host.unitError(o, "probe move", MachineMode::Alarm))
                         return;
                     m_host.setHaltExpected(true);
-                    m_host.afterStopOrInterrupt([this, index, mustTrip] {
+                    m_host.afterStopOrInterrupt([this, index, mustTrip, serial = m_job.serial()] {
+                        if (!m_job.active() || m_job.serial() != serial) {
+                            disarm(); // the job aborted meanwhile: not evaluated
+                            return;
+                        }
                         // The unit brakes after the input fires; H answers only once it stands
                         // (two equal position reads alone can come from the last, slow steps of
                         // the ramp).
@@ -49,6 +53,17 @@ void ProbeMove::start(std::size_t index)
                         m_host.whenStill([this, index, mustTrip] { end(index, mustTrip); });
                     });
                 });
+}
+
+// The probe input back to the profile's interrupt mask and polarity.
+void ProbeMove::disarm()
+{
+    const machine::EepromConfig &ee = m_host.config().eeprom;
+    m_host.send(cmd::statusWrite(1, ee.interruptEnableHigh), [](const Outcome &) {});
+    m_host.send(cmd::statusWrite(3, ee.polarityHigh), [this](const Outcome &o) {
+        m_host.setHaltExpected(false);
+        m_host.unitError(o, "disarming the probe input", MachineMode::Alarm);
+    });
 }
 
 // The probe read back, the move dropped and disarmed, then the outcome (machine::probeOutcome).

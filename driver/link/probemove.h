@@ -9,7 +9,9 @@
 // input disarmed. A G38.2/.4 that did not trip fails the job. The planner planned the rest of
 // the program from the probe's programmed end, so when the probe stops short the path guard is
 // switched off, and when motion follows the job ends there (to be planned again from the trip
-// point) rather than run displaced; otherwise the job's stream runs on. The arming and the
+// point) rather than run displaced; otherwise the job's stream runs on. A probe move aborted
+// before it stops is not evaluated (no probe error after the abort): the input is disarmed
+// only. The arming and the
 // reading of the outcome are machine/manualmoves.h's (probeArming, probeOutcome).
 
 #include <cstddef>
@@ -31,6 +33,7 @@ public:
 
 private:
     void end(std::size_t index, bool mustTrip);
+    void disarm();
 
     CoreHost &m_host;
     Job &m_job;

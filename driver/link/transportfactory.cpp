@@ -29,7 +29,10 @@ Transport *createInner(const ConnectionSettings &settings, const machine::Machin
         wire.byteErrorRate = settings.faultRate;
         wire.replyLossRate = settings.faultRate;
         wire.seed = settings.seed;
-        return new EmulatorTransport(unitOptionsFor(config), wire, parent);
+        emulator::UnitOptions unit = unitOptionsFor(config);
+        if (!settings.surface.isEmpty())
+            setProbeSurface(unit, settings.surface.toStdString(), config);
+        return new EmulatorTransport(unit, wire, parent);
     }
     }
     *error = QCoreApplication::translate("LinkWorker", "unknown connection kind");

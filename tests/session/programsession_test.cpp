@@ -150,6 +150,48 @@ TEST(ProgramSession, ReloadPlansWithTheOffsetsAndPositionOfNow)
               std::llround(5 * kGve64.axes[0].stepsPerMm)); // planned from where it stands
 }
 
+// A height map (issue 19) bends the loaded program before its plan: the cut split to the grid
+// and raised by the surface, every piece on the program's line; a cut outside the map is the
+// load's error at its line; without the map the program is as written again.
+TEST(ProgramSession, AHeightMapBendsTheProgramBeforeItsPlan)
+{
+    Loader l;
+    l.session.setProfile(kGve64);
+    gcode::HeightMap map(10, 10, 10, 10, 3, 2); // X 10..30, Y 10..20
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 2; ++j)
+            map.setZ(i, j, 0.1 * i); // rising 0.01 mm per mm in X
+    l.session.setHeightMap(map);
+    const QString path = l.write("cut.nc", "G21 G90\nG0 X10 Y15 Z-5\nG1 X30 F600\nM2\n");
+    ASSERT_TRUE(l.wait([&] { l.session.load(path); }));
+    const LoadedProgram &p = l.session.program();
+    ASSERT_TRUE(p.runnable()) << (p.errors.empty() ? "" : p.errors[0].text.toStdString());
+    EXPECT_EQ(p.toolpath->last(), (gcode::Point4{30, 15, -4.8, 0}));
+    std::size_t cutPieces = 0;
+    for (std::size_t i = 0; i < p.toolpath->size(); ++i) {
+        if (p.toolpath->kind(i) != gcode::MotionKind::Feed)
+            continue;
+        ++cutPieces;
+        EXPECT_EQ(p.toolpath->line(i), 3u);
+        EXPECT_NEAR(p.toolpath->end(i).z, -5 + 0.01 * (p.toolpath->end(i).x - 10), 1e-9);
+    }
+    EXPECT_EQ(cutPieces, 2u); // split at the grid's 10 mm spacing
+    EXPECT_EQ(p.unitProgram->commands.back().endSteps[2],
+              std::llround(-4.8 * kGve64.axes[2].stepsPerMm));
+
+    ASSERT_TRUE(l.wait([&] {
+        l.session.load(l.write("wide.nc", "G21 G90\nG0 X10 Y15 Z-5\n"
+                                          "G1 X40 F600\nM2\n"));
+    }));
+    ASSERT_FALSE(l.session.program().errors.empty());
+    EXPECT_EQ(l.session.program().errors[0].line, 3);
+    EXPECT_FALSE(l.session.program().runnable());
+
+    l.session.setHeightMap(std::nullopt);
+    ASSERT_TRUE(l.wait([&] { l.session.load(path); }));
+    EXPECT_EQ(l.session.program().toolpath->last(), (gcode::Point4{30, 15, -5, 0}));
+}
+
 TEST(ProgramSession, WithoutAProfileItIsCheckedNotPlanned)
 {
     Loader l;

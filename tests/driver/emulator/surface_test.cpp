@@ -52,8 +52,11 @@ TEST(ProbeSurface, ParsesPlaneAndSineAndRefusesTheRest)
     EXPECT_DOUBLE_EQ(s.heightMm(10, 20), -5 + 0.1 - 0.4);
     ASSERT_TRUE(parseProbeSurface("sine:0.15,100", &s));
     EXPECT_NEAR(s.heightMm(25, 25), 0.15, 1e-12);
-    for (const char *bad :
-         {"plane:1,2", "sine:1,0", "cone:1,2,3", "plane:1,2,x", "plane", "plane:1,2,3,4"})
+    ASSERT_TRUE(parseProbeSurface("warp:-20,0.002,0.001,0.05,100", &s)); // plane + sine
+    EXPECT_EQ(s.kind, ProbeSurface::Kind::Warp);
+    EXPECT_NEAR(s.heightMm(25, 75), -20 + 0.05 + 0.075 - 0.05, 1e-12);
+    for (const char *bad : {"plane:1,2", "sine:1,0", "cone:1,2,3", "plane:1,2,x", "plane",
+                            "plane:1,2,3,4", "warp:1,2,3,4", "warp:1,2,3,4,0", "warp:1,2,3,4,5,6"})
         EXPECT_FALSE(parseProbeSurface(bad, &s)) << bad;
 }
 

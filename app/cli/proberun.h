@@ -1,0 +1,40 @@
+#pragma once
+// Running a session::HeightProbe from frezka-cli (probe-grid, probe z-plate) on the unit: the
+// in-process emulator on a virtual clock (--port sim, with --surface its simulated work top,
+// recording the lowest Z counter it reached) or a serial port / pty through the link worker on
+// this thread's event loop, as frezka-cli run does.
+
+#include "machine/machineconfig.h"
+#include "machine/steps.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+namespace frezka::driver {
+struct MachineState;
+}
+namespace frezka::session {
+class HeightProbe;
+}
+
+namespace frezka::cli {
+
+struct ProbeRunOutcome
+{
+    bool ok = false;
+    QString error;                                // translated; empty when ok
+    std::optional<machine::Steps4> unitSteps;     // the emulator's counters at the end
+    std::optional<std::int64_t> unitLowestZSteps; // the lowest Z counter the emulator reached
+};
+
+// Connects, calls start(probe, the idle machine's state) once (false: it did not start, its
+// error is probe.error()), runs until the probe's finished() and calls done(probe, ok) then.
+ProbeRunOutcome
+runProbe(const QString &port, const QString &surface, const machine::MachineConfig &config,
+         const std::function<bool(session::HeightProbe &, const driver::MachineState &)> &start,
+         const std::function<void(const session::HeightProbe &, bool)> &done);
+
+} // namespace frezka::cli
