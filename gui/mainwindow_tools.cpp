@@ -83,6 +83,12 @@ ToolTableDialog *MainWindow::openToolTable()
     if (!m_toolTable) {
         m_toolTable = new ToolTableDialog(tools.path, this);
         m_toolTable->setAttribute(Qt::WA_DeleteOnClose);
+        m_toolTable->setToolSensor(*m_link, profile());
+        connect(m_toolTable, &ToolTableDialog::measured, this, [this](int tool, double mm) {
+            m_console->appendInfo(tr("Tool %1 measured on the tool sensor: %2 mm long.")
+                                      .arg(tool)
+                                      .arg(mm, 0, 'f', 4));
+        });
         connect(m_toolTable, &ToolTableDialog::saved, this, [this] {
             loadToolTable();
             m_console->appendInfo(tr("Tool table saved; programs are checked with it."));

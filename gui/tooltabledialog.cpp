@@ -1,5 +1,9 @@
 #include "tooltabledialog.h"
 
+#include "session/heightprobe.h"
+#include "session/toollength.h"
+
+#include <QCloseEvent>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -43,6 +47,8 @@ ToolTableDialog::ToolTableDialog(const QString &path, QWidget *parent)
     , m_remove(new QPushButton(this))
     , m_save(new QPushButton(this))
     , m_close(new QPushButton(this))
+    , m_measure(new QPushButton(this))
+    , m_status(new QLabel(this))
 {
     setObjectName(QStringLiteral("toolTableDialog"));
     m_grid->setObjectName(QStringLiteral("toolGrid"));
@@ -51,6 +57,11 @@ ToolTableDialog::ToolTableDialog(const QString &path, QWidget *parent)
     m_remove->setObjectName(QStringLiteral("removeTool"));
     m_save->setObjectName(QStringLiteral("saveToolTable"));
     m_close->setObjectName(QStringLiteral("closeToolTable"));
+    m_measure->setObjectName(QStringLiteral("measureTool"));
+    m_status->setObjectName(QStringLiteral("toolTableStatus"));
+    m_status->setWordWrap(true);
+    m_status->hide();
+    m_measure->hide(); // until a machine with a tool sensor is given
     m_error->setWordWrap(true);
     m_error->setStyleSheet(QStringLiteral("color: #b00020"));
     m_error->hide();
@@ -58,7 +69,7 @@ ToolTableDialog::ToolTableDialog(const QString &path, QWidget *parent)
     m_grid->horizontalHeader()->setStretchLastSection(true);
     m_grid->setSelectionBehavior(QAbstractItemView::SelectRows);
     auto *buttons = new QHBoxLayout;
-    for (QPushButton *b : {m_add, m_remove})
+    for (QPushButton *b : {m_add, m_remove, m_measure})
         buttons->addWidget(b);
     buttons->addStretch();
     for (QPushButton *b : {m_save, m_close})
@@ -66,12 +77,14 @@ ToolTableDialog::ToolTableDialog(const QString &path, QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_file);
     layout->addWidget(m_grid);
+    layout->addWidget(m_status);
     layout->addWidget(m_error);
     layout->addLayout(buttons);
     connect(m_add, &QPushButton::clicked, this, &ToolTableDialog::addTool);
     connect(m_remove, &QPushButton::clicked, this, &ToolTableDialog::removeSelectedTool);
     connect(m_save, &QPushButton::clicked, this, &ToolTableDialog::save);
     connect(m_close, &QPushButton::clicked, this, &QDialog::close);
+    connect(m_measure, &QPushButton::clicked, this, &ToolTableDialog::measureSelectedTool);
     retranslate();
     resize(640, 400);
     reload();
@@ -202,6 +215,103 @@ bool ToolTableDialog::save()
     return true;
 }
 
+void ToolTableDialog::setToolSensor(session::MachineLink &link,
+                                    const machine::MachineConfig &config)
+{
+    delete m_probe;
+    m_probe = new session::HeightProbe(link, config, this);
+    connect(m_probe, &session::HeightProbe::finished, this, &ToolTableDialog::measureFinished);
+    m_sensor = config.tools.sensor;
+    m_measure->setVisible(session::toolSensorProblem(config).isEmpty());
+    updateMeasureButton();
+}
+
+bool ToolTableDialog::measuring() const
+{
+    return m_probe && m_probe->running();
+}
+
+bool ToolTableDialog::measureSelectedTool()
+{
+    if (measuring()) {
+        m_probe->cancel();
+        return false;
+    }
+    const int row = m_grid->currentRow();
+    const QTableWidgetItem *it = row >= 0 ? m_grid->item(row, ToolColumn) : nullptr;
+    bool ok = false;
+    const int tool = it ? it->text().toInt(&ok) : 0;
+    if (!m_probe || !ok || tool < 1) {
+        showError(tr("Select the row of the tool in the spindle, then measure it."));
+        return false;
+    }
+    if (!m_probe->startAt(m_sensor.xMm, m_sensor.yMm, session::toolSensorSettings(m_sensor))) {
+        showError(m_probe->error());
+        return false;
+    }
+    m_measuringRow = row;
+    m_measuringTool = tool;
+    showError({});
+    m_status->setText(tr("Measuring tool %1 on the tool sensor…").arg(tool));
+    m_status->show();
+    updateMeasureButton();
+    return true;
+}
+
+// The length into the measured row (if it still shows that tool), then saved.
+void ToolTableDialog::measureFinished(bool ok)
+{
+    updateMeasureButton();
+    const std::optional<double> trip = m_probe->pointZMm();
+    if (!ok || !trip) {
+        m_status->hide();
+        showError(m_probe->error());
+        return;
+    }
+    const double length = session::toolLengthFromTrip(m_sensor, *trip);
+    const QTableWidgetItem *it =
+        m_measuringRow < m_grid->rowCount() ? m_grid->item(m_measuringRow, ToolColumn) : nullptr;
+    int row = it && it->text().toInt() == m_measuringTool ? m_measuringRow : -1;
+    for (int r = 0; r < m_grid->rowCount() && row < 0; ++r) {
+        const QTableWidgetItem *t = m_grid->item(r, ToolColumn);
+        if (t && t->text().toInt() == m_measuringTool)
+            row = r;
+    }
+    if (row < 0) { // the row was removed meanwhile: added again
+        addTool();
+        row = m_grid->rowCount() - 1;
+        m_grid->item(row, ToolColumn)->setText(QString::number(m_measuringTool));
+        m_grid->item(row, PocketColumn)->setText(QString::number(m_measuringTool));
+    }
+    m_grid->item(row, LengthColumn)->setText(number(length));
+    m_status->setText(tr("Tool %1 is %2 mm long (the sensor tripped at machine Z %3).")
+                          .arg(m_measuringTool)
+                          .arg(length, 0, 'f', 4)
+                          .arg(*trip, 0, 'f', 4));
+    if (save())
+        emit measured(m_measuringTool, length);
+}
+
+void ToolTableDialog::updateMeasureButton()
+{
+    m_measure->setText(measuring() ? tr("S&top measuring") : tr("&Measure length"));
+    m_measure->setToolTip(tr("Probes the selected tool on the tool length sensor (fast, then "
+                             "slow) and writes its length into the table."));
+}
+
+void ToolTableDialog::closeEvent(QCloseEvent *event)
+{
+    if (measuring()) {
+        m_probe->cancel();
+        m_status->setText(tr("Measuring stopped: the tool goes back up to the sensor's "
+                             "clearance. Close the table when it is up."));
+        m_status->show();
+        event->ignore();
+        return;
+    }
+    QDialog::closeEvent(event);
+}
+
 void ToolTableDialog::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange)
@@ -218,6 +328,7 @@ void ToolTableDialog::retranslate()
     m_add->setText(tr("&Add tool"));
     m_remove->setText(tr("&Remove tool"));
     m_save->setText(tr("&Save"));
+    updateMeasureButton();
     m_close->setText(tr("&Close"));
 }
 

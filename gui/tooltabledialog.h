@@ -6,6 +6,7 @@
 // angles, orientation) are kept as they were read.
 
 #include "gcode/tooltable.h"
+#include "machine/machineconfig.h"
 
 #include <QDialog>
 
@@ -14,6 +15,11 @@
 class QLabel;
 class QPushButton;
 class QTableWidget;
+
+namespace frezka::session {
+class HeightProbe;
+class MachineLink;
+} // namespace frezka::session
 
 namespace frezka::gui {
 
@@ -37,23 +43,40 @@ public:
     // The grid as a table; false with *error (translated, naming the row) when a row is bad.
     bool tableFromGrid(gcode::ToolTable *table, QString *error) const;
     bool save(); // checks, writes atomically; saved() on success
+    // The machine the tool sensor is on (issue 19 item 1): Measure probes the selected tool's
+    // length on the profile's tools.sensor (session/toollength.h), puts it in the row and saves.
+    void setToolSensor(session::MachineLink &link, const machine::MachineConfig &config);
+    // Starts measuring the current row's tool; false with the reason shown when it cannot.
+    // measured(tool, length) or the error follows; a second call while measuring stops it (the
+    // tool goes back up to the sensor's clearance).
+    bool measureSelectedTool();
+    bool measuring() const;
 
 signals:
     void saved(const gcode::ToolTable &table);
+    void measured(int tool, double lengthMm);
 
 protected:
     void changeEvent(QEvent *event) override;
+    // While measuring: the probe stopped (the tool goes back up), the dialog stays open.
+    void closeEvent(QCloseEvent *event) override;
 
 private:
     void retranslate();
     void setRow(int row, const gcode::ToolEntry &entry);
     void showError(const QString &text);
+    void measureFinished(bool ok);
+    void updateMeasureButton();
 
     QString m_path;
     QTableWidget *m_grid;
     QLabel *m_file;
     QLabel *m_error;
-    QPushButton *m_add, *m_remove, *m_save, *m_close;
+    QPushButton *m_add, *m_remove, *m_save, *m_close, *m_measure;
+    QLabel *m_status;
+    session::HeightProbe *m_probe = nullptr;
+    machine::ToolSensorConfig m_sensor;
+    int m_measuringRow = -1, m_measuringTool = 0;
     std::vector<gcode::ToolEntry> m_rows; // as read, for the words the grid does not show
 };
 

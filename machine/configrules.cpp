@@ -165,6 +165,35 @@ struct Rules
         }
     }
 
+    // The tool sensor's position and its probe's range inside the soft limits, the slow probe
+    // no faster than the fast one.
+    void toolSensor()
+    {
+        const ToolSensorConfig &k = c.tools.sensor;
+        if (!k.enabled)
+            return;
+        const double at[3] = {k.xMm, k.yMm, k.clearanceZMm};
+        const char *keys[3] = {"tools.sensor.xMm", "tools.sensor.yMm", "tools.sensor.clearanceZMm"};
+        for (int i = 0; i < 3; ++i) {
+            const AxisConfig &a = c.axes[static_cast<std::size_t>(i)];
+            if (a.present && (at[i] < a.softMinMm || at[i] > a.softMaxMm))
+                fail(keys[i], "is " + fmt(at[i]) + " mm, outside axis " + kAxisLetters[i] +
+                                  "'s soft limits " + fmt(a.softMinMm) + " .. " + fmt(a.softMaxMm) +
+                                  " mm; measure the sensor's position in "
+                                  "machine coordinates again");
+        }
+        const AxisConfig &z = c.axes[2];
+        if (z.present && k.clearanceZMm - k.travelMm < z.softMinMm)
+            fail("tools.sensor.travelMm",
+                 "is " + fmt(k.travelMm) + " mm: the probe would go below Z's soft limit " +
+                     fmt(z.softMinMm) + " mm; at most " + fmt(k.clearanceZMm - z.softMinMm) +
+                     " mm from this clearance");
+        if (k.slowFeedMmPerMin > k.feedMmPerMin)
+            fail("tools.sensor.slowFeedMmPerMin",
+                 "is " + fmt(k.slowFeedMmPerMin) + " mm/min, faster than the first probe (" +
+                     fmt(k.feedMmPerMin) + " mm/min); the second probe is the slow one");
+    }
+
     void outputs()
     {
         const int count = info.variant == protocol::Variant::Gve84 ? 1 : 3;
@@ -192,6 +221,7 @@ std::vector<ConfigError> checkConsistency(const MachineConfig &config)
     rules.axes();
     rules.features();
     rules.outputs();
+    rules.toolSensor();
     return rules.errors;
 }
 

@@ -150,7 +150,21 @@ void visitProfile(V &v, MachineConfig &c)
         s.integer("defaultSpindlePermille", e.defaultSpindlePermille, 1, 1000, "‰");
         s.number("brakeReleaseDelayS", e.brakeReleaseDelayS, 0, 5, "s");
     });
-    v.object("tools", [&](V &s) { s.text("tableFile", c.tools.tableFile); });
+    v.object("tools", [&](V &s) {
+        s.text("tableFile", c.tools.tableFile);
+        s.object("sensor", [&](V &t) {
+            ToolSensorConfig &k = c.tools.sensor;
+            t.boolean("enabled", k.enabled);
+            t.number("xMm", k.xMm, -100000, 100000, "mm");
+            t.number("yMm", k.yMm, -100000, 100000, "mm");
+            t.number("clearanceZMm", k.clearanceZMm, -100000, 100000, "mm");
+            t.number("travelMm", k.travelMm, 0.1, 1000, "mm");
+            t.number("feedMmPerMin", k.feedMmPerMin, 1, 10000, "mm/min");
+            t.number("slowFeedMmPerMin", k.slowFeedMmPerMin, 0.1, 10000, "mm/min");
+            t.number("retractMm", k.retractMm, 0.1, 100, "mm");
+            t.number("referenceZMm", k.referenceZMm, -100000, 100000, "mm");
+        });
+    });
     v.object("program", [&](V &s) {
         s.integer("maxLinesExecuted", c.program.maxLinesExecuted, 1000, 2'000'000'000, "");
         s.integer("maxMoves", c.program.maxMoves, 1000, 200'000'000, "");

@@ -101,12 +101,32 @@ struct SpindleConfig
     friend bool operator==(const SpindleConfig &, const SpindleConfig &) = default;
 };
 
+// A fixed tool-length sensor (issue 19 item 1; docs/probing.md "Tool length"): the tool goes up
+// to clearanceZMm, across to (xMm, yMm), probes down at feedMmPerMin (at most travelMm below
+// the clearance), backs off by retractMm, probes again at slowFeedMmPerMin and goes back up to
+// the clearance. The tool's length is the slow trip's machine Z minus referenceZMm, the Z at
+// which the reference tool (length 0; the one the work zero was set with, or a gauge) trips.
+// Machine coordinates throughout; the probe input is the one G38.2 reads.
+struct ToolSensorConfig
+{
+    bool enabled = false;
+    double xMm = 0, yMm = 0;
+    double clearanceZMm = 0;
+    double travelMm = 50;
+    double feedMmPerMin = 200;
+    double slowFeedMmPerMin = 25;
+    double retractMm = 2;
+    double referenceZMm = 0;
+    friend bool operator==(const ToolSensorConfig &, const ToolSensorConfig &) = default;
+};
+
 struct ToolsConfig
 {
     // The tool table (LinuxCNC's .tbl format, lengths in mm, gcode/tooltable.h): a path, relative
     // to the profile's folder (like LinuxCNC's TOOL_TABLE beside the INI file). Empty: no table
     // (every tool number accepted with length 0, as before tool tables).
     std::string tableFile = "tool.tbl";
+    ToolSensorConfig sensor;
     friend bool operator==(const ToolsConfig &, const ToolsConfig &) = default;
 };
 

@@ -402,9 +402,10 @@ void HeightProbe::retract()
     m_phase = Phase::Retracting;
     const double z = m_link.state().positionMm[2];
     const double tolerance = 0.5 / m_config.axes[2].stepsPerMm;
-    const double top = m_point && m_settings.retractMm > 0 && !m_zMm.empty()
-                           ? m_zMm.front() + m_settings.retractMm
-                           : m_settings.clearanceZMm;
+    const double top =
+        m_point && m_settings.retractMm > 0 && !m_zMm.empty() && !m_settings.pointEndsAtClearance
+            ? m_zMm.front() + m_settings.retractMm
+            : m_settings.clearanceZMm;
     if (z >= top - tolerance || !runText(QStringLiteral("G21 G90\nG0 Z%1\n").arg(word(top))))
         finish();
 }

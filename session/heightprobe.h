@@ -43,6 +43,9 @@ struct HeightProbeSettings
     // again at this feed from retractMm above its trip point; the slow trip is the result.
     double slowFeedMmPerMin = 0;
     double retractMm = 0; // the back-off before the slow probe; see also startAt()
+    // startAt(): back up to the clearance at the end instead of retractMm above the trip point
+    // (a tool-length sensor: the tool leaves it at the travel height).
+    bool pointEndsAtClearance = false;
     friend bool operator==(const HeightProbeSettings &, const HeightProbeSettings &) = default;
 };
 

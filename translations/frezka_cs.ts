@@ -409,6 +409,30 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>Sonda se dotkla horní plochy destičky ve strojovém Z %1; Z systému %2 je nyní %3 (bylo %4), takže horní plocha obrobku pod destičkou tlustou %5 mm je Z 0 a nástroj stojí v Z %6. Dalším příkazům zadejte --offset %7.
 </translation>
     </message>
+    <message>
+        <source>usage: frezka-cli probe tool-length --tool N [--table FILE] [--port PATH|sim] [--surface SPEC] [--machine PROFILE]
+</source>
+        <translation>použití: frezka-cli probe tool-length --tool N [--table SOUBOR] [--port CESTA|sim] [--surface SPEC] [--machine PROFIL]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe tool-length: %1
+</source>
+        <translation>frezka-cli probe tool-length: %1
+</translation>
+    </message>
+    <message>
+        <source>Tool %1 is %2 mm long (tripped at machine Z %3). The profile names no tool table: set tools.tableFile to keep it, or apply it with G43.1 Z%2.
+</source>
+        <translation>Nástroj %1 je dlouhý %2 mm (sepnul ve strojní Z %3). Profil neuvádí tabulku nástrojů: nastavte tools.tableFile, aby se délka uložila, nebo ji použijte pomocí G43.1 Z%2.
+</translation>
+    </message>
+    <message>
+        <source>Tool %1 is %2 mm long (tripped at machine Z %3); written to %4.
+</source>
+        <translation>Nástroj %1 je dlouhý %2 mm (sepnul ve strojní Z %3); zapsáno do %4.
+</translation>
+    </message>
 </context>
 <context>
     <name>ProbeGridCli</name>
@@ -862,12 +886,12 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>Nasondovat výškovou mapu na jednotce (G38.2 v mřížce) a zapsat ji do souboru</translation>
     </message>
     <message>
-        <source>Probe the work: its Z zero from a touch plate (fast then slow G38.2)</source>
-        <translation>Sondovat obrobek: jeho nulu Z z dotykové destičky (G38.2 rychle, pak pomalu)</translation>
-    </message>
-    <message>
         <source>Run a program on each of several units sharing one serial line</source>
         <translation>Spustit program na každé z několika jednotek na jedné sériové lince</translation>
+    </message>
+    <message>
+        <source>Probe the work&apos;s Z zero from a touch plate, or a tool&apos;s length on the tool sensor (fast then slow G38.2)</source>
+        <translation>Sondovat nulu Z obrobku dotykovou destičkou nebo délku nástroje na snímači nástrojů (G38.2 rychle, pak pomalu)</translation>
     </message>
 </context>
 <context>
@@ -4517,6 +4541,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Height map removed: the program runs as written.</source>
         <translation>Výšková mapa odebrána: program poběží tak, jak je napsán.</translation>
     </message>
+    <message>
+        <source>Tool %1 measured on the tool sensor: %2 mm long.</source>
+        <translation>Nástroj %1 změřen na snímači nástrojů: délka %2 mm.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -5161,6 +5189,38 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Unit address on the line (0..6)</source>
         <translation>Adresa jednotky na lince (0..6)</translation>
+    </message>
+    <message>
+        <source>Tool length sensor</source>
+        <translation>Snímač délky nástroje</translation>
+    </message>
+    <message>
+        <source>X (machine)</source>
+        <translation>X (strojní)</translation>
+    </message>
+    <message>
+        <source>Y (machine)</source>
+        <translation>Y (strojní)</translation>
+    </message>
+    <message>
+        <source>Clearance Z (machine)</source>
+        <translation>Bezpečná výška Z (strojní)</translation>
+    </message>
+    <message>
+        <source>Probing feed</source>
+        <translation>Posuv sondování</translation>
+    </message>
+    <message>
+        <source>Slow probing feed</source>
+        <translation>Pomalý posuv sondování</translation>
+    </message>
+    <message>
+        <source>Back-off before the slow probe</source>
+        <translation>Odjetí před pomalým sondováním</translation>
+    </message>
+    <message>
+        <source>Trip Z of the reference tool (length 0)</source>
+        <translation>Z sepnutí referenčního nástroje (délka 0)</translation>
     </message>
 </context>
 <context>
@@ -5897,6 +5957,34 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>&amp;Close</source>
         <translation>&amp;Zavřít</translation>
+    </message>
+    <message>
+        <source>Select the row of the tool in the spindle, then measure it.</source>
+        <translation>Vyberte řádek nástroje, který je ve vřetenu, a pak jej změřte.</translation>
+    </message>
+    <message>
+        <source>Measuring tool %1 on the tool sensor…</source>
+        <translation>Měří se nástroj %1 na snímači nástrojů…</translation>
+    </message>
+    <message>
+        <source>Tool %1 is %2 mm long (the sensor tripped at machine Z %3).</source>
+        <translation>Nástroj %1 je dlouhý %2 mm (snímač sepnul ve strojní Z %3).</translation>
+    </message>
+    <message>
+        <source>S&amp;top measuring</source>
+        <translation>&amp;Zastavit měření</translation>
+    </message>
+    <message>
+        <source>&amp;Measure length</source>
+        <translation>&amp;Změřit délku</translation>
+    </message>
+    <message>
+        <source>Probes the selected tool on the tool length sensor (fast, then slow) and writes its length into the table.</source>
+        <translation>Změří vybraný nástroj na snímači délky nástroje (rychle, pak pomalu) a zapíše jeho délku do tabulky.</translation>
+    </message>
+    <message>
+        <source>Measuring stopped: the tool goes back up to the sensor&apos;s clearance. Close the table when it is up.</source>
+        <translation>Měření zastaveno: nástroj vyjíždí zpět do bezpečné výšky snímače. Tabulku zavřete, až bude nahoře.</translation>
     </message>
 </context>
 <context>
@@ -6967,6 +7055,10 @@ Volby:
     <message>
         <source>The unit was not identified.</source>
         <translation>Jednotka nebyla identifikována.</translation>
+    </message>
+    <message>
+        <source>The machine profile has no tool length sensor: set its position and probing in Machine › Settings (Tools › Tool length sensor), then measure again.</source>
+        <translation>Profil stroje nemá snímač délky nástroje: nastavte jeho polohu a sondování v Stroj › Nastavení (Nástroje › Snímač délky nástroje) a pak měřte znovu.</translation>
     </message>
 </context>
 <context>

@@ -409,6 +409,30 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>The plate&apos;s top touched at machine Z %1; %2 Z is now %3 (was %4), so the work&apos;s top under the %5 mm plate is Z 0 and the tool stands at Z %6. Give the next commands --offset %7.
 </translation>
     </message>
+    <message>
+        <source>usage: frezka-cli probe tool-length --tool N [--table FILE] [--port PATH|sim] [--surface SPEC] [--machine PROFILE]
+</source>
+        <translation>usage: frezka-cli probe tool-length --tool N [--table FILE] [--port PATH|sim] [--surface SPEC] [--machine PROFILE]
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe tool-length: %1
+</source>
+        <translation>frezka-cli probe tool-length: %1
+</translation>
+    </message>
+    <message>
+        <source>Tool %1 is %2 mm long (tripped at machine Z %3). The profile names no tool table: set tools.tableFile to keep it, or apply it with G43.1 Z%2.
+</source>
+        <translation>Tool %1 is %2 mm long (tripped at machine Z %3). The profile names no tool table: set tools.tableFile to keep it, or apply it with G43.1 Z%2.
+</translation>
+    </message>
+    <message>
+        <source>Tool %1 is %2 mm long (tripped at machine Z %3); written to %4.
+</source>
+        <translation>Tool %1 is %2 mm long (tripped at machine Z %3); written to %4.
+</translation>
+    </message>
 </context>
 <context>
     <name>ProbeGridCli</name>
@@ -862,12 +886,12 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>Probe a height map on the unit (G38.2 on a grid) and write its file</translation>
     </message>
     <message>
-        <source>Probe the work: its Z zero from a touch plate (fast then slow G38.2)</source>
-        <translation>Probe the work: its Z zero from a touch plate (fast then slow G38.2)</translation>
-    </message>
-    <message>
         <source>Run a program on each of several units sharing one serial line</source>
         <translation>Run a program on each of several units sharing one serial line</translation>
+    </message>
+    <message>
+        <source>Probe the work&apos;s Z zero from a touch plate, or a tool&apos;s length on the tool sensor (fast then slow G38.2)</source>
+        <translation>Probe the work&apos;s Z zero from a touch plate, or a tool&apos;s length on the tool sensor (fast then slow G38.2)</translation>
     </message>
 </context>
 <context>
@@ -4510,6 +4534,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Height map removed: the program runs as written.</source>
         <translation>Height map removed: the program runs as written.</translation>
     </message>
+    <message>
+        <source>Tool %1 measured on the tool sensor: %2 mm long.</source>
+        <translation>Tool %1 measured on the tool sensor: %2 mm long.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -5154,6 +5182,38 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Unit address on the line (0..6)</source>
         <translation>Unit address on the line (0..6)</translation>
+    </message>
+    <message>
+        <source>Tool length sensor</source>
+        <translation>Tool length sensor</translation>
+    </message>
+    <message>
+        <source>X (machine)</source>
+        <translation>X (machine)</translation>
+    </message>
+    <message>
+        <source>Y (machine)</source>
+        <translation>Y (machine)</translation>
+    </message>
+    <message>
+        <source>Clearance Z (machine)</source>
+        <translation>Clearance Z (machine)</translation>
+    </message>
+    <message>
+        <source>Probing feed</source>
+        <translation>Probing feed</translation>
+    </message>
+    <message>
+        <source>Slow probing feed</source>
+        <translation>Slow probing feed</translation>
+    </message>
+    <message>
+        <source>Back-off before the slow probe</source>
+        <translation>Back-off before the slow probe</translation>
+    </message>
+    <message>
+        <source>Trip Z of the reference tool (length 0)</source>
+        <translation>Trip Z of the reference tool (length 0)</translation>
     </message>
 </context>
 <context>
@@ -5889,6 +5949,34 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>&amp;Close</source>
         <translation>&amp;Close</translation>
+    </message>
+    <message>
+        <source>Select the row of the tool in the spindle, then measure it.</source>
+        <translation>Select the row of the tool in the spindle, then measure it.</translation>
+    </message>
+    <message>
+        <source>Measuring tool %1 on the tool sensor…</source>
+        <translation>Measuring tool %1 on the tool sensor…</translation>
+    </message>
+    <message>
+        <source>Tool %1 is %2 mm long (the sensor tripped at machine Z %3).</source>
+        <translation>Tool %1 is %2 mm long (the sensor tripped at machine Z %3).</translation>
+    </message>
+    <message>
+        <source>S&amp;top measuring</source>
+        <translation>S&amp;top measuring</translation>
+    </message>
+    <message>
+        <source>&amp;Measure length</source>
+        <translation>&amp;Measure length</translation>
+    </message>
+    <message>
+        <source>Probes the selected tool on the tool length sensor (fast, then slow) and writes its length into the table.</source>
+        <translation>Probes the selected tool on the tool length sensor (fast, then slow) and writes its length into the table.</translation>
+    </message>
+    <message>
+        <source>Measuring stopped: the tool goes back up to the sensor&apos;s clearance. Close the table when it is up.</source>
+        <translation>Measuring stopped: the tool goes back up to the sensor&apos;s clearance. Close the table when it is up.</translation>
     </message>
 </context>
 <context>
@@ -6954,6 +7042,10 @@ Options:
     <message>
         <source>The unit was not identified.</source>
         <translation>The unit was not identified.</translation>
+    </message>
+    <message>
+        <source>The machine profile has no tool length sensor: set its position and probing in Machine › Settings (Tools › Tool length sensor), then measure again.</source>
+        <translation>The machine profile has no tool length sensor: set its position and probing in Machine › Settings (Tools › Tool length sensor), then measure again.</translation>
     </message>
 </context>
 <context>

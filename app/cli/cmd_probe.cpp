@@ -1,3 +1,9 @@
+// frezka-cli probe tool-length --tool N [--table FILE] [--port PATH|sim] [--surface SPEC]
+//                             [--machine PROFILE]
+// measures a tool on the profile's tool length sensor (session/toollength.h) and writes its
+// length into the tool table (--table, else the profile's tools.tableFile); one JSON line (tool,
+// trip point, length, table, the emulator's counters). Exit 0 measured, 1 error, 2 usage.
+//
 // frezka-cli probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM]
 //                         [--retract MM] [--port PATH|sim] [--surface SPEC]
 //                         [--machine PROFILE] [--offset G54:X,Y,Z]...
@@ -22,6 +28,8 @@
 #include "driver/link/emulatorport.h"
 #include "driver/link/machinestate.h"
 #include "session/heightprobe.h"
+#include "session/toollength.h"
+#include "session/tooltablefile.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -221,10 +229,157 @@ int runZPlate(const QStringList &args)
     return 0;
 }
 
+// ---- probe tool-length (issue 19 item 1) ----
+
+struct ToolArgs
+{
+    cli::ProgramOptions program;
+    QString port = QStringLiteral("sim");
+    QString surface;
+    QString table; // the tool table file; empty: the profile's
+    int tool = 0;
+};
+
+int toolUsage()
+{
+    cli::err(ProbeCli::tr("usage: frezka-cli probe tool-length --tool N [--table FILE] "
+                          "[--port PATH|sim] [--surface SPEC] [--machine PROFILE]\n"));
+    return 2;
+}
+
+std::optional<ToolArgs> parseToolArgs(const QStringList &args)
+{
+    ToolArgs a;
+    for (int i = 0; i < args.size(); ++i) {
+        const QString &k = args[i];
+        bool ok = true;
+        if (cli::takeProgramOption(args, i, &a.program, &ok)) {
+            if (!ok)
+                return std::nullopt;
+        } else if (i + 1 >= args.size()) {
+            return std::nullopt;
+        } else if (k == QLatin1String("--tool")) {
+            a.tool = args[++i].toInt(&ok);
+            if (!ok || a.tool < 1)
+                return std::nullopt;
+        } else if (k == QLatin1String("--table")) {
+            a.table = args[++i];
+        } else if (k == QLatin1String("--port")) {
+            a.port = args[++i];
+        } else if (k == QLatin1String("--surface")) {
+            a.surface = args[++i];
+            emulator::ProbeSurface surface;
+            if (!emulator::parseProbeSurface(a.surface.toStdString(), &surface))
+                return std::nullopt;
+        } else {
+            return std::nullopt;
+        }
+    }
+    if (a.tool < 1 || (!a.surface.isEmpty() && a.port != QLatin1String("sim")))
+        return std::nullopt;
+    return a;
+}
+
+// The table the length goes into: --table, else the profile's (an empty path: none).
+session::ToolTableFile toolTableFor(const ToolArgs &a, const machine::MachineConfig &config)
+{
+    if (a.table.isEmpty())
+        return session::readProfileToolTable(config, a.program.machine);
+    session::ToolTableFile t;
+    t.path = a.table;
+    gcode::ToolTable table;
+    gcode::Error error;
+    if (gcode::readToolTableFile(a.table.toStdString(), &table, &error))
+        t.table = table;
+    else
+        t.error = gcode::formatError(a.table, error);
+    return t;
+}
+
+// Writes the length into the table file; false with the reason on stderr.
+bool storeToolLength(const session::ToolTableFile &file, int tool, double lengthMm)
+{
+    gcode::ToolTable table = file.table.value_or(gcode::ToolTable{});
+    session::setToolLength(&table, tool, lengthMm);
+    gcode::Error error;
+    if (gcode::writeToolTableFile(file.path.toStdString(), table, &error))
+        return true;
+    cli::err(QStringLiteral("frezka-cli probe tool-length: %1\n")
+                 .arg(gcode::formatError(file.path, error)));
+    return false;
+}
+
+int runToolLength(const QStringList &args)
+{
+    const auto a = parseToolArgs(args);
+    if (!a)
+        return toolUsage();
+    std::optional<machine::MachineConfig> config = cli::loadProfile(a->program.machine);
+    if (!config)
+        return 1;
+    if (const QString problem = session::toolSensorProblem(*config); !problem.isEmpty()) {
+        cli::err(QStringLiteral("frezka-cli probe tool-length: %1\n").arg(problem));
+        return 1;
+    }
+    const session::ToolTableFile file = toolTableFor(*a, *config);
+    if (!file.error.isEmpty()) { // a table that cannot be read is not overwritten
+        cli::err(QStringLiteral("frezka-cli probe tool-length: %1\n").arg(file.error));
+        return 1;
+    }
+    const machine::ToolSensorConfig &sensor = config->tools.sensor;
+    std::optional<double> tripZ;
+    const cli::ProbeRunOutcome run = cli::runProbe(
+        a->port, a->surface, *config,
+        [&](session::HeightProbe &probe, const driver::MachineState &) {
+            return probe.startAt(sensor.xMm, sensor.yMm, session::toolSensorSettings(sensor));
+        },
+        [&](const session::HeightProbe &probe, bool ok) {
+            if (ok)
+                tripZ = probe.pointZMm();
+        });
+    const std::optional<double> length =
+        tripZ ? std::optional<double>(session::toolLengthFromTrip(sensor, *tripZ)) : std::nullopt;
+    QJsonObject j;
+    j[QStringLiteral("tool")] = a->tool;
+    j[QStringLiteral("trip_z_mm")] = tripZ ? QJsonValue(*tripZ) : QJsonValue();
+    j[QStringLiteral("length_mm")] = length ? QJsonValue(*length) : QJsonValue();
+    j[QStringLiteral("table")] = file.path.isEmpty() ? QJsonValue() : QJsonValue(file.path);
+    j[QStringLiteral("unit_steps")] =
+        run.unitSteps
+            ? QJsonValue(QJsonArray{qint64((*run.unitSteps)[0]), qint64((*run.unitSteps)[1]),
+                                    qint64((*run.unitSteps)[2]), qint64((*run.unitSteps)[3])})
+            : QJsonValue();
+    cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
+             QLatin1Char('\n'));
+    if (!run.ok || !length) {
+        cli::err(ProbeCli::tr("frezka-cli probe tool-length: %1\n").arg(run.error));
+        return 1;
+    }
+    if (file.path.isEmpty()) {
+        cli::err(ProbeCli::tr("Tool %1 is %2 mm long (tripped at machine Z %3). The profile "
+                              "names no tool table: set tools.tableFile to keep it, or apply it "
+                              "with G43.1 Z%2.\n")
+                     .arg(a->tool)
+                     .arg(*length, 0, 'f', 4)
+                     .arg(*tripZ, 0, 'f', 4));
+        return 0;
+    }
+    if (!storeToolLength(file, a->tool, *length))
+        return 1;
+    cli::err(ProbeCli::tr("Tool %1 is %2 mm long (tripped at machine Z %3); written to %4.\n")
+                 .arg(a->tool)
+                 .arg(*length, 0, 'f', 4)
+                 .arg(*tripZ, 0, 'f', 4)
+                 .arg(file.path));
+    return 0;
+}
+
 int runProbe(const QStringList &args)
 {
     if (!args.isEmpty() && args.front() == QLatin1String("z-plate"))
         return runZPlate(args.mid(1));
+    if (!args.isEmpty() && args.front() == QLatin1String("tool-length"))
+        return runToolLength(args.mid(1));
     return usage();
 }
 
@@ -233,7 +388,9 @@ int runProbe(const QStringList &args)
 FREZKA_CLI_COMMAND(probe,
                    "probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM] "
                    "[--retract MM] [--port PATH|sim] [--surface SPEC] [--machine PROFILE] "
-                   "[--offset G54:X,Y,Z[,A]]...",
-                   QT_TRANSLATE_NOOP("frezka::cli", "Probe the work: its Z zero from a touch "
-                                                    "plate (fast then slow G38.2)"),
+                   "[--offset G54:X,Y,Z[,A]]... | probe tool-length --tool N [--table FILE] "
+                   "[--port PATH|sim] [--surface SPEC] [--machine PROFILE]",
+                   QT_TRANSLATE_NOOP("frezka::cli",
+                                     "Probe the work's Z zero from a touch plate, or a tool's "
+                                     "length on the tool sensor (fast then slow G38.2)"),
                    runProbe);

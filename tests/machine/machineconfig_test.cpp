@@ -138,6 +138,25 @@ TEST(MachineConfig, VariantRulesAreChecked)
     EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "eeprom.mpg"));
 }
 
+TEST(MachineConfig, TheToolSensorIsInsideTheTravel)
+{
+    // GVE64 defaults: X 0..400, Z -120..0.
+    const ConfigResult r = parseMachineConfig(R"({"tools": {"sensor": {
+        "enabled": true, "xMm": 450, "yMm": 10, "clearanceZMm": -100, "travelMm": 30,
+        "feedMmPerMin": 100, "slowFeedMmPerMin": 200}}})");
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "tools.sensor.xMm")) << errorsText(r);
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "tools.sensor.travelMm"));
+    EXPECT_TRUE(hasError(r, ConfigErrorCode::Inconsistent, "tools.sensor.slowFeedMmPerMin"));
+    EXPECT_EQ(r.errors.size(), 3u) << errorsText(r);
+    // Not checked while the sensor is not there; in range once it fits.
+    EXPECT_TRUE(parseMachineConfig(R"({"tools": {"sensor": {"xMm": 450}}})").config);
+    const ConfigResult ok = parseMachineConfig(R"({"tools": {"sensor": {
+        "enabled": true, "xMm": 390, "yMm": 10, "clearanceZMm": -5, "travelMm": 40,
+        "referenceZMm": -30}}})");
+    ASSERT_TRUE(ok.config) << errorsText(ok);
+    EXPECT_EQ(ok.config->tools.sensor.referenceZMm, -30);
+}
+
 TEST(MachineConfig, OldGve64FirmwareHasNoVk)
 {
     const ConfigResult r =
