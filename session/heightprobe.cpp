@@ -80,6 +80,16 @@ OffsetState touchPlateZero(const OffsetState &offsets, double tripZMm, double pl
     return next;
 }
 
+OffsetState edgeZero(const OffsetState &offsets, int axis, int direction, double tripMm,
+                     double toolDiameterMm)
+{
+    OffsetState next = offsets;
+    const auto active = static_cast<std::size_t>(std::clamp(offsets.active, 0, kWorkSystems - 1));
+    const auto a = static_cast<std::size_t>(std::clamp(axis, 0, 1));
+    next.systems[active][a] = tripMm + direction * toolDiameterMm / 2 - offsets.g92[a];
+    return next;
+}
+
 std::vector<std::pair<int, int>> serpentineOrder(int countX, int countY)
 {
     std::vector<std::pair<int, int>> order;
@@ -127,10 +137,17 @@ bool HeightProbe::start(const HeightProbeSettings &settings)
     std::optional<gcode::HeightMap> grid = heightProbeGrid(settings, &m_error);
     if (!grid)
         return false;
+    m_axis = 2;
     return begin(settings, *grid, false);
 }
 
 bool HeightProbe::startAt(double xMm, double yMm, const HeightProbeSettings &settings)
+{
+    return startPoint(xMm, yMm, settings, 2, -1);
+}
+
+bool HeightProbe::startPoint(double xMm, double yMm, const HeightProbeSettings &settings, int axis,
+                             int direction)
 {
     m_error.clear();
     HeightProbeSettings s = settings; // the grid's checks on a 1 mm square at the point
@@ -140,9 +157,32 @@ bool HeightProbe::startAt(double xMm, double yMm, const HeightProbeSettings &set
     s.y1Mm = yMm + 1;
     s.spacingMm = 1;
     std::optional<gcode::HeightMap> grid = heightProbeGrid(s, &m_error);
-    if (!grid)
-        return false;
+    if (!grid || running()) // begin() says why when running
+        return grid && begin(s, *grid, true);
+    m_axis = axis;
+    m_direction = direction;
+    m_edgeStartMm = m_link.state().positionMm[static_cast<std::size_t>(axis)];
+    m_otherStartMm = m_link.state().positionMm[axis == 0 ? 1 : 0];
     return begin(s, *grid, true);
+}
+
+bool HeightProbe::startEdge(int axis, int direction, const HeightProbeSettings &settings)
+{
+    m_error.clear();
+    if ((axis != 0 && axis != 1) || (direction != 1 && direction != -1)) {
+        m_error = tr("An edge is probed along X or Y, in the + or - direction.");
+        return false;
+    }
+    if (!(settings.travelMm > 0)) {
+        m_error = tr("The probe's travel toward the edge must be above 0 mm (%1 given).")
+                      .arg(mm(settings.travelMm));
+        return false;
+    }
+    const driver::MachineState &at = m_link.state();
+    HeightProbeSettings s = settings; // the point's checks; the bottom is unused for an edge
+    s.clearanceZMm = at.positionMm[2] + 1;
+    s.bottomZMm = at.positionMm[2];
+    return startPoint(at.positionMm[0], at.positionMm[1], s, axis, direction);
 }
 
 bool HeightProbe::begin(const HeightProbeSettings &settings, const gcode::HeightMap &grid,
@@ -202,6 +242,23 @@ QString HeightProbe::nodeText(std::size_t index) const
 // the tool never moves down except over the node.
 void HeightProbe::probeNext()
 {
+    if (m_axis != 2) { // an edge: from where the tool stands (and the reach), along the axis
+        m_phase = Phase::Probing;
+        m_slowPass = false;
+        QString text = QStringLiteral("G21 G90 G94\n");
+        if (m_settings.reachMm != 0)
+            text += QStringLiteral("G0 %1%2\n")
+                        .arg(QChar(machine::kAxisLetters[m_axis == 0 ? 1 : 0]))
+                        .arg(word(m_otherStartMm + m_settings.reachMm));
+        text += QStringLiteral("G38.2 %1%2 F%3\n")
+                    .arg(QChar(machine::kAxisLetters[std::size_t(m_axis)]))
+                    .arg(word(edgeEndMm()), word(m_settings.feedMmPerMin));
+        if (!runText(text)) {
+            m_failed = true;
+            finish();
+        }
+        return;
+    }
     const auto [i, j] = m_order[static_cast<std::size_t>(m_done)];
     const double z = m_link.state().positionMm[2];
     const QString clearance = QStringLiteral("G0 Z%1\n").arg(word(m_settings.clearanceZMm));
@@ -230,9 +287,12 @@ void HeightProbe::probeNext()
 // (a Z move alone, never below the clearance's limit), then G38.2 at the slow feed.
 void HeightProbe::probeSlow(double tripZMm)
 {
-    const QString text = QStringLiteral("G21 G90 G94\nG0 Z%1\nG38.2 Z%2 F%3\n")
-                             .arg(word(tripZMm + m_settings.retractMm), word(m_settings.bottomZMm),
-                                  word(m_settings.slowFeedMmPerMin));
+    const QChar axis(machine::kAxisLetters[std::size_t(m_axis)]);
+    const double back = tripZMm - m_direction * m_settings.retractMm;
+    const double end = m_axis == 2 ? m_settings.bottomZMm : edgeEndMm();
+    const QString text = QStringLiteral("G21 G90 G94\nG0 %1%2\nG38.2 %1%3 F%4\n")
+                             .arg(axis)
+                             .arg(word(back), word(end), word(m_settings.slowFeedMmPerMin));
     m_slowPass = true;
     if (!runText(text)) {
         m_failed = true;
@@ -348,11 +408,18 @@ void HeightProbe::settle(const driver::MachineState &s)
     const auto [i, j] = m_order[index];
     // The trip point under the node (a step either way: the node's word is rounded to 0.1 um).
     auto near = [](std::int64_t a, std::int64_t b) { return std::abs(a - b) <= 1; };
+    // The trip on the probed axis; on the others where the probe started (an edge probe's Z
+    // is not checked: the start's Z is not a node's).
+    const double reachX = m_axis == 1 ? m_settings.reachMm : 0;
+    const double reachY = m_axis == 0 ? m_settings.reachMm : 0;
     const bool atNode =
-        near(s.probeSteps[0], machine::stepsOf(m_map.nodeX(i), m_config.axes[0].stepsPerMm)) &&
-        near(s.probeSteps[1], machine::stepsOf(m_map.nodeY(j), m_config.axes[1].stepsPerMm));
+        (m_axis == 0 || near(s.probeSteps[0], machine::stepsOf(m_map.nodeX(i) + reachX,
+                                                               m_config.axes[0].stepsPerMm))) &&
+        (m_axis == 1 || near(s.probeSteps[1], machine::stepsOf(m_map.nodeY(j) + reachY,
+                                                               m_config.axes[1].stepsPerMm)));
     if (ok && s.probeTripped && atNode) {
-        const double z = static_cast<double>(s.probeSteps[2]) / m_config.axes[2].stepsPerMm;
+        const auto a = static_cast<std::size_t>(m_axis);
+        const double z = static_cast<double>(s.probeSteps[a]) / m_config.axes[a].stepsPerMm;
         if (m_settings.slowFeedMmPerMin > 0 && !m_slowPass) {
             probeSlow(z);
             return;
@@ -371,10 +438,7 @@ void HeightProbe::settle(const driver::MachineState &s)
                       : s.lastError                              ? s.lastError->reason.code
                                                                  : driver::DriverCode::None;
     if (code == driver::DriverCode::ProbeNotTripped)
-        fail(tr("The probe at %1 went down to Z %2 without touching the surface: the work is "
-                "lower than the depth allows, or the probe is not connected. Check the probe "
-                "and the clearance, or probe again with a larger depth.")
-                 .arg(nodeText(index), mm(m_settings.bottomZMm)));
+        fail(notTrippedText(index));
     else if (code == driver::DriverCode::ProbeAlreadyTripped)
         fail(tr("The probe at %1 was already in contact before moving down: check the probe "
                 "and its wiring, and that the tool is clear of the work.")
@@ -389,6 +453,21 @@ void HeightProbe::settle(const driver::MachineState &s)
     m_link.abort();
 }
 
+QString HeightProbe::notTrippedText(std::size_t index) const
+{
+    if (m_axis != 2)
+        return tr("The probe moved from %1 %2 to %1 %3 without touching the edge: the edge is "
+                  "farther than the travel, or the probe is not connected. Check the probe and "
+                  "where the tool stands (beside the edge, below the work's top), or probe "
+                  "again with a longer travel.")
+            .arg(QChar(machine::kAxisLetters[std::size_t(m_axis)]))
+            .arg(mm(m_edgeStartMm), mm(edgeEndMm()));
+    return tr("The probe at %1 went down to Z %2 without touching the surface: the work is "
+              "lower than the depth allows, or the probe is not connected. Check the probe "
+              "and the clearance, or probe again with a larger depth.")
+        .arg(nodeText(index), mm(m_settings.bottomZMm));
+}
+
 void HeightProbe::fail(const QString &why)
 {
     m_failed = true;
@@ -400,6 +479,22 @@ void HeightProbe::fail(const QString &why)
 void HeightProbe::retract()
 {
     m_phase = Phase::Retracting;
+    if (m_axis != 2) { // an edge: back to the start along the axis, then the reach back
+        QString text;
+        const std::size_t axes[2] = {std::size_t(m_axis), std::size_t(m_axis == 0 ? 1 : 0)};
+        const double starts[2] = {m_edgeStartMm, m_otherStartMm};
+        for (int k = 0; k < 2; ++k) {
+            const std::size_t a = axes[k];
+            if (std::abs(m_link.state().positionMm[a] - starts[k]) >=
+                0.5 / m_config.axes[a].stepsPerMm)
+                text += QStringLiteral("G0 %1%2\n")
+                            .arg(QChar(machine::kAxisLetters[a]))
+                            .arg(word(starts[k]));
+        }
+        if (text.isEmpty() || !runText(QStringLiteral("G21 G90\n") + text))
+            finish();
+        return;
+    }
     const double z = m_link.state().positionMm[2];
     const double tolerance = 0.5 / m_config.axes[2].stepsPerMm;
     const double top =

@@ -46,6 +46,10 @@ struct HeightProbeSettings
     // startAt(): back up to the clearance at the end instead of retractMm above the trip point
     // (a tool-length sensor: the tool leaves it at the travel height).
     bool pointEndsAtClearance = false;
+    // startEdge(): how far along the axis the probe may move from where the tool stands, and a
+    // move along the other of X/Y before it (back after; an outside corner's second face).
+    double travelMm = 0;
+    double reachMm = 0;
     friend bool operator==(const HeightProbeSettings &, const HeightProbeSettings &) = default;
 };
 
@@ -57,6 +61,11 @@ std::optional<gcode::HeightMap> heightProbeGrid(const HeightProbeSettings &setti
 // plateMm thick on it tripped the probe at machine Z tripZMm (the plate's top is Z plateMm;
 // G92 stays as it is, as G10 L20 does).
 OffsetState touchPlateZero(const OffsetState &offsets, double tripZMm, double plateMm);
+// The offsets with the active system's X (axis 0) or Y (axis 1) set so that an edge is at 0:
+// the probe moving in direction (+1 / -1) tripped at machine tripMm, so the edge is the tool's
+// radius beyond the trip point (G92 stays as it is, as G10 L20 does).
+OffsetState edgeZero(const OffsetState &offsets, int axis, int direction, double tripMm,
+                     double toolDiameterMm);
 // The nodes (i, j) of a countX x countY grid in serpentine order.
 std::vector<std::pair<int, int>> serpentineOrder(int countX, int countY);
 // X0, Y0, X1, Y1 (machine mm) of the program's cuts (what a height map must cover: its feed
@@ -78,6 +87,12 @@ public:
     // pointZMm() its trip Z. At the end the tool goes up to retractMm above the trip point (the
     // clearance when retractMm is 0).
     bool startAt(double xMm, double yMm, const HeightProbeSettings &settings);
+    // Probes an edge (issue 19 item 2): from where the tool stands, G38.2 along X (axis 0) or Y
+    // (axis 1) in direction +1 or -1 at the feed, at most settings.travelMm; fast then slow as
+    // above (the back-off along the axis); then back to the start along the axis. The clearance,
+    // bottom, area and spacing are unused. pointZMm() is then the trip's machine coordinate on
+    // the axis. A probe that reaches the travel without touching is an error, as for Z.
+    bool startEdge(int axis, int direction, const HeightProbeSettings &settings);
     // Machine Z of the first point's trip (nullopt before it tripped).
     std::optional<double> pointZMm() const
     {
@@ -105,6 +120,8 @@ private:
     void onError(const driver::MachineError &error);
     void settle(const driver::MachineState &state);
     bool begin(const HeightProbeSettings &settings, const gcode::HeightMap &grid, bool point);
+    bool startPoint(double xMm, double yMm, const HeightProbeSettings &settings, int axis,
+                    int direction);
     void probeNext();
     void probeSlow(double tripZMm);
     bool runText(const QString &text);
@@ -112,6 +129,8 @@ private:
     void retract();
     void finish();
     QString nodeText(std::size_t index) const;
+    QString notTrippedText(std::size_t index) const;
+    double edgeEndMm() const { return m_edgeStartMm + m_direction * m_settings.travelMm; }
 
     MachineLink &m_link;
     machine::MachineConfig m_config;
@@ -120,8 +139,12 @@ private:
     std::vector<std::pair<int, int>> m_order;
     std::vector<double> m_zMm; // machine Z of the nodes probed, in m_order's order
     int m_done = 0;
-    bool m_slowPass = false; // the current job is a node's slow probe
-    bool m_point = false;    // startAt(): one point, the retract above its trip
+    bool m_slowPass = false;   // the current job is a node's slow probe
+    bool m_point = false;      // startAt(): one point, the retract above its trip
+    int m_axis = 2;            // the axis probed: Z, or X / Y for startEdge()
+    int m_direction = -1;      // of the probe move along m_axis
+    double m_edgeStartMm = 0;  // startEdge(): where the tool stood on m_axis
+    double m_otherStartMm = 0; // ... and on the other of X / Y
     Phase m_phase = Phase::Idle;
     std::optional<bool> m_jobEnded; // the current job's jobFinished(ok), until settled
     bool m_jobStarted = false;      // a state showed the current job active

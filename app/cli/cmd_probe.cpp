@@ -88,7 +88,8 @@ bool takeOption(const QStringList &args, int &i, Args *a)
         emulator::ProbeSurface surface;
         if (!emulator::parseProbeSurface(a->surface.toStdString(), &surface)) {
             cli::err(ProbeCli::tr("frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, "
-                                  "sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD "
+                                  "sine:AMP,PERIOD[,Z0], warp:Z0,DZDX,DZDY,AMP,PERIOD or "
+                                  "block:X0,Y0,X1,Y1,TOP "
                                   "(machine mm)\n")
                          .arg(a->surface));
             return false;
@@ -380,6 +381,9 @@ int runProbe(const QStringList &args)
         return runZPlate(args.mid(1));
     if (!args.isEmpty() && args.front() == QLatin1String("tool-length"))
         return runToolLength(args.mid(1));
+    if (!args.isEmpty() &&
+        (args.front() == QLatin1String("edge") || args.front() == QLatin1String("corner")))
+        return cli::runProbeEdge(args.mid(1), args.front() == QLatin1String("corner"));
     return usage();
 }
 
@@ -388,9 +392,13 @@ int runProbe(const QStringList &args)
 FREZKA_CLI_COMMAND(probe,
                    "probe z-plate --plate MM [--feed MM/MIN] [--slow-feed MM/MIN] [--depth MM] "
                    "[--retract MM] [--port PATH|sim] [--surface SPEC] [--machine PROFILE] "
-                   "[--offset G54:X,Y,Z[,A]]... | probe tool-length --tool N [--table FILE] "
-                   "[--port PATH|sim] [--surface SPEC] [--machine PROFILE]",
+                   "[--offset G54:X,Y,Z[,A]]... | probe edge --axis x|y --direction +|- "
+                   "--tool-diameter MM [--travel MM] ... | probe corner --x-direction +|- "
+                   "--y-direction +|- --tool-diameter MM [--reach MM] ... | probe tool-length "
+                   "--tool N [--table FILE] [--port PATH|sim] [--surface SPEC] "
+                   "[--machine PROFILE]",
                    QT_TRANSLATE_NOOP("frezka::cli",
-                                     "Probe the work's Z zero from a touch plate, or a tool's "
-                                     "length on the tool sensor (fast then slow G38.2)"),
+                                     "Probe the work's zero (Z from a touch plate, X/Y from an "
+                                     "edge or a corner) or a tool's length on the tool sensor "
+                                     "(fast then slow G38.2)"),
                    runProbe);

@@ -26,7 +26,7 @@ struct ProbeRunCli
 };
 
 using StartFn = std::function<bool(session::HeightProbe &, const driver::MachineState &)>;
-using DoneFn = std::function<void(const session::HeightProbe &, bool)>;
+using DoneFn = std::function<void(session::HeightProbe &, bool)>;
 
 ProbeRunOutcome runVirtual(const QString &surface, const machine::MachineConfig &config,
                            const StartFn &start, const DoneFn &done)
@@ -57,10 +57,10 @@ ProbeRunOutcome runVirtual(const QString &surface, const machine::MachineConfig 
     session::HeightProbe probe(link, config);
     bool ended = false;
     QObject::connect(&probe, &session::HeightProbe::finished, [&](bool ok) {
-        ended = true;
         out.ok = ok;
         out.error = probe.error();
         done(probe, ok);
+        ended = !probe.running(); // done() may have started the next probe
     });
     if (!start(probe, link.state())) {
         out.error = probe.error();
@@ -111,7 +111,8 @@ ProbeRunOutcome runReal(const QString &port, const machine::MachineConfig &confi
         out.ok = ok;
         out.error = probe.error();
         done(probe, ok);
-        loop.quit();
+        if (!probe.running()) // done() may have started the next probe
+            loop.quit();
     });
     driver::ConnectionSettings connection;
     connection.kind = driver::ConnectionSettings::Kind::SerialPort;

@@ -8,6 +8,7 @@
 #include "machine/steps.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <cstdint>
 #include <functional>
@@ -31,10 +32,14 @@ struct ProbeRunOutcome
 };
 
 // Connects, calls start(probe, the idle machine's state) once (false: it did not start, its
-// error is probe.error()), runs until the probe's finished() and calls done(probe, ok) then.
+// error is probe.error()), runs until the probe's finished() and calls done(probe, ok) then;
+// when done() starts the probe again (a corner's second edge), runs on until that finishes.
 ProbeRunOutcome
 runProbe(const QString &port, const QString &surface, const machine::MachineConfig &config,
          const std::function<bool(session::HeightProbe &, const driver::MachineState &)> &start,
-         const std::function<void(const session::HeightProbe &, bool)> &done);
+         const std::function<void(session::HeightProbe &, bool)> &done);
+
+// frezka-cli probe edge / probe corner (cmd_probe_edge.cpp): args after the subcommand.
+int runProbeEdge(const QStringList &args, bool corner);
 
 } // namespace frezka::cli

@@ -22,8 +22,27 @@ double ProbeSurface::heightMm(double x, double y) const
         const double w = 2 * std::numbers::pi / p[4];
         return p[0] + p[1] * x + p[2] * y + p[3] * std::sin(w * x) * std::sin(w * y);
     }
+    case Kind::Block: {
+        const auto t = sideThresholds(); // the same sides as the unit's watches
+        const std::int64_t sx = std::llround(x * stepsPerMm[0]);
+        const std::int64_t sy = std::llround(y * stepsPerMm[1]);
+        const bool over = sx >= t[0] && sx < t[1] && sy >= t[2] && sy < t[3];
+        return over ? p[4] : -1e9; // beside the block: nothing to touch
+    }
     }
     return 0;
+}
+
+std::array<std::int64_t, 4> ProbeSurface::sideThresholds() const
+{
+    auto up = [](double mm, double spm) {
+        return static_cast<std::int64_t>(std::ceil(mm * spm - 1e-9));
+    };
+    auto down = [](double mm, double spm) {
+        return static_cast<std::int64_t>(std::floor(mm * spm + 1e-9));
+    };
+    return {up(p[0], stepsPerMm[0]), down(p[2], stepsPerMm[0]) + 1, up(p[1], stepsPerMm[1]),
+            down(p[3], stepsPerMm[1]) + 1};
 }
 
 std::int64_t ProbeSurface::touchZSteps(std::int64_t x, std::int64_t y) const
@@ -61,6 +80,8 @@ bool parseProbeSurface(const std::string &spec, ProbeSurface *out)
         s.kind = ProbeSurface::Kind::Sine;
     } else if (name == "warp" && n == 5 && v[4] > 0) {
         s.kind = ProbeSurface::Kind::Warp;
+    } else if (name == "block" && n == 5 && v[2] > v[0] && v[3] > v[1]) {
+        s.kind = ProbeSurface::Kind::Block;
     } else {
         return false;
     }

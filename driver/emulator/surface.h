@@ -12,7 +12,11 @@
 //   plane:Z0,DZDX,DZDY       z = Z0 + DZDX * x + DZDY * y
 //   sine:AMP,PERIOD[,Z0]     z = Z0 + AMP * sin(2 pi x / PERIOD) * sin(2 pi y / PERIOD)
 //   warp:Z0,DZDX,DZDY,AMP,PERIOD   the plane plus the sine (a tilted, warped board)
-// with x, y, z in machine millimetres.
+//   block:X0,Y0,X1,Y1,TOP    a work block: z = TOP over X0..X1, Y0..Y1, nothing beside it
+//                            (its sides trip a probe moving in X or Y below TOP: edges and
+//                            corners; the unit watches the sides, so the trip is exact)
+// with x, y, z in machine millimetres. The probe is the tool's centre: a block meant for a
+// tool of radius r is given r larger on each side.
 
 #include <array>
 #include <cstdint>
@@ -22,9 +26,10 @@ namespace frezka::emulator {
 
 struct ProbeSurface
 {
-    enum class Kind { None, Plane, Sine, Warp };
+    enum class Kind { None, Plane, Sine, Warp, Block };
     Kind kind = Kind::None;
-    // plane: Z0, DZDX, DZDY; sine: AMP, PERIOD, Z0; warp: Z0, DZDX, DZDY, AMP, PERIOD
+    // plane: Z0, DZDX, DZDY; sine: AMP, PERIOD, Z0; warp: Z0, DZDX, DZDY, AMP, PERIOD;
+    // block: X0, Y0, X1, Y1, TOP
     std::array<double, 5> p{};
     std::array<double, 3> stepsPerMm{200, 200, 200}; // X, Y, Z of the machine
     int input = 15;
@@ -37,6 +42,9 @@ struct ProbeSurface
     double heightMm(double xMm, double yMm) const;
     // The highest Z counter at which the probe touches, under the counters x, y.
     std::int64_t touchZSteps(std::int64_t x, std::int64_t y) const;
+    // A block's sides as counter thresholds (MotionEngine::Watch: crossing them changes whether
+    // the tool is over the block): X0, X1 + 1 step, Y0, Y1 + 1 step; empty for the others.
+    std::array<std::int64_t, 4> sideThresholds() const;
     bool operator==(const ProbeSurface &) const = default;
 };
 

@@ -359,6 +359,11 @@ void Unit::Impl::updateWatches()
     if (options.surface.active()) { // aimed under the current X/Y (surface.h)
         const auto pos = engine.position();
         watches.push_back({2, options.surface.touchZSteps(pos[0], pos[1]) + 1});
+        if (options.surface.kind == ProbeSurface::Kind::Block) { // its sides
+            const auto sides = options.surface.sideThresholds();
+            for (int i = 0; i < 4; ++i)
+                watches.push_back({i / 2, sides[std::size_t(i)]});
+        }
     }
     engine.setWatches(std::move(watches));
 }
