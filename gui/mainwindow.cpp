@@ -236,6 +236,7 @@ void MainWindow::retranslate()
     m_unitConfigAction->setText(tr("&Unit configuration (EEPROM)…"));
     m_toolTableAction->setText(tr("&Tool table…"));
     m_heightMapAction->setText(tr("&Height map…"));
+    m_probeZeroAction->setText(tr("&Probe work zero…"));
     m_runFromLineAction->setText(tr("Run from &line…"));
     m_wholeProgramAction->setText(tr("Run the &whole program"));
     m_saveTraceAction->setText(tr("Save serial &trace…"));

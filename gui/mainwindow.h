@@ -140,6 +140,8 @@ public:
     // and returned; it probes on `link` (tests: a simulated one), null: the window's own.
     // mainwindow_heightmap.cpp.
     HeightMapDialog *openHeightMap(session::MachineLink *link = nullptr);
+    // Machine › Probe work zero… (issue 19 item 2): Z from a plate, X/Y from an edge or corner.
+    class ProbeZeroDialog *openProbeZero();
     // The last message shown to the user as an error (tests read it; no modal dialog needed).
     QString lastError() const { return m_lastError; }
 
@@ -243,7 +245,7 @@ private:
         *m_disconnectAction, *m_settingsAction, *m_unitConfigAction, *m_runFromLineAction,
         *m_wholeProgramAction, *m_aboutAction, *m_shortcutsAction,
         *m_grinderAction = nullptr, *m_resetLayoutAction, *m_toolTableAction, *m_saveTraceAction,
-        *m_commissionAction = nullptr, *m_heightMapAction = nullptr;
+        *m_commissionAction = nullptr, *m_heightMapAction = nullptr, *m_probeZeroAction = nullptr;
     ProgramSession *m_program;
     QFileSystemWatcher *m_watcher; // the loaded program's file
     bool m_reloadAfterJob = false; // it changed while its job ran: ask when the job ends
@@ -272,6 +274,7 @@ private:
     QPointer<ProgramInfoDialog> m_programInfo;
     QPointer<ToolTableDialog> m_toolTable;
     QPointer<HeightMapDialog> m_heightMap;
+    QPointer<class ProbeZeroDialog> m_probeZero;
     QPointer<QWidget> m_grinder;
     QByteArray m_defaultState;
 };

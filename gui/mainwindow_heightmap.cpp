@@ -1,12 +1,13 @@
-// MainWindow: Machine › Height map… (issue 19) — the dialog (gui/heightmapdialog.h) probes on
-// the window's machine link, and Apply / Remove load the program again bent to the map or as
-// written (session::ProgramSession::setHeightMap): the preview and the plan show the bent path,
-// the listing the program's own lines.
+// MainWindow: Machine › Height map… and Probe work zero… (issue 19) — the dialog
+// (gui/heightmapdialog.h) probes on the window's machine link, and Apply / Remove load the program
+// again bent to the map or as written (session::ProgramSession::setHeightMap): the preview and the
+// plan show the bent path, the listing the program's own lines.
 
 #include "mainwindow.h"
 
 #include "consolewidget.h"
 #include "heightmapdialog.h"
+#include "probezerodialog.h"
 
 #include "session/heightprobe.h"
 #include "session/machinelink.h"
@@ -21,6 +22,19 @@ void MainWindow::buildHeightMapAction()
 {
     m_heightMapAction = m_machineMenu->addAction(QString(), this, [this] { openHeightMap(); });
     m_heightMapAction->setObjectName(QStringLiteral("heightMap"));
+    m_probeZeroAction = m_machineMenu->addAction(QString(), this, [this] { openProbeZero(); });
+    m_probeZeroAction->setObjectName(QStringLiteral("probeZero"));
+}
+
+ProbeZeroDialog *MainWindow::openProbeZero()
+{
+    if (!m_probeZero) {
+        m_probeZero = new ProbeZeroDialog(*m_link, profile(), *m_offsets, this);
+        m_probeZero->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    m_probeZero->show();
+    m_probeZero->raise();
+    return m_probeZero;
 }
 
 HeightMapDialog *MainWindow::openHeightMap(session::MachineLink *link)
