@@ -55,8 +55,13 @@ PlanResult Planner::run()
     emit(UnitOp::Pause, m_config.motion.pauseMs, 0);
     for (std::size_t i = 0; i < m_path.size(); ++i) {
         if (m_path.isMotion(i)) {
+            const bool ownChain = m_options.restAroundA && m_path.start(i).a != m_path.end(i).a;
+            if (ownChain)
+                flush();
             reserveMoves(i);
             motion(i);
+            if (ownChain)
+                flush();
         } else {
             event(i);
         }

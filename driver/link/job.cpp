@@ -70,6 +70,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     m_check.reset();
     m_guard.reset();
     m_lead.reset();
+    m_sync.begin();
     m_waitUntil = -1;
     m_pace.build();
     m_packetLimit = m_pace.maxPacket();
@@ -123,7 +124,7 @@ void Job::streamStep(double now)
         m_cursor.exec = m_cursor.next;
         m_cursor.execAt = now;
     }
-    if (m_lead.step(now))
+    if (m_sync.step(now) || (!m_sync.busy() && m_lead.step(now)))
         return;
     if (m_cursor.next >= m_program.commands.size()) {
         m_streamBlocked = true;
@@ -179,9 +180,10 @@ void Job::sendPacket(double now)
     // wire, where the unit held a few ms after a V) made it run dry (property seed 154).
     // A unit held at its chain's start runs nothing until the lead-in is queued: full packets,
     // as many vectors as its queue takes.
-    const bool paced = held > 0 && !m_lead.held();
+    const std::optional<std::size_t> heldAt = heldFrom();
+    const bool paced = held > 0 && !heldAt;
     const std::int64_t heldQueued =
-        m_lead.held() ? m_pace.vectorsBefore(end) - m_pace.vectorsBefore(m_lead.start()) : 0;
+        heldAt ? m_pace.vectorsBefore(end) - m_pace.vectorsBefore(*heldAt) : 0;
     while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
         const UnitOp op = cmds[end].op;
         if (op != UnitOp::Vector && op != UnitOp::Brake)
@@ -195,7 +197,7 @@ void Job::sendPacket(double now)
         if (paced && vectors > 0 && link.wireTime(bytes + size) > budget)
             break;
         const std::int64_t queued =
-            m_lead.held() ? heldQueued : m_pace.queuedAfter(link.wireTime(bytes + size));
+            heldAt ? heldQueued : m_pace.queuedAfter(link.wireTime(bytes + size));
         if (op == UnitOp::Vector && queued + vectors + 1 > capacity)
             break;
         bytes += size;
@@ -231,6 +233,15 @@ void Job::sendPacket(double now)
     m_host.startPacket(std::move(packet), [this, first, n](const Outcome &o) {
         onPacketOutcome(o, first, n, m_host.now());
     });
+}
+
+std::optional<std::size_t> Job::heldFrom() const
+{
+    if (m_lead.held())
+        return m_lead.start();
+    if (m_sync.held())
+        return m_sync.start();
+    return std::nullopt;
 }
 
 void Job::acceptUpTo(std::size_t end, bool arrivedJustNow)
@@ -468,6 +479,7 @@ void Job::abandon()
     m_check.cancel();
     m_guard.clearFault();
     m_lead.reset();
+    m_sync.reset();
     m_override.follow(false);
 }
 
@@ -502,6 +514,7 @@ void Job::linkLost()
     m_check.linkLost();
     m_guard.clearFault(); // the check of the counters after reconnecting takes over
     m_lead.reset();       // a unit still held reports INTA when the link is back: the job is held
+    m_sync.reset();       // ... and runs on without the other units
 }
 
 bool Job::resumeAfterReconnect()
