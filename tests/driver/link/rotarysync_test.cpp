@@ -245,6 +245,31 @@ TEST(RotarySync, SplitGivesEachUnitItsAxesAndOneSyncPointPerBlock)
     EXPECT_EQ(vectorsOf(split.rotary.program), 4);
 }
 
+// Without A motion the machine's unit gets the program as planned, with no sync point: chains
+// that do not touch A run as they would on the machine alone.
+TEST(RotarySync, AProgramWithoutAIsTheMachinesAlone)
+{
+    const auto machineConfig = machine::defaultMachineConfig(Variant::Gve114);
+    machine::PlanOptions options;
+    options.restAroundA = true;
+    const auto toolpath =
+        gcode::interpretText("G21 G90\nG1 X10 Y10 F3000\nG1 X40 Y10 Z-2 F1200\nG0 X0 Y0 Z0\nM2\n")
+            .toolpath;
+    const auto plan =
+        machine::plan(toolpath, machine::withRotaryA(machineConfig, rotaryConfig()), options);
+    ASSERT_TRUE(plan.ok());
+    const auto split = machine::splitRotaryA(plan.program);
+    ASSERT_TRUE(split.ok());
+    EXPECT_EQ(split.blocks, 0u);
+    EXPECT_TRUE(split.machine.syncs.empty());
+    EXPECT_TRUE(split.rotary.syncs.empty());
+    EXPECT_EQ(split.machine.program, plan.program);
+    EXPECT_EQ(vectorsOf(split.rotary.program), 0);
+    // The option changes nothing where A does not move.
+    EXPECT_EQ(plan.program,
+              machine::plan(toolpath, machine::withRotaryA(machineConfig, rotaryConfig())).program);
+}
+
 TEST(RotarySync, RotaryTableOnItsOwnUnitRunsInStepWithTheMachine)
 {
     RotaryLine t;
@@ -307,6 +332,17 @@ TEST(RotarySync, RotaryTableOnItsOwnUnitRunsInStepWithTheMachine)
     EXPECT_EQ(count(t.wire, "!1H"), heldCount(split.rotary));
     EXPECT_EQ(count(t.wire, "!0G"), heldCount(split.machine));
     EXPECT_EQ(count(t.wire, "!1G"), heldCount(split.rotary));
+    // Per unit, every H is followed by its G before the next H: held, then started.
+    for (const std::string address : {"!0", "!1"}) {
+        std::string seen;
+        for (const std::string &l : t.wire)
+            if (l == address + "H" || l == address + "G")
+                seen += l.back();
+        std::string expected;
+        for (std::size_t i = 0; i < seen.size() / 2; ++i)
+            expected += "HG";
+        EXPECT_EQ(seen, expected) << address;
+    }
     // The joint block's two G's follow each other on the line.
     const auto g0 = std::find(t.wire.begin(), t.wire.end(), "!0G");
     ASSERT_NE(g0, t.wire.end());
