@@ -147,8 +147,18 @@ RotarySplit splitRotaryA(const UnitProgram &planned)
     bool afterSync = false; // the piece before was a sync block: a barrier at its end
     for (const auto &[begin, end] : pieces(cmds, first)) {
         bool sync = false;
-        for (std::size_t i = begin; i < end && !sync; ++i)
-            sync = movesA(cmds[i]);
+        int motions = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            sync = sync || movesA(cmds[i]);
+            motions += cmds[i].op == UnitOp::Vector || cmds[i].op == UnitOp::Line ? 1 : 0;
+        }
+        if (sync && motions > 1) { // one vector a block: its parts' speed ratios stay fixed
+            r.errorCode = RotarySplit::Error::NotRestAroundA;
+            r.errorLine = cmds[begin].sourceLine;
+            r.error = "the program was not planned with a rest around each move that turns A "
+                      "(PlanOptions::restAroundA)";
+            return r;
+        }
         if (sync)
             ++r.blocks;
         if (sync || afterSync) { // the block's barrier, or the one after a block
@@ -172,6 +182,7 @@ RotarySplit splitRotaryA(const UnitProgram &planned)
                 if (rotary.motion(c, accel, speed, brake))
                     rotary.holdLast();
             } else if (c.op == UnitOp::Probe && c.d[3] != 0) {
+                r.errorCode = RotarySplit::Error::ProbeTurnsA;
                 r.errorLine = c.sourceLine;
                 r.error = "a probe move that turns A cannot run with A on its own unit";
                 return r;

@@ -49,6 +49,8 @@ struct RotarySplit
     SyncedProgram machine;  // X Y Z and every event (outputs, spindle, dwells, stops, the end)
     SyncedProgram rotary;   // A only, on the unit's A motor
     std::size_t blocks = 0; // blocks with A motion (each a sync point)
+    enum class Error { None, ProbeTurnsA, NotRestAroundA };
+    Error errorCode = Error::None;
     std::uint32_t errorLine = 0;
     std::string error; // English; non-empty: the program cannot be split
     bool ok() const { return error.empty(); }
@@ -59,7 +61,8 @@ struct RotarySplit
 // unit's profile before the run.
 MachineConfig withRotaryA(const MachineConfig &machine, const MachineConfig &rotary);
 
-// Splits a program planned with PlanOptions::restAroundA into the two units' programs.
+// Splits a program planned with PlanOptions::restAroundA into the two units' programs; an
+// error when a block that turns A holds more than one vector (planned without that option).
 RotarySplit splitRotaryA(const UnitProgram &planned);
 
 } // namespace frezka::machine

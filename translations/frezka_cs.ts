@@ -525,6 +525,12 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <translation>%1:%2: pohyb sondy, který otáčí osou A, nelze spustit s osou A na vlastní jednotce (--rotary-a): sondujte bez pohybu osy A
 </translation>
     </message>
+    <message>
+        <source>%1:%2: internal error: the program was planned without a rest around each move that turns A; please report it with the program
+</source>
+        <translation>%1:%2: vnitřní chyba: program byl naplánován bez zastavení kolem každého pohybu, který otáčí osou A; nahlaste ji prosím i s programem
+</translation>
+    </message>
 </context>
 <context>
     <name>RunCli</name>

@@ -525,6 +525,12 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <translation>%1:%2: a probe move that turns A cannot run with A on its own unit (--rotary-a): probe without moving A
 </translation>
     </message>
+    <message>
+        <source>%1:%2: internal error: the program was planned without a rest around each move that turns A; please report it with the program
+</source>
+        <translation>%1:%2: internal error: the program was planned without a rest around each move that turns A; please report it with the program
+</translation>
+    </message>
 </context>
 <context>
     <name>RunCli</name>

@@ -77,6 +77,13 @@ std::optional<RotaryLinePlan> planRotaryLine(const QString &file, const ProgramO
         return std::nullopt;
     }
     RotaryLinePlan out{*machineConfig, *rotary, machine::splitRotaryA(plan.program)};
+    if (out.split.errorCode == machine::RotarySplit::Error::NotRestAroundA) {
+        err(RotaryLineCli::tr("%1:%2: internal error: the program was planned without a rest "
+                              "around each move that turns A; please report it with the program\n")
+                .arg(file)
+                .arg(out.split.errorLine));
+        return std::nullopt;
+    }
     if (!out.split.ok()) {
         err(RotaryLineCli::tr("%1:%2: a probe move that turns A cannot run with A on its own "
                               "unit (--rotary-a): probe without moving A\n")

@@ -243,6 +243,14 @@ TEST(RotarySync, SplitGivesEachUnitItsAxesAndOneSyncPointPerBlock)
     EXPECT_EQ(heldCount(split.machine), 1); // only the joint block moves the machine
     EXPECT_EQ(split.rotary.program.commands.back().endSteps[3], 0);
     EXPECT_EQ(vectorsOf(split.rotary.program), 4);
+    // Planned without a rest around each A move, A's vectors flow with the others: refused.
+    const auto flowing = machine::plan(
+        gcode::interpretText(kProgram).toolpath,
+        machine::withRotaryA(machine::defaultMachineConfig(Variant::Gve114), rotaryConfig()));
+    ASSERT_TRUE(flowing.ok());
+    const auto refused = machine::splitRotaryA(flowing.program);
+    EXPECT_FALSE(refused.ok());
+    EXPECT_NE(refused.error.find("restAroundA"), std::string::npos) << refused.error;
 }
 
 // Without A motion the machine's unit gets the program as planned, with no sync point: chains
