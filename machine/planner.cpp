@@ -55,8 +55,13 @@ PlanResult Planner::run()
     emit(UnitOp::Pause, m_config.motion.pauseMs, 0);
     for (std::size_t i = 0; i < m_path.size(); ++i) {
         if (m_path.isMotion(i)) {
+            const bool ownChain = m_options.restAroundA && m_path.start(i).a != m_path.end(i).a;
+            if (ownChain)
+                flush();
             reserveMoves(i);
             motion(i);
+            if (ownChain)
+                flush();
         } else {
             event(i);
         }
@@ -183,8 +188,15 @@ void Planner::motion(std::size_t i)
     }
     const std::vector<Point4> points = gcode::chordArc(
         m_path.start(i), m_path.end(i), m_path.arc(i), m_config.motion.chordToleranceMm);
-    for (const Point4 &p : points)
+    // With the rotary table on its own unit each chord that turns A is a block of its own: the
+    // two units' parts of consecutive chords have different speed ratios, so they cannot flow
+    // into each other on both units at once (machine/rotarysplit.h).
+    const bool chordByChord = m_options.restAroundA && m_path.start(i).a != m_path.end(i).a;
+    for (const Point4 &p : points) {
         addPoint(p, false, feed, line);
+        if (chordByChord)
+            flush();
+    }
 }
 
 void Planner::addPoint(const Point4 &p, bool rapid, double feedMmPerS, std::uint32_t line)

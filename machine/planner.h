@@ -48,6 +48,10 @@ struct PlanOptions
     // speedChangeCost x what a V command costs the link (its bytes and a round trip): V cannot
     // travel in a packet (docs/planner.md §4). 0: every vector at its own cap.
     double speedChangeCost = 1.0;
+    // Every toolpath entry that moves A is a chain of its own, from rest to rest (a WaitIdle
+    // before and after it; an arc that turns A: each chord), the block boundaries where a
+    // rotary table on its own unit is synchronised with the machine (machine/rotarysplit.h).
+    bool restAroundA = false;
 };
 
 enum class PlanErrorCode : std::uint8_t {

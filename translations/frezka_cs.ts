@@ -520,6 +520,43 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>RotaryLineCli</name>
+    <message>
+        <source>frezka-cli run-line: the rotary unit must be a GVE114 (only it shares its line with other units): give a GVE114 profile, --rotary-a %1:PROFILE
+</source>
+        <translation>frezka-cli run-line: otočný stůl musí mít jednotku GVE114 (jen ta sdílí linku s dalšími jednotkami): zadejte profil GVE114, --rotary-a %1:PROFIL
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: the rotary unit&apos;s address %1 is the machine&apos;s unit&apos;s (unit.address of --machine): each unit on the line has its own address
+</source>
+        <translation>frezka-cli run-line: adresa %1 jednotky otočného stolu je adresou jednotky stroje (unit.address v --machine): každá jednotka na lince má svou vlastní adresu
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: the rotary unit&apos;s profile has no A axis (axes.a.present is false): give a profile that sets the A axis&apos;s scale, speeds and limits, --rotary-a %1:PROFILE
+</source>
+        <translation>frezka-cli run-line: profil jednotky otočného stolu nemá osu A (axes.a.present je false): zadejte profil, který nastavuje měřítko, rychlosti a limity osy A, --rotary-a %1:PROFIL
+</translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>varování: </translation>
+    </message>
+    <message>
+        <source>%1:%2: a probe move that turns A cannot run with A on its own unit (--rotary-a): probe without moving A
+</source>
+        <translation>%1:%2: pohyb sondy, který otáčí osou A, nelze spustit s osou A na vlastní jednotce (--rotary-a): sondujte bez pohybu osy A
+</translation>
+    </message>
+    <message>
+        <source>%1:%2: internal error: the program was planned without a rest around each move that turns A; please report it with the program
+</source>
+        <translation>%1:%2: vnitřní chyba: program byl naplánován bez zastavení kolem každého pohybu, který otáčí osou A; nahlaste ji prosím i s programem
+</translation>
+    </message>
+</context>
+<context>
     <name>RunCli</name>
     <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
@@ -670,15 +707,29 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
-</source>
-        <translation>použití: frezka-cli run-line --unit ADRESA:SOUBOR[:PROFIL] [--unit ...]... %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
-</translation>
-    </message>
-    <message>
         <source>frezka-cli run-line: unit %1: a %2 answers on address 0 only; give it address 0, or use a GVE114 profile (--machine gve114)
 </source>
         <translation>frezka-cli run-line: jednotka %1: %2 odpovídá jen na adrese 0; dejte jí adresu 0, nebo použijte profil GVE114 (--machine gve114)
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+       frezka-cli run-line --machine PROFILE --rotary-a ADDRESS[:PROFILE] [options as above] FILE
+</source>
+        <translation>použití: frezka-cli run-line --unit ADRESA:SOUBOR[:PROFIL] [--unit ...]... %1 [--port CESTA|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+       frezka-cli run-line --machine PROFIL --rotary-a ADRESA[:PROFIL] [volby jako výše] SOUBOR
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: cannot read --rotary-a &apos;%1&apos;: write the rotary unit&apos;s address 1..6, once, and optionally its profile, e.g. --rotary-a 1:rotary.json
+</source>
+        <translation>frezka-cli run-line: nelze přečíst --rotary-a &apos;%1&apos;: napište jednou adresu jednotky otočného stolu 1..6 a případně její profil, např. --rotary-a 1:rotary.json
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: --rotary-a runs one program on the machine&apos;s unit and the rotary unit: give the program&apos;s FILE and no --unit
+</source>
+        <translation>frezka-cli run-line: --rotary-a spouští jeden program na jednotce stroje a jednotce otočného stolu: zadejte SOUBOR programu a žádné --unit
 </translation>
     </message>
 </context>

@@ -520,6 +520,43 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>RotaryLineCli</name>
+    <message>
+        <source>frezka-cli run-line: the rotary unit must be a GVE114 (only it shares its line with other units): give a GVE114 profile, --rotary-a %1:PROFILE
+</source>
+        <translation>frezka-cli run-line: the rotary unit must be a GVE114 (only it shares its line with other units): give a GVE114 profile, --rotary-a %1:PROFILE
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: the rotary unit&apos;s address %1 is the machine&apos;s unit&apos;s (unit.address of --machine): each unit on the line has its own address
+</source>
+        <translation>frezka-cli run-line: the rotary unit&apos;s address %1 is the machine&apos;s unit&apos;s (unit.address of --machine): each unit on the line has its own address
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: the rotary unit&apos;s profile has no A axis (axes.a.present is false): give a profile that sets the A axis&apos;s scale, speeds and limits, --rotary-a %1:PROFILE
+</source>
+        <translation>frezka-cli run-line: the rotary unit&apos;s profile has no A axis (axes.a.present is false): give a profile that sets the A axis&apos;s scale, speeds and limits, --rotary-a %1:PROFILE
+</translation>
+    </message>
+    <message>
+        <source>warning: </source>
+        <translation>warning: </translation>
+    </message>
+    <message>
+        <source>%1:%2: a probe move that turns A cannot run with A on its own unit (--rotary-a): probe without moving A
+</source>
+        <translation>%1:%2: a probe move that turns A cannot run with A on its own unit (--rotary-a): probe without moving A
+</translation>
+    </message>
+    <message>
+        <source>%1:%2: internal error: the program was planned without a rest around each move that turns A; please report it with the program
+</source>
+        <translation>%1:%2: internal error: the program was planned without a rest around each move that turns A; please report it with the program
+</translation>
+    </message>
+</context>
+<context>
     <name>RunCli</name>
     <message>
         <source><byte value="xd"/>[%1] %2% line %3 ETA %4 </source>
@@ -670,15 +707,29 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
-</source>
-        <translation>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
-</translation>
-    </message>
-    <message>
         <source>frezka-cli run-line: unit %1: a %2 answers on address 0 only; give it address 0, or use a GVE114 profile (--machine gve114)
 </source>
         <translation>frezka-cli run-line: unit %1: a %2 answers on address 0 only; give it address 0, or use a GVE114 profile (--machine gve114)
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+       frezka-cli run-line --machine PROFILE --rotary-a ADDRESS[:PROFILE] [options as above] FILE
+</source>
+        <translation>usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]
+       frezka-cli run-line --machine PROFILE --rotary-a ADDRESS[:PROFILE] [options as above] FILE
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: cannot read --rotary-a &apos;%1&apos;: write the rotary unit&apos;s address 1..6, once, and optionally its profile, e.g. --rotary-a 1:rotary.json
+</source>
+        <translation>frezka-cli run-line: cannot read --rotary-a &apos;%1&apos;: write the rotary unit&apos;s address 1..6, once, and optionally its profile, e.g. --rotary-a 1:rotary.json
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli run-line: --rotary-a runs one program on the machine&apos;s unit and the rotary unit: give the program&apos;s FILE and no --unit
+</source>
+        <translation>frezka-cli run-line: --rotary-a runs one program on the machine&apos;s unit and the rotary unit: give the program&apos;s FILE and no --unit
 </translation>
     </message>
 </context>

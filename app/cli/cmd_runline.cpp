@@ -2,6 +2,7 @@
 //                     [--offset G54:X,Y,Z[,A]]... [--work-zero X,Y,Z[,A]]
 //                     [--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N]
 //                     [--timeout S]
+// frezka-cli run-line --machine PROFILE --rotary-a ADDR[:PROFILE] [options as above] FILE
 //
 // Several units on one serial line (GVE114 manual §9.5: further units on the EXT branch
 // cable, each with its own address), each running its own program at the same time: every
@@ -18,13 +19,22 @@
 // its share in use, the lines nobody's (stray) and those that came before the addressed unit
 // could have heard its command (early). Exit code 0 when every job ran to its end, 1 on an
 // error (on stderr, "unit ADDR: ..."), 2 on bad usage.
+//
+// With --rotary-a one program runs on two units: the machine's (--machine, at its unit.address)
+// drives X Y Z, a rotary table on a GVE114 at ADDR (its own profile, else --machine; its A
+// axis) drives A. The program is split at the blocks that move A into sync points
+// (machine/rotarysplit.h, driver/link/synchold.h): such a block starts on both units together
+// once both have finished what came before it. The JSON adds the sync points passed and, per
+// unit, how often and how long it waited for the other there.
 
 #include "cli.h"
 #include "programoptions.h"
+#include "rotaryline.h"
 
 #include "driver/link/drivererror.h"
 #include "driver/link/emulatorport.h"
 #include "driver/link/linerunner.h"
+#include "driver/link/linesync.h"
 #include "driver/link/serialtransport.h"
 #include "driver/link/sharedline.h"
 #include "driver/link/sharedlineworker.h"
@@ -61,6 +71,8 @@ struct UnitArg
 struct Args
 {
     std::vector<UnitArg> units;
+    std::optional<UnitArg> rotaryA; // --rotary-a ADDR[:PROFILE] (file: the one program)
+    QString file;                   // the program with --rotary-a
     cli::ProgramOptions program;
     QString port = QStringLiteral("sim");
     int baud = 0;
@@ -73,7 +85,9 @@ int usage()
 {
     cli::err(RunLineCli::tr(
                  "usage: frezka-cli run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... %1 "
-                 "[--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]\n")
+                 "[--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]\n"
+                 "       frezka-cli run-line --machine PROFILE --rotary-a ADDRESS[:PROFILE] "
+                 "[options as above] FILE\n")
                  .arg(cli::programOptionsUsage()));
     return 2;
 }
@@ -106,6 +120,22 @@ bool takeUnit(const QString &value, Args &args)
     return true;
 }
 
+bool takeRotary(const QString &value, Args &args)
+{
+    const auto colon = value.indexOf(QLatin1Char(':'));
+    bool ok = false;
+    const int address = (colon < 0 ? value : value.left(colon)).toInt(&ok);
+    if (!ok || address < 1 || address > 6 || args.rotaryA) {
+        cli::err(RunLineCli::tr("frezka-cli run-line: cannot read --rotary-a '%1': write the "
+                                "rotary unit's address 1..6, once, and optionally its profile, "
+                                "e.g. --rotary-a 1:rotary.json\n")
+                     .arg(value));
+        return false;
+    }
+    args.rotaryA = UnitArg{address, {}, colon < 0 ? QString() : value.mid(colon + 1)};
+    return true;
+}
+
 // 0 = parsed, else the exit code.
 int parseArgs(const QStringList &raw, Args &args)
 {
@@ -117,11 +147,18 @@ int parseArgs(const QStringList &raw, Args &args)
                 return 2;
             continue;
         }
+        if (!a.startsWith(QLatin1String("--")) && args.file.isEmpty()) {
+            args.file = a; // the program of --rotary-a
+            continue;
+        }
         if (i + 1 >= raw.size())
             return usage();
         const QString v = raw[++i];
         if (a == QLatin1String("--unit")) {
             if (!takeUnit(v, args))
+                return 2;
+        } else if (a == QLatin1String("--rotary-a")) {
+            if (!takeRotary(v, args))
                 return 2;
         } else if (a == QLatin1String("--port")) {
             args.port = v;
@@ -141,7 +178,15 @@ int parseArgs(const QStringList &raw, Args &args)
         if (!ok)
             return usage();
     }
-    return args.units.empty() ? usage() : 0;
+    if (args.rotaryA && (!args.units.empty() || args.file.isEmpty())) {
+        cli::err(RunLineCli::tr("frezka-cli run-line: --rotary-a runs one program on the "
+                                "machine's unit and the rotary unit: give the program's FILE "
+                                "and no --unit\n"));
+        return 2;
+    }
+    if (!args.rotaryA && !args.file.isEmpty())
+        return usage();
+    return args.units.empty() && !args.rotaryA ? usage() : 0;
 }
 
 std::optional<machine::UnitProgram> planFile(const QString &file, const Args &args,
@@ -185,7 +230,8 @@ struct Line
 {
     std::vector<std::unique_ptr<driver::MachineCore>> cores;
     std::unique_ptr<driver::SharedLine> line;
-    std::vector<int> finished; // -1 running, 0 failed, 1 ran to its end
+    std::unique_ptr<driver::LineSync> sync; // --rotary-a: the units' sync points
+    std::vector<int> finished;              // -1 running, 0 failed, 1 ran to its end
     bool failed = false;
     bool started = false;
 
@@ -232,15 +278,17 @@ void build(Line &l, const Args &args, const std::vector<machine::MachineConfig> 
     lineOptions.baud = args.baud > 0 ? args.baud : configs.front().link.baud;
     lineOptions.quietS = args.quietMs / 1000.0;
     l.line = std::make_unique<driver::SharedLine>(raw, lineOptions);
+    if (args.rotaryA)
+        l.sync = std::make_unique<driver::LineSync>(raw);
 }
 
 // Starts every job once every unit is connected; false (on stderr) when a core refuses.
-bool startJobs(Line &l, const std::vector<machine::UnitProgram> &programs, const Args &args,
+bool startJobs(Line &l, const std::vector<machine::SyncedProgram> &programs, const Args &args,
                double now)
 {
     l.started = true;
     for (std::size_t i = 0; i < l.cores.size(); ++i) {
-        if (const auto refused = l.cores[i]->run(programs[i], now)) {
+        if (const auto refused = l.cores[i]->runSynced(programs[i], now)) {
             cli::err(RunLineCli::tr("unit %1: %2\n")
                          .arg(args.units[i].address)
                          .arg(driver::translatedText(refused->reason, true)));
@@ -250,7 +298,7 @@ bool startJobs(Line &l, const std::vector<machine::UnitProgram> &programs, const
     return true;
 }
 
-bool runSim(Line &l, const std::vector<machine::UnitProgram> &programs, const Args &args,
+bool runSim(Line &l, const std::vector<machine::SyncedProgram> &programs, const Args &args,
             const std::vector<machine::MachineConfig> &configs, double &now)
 {
     std::vector<emulator::UnitOptions> units;
@@ -277,7 +325,7 @@ bool runSim(Line &l, const std::vector<machine::UnitProgram> &programs, const Ar
     return l.allDone() && !l.failed;
 }
 
-bool runPort(Line &l, const std::vector<machine::UnitProgram> &programs, const Args &args,
+bool runPort(Line &l, const std::vector<machine::SyncedProgram> &programs, const Args &args,
              const std::vector<machine::MachineConfig> &configs, double &now)
 {
     const int baud = args.baud > 0 ? args.baud : configs.front().link.baud;
@@ -334,12 +382,38 @@ QJsonObject report(const Line &l, const Args &args, double now)
             {QStringLiteral("collisions"), static_cast<double>(s.units[i].collisions)},
             {QStringLiteral("recovered"), static_cast<double>(c.engine().stats().recovered)},
             {QStringLiteral("resent"), static_cast<double>(c.engine().stats().resent)}});
+        if (l.sync) {
+            QJsonObject u = units.last().toObject();
+            u.insert(QStringLiteral("role"),
+                     i == 0 ? QStringLiteral("machine") : QStringLiteral("rotaryA"));
+            u.insert(QStringLiteral("sync_waits"),
+                     static_cast<double>(l.sync->stats().units[i].waits));
+            u.insert(QStringLiteral("sync_wait_s"), l.sync->stats().units[i].waitS);
+            units[static_cast<int>(i)] = u;
+        }
     }
-    return {{QStringLiteral("units"), units},
-            {QStringLiteral("line_share"), l.line->lineShare(now)},
-            {QStringLiteral("stray_lines"), static_cast<double>(s.strayLines)},
-            {QStringLiteral("early_lines"), static_cast<double>(s.earlyLines)},
-            {QStringLiteral("elapsed_s"), now - s.startS}};
+    QJsonObject out{{QStringLiteral("units"), units},
+                    {QStringLiteral("line_share"), l.line->lineShare(now)},
+                    {QStringLiteral("stray_lines"), static_cast<double>(s.strayLines)},
+                    {QStringLiteral("early_lines"), static_cast<double>(s.earlyLines)},
+                    {QStringLiteral("elapsed_s"), now - s.startS}};
+    if (l.sync)
+        out.insert(QStringLiteral("sync_points"), static_cast<double>(l.sync->stats().released));
+    return out;
+}
+
+// --rotary-a: the machine's unit first, the rotary unit second, one program split for both.
+bool planRotary(Args &args, std::vector<machine::MachineConfig> &configs,
+                std::vector<machine::SyncedProgram> &programs)
+{
+    auto plan =
+        cli::planRotaryLine(args.file, args.program, args.rotaryA->address, args.rotaryA->profile);
+    if (!plan)
+        return false;
+    args.units = {{plan->machine.unit.address, args.file, {}}, *args.rotaryA};
+    configs = {plan->machine, plan->rotary};
+    programs = {std::move(plan->split.machine), std::move(plan->split.rotary)};
+    return true;
 }
 
 int runLine(const QStringList &raw)
@@ -348,14 +422,16 @@ int runLine(const QStringList &raw)
     if (const int code = parseArgs(raw, args))
         return code;
     std::vector<machine::MachineConfig> configs;
-    std::vector<machine::UnitProgram> programs;
-    for (const UnitArg &u : args.units) {
+    std::vector<machine::SyncedProgram> programs;
+    if (args.rotaryA && !planRotary(args, configs, programs))
+        return 1;
+    for (const UnitArg &u : args.rotaryA ? std::vector<UnitArg>{} : args.units) {
         auto config = unitProfile(u, args);
         auto program = config ? planFile(u.file, args, *config) : std::nullopt;
         if (!program)
             return 1;
         configs.push_back(std::move(*config));
-        programs.push_back(std::move(*program));
+        programs.push_back({std::move(*program), {}});
     }
     Line l;
     build(l, args, configs);
@@ -373,7 +449,8 @@ int runLine(const QStringList &raw)
 static const bool frezkaCliRegisteredRunLine = frezka::cli::registerCommand(
     "run-line",
     {"run-line --unit ADDRESS:FILE[:PROFILE] [--unit ...]... [--machine PROFILE] "
-     "[--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]",
+     "[--port PATH|sim] [--baud N] [--latency-ms N] [--quiet-ms N] [--timeout S]; "
+     "run-line --machine PROFILE --rotary-a ADDRESS[:PROFILE] [...] FILE",
      QT_TRANSLATE_NOOP("frezka::cli",
                        "Run a program on each of several units sharing one serial line"),
      runLine});

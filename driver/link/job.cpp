@@ -21,14 +21,6 @@ using machine::UnitOp;
 using detail::isMotion;
 using detail::refusal;
 
-namespace {
-// Motion kept in the unit beyond two round trips when a packet is sized to what it holds, s.
-constexpr double kDryReserveS = 0.02;
-// ... and this share of what it holds: the estimate of a second and more of queued motion is off
-// by a percent or two (a 1.5 s packet after a spin-up arrived 11 ms after the unit ran dry).
-constexpr double kHeldDriftShare = 0.05;
-} // namespace
-
 Job::Job(CoreHost &host)
     : m_host(host)
     , m_pace(host, m_program, m_cursor)
@@ -70,6 +62,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     m_check.reset();
     m_guard.reset();
     m_lead.reset();
+    m_sync.begin();
     m_waitUntil = -1;
     m_pace.build();
     m_packetLimit = m_pace.maxPacket();
@@ -123,7 +116,7 @@ void Job::streamStep(double now)
         m_cursor.exec = m_cursor.next;
         m_cursor.execAt = now;
     }
-    if (m_lead.step(now))
+    if (m_sync.step(now) || (!m_sync.busy() && m_lead.step(now)))
         return;
     if (m_cursor.next >= m_program.commands.size()) {
         m_streamBlocked = true;
@@ -150,89 +143,6 @@ void Job::streamStep(double now)
                  [this, index](const Outcome &o) { onCommandOutcome(o, index, m_host.now()); });
 }
 
-// As many C/B commands as fit: the unit takes a packet at its *E, by when it has run part of
-// its queue for as long as the packet takes on the wire. Where the motion ahead keeps pace with
-// the wire, a packet must take no longer than that (each packet then brings more motion than it
-// costs, so the unit holds more after it), or the unit runs dry mid-chain and stops without
-// braking. Where the unit holds too little for any budget, the packet is one vector: the
-// smallest is the one that may still come in time. Kept in reserve: the reply's
-// and the next packet's round trips and a little more (the estimate of what the unit holds
-// drifts between polls), or half of what it holds when it holds little (a small queue, as the
-// GVE84's 64 vectors: a short packet still comes in time). Long for the one decision it makes.
-void Job::sendPacket(double now)
-{
-    const auto &cmds = m_program.commands;
-    const std::int64_t capacity = variantInfo(m_host.config().unit.variant).queueCapacity - 1;
-    LinkEngine &link = m_host.link();
-    std::vector<Command> packet;
-    std::int64_t vectors = 0;
-    std::size_t bytes = 24; // *S *S *E
-    std::size_t end = m_cursor.next;
-    const std::size_t shortEnd = m_pace.slowMotionPacketEnd();
-    const bool keepShort = shortEnd > m_cursor.next;
-    const double held = m_pace.leadS(); // the packet must arrive before the last vector brakes
-    const double budget =
-        held - std::min(2 * m_host.rttS() + kDryReserveS + kHeldDriftShare * held, 0.5 * held);
-    // While the unit moves, a packet is no longer on the wire than the budget, and holds at
-    // least one vector: where the unit holds too little for any budget, the smallest packet
-    // is the one that may still arrive in time. A full packet there (30 commands, 40 ms on the
-    // wire, where the unit held a few ms after a V) made it run dry (property seed 154).
-    // A unit held at its chain's start runs nothing until the lead-in is queued: full packets,
-    // as many vectors as its queue takes.
-    const bool paced = held > 0 && !m_lead.held();
-    const std::int64_t heldQueued =
-        m_lead.held() ? m_pace.vectorsBefore(end) - m_pace.vectorsBefore(m_lead.start()) : 0;
-    while (end < cmds.size() && static_cast<int>(packet.size()) < m_packetLimit) {
-        const UnitOp op = cmds[end].op;
-        if (op != UnitOp::Vector && op != UnitOp::Brake)
-            break;
-        if (keepShort && end >= shortEnd)
-            break;
-        Command c = toCommand(cmds[end]);
-        const std::size_t size = encode(c, link.checksums()).size();
-        // At least one vector whatever the budget: a packet of its B alone was taken for a full
-        // queue, and the job waited a poll interval while the unit ran dry (property seed 100).
-        if (paced && vectors > 0 && link.wireTime(bytes + size) > budget)
-            break;
-        const std::int64_t queued =
-            m_lead.held() ? heldQueued : m_pace.queuedAfter(link.wireTime(bytes + size));
-        if (op == UnitOp::Vector && queued + vectors + 1 > capacity)
-            break;
-        bytes += size;
-        vectors += op == UnitOp::Vector ? 1 : 0;
-        packet.push_back(std::move(c));
-        ++end;
-    }
-    if (packet.empty() ||
-        (vectors == 0 && cmds[end < cmds.size() ? end : end - 1].op == UnitOp::Vector)) {
-        // No room in the unit's queue by our estimate: wait until about 16 vectors have run.
-        const std::size_t at = m_pace.execEstimate();
-        const std::size_t later = std::min(at + 16, m_cursor.next);
-        m_waitUntil =
-            now + std::clamp(m_pace.runS(at, later), 0.002, m_host.options().pollIntervalS);
-        m_queueFullSeen = true;
-        return;
-    }
-    // The command index (mod 256) must tell a packet that arrived from one that did not: all its
-    // lines (*S *S, the commands, *E) must not advance it by a multiple of 256.
-    if ((packet.size() + 3) % 256 == 0) {
-        packet.pop_back();
-        --end;
-    }
-    const std::size_t first = m_cursor.next;
-    m_cursor.inflightEnd = end;
-    if (packet.size() == 1) {
-        m_host.start(packet.front(),
-                     [this, first](const Outcome &o) { onCommandOutcome(o, first, m_host.now()); });
-        return;
-    }
-    const std::size_t n = packet.size();
-    ++m_figures.report().packets;
-    m_host.startPacket(std::move(packet), [this, first, n](const Outcome &o) {
-        onPacketOutcome(o, first, n, m_host.now());
-    });
-}
-
 void Job::acceptUpTo(std::size_t end, bool arrivedJustNow)
 {
     if (arrivedJustNow && end > m_cursor.next &&
@@ -248,50 +158,6 @@ void Job::acceptUpTo(std::size_t end, bool arrivedJustNow)
     state.commandsAcked = static_cast<std::int64_t>(m_cursor.next);
     state.vectorsAcked = m_cursor.vectorsAcked;
     m_host.markDirty();
-}
-
-void Job::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, double now)
-{
-    (void)now;
-    if (m_cursor.next != first || m_guard.faulted())
-        return; // superseded (abort, link loss, the path guard dropped the queue)
-    if (o.status == OutcomeStatus::Failed) {
-        m_lineErrors.note(static_cast<int>(n), 1);
-        m_packetLimit = std::max(4, m_packetLimit / 2);
-        m_check.verify("packet outcome unknown: " + o.error);
-        return;
-    }
-    const std::size_t accepted = std::min<std::size_t>(static_cast<std::size_t>(o.accepted), n);
-    const bool damaged = o.reply.code == ReplyCode::Syntax || o.reply.code == ReplyCode::Watchdog;
-    m_lineErrors.note(static_cast<int>(o.reply.ok() ? n : accepted + 1), damaged ? 1 : 0);
-    acceptUpTo(first + accepted, o.recovered == 0);
-    switch (o.reply.code) {
-    case ReplyCode::Ok:
-        m_queueFullSeen = false;
-        m_packetLimit = std::min({m_pace.maxPacket(), m_packetLimit + m_packetLimit / 2 + 1,
-                                  std::max(m_packetLimit, m_lineErrors.packetCap())});
-        return;
-    case ReplyCode::QueueFull:
-        // The queue is full right now: that calibrates the estimate of where the unit is.
-        m_queueFullSeen = true;
-        m_cursor.exec = m_pace.executingAtFull();
-        m_cursor.execAt = m_host.now();
-        // Bytes beyond the free space are wasted wire time: start smaller next time.
-        m_packetLimit = std::max(16, static_cast<int>(accepted));
-        return;
-    case ReplyCode::Syntax:   // a line damaged on the way (bad checksum) or lost
-    case ReplyCode::Watchdog: // the packet came in too slowly: none of the rest ran
-        m_packetLimit = std::max(4, m_packetLimit / 2);
-        m_figures.report().resent += static_cast<std::int64_t>(n - accepted);
-        return;
-    default:
-        m_host.fail({DriverCode::UnitRefused,
-                     {detail::lineArg(m_program.commands[first + accepted]),
-                      encodeBody(toCommand(m_program.commands[first + accepted])),
-                      std::string(replyCodeText(o.reply.code))}},
-                    &o, MachineMode::Alarm);
-        return;
-    }
 }
 
 void Job::onCommandOutcome(const Outcome &o, std::size_t index, double now)
@@ -468,6 +334,7 @@ void Job::abandon()
     m_check.cancel();
     m_guard.clearFault();
     m_lead.reset();
+    m_sync.reset();
     m_override.follow(false);
 }
 
@@ -502,6 +369,7 @@ void Job::linkLost()
     m_check.linkLost();
     m_guard.clearFault(); // the check of the counters after reconnecting takes over
     m_lead.reset();       // a unit still held reports INTA when the link is back: the job is held
+    m_sync.reset();       // ... and runs on without the other units
 }
 
 bool Job::resumeAfterReconnect()

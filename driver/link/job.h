@@ -26,6 +26,7 @@
 #include "driver/link/pathguard.h"
 #include "driver/link/probemove.h"
 #include "driver/link/progresscheck.h"
+#include "driver/link/synchold.h"
 #include "machine/unitprogram.h"
 
 #include <cstdint>
@@ -96,6 +97,7 @@ public:
     protocol::Command toCommand(const machine::UnitCommand &c) const;
     ProgressCheck &progress() { return m_check; }
     PathGuard &guard() { return m_guard; }
+    SyncHold &sync() { return m_sync; }
 
 private:
     void sendPacket(double now);
@@ -125,6 +127,9 @@ private:
     PathGuard m_guard;
     ProbeMove m_probe;
     LeadInHold m_lead{m_host, *this};
+    SyncHold m_sync{m_host, *this};
+    // Where the chain held by H (lead-in or sync point) began; nullopt when none is held.
+    std::optional<std::size_t> heldFrom() const;
 };
 
 } // namespace frezka::driver

@@ -101,6 +101,19 @@ public:
     {
         return execute(op::Run{std::move(program)}, now);
     }
+    // A job with sync points (machine/rotarysplit.h): at each the unit waits until
+    // releaseSync; onSyncReady says it is there (called from inside the core: the handler may
+    // release at once, and may pump other cores, not this one).
+    Result runSynced(machine::SyncedProgram program, double now)
+    {
+        m_job.sync().setPoints(std::move(program.syncs));
+        return run(std::move(program.program), now);
+    }
+    void releaseSync(std::size_t index) { m_job.sync().release(index); }
+    void setSyncReadyHandler(std::function<void(std::size_t index, double now)> handler)
+    {
+        m_job.sync().onReady = std::move(handler);
+    }
     Result pause(double now, bool stopSpindle = false)
     {
         return execute(op::Pause{stopSpindle}, now);

@@ -24,13 +24,18 @@ private slots:
     void twoJobsOnTheEmulatedLine();
     void twoJobsThroughGveEmuOnOnePty();
     void refusesBadUnits();
+    void rotaryTableOnTheEmulatedLine();
+    void rotaryTableThroughGveEmuOnOnePty();
+    void refusesBadRotaryTables();
 
 private:
     QJsonArray aloneSteps(const QString &file);
     void checkUnits(const QJsonObject &report);
 
     QTemporaryDir m_dir;
+    QJsonObject runRotary(const QStringList &extra);
     QString m_a, m_b;
+    QString m_rotaryProgram, m_rotaryProfile;
     QJsonArray m_stepsA, m_stepsB;
 };
 
@@ -49,6 +54,13 @@ QByteArray askPty(QSerialPort &port, const QByteArray &command)
         rx += port.readAll();
     }
     return rx;
+}
+QList<qint64> stepsOf(const QJsonObject &unit)
+{
+    QList<qint64> out;
+    for (const auto &v : unit.value(QStringLiteral("position_steps")).toArray())
+        out << static_cast<qint64>(v.toDouble());
+    return out;
 }
 } // namespace
 
@@ -70,6 +82,13 @@ void CliRunLineTest::initTestCase()
     m_b = writeFile(m_dir, QStringLiteral("b.nc"),
                     "G21 G90\nG0 Z5\nG0 X10 Y-10\nG1 Z-2 F500\n"
                     "G1 X-30 Y-20 F1800\nG3 X-30 Y20 I0 J20\nG1 X12.1 Y-5.4\nM2\n");
+    // XYZ, A indexing, X Y Z and A together, XYZ, A indexing at the end.
+    m_rotaryProgram = writeFile(m_dir, QStringLiteral("rotary.nc"),
+                                "G21 G90 G94\nG1 X5 Y5 F3000\nG0 A30\nG1 X10 Y8 Z-1 A60 F600\n"
+                                "G1 X12 Y7\nG0 A45\nM2\n");
+    m_rotaryProfile = writeFile(m_dir, QStringLiteral("rotary.json"),
+                                R"({"unit": {"variant": "gve114", "maxPulseRate": 125000},
+            "axes": {"a": {"present": true, "stepsPerMm": 100, "softMaxMm": 90}}})");
     m_stepsA = aloneSteps(m_a);
     m_stepsB = aloneSteps(m_b);
     QCOMPARE(m_stepsA.size(), 4);
@@ -166,6 +185,103 @@ void CliRunLineTest::refusesBadUnits()
                    kProfile);
     QCOMPARE(r.code, 1);
     QVERIFY2(r.err.contains(QStringLiteral("address 0 only")), qPrintable(r.err));
+}
+
+// One program on the machine's unit (X Y Z) and a rotary table's unit at address 1 (A): both
+// end at exact counters, every sync point was passed, and each unit waited for the other.
+QJsonObject CliRunLineTest::runRotary(const QStringList &extra)
+{
+    const auto r = runCli(QStringLiteral(FREZKA_CLI),
+                          QStringList{QStringLiteral("run-line"), QStringLiteral("--machine"),
+                                      QStringLiteral("gve114"), QStringLiteral("--rotary-a"),
+                                      QStringLiteral("1:") + m_rotaryProfile} +
+                              extra + QStringList{m_rotaryProgram});
+    if (r.code != 0)
+        qWarning("%s", qPrintable(r.err + r.out));
+    const QJsonObject report = lastJson(r.out);
+    const QJsonArray units = report.value(QStringLiteral("units")).toArray();
+    if (units.size() != 2)
+        return {};
+    const QJsonObject u0 = units[0].toObject(), u1 = units[1].toObject();
+    if (!u0.value(QStringLiteral("ok")).toBool() || !u1.value(QStringLiteral("ok")).toBool() ||
+        stepsOf(u0) != QList<qint64>{4800, 2800, -400, 0} ||
+        stepsOf(u1) != QList<qint64>{0, 0, 0, 4500} ||
+        u0.value(QStringLiteral("role")).toString() != QStringLiteral("machine") ||
+        u1.value(QStringLiteral("role")).toString() != QStringLiteral("rotaryA") ||
+        u0.value(QStringLiteral("sync_waits")).toDouble() < 1 ||
+        u1.value(QStringLiteral("sync_waits")).toDouble() < 1 ||
+        u1.value(QStringLiteral("vectors")).toDouble() != 3) {
+        qWarning("%s", qPrintable(r.out));
+        return {};
+    }
+    return report;
+}
+
+void CliRunLineTest::rotaryTableOnTheEmulatedLine()
+{
+    const QJsonObject report = runRotary({});
+    QVERIFY(!report.isEmpty());
+    // Before A30, before and after the joint block, before and after A45.
+    QCOMPARE(report.value(QStringLiteral("sync_points")).toInt(), 5);
+}
+
+void CliRunLineTest::rotaryTableThroughGveEmuOnOnePty()
+{
+    QProcess emu;
+    emu.start(QStringLiteral(GVE_EMU_PATH),
+              {QStringLiteral("--units"), QStringLiteral("0:gve114,1:gve114")});
+    QVERIFY(emu.waitForStarted(20000));
+    QTRY_VERIFY_WITH_TIMEOUT(emu.canReadLine(), 20000);
+    const QString pty = QString::fromLocal8Bit(emu.readLine()).trimmed();
+    const QJsonObject report = runRotary({QStringLiteral("--port"), pty});
+    QVERIFY(!report.isEmpty());
+    QCOMPARE(report.value(QStringLiteral("sync_points")).toInt(), 5);
+    QSerialPort port(pty);
+    port.setBaudRate(115200);
+    QVERIFY(port.open(QIODevice::ReadWrite));
+    while (port.waitForReadyRead(300))
+        port.readAll();
+    QVERIFY(askPty(port, "!0%-,CF\r").startsWith('0'));
+    QVERIFY(askPty(port, "!1%-,D0\r").startsWith('0'));
+    QCOMPARE(askPty(port, "!0P4\r"), QByteArray("0,4800,2800,-400,0\r"));
+    QCOMPARE(askPty(port, "!1P4\r"), QByteArray("0,0,0,0,4500\r"));
+    port.close();
+    emu.terminate();
+    emu.waitForFinished(20000);
+}
+
+void CliRunLineTest::refusesBadRotaryTables()
+{
+    const QStringList base{QStringLiteral("run-line"), QStringLiteral("--machine"),
+                           QStringLiteral("gve114")};
+    // The shipped GVE114 profile has no A axis: the rotary unit needs its own.
+    auto r = runCli(
+        QStringLiteral(FREZKA_CLI),
+        base + QStringList{QStringLiteral("--rotary-a"), QStringLiteral("1"), m_rotaryProgram});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("no A axis")), qPrintable(r.err));
+    // A program with A and no rotary unit: refused by the planner, as for one unit.
+    r = runCli(QStringLiteral(FREZKA_CLI),
+               base +
+                   QStringList{QStringLiteral("--unit"), QStringLiteral("0:") + m_rotaryProgram});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("axis A")), qPrintable(r.err));
+    // A's soft limits are the rotary unit's (0..90 degrees), checked before the run.
+    const QString far = writeFile(m_dir, QStringLiteral("far.nc"), "G21 G90\nG0 A120\nM2\n");
+    r = runCli(QStringLiteral(FREZKA_CLI),
+               base + QStringList{QStringLiteral("--rotary-a"),
+                                  QStringLiteral("1:") + m_rotaryProfile, far});
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("far.nc:2")) &&
+                 r.err.contains(QStringLiteral("soft limits")),
+             qPrintable(r.err));
+    QVERIFY2(!r.out.contains(QStringLiteral("units")), qPrintable(r.out)); // nothing ran
+    // The rotary unit's address must differ from the machine's unit's.
+    r = runCli(QStringLiteral(FREZKA_CLI),
+               base + QStringList{QStringLiteral("--rotary-a"),
+                                  QStringLiteral("0:") + m_rotaryProfile, m_rotaryProgram});
+    QCOMPARE(r.code, 2);
+    QVERIFY2(r.err.contains(QStringLiteral("1..6")), qPrintable(r.err));
 }
 
 QTEST_GUILESS_MAIN(CliRunLineTest)
