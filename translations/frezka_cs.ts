@@ -70,6 +70,57 @@
     </message>
 </context>
 <context>
+    <name>EdgeCli</name>
+    <message>
+        <source>usage: frezka-cli probe corner --x-direction +|- --y-direction +|- --tool-diameter MM [--reach MM] [--travel MM] [--feed MM/MIN] [--slow-feed MM/MIN] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</source>
+        <translation>použití: frezka-cli probe corner --x-direction +|- --y-direction +|- --tool-diameter MM [--reach MM] [--travel MM] [--feed MM/MIN] [--slow-feed MM/MIN] [--retract MM] [--port CESTA|sim] [--surface SPEC] %1
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli probe edge --axis x|y --direction +|- --tool-diameter MM [--travel MM] [--feed MM/MIN] [--slow-feed MM/MIN] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</source>
+        <translation>použití: frezka-cli probe edge --axis x|y --direction +|- --tool-diameter MM [--travel MM] [--feed MM/MIN] [--slow-feed MM/MIN] [--retract MM] [--port CESTA|sim] [--surface SPEC] %1
+</translation>
+    </message>
+    <message>
+        <source>--tool-diameter %1: the diameter of the tool (or the probe&apos;s ball) must be 0 mm or more.</source>
+        <translation>--tool-diameter %1: průměr nástroje (nebo kuličky sondy) musí být 0 mm nebo víc.</translation>
+    </message>
+    <message>
+        <source>--travel %1: how far the probe may move toward the edge must be above 0 mm.</source>
+        <translation>--travel %1: dráha, o kterou se sonda smí posunout k hraně, musí být větší než 0 mm.</translation>
+    </message>
+    <message>
+        <source>--retract %1: the back-off before the slow probe must be above 0 mm.</source>
+        <translation>--retract %1: odjetí před pomalým sondováním musí být větší než 0 mm.</translation>
+    </message>
+    <message>
+        <source>--reach %1: the move beside an outside corner&apos;s face must be 0 mm (an inside corner) or more.</source>
+        <translation>--reach %1: přejezd vedle stěny vnějšího rohu musí být 0 mm (vnitřní roh) nebo víc.</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe %1: %2
+</source>
+        <translation>frezka-cli probe %1: %2
+</translation>
+    </message>
+    <message>
+        <source>%1 is now X %2, Y %3 (machine mm of its zero): the %4 is the work&apos;s zero, with the tool&apos;s radius of %5 mm taken into account. Give the next commands --offset %6.
+</source>
+        <translation>%1 je nyní X %2, Y %3 (strojní mm své nuly): %4 je nulou obrobku, s ohledem na poloměr nástroje %5 mm. Dalším příkazům zadejte --offset %6.
+</translation>
+    </message>
+    <message>
+        <source>corner</source>
+        <translation>roh</translation>
+    </message>
+    <message>
+        <source>edge</source>
+        <translation>hrana</translation>
+    </message>
+</context>
+<context>
     <name>EmulatorTransport</name>
     <message>
         <source>built-in %1 emulator</source>
@@ -376,12 +427,6 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
 </translation>
     </message>
     <message>
-        <source>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
-</source>
-        <translation>frezka-cli probe: --surface %1: očekává se plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] nebo warp:Z0,DZDX,DZDY,AMP,PERIOD (strojové mm)
-</translation>
-    </message>
-    <message>
         <source>--plate %1: the plate&apos;s thickness must be 0 mm or more (0: the tool touches the work itself).</source>
         <translation>--plate %1: tloušťka destičky musí být 0 mm nebo více (0: nástroj se dotkne přímo obrobku).</translation>
     </message>
@@ -431,6 +476,12 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>Tool %1 is %2 mm long (tripped at machine Z %3); written to %4.
 </source>
         <translation>Nástroj %1 je dlouhý %2 mm (sepnul ve strojní Z %3); zapsáno do %4.
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0], warp:Z0,DZDX,DZDY,AMP,PERIOD or block:X0,Y0,X1,Y1,TOP (machine mm)
+</source>
+        <translation>frezka-cli probe: --surface %1: očekáváno plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0], warp:Z0,DZDX,DZDY,AMP,PERIOD nebo block:X0,Y0,X1,Y1,TOP (strojní mm)
 </translation>
     </message>
 </context>
@@ -941,8 +992,8 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>Spustit program na každé z několika jednotek na jedné sériové lince</translation>
     </message>
     <message>
-        <source>Probe the work&apos;s Z zero from a touch plate, or a tool&apos;s length on the tool sensor (fast then slow G38.2)</source>
-        <translation>Sondovat nulu Z obrobku dotykovou destičkou nebo délku nástroje na snímači nástrojů (G38.2 rychle, pak pomalu)</translation>
+        <source>Probe the work&apos;s zero (Z from a touch plate, X/Y from an edge or a corner) or a tool&apos;s length on the tool sensor (fast then slow G38.2)</source>
+        <translation>Sondovat nulu obrobku (Z dotykovou destičkou, X/Y z hrany nebo rohu) nebo délku nástroje na snímači nástrojů (G38.2 rychle, pak pomalu)</translation>
     </message>
 </context>
 <context>
@@ -4596,6 +4647,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Tool %1 measured on the tool sensor: %2 mm long.</source>
         <translation>Nástroj %1 změřen na snímači nástrojů: délka %2 mm.</translation>
     </message>
+    <message>
+        <source>&amp;Probe work zero…</source>
+        <translation>&amp;Sondovat nulu obrobku…</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -4795,6 +4850,144 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>Stop bits:</source>
         <translation>Stop bity:</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProbeSetupPicture</name>
+    <message>
+        <source>work</source>
+        <translation>obrobek</translation>
+    </message>
+    <message>
+        <source>plate</source>
+        <translation>destička</translation>
+    </message>
+    <message>
+        <source>tool</source>
+        <translation>nástroj</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProbeZeroDialog</name>
+    <message>
+        <source>1. Lay the plate on the work and connect the probe&apos;s clip to the tool.
+2. Jog the tool over the plate, a few mm above it.
+3. Press Probe: the tool goes down until it touches (fast, then slow) and backs off; the work&apos;s top becomes Z 0.</source>
+        <translation>1. Položte destičku na obrobek a připojte svorku sondy k nástroji.
+2. Najeďte nástrojem nad destičku, několik mm nad ni.
+3. Stiskněte Sondovat: nástroj sjede dolů, dokud se nedotkne (rychle, pak pomalu), a odjede; horní plocha obrobku bude Z 0.</translation>
+    </message>
+    <message>
+        <source>1. Jog the tool beside the edge, below the work&apos;s top, within the travel of it.
+2. Choose the direction toward the edge and the tool&apos;s diameter.
+3. Press Probe: the tool moves until it touches and comes back; the edge becomes 0 on that axis.</source>
+        <translation>1. Najeďte nástrojem vedle hrany, pod horní plochu obrobku, v dosahu dráhy.
+2. Zvolte směr k hraně a průměr nástroje.
+3. Stiskněte Sondovat: nástroj jede, dokud se nedotkne, a vrátí se; hrana bude na té ose 0.</translation>
+    </message>
+    <message>
+        <source>1. Jog the tool off the corner diagonally, below the work&apos;s top.
+2. Set the reach: how far to move beside each face (more than the distance to the corner plus the tool&apos;s radius).
+3. Press Probe: X first, then Y; the corner becomes X 0 Y 0.</source>
+        <translation>1. Najeďte nástrojem šikmo mimo roh, pod horní plochu obrobku.
+2. Nastavte přejezd: jak daleko popojet vedle každé stěny (víc než vzdálenost k rohu plus poloměr nástroje).
+3. Stiskněte Sondovat: nejdřív X, pak Y; roh bude X 0 Y 0.</translation>
+    </message>
+    <message>
+        <source>1. Jog the tool into the pocket near its corner, below the top.
+2. Choose the directions toward the two walls.
+3. Press Probe: X first, then Y, both from where the tool stands; the corner becomes X 0 Y 0.</source>
+        <translation>1. Najeďte nástrojem do kapsy blízko jejího rohu, pod horní plochu.
+2. Zvolte směry k oběma stěnám.
+3. Stiskněte Sondovat: nejdřív X, pak Y, obojí z místa, kde nástroj stojí; roh bude X 0 Y 0.</translation>
+    </message>
+    <message>
+        <source>Probing…</source>
+        <translation>Sonduje se…</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>&amp;Zastavit</translation>
+    </message>
+    <message>
+        <source>&amp;Probe</source>
+        <translation>&amp;Sondovat</translation>
+    </message>
+    <message>
+        <source>Nothing was set.</source>
+        <translation>Nic nebylo nastaveno.</translation>
+    </message>
+    <message>
+        <source>%1 is now X %2, Y %3, Z %4 (machine mm of its zero).</source>
+        <translation>%1 je nyní X %2, Y %3, Z %4 (strojní mm své nuly).</translation>
+    </message>
+    <message>
+        <source>Probing stopped: the tool goes back to where it started. Close the dialog when it is there.</source>
+        <translation>Sondování zastaveno: nástroj se vrací tam, kde začal. Dialog zavřete, až tam bude.</translation>
+    </message>
+    <message>
+        <source>Probe work zero</source>
+        <translation>Sondovat nulu obrobku</translation>
+    </message>
+    <message>
+        <source>Z from a touch plate</source>
+        <translation>Z dotykovou destičkou</translation>
+    </message>
+    <message>
+        <source>X from an edge</source>
+        <translation>X z hrany</translation>
+    </message>
+    <message>
+        <source>Y from an edge</source>
+        <translation>Y z hrany</translation>
+    </message>
+    <message>
+        <source>X and Y from an outside corner</source>
+        <translation>X a Y z vnějšího rohu</translation>
+    </message>
+    <message>
+        <source>X and Y from an inside corner</source>
+        <translation>X a Y z vnitřního rohu</translation>
+    </message>
+    <message>
+        <source>What to probe</source>
+        <translation>Co sondovat</translation>
+    </message>
+    <message>
+        <source>X direction toward the work</source>
+        <translation>Směr X k obrobku</translation>
+    </message>
+    <message>
+        <source>Y direction toward the work</source>
+        <translation>Směr Y k obrobku</translation>
+    </message>
+    <message>
+        <source>Plate thickness (mm)</source>
+        <translation>Tloušťka destičky (mm)</translation>
+    </message>
+    <message>
+        <source>Tool diameter (mm)</source>
+        <translation>Průměr nástroje (mm)</translation>
+    </message>
+    <message>
+        <source>Travel at most (mm)</source>
+        <translation>Dráha nejvýše (mm)</translation>
+    </message>
+    <message>
+        <source>Reach beside each face (mm)</source>
+        <translation>Přejezd vedle každé stěny (mm)</translation>
+    </message>
+    <message>
+        <source>Probing feed (mm/min)</source>
+        <translation>Posuv sondování (mm/min)</translation>
+    </message>
+    <message>
+        <source>Back-off before the slow probe (mm)</source>
+        <translation>Odjetí před pomalým sondováním (mm)</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Zavřít</translation>
     </message>
 </context>
 <context>
@@ -7196,6 +7389,18 @@ Volby:
     <message>
         <source>Probing fast then slow needs a retract above 0 mm (%1 given): the tool backs off by it before the slow probe.</source>
         <translation>Sondování rychle a pak pomalu potřebuje odjetí větší než 0 mm (zadáno %1): o ně nástroj odjede před pomalým sondováním.</translation>
+    </message>
+    <message>
+        <source>An edge is probed along X or Y, in the + or - direction.</source>
+        <translation>Hrana se sonduje podél X nebo Y, ve směru + nebo -.</translation>
+    </message>
+    <message>
+        <source>The probe&apos;s travel toward the edge must be above 0 mm (%1 given).</source>
+        <translation>Dráha sondy k hraně musí být větší než 0 mm (zadáno %1).</translation>
+    </message>
+    <message>
+        <source>The probe moved from %1 %2 to %1 %3 without touching the edge: the edge is farther than the travel, or the probe is not connected. Check the probe and where the tool stands (beside the edge, below the work&apos;s top), or probe again with a longer travel.</source>
+        <translation>Sonda dojela z %1 %2 do %1 %3, aniž by se dotkla hrany: hrana je dál, než dovoluje dráha, nebo sonda není připojena. Zkontrolujte sondu a kde nástroj stojí (vedle hrany, pod horní plochou obrobku), nebo sondujte znovu s delší dráhou.</translation>
     </message>
 </context>
 <context>

@@ -70,6 +70,57 @@
     </message>
 </context>
 <context>
+    <name>EdgeCli</name>
+    <message>
+        <source>usage: frezka-cli probe corner --x-direction +|- --y-direction +|- --tool-diameter MM [--reach MM] [--travel MM] [--feed MM/MIN] [--slow-feed MM/MIN] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</source>
+        <translation>usage: frezka-cli probe corner --x-direction +|- --y-direction +|- --tool-diameter MM [--reach MM] [--travel MM] [--feed MM/MIN] [--slow-feed MM/MIN] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</translation>
+    </message>
+    <message>
+        <source>usage: frezka-cli probe edge --axis x|y --direction +|- --tool-diameter MM [--travel MM] [--feed MM/MIN] [--slow-feed MM/MIN] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</source>
+        <translation>usage: frezka-cli probe edge --axis x|y --direction +|- --tool-diameter MM [--travel MM] [--feed MM/MIN] [--slow-feed MM/MIN] [--retract MM] [--port PATH|sim] [--surface SPEC] %1
+</translation>
+    </message>
+    <message>
+        <source>--tool-diameter %1: the diameter of the tool (or the probe&apos;s ball) must be 0 mm or more.</source>
+        <translation>--tool-diameter %1: the diameter of the tool (or the probe&apos;s ball) must be 0 mm or more.</translation>
+    </message>
+    <message>
+        <source>--travel %1: how far the probe may move toward the edge must be above 0 mm.</source>
+        <translation>--travel %1: how far the probe may move toward the edge must be above 0 mm.</translation>
+    </message>
+    <message>
+        <source>--retract %1: the back-off before the slow probe must be above 0 mm.</source>
+        <translation>--retract %1: the back-off before the slow probe must be above 0 mm.</translation>
+    </message>
+    <message>
+        <source>--reach %1: the move beside an outside corner&apos;s face must be 0 mm (an inside corner) or more.</source>
+        <translation>--reach %1: the move beside an outside corner&apos;s face must be 0 mm (an inside corner) or more.</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe %1: %2
+</source>
+        <translation>frezka-cli probe %1: %2
+</translation>
+    </message>
+    <message>
+        <source>%1 is now X %2, Y %3 (machine mm of its zero): the %4 is the work&apos;s zero, with the tool&apos;s radius of %5 mm taken into account. Give the next commands --offset %6.
+</source>
+        <translation>%1 is now X %2, Y %3 (machine mm of its zero): the %4 is the work&apos;s zero, with the tool&apos;s radius of %5 mm taken into account. Give the next commands --offset %6.
+</translation>
+    </message>
+    <message>
+        <source>corner</source>
+        <translation>corner</translation>
+    </message>
+    <message>
+        <source>edge</source>
+        <translation>edge</translation>
+    </message>
+</context>
+<context>
     <name>EmulatorTransport</name>
     <message>
         <source>built-in %1 emulator</source>
@@ -376,12 +427,6 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
 </translation>
     </message>
     <message>
-        <source>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
-</source>
-        <translation>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm)
-</translation>
-    </message>
-    <message>
         <source>--plate %1: the plate&apos;s thickness must be 0 mm or more (0: the tool touches the work itself).</source>
         <translation>--plate %1: the plate&apos;s thickness must be 0 mm or more (0: the tool touches the work itself).</translation>
     </message>
@@ -431,6 +476,12 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>Tool %1 is %2 mm long (tripped at machine Z %3); written to %4.
 </source>
         <translation>Tool %1 is %2 mm long (tripped at machine Z %3); written to %4.
+</translation>
+    </message>
+    <message>
+        <source>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0], warp:Z0,DZDX,DZDY,AMP,PERIOD or block:X0,Y0,X1,Y1,TOP (machine mm)
+</source>
+        <translation>frezka-cli probe: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0], warp:Z0,DZDX,DZDY,AMP,PERIOD or block:X0,Y0,X1,Y1,TOP (machine mm)
 </translation>
     </message>
 </context>
@@ -941,8 +992,8 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>Run a program on each of several units sharing one serial line</translation>
     </message>
     <message>
-        <source>Probe the work&apos;s Z zero from a touch plate, or a tool&apos;s length on the tool sensor (fast then slow G38.2)</source>
-        <translation>Probe the work&apos;s Z zero from a touch plate, or a tool&apos;s length on the tool sensor (fast then slow G38.2)</translation>
+        <source>Probe the work&apos;s zero (Z from a touch plate, X/Y from an edge or a corner) or a tool&apos;s length on the tool sensor (fast then slow G38.2)</source>
+        <translation>Probe the work&apos;s zero (Z from a touch plate, X/Y from an edge or a corner) or a tool&apos;s length on the tool sensor (fast then slow G38.2)</translation>
     </message>
 </context>
 <context>
@@ -4589,6 +4640,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Tool %1 measured on the tool sensor: %2 mm long.</source>
         <translation>Tool %1 measured on the tool sensor: %2 mm long.</translation>
     </message>
+    <message>
+        <source>&amp;Probe work zero…</source>
+        <translation>&amp;Probe work zero…</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -4788,6 +4843,144 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>Stop bits:</source>
         <translation>Stop bits:</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProbeSetupPicture</name>
+    <message>
+        <source>work</source>
+        <translation>work</translation>
+    </message>
+    <message>
+        <source>plate</source>
+        <translation>plate</translation>
+    </message>
+    <message>
+        <source>tool</source>
+        <translation>tool</translation>
+    </message>
+</context>
+<context>
+    <name>frezka::gui::ProbeZeroDialog</name>
+    <message>
+        <source>1. Lay the plate on the work and connect the probe&apos;s clip to the tool.
+2. Jog the tool over the plate, a few mm above it.
+3. Press Probe: the tool goes down until it touches (fast, then slow) and backs off; the work&apos;s top becomes Z 0.</source>
+        <translation>1. Lay the plate on the work and connect the probe&apos;s clip to the tool.
+2. Jog the tool over the plate, a few mm above it.
+3. Press Probe: the tool goes down until it touches (fast, then slow) and backs off; the work&apos;s top becomes Z 0.</translation>
+    </message>
+    <message>
+        <source>1. Jog the tool beside the edge, below the work&apos;s top, within the travel of it.
+2. Choose the direction toward the edge and the tool&apos;s diameter.
+3. Press Probe: the tool moves until it touches and comes back; the edge becomes 0 on that axis.</source>
+        <translation>1. Jog the tool beside the edge, below the work&apos;s top, within the travel of it.
+2. Choose the direction toward the edge and the tool&apos;s diameter.
+3. Press Probe: the tool moves until it touches and comes back; the edge becomes 0 on that axis.</translation>
+    </message>
+    <message>
+        <source>1. Jog the tool off the corner diagonally, below the work&apos;s top.
+2. Set the reach: how far to move beside each face (more than the distance to the corner plus the tool&apos;s radius).
+3. Press Probe: X first, then Y; the corner becomes X 0 Y 0.</source>
+        <translation>1. Jog the tool off the corner diagonally, below the work&apos;s top.
+2. Set the reach: how far to move beside each face (more than the distance to the corner plus the tool&apos;s radius).
+3. Press Probe: X first, then Y; the corner becomes X 0 Y 0.</translation>
+    </message>
+    <message>
+        <source>1. Jog the tool into the pocket near its corner, below the top.
+2. Choose the directions toward the two walls.
+3. Press Probe: X first, then Y, both from where the tool stands; the corner becomes X 0 Y 0.</source>
+        <translation>1. Jog the tool into the pocket near its corner, below the top.
+2. Choose the directions toward the two walls.
+3. Press Probe: X first, then Y, both from where the tool stands; the corner becomes X 0 Y 0.</translation>
+    </message>
+    <message>
+        <source>Probing…</source>
+        <translation>Probing…</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>S&amp;top</translation>
+    </message>
+    <message>
+        <source>&amp;Probe</source>
+        <translation>&amp;Probe</translation>
+    </message>
+    <message>
+        <source>Nothing was set.</source>
+        <translation>Nothing was set.</translation>
+    </message>
+    <message>
+        <source>%1 is now X %2, Y %3, Z %4 (machine mm of its zero).</source>
+        <translation>%1 is now X %2, Y %3, Z %4 (machine mm of its zero).</translation>
+    </message>
+    <message>
+        <source>Probing stopped: the tool goes back to where it started. Close the dialog when it is there.</source>
+        <translation>Probing stopped: the tool goes back to where it started. Close the dialog when it is there.</translation>
+    </message>
+    <message>
+        <source>Probe work zero</source>
+        <translation>Probe work zero</translation>
+    </message>
+    <message>
+        <source>Z from a touch plate</source>
+        <translation>Z from a touch plate</translation>
+    </message>
+    <message>
+        <source>X from an edge</source>
+        <translation>X from an edge</translation>
+    </message>
+    <message>
+        <source>Y from an edge</source>
+        <translation>Y from an edge</translation>
+    </message>
+    <message>
+        <source>X and Y from an outside corner</source>
+        <translation>X and Y from an outside corner</translation>
+    </message>
+    <message>
+        <source>X and Y from an inside corner</source>
+        <translation>X and Y from an inside corner</translation>
+    </message>
+    <message>
+        <source>What to probe</source>
+        <translation>What to probe</translation>
+    </message>
+    <message>
+        <source>X direction toward the work</source>
+        <translation>X direction toward the work</translation>
+    </message>
+    <message>
+        <source>Y direction toward the work</source>
+        <translation>Y direction toward the work</translation>
+    </message>
+    <message>
+        <source>Plate thickness (mm)</source>
+        <translation>Plate thickness (mm)</translation>
+    </message>
+    <message>
+        <source>Tool diameter (mm)</source>
+        <translation>Tool diameter (mm)</translation>
+    </message>
+    <message>
+        <source>Travel at most (mm)</source>
+        <translation>Travel at most (mm)</translation>
+    </message>
+    <message>
+        <source>Reach beside each face (mm)</source>
+        <translation>Reach beside each face (mm)</translation>
+    </message>
+    <message>
+        <source>Probing feed (mm/min)</source>
+        <translation>Probing feed (mm/min)</translation>
+    </message>
+    <message>
+        <source>Back-off before the slow probe (mm)</source>
+        <translation>Back-off before the slow probe (mm)</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Close</translation>
     </message>
 </context>
 <context>
@@ -7183,6 +7376,18 @@ Options:
     <message>
         <source>Probing fast then slow needs a retract above 0 mm (%1 given): the tool backs off by it before the slow probe.</source>
         <translation>Probing fast then slow needs a retract above 0 mm (%1 given): the tool backs off by it before the slow probe.</translation>
+    </message>
+    <message>
+        <source>An edge is probed along X or Y, in the + or - direction.</source>
+        <translation>An edge is probed along X or Y, in the + or - direction.</translation>
+    </message>
+    <message>
+        <source>The probe&apos;s travel toward the edge must be above 0 mm (%1 given).</source>
+        <translation>The probe&apos;s travel toward the edge must be above 0 mm (%1 given).</translation>
+    </message>
+    <message>
+        <source>The probe moved from %1 %2 to %1 %3 without touching the edge: the edge is farther than the travel, or the probe is not connected. Check the probe and where the tool stands (beside the edge, below the work&apos;s top), or probe again with a longer travel.</source>
+        <translation>The probe moved from %1 %2 to %1 %3 without touching the edge: the edge is farther than the travel, or the probe is not connected. Check the probe and where the tool stands (beside the edge, below the work&apos;s top), or probe again with a longer travel.</translation>
     </message>
 </context>
 <context>
