@@ -182,8 +182,10 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
         recoverBlock();
     }
     const bool stopped = !result.errors.empty() && !m_options.collectAllErrors;
-    if (!m_ended && !stopped && !bounded && !result.cancelled && !m_nurbs.empty())
+    if (!m_ended && !stopped && !bounded && !result.cancelled && !m_nurbs.empty()) {
         report({ErrorCode::NurbsNotEnded, m_nurbsLine, 1, std::to_string(m_nurbsLine), {}});
+        m_nurbs.clear(); // not carried into the next text (the console's next line)
+    }
     if (!m_ended && !stopped && !bounded && !result.cancelled) {
         if (!m_frames.empty()) {
             const Frame &f = m_frames.back();
