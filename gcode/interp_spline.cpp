@@ -137,6 +137,21 @@ bool Interpreter::nurbsPoint(const Target &end, Error *error)
     return true;
 }
 
+bool Interpreter::nurbsEndAlone(Error *error) const
+{
+    // Only a new G5.2 may share G5.3's block (rs274ngc's check_g_codes); axis words there would
+    // be taken as a control point of the curve just ended.
+    const int mode1 = m_block.hasG(kGMotion) ? m_block.g[kGMotion] : -1;
+    if (mode1 != -1 && mode1 != 52)
+        return failAt(ErrorCode::NurbsOnlyControlPoints, m_block.gColumn[kGMotion], gName(mode1),
+                      error);
+    for (char c : kAxisLetters) {
+        if (mode1 == -1 && m_block.has(c))
+            return fail(ErrorCode::WordNotUsed, c, std::string(1, char(c - 32)), error);
+    }
+    return true;
+}
+
 bool Interpreter::nurbsEnd(Error *error)
 {
     const std::uint32_t col = m_block.gColumn[kGNonModal];

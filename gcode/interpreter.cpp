@@ -412,16 +412,8 @@ bool Interpreter::checkWords(int motion, Error *error)
         if (incremental)
             return failAt(ErrorCode::G53Incremental, m_block.gColumn[kGNonModal], {}, error);
     }
-    if (mode0 == 53) { // G5.3: only a new G5.2 may share its block (rs274ngc's check_g_codes)
-        const int mode1 = m_block.hasG(kGMotion) ? m_block.g[kGMotion] : -1;
-        if (mode1 != -1 && mode1 != 52)
-            return failAt(ErrorCode::NurbsOnlyControlPoints, m_block.gColumn[kGMotion],
-                          gName(mode1), error);
-        for (char c : kAxisLetters) {
-            if (mode1 == -1 && m_block.has(c))
-                return unused(c);
-        }
-    }
+    if (mode0 == 53 && !nurbsEndAlone(error))
+        return false;
     if (mode0 == 40 && !m_block.has('p'))
         return failAt(ErrorCode::DwellMissingP, m_block.gColumn[kGNonModal], {}, error);
     return true;
@@ -436,8 +428,9 @@ bool Interpreter::executeBlock(Error *error)
         return false;
     if (!checkWords(motion, error))
         return false;
-    if (motion >= 0 && !(m_block.hasG(kGNonModal) && m_block.g[kGNonModal] == 53) &&
-        !nurbsPending(motion, error))
+    // Between G5.2 and G5.3 only control points may move (a G5.3 in the block ends it first).
+    if (!m_nurbs.empty() && motion >= 0 &&
+        !(m_block.hasG(kGNonModal) && m_block.g[kGNonModal] == 53) && !nurbsPending(motion, error))
         return false;
     for (const Assignment &a : m_assignments) {
         if (a.index)

@@ -219,6 +219,7 @@ private:
     bool spline(int motion, const Target &end, Error *error); // G5, G5.1
     bool nurbsPoint(const Target &end, Error *error);         // G5.2 and its control points
     bool nurbsEnd(Error *error);                              // G5.3
+    bool nurbsEndAlone(Error *error) const; // G5.3's block: no other motion, no axis words
     bool splineAllowed(int motion, Error *error) const;
     bool nurbsPending(int motion, Error *error) const; // a motion or M2/M30 before G5.3
     // The curve as feed moves in machine coordinates, the last one ending at endMachine.
