@@ -76,7 +76,8 @@ bool Interpreter::spline(int motion, const Target &end, Error *error)
                           error);
         points.push_back({sx + lengthWord('i'), sy + lengthWord('j'), 1});
     } else {
-        double i = m_splineI, j = m_splineJ;
+        // rs274ngc keeps -P, -Q as written: after G20/G21 they count in the new units.
+        double i = m_splineI * unit(), j = m_splineJ * unit();
         if (b.has('i') != b.has('j'))
             return failAt(ErrorCode::SplineMissingWords, col, name + kDetailSeparator + "I, J",
                           error);
@@ -90,8 +91,8 @@ bool Interpreter::spline(int motion, const Target &end, Error *error)
         const double p = lengthWord('p'), q = lengthWord('q');
         points.push_back({sx + i, sy + j, 1});
         points.push_back({ex + p, ey + q, 1});
-        m_splineI = -p;
-        m_splineJ = -q;
+        m_splineI = -b.get('p');
+        m_splineJ = -b.get('q');
     }
     points.push_back({ex, ey, 1});
     appendSpline(points, unsigned(points.size()), end.machine);

@@ -421,7 +421,7 @@ private:
     CutterComp m_comp;
     // Splines: the NURBS control points since G5.2 (program mm; the first is where it starts),
     // its order and line; G5's first control point when I and J are left out (-P, -Q of the
-    // previous G5, mm: rs274ngc's cycle_i, cycle_j).
+    // previous G5 as written, in the units in force when used: rs274ngc's cycle_i, cycle_j).
     std::vector<SplinePoint> m_nurbs;
     unsigned m_nurbsOrder = 3;
     std::uint32_t m_nurbsLine = 0;

@@ -168,6 +168,18 @@ TEST(Spline, CubicG5IsAKnownCubicAndContinuesSmoothlyWithoutIJ)
                   {{4, 0, 1}, {4 + 4.0 / 3, 3, 1}, {7, 1, 1}, {8, 0, 1}}, 4, 0.002);
 }
 
+TEST(Spline, G5WithoutIJAfterAUnitsChangeTakesTheNumbersInTheNewUnits)
+{
+    // rs274ngc stores the previous G5's -P, -Q as written (cycle_i, cycle_j) and adds them in
+    // the units in force: after G20 the 1 of P-1 is an inch.
+    const Result r =
+        run("G21 F100\nG5 X10 Y0 I1 J1 P-1 Q1\nG20\nG5 X[20/25.4] Y0 P0 Q[-1/25.4]\nM2\n");
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    const auto [first, count] = runOf(r.toolpath, 4);
+    expectFollows(r.toolpath, first, count,
+                  {{10, 0, 1}, {10 + 25.4, -25.4, 1}, {20, -1, 1}, {20, 0, 1}}, 4, 0.002);
+}
+
 TEST(Spline, NurbsQuarterCircleWithWeights)
 {
     // The rational quadratic with weights 1, sqrt(2)/2, 1 over (10,0) (10,10) (0,10) is the
