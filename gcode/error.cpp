@@ -351,10 +351,11 @@ constexpr ErrorInfo kErrors[] = {
                        "Give X, Y and the weight P on every line from G5.2 to G5.3; P alone is "
                        "allowed only on the G5.2 line, as the start point's weight.")},
     {ErrorCode::NurbsBadWeight, "NurbsBadWeight",
-     QT_TRANSLATE_NOOP("frezka::gcode", "A NURBS control point needs a positive weight P (%1)"),
      QT_TRANSLATE_NOOP("frezka::gcode",
-                       "Give P greater than 0 on every control point (P1 for an ordinary "
-                       "B-spline point).")},
+                       "A NURBS control point needs a weight P from 0.000001 to 1000000 (%1)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Give P on every control point (P1 for an ordinary B-spline point; "
+                       "LinuxCNC takes -1 when it is missing).")},
     {ErrorCode::NurbsBadOrder, "NurbsBadOrder",
      QT_TRANSLATE_NOOP("frezka::gcode", "NURBS order L%1 is not supported"),
      QT_TRANSLATE_NOOP("frezka::gcode",

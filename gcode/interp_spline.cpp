@@ -27,6 +27,8 @@ std::string number(double v) // a word's value as the user wrote it, near enough
     return buf;
 }
 
+constexpr double kMinWeight = 1e-6, kMaxWeight = 1e6;
+
 } // namespace
 
 bool Interpreter::splineAllowed(int motion, Error *error) const
@@ -113,12 +115,12 @@ bool Interpreter::nurbsPoint(const Target &end, Error *error)
                     error);
     if (!xy && b.has('p') && !m_nurbs.empty())
         return fail(ErrorCode::NurbsMissingXy, 'p', "X, Y", error);
-    if (xy && (!b.has('p') || b.get('p') <= 0)) {
-        if (!b.has('p'))
-            return fail(ErrorCode::NurbsBadWeight, 'x', "-", error);
-        return fail(ErrorCode::NurbsBadWeight, 'p', number(b.get('p')), error);
-    }
-    if (!xy && b.has('p') && b.get('p') <= 0)
+    // A weight: LinuxCNC wants it positive; bounded here so that the curve's denominators
+    // stay far from 0 and from overflow.
+    const auto badWeight = [](double w) { return !(w >= kMinWeight && w <= kMaxWeight); };
+    if (xy && !b.has('p'))
+        return fail(ErrorCode::NurbsBadWeight, 'x', "-", error);
+    if (b.has('p') && badWeight(b.get('p')))
         return fail(ErrorCode::NurbsBadWeight, 'p', number(b.get('p')), error);
     unsigned order = m_nurbs.empty() ? 3 : m_nurbsOrder;
     if (b.has('l')) {

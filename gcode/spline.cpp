@@ -22,7 +22,7 @@ namespace frezka::gcode {
 namespace {
 
 constexpr int kPiecesPerSpan = 4;
-constexpr int kMaxDepth = 24; // 4 pieces x 2^24 a span: far below any sane tolerance
+constexpr int kMaxDepth = 14; // at most 4 x 2^14 chords a span (a 1 m circle needs ~2 000)
 
 double knot(std::size_t i, std::size_t n, unsigned k)
 {

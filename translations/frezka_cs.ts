@@ -2952,14 +2952,6 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <translation>Na každém řádku od G5.2 do G5.3 zadejte X, Y a váhu P; samotné P je dovoleno jen na řádku G5.2, jako váha počátečního bodu.</translation>
     </message>
     <message>
-        <source>A NURBS control point needs a positive weight P (%1)</source>
-        <translation>Řídicí bod NURBS potřebuje kladnou váhu P (%1)</translation>
-    </message>
-    <message>
-        <source>Give P greater than 0 on every control point (P1 for an ordinary B-spline point).</source>
-        <translation>U každého řídicího bodu zadejte P větší než 0 (P1 pro běžný bod B-spline).</translation>
-    </message>
-    <message>
         <source>NURBS order L%1 is not supported</source>
         <translation>Řád NURBS L%1 není podporován</translation>
     </message>
@@ -3006,6 +2998,14 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Switch to G94 and give the feed with F before G5.2 (LinuxCNC does not define how long a NURBS takes in G93).</source>
         <translation>Přepněte na G94 a před G5.2 zadejte posuv pomocí F (LinuxCNC neurčuje, jak dlouho NURBS v G93 trvá).</translation>
+    </message>
+    <message>
+        <source>A NURBS control point needs a weight P from 0.000001 to 1000000 (%1)</source>
+        <translation>Řídicí bod NURBS potřebuje váhu P od 0.000001 do 1000000 (%1)</translation>
+    </message>
+    <message>
+        <source>Give P on every control point (P1 for an ordinary B-spline point; LinuxCNC takes -1 when it is missing).</source>
+        <translation>Zadejte P u každého řídicího bodu (P1 pro běžný bod B-spline; LinuxCNC chybějící váhu bere jako -1).</translation>
     </message>
 </context>
 <context>

@@ -2949,14 +2949,6 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <translation>Give X, Y and the weight P on every line from G5.2 to G5.3; P alone is allowed only on the G5.2 line, as the start point&apos;s weight.</translation>
     </message>
     <message>
-        <source>A NURBS control point needs a positive weight P (%1)</source>
-        <translation>A NURBS control point needs a positive weight P (%1)</translation>
-    </message>
-    <message>
-        <source>Give P greater than 0 on every control point (P1 for an ordinary B-spline point).</source>
-        <translation>Give P greater than 0 on every control point (P1 for an ordinary B-spline point).</translation>
-    </message>
-    <message>
         <source>NURBS order L%1 is not supported</source>
         <translation>NURBS order L%1 is not supported</translation>
     </message>
@@ -3003,6 +2995,14 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Switch to G94 and give the feed with F before G5.2 (LinuxCNC does not define how long a NURBS takes in G93).</source>
         <translation>Switch to G94 and give the feed with F before G5.2 (LinuxCNC does not define how long a NURBS takes in G93).</translation>
+    </message>
+    <message>
+        <source>A NURBS control point needs a weight P from 0.000001 to 1000000 (%1)</source>
+        <translation>A NURBS control point needs a weight P from 0.000001 to 1000000 (%1)</translation>
+    </message>
+    <message>
+        <source>Give P on every control point (P1 for an ordinary B-spline point; LinuxCNC takes -1 when it is missing).</source>
+        <translation>Give P on every control point (P1 for an ordinary B-spline point; LinuxCNC takes -1 when it is missing).</translation>
     </message>
 </context>
 <context>

@@ -208,6 +208,17 @@ TEST(Spline, NurbsOfHigherOrderMatchesLinuxCncsBasis)
                   0.002);
 }
 
+TEST(Spline, AHugeCurveHasABoundedNumberOfChords)
+{
+    // 4 x 2^14 chords at most a knot span, whatever the size and the tolerance.
+    Options fine;
+    fine.splineToleranceMm = 1e-9;
+    const Result r = run("G21 F100\nG5.1 X100000000000 Y0 I50000000000 J100000000000\nM2\n", fine);
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    EXPECT_LE(runOf(r.toolpath, 2).second, 4u << 14);
+    EXPECT_EQ(r.toolpath.end(r.toolpath.size() - 2).x, 1e11);
+}
+
 TEST(Spline, ToleranceIsTheOptionAndInchesAndOffsetsApply)
 {
     Options coarse;
@@ -272,6 +283,9 @@ TEST(Spline, LinuxCncsErrorsWithLineAndColumn)
     expectError("F100\nG5.2 X1 Y1 P1 L4\nX2 Y0 P1\nG5.3\nM2\n", E::NurbsTooFewPoints, 4, 1);
     expectError("F100\nG5.2 X1 Y1 L3\nM2\n", E::NurbsBadWeight, 2, 6);
     expectError("F100\nG5.2 X1 Y1 P0\nM2\n", E::NurbsBadWeight, 2, 12);
+    expectError("F100\nG5.2 X1 Y1 P[1/10000000]\nM2\n", E::NurbsBadWeight, 2, 12);
+    expectError("F100\nG5.2 X1 Y1 P2000000\nM2\n", E::NurbsBadWeight, 2, 12);
+    expectError("F100\nG5.2 P-1\nX1 Y1 P1\nM2\n", E::NurbsBadWeight, 2, 6);
     expectError("F100\nG5.2 X1 P1\nM2\n", E::NurbsMissingXy, 2, 6);
     expectError("F100\nG5.2 X1 Y1 P1\nP2\nG5.3\nM2\n", E::WordNotUsed, 3, 1);
     expectError("F100\nG5.2 X1 Y1 P1 L2.5\nM2\n", E::NurbsBadOrder, 2, 15);
