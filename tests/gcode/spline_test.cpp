@@ -244,6 +244,31 @@ TEST(Spline, ToleranceIsTheOptionAndInchesAndOffsetsApply)
     EXPECT_NEAR(inch.toolpath.end(first + count - 1).x, 110, 1e-12);
 }
 
+TEST(Spline, ARotatedSystemTurnsTheCurve)
+{
+    // G10 L2 R90: program (x, y) is machine (-y, x) (+ the system's origin).
+    const char *prog = "G10 L2 P1 X5 Y7 R90\nG21 F100\nG0 X0 Y0\nG5.1 X10 Y0 I5 J10\n"
+                       "G5.2 X10 Y10 P1\nX0 Y10 P1\nG5.3\nG91 G1 X1\nM2\n";
+    const Result r = run(prog);
+    ASSERT_TRUE(r.ok()) << englishMessage(r.errors[0]);
+    const auto [first, count] = runOf(r.toolpath, 4);
+    ASSERT_GT(count, 20u);
+    for (std::size_t i = first; i < first + count; ++i) {
+        const Point4 p = r.toolpath.end(i);
+        const double x = p.y - 7, y = -(p.x - 5);
+        EXPECT_NEAR(y, 2 * x - x * x / 5, 1e-9);
+    }
+    const auto [nFirst, nCount] = runOf(r.toolpath, 7);
+    EXPECT_NEAR(r.toolpath.end(nFirst + nCount - 1).x, 5 - 10, 1e-9);
+    EXPECT_NEAR(r.toolpath.end(nFirst + nCount - 1).y, 7 + 0, 1e-9);
+    if (!frezka::gcode::test::rs274Path().empty()) { // the G91 move after it starts there
+        QTemporaryDir dir;
+        const std::string file = dir.filePath("r.ngc").toStdString();
+        std::ofstream(file) << prog;
+        EXPECT_TRUE(frezka::gcode::test::matchesRs274(file));
+    }
+}
+
 TEST(Spline, InverseTimeTakesTheWholeSplineInOneOverF)
 {
     const Result r = run("G21 G93\nG5.1 X10 Y0 I5 J10 F2\nM2\n");
