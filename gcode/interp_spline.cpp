@@ -53,14 +53,16 @@ bool Interpreter::splineAllowed(int motion, Error *error) const
     return true;
 }
 
-bool Interpreter::nurbsPending(int motion, Error *error) const
+bool Interpreter::nurbsPending(int motion, Error *error)
 {
     if (m_nurbs.empty() || motion == 52)
         return true;
     const std::uint32_t col = m_block.hasG(kGMotion) ? m_block.gColumn[kGMotion]
                               : m_block.hasM(kMStop) ? m_block.mColumn[kMStop]
                                                      : 0;
-    return failAt(ErrorCode::NurbsNotEnded, col, std::to_string(m_nurbsLine), error);
+    failAt(ErrorCode::NurbsNotEnded, col, std::to_string(m_nurbsLine), error);
+    m_nurbs.clear(); // check mode goes on without the curve: no follow-on errors
+    return false;
 }
 
 bool Interpreter::spline(int motion, const Target &end, Error *error)
@@ -160,11 +162,14 @@ bool Interpreter::nurbsEnd(Error *error)
     const std::uint32_t col = m_block.gColumn[kGNonModal];
     if (m_motion != 52 || m_nurbs.empty())
         return failAt(ErrorCode::NurbsNotStarted, col, {}, error);
-    if (m_nurbs.size() < m_nurbsOrder)
-        return failAt(ErrorCode::NurbsTooFewPoints, col,
-                      std::to_string(m_nurbs.size()) + kDetailSeparator +
-                          std::to_string(m_nurbsOrder),
-                      error);
+    if (m_nurbs.size() < m_nurbsOrder) {
+        failAt(ErrorCode::NurbsTooFewPoints, col,
+               std::to_string(m_nurbs.size()) + kDetailSeparator + std::to_string(m_nurbsOrder),
+               error);
+        m_nurbs.clear(); // the curve is dropped: check mode goes on without follow-on errors
+        m_motion = 800;
+        return false;
+    }
     checkFeedUnits();
     m_prog.x = m_nurbs.back().x;
     m_prog.y = m_nurbs.back().y;

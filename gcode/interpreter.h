@@ -221,7 +221,8 @@ private:
     bool nurbsEnd(Error *error);                              // G5.3
     bool nurbsEndAlone(Error *error) const; // G5.3's block: no other motion, no axis words
     bool splineAllowed(int motion, Error *error) const;
-    bool nurbsPending(int motion, Error *error) const; // a motion or M2/M30 before G5.3
+    // A motion or M2/M30 before G5.3: an error, and the curve is dropped (reported once).
+    bool nurbsPending(int motion, Error *error);
     // The curve as feed moves in machine coordinates, the last one ending at endMachine.
     void appendSpline(const std::vector<SplinePoint> &points, unsigned order,
                       const Point4 &endMachine);

@@ -338,6 +338,23 @@ TEST(Spline, ANurbsNotEndedByG53IsAnError)
     EXPECT_EQ(next.toolpath.end(next.toolpath.size() - 2), (Point4{4, 0, 0, 0}));
 }
 
+TEST(Spline, CheckModeReportsABadCurveOnce)
+{
+    Options check;
+    check.collectAllErrors = true;
+    const Result notEnded =
+        run("F100\nG5.2 X1 Y1 P1\nX2 Y0 P1\nG1 X5\nG1 X6\nG0 X7\nG2 X8 R1\nM2\n", check);
+    ASSERT_EQ(notEnded.errors.size(), 1u) << englishMessage(notEnded.errors.back());
+    EXPECT_EQ(notEnded.errors[0].code, ErrorCode::NurbsNotEnded);
+    EXPECT_EQ(notEnded.errors[0].line, 4u);
+    const Result tooFew =
+        run("F100\nG5.2 X1 Y1 P1 L4\nX2 Y0 P1\nG5.3\nG1 X5\nX6\nG5.3\nM2\n", check);
+    ASSERT_EQ(tooFew.errors.size(), 2u) << englishMessage(tooFew.errors.back());
+    EXPECT_EQ(tooFew.errors[0].code, ErrorCode::NurbsTooFewPoints);
+    EXPECT_EQ(tooFew.errors[1].code, ErrorCode::NurbsNotStarted); // line 7, a real one
+    EXPECT_EQ(tooFew.errors[1].line, 7u);
+}
+
 TEST(Spline, SameMotionsAsRs274)
 {
     if (frezka::gcode::test::rs274Path().empty())
