@@ -28,6 +28,9 @@ int gGroup(int code10, bool *supported, const char **reason)
     case 10:
     case 20:
     case 30:
+    case 50:
+    case 51:
+    case 52:
     case 382:
     case 383:
     case 384:
@@ -41,6 +44,7 @@ int gGroup(int code10, bool *supported, const char **reason)
     case 890:
         return kGMotion;
     case 40:
+    case 53: // G5.3 ends a NURBS: group 0 in LinuxCNC
     case 100:
     case 280:
     case 281:
@@ -99,11 +103,6 @@ int gGroup(int code10, bool *supported, const char **reason)
     case 970:
         return kGSpindleMode;
     // Known to LinuxCNC, refused by Frezka.
-    case 50:
-    case 51:
-    case 52:
-    case 53:
-        return refuse(kGMotion, "splines");
     case 330:
     case 331:
         return refuse(kGMotion, "spindle-synchronized motion");

@@ -329,6 +329,63 @@ constexpr ErrorInfo kErrors[] = {
      QT_TRANSLATE_NOOP("frezka::gcode", "The move just after G40 must be straight, not an arc"),
      QT_TRANSLATE_NOOP("frezka::gcode",
                        "Add a straight move (G0 or G1) after G40, before the arc.")},
+    {ErrorCode::SplinePlane, "SplinePlane",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1: splines work only in the XY plane (G17)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Select G17 before the spline, as LinuxCNC requires, or re-post the curve "
+                       "as arcs or lines in its plane.")},
+    {ErrorCode::SplineAxisWord, "SplineAxisWord",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 cannot move %2: a spline moves X and Y only"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Move Z or A in a G1 block of its own before or after the spline.")},
+    {ErrorCode::SplineMissingWords, "SplineMissingWords",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 needs %2"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "G5.1 X Y I J: I J is the control point, relative to the start. G5 X Y I "
+                       "J P Q: I J is the first control point, relative to the start (leave both "
+                       "out after a G5 to continue it smoothly), P Q the second, relative to the "
+                       "end.")},
+    {ErrorCode::NurbsMissingXy, "NurbsMissingXy",
+     QT_TRANSLATE_NOOP("frezka::gcode", "A NURBS control point needs both X and Y (%1)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Give X, Y and the weight P on every line from G5.2 to G5.3; P alone is "
+                       "allowed only on the G5.2 line, as the start point's weight.")},
+    {ErrorCode::NurbsBadWeight, "NurbsBadWeight",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "A NURBS control point needs a weight P from 0.000001 to 1000000 (%1)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Give P on every control point (P1 for an ordinary B-spline point; "
+                       "LinuxCNC takes -1 when it is missing).")},
+    {ErrorCode::NurbsBadOrder, "NurbsBadOrder",
+     QT_TRANSLATE_NOOP("frezka::gcode", "NURBS order L%1 is not supported"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Give a whole L from 3 (quadratic, also when L is left out) to 10; L4 "
+                       "is cubic.")},
+    {ErrorCode::NurbsTooFewPoints, "NurbsTooFewPoints",
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "The NURBS has %1 control points, fewer than its order L%2"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Give at least as many control points (the start point counts) as the "
+                       "order L before G5.3, or a lower L.")},
+    {ErrorCode::NurbsNotStarted, "NurbsNotStarted",
+     QT_TRANSLATE_NOOP("frezka::gcode", "G5.3 without G5.2 first"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Start the control points with G5.2 X Y P L, or remove this G5.3.")},
+    {ErrorCode::NurbsNotEnded, "NurbsNotEnded",
+     QT_TRANSLATE_NOOP("frezka::gcode", "The NURBS started on line %1 is not ended by G5.3"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "End its control points with G5.3 before another motion or the program "
+                       "end (LinuxCNC would drop the curve without cutting it).")},
+    {ErrorCode::NurbsOnlyControlPoints, "NurbsOnlyControlPoints",
+     QT_TRANSLATE_NOOP("frezka::gcode", "%1 in the block of G5.3"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Between G5.2 and G5.3 only further G5.2 control points may come; put "
+                       "other motions on a line of their own after G5.3.")},
+    {ErrorCode::NurbsInverseTime, "NurbsInverseTime",
+     QT_TRANSLATE_NOOP("frezka::gcode", "A G5.2 NURBS in inverse time mode (G93)"),
+     QT_TRANSLATE_NOOP("frezka::gcode",
+                       "Switch to G94 and give the feed with F before G5.2 (LinuxCNC does not "
+                       "define how long a NURBS takes in G93).")},
     {ErrorCode::UnclosedBracket, "UnclosedBracket",
      QT_TRANSLATE_NOOP("frezka::gcode", "Expression is not closed"),
      QT_TRANSLATE_NOOP("frezka::gcode", "Add the missing ']'.")},

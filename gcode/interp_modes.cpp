@@ -162,6 +162,8 @@ bool Interpreter::executeNonModal(Error *error)
         return true;
     const int g = m_block.g[kGNonModal];
     switch (g) {
+    case 53:
+        return nurbsEnd(error);
     case 100:
         return setOffsets(error);
     case 280:
@@ -291,7 +293,8 @@ bool Interpreter::executeStops(Error *error)
         return true;
     const int m = m_block.m[kMStop];
     // The queued move ends where it is; M2 and M30 turn the compensation off.
-    if (!compFlushHere(error) || ((m == 2 || m == 30) && !compOff(error)))
+    if (((m == 2 || m == 30) && !nurbsPending(-1, error)) || !compFlushHere(error) ||
+        ((m == 2 || m == 30) && !compOff(error)))
         return false;
     if (m == 0) {
         event(EventKind::Pause);

@@ -135,6 +135,10 @@ bool Interpreter::executeMotion(int motion, Error *error)
         ok = arc(motion, targetOf(false), error);
     else if (motion >= 382 && motion <= 385)
         ok = probe(motion, targetOf(false), error);
+    else if (motion == 50 || motion == 51)
+        ok = spline(motion, targetOf(false), error);
+    else if (motion == 52)
+        ok = nurbsPoint(targetOf(false), error);
     else
         ok = cycle(motion, error);
     if (ok)

@@ -182,6 +182,10 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
         recoverBlock();
     }
     const bool stopped = !result.errors.empty() && !m_options.collectAllErrors;
+    if (!m_ended && !stopped && !bounded && !result.cancelled && !m_nurbs.empty()) {
+        report({ErrorCode::NurbsNotEnded, m_nurbsLine, 1, std::to_string(m_nurbsLine), {}});
+        m_nurbs.clear(); // not carried into the next text (the console's next line)
+    }
     if (!m_ended && !stopped && !bounded && !result.cancelled) {
         if (!m_frames.empty()) {
             const Frame &f = m_frames.back();
@@ -377,20 +381,22 @@ bool Interpreter::checkWords(int motion, Error *error)
     const bool toolG10 = mode0 == 100 && (l == 1 || l == 10 || l == 11);
     const int mode8 = m_block.hasG(kGToolLength) ? m_block.g[kGToolLength] : -1;
     const bool m61 = m_block.hasM(kMToolChange) && m_block.m[kMToolChange] == 61;
+    const bool ijSpline = motion == 50 || motion == 51;
     for (char c : {'i', 'j', 'k'}) {
-        if (m_block.has(c) && !arcMove && !(toolG10 && c != 'k'))
+        if (m_block.has(c) && !arcMove && !((toolG10 || ijSpline) && c != 'k'))
             return unused(c);
     }
     // G10 L2 (and L20, which refuses it as rs274 does) take R, the system's rotation.
     if (m_block.has('r') && !arcMove && !cycleMove && !toolG10 && mode0 != 100)
         return unused('r');
-    if (m_block.has('l') && !cycleMove && mode0 != 100)
+    if (m_block.has('l') && !cycleMove && mode0 != 100 && motion != 52)
         return unused('l');
     const bool g64 = m_block.hasG(kGPathControl) && m_block.g[kGPathControl] == 640;
-    if (m_block.has('p') &&
-        !(mode0 == 40 || mode0 == 100 || g64 || arcMove || motion == 820 || motion == 890))
+    if (m_block.has('p') && !(mode0 == 40 || mode0 == 100 || g64 || arcMove || motion == 820 ||
+                              motion == 890 || motion == 50 || motion == 52))
         return unused('p');
-    if (m_block.has('q') && !(g64 || motion == 730 || motion == 830 || toolG10 || m61))
+    if (m_block.has('q') &&
+        !(g64 || motion == 730 || motion == 830 || toolG10 || m61 || motion == 50))
         return unused('q');
     if (m_block.has('h') && mode8 != 430 && mode8 != 432)
         return unused('h');
@@ -406,6 +412,8 @@ bool Interpreter::checkWords(int motion, Error *error)
         if (incremental)
             return failAt(ErrorCode::G53Incremental, m_block.gColumn[kGNonModal], {}, error);
     }
+    if (mode0 == 53 && !nurbsEndAlone(error))
+        return false;
     if (mode0 == 40 && !m_block.has('p'))
         return failAt(ErrorCode::DwellMissingP, m_block.gColumn[kGNonModal], {}, error);
     return true;
@@ -419,6 +427,10 @@ bool Interpreter::executeBlock(Error *error)
     if (motion == -2)
         return false;
     if (!checkWords(motion, error))
+        return false;
+    // Between G5.2 and G5.3 only control points may move (a G5.3 in the block ends it first).
+    if (!m_nurbs.empty() && motion >= 0 &&
+        !(m_block.hasG(kGNonModal) && m_block.g[kGNonModal] == 53) && !nurbsPending(motion, error))
         return false;
     for (const Assignment &a : m_assignments) {
         if (a.index)

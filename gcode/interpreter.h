@@ -18,6 +18,7 @@
 #include "gcode/linestate.h"
 #include "gcode/parameters.h"
 #include "gcode/parser.h"
+#include "gcode/spline.h"
 #include "gcode/toolpath.h"
 #include "gcode/tooltable.h"
 
@@ -70,6 +71,9 @@ struct Options
     // #<_ini[section]name> values (LinuxCNC's INI_VARS), keyed "section]name" in lower case
     // (gcode/linuxcncini.h reads them from a LinuxCNC INI file); read-only to the program.
     std::map<std::string, double> iniValues;
+    // Splines (G5, G5.1, G5.2/G5.3) are cut as chords no farther than this from the curve (the
+    // machine profile's motion.chordToleranceMm, which arcs are chorded with too).
+    double splineToleranceMm = 0.002;
     // State at the start of the program (added for the GUI: persisted work offsets and the
     // machine position the program starts from).
     std::array<std::array<double, 4>, 9> workOffsetsMm{}; // G54..G59.3, machine mm (#5221..)
@@ -211,6 +215,17 @@ private:
     void cycleBody(int motion, double aa, double bb, double r, double clear, double cc,
                    double dwell, double peck);
     double feedFor(double lengthMm) const;
+    // Splines (interp_spline.cpp).
+    bool spline(int motion, const Target &end, Error *error); // G5, G5.1
+    bool nurbsPoint(const Target &end, Error *error);         // G5.2 and its control points
+    bool nurbsEnd(Error *error);                              // G5.3
+    bool nurbsEndAlone(Error *error) const; // G5.3's block: no other motion, no axis words
+    bool splineAllowed(int motion, Error *error) const;
+    // A motion or M2/M30 before G5.3: an error, and the curve is dropped (reported once).
+    bool nurbsPending(int motion, Error *error);
+    // The curve as feed moves in machine coordinates, the last one ending at endMachine.
+    void appendSpline(const std::vector<SplinePoint> &points, unsigned order,
+                      const Point4 &endMachine);
     void event(EventKind kind, double value = 0, double p = 0, double q = 0);
 
     // Cutter radius compensation (interp_comp.cpp).
@@ -405,6 +420,13 @@ private:
     // Cutter radius compensation; while it moves the path, m_pos is the tool's (compensated)
     // position and m_prog the programmed point (rs274ngc's current_x and program_x).
     CutterComp m_comp;
+    // Splines: the NURBS control points since G5.2 (program mm; the first is where it starts),
+    // its order and line; G5's first control point when I and J are left out (-P, -Q of the
+    // previous G5 as written, in the units in force when used: rs274ngc's cycle_i, cycle_j).
+    std::vector<SplinePoint> m_nurbs;
+    unsigned m_nurbsOrder = 3;
+    std::uint32_t m_nurbsLine = 0;
+    double m_splineI = 0, m_splineJ = 0;
     Point4 m_probe; // #5061.. (program coordinates, mm)
     bool m_probed = false;
 };

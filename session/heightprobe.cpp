@@ -310,6 +310,7 @@ bool HeightProbe::runText(const QString &text)
     const driver::MachineState &s = m_link.state();
     request.startMm = s.positionMm;
     request.limits = m_config.program;
+    request.splineToleranceMm = m_config.motion.chordToleranceMm;
     const InterpretOutcome interpreted = interpretProgram(request);
     PlanOutcome plan;
     if (interpreted.errors.empty() && interpreted.toolpath)

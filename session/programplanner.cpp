@@ -26,6 +26,7 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     options.toolTable = req.toolTable;
     options.programDirectory = req.programDirectory;
     options.subroutinePath = req.subroutinePath;
+    options.splineToleranceMm = req.splineToleranceMm;
     options.maxBlocks = std::uint64_t(std::max(1, req.limits.maxLinesExecuted));
     options.maxMoves = std::uint64_t(std::max(1, req.limits.maxMoves));
     options.cancel = req.cancel;

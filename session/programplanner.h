@@ -54,6 +54,9 @@ struct InterpretRequest
     // program.subroutinePath folders (machine::subroutineFolders).
     std::string programDirectory;
     std::vector<std::string> subroutinePath;
+    // Splines (G5, G5.1, G5.2) are cut as chords within this of the curve: the profile's
+    // motion.chordToleranceMm, the tolerance arcs are chorded with.
+    double splineToleranceMm = 0.002;
 };
 
 struct InterpretOutcome

@@ -128,6 +128,8 @@ InterpretRequest interpretRequest(const LoadJob &job, const QByteArray &data,
     req.programDirectory = QFileInfo(job.path).absolutePath().toStdString();
     req.subroutinePath = job.subroutinePath;
     req.limits = job.profile ? job.profile->program : machine::ProgramConfig{};
+    if (job.profile)
+        req.splineToleranceMm = job.profile->motion.chordToleranceMm;
     return req;
 }
 

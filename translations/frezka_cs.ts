@@ -3045,6 +3045,94 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
         <source>A file name.ngc found for o&lt;name&gt; call must define o&lt;name&gt; sub ... o&lt;name&gt; endsub; rename the file or fix its sub line.</source>
         <translation>Soubor název.ngc nalezený pro o&lt;název&gt; call musí definovat o&lt;název&gt; sub ... o&lt;název&gt; endsub; soubor přejmenujte, nebo opravte jeho řádek sub.</translation>
     </message>
+    <message>
+        <source>%1: splines work only in the XY plane (G17)</source>
+        <translation>%1: spline funguje jen v rovině XY (G17)</translation>
+    </message>
+    <message>
+        <source>Select G17 before the spline, as LinuxCNC requires, or re-post the curve as arcs or lines in its plane.</source>
+        <translation>Před spline zvolte G17, jak to vyžaduje LinuxCNC, nebo křivku nechte v CAM znovu vygenerovat jako oblouky či úsečky v její rovině.</translation>
+    </message>
+    <message>
+        <source>%1 cannot move %2: a spline moves X and Y only</source>
+        <translation>%1 nemůže pohybovat osou %2: spline pohybuje jen X a Y</translation>
+    </message>
+    <message>
+        <source>Move Z or A in a G1 block of its own before or after the spline.</source>
+        <translation>Pohyb Z nebo A zadejte v samostatném bloku G1 před spline nebo za ním.</translation>
+    </message>
+    <message>
+        <source>%1 needs %2</source>
+        <translation>%1 potřebuje %2</translation>
+    </message>
+    <message>
+        <source>G5.1 X Y I J: I J is the control point, relative to the start. G5 X Y I J P Q: I J is the first control point, relative to the start (leave both out after a G5 to continue it smoothly), P Q the second, relative to the end.</source>
+        <translation>G5.1 X Y I J: I J je řídicí bod, vztažený k začátku. G5 X Y I J P Q: I J je první řídicí bod, vztažený k začátku (po G5 je obě můžete vynechat a křivka plynule naváže), P Q druhý, vztažený ke konci.</translation>
+    </message>
+    <message>
+        <source>A NURBS control point needs both X and Y (%1)</source>
+        <translation>Řídicí bod NURBS potřebuje X i Y (%1)</translation>
+    </message>
+    <message>
+        <source>Give X, Y and the weight P on every line from G5.2 to G5.3; P alone is allowed only on the G5.2 line, as the start point&apos;s weight.</source>
+        <translation>Na každém řádku od G5.2 do G5.3 zadejte X, Y a váhu P; samotné P je dovoleno jen na řádku G5.2, jako váha počátečního bodu.</translation>
+    </message>
+    <message>
+        <source>NURBS order L%1 is not supported</source>
+        <translation>Řád NURBS L%1 není podporován</translation>
+    </message>
+    <message>
+        <source>Give a whole L from 3 (quadratic, also when L is left out) to 10; L4 is cubic.</source>
+        <translation>Zadejte celé L od 3 (kvadratická, platí i bez L) do 10; L4 je kubická.</translation>
+    </message>
+    <message>
+        <source>The NURBS has %1 control points, fewer than its order L%2</source>
+        <translation>NURBS má %1 řídicích bodů, méně než je její řád L%2</translation>
+    </message>
+    <message>
+        <source>Give at least as many control points (the start point counts) as the order L before G5.3, or a lower L.</source>
+        <translation>Před G5.3 zadejte alespoň tolik řídicích bodů (počáteční bod se počítá), kolik je řád L, nebo zadejte nižší L.</translation>
+    </message>
+    <message>
+        <source>G5.3 without G5.2 first</source>
+        <translation>G5.3 bez předchozího G5.2</translation>
+    </message>
+    <message>
+        <source>Start the control points with G5.2 X Y P L, or remove this G5.3.</source>
+        <translation>Řídicí body začněte pomocí G5.2 X Y P L, nebo toto G5.3 odstraňte.</translation>
+    </message>
+    <message>
+        <source>The NURBS started on line %1 is not ended by G5.3</source>
+        <translation>NURBS začatá na řádku %1 není ukončena pomocí G5.3</translation>
+    </message>
+    <message>
+        <source>End its control points with G5.3 before another motion or the program end (LinuxCNC would drop the curve without cutting it).</source>
+        <translation>Její řídicí body ukončete pomocí G5.3 před dalším pohybem nebo koncem programu (LinuxCNC by křivku zahodil a neobrobil).</translation>
+    </message>
+    <message>
+        <source>%1 in the block of G5.3</source>
+        <translation>%1 v bloku s G5.3</translation>
+    </message>
+    <message>
+        <source>Between G5.2 and G5.3 only further G5.2 control points may come; put other motions on a line of their own after G5.3.</source>
+        <translation>Mezi G5.2 a G5.3 smějí být jen další řídicí body G5.2; ostatní pohyby napište na samostatný řádek za G5.3.</translation>
+    </message>
+    <message>
+        <source>A G5.2 NURBS in inverse time mode (G93)</source>
+        <translation>NURBS G5.2 v režimu inverzního času (G93)</translation>
+    </message>
+    <message>
+        <source>Switch to G94 and give the feed with F before G5.2 (LinuxCNC does not define how long a NURBS takes in G93).</source>
+        <translation>Přepněte na G94 a před G5.2 zadejte posuv pomocí F (LinuxCNC neurčuje, jak dlouho NURBS v G93 trvá).</translation>
+    </message>
+    <message>
+        <source>A NURBS control point needs a weight P from 0.000001 to 1000000 (%1)</source>
+        <translation>Řídicí bod NURBS potřebuje váhu P od 0.000001 do 1000000 (%1)</translation>
+    </message>
+    <message>
+        <source>Give P on every control point (P1 for an ordinary B-spline point; LinuxCNC takes -1 when it is missing).</source>
+        <translation>Zadejte P u každého řídicího bodu (P1 pro běžný bod B-spline; LinuxCNC chybějící váhu bere jako -1).</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode::HeightMap</name>

@@ -3042,6 +3042,94 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
         <source>A file name.ngc found for o&lt;name&gt; call must define o&lt;name&gt; sub ... o&lt;name&gt; endsub; rename the file or fix its sub line.</source>
         <translation>A file name.ngc found for o&lt;name&gt; call must define o&lt;name&gt; sub ... o&lt;name&gt; endsub; rename the file or fix its sub line.</translation>
     </message>
+    <message>
+        <source>%1: splines work only in the XY plane (G17)</source>
+        <translation>%1: splines work only in the XY plane (G17)</translation>
+    </message>
+    <message>
+        <source>Select G17 before the spline, as LinuxCNC requires, or re-post the curve as arcs or lines in its plane.</source>
+        <translation>Select G17 before the spline, as LinuxCNC requires, or re-post the curve as arcs or lines in its plane.</translation>
+    </message>
+    <message>
+        <source>%1 cannot move %2: a spline moves X and Y only</source>
+        <translation>%1 cannot move %2: a spline moves X and Y only</translation>
+    </message>
+    <message>
+        <source>Move Z or A in a G1 block of its own before or after the spline.</source>
+        <translation>Move Z or A in a G1 block of its own before or after the spline.</translation>
+    </message>
+    <message>
+        <source>%1 needs %2</source>
+        <translation>%1 needs %2</translation>
+    </message>
+    <message>
+        <source>G5.1 X Y I J: I J is the control point, relative to the start. G5 X Y I J P Q: I J is the first control point, relative to the start (leave both out after a G5 to continue it smoothly), P Q the second, relative to the end.</source>
+        <translation>G5.1 X Y I J: I J is the control point, relative to the start. G5 X Y I J P Q: I J is the first control point, relative to the start (leave both out after a G5 to continue it smoothly), P Q the second, relative to the end.</translation>
+    </message>
+    <message>
+        <source>A NURBS control point needs both X and Y (%1)</source>
+        <translation>A NURBS control point needs both X and Y (%1)</translation>
+    </message>
+    <message>
+        <source>Give X, Y and the weight P on every line from G5.2 to G5.3; P alone is allowed only on the G5.2 line, as the start point&apos;s weight.</source>
+        <translation>Give X, Y and the weight P on every line from G5.2 to G5.3; P alone is allowed only on the G5.2 line, as the start point&apos;s weight.</translation>
+    </message>
+    <message>
+        <source>NURBS order L%1 is not supported</source>
+        <translation>NURBS order L%1 is not supported</translation>
+    </message>
+    <message>
+        <source>Give a whole L from 3 (quadratic, also when L is left out) to 10; L4 is cubic.</source>
+        <translation>Give a whole L from 3 (quadratic, also when L is left out) to 10; L4 is cubic.</translation>
+    </message>
+    <message>
+        <source>The NURBS has %1 control points, fewer than its order L%2</source>
+        <translation>The NURBS has %1 control points, fewer than its order L%2</translation>
+    </message>
+    <message>
+        <source>Give at least as many control points (the start point counts) as the order L before G5.3, or a lower L.</source>
+        <translation>Give at least as many control points (the start point counts) as the order L before G5.3, or a lower L.</translation>
+    </message>
+    <message>
+        <source>G5.3 without G5.2 first</source>
+        <translation>G5.3 without G5.2 first</translation>
+    </message>
+    <message>
+        <source>Start the control points with G5.2 X Y P L, or remove this G5.3.</source>
+        <translation>Start the control points with G5.2 X Y P L, or remove this G5.3.</translation>
+    </message>
+    <message>
+        <source>The NURBS started on line %1 is not ended by G5.3</source>
+        <translation>The NURBS started on line %1 is not ended by G5.3</translation>
+    </message>
+    <message>
+        <source>End its control points with G5.3 before another motion or the program end (LinuxCNC would drop the curve without cutting it).</source>
+        <translation>End its control points with G5.3 before another motion or the program end (LinuxCNC would drop the curve without cutting it).</translation>
+    </message>
+    <message>
+        <source>%1 in the block of G5.3</source>
+        <translation>%1 in the block of G5.3</translation>
+    </message>
+    <message>
+        <source>Between G5.2 and G5.3 only further G5.2 control points may come; put other motions on a line of their own after G5.3.</source>
+        <translation>Between G5.2 and G5.3 only further G5.2 control points may come; put other motions on a line of their own after G5.3.</translation>
+    </message>
+    <message>
+        <source>A G5.2 NURBS in inverse time mode (G93)</source>
+        <translation>A G5.2 NURBS in inverse time mode (G93)</translation>
+    </message>
+    <message>
+        <source>Switch to G94 and give the feed with F before G5.2 (LinuxCNC does not define how long a NURBS takes in G93).</source>
+        <translation>Switch to G94 and give the feed with F before G5.2 (LinuxCNC does not define how long a NURBS takes in G93).</translation>
+    </message>
+    <message>
+        <source>A NURBS control point needs a weight P from 0.000001 to 1000000 (%1)</source>
+        <translation>A NURBS control point needs a weight P from 0.000001 to 1000000 (%1)</translation>
+    </message>
+    <message>
+        <source>Give P on every control point (P1 for an ordinary B-spline point; LinuxCNC takes -1 when it is missing).</source>
+        <translation>Give P on every control point (P1 for an ordinary B-spline point; LinuxCNC takes -1 when it is missing).</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gcode::HeightMap</name>

@@ -158,6 +158,7 @@ std::optional<session::InterpretOutcome> interpretFile(const QString &file,
             machine::loadMachineConfig(app::resolveProfile(options.machine).toStdString());
         if (named.config) { // its bounds on a program that never ends, its subroutine folders
             request.limits = named.config->program;
+            request.splineToleranceMm = named.config->motion.chordToleranceMm;
             request.subroutinePath = machine::subroutineFolders(
                 *named.config, app::resolveProfile(options.machine).toStdString());
         }

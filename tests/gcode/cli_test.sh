@@ -57,6 +57,20 @@ grep -q "units.nc:4:1: warning: F6 was read in mm/min (line 3) before this chang
     "$tmp/err" || fail "units warning: $(cat "$tmp/err")"
 grep -q "units.nc: OK" "$tmp/out" || fail "check with warnings: $(cat "$tmp/out")"
 
+# splines (butterfly.nc: G5.2/G5.3) are cut as chords within the profile's
+# motion.chordToleranceMm: a coarser profile gives fewer feed moves over the same curve.
+feeds() { sed -n 's/^moves: .* feed \([0-9]*\),.*/\1/p' "$1"; }
+"$cli" check "$data/spline/butterfly.nc" --offset G54:40,35,-31 >"$tmp/out" 2>"$tmp/err" ||
+    fail "check butterfly exit $?: $(cat "$tmp/err")"
+fine=$(feeds "$tmp/out")
+sed 's/"chordToleranceMm": 0.002/"chordToleranceMm": 0.5/' "$data/../../../resources/machines/gve64.json" \
+    >"$tmp/coarse.json"
+grep -q '"chordToleranceMm": 0.5' "$tmp/coarse.json" || fail "coarse profile"
+"$cli" check "$data/spline/butterfly.nc" --machine "$tmp/coarse.json" --offset G54:40,35,-31 \
+    >"$tmp/out" 2>"$tmp/err" || fail "check butterfly coarse exit $?: $(cat "$tmp/err")"
+coarse=$(feeds "$tmp/out")
+[ "$fine" -gt 1000 ] && [ "$coarse" -lt 300 ] || fail "spline feeds: $fine at 0.002 mm, $coarse at 0.5 mm"
+
 # a missing file and a usage error
 "$cli" check "$tmp/missing.nc" 2>"$tmp/err"
 [ $? -eq 1 ] || fail "missing file must exit 1"

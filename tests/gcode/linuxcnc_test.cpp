@@ -54,7 +54,6 @@ const std::map<std::string, Refusal> &refused()
         {"smartprobe",
          {E::ReadOnlyParameter, "#5070=1 to loop until the probe trips: needs "
                                 "the probe's real result"}},
-        {"systems", {E::UnsupportedGCode, "G5.1 quadratic spline"}},
     };
     return kRefused;
 }

@@ -29,6 +29,9 @@ struct CanonMove
     double dwellSeconds = 0;
     double spindleRpm = 0;
     std::string call; // the canonical line, for messages
+    // NURBS_FEED (G5, G5.1, G5.3): rs274 prints no coordinates (end is not set); it stands for
+    // Frezka's chords of the curve, the feed moves of one source line.
+    bool spline = false;
 };
 
 struct Rs274Run

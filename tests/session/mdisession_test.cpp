@@ -116,5 +116,20 @@ TEST(MdiSession, ErrorsAreReportedAndM2StartsAfresh)
     EXPECT_DOUBLE_EQ(c.machine[0], 3.0); // absolute again after M2
 }
 
+// Issue 15: G5.1 runs from the console; a G5.2 curve cannot span console lines, so it is
+// refused at once (and the next line is not taken for one of its control points).
+TEST(MdiSession, SplinesOnOneLineOnly)
+{
+    Console c;
+    const auto o = c.line("G5.1 X10 Y0 I5 J10 F100");
+    EXPECT_GT(o.toolpath.size(), 20u);
+    EXPECT_DOUBLE_EQ(c.machine[0], 10.0);
+    const auto nurbs = c.mdi.interpret("G5.2 X20 Y5 P1", c.machine, c.offsets);
+    ASSERT_FALSE(nurbs.ok());
+    EXPECT_EQ(nurbs.errors.front().code, gcode::ErrorCode::NurbsNotEnded);
+    c.line("G1 X12");
+    EXPECT_DOUBLE_EQ(c.machine[0], 12.0);
+}
+
 } // namespace
 } // namespace frezka::session

@@ -3,6 +3,7 @@
 #include "session/programplanner.h"
 
 #include "gcode/interpreter.h"
+#include "machine/machineconfig.h"
 
 #include <gtest/gtest.h>
 
@@ -115,6 +116,23 @@ TEST(ProgramPlanner, SubroutineFilesFromTheProgramsFolderAndTheProfilesPath)
     r.subroutinePath.clear();
     r.text = "o<drill> call [12]\nM2\n";
     EXPECT_EQ(interpretProgram(r).errors.size(), 1u) << "not found without the profile's path";
+}
+
+// Issue 15: splines are cut within the profile's chord tolerance (the one arcs are planned
+// with); the defaults agree.
+TEST(ProgramPlanner, SplinesAreChordedWithinTheRequestsTolerance)
+{
+    EXPECT_EQ(InterpretRequest{}.splineToleranceMm,
+              machine::MachineConfig{}.motion.chordToleranceMm);
+    InterpretRequest r;
+    r.text = "G21 F100\nG5.1 X10 Y0 I5 J10\nM2\n";
+    r.fileName = QStringLiteral("spline.nc");
+    const InterpretOutcome fine = interpretProgram(r);
+    r.splineToleranceMm = 0.5;
+    const InterpretOutcome rough = interpretProgram(r);
+    ASSERT_TRUE(fine.errors.empty() && rough.errors.empty());
+    EXPECT_GT(fine.toolpath->size(), 20u);
+    EXPECT_LT(rough.toolpath->size(), 10u);
 }
 
 TEST(ProgramPlanner, PlansOrWordsThePlanError)

@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 
@@ -180,6 +181,40 @@ TEST(RunWorkflow, PlansAgainFromWhereTheMachineIs)
     ASSERT_EQ(asked.size(), 1u);
     EXPECT_NEAR(asked.front()[0], 7, 1e-3);
     EXPECT_NEAR(h.link.liveState().positionMm[0], 12, 1e-3);
+}
+
+// Issue 15: a spline reaches the unit as the chords of its curve. The emulator's position on
+// the way passes the parabola's apex (control point (20, 20) between (10, 10) and (30, 10):
+// y = 15 at x = 20) and ends where the NURBS after it ends.
+TEST(RunWorkflow, ASplineRunsOnTheUnitAlongItsCurve)
+{
+    Headless h;
+    const auto plan = planOf("G21 G90\nG0 X10 Y10\nG1 Z-2 F600\nG5.1 X30 Y10 I10 J10 F1200\n"
+                             "G5.2 X40 Y20 P1\nX30 Y30 P2\nX20 Y25 P1\nG5.3\nG0 Z-1\nM2\n",
+                             h.config);
+    h.workflow.setProgram(plan, {}, QStringLiteral("spline.nc"));
+    h.workflow.start(RunWorkflow::connectionFor(h.config), true);
+    double apex = 0, nearApex = 1e9; // highest Y before X 30, and how far X was from 20 there
+    const bool ended = h.link.runUntil(
+        [&] {
+            const auto &p = h.link.liveState().positionMm;
+            if (p[2] < -1.5 && p[0] < 29.9 && p[1] <= 15.5 && p[1] > apex &&
+                std::abs(p[0] - 20) < 10) {
+                apex = p[1];
+                nearApex = std::abs(p[0] - 20);
+            }
+            return h.workflow.hasEnded();
+        },
+        3600);
+    ASSERT_TRUE(ended) << h.workflow.error().toStdString();
+    EXPECT_TRUE(h.ended.value_or(false)) << h.workflow.error().toStdString();
+    EXPECT_NEAR(apex, 15, 0.05);
+    EXPECT_LT(nearApex, 1.0);
+    const auto &end = h.link.liveState().positionSteps;
+    EXPECT_EQ(end[0], machine::stepsOf(20, h.config.axes[0].stepsPerMm));
+    EXPECT_EQ(end[1], machine::stepsOf(25, h.config.axes[1].stepsPerMm));
+    EXPECT_EQ(end[2], machine::stepsOf(-1, h.config.axes[2].stepsPerMm));
+    EXPECT_EQ(h.link.port().unit().stats().motion.brakeViolations, 0u);
 }
 
 TEST(RunWorkflow, RefusesToRunWhenNotConnected)
