@@ -185,6 +185,8 @@ struct Rules
 
 } // namespace
 
+std::vector<ConfigError> lineUnitsProblems(const MachineConfig &config); // lineunits.cpp
+
 std::vector<ConfigError> checkConsistency(const MachineConfig &config)
 {
     Rules rules{config, protocol::variantInfo(config.unit.variant), {}};
@@ -192,6 +194,8 @@ std::vector<ConfigError> checkConsistency(const MachineConfig &config)
     rules.axes();
     rules.features();
     rules.outputs();
+    for (ConfigError &e : lineUnitsProblems(config))
+        rules.errors.push_back(std::move(e));
     return rules.errors;
 }
 
