@@ -3,7 +3,9 @@
 // profile with other scales) on the built-in emulator in real time. The window runs a job on
 // the mill while the Units panel jogs the engraver; asserted on what reached the wire (commands
 // to each address, taking turns), on both units' counters as they report them (the mill exactly
-// at the program's end, the engraver exactly the jog), and on what the panel shows.
+// at the program's end, the engraver exactly the jog), and on what the panel shows. With
+// FREZKA_WORKFLOW_UNIT=pty the line is gve-emu --units 0:gve114,1:gve114 on a pty, opened by its
+// path like hardware (the engraver's move then also in what gve-emu received).
 #include "gui/mainwindow.h"
 #include "gui/runpanel.h"
 #include "gui/unitspanel.h"
@@ -15,6 +17,7 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSettings>
@@ -35,6 +38,9 @@ class WorkflowLineTest : public QObject
 
     QTemporaryDir m_dir;
     std::unique_ptr<MainWindow> m_window;
+    QProcess m_emu;
+    QByteArray m_emuLog;
+    bool m_pty = false;
 
     driver::MachineController *controller() const { return m_window->controller(); }
     driver::MachineState unit(int i) const
@@ -73,6 +79,18 @@ private slots:
         machine::MachineConfig mill = machine::defaultMachineConfig(protocol::Variant::Gve114);
         mill.name = "Mill";
         mill.link.port = "emulator";
+        m_pty = qgetenv("FREZKA_WORKFLOW_UNIT") == "pty";
+        if (m_pty) {
+            m_emu.setProgram(QStringLiteral(FREZKA_GVE_EMU));
+            m_emu.setArguments({QStringLiteral("--units"), QStringLiteral("0:gve114,1:gve114"),
+                                QStringLiteral("--verbose")});
+            m_emu.start();
+            QVERIFY(m_emu.waitForStarted());
+            QTRY_VERIFY_WITH_TIMEOUT(m_emu.canReadLine(), 10000);
+            const QString pty = QString::fromLocal8Bit(m_emu.readLine()).trimmed();
+            QVERIFY2(pty.startsWith(QLatin1Char('/')), qPrintable(pty));
+            mill.link.port = pty.toStdString();
+        }
         mill.motion.runBeforeHoming = true;
         using machine::LineUnitRole;
         mill.line.units = {
@@ -92,7 +110,12 @@ private slots:
         QCOMPARE(controller()->state().mode, MachineMode::Idle); // the window's machine
     }
 
-    void cleanupTestCase() { m_window.reset(); }
+    void cleanupTestCase()
+    {
+        m_window.reset();
+        m_emu.terminate();
+        m_emu.waitForFinished(5000);
+    }
 
     // The panel lists both units with their identity as read at connect.
     void panelShowsBothUnits()
@@ -193,6 +216,10 @@ private slots:
                                 .arg(engraverMoveAt)
                                 .arg(sent.mid(std::max(0, engraverMoveAt - 5), 10).join('|'))));
         QVERIFY(engraverPolls > 0);
+        if (m_pty) { // gve-emu received the engraver's move
+            const QByteArray in = test::emulatorReceived(m_emu, m_emuLog);
+            QVERIFY2(in.contains("!1L160,0,0,0"), in.right(500).constData());
+        }
 
         // The panel: both positions in each unit's own scale, both idle.
         QTRY_COMPARE(panel->text(1, UnitsPanel::X), QStringLiteral("1.000"));
