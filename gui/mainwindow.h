@@ -57,6 +57,7 @@ class ToolpathView;
 class HoldBanner;
 class SettingsDialog;
 class UnitConfigDialog;
+class UnitsPanel;
 
 struct MainWindowOptions
 {
@@ -88,6 +89,8 @@ public:
     SpeedPlot *speedPlot() const { return m_plot; }
     IoPanel *ioPanel() const { return m_io; }
     StatusPanel *statusPanel() const { return m_status; }
+    // Every unit on the machine's line (View › Units on the line). mainwindow_units.cpp.
+    UnitsPanel *unitsPanel() const { return m_units; }
     ProgramSession *program() const { return m_program; }
     driver::MachineController *controller() const { return m_controller; }
     HoldBanner *holdBanner() const { return m_hold; }
@@ -166,6 +169,11 @@ private:
     // "part.nc — 1 200 lines · G21: ..." for the status bar: the loaded program.
     QString programFileText() const;
     void connectMachine();
+    void buildUnitsDock();
+    // The units of the profile's line.units (their profiles read beside it) to the driver and
+    // the Units panel before a connect; false, with the error shown, when one cannot be read.
+    bool prepareLine(const machine::MachineConfig &config);
+    void onMachineUnitChanged(int unit);
     void connectControls();
     void connectOutputs();
     void showError(const QString &message);
@@ -236,6 +244,8 @@ private:
     SpeedPlot *m_plot;
     IoPanel *m_io;
     StatusPanel *m_status;
+    UnitsPanel *m_units = nullptr;
+    QDockWidget *m_unitsDock = nullptr;
     QLabel *m_connection, *m_unit, *m_state, *m_file;
     LoadProgress *m_loadProgress;
     QDockWidget *m_statusDock, *m_droDock, *m_runDock, *m_jogDock, *m_outputsDock, *m_programDock,

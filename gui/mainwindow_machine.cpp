@@ -70,6 +70,7 @@ void MainWindow::connectMachine()
     connect(m_controller, &driver::MachineController::errorOccurred, this,
             &MainWindow::onMachineError);
     connect(m_controller, &driver::MachineController::logLine, this, &MainWindow::onLogLine);
+    buildUnitsDock();
 
     using session::RunWorkflow;
     connect(m_workflow, &RunWorkflow::message, m_console, &ConsoleWidget::appendInfo);
@@ -287,6 +288,8 @@ void MainWindow::connectToUnit()
     settings.setValue(QStringLiteral("link/baud"), config.link.baud);
     m_workflow->setAutoReconnect(
         settings.value(QStringLiteral("link/autoReconnect"), true).toBool());
+    if (!prepareLine(config))
+        return;
     m_workflow->connectToUnit(session::RunWorkflow::connectionFor(config));
 }
 

@@ -214,6 +214,8 @@ struct Rules
 
 } // namespace
 
+std::vector<ConfigError> lineUnitsProblems(const MachineConfig &config); // lineunits.cpp
+
 std::vector<ConfigError> checkConsistency(const MachineConfig &config)
 {
     Rules rules{config, protocol::variantInfo(config.unit.variant), {}};
@@ -222,6 +224,8 @@ std::vector<ConfigError> checkConsistency(const MachineConfig &config)
     rules.features();
     rules.outputs();
     rules.toolSensor();
+    for (ConfigError &e : lineUnitsProblems(config))
+        rules.errors.push_back(std::move(e));
     return rules.errors;
 }
 

@@ -18,6 +18,9 @@
 namespace frezka::machine {
 
 std::vector<ConfigError> checkConsistency(const MachineConfig &config); // configrules.cpp
+// lineunits.cpp: the key "line" (a list, outside the schema).
+void takeLineUnits(QJsonObject &root, MachineConfig &config, std::vector<ConfigError> &errors);
+std::string lineUnitsJson(const MachineConfig &config);
 
 namespace {
 
@@ -375,6 +378,7 @@ ConfigResult parseMachineConfig(const std::string &json)
     config = defaultMachineConfig(variant);
     QJsonObject root = doc.object();
     takeRetiredKeys(root, variant, config, result.notes);
+    takeLineUnits(root, config, result.errors);
     {
         Reader reader(root, {}, result.errors);
         schema::visitProfile(reader, config);
@@ -425,7 +429,7 @@ std::string toJson(const MachineConfig &config)
         Writer writer(out);
         schema::visitProfile(writer, copy);
     }
-    out += "\n}\n";
+    out += lineUnitsJson(config) + "\n}\n";
     return out;
 }
 

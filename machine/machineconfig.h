@@ -199,6 +199,33 @@ struct EepromConfig
     friend bool operator==(const EepromConfig &, const EepromConfig &) = default;
 };
 
+// A unit on the profile's serial line (key line.units; GVE114 manual §9.5, §13.6: several
+// units on one RS232 line through the EXT branch cable, each at its own address).
+enum class LineUnitRole : std::uint8_t {
+    Machine,   // the unit of this profile's machine (exactly one per list)
+    Auxiliary, // another machine or device on the line, described by its own profile
+    RotaryA,   // a rotary table driving the program's A axis (reserved for that case)
+};
+
+struct LineUnitConfig
+{
+    int address = 0; // 0..6 (7 is the spindle's), distinct on the line
+    protocol::Variant variant = protocol::Variant::Gve114;
+    std::string name; // shown to the operator, not empty
+    LineUnitRole role = LineUnitRole::Auxiliary;
+    // Auxiliary (required) and RotaryA (optional): the unit's own profile, relative to the
+    // folder of this profile (an absolute path as it is). Machine: empty (this profile).
+    std::string profile;
+    friend bool operator==(const LineUnitConfig &, const LineUnitConfig &) = default;
+};
+
+struct LineConfig
+{
+    // Empty: one unit on the line, at unit.address (as a profile without the key).
+    std::vector<LineUnitConfig> units;
+    friend bool operator==(const LineConfig &, const LineConfig &) = default;
+};
+
 struct MachineConfig
 {
     std::string name = "GVE64 mill";
@@ -211,6 +238,7 @@ struct MachineConfig
     EepromConfig eeprom;
     ToolsConfig tools;
     ProgramConfig program;
+    LineConfig line;
 
     const AxisConfig &axis(Axis a) const { return axes[static_cast<std::size_t>(a)]; }
     AxisConfig &axis(Axis a) { return axes[static_cast<std::size_t>(a)]; }
@@ -264,6 +292,21 @@ std::string toolTablePath(const MachineConfig &config, const std::string &profil
 // The folders of program.subroutinePath, absolute (relative ones from the profile's folder).
 std::vector<std::string> subroutineFolders(const MachineConfig &config,
                                            const std::string &profilePath);
+
+// The profiles of every unit on the line of `config` (read from profilePath), in the order of
+// line.units; one entry, `config` itself, when the profile lists no units. The machine's entry
+// is `config`; an auxiliary unit's is its own profile (relative to profilePath's folder) with
+// unit.address set to its entry's address; a rotary table without a profile gets the default
+// GVE114 profile at its address. `errors` names every profile that cannot be read or does not
+// fit its entry (its variant), each with what to do; configs is then empty.
+struct LineProfiles
+{
+    std::vector<MachineConfig> configs;
+    std::vector<ConfigError> errors;
+};
+LineProfiles loadLineProfiles(const MachineConfig &config, const std::string &profilePath);
+// The index of the machine's entry in line.units (0 when the list is empty).
+int machineUnitIndex(const MachineConfig &config);
 
 // Number of interpolated axes the unit's L/C commands carry (3 or 4).
 int wireAxisCount(const MachineConfig &config);

@@ -24,3 +24,19 @@ shot en main-window.png
 shot cs main-window-cs.png
 # Half-way through the demo on the built-in emulator: cut part, tool, DRO, progress, speed.
 shot en running.png --screenshot-running 40
+# Two GVE114 units on one line (docs/gui.md "Several units on one line"): the mill runs the demo,
+# the Units panel shows both units; profiles in a settings directory of their own.
+units="$tmp/units/Frezka/frezka"
+mkdir -p "$units"
+cat > "$units/engraver.json" <<'JSON'
+{"name": "Engraver", "unit": {"variant": "gve114"}}
+JSON
+cat > "$units/machine.json" <<'JSON'
+{"name": "Mill", "unit": {"variant": "gve114"}, "motion": {"runBeforeHoming": true},
+ "line": {"units": [
+     {"address": 0, "variant": "gve114", "name": "Mill", "role": "machine"},
+     {"address": 1, "variant": "gve114", "name": "Engraver", "role": "auxiliary",
+      "profile": "engraver.json"}]}}
+JSON
+XDG_CONFIG_HOME="$tmp/units" shot en units-line.png --screenshot-running 15 \
+    --screenshot-dock unitsDock

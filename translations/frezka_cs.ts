@@ -354,6 +354,14 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>simulated handwheel: the unit ignored the turn; switch Handwheel (MPG) on, and enable the MPG in the profile&apos;s EEPROM settings</source>
         <translation>simulované kolečko: jednotka otočení nepřijala; zapněte Ruční kolečko (MPG) a povolte MPG v nastavení EEPROM profilu</translation>
     </message>
+    <message>
+        <source>another unit becomes the machine only while every unit on the line is idle; wait, or stop the units, then choose again</source>
+        <translation>jiná jednotka se může stát strojem, jen když všechny jednotky na lince stojí; počkejte nebo jednotky zastavte a zvolte znovu</translation>
+    </message>
+    <message>
+        <source>the units cannot share the built-in emulator&apos;s line: %1; fix line.units in the machine profile</source>
+        <translation>jednotky nemohou sdílet linku vestavěného emulátoru: %1; opravte line.units v profilu stroje</translation>
+    </message>
 </context>
 <context>
     <name>LoadCheck</name>
@@ -4738,6 +4746,22 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     <message>
         <source>&amp;Probe work zero…</source>
         <translation>&amp;Sondovat nulu obrobku…</translation>
+        <source>Unit %1: %2</source>
+        <translation>Jednotka %1: %2</translation>
+    </message>
+    <message>
+        <source>Another unit becomes this window&apos;s machine only while every unit on the line is idle; wait, or stop the units, then choose again.</source>
+        <translation>Jiná jednotka se může stát strojem tohoto okna, jen když všechny jednotky na lince stojí; počkejte nebo jednotky zastavte a zvolte znovu.</translation>
+    </message>
+    <message>
+        <source>This window&apos;s machine is now %1 (address %2).</source>
+        <translation>Strojem tohoto okna je nyní %1 (adresa %2).</translation>
+    </message>
+    <message>
+        <source>The units on the machine&apos;s line cannot be set up; fix line.units in the machine profile:
+%1</source>
+        <translation>Jednotky na lince stroje nelze nastavit; opravte line.units v profilu stroje:
+%1</translation>
     </message>
 </context>
 <context>
@@ -6645,6 +6669,109 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
     </message>
 </context>
 <context>
+    <name>frezka::gui::UnitsPanel</name>
+    <message>
+        <source>%1 (this window&apos;s machine)</source>
+        <translation>%1 (stroj tohoto okna)</translation>
+    </message>
+    <message>
+        <source>none high</source>
+        <translation>žádný v log. 1</translation>
+    </message>
+    <message>
+        <source>high: %1</source>
+        <translation>v log. 1: %1</translation>
+    </message>
+    <message>
+        <source>all off</source>
+        <translation>všechny vypnuté</translation>
+    </message>
+    <message>
+        <source>on: %1</source>
+        <translation>zapnuté: %1</translation>
+    </message>
+    <message>
+        <source>Units on the line</source>
+        <translation>Jednotky na lince</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresa</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Název</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Jednotka</translation>
+    </message>
+    <message>
+        <source>Firmware · identity</source>
+        <translation>Firmware · identita</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Stav</translation>
+    </message>
+    <message>
+        <source>X mm</source>
+        <translation>X mm</translation>
+    </message>
+    <message>
+        <source>Y mm</source>
+        <translation>Y mm</translation>
+    </message>
+    <message>
+        <source>Z mm</source>
+        <translation>Z mm</translation>
+    </message>
+    <message>
+        <source>A °</source>
+        <translation>A °</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Vstupy</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Výstupy</translation>
+    </message>
+    <message>
+        <source>Jog another unit:</source>
+        <translation>Ruční pohyb jiné jednotky:</translation>
+    </message>
+    <message>
+        <source>Step in mm (A: degrees)</source>
+        <translation>Krok v mm (A: ve stupních)</translation>
+    </message>
+    <message>
+        <source>Jog the chosen unit&apos;s axis by one step in the negative direction</source>
+        <translation>Posunout zvolenou osu vybrané jednotky o jeden krok v záporném směru</translation>
+    </message>
+    <message>
+        <source>Jog the chosen unit&apos;s axis by one step in the positive direction</source>
+        <translation>Posunout zvolenou osu vybrané jednotky o jeden krok v kladném směru</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>Stop the chosen unit: its jog ends, a job or homing is held</source>
+        <translation>Zastavit vybranou jednotku: její ruční pohyb skončí, úloha nebo najíždění reference se pozastaví</translation>
+    </message>
+    <message>
+        <source>Make it this window&apos;s machine</source>
+        <translation>Udělat z ní stroj tohoto okna</translation>
+    </message>
+    <message>
+        <source>The window then runs, jogs and shows the chosen unit with its own profile; possible while every unit on the line is idle</source>
+        <translation>Okno pak spouští, posouvá a zobrazuje vybranou jednotku s jejím vlastním profilem; lze, jen když všechny jednotky na lince stojí</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::ZPositionPanel</name>
     <message>
         <source>Read position (Z?)</source>
@@ -7703,6 +7830,10 @@ Volby:
     <message>
         <source>With --screenshot: home, run the program and take the screenshot after this many seconds of running.</source>
         <translation>S --screenshot: najet do reference, spustit program a pořídit snímek po tolika sekundách běhu.</translation>
+    </message>
+    <message>
+        <source>With --screenshot: show this dock in front of the others (its object name, such as unitsDock).</source>
+        <translation>S --screenshot: zobrazit tento panel před ostatními (jeho jméno objektu, např. unitsDock).</translation>
     </message>
 </context>
 </TS>

@@ -354,6 +354,14 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>simulated handwheel: the unit ignored the turn; switch Handwheel (MPG) on, and enable the MPG in the profile&apos;s EEPROM settings</source>
         <translation>simulated handwheel: the unit ignored the turn; switch Handwheel (MPG) on, and enable the MPG in the profile&apos;s EEPROM settings</translation>
     </message>
+    <message>
+        <source>another unit becomes the machine only while every unit on the line is idle; wait, or stop the units, then choose again</source>
+        <translation>another unit becomes the machine only while every unit on the line is idle; wait, or stop the units, then choose again</translation>
+    </message>
+    <message>
+        <source>the units cannot share the built-in emulator&apos;s line: %1; fix line.units in the machine profile</source>
+        <translation>the units cannot share the built-in emulator's line: %1; fix line.units in the machine profile</translation>
+    </message>
 </context>
 <context>
     <name>LoadCheck</name>
@@ -4731,6 +4739,22 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <message>
         <source>&amp;Probe work zero…</source>
         <translation>&amp;Probe work zero…</translation>
+        <source>Unit %1: %2</source>
+        <translation>Unit %1: %2</translation>
+    </message>
+    <message>
+        <source>Another unit becomes this window&apos;s machine only while every unit on the line is idle; wait, or stop the units, then choose again.</source>
+        <translation>Another unit becomes this window's machine only while every unit on the line is idle; wait, or stop the units, then choose again.</translation>
+    </message>
+    <message>
+        <source>This window&apos;s machine is now %1 (address %2).</source>
+        <translation>This window's machine is now %1 (address %2).</translation>
+    </message>
+    <message>
+        <source>The units on the machine&apos;s line cannot be set up; fix line.units in the machine profile:
+%1</source>
+        <translation>The units on the machine's line cannot be set up; fix line.units in the machine profile:
+%1</translation>
     </message>
 </context>
 <context>
@@ -6632,6 +6656,109 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
 </context>
 <context>
+    <name>frezka::gui::UnitsPanel</name>
+    <message>
+        <source>%1 (this window&apos;s machine)</source>
+        <translation>%1 (this window's machine)</translation>
+    </message>
+    <message>
+        <source>none high</source>
+        <translation>none high</translation>
+    </message>
+    <message>
+        <source>high: %1</source>
+        <translation>high: %1</translation>
+    </message>
+    <message>
+        <source>all off</source>
+        <translation>all off</translation>
+    </message>
+    <message>
+        <source>on: %1</source>
+        <translation>on: %1</translation>
+    </message>
+    <message>
+        <source>Units on the line</source>
+        <translation>Units on the line</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Firmware · identity</source>
+        <translation>Firmware · identity</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>State</translation>
+    </message>
+    <message>
+        <source>X mm</source>
+        <translation>X mm</translation>
+    </message>
+    <message>
+        <source>Y mm</source>
+        <translation>Y mm</translation>
+    </message>
+    <message>
+        <source>Z mm</source>
+        <translation>Z mm</translation>
+    </message>
+    <message>
+        <source>A °</source>
+        <translation>A °</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Inputs</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Outputs</translation>
+    </message>
+    <message>
+        <source>Jog another unit:</source>
+        <translation>Jog another unit:</translation>
+    </message>
+    <message>
+        <source>Step in mm (A: degrees)</source>
+        <translation>Step in mm (A: degrees)</translation>
+    </message>
+    <message>
+        <source>Jog the chosen unit&apos;s axis by one step in the negative direction</source>
+        <translation>Jog the chosen unit's axis by one step in the negative direction</translation>
+    </message>
+    <message>
+        <source>Jog the chosen unit&apos;s axis by one step in the positive direction</source>
+        <translation>Jog the chosen unit's axis by one step in the positive direction</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>Stop the chosen unit: its jog ends, a job or homing is held</source>
+        <translation>Stop the chosen unit: its jog ends, a job or homing is held</translation>
+    </message>
+    <message>
+        <source>Make it this window&apos;s machine</source>
+        <translation>Make it this window's machine</translation>
+    </message>
+    <message>
+        <source>The window then runs, jogs and shows the chosen unit with its own profile; possible while every unit on the line is idle</source>
+        <translation>The window then runs, jogs and shows the chosen unit with its own profile; possible while every unit on the line is idle</translation>
+    </message>
+</context>
+<context>
     <name>frezka::gui::ZPositionPanel</name>
     <message>
         <source>Read position (Z?)</source>
@@ -7690,6 +7817,10 @@ Options:
     <message>
         <source>With --screenshot: home, run the program and take the screenshot after this many seconds of running.</source>
         <translation>With --screenshot: home, run the program and take the screenshot after this many seconds of running.</translation>
+    </message>
+    <message>
+        <source>With --screenshot: show this dock in front of the others (its object name, such as unitsDock).</source>
+        <translation>With --screenshot: show this dock in front of the others (its object name, such as unitsDock).</translation>
     </message>
 </context>
 </TS>

@@ -12,6 +12,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QSettings>
 #include <QTimer>
 
@@ -101,6 +102,12 @@ int main(int argc, char **argv)
                                         "screenshot after this many seconds of running."),
         QStringLiteral("seconds"));
     parser.addOption(screenshotRun);
+    QCommandLineOption screenshotDock(
+        QStringLiteral("screenshot-dock"),
+        QApplication::translate("main", "With --screenshot: show this dock in front of the others "
+                                        "(its object name, such as unitsDock)."),
+        QStringLiteral("name"));
+    parser.addOption(screenshotDock);
     parser.addPositionalArgument(QStringLiteral("program"),
                                  QApplication::translate("main", "G-code program to open."));
     parser.process(*app);
@@ -115,6 +122,13 @@ int main(int argc, char **argv)
     window.show();
     if (parser.isSet(screenshot)) {
         const QString png = parser.value(screenshot);
+        auto *dock = parser.isSet(screenshotDock)
+                         ? window.findChild<QDockWidget *>(parser.value(screenshotDock))
+                         : nullptr;
+        if (dock) {
+            dock->show();
+            dock->raise();
+        }
         auto shoot = [&window, png] {
             // Let the docks settle and the view paint once more before grabbing.
             QTimer::singleShot(700, &window, [&window, png] {

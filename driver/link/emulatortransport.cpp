@@ -10,6 +10,12 @@ EmulatorTransport::EmulatorTransport(emulator::UnitOptions unit, WireOptions wir
     , m_port(std::make_unique<EmulatorPort>(std::move(unit), wire))
 {}
 
+EmulatorTransport::EmulatorTransport(std::vector<emulator::UnitOptions> units, WireOptions wire,
+                                     QObject *parent)
+    : Transport(parent)
+    , m_port(std::make_unique<EmulatorPort>(std::move(units), wire))
+{}
+
 EmulatorTransport::~EmulatorTransport() = default;
 
 QString EmulatorTransport::description() const

@@ -19,6 +19,9 @@ class EmulatorTransport : public Transport
 
 public:
     EmulatorTransport(emulator::UnitOptions unit, WireOptions wire, QObject *parent = nullptr);
+    // Several units on the one wire (a shared line; the first one's variant names it).
+    EmulatorTransport(std::vector<emulator::UnitOptions> units, WireOptions wire,
+                      QObject *parent = nullptr);
     ~EmulatorTransport() override;
 
     void open() override;
@@ -29,6 +32,8 @@ public:
 
     // The emulated unit (tests drive its inputs: STOP button, probe).
     emulator::Unit &unit() { return m_port->unit(); }
+    // Every unit on its wire (unitAt(address)).
+    emulator::Simulation &simulation() { return m_port->simulation(); }
 
 private:
     void tick();

@@ -7,6 +7,7 @@
 #include <QCoreApplication>
 #include <QTimer>
 
+#include <algorithm>
 #include <cmath>
 
 namespace frezka::driver {
@@ -29,20 +30,25 @@ double LinkWorker::now() const
 MachineCore &LinkWorker::core()
 {
     if (!m_core) {
-        m_core = std::make_unique<MachineCore>(m_config, m_options);
-        m_core->onStateChanged = [this](const MachineState &s) { emit stateChanged(s); };
-        m_core->onLog = [this](const std::string &line) {
-            emit logLine(QString::fromStdString(line));
-        };
-        m_core->onError = [this](const MachineError &e) { emit errorOccurred(e); };
-        m_core->onJobFinished = [this](bool ok) { emit jobFinished(ok); };
+        CoreOptions options = m_options;
+        if (lineMode()) {
+            options.link.sharedLine = true;
+            options.link.unitAddress = m_config.unit.address;
+        }
+        m_coreShared = lineMode();
+        m_coreAddress = m_config.unit.address;
+        m_core = std::make_unique<MachineCore>(m_config, options);
+        watchMachineCore(*m_core);
     }
     if (!m_timer) {
         m_timer = new QTimer(this);
         m_timer->setSingleShot(true);
         m_timer->setTimerType(Qt::PreciseTimer);
         connect(m_timer, &QTimer::timeout, this, [this] {
-            m_core->onTime(now());
+            if (m_line)
+                m_line->onTime(now());
+            else
+                m_core->onTime(now());
             service();
         });
     }
@@ -53,10 +59,10 @@ void LinkWorker::service()
 {
     if (!m_core)
         return;
-    const std::string out = m_core->takeOutput();
+    const std::string out = m_line ? m_line->takeOutput() : m_core->takeOutput();
     if (!out.empty() && m_transport && m_transport->isOpen())
         m_transport->write(QByteArray(out.data(), static_cast<qsizetype>(out.size())));
-    const double d = m_core->deadline();
+    const double d = m_line ? m_line->deadline() : m_core->deadline();
     if (std::isinf(d)) {
         m_timer->stop();
         return;
@@ -79,17 +85,121 @@ void LinkWorker::setMachineConfig(const machine::MachineConfig &config)
         m_core->setConfig(config);
 }
 
+void LinkWorker::setLineUnits(const std::vector<machine::MachineConfig> &configs, int machineIndex)
+{
+    m_lineConfigs = configs;
+    m_machineIndex = std::clamp(machineIndex, 0, std::max(0, int(configs.size()) - 1));
+}
+
+// The machine's core: its signals are the worker's own (the window's machine).
+void LinkWorker::watchMachineCore(MachineCore &core)
+{
+    core.onStateChanged = [this](const MachineState &s) {
+        emit stateChanged(s);
+        emit unitStateChanged(lineMode() ? m_machineIndex : 0, s);
+    };
+    core.onLog = [this](const std::string &line) { emit logLine(QString::fromStdString(line)); };
+    core.onError = [this](const MachineError &e) { emit errorOccurred(e); };
+    core.onJobFinished = [this](bool ok) { emit jobFinished(ok); };
+}
+
+void LinkWorker::chooseMachineUnit(int unit)
+{
+    if (!lineMode() || unit == m_machineIndex || unit < 0 || unit >= int(m_unitCores.size()))
+        return;
+    for (const MachineCore *core : m_unitCores) {
+        if (core->state().mode != MachineMode::Idle) {
+            emit logLine(QCoreApplication::translate(
+                "LinkWorker", "another unit becomes the machine only while every unit on the "
+                              "line is idle; wait, or stop the units, then choose again"));
+            emit machineUnitChanged(m_machineIndex); // unchanged
+            return;
+        }
+    }
+    // The cores stay where they are under the arbiter; only which one is the machine changes.
+    for (auto &other : m_otherCores) {
+        if (other.get() != m_unitCores[std::size_t(unit)])
+            continue;
+        std::swap(m_core, other);
+        watchOtherCore(*other, m_machineIndex);
+        break;
+    }
+    m_machineIndex = unit;
+    m_config = m_lineConfigs[std::size_t(unit)];
+    m_coreAddress = m_config.unit.address;
+    watchMachineCore(*m_core);
+    emit machineUnitChanged(unit);
+    emit stateChanged(m_core->state());
+}
+
+void LinkWorker::watchOtherCore(MachineCore &core, int unit)
+{
+    core.onStateChanged = [this, unit](const MachineState &s) { emit unitStateChanged(unit, s); };
+    // The wire's lines as they are (each command names its unit's address), the rest named.
+    const QString who = QStringLiteral("unit %1: ").arg(core.config().unit.address);
+    core.onLog = [this, who](const std::string &line) {
+        const QString text = QString::fromStdString(line);
+        const bool wire =
+            text.startsWith(QLatin1String("> ")) || text.startsWith(QLatin1String("< "));
+        emit logLine(wire ? text : who + text);
+    };
+    core.onError = [this, unit](const MachineError &e) { emit unitErrorOccurred(unit, e); };
+}
+
+// One core per unit, the machine's own (m_core, kept across connections) among them, under one
+// arbiter; the others start afresh with each connection, as a unit does after a link loss.
+void LinkWorker::buildLine(const ConnectionSettings &settings)
+{
+    m_line.reset();
+    m_otherCores.clear();
+    m_unitCores.clear();
+    if (!lineMode())
+        return;
+    for (int i = 0; i < int(m_lineConfigs.size()); ++i) {
+        if (i == m_machineIndex) {
+            m_unitCores.push_back(m_core.get());
+            continue;
+        }
+        CoreOptions options = m_options;
+        options.link.sharedLine = true;
+        options.link.unitAddress = m_lineConfigs[std::size_t(i)].unit.address;
+        m_otherCores.push_back(
+            std::make_unique<MachineCore>(m_lineConfigs[std::size_t(i)], options));
+        watchOtherCore(*m_otherCores.back(), i);
+        m_unitCores.push_back(m_otherCores.back().get());
+    }
+    SharedLineOptions line;
+    line.baud = settings.baud;
+    // A reply must come within the quiet time of the line's last byte: on a real port above
+    // the adapter's round trip (docs/architecture.md, "Several units on one line").
+    if (settings.kind == ConnectionSettings::Kind::SerialPort)
+        line.quietS += 2 * m_config.link.latencyMs / 1000.0;
+    m_line = std::make_unique<SharedLine>(m_unitCores, line);
+    m_line->onLog = [this](const std::string &text) {
+        emit logLine(QStringLiteral("line: ") + QString::fromStdString(text));
+    };
+}
+
 void LinkWorker::connectTo(const ConnectionSettings &settings)
 {
-    core();
     if (m_transport) {
         m_transport->disconnect(this);
         m_transport->close();
         m_transport->deleteLater();
         m_transport = nullptr;
     }
+    if (m_core && (m_coreShared != lineMode() || m_coreAddress != m_config.unit.address)) {
+        // Made for a line of another shape: the machine's core starts afresh.
+        m_line.reset();
+        m_unitCores.clear();
+        m_core.reset();
+    }
+    core();
+    buildLine(settings);
     QString error;
-    m_transport = m_factory(settings, m_config, this, &error);
+    m_transport = lineMode()
+                      ? createLineTransport(settings, m_lineConfigs, m_machineIndex, this, &error)
+                      : m_factory(settings, m_config, this, &error);
     if (!m_transport) {
         MachineError e;
         e.reason = {DriverCode::CannotConnect, {error.toStdString()}};
@@ -100,7 +210,10 @@ void LinkWorker::connectTo(const ConnectionSettings &settings)
     connect(m_transport, &Transport::opened, this, [this] {
         emit logLine(QCoreApplication::translate("LinkWorker", "connected: %1")
                          .arg(m_transport->description()));
-        m_core->linkOpened(now());
+        if (m_line)
+            m_line->linkOpened(now());
+        else
+            m_core->linkOpened(now());
         service();
     });
     connect(m_transport, &Transport::bytesReceived, this, &LinkWorker::onBytes);
@@ -117,8 +230,11 @@ void LinkWorker::disconnectFromUnit()
 
 void LinkWorker::onBytes(const QByteArray &bytes)
 {
-    m_core->receive(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())),
-                    now());
+    const std::string_view in(bytes.constData(), static_cast<std::size_t>(bytes.size()));
+    if (m_line)
+        m_line->receive(in, now());
+    else
+        m_core->receive(in, now());
     service();
 }
 
@@ -126,13 +242,27 @@ void LinkWorker::onClosed(const QString &why)
 {
     if (!m_core)
         return;
-    m_core->linkClosed(why.toStdString(), now());
+    if (m_line)
+        m_line->linkClosed(why.toStdString(), now());
+    else
+        m_core->linkClosed(why.toStdString(), now());
     service();
 }
 
 void LinkWorker::execute(const MachineCommand &command)
 {
     apply(core().execute(command, now()));
+}
+
+void LinkWorker::executeOn(int unit, const MachineCommand &command)
+{
+    if (!lineMode() || unit == m_machineIndex)
+        return execute(command);
+    if (unit < 0 || unit >= int(m_unitCores.size()))
+        return; // no such unit on this connection (not connected yet)
+    if (auto refused = m_unitCores[std::size_t(unit)]->execute(command, now()))
+        emit unitErrorOccurred(unit, *refused);
+    service();
 }
 
 void LinkWorker::turnEmulatedWheel(int axis, int multiplier, int detents)
@@ -147,7 +277,10 @@ void LinkWorker::turnEmulatedWheel(int axis, int multiplier, int detents)
                           "turn the unit's own MPG wheel"));
         return;
     }
-    emulator::Unit &unit = emulated->unit();
+    emulator::Unit *machineUnit = emulated->simulation().unitAt(m_config.unit.address);
+    if (!machineUnit)
+        return;
+    emulator::Unit &unit = *machineUnit;
     unit.setWheelAxis(axis);
     unit.setWheelMultiplier(multiplier);
     if (!unit.turnWheel(detents))

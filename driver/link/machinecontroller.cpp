@@ -4,6 +4,8 @@
 
 #include <QThread>
 
+#include <algorithm>
+
 namespace frezka::driver {
 
 MachineController::MachineController(QObject *parent)
@@ -23,6 +25,10 @@ MachineController::MachineController(QObject *parent)
     connect(m_worker, &LinkWorker::logLine, this, &MachineController::logLine);
     connect(m_worker, &LinkWorker::errorOccurred, this, &MachineController::errorOccurred);
     connect(m_worker, &LinkWorker::jobFinished, this, &MachineController::jobFinished);
+    connect(m_worker, &LinkWorker::unitStateChanged, this, &MachineController::onUnitState);
+    connect(m_worker, &LinkWorker::unitErrorOccurred, this, &MachineController::unitErrorOccurred);
+    connect(m_worker, &LinkWorker::machineUnitChanged, this,
+            &MachineController::machineUnitChanged);
     m_thread->start();
 }
 
@@ -38,6 +44,36 @@ void MachineController::onState(const MachineState &state)
 {
     m_state = state;
     emit stateChanged(state);
+}
+
+void MachineController::onUnitState(int unit, const MachineState &state)
+{
+    if (unit < 0)
+        return;
+    if (std::size_t(unit) >= m_unitStates.size())
+        m_unitStates.resize(std::size_t(unit) + 1);
+    m_unitStates[std::size_t(unit)] = state;
+    emit unitStateChanged(unit, state);
+}
+
+void MachineController::setLineUnits(const std::vector<machine::MachineConfig> &configs,
+                                     int machineIndex)
+{
+    m_unitStates.assign(std::max<std::size_t>(1, configs.size()), MachineState{});
+    QMetaObject::invokeMethod(m_worker, [w = m_worker, configs, machineIndex] {
+        w->setLineUnits(configs, machineIndex);
+    });
+}
+
+void MachineController::chooseMachineUnit(int unit)
+{
+    QMetaObject::invokeMethod(m_worker, [w = m_worker, unit] { w->chooseMachineUnit(unit); });
+}
+
+void MachineController::executeOn(int unit, MachineCommand command)
+{
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker, unit, c = std::move(command)] { w->executeOn(unit, c); });
 }
 
 void MachineController::setMachineConfig(const machine::MachineConfig &config)

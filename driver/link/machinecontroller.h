@@ -32,6 +32,7 @@
 #include <QString>
 
 #include <memory>
+#include <vector>
 
 class QThread;
 
@@ -68,12 +69,22 @@ public:
 
     // The last snapshot received from the link thread.
     const MachineState &state() const { return m_state; }
+    // The last snapshot of every unit on the line (setLineUnits' order; a unit alone: one),
+    // empty before the first.
+    const std::vector<MachineState> &unitStates() const { return m_unitStates; }
 
 public slots:
     // The machine profile (axes, limits, steps/mm, outputs, homing). Applies from the next
     // connect / operation; a running job keeps the profile it started with.
     void setMachineConfig(const frezka::machine::MachineConfig &config);
 
+    // Several units on one line (LinkWorker::setLineUnits): their profiles in the order of the
+    // machine profile's line.units and which one is the machine (setMachineConfig's, which the
+    // slots below operate). Applies from the next connect.
+    void setLineUnits(const std::vector<frezka::machine::MachineConfig> &configs, int machineIndex);
+    // Makes another unit of the line the machine while every unit is idle
+    // (LinkWorker::chooseMachineUnit); then setMachineConfig with that unit's profile.
+    void chooseMachineUnit(int unit);
     void connectTo(const frezka::driver::ConnectionSettings &settings);
     void disconnectFromUnit();
 
@@ -119,17 +130,27 @@ signals:
     void errorOccurred(const frezka::driver::MachineError &error);
     // The job ended (ok = reached its end; otherwise aborted or failed with lastError).
     void jobFinished(bool ok);
+    // Each unit of the line (an index of setLineUnits' list), the machine's included.
+    void unitStateChanged(int unit, const frezka::driver::MachineState &state);
+    void unitErrorOccurred(int unit, const frezka::driver::MachineError &error);
+    // chooseMachineUnit made `unit` the machine (then the window takes its profile); the
+    // machine it had when it refused.
+    void machineUnitChanged(int unit);
 
 public:
     // The one way into the link thread: every slot above that operates the machine builds one.
     void execute(frezka::driver::MachineCommand command);
+    // The same for any unit of the line (the machine's index: as execute).
+    void executeOn(int unit, frezka::driver::MachineCommand command);
 
 private:
     void onState(const frezka::driver::MachineState &state);
+    void onUnitState(int unit, const frezka::driver::MachineState &state);
 
     QThread *m_thread = nullptr;
     LinkWorker *m_worker = nullptr; // lives in m_thread
     MachineState m_state;
+    std::vector<MachineState> m_unitStates;
 };
 
 } // namespace frezka::driver
