@@ -4744,8 +4744,6 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <translation>Nástroj %1 změřen na snímači nástrojů: délka %2 mm.</translation>
     </message>
     <message>
-        <source>&amp;Probe work zero…</source>
-        <translation>&amp;Sondovat nulu obrobku…</translation>
         <source>Unit %1: %2</source>
         <translation>Jednotka %1: %2</translation>
     </message>
@@ -4762,6 +4760,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
 %1</source>
         <translation>Jednotky na lince stroje nelze nastavit; opravte line.units v profilu stroje:
 %1</translation>
+    </message>
+    <message>
+        <source>&amp;Probe work zero…</source>
+        <translation>&amp;Sondovat nulu obrobku…</translation>
     </message>
 </context>
 <context>

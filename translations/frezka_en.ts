@@ -360,7 +360,7 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
     <message>
         <source>the units cannot share the built-in emulator&apos;s line: %1; fix line.units in the machine profile</source>
-        <translation>the units cannot share the built-in emulator's line: %1; fix line.units in the machine profile</translation>
+        <translation>the units cannot share the built-in emulator&apos;s line: %1; fix line.units in the machine profile</translation>
     </message>
 </context>
 <context>
@@ -4737,24 +4737,26 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <translation>Tool %1 measured on the tool sensor: %2 mm long.</translation>
     </message>
     <message>
-        <source>&amp;Probe work zero…</source>
-        <translation>&amp;Probe work zero…</translation>
         <source>Unit %1: %2</source>
         <translation>Unit %1: %2</translation>
     </message>
     <message>
         <source>Another unit becomes this window&apos;s machine only while every unit on the line is idle; wait, or stop the units, then choose again.</source>
-        <translation>Another unit becomes this window's machine only while every unit on the line is idle; wait, or stop the units, then choose again.</translation>
+        <translation>Another unit becomes this window&apos;s machine only while every unit on the line is idle; wait, or stop the units, then choose again.</translation>
     </message>
     <message>
         <source>This window&apos;s machine is now %1 (address %2).</source>
-        <translation>This window's machine is now %1 (address %2).</translation>
+        <translation>This window&apos;s machine is now %1 (address %2).</translation>
     </message>
     <message>
         <source>The units on the machine&apos;s line cannot be set up; fix line.units in the machine profile:
 %1</source>
-        <translation>The units on the machine's line cannot be set up; fix line.units in the machine profile:
+        <translation>The units on the machine&apos;s line cannot be set up; fix line.units in the machine profile:
 %1</translation>
+    </message>
+    <message>
+        <source>&amp;Probe work zero…</source>
+        <translation>&amp;Probe work zero…</translation>
     </message>
 </context>
 <context>
@@ -6659,7 +6661,7 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     <name>frezka::gui::UnitsPanel</name>
     <message>
         <source>%1 (this window&apos;s machine)</source>
-        <translation>%1 (this window's machine)</translation>
+        <translation>%1 (this window&apos;s machine)</translation>
     </message>
     <message>
         <source>none high</source>
@@ -6735,11 +6737,11 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
     <message>
         <source>Jog the chosen unit&apos;s axis by one step in the negative direction</source>
-        <translation>Jog the chosen unit's axis by one step in the negative direction</translation>
+        <translation>Jog the chosen unit&apos;s axis by one step in the negative direction</translation>
     </message>
     <message>
         <source>Jog the chosen unit&apos;s axis by one step in the positive direction</source>
-        <translation>Jog the chosen unit's axis by one step in the positive direction</translation>
+        <translation>Jog the chosen unit&apos;s axis by one step in the positive direction</translation>
     </message>
     <message>
         <source>Stop</source>
@@ -6751,7 +6753,7 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
     </message>
     <message>
         <source>Make it this window&apos;s machine</source>
-        <translation>Make it this window's machine</translation>
+        <translation>Make it this window&apos;s machine</translation>
     </message>
     <message>
         <source>The window then runs, jogs and shows the chosen unit with its own profile; possible while every unit on the line is idle</source>
