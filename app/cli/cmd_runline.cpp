@@ -20,6 +20,8 @@
 // could have heard its command (early). Exit code 0 when every job ran to its end, 1 on an
 // error (on stderr, "unit ADDR: ..."), 2 on bad usage.
 //
+// A profile whose line.units lists a rotary table (role rotaryA) runs FILE that way without
+// --rotary-a (its address, its profile or else --machine's).
 // With --rotary-a one program runs on two units: the machine's (--machine, at its unit.address)
 // drives X Y Z, a rotary table on a GVE114 at ADDR (its own profile, else --machine; its A
 // axis) drives A. The program is split at the blocks that move A into sync points
@@ -30,6 +32,9 @@
 #include "cli.h"
 #include "programoptions.h"
 #include "rotaryline.h"
+
+#include <QDir>
+#include <QFileInfo>
 
 #include "driver/link/drivererror.h"
 #include "driver/link/emulatorport.h"
@@ -137,6 +142,27 @@ bool takeRotary(const QString &value, Args &args)
 }
 
 // 0 = parsed, else the exit code.
+// A program FILE without --rotary-a: the rotary table the --machine profile lists on its line
+// (line.units, role rotaryA, its address and profile relative to the machine's), if any.
+bool takeProfileRotary(Args &args)
+{
+    if (args.program.machine.isEmpty())
+        return false;
+    const machine::ConfigResult r = machine::loadMachineConfig(args.program.machine.toStdString());
+    if (!r.config)
+        return false; // loaded again later, its errors named then
+    for (const machine::LineUnitConfig &u : r.config->line.units) {
+        if (u.role != machine::LineUnitRole::RotaryA)
+            continue;
+        QString profile = QString::fromStdString(u.profile);
+        if (!profile.isEmpty() && QFileInfo(profile).isRelative())
+            profile = QFileInfo(args.program.machine).absoluteDir().filePath(profile);
+        args.rotaryA = UnitArg{u.address, {}, profile};
+        return true;
+    }
+    return false;
+}
+
 int parseArgs(const QStringList &raw, Args &args)
 {
     for (int i = 0; i < raw.size(); ++i) {
@@ -184,7 +210,7 @@ int parseArgs(const QStringList &raw, Args &args)
                                 "and no --unit\n"));
         return 2;
     }
-    if (!args.rotaryA && !args.file.isEmpty())
+    if (!args.rotaryA && !args.file.isEmpty() && !takeProfileRotary(args))
         return usage();
     return args.units.empty() && !args.rotaryA ? usage() : 0;
 }

@@ -27,6 +27,7 @@ private slots:
     void rotaryTableOnTheEmulatedLine();
     void rotaryTableThroughGveEmuOnOnePty();
     void refusesBadRotaryTables();
+    void rotaryTableFromTheProfilesLine();
 
 private:
     QJsonArray aloneSteps(const QString &file);
@@ -222,6 +223,30 @@ void CliRunLineTest::rotaryTableOnTheEmulatedLine()
     const QJsonObject report = runRotary({});
     QVERIFY(!report.isEmpty());
     // Before A30, before and after the joint block, before and after A45.
+    QCOMPARE(report.value(QStringLiteral("sync_points")).toInt(), 5);
+}
+
+// The machine's profile lists the rotary table on its line (line.units, role rotaryA, its own
+// profile beside it): run-line FILE runs the same two-unit job without --rotary-a.
+void CliRunLineTest::rotaryTableFromTheProfilesLine()
+{
+    const QString profile = writeFile(m_dir, QStringLiteral("line.json"), R"({
+        "unit": {"variant": "gve114"},
+        "line": {"units": [
+            {"address": 0, "variant": "gve114", "name": "Mill", "role": "machine"},
+            {"address": 1, "variant": "gve114", "name": "Table", "role": "rotaryA",
+             "profile": "rotary.json"}]}})");
+    const auto r =
+        runCli(QStringLiteral(FREZKA_CLI),
+               {QStringLiteral("run-line"), QStringLiteral("--machine"), profile, m_rotaryProgram});
+    QVERIFY2(r.code == 0, qPrintable(r.err + r.out));
+    const QJsonObject report = lastJson(r.out);
+    const QJsonArray units = report.value(QStringLiteral("units")).toArray();
+    QCOMPARE(units.size(), 2);
+    QCOMPARE(units[1].toObject().value(QStringLiteral("role")).toString(),
+             QStringLiteral("rotaryA"));
+    QCOMPARE(stepsOf(units[0].toObject()), (QList<qint64>{4800, 2800, -400, 0}));
+    QCOMPARE(stepsOf(units[1].toObject()), (QList<qint64>{0, 0, 0, 4500}));
     QCOMPARE(report.value(QStringLiteral("sync_points")).toInt(), 5);
 }
 
