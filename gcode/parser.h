@@ -115,8 +115,11 @@ public:
     explicit Parser(Parameters &params);
 
     // Copies the line without comments and blanks, lower case. False + error on a bad comment.
-    // Sets isEmpty()/isPercent()/hasBlockDelete().
-    bool normalize(std::string_view raw, std::uint32_t line, Error *error);
+    // Sets isEmpty()/isPercent()/hasBlockDelete(). readableAfter: bytes after raw's end that may
+    // be read (never used): the rest of the program text, for reading 16 bytes at a time.
+    // (normalize.cpp)
+    bool normalize(std::string_view raw, std::uint32_t line, Error *error,
+                   std::size_t readableAfter = 0);
     bool isEmpty() const { return m_text.empty(); }
     bool isPercent() const { return m_text.size() == 1 && m_text[0] == '%'; }
     bool hasBlockDelete() const { return m_blockDelete; }
