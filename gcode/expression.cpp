@@ -43,9 +43,9 @@ unsigned digitValue(char c)
 
 bool Parser::readNumber(double *value, Error *error)
 {
-    // m_text is a std::string, so a NUL follows its last character and stops every loop below
-    // (no bounds checks: this runs for every number of a program).
-    const char *s = m_text.c_str();
+    // A NUL follows m_text's last character (normalize) and stops every loop below (no bounds
+    // checks: this runs for every number of a program).
+    const char *s = m_text.data();
     const std::size_t start = m_pos;
     std::size_t p = m_pos;
     const bool negative = s[p] == '-';
@@ -366,7 +366,7 @@ bool Parser::readName(std::string_view *name, Error *error)
     const std::size_t start = m_pos;
     const std::size_t end = m_text.find('>', m_pos);
     if (end == std::string::npos || end == m_pos + 1)
-        return fail(ErrorCode::BadParameterName, start, std::string(m_text, start), error);
+        return fail(ErrorCode::BadParameterName, start, std::string(m_text.substr(start)), error);
     *name = std::string_view(m_text).substr(m_pos + 1, end - m_pos - 1);
     m_pos = end + 1;
     return true;

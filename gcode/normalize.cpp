@@ -85,14 +85,15 @@ bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error,
     m_abortColumn = 0;
     m_abortText.clear();
     if (raw.size() > 65535) {
-        m_text.clear();
+        m_text = {};
         *error = {ErrorCode::LineTooLong, line, 1, std::to_string(raw.size()), {}};
         return false;
     }
     const char *s = raw.data();
     const std::size_t n = raw.size();
-    m_text.resize(n + kBlock); // room for the block copies; cut to what was kept below
-    char *out = m_text.data();
+    if (m_buffer.size() < n + kBlock + 1)
+        m_buffer.resize(n + kBlock + 1); // room for the block copies and the NUL
+    char *out = m_buffer.data();
     char *const begin = out;
     std::size_t i = 0;
 #if defined(__SSE2__)
@@ -117,24 +118,25 @@ bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error,
         const std::size_t open = i; // '('
         for (++i; i < n && s[i] != ')'; ++i) {
             if (s[i] == '(') {
-                m_text.clear();
+                m_text = {};
                 *error = {
                     ErrorCode::NestedComment, line, static_cast<std::uint32_t>(i + 1), {}, {}};
                 return false;
             }
         }
         if (i >= n) {
-            m_text.clear();
+            m_text = {};
             *error = {
                 ErrorCode::UnclosedComment, line, static_cast<std::uint32_t>(open + 1), {}, {}};
             return false;
         }
         noteAbortComment(raw.substr(open + 1, i - open - 1), open);
     }
-    m_text.resize(static_cast<std::size_t>(out - begin));
+    *out = '\0';
+    m_text = std::string_view(begin, static_cast<std::size_t>(out - begin));
     if (!m_text.empty() && m_text[0] == '/') {
         m_blockDelete = true;
-        m_text.erase(0, 1);
+        m_text.remove_prefix(1);
     }
     return true;
 }

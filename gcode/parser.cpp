@@ -21,7 +21,7 @@ const char *okindName(OKind kind)
 Parser::Parser(Parameters &params)
     : m_params(params)
 {
-    m_text.reserve(256);
+    m_buffer.resize(256);
 }
 
 std::uint32_t Parser::columnAt(std::size_t pos) const

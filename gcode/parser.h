@@ -176,7 +176,10 @@ private:
                        Error *error) const;
 
     Parameters &m_params;
-    std::string m_text;
+    // normalize() writes each line into m_buffer, which only grows (no resize per line), and
+    // m_text is the line there; a NUL follows it.
+    std::string m_buffer;
+    std::string_view m_text;
     std::string_view m_raw; // the source line of m_text
     std::uint32_t m_line = 0;
     std::size_t m_pos = 0;
