@@ -1,6 +1,7 @@
 #include "trace.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -184,8 +185,38 @@ char *writeArc(char *p, const ArcInfo &arc)
     return writeDigits(p, static_cast<std::uint64_t>(std::abs(arc.turns)));
 }
 
+// The text of the last value written in one field (x, y, z, a, f): consecutive moves repeat
+// most of them (a, f, one of x/y on a raster), and a copy is cheaper than formatting again.
+struct RecentNumber
+{
+    std::uint64_t bits = 0; // the double's bits (-0 and 0 differ: both write 0.0000)
+    bool valid = false;
+    std::uint8_t length = 0;
+    char text[24]; // writeFixed4 writes at most 18 characters (or "null", or %.4e's 12)
+};
+using RecentFields = std::array<RecentNumber, 5>;
+
+char *writeRecent(char *p, double value, RecentNumber &recent)
+{
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    if (recent.valid && bits == recent.bits) {
+        std::memcpy(p, recent.text, sizeof recent.text); // past length: overwritten next
+        return p + recent.length;
+    }
+    char *const end = writeFixed4(p, value);
+    const auto length = static_cast<std::size_t>(end - p);
+    recent.valid = length <= sizeof recent.text;
+    if (recent.valid) {
+        std::memcpy(recent.text, p, sizeof recent.text); // a fixed copy: p has the room
+        recent.bits = bits;
+        recent.length = static_cast<std::uint8_t>(length);
+    }
+    return end;
+}
+
 // Writes entry i at p (at most kMaxEntryChars); returns p unchanged for a skipped event.
-char *writeEntry(char *p, const Toolpath &tp, std::size_t i, bool withEvents)
+char *writeEntry(char *p, const Toolpath &tp, std::size_t i, bool withEvents, RecentFields &recent)
 {
     // The type and its closing quote, padded to 8 bytes so that one fixed copy writes it.
     static constexpr char kTypes[][9] = {"rapid\"  ", "feed\"   ", "arc\"    ",
@@ -203,15 +234,15 @@ char *writeEntry(char *p, const Toolpath &tp, std::size_t i, bool withEvents)
         return writeEvent(p, tp.event(i));
     const Point4 e = tp.end(i);
     p = writeLiteral(p, ",\"x\":");
-    p = writeFixed4(p, e.x);
+    p = writeRecent(p, e.x, recent[0]);
     p = writeLiteral(p, ",\"y\":");
-    p = writeFixed4(p, e.y);
+    p = writeRecent(p, e.y, recent[1]);
     p = writeLiteral(p, ",\"z\":");
-    p = writeFixed4(p, e.z);
+    p = writeRecent(p, e.z, recent[2]);
     p = writeLiteral(p, ",\"a\":");
-    p = writeFixed4(p, e.a);
+    p = writeRecent(p, e.a, recent[3]);
     p = writeLiteral(p, ",\"f\":");
-    p = writeFixed4(p, tp.feedMmPerMin(i));
+    p = writeRecent(p, tp.feedMmPerMin(i), recent[4]);
     if (kind == MotionKind::Arc) {
         p = writeArc(p, tp.arc(i));
     } else if (kind == MotionKind::Dwell) {
@@ -237,7 +268,8 @@ void appendFixed4(std::string &out, double value)
 bool appendJsonLine(std::string &out, const Toolpath &toolpath, std::size_t i, bool withEvents)
 {
     char buf[kMaxEntryChars];
-    char *end = writeEntry(buf, toolpath, i, withEvents);
+    RecentFields recent;
+    char *end = writeEntry(buf, toolpath, i, withEvents, recent);
     if (end == buf)
         return false;
     out.append(buf, static_cast<std::size_t>(end - buf));
@@ -250,8 +282,9 @@ bool writeJsonLines(const Toolpath &toolpath, std::FILE *out, bool withEvents)
     std::vector<char> buffer(kChunk + kMaxEntryChars + 1);
     char *const begin = buffer.data();
     char *p = begin;
+    RecentFields recent;
     for (std::size_t i = 0; i < toolpath.size(); ++i) {
-        char *end = writeEntry(p, toolpath, i, withEvents);
+        char *end = writeEntry(p, toolpath, i, withEvents, recent);
         if (end != p) {
             *end++ = '\n';
             p = end;
