@@ -121,12 +121,7 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
     m_line = 0;
     Result result;
     // One entry per line is the common case; reserving it keeps the arrays from doubling.
-    std::size_t lines = 1;
-    for (const char *p = text.data(), *e = text.data() + text.size();
-         (p = static_cast<const char *>(std::memchr(p, '\n', static_cast<std::size_t>(e - p))));
-         ++p)
-        ++lines;
-    m_toolpath.reserve(lines + 16);
+    m_toolpath.reserve(1 + countNewlines(text) + 16);
     m_toolpath.setOrigin(m_pos);
 
     std::set<std::tuple<std::uint32_t, std::uint32_t, int>> seen; // an error repeated by a loop

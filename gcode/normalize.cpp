@@ -76,6 +76,31 @@ std::size_t normalizeBlocks(const char *s, std::size_t n, std::size_t readableAf
 
 } // namespace
 
+std::size_t countNewlines(std::string_view text)
+{
+    const char *s = text.data();
+    const std::size_t n = text.size();
+    std::size_t count = 0, i = 0;
+#if defined(__SSE2__)
+    // Each byte lane counts its matches (up to 255 blocks), then the lanes are summed.
+    const __m128i newline = _mm_set1_epi8('\n'), zero = _mm_setzero_si128();
+    while (i + kBlock <= n) {
+        const std::size_t end = i + std::min(n - i, 255 * kBlock);
+        __m128i lanes = zero;
+        for (; i + kBlock <= end; i += kBlock) {
+            const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i *>(s + i));
+            lanes = _mm_sub_epi8(lanes, _mm_cmpeq_epi8(v, newline));
+        }
+        const __m128i sums = _mm_sad_epu8(lanes, zero);
+        count += static_cast<std::size_t>(_mm_cvtsi128_si32(sums)) +
+                 static_cast<std::size_t>(_mm_extract_epi16(sums, 4));
+    }
+#endif
+    for (; i < n; ++i)
+        count += s[i] == '\n' ? 1 : 0;
+    return count;
+}
+
 bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error,
                        std::size_t readableAfter)
 {

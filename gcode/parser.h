@@ -196,4 +196,7 @@ int mGroup(int code, bool *supported, const char **reason);
 // "G38.2" / "M30" for messages.
 std::string gName(int code10);
 
+// The '\n' characters in text, 16 bytes at a time (normalize.cpp): a program's line count.
+std::size_t countNewlines(std::string_view text);
+
 } // namespace frezka::gcode
