@@ -25,49 +25,56 @@ bool isDigit(char c)
     return c >= '0' && c <= '9';
 }
 
+// 0..9 for a digit, above 9 for any other character.
+unsigned digitValue(char c)
+{
+    return static_cast<unsigned>(static_cast<unsigned char>(c)) - unsigned{'0'};
+}
+
+// More than 15 significant digits: std::from_chars (rare; kept out of readNumber's fast path,
+// whose register saves it would otherwise add to every number).
+[[gnu::noinline]] bool readLongNumber(const char *first, const char *last, double *value)
+{
+    const auto result = std::from_chars(first, last, *value, std::chars_format::fixed);
+    return result.ec == std::errc() && result.ptr == last;
+}
+
 } // namespace
 
 bool Parser::readNumber(double *value, Error *error)
 {
-    const std::size_t start = m_pos;
+    // A NUL follows m_text's last character (normalize) and stops every loop below (no bounds
+    // checks: this runs for every number of a program).
     const char *s = m_text.data();
-    const std::size_t n = m_text.size();
+    const std::size_t start = m_pos;
     std::size_t p = m_pos;
-    bool negative = false;
-    if (p < n && (s[p] == '+' || s[p] == '-')) {
-        negative = s[p] == '-';
-        ++p;
-    }
+    const bool negative = s[p] == '-';
+    p += (s[p] == '+' || s[p] == '-') ? 1 : 0;
     const std::size_t body = p;
     // Up to 15 significant digits the value is mantissa / 10^k, a single correctly rounded
     // division of two exact doubles (Clinger's fast path): the same result as strtod.
     std::uint64_t mantissa = 0;
-    int digits = 0;
-    int fraction = 0;
-    while (p < n && isDigit(s[p])) {
-        mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[p] - '0');
-        ++digits;
+    unsigned digit = 0;
+    while ((digit = digitValue(s[p])) <= 9) {
+        mantissa = mantissa * 10 + digit;
         ++p;
     }
-    if (p < n && s[p] == '.') {
-        ++p;
-        while (p < n && isDigit(s[p])) {
-            mantissa = mantissa * 10 + static_cast<std::uint64_t>(s[p] - '0');
-            ++digits;
-            ++fraction;
+    std::size_t digits = p - body;
+    std::size_t fraction = 0;
+    if (s[p] == '.') {
+        const std::size_t first = ++p;
+        while ((digit = digitValue(s[p])) <= 9) {
+            mantissa = mantissa * 10 + digit;
             ++p;
         }
+        fraction = p - first;
+        digits += fraction;
     }
-    if (digits == 0)
-        return fail(ErrorCode::NumberExpected, start, {}, error);
     double v = 0;
-    if (digits <= 15) {
+    if (digits == 0 || (digits > 15 && !readLongNumber(s + body, s + p, &v)))
+        return fail(ErrorCode::NumberExpected, start, {}, error);
+    if (digits <= 15)
         v = static_cast<double>(mantissa) / kPow10[fraction];
-    } else {
-        const auto result = std::from_chars(s + body, s + p, v, std::chars_format::fixed);
-        if (result.ec != std::errc() || result.ptr != s + p)
-            return fail(ErrorCode::NumberExpected, start, {}, error);
-    }
     *value = negative ? -v : v;
     m_pos = p;
     return true;
@@ -75,6 +82,9 @@ bool Parser::readNumber(double *value, Error *error)
 
 bool Parser::readRealValue(double *value, Error *error)
 {
+    const char first = m_pos < m_text.size() ? m_text[m_pos] : '\0';
+    if (isDigit(first) || first == '.')
+        return readNumber(value, error); // the common case, before the checks below
     if (m_pos >= m_text.size())
         return fail(ErrorCode::NumberExpected, m_pos, {}, error);
     const char c = m_text[m_pos];
@@ -356,7 +366,7 @@ bool Parser::readName(std::string_view *name, Error *error)
     const std::size_t start = m_pos;
     const std::size_t end = m_text.find('>', m_pos);
     if (end == std::string::npos || end == m_pos + 1)
-        return fail(ErrorCode::BadParameterName, start, std::string(m_text, start), error);
+        return fail(ErrorCode::BadParameterName, start, std::string(m_text.substr(start)), error);
     *name = std::string_view(m_text).substr(m_pos + 1, end - m_pos - 1);
     m_pos = end + 1;
     return true;

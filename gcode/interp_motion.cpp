@@ -164,10 +164,12 @@ bool Interpreter::straight(int motion, const Target &target, Error *error)
         moveTo(target);
         return true;
     }
-    const double length =
-        std::sqrt((end.x - m_pos.x) * (end.x - m_pos.x) + (end.y - m_pos.y) * (end.y - m_pos.y) +
-                  (end.z - m_pos.z) * (end.z - m_pos.z));
-    m_toolpath.appendFeed(end, feedFor(length), pathLine());
+    // The length only matters to an inverse-time feed (G93): no square root per move otherwise.
+    const double feed = m_inverseTime ? feedFor(std::sqrt((end.x - m_pos.x) * (end.x - m_pos.x) +
+                                                          (end.y - m_pos.y) * (end.y - m_pos.y) +
+                                                          (end.z - m_pos.z) * (end.z - m_pos.z)))
+                                      : m_feedMm;
+    m_toolpath.appendFeed(end, feed, pathLine());
     moveTo(target);
     return true;
 }

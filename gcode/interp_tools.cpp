@@ -53,6 +53,8 @@ ToolEntry Interpreter::spindleTool() const
 bool Interpreter::selectTool(Error *error)
 {
     const Block &b = m_block;
+    if (!b.has('t') && !b.hasM(kMToolChange))
+        return true; // most blocks: no ToolEntry (with its comment string) made and dropped
     ToolEntry e;
     if (b.has('t')) {
         int t = 0;

@@ -72,11 +72,6 @@ void Interpreter::warn(ErrorCode code, std::uint32_t line, std::uint32_t column,
     m_warnings.push_back({code, line, column, std::move(detail), sourcePath()});
 }
 
-double Interpreter::offset(int axis) const
-{
-    return m_origin[m_coord][axis] + m_g92[axis] + m_toolOffset[axis];
-}
-
 std::array<double, 4> Interpreter::offsets() const
 {
     return {offset(0), offset(1), offset(2), offset(3)};
@@ -126,12 +121,7 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
     m_line = 0;
     Result result;
     // One entry per line is the common case; reserving it keeps the arrays from doubling.
-    std::size_t lines = 1;
-    for (const char *p = text.data(), *e = text.data() + text.size();
-         (p = static_cast<const char *>(std::memchr(p, '\n', static_cast<std::size_t>(e - p))));
-         ++p)
-        ++lines;
-    m_toolpath.reserve(lines + 16);
+    m_toolpath.reserve(1 + countNewlines(text) + 16);
     m_toolpath.setOrigin(m_pos);
 
     std::set<std::tuple<std::uint32_t, std::uint32_t, int>> seen; // an error repeated by a loop
@@ -235,7 +225,14 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
 bool Interpreter::processLine(std::string_view raw, Error *error)
 {
     m_parsed = false;
-    if (!m_parser.normalize(raw, m_line, error))
+    // The line is a view into m_text (nextLine): what follows it there may be read, not used.
+    const auto textBegin = reinterpret_cast<std::uintptr_t>(m_text.data());
+    const auto textEnd = textBegin + m_text.size();
+    const auto rawBegin = reinterpret_cast<std::uintptr_t>(raw.data());
+    const auto rawEnd = rawBegin + raw.size();
+    const std::size_t readableAfter =
+        rawBegin >= textBegin && rawEnd <= textEnd ? textEnd - rawEnd : 0;
+    if (!m_parser.normalize(raw, m_line, error, readableAfter))
         return false;
     if (m_parser.isPercent()) {
         // % opens the program only as its first line (blank lines aside) and then closes it.

@@ -298,7 +298,10 @@ private:
     bool leaveCallContext(Error *error); // after return/endsub: M73's restore
 
     // Coordinates.
-    double offset(int axis) const;
+    double offset(int axis) const // every block's target: inline
+    {
+        return m_origin[m_coord][axis] + m_g92[axis] + m_toolOffset[axis];
+    }
     Point4 programPosition() const { return m_prog; }
     std::array<double, 4> offsets() const;
     // After an offset changed: the program position moves by the change (rs274ngc's

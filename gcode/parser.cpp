@@ -21,7 +21,7 @@ const char *okindName(OKind kind)
 Parser::Parser(Parameters &params)
     : m_params(params)
 {
-    m_text.reserve(256);
+    m_buffer.resize(256);
 }
 
 std::uint32_t Parser::columnAt(std::size_t pos) const
@@ -59,76 +59,6 @@ bool Parser::fail(ErrorCode code, std::size_t pos, std::string detail, Error *er
     error->detail = std::move(detail);
     error->file.clear(); // the interpreter names a subroutine file
     return false;
-}
-
-bool Parser::normalize(std::string_view raw, std::uint32_t line, Error *error)
-{
-    m_line = line;
-    m_raw = raw;
-    m_blockDelete = false;
-    m_abortColumn = 0;
-    m_abortText.clear();
-    if (raw.size() > 65535) {
-        m_text.clear();
-        *error = {ErrorCode::LineTooLong, line, 1, std::to_string(raw.size()), {}};
-        return false;
-    }
-    const char *s = raw.data();
-    const std::size_t n = raw.size();
-    m_text.resize(n);
-    char *out = m_text.data();
-    char *const begin = out;
-    for (std::size_t i = 0; i < n; ++i) {
-        const char c = s[i];
-        if (c == ' ' || c == '\t' || c == '\r')
-            continue;
-        if (c == ';')
-            break;
-        if (c == '(') {
-            const std::size_t open = i;
-            for (++i; i < n && s[i] != ')'; ++i) {
-                if (s[i] == '(') {
-                    m_text.clear();
-                    *error = {
-                        ErrorCode::NestedComment, line, static_cast<std::uint32_t>(i + 1), {}, {}};
-                    return false;
-                }
-            }
-            if (i >= n) {
-                m_text.clear();
-                *error = {
-                    ErrorCode::UnclosedComment, line, static_cast<std::uint32_t>(open + 1), {}, {}};
-                return false;
-            }
-            noteAbortComment(raw.substr(open + 1, i - open - 1), open);
-            continue;
-        }
-        *out++ = (c >= 'A' && c <= 'Z') ? static_cast<char>(c + 32) : c;
-    }
-    m_text.resize(static_cast<std::size_t>(out - begin));
-    if (!m_text.empty() && m_text[0] == '/') {
-        m_blockDelete = true;
-        m_text.erase(0, 1);
-    }
-    return true;
-}
-
-// LinuxCNC's (abort, text): the comment's first word, any case, spaces before it allowed.
-void Parser::noteAbortComment(std::string_view comment, std::size_t open)
-{
-    const std::size_t at = comment.find_first_not_of(" \t");
-    if (at == std::string_view::npos || comment.size() - at < 6)
-        return;
-    std::string word(comment.substr(at, 6));
-    for (char &c : word)
-        c = (c >= 'A' && c <= 'Z') ? static_cast<char>(c + 32) : c;
-    if (word != "abort," || m_abortColumn != 0)
-        return;
-    m_abortColumn = static_cast<std::uint32_t>(open + 1);
-    std::string_view text = comment.substr(at + 6);
-    while (!text.empty() && text.front() == ' ')
-        text.remove_prefix(1);
-    m_abortText = std::string(text);
 }
 
 bool Parser::readLineNumber(Error *error)

@@ -115,8 +115,11 @@ public:
     explicit Parser(Parameters &params);
 
     // Copies the line without comments and blanks, lower case. False + error on a bad comment.
-    // Sets isEmpty()/isPercent()/hasBlockDelete().
-    bool normalize(std::string_view raw, std::uint32_t line, Error *error);
+    // Sets isEmpty()/isPercent()/hasBlockDelete(). readableAfter: bytes after raw's end that may
+    // be read (never used): the rest of the program text, for reading 16 bytes at a time.
+    // (normalize.cpp)
+    bool normalize(std::string_view raw, std::uint32_t line, Error *error,
+                   std::size_t readableAfter = 0);
     bool isEmpty() const { return m_text.empty(); }
     bool isPercent() const { return m_text.size() == 1 && m_text[0] == '%'; }
     bool hasBlockDelete() const { return m_blockDelete; }
@@ -173,7 +176,10 @@ private:
                        Error *error) const;
 
     Parameters &m_params;
-    std::string m_text;
+    // normalize() writes each line into m_buffer, which only grows (no resize per line), and
+    // m_text is the line there; a NUL follows it.
+    std::string m_buffer;
+    std::string_view m_text;
     std::string_view m_raw; // the source line of m_text
     std::uint32_t m_line = 0;
     std::size_t m_pos = 0;
@@ -189,5 +195,8 @@ int gGroup(int code10, bool *supported, const char **reason);
 int mGroup(int code, bool *supported, const char **reason);
 // "G38.2" / "M30" for messages.
 std::string gName(int code10);
+
+// The '\n' characters in text, 16 bytes at a time (normalize.cpp): a program's line count.
+std::size_t countNewlines(std::string_view text);
 
 } // namespace frezka::gcode

@@ -4,7 +4,37 @@
 #include <cmath>
 #include <numbers>
 
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
 namespace frezka::gcode {
+
+namespace {
+
+// Asks for transparent huge pages (2 MB) under a reserved array of several MB: a million moves
+// then fault their ~50 MB in about 25 page faults instead of 12 000 (a tenth of the CLI's time
+// on the 1M-line benchmark went to those faults). Only whole 2 MB blocks inside the array are
+// advised, so no memory beyond the reservation is touched. A hint: without THP nothing changes.
+template<typename T>
+void adviseHugePages(const std::vector<T> &v)
+{
+#ifdef __linux__
+    constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+    const std::size_t bytes = v.capacity() * sizeof(T);
+    if (bytes < 2 * kHuge)
+        return;
+    const auto data = reinterpret_cast<std::uintptr_t>(v.data());
+    const std::uintptr_t begin = (data + kHuge - 1) & ~(kHuge - 1);
+    const std::uintptr_t end = (data + bytes) & ~(kHuge - 1);
+    if (end > begin)
+        ::madvise(reinterpret_cast<void *>(begin), end - begin, MADV_HUGEPAGE);
+#else
+    (void)v;
+#endif
+}
+
+} // namespace
 
 void Toolpath::reserve(std::size_t n)
 {
@@ -16,6 +46,14 @@ void Toolpath::reserve(std::size_t n)
     m_feed.reserve(n);
     m_line.reserve(n);
     m_aux.reserve(n);
+    adviseHugePages(m_kind);
+    adviseHugePages(m_x);
+    adviseHugePages(m_y);
+    adviseHugePages(m_z);
+    adviseHugePages(m_a);
+    adviseHugePages(m_feed);
+    adviseHugePages(m_line);
+    adviseHugePages(m_aux);
 }
 
 void Toolpath::clear()

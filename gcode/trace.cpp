@@ -1,8 +1,10 @@
 #include "trace.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -12,10 +14,46 @@ namespace {
 
 constexpr std::size_t kMaxEntryChars = 512; // bound of one JSON object (11 numbers at most)
 
+// "00" .. "99": two digits at a time.
+constexpr char kDigitPairs[201] =
+    "00010203040506070809101112131415161718192021222324252627282930313233"
+    "34353637383940414243444546474849505152535455565758596061626364656667"
+    "6869707172737475767778798081828384858687888990919293949596979899";
+
+// Writes the decimal digits of v (at least one) at p, right to left in place, two at a time.
+template<typename Unsigned>
+char *writeDigitsOf(char *p, Unsigned v)
+{
+    int len = 1;
+    for (Unsigned bound = 10; len < std::numeric_limits<Unsigned>::digits10 + 1 && v >= bound;
+         bound *= 10)
+        ++len;
+    char *const end = p + len;
+    char *d = end;
+    while (v >= 100) {
+        d -= 2;
+        std::memcpy(d, kDigitPairs + 2 * (v % 100), 2);
+        v /= 100;
+    }
+    if (v >= 10)
+        std::memcpy(d - 2, kDigitPairs + 2 * v, 2);
+    else
+        d[-1] = static_cast<char>('0' + v);
+    return end;
+}
+
+// Line numbers and the like fit 32 bits, whose divisions are cheaper.
+char *writeDigits(char *p, std::uint64_t v)
+{
+    return v <= std::numeric_limits<std::uint32_t>::max()
+               ? writeDigitsOf(p, static_cast<std::uint32_t>(v))
+               : writeDigitsOf(p, v);
+}
+
 // Writes v with 4 decimals (half away from zero) at p; JSON has no NaN/inf: null.
 char *writeFixed4(char *p, double value)
 {
-    const double scaled = std::round(value * 10000.0);
+    const double scaled = value * 10000.0;
     if (!(std::fabs(scaled) < 9.0e15)) {
         if (std::isnan(value) || std::isinf(value)) {
             std::memcpy(p, "null", 4);
@@ -23,43 +61,47 @@ char *writeFixed4(char *p, double value)
         }
         return p + std::snprintf(p, 32, "%.4e", value);
     }
+    // std::round without the library call: below 2^53 the truncated part is exact and so is
+    // scaled minus it (above 2^52 every double is whole), so this is round-half-away exactly.
     auto n = static_cast<long long>(scaled);
+    const double rest = scaled - static_cast<double>(n);
+    if (rest >= 0.5)
+        ++n;
+    else if (rest <= -0.5)
+        --n;
     if (n < 0) {
         *p++ = '-';
         n = -n;
     }
-    auto u = static_cast<unsigned long long>(n);
-    // Digits before the point (at least one), written right to left in place.
-    unsigned long long whole = u / 10000;
-    int len = 1;
-    for (unsigned long long t = whole; t >= 10; t /= 10)
-        ++len;
-    char *end = p + len + 5;
-    char *d = end;
-    unsigned frac = static_cast<unsigned>(u % 10000);
-    for (int i = 0; i < 4; ++i) {
-        *--d = static_cast<char>('0' + frac % 10);
-        frac /= 10;
+    const auto u = static_cast<unsigned long long>(n);
+    unsigned frac = 0;
+    if (u < 100'000'000) {
+        // Below 10 000 (every coordinate and most feeds): 32-bit arithmetic, digits in pairs.
+        const auto small = static_cast<unsigned>(u);
+        const unsigned whole = small / 10000;
+        frac = small % 10000;
+        if (whole < 10) {
+            *p++ = static_cast<char>('0' + whole);
+        } else if (whole < 100) {
+            std::memcpy(p, kDigitPairs + 2 * whole, 2);
+            p += 2;
+        } else if (whole < 1000) {
+            *p = static_cast<char>('0' + whole / 100);
+            std::memcpy(p + 1, kDigitPairs + 2 * (whole % 100), 2);
+            p += 3;
+        } else {
+            std::memcpy(p, kDigitPairs + 2 * (whole / 100), 2);
+            std::memcpy(p + 2, kDigitPairs + 2 * (whole % 100), 2);
+            p += 4;
+        }
+    } else {
+        p = writeDigits(p, u / 10000);
+        frac = static_cast<unsigned>(u % 10000);
     }
-    *--d = '.';
-    do {
-        *--d = static_cast<char>('0' + whole % 10);
-        whole /= 10;
-    } while (whole);
-    return end;
-}
-
-char *writeUInt(char *p, std::uint64_t v)
-{
-    char digits[24];
-    char *d = digits + sizeof digits;
-    do {
-        *--d = static_cast<char>('0' + v % 10);
-        v /= 10;
-    } while (v);
-    const std::size_t len = static_cast<std::size_t>(digits + sizeof digits - d);
-    std::memcpy(p, d, len);
-    return p + len;
+    p[0] = '.';
+    std::memcpy(p + 1, kDigitPairs + 2 * (frac / 100), 2);
+    std::memcpy(p + 3, kDigitPairs + 2 * (frac % 100), 2);
+    return p + 5;
 }
 
 template<std::size_t N>
@@ -140,34 +182,67 @@ char *writeArc(char *p, const ArcInfo &arc)
     p = writeLiteral(p, "\",\"turns\":");
     if (arc.turns < 0)
         *p++ = '-';
-    return writeUInt(p, static_cast<std::uint64_t>(std::abs(arc.turns)));
+    return writeDigits(p, static_cast<std::uint64_t>(std::abs(arc.turns)));
+}
+
+// The text of the last value written in one field (x, y, z, a, f): consecutive moves repeat
+// most of them (a, f, one of x/y on a raster), and a copy is cheaper than formatting again.
+struct RecentNumber
+{
+    std::uint64_t bits = 0; // the double's bits (-0 and 0 differ: both write 0.0000)
+    bool valid = false;
+    std::uint8_t length = 0;
+    char text[24]; // writeFixed4 writes at most 18 characters (or "null", or %.4e's 12)
+};
+using RecentFields = std::array<RecentNumber, 5>;
+
+char *writeRecent(char *p, double value, RecentNumber &recent)
+{
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    if (recent.valid && bits == recent.bits) {
+        std::memcpy(p, recent.text, sizeof recent.text); // past length: overwritten next
+        return p + recent.length;
+    }
+    char *const end = writeFixed4(p, value);
+    const auto length = static_cast<std::size_t>(end - p);
+    recent.valid = length <= sizeof recent.text;
+    if (recent.valid) {
+        std::memcpy(recent.text, p, sizeof recent.text); // a fixed copy: p has the room
+        recent.bits = bits;
+        recent.length = static_cast<std::uint8_t>(length);
+    }
+    return end;
 }
 
 // Writes entry i at p (at most kMaxEntryChars); returns p unchanged for a skipped event.
-char *writeEntry(char *p, const Toolpath &tp, std::size_t i, bool withEvents)
+char *writeEntry(char *p, const Toolpath &tp, std::size_t i, bool withEvents, RecentFields &recent)
 {
-    static constexpr const char *kTypes[] = {"rapid", "feed", "arc", "probe", "dwell", "event"};
+    // The type and its closing quote, padded to 8 bytes so that one fixed copy writes it.
+    static constexpr char kTypes[][9] = {"rapid\"  ", "feed\"   ", "arc\"    ",
+                                         "probe\"  ", "dwell\"  ", "event\"  "};
+    static constexpr std::uint8_t kTypeLength[] = {6, 5, 4, 6, 6, 6};
     const MotionKind kind = tp.kind(i);
     if (kind == MotionKind::Event && !withEvents)
         return p;
     p = writeLiteral(p, "{\"line\":");
-    p = writeUInt(p, tp.line(i));
+    p = writeDigits(p, tp.line(i));
     p = writeLiteral(p, ",\"type\":\"");
-    p = writeText(p, kTypes[static_cast<int>(kind)]);
-    *p++ = '"';
+    std::memcpy(p, kTypes[static_cast<int>(kind)], 8);
+    p += kTypeLength[static_cast<int>(kind)];
     if (kind == MotionKind::Event)
         return writeEvent(p, tp.event(i));
     const Point4 e = tp.end(i);
     p = writeLiteral(p, ",\"x\":");
-    p = writeFixed4(p, e.x);
+    p = writeRecent(p, e.x, recent[0]);
     p = writeLiteral(p, ",\"y\":");
-    p = writeFixed4(p, e.y);
+    p = writeRecent(p, e.y, recent[1]);
     p = writeLiteral(p, ",\"z\":");
-    p = writeFixed4(p, e.z);
+    p = writeRecent(p, e.z, recent[2]);
     p = writeLiteral(p, ",\"a\":");
-    p = writeFixed4(p, e.a);
+    p = writeRecent(p, e.a, recent[3]);
     p = writeLiteral(p, ",\"f\":");
-    p = writeFixed4(p, tp.feedMmPerMin(i));
+    p = writeRecent(p, tp.feedMmPerMin(i), recent[4]);
     if (kind == MotionKind::Arc) {
         p = writeArc(p, tp.arc(i));
     } else if (kind == MotionKind::Dwell) {
@@ -175,7 +250,7 @@ char *writeEntry(char *p, const Toolpath &tp, std::size_t i, bool withEvents)
         p = writeFixed4(p, tp.event(i).value);
     } else if (kind == MotionKind::Probe) {
         p = writeLiteral(p, ",\"probe\":\"G38.");
-        p = writeUInt(p, static_cast<std::uint64_t>(tp.probe(i)) + 2);
+        p = writeDigits(p, static_cast<std::uint64_t>(tp.probe(i)) + 2);
         *p++ = '"';
     }
     *p++ = '}';
@@ -193,7 +268,8 @@ void appendFixed4(std::string &out, double value)
 bool appendJsonLine(std::string &out, const Toolpath &toolpath, std::size_t i, bool withEvents)
 {
     char buf[kMaxEntryChars];
-    char *end = writeEntry(buf, toolpath, i, withEvents);
+    RecentFields recent;
+    char *end = writeEntry(buf, toolpath, i, withEvents, recent);
     if (end == buf)
         return false;
     out.append(buf, static_cast<std::size_t>(end - buf));
@@ -206,8 +282,9 @@ bool writeJsonLines(const Toolpath &toolpath, std::FILE *out, bool withEvents)
     std::vector<char> buffer(kChunk + kMaxEntryChars + 1);
     char *const begin = buffer.data();
     char *p = begin;
+    RecentFields recent;
     for (std::size_t i = 0; i < toolpath.size(); ++i) {
-        char *end = writeEntry(p, toolpath, i, withEvents);
+        char *end = writeEntry(p, toolpath, i, withEvents, recent);
         if (end != p) {
             *end++ = '\n';
             p = end;

@@ -48,6 +48,8 @@ const std::map<std::string, Refusal> &refused()
         {"cone", {E::UnsupportedAxis, "axes B and W (rs274: bad character 'w')"}},
         {"nestedcall", {E::OwordWithOtherWords, "'O<g20sub> callsub' (rs274 refuses it too)"}},
         {"tool-length-probe", {E::ProbeNoMotion, "a probe from its end point (rs274 too)"}},
+        // Its o<touchoff> is LinuxCNC's touchoff.ngc, here touchoff.nc, so not found (rs274 too);
+        // with it on the subroutine path touchoff's M66 is refused (XTrimWithTouchoff below).
         {"x-trim", {E::SubroutineUndefined, "o<touchoff> from a subroutine file (rs274 too)"}},
         // LinuxCNC dialect Frezka does not read yet (issue 15, item 3).
 
@@ -138,4 +140,36 @@ TEST(LinuxCncExamples, EnoughMatchRs274)
     RecordProperty("matched", static_cast<int>(matched));
     RecordProperty("mill_programs", static_cast<int>(mill));
     EXPECT_GE(matched, 36u) << matched << " of " << mill;
+}
+
+// x-trim calls o<touchoff>, the subroutine LinuxCNC ships beside it (touchoff.nc here, copied as
+// touchoff.ngc into a folder on the subroutine path, as LinuxCNC looks for it). With that folder
+// as SUBROUTINE_PATH rs274 runs the program to its end; Frezka runs the call and refuses
+// touchoff's M66 (wait for the torch's arc-OK input: the GVE units have no such input), naming the
+// subroutine file and its line.
+TEST(LinuxCncExamples, XTrimWithTouchoffOnTheSubroutinePath)
+{
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const fs::path lib = dir.path().toStdString();
+    fs::copy_file(kDir / "touchoff.nc", lib / "touchoff.ngc");
+    const ToolTable table = toolsFor("x-trim");
+    Options options;
+    options.toolTable = table;
+    options.subroutinePath = {lib.string()};
+    const Result r = interpretFile((kDir / "x-trim.nc").string(), options);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(errorName(r.errors[0].code), std::string(errorName(ErrorCode::UnsupportedMCode)))
+        << r.errors[0].file << ":" << r.errors[0].line << ": " << englishMessage(r.errors[0]);
+    EXPECT_EQ(fs::path(r.errors[0].file).filename(), "touchoff.ngc");
+    EXPECT_EQ(r.errors[0].line, 13u); // M66 P0 L1 Q5 (Wait for Arc OK from Torch)
+    EXPECT_NE(englishMessage(r.errors[0]).find("M66"), std::string::npos);
+
+    if (test::rs274Path().empty())
+        GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
+    const std::string ini = (lib / "x-trim.ini").string();
+    std::ofstream(ini) << "[RS274NGC]\nSUBROUTINE_PATH = " << lib.string() << "\n";
+    const Rs274Run run = runRs274((kDir / "x-trim.nc").string(), &table, ini);
+    EXPECT_TRUE(run.error.empty()) << run.error;
+    EXPECT_GE(run.moves.size(), 8u); // the probe, touchoff's feeds, the cut and the way back
 }
