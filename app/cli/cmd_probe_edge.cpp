@@ -20,7 +20,7 @@
 #include "proberun.h"
 #include "programoptions.h"
 
-#include "driver/emulator/surface.h"
+#include "driver/link/emulatorport.h"
 #include "driver/link/machinestate.h"
 #include "session/heightprobe.h"
 

@@ -64,6 +64,9 @@ const std::map<std::string, std::vector<Edit>> &edits()
         // with an error and never sends it. With M2 it sends it too.
         {"hand_cncjs_helical_thread",
          {{"Z0.0179 R0.0975\n", "Z0.0179 R0.0975\nM2\n", "program end under compensation"}}},
+        // FreeCAD's grbl post writes K0 on G17 arcs: Frezka ignores it with a note, rs274
+        // refuses it ("K word given for arc in xy plane").
+        {"freecad_grbl_k0", {{" K0.000", "", "K0 on XY arcs"}}},
     };
     return kEdits;
 }
@@ -119,8 +122,8 @@ INSTANTIATE_TEST_SUITE_P(Corpus, RealProgram, testing::ValuesIn(programsIn(kDir)
 
 // The corpus's size and variety: at least 30 programs from 8 generators (issue 15), among them
 // programs without a program end, FreeCAD's Fanuc post with its safety line (G17 G54 G40 G49
-// G80 G90 G94) and TinyG's tests with G00 and G80 on one line (G00 G17 G21 G40 G49 G80 G90).
-// FreeCAD's K0 arcs are not among them yet (README.md there).
+// G80 G90 G94), TinyG's tests with G00 and G80 on one line (G00 G17 G21 G40 G49 G80 G90) and
+// FreeCAD's grbl post with its K0 arcs.
 TEST(RealCorpus, IsLargeAndVaried)
 {
     const std::vector<std::string> all = programsIn(kDir);
@@ -134,6 +137,7 @@ TEST(RealCorpus, IsLargeAndVaried)
     for (const auto &[name, list] : edits())
         EXPECT_NE(std::find(all.begin(), all.end(), name), all.end()) << name;
     EXPECT_GE(all.size(), 30u);
+    EXPECT_NE(readText(kDir / "freecad_grbl_k0.nc").find(" K0.000"), std::string::npos);
     EXPECT_GE(generators.size(), 8u);
     EXPECT_TRUE(fs::exists(kDir / "README.md"));
 }

@@ -25,6 +25,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <optional>
+
 using namespace frezka;
 using namespace frezka::gui;
 using driver::MachineMode;
@@ -143,10 +145,17 @@ private slots:
                                "G21 G90\nG1 X30 Y5 F600\nG1 X10 Y10\nG1 X0 Y10\nM2\n");
         QVERIFY(test::openAndWait(m_window.get(), program));
         QStringList sent;
+        // The mill's mode as the window saw it when the engraver's move went on the wire.
+        std::optional<MachineMode> millAtEngraverMove;
         const auto tap = connect(controller(), &driver::MachineController::logLine, this,
-                                 [&sent](const QString &line) {
-                                     if (line.startsWith(QLatin1String("> ")))
-                                         sent << line.mid(2);
+                                 [&](const QString &line) {
+                                     if (!line.startsWith(QLatin1String("> ")))
+                                         return;
+                                     sent << line.mid(2);
+                                     static const QRegularExpression move(
+                                         QStringLiteral("^(packet of .* starting ')?!1(C|B|L)"));
+                                     if (!millAtEngraverMove && move.match(sent.back()).hasMatch())
+                                         millAtEngraverMove = unit(0).mode;
                                  });
         const auto untap = qScopeGuard([&] { disconnect(tap); });
         QSignalSpy finished(controller(), &driver::MachineController::jobFinished);
@@ -206,9 +215,12 @@ private slots:
             if (i > sentBeforeJog && sent[i].startsWith(QLatin1String("!1P")))
                 ++engraverPolls;
         }
-        // The jog was asked while the mill ran (sentBeforeJog), and the mill's vectors went on
-        // after the engraver's move: both on the line at once, in turns.
-        QVERIFY2(firstJob >= 0 && engraverMoveAt > sentBeforeJog && engraverMoveAt < lastJob,
+        // The jog was asked while the mill ran (sentBeforeJog), and the engraver's move went on
+        // the wire while the mill was still running its job: both on the line at once, in
+        // turns. (The mill's last vectors may all be queued in its unit by then on a loaded
+        // machine: the job still runs, and is polled, on the same line.)
+        QVERIFY2(firstJob >= 0 && engraverMoveAt > sentBeforeJog &&
+                     millAtEngraverMove == MachineMode::Running,
                  qPrintable(QStringLiteral("job %1..%2, jog asked at %3, engraver's move %4: %5")
                                 .arg(firstJob)
                                 .arg(lastJob)
@@ -270,10 +282,17 @@ private slots:
         const auto mill = unit(0).positionSteps;
         const auto engraver = unit(1).positionSteps;
         QStringList sent;
+        // The mill's mode as the window saw it when the engraver's move went on the wire.
+        std::optional<MachineMode> millAtEngraverMove;
         const auto tap = connect(controller(), &driver::MachineController::logLine, this,
-                                 [&sent](const QString &line) {
-                                     if (line.startsWith(QLatin1String("> ")))
-                                         sent << line.mid(2);
+                                 [&](const QString &line) {
+                                     if (!line.startsWith(QLatin1String("> ")))
+                                         return;
+                                     sent << line.mid(2);
+                                     static const QRegularExpression move(
+                                         QStringLiteral("^(packet of .* starting ')?!1(C|B|L)"));
+                                     if (!millAtEngraverMove && move.match(sent.back()).hasMatch())
+                                         millAtEngraverMove = unit(0).mode;
                                  });
         const auto untap = qScopeGuard([&] { disconnect(tap); });
         m_window->jogStep(0, 1.0, 600); // the window's jog: now the engraver's X

@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -154,4 +156,114 @@ TEST(LeadInHold, AnInputThatFiresWhileHeldHoldsTheJobInsteadOfStartingIt)
     EXPECT_TRUE(held.finished.front());
     EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
     EXPECT_EQ(held.port.unit().stats().motion.brakeViolations, 0);
+}
+
+namespace {
+
+// Seed 235 with the spindle started first (M3 before the program) and left on: what the
+// operator's pause, abort and a lost link do to the spindle while the unit is held at the
+// chain's start.
+RandomJob spindleJob()
+{
+    RandomJob j = drawJob(235, 300);
+    j.program = "M3 S12000\n" + j.program;
+    // Its M5 before the held chain removed: the spindle turns while the unit is held there.
+    for (std::size_t at; (at = j.program.find("\nM5\n")) != std::string::npos;)
+        j.program.replace(at, 4, "\n");
+    return j;
+}
+
+// Runs until the unit is held at a chain's start with the spindle turning; the unit's counters
+// then.
+bool untilHeld(HeldJob &held, std::array<std::int64_t, 4> &at)
+{
+    if (!held.connectAndRun() ||
+        !held.runner.runUntil(
+            [&] { return held.core.jobReport().leadInHolds > 0 && held.core.state().inta; }, 600))
+        return false;
+    at = held.port.unit().position();
+    return held.port.unit().spindlePermille() > 0;
+}
+
+std::size_t count(const HeldJob &held, std::string_view prefix, std::size_t from)
+{
+    return static_cast<std::size_t>(
+        std::count_if(held.wire.begin() + static_cast<std::ptrdiff_t>(from), held.wire.end(),
+                      [&](const std::string &l) { return l.starts_with(prefix); }));
+}
+
+} // namespace
+
+// Pause (spindle off) while held: the chain does not start, the spindle stops on the wire and
+// on the unit, nothing moves; Resume turns it on again and the job ends exactly.
+TEST(LeadInHold, PauseWhileHeldStopsTheSpindleAndStartsNothing)
+{
+    HeldJob held(spindleJob(), true);
+    std::array<std::int64_t, 4> at{};
+    ASSERT_TRUE(untilHeld(held, at));
+    const std::size_t h = held.find("!0H");
+    ASSERT_FALSE(held.core.pause(held.runner.now(), true));
+    ASSERT_TRUE(held.runner.runUntil(
+        [&] { return held.core.state().mode == driver::MachineMode::Paused; }, 30));
+    held.runner.runFor(2.0);
+    EXPECT_EQ(held.port.unit().position(), at);
+    EXPECT_EQ(held.port.unit().spindlePermille(), 0);
+    EXPECT_GE(count(held, "!7V0", h), 1u);
+    EXPECT_EQ(count(held, "!0G", h), 0u);
+    ASSERT_FALSE(held.core.resume(held.runner.now()));
+    ASSERT_TRUE(held.runner.runUntil([&] { return !held.finished.empty(); }, 600));
+    EXPECT_TRUE(held.finished.front());
+    EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
+    EXPECT_EQ(held.port.unit().stats().motion.brakeViolations, 0);
+    // On again before the chain goes on, the G the lead-in hold's own (after SR4 and SR5).
+    EXPECT_GE(count(held, "!7V500", h), 1u);
+}
+
+// Abort while held: the queue is cleared, the chain never starts, the spindle is off, the job
+// ends as aborted with the unit where it stood.
+TEST(LeadInHold, AbortWhileHeldClearsTheQueueAndStopsTheSpindle)
+{
+    HeldJob held(spindleJob(), true);
+    std::array<std::int64_t, 4> at{};
+    ASSERT_TRUE(untilHeld(held, at));
+    const std::size_t h = held.find("!0H");
+    ASSERT_FALSE(held.core.abort(held.runner.now()));
+    ASSERT_TRUE(held.runner.runUntil(
+        [&] { return held.core.state().mode == driver::MachineMode::Idle; }, 30));
+    held.runner.runFor(2.0);
+    ASSERT_FALSE(held.finished.empty());
+    EXPECT_FALSE(held.finished.front());
+    EXPECT_EQ(held.port.unit().position(), at);
+    EXPECT_EQ(held.port.unit().spindlePermille(), 0);
+    EXPECT_GE(count(held, "!7V0", h), 1u);
+    EXPECT_GE(count(held, "!0D", h), 1u);
+    EXPECT_EQ(count(held, "!0G", h), 0u);
+    EXPECT_EQ(held.port.unit().queueLength(), 0u);
+}
+
+// The link lost while held: the unit stays held (nothing runs without G); plugged in again, the
+// job waits for the operator, never starting by itself; resumed, it ends exactly.
+TEST(LeadInHold, ALinkLostWhileHeldNeverStartsTheChainByItself)
+{
+    HeldJob held(spindleJob(), true);
+    std::array<std::int64_t, 4> at{};
+    ASSERT_TRUE(untilHeld(held, at));
+    held.runner.unplug("converter unplugged");
+    EXPECT_EQ(held.core.state().mode, driver::MachineMode::LinkLost);
+    held.runner.runFor(3.0);
+    EXPECT_EQ(held.port.unit().position(), at);
+    const std::size_t back = held.wire.size();
+    held.runner.open();
+    ASSERT_TRUE(held.runner.runUntil(
+        [&] { return held.core.state().mode == driver::MachineMode::Paused; }, 120));
+    held.runner.runFor(3.0);
+    EXPECT_EQ(held.port.unit().position(), at);
+    EXPECT_EQ(count(held, "!0G", back), 0u);
+    bool resumed = false;
+    ASSERT_TRUE(held.runner.runUntil(
+        [&] { return resumed || (resumed = !held.core.resume(held.runner.now()).has_value()); },
+        60));
+    ASSERT_TRUE(held.runner.runUntil([&] { return !held.finished.empty(); }, 600));
+    EXPECT_TRUE(held.finished.back());
+    EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
 }
