@@ -148,17 +148,6 @@ QJsonArray axes(const session::Axes4 &v)
     return QJsonArray{v[0], v[1], v[2], v[3]};
 }
 
-QString offsetArg(const session::OffsetState &o)
-{
-    const session::Axes4 &v = o.systems[static_cast<std::size_t>(o.active)];
-    return QStringLiteral("%1:%2,%3,%4,%5")
-        .arg(session::workSystemName(o.active))
-        .arg(v[0], 0, 'f', 4)
-        .arg(v[1], 0, 'f', 4)
-        .arg(v[2], 0, 'f', 4)
-        .arg(v[3], 0, 'f', 4);
-}
-
 // The JSON line on stdout: the trip point, the offsets after, the emulator's counters.
 void printReport(const session::OffsetState &after, std::optional<double> tripZ, double plateMm,
                  const cli::ProbeRunOutcome &run)
@@ -169,12 +158,8 @@ void printReport(const session::OffsetState &after, std::optional<double> tripZ,
     j[QStringLiteral("work_offset")] = session::workSystemName(after.active);
     j[QStringLiteral("offset_mm")] = axes(after.systems[static_cast<std::size_t>(after.active)]);
     j[QStringLiteral("g92_mm")] = axes(after.g92);
-    j[QStringLiteral("offset_arg")] = tripZ ? QJsonValue(offsetArg(after)) : QJsonValue();
-    auto steps = [](const machine::Steps4 &s) {
-        return QJsonArray{qint64(s[0]), qint64(s[1]), qint64(s[2]), qint64(s[3])};
-    };
-    j[QStringLiteral("unit_steps")] =
-        run.unitSteps ? QJsonValue(steps(*run.unitSteps)) : QJsonValue();
+    j[QStringLiteral("offset_arg")] = tripZ ? QJsonValue(cli::offsetArgument(after)) : QJsonValue();
+    j[QStringLiteral("unit_steps")] = cli::stepsJson(run.unitSteps);
     j[QStringLiteral("unit_lowest_z_steps")] =
         run.unitLowestZSteps ? QJsonValue(qint64(*run.unitLowestZSteps)) : QJsonValue();
     cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
@@ -226,7 +211,7 @@ int runZPlate(const QStringList &args)
                  .arg(before.systems[static_cast<std::size_t>(before.active)][2], 0, 'f', 3)
                  .arg(*a->plateMm, 0, 'f', 3)
                  .arg(*a->plateMm + a->retractMm, 0, 'f', 3)
-                 .arg(offsetArg(after)));
+                 .arg(cli::offsetArgument(after)));
     return 0;
 }
 
@@ -345,11 +330,7 @@ int runToolLength(const QStringList &args)
     j[QStringLiteral("trip_z_mm")] = tripZ ? QJsonValue(*tripZ) : QJsonValue();
     j[QStringLiteral("length_mm")] = length ? QJsonValue(*length) : QJsonValue();
     j[QStringLiteral("table")] = file.path.isEmpty() ? QJsonValue() : QJsonValue(file.path);
-    j[QStringLiteral("unit_steps")] =
-        run.unitSteps
-            ? QJsonValue(QJsonArray{qint64((*run.unitSteps)[0]), qint64((*run.unitSteps)[1]),
-                                    qint64((*run.unitSteps)[2]), qint64((*run.unitSteps)[3])})
-            : QJsonValue();
+    j[QStringLiteral("unit_steps")] = cli::stepsJson(run.unitSteps);
     cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
              QLatin1Char('\n'));
     if (!run.ok || !length) {

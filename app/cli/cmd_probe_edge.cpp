@@ -158,17 +158,6 @@ QString badValue(const EdgeArgs &a)
     return {};
 }
 
-QString offsetArg(const session::OffsetState &o)
-{
-    const session::Axes4 &v = o.systems[static_cast<std::size_t>(o.active)];
-    return QStringLiteral("%1:%2,%3,%4,%5")
-        .arg(session::workSystemName(o.active))
-        .arg(v[0], 0, 'f', 4)
-        .arg(v[1], 0, 'f', 4)
-        .arg(v[2], 0, 'f', 4)
-        .arg(v[3], 0, 'f', 4);
-}
-
 } // namespace
 
 int runProbeEdge(const QStringList &args, bool corner)
@@ -226,12 +215,8 @@ int runProbeEdge(const QStringList &args, bool corner)
     j[QStringLiteral("work_offset")] = session::workSystemName(after.active);
     const session::Axes4 &v = after.systems[static_cast<std::size_t>(after.active)];
     j[QStringLiteral("offset_mm")] = QJsonArray{v[0], v[1], v[2], v[3]};
-    j[QStringLiteral("offset_arg")] = found ? QJsonValue(offsetArg(after)) : QJsonValue();
-    j[QStringLiteral("unit_steps")] =
-        run.unitSteps
-            ? QJsonValue(QJsonArray{qint64((*run.unitSteps)[0]), qint64((*run.unitSteps)[1]),
-                                    qint64((*run.unitSteps)[2]), qint64((*run.unitSteps)[3])})
-            : QJsonValue();
+    j[QStringLiteral("offset_arg")] = found ? QJsonValue(offsetArgument(after)) : QJsonValue();
+    j[QStringLiteral("unit_steps")] = stepsJson(run.unitSteps);
     out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) + QLatin1Char('\n'));
     if (!found) {
         err(EdgeCli::tr("frezka-cli probe %1: %2\n").arg(name, run.error));
@@ -245,7 +230,7 @@ int runProbeEdge(const QStringList &args, bool corner)
             .arg(v[1], 0, 'f', 3)
             .arg(corner ? EdgeCli::tr("corner") : EdgeCli::tr("edge"))
             .arg(*a->diameterMm / 2, 0, 'f', 3)
-            .arg(offsetArg(after)));
+            .arg(offsetArgument(after)));
     return 0;
 }
 

@@ -184,10 +184,7 @@ void printReport(const Outcome &o)
     j[QStringLiteral("max_height_mm")] = o.map.maxZ();
     j[QStringLiteral("count_x")] = o.map.countX();
     j[QStringLiteral("count_y")] = o.map.countY();
-    auto steps = [](const machine::Steps4 &s) {
-        return QJsonArray{qint64(s[0]), qint64(s[1]), qint64(s[2]), qint64(s[3])};
-    };
-    j[QStringLiteral("unit_steps")] = o.unitSteps ? QJsonValue(steps(*o.unitSteps)) : QJsonValue();
+    j[QStringLiteral("unit_steps")] = cli::stepsJson(o.unitSteps);
     j[QStringLiteral("unit_lowest_z_steps")] =
         o.unitLowestZSteps ? QJsonValue(qint64(*o.unitLowestZSteps)) : QJsonValue();
     cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +

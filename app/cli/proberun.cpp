@@ -11,6 +11,7 @@
 
 #include <QCoreApplication>
 #include <QEventLoop>
+#include <QJsonArray>
 #include <QTimer>
 
 #include <algorithm>
@@ -125,6 +126,24 @@ ProbeRunOutcome runReal(const QString &port, const machine::MachineConfig &confi
 }
 
 } // namespace
+
+QString offsetArgument(const session::OffsetState &o)
+{
+    const session::Axes4 &v = o.systems[static_cast<std::size_t>(o.active)];
+    return QStringLiteral("%1:%2,%3,%4,%5")
+        .arg(session::workSystemName(o.active))
+        .arg(v[0], 0, 'f', 4)
+        .arg(v[1], 0, 'f', 4)
+        .arg(v[2], 0, 'f', 4)
+        .arg(v[3], 0, 'f', 4);
+}
+
+QJsonValue stepsJson(const std::optional<machine::Steps4> &s)
+{
+    if (!s)
+        return QJsonValue();
+    return QJsonArray{qint64((*s)[0]), qint64((*s)[1]), qint64((*s)[2]), qint64((*s)[3])};
+}
 
 ProbeRunOutcome runProbe(const QString &port, const QString &surface,
                          const machine::MachineConfig &config, const StartFn &start,

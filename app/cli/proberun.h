@@ -6,6 +6,9 @@
 
 #include "machine/machineconfig.h"
 #include "machine/steps.h"
+#include "session/workoffsets.h"
+
+#include <QJsonValue>
 
 #include <QString>
 #include <QStringList>
@@ -38,6 +41,12 @@ ProbeRunOutcome
 runProbe(const QString &port, const QString &surface, const machine::MachineConfig &config,
          const std::function<bool(session::HeightProbe &, const driver::MachineState &)> &start,
          const std::function<void(session::HeightProbe &, bool)> &done);
+
+// The active system's offset as a --offset argument ("G54:X,Y,Z,A", machine mm).
+QString offsetArgument(const session::OffsetState &offsets);
+// The emulator's counters as a JSON value: [x, y, z, a], or null when there are none (a real
+// port).
+QJsonValue stepsJson(const std::optional<machine::Steps4> &steps);
 
 // frezka-cli probe edge / probe corner (cmd_probe_edge.cpp): args after the subcommand.
 int runProbeEdge(const QStringList &args, bool corner);
