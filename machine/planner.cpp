@@ -141,8 +141,8 @@ bool Planner::checkPoint(const Point4 &p, std::uint32_t line)
         if (!withinSoftLimits(a, v)) { // the one soft-limit policy (softlimits.h)
             error(PlanErrorCode::SoftLimit, line,
                   std::string(1, axis) + " " + fmt(v) + " is outside the soft limits " +
-                      fmt(a.softMinMm) + " .. " + fmt(a.softMaxMm) +
-                      " mm; check the work offset and the program");
+                      fmt(a.softMinMm) + " .. " + fmt(a.softMaxMm) + (i == 3 ? " deg" : " mm") +
+                      "; check the work offset and the program");
             ok = false;
         }
         if (std::abs(stepsOf(v, a.stepsPerMm)) > kMaxCounter) {

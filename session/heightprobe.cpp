@@ -198,6 +198,10 @@ bool HeightProbe::begin(const HeightProbeSettings &settings, const gcode::Height
                       .arg(RunWorkflow::modeText(m_link.state().mode));
         return false;
     }
+    if (m_link.state().spindleOn) {
+        m_error = spindleTurningText();
+        return false;
+    }
     if (settings.slowFeedMmPerMin > 0 && !(settings.retractMm > 0)) {
         m_error = tr("Probing fast then slow needs a retract above 0 mm (%1 given): the tool "
                      "backs off by it before the slow probe.")
@@ -232,6 +236,23 @@ void HeightProbe::cancel()
     m_link.abort();
 }
 
+QString HeightProbe::spindleTurningText()
+{
+    return tr("The spindle is turning: stop it (M5 or the spindle button) before probing. A "
+              "probe or a sensor touched by a turning tool breaks one of them.");
+}
+
+// Before each probe move: a spindle switched on while probing (the operator's button) ends the
+// probing before the tool goes down, and the tool goes back up.
+bool HeightProbe::spindleStopsProbing()
+{
+    if (!m_link.state().spindleOn)
+        return false;
+    fail(spindleTurningText());
+    retract();
+    return true;
+}
+
 QString HeightProbe::nodeText(std::size_t index) const
 {
     const auto [i, j] = m_order[index];
@@ -242,6 +263,8 @@ QString HeightProbe::nodeText(std::size_t index) const
 // the tool never moves down except over the node.
 void HeightProbe::probeNext()
 {
+    if (spindleStopsProbing())
+        return;
     if (m_axis != 2) { // an edge: from where the tool stands (and the reach), along the axis
         m_phase = Phase::Probing;
         m_slowPass = false;
@@ -287,6 +310,8 @@ void HeightProbe::probeNext()
 // (a Z move alone, never below the clearance's limit), then G38.2 at the slow feed.
 void HeightProbe::probeSlow(double tripZMm)
 {
+    if (spindleStopsProbing())
+        return;
     const QChar axis(machine::kAxisLetters[std::size_t(m_axis)]);
     const double back = tripZMm - m_direction * m_settings.retractMm;
     const double end = m_axis == 2 ? m_settings.bottomZMm : edgeEndMm();

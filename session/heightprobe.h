@@ -13,7 +13,10 @@
 // probe that reaches the bottom without tripping fails the job. The trip point's Z (machine mm)
 // goes into the map, relative to the first node's (the map's reference_z_mm). After the last
 // node, after a failure and after cancel() the tool goes back up to the clearance (a Z move
-// alone), unless the link is gone. Every failure names the node (X, Y) and what to do.
+// alone), unless the link is gone. Every failure names the node (X, Y) and what to do. A turning
+// spindle (MachineState::spindleOn) refuses to start, and one switched on while probing ends it
+// before the next probe move (the tool goes back up): a probe or a tool-length sensor touched by
+// a turning tool breaks.
 
 #include "session/machinelink.h"
 #include "session/workoffsets.h"
@@ -128,6 +131,8 @@ private:
     void fail(const QString &why);
     void retract();
     void finish();
+    static QString spindleTurningText();
+    bool spindleStopsProbing();
     QString nodeText(std::size_t index) const;
     QString notTrippedText(std::size_t index) const;
     double edgeEndMm() const { return m_edgeStartMm + m_direction * m_settings.travelMm; }

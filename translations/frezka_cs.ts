@@ -7619,6 +7619,10 @@ Volby:
         <source>The probe moved from %1 %2 to %1 %3 without touching the edge: the edge is farther than the travel, or the probe is not connected. Check the probe and where the tool stands (beside the edge, below the work&apos;s top), or probe again with a longer travel.</source>
         <translation>Sonda dojela z %1 %2 do %1 %3, aniž by se dotkla hrany: hrana je dál, než dovoluje dráha, nebo sonda není připojena. Zkontrolujte sondu a kde nástroj stojí (vedle hrany, pod horní plochou obrobku), nebo sondujte znovu s delší dráhou.</translation>
     </message>
+    <message>
+        <source>The spindle is turning: stop it (M5 or the spindle button) before probing. A probe or a sensor touched by a turning tool breaks one of them.</source>
+        <translation>Vřeteno se točí: před sondováním ho zastavte (M5 nebo tlačítkem vřetena). Sonda nebo čidlo, kterého se dotkne točící se nástroj, se zničí – nebo nástroj.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::session::ProgramSession</name>

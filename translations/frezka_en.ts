@@ -7606,6 +7606,10 @@ Options:
         <source>The probe moved from %1 %2 to %1 %3 without touching the edge: the edge is farther than the travel, or the probe is not connected. Check the probe and where the tool stands (beside the edge, below the work&apos;s top), or probe again with a longer travel.</source>
         <translation>The probe moved from %1 %2 to %1 %3 without touching the edge: the edge is farther than the travel, or the probe is not connected. Check the probe and where the tool stands (beside the edge, below the work&apos;s top), or probe again with a longer travel.</translation>
     </message>
+    <message>
+        <source>The spindle is turning: stop it (M5 or the spindle button) before probing. A probe or a sensor touched by a turning tool breaks one of them.</source>
+        <translation>The spindle is turning: stop it (M5 or the spindle button) before probing. A probe or a sensor touched by a turning tool breaks one of them.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::session::ProgramSession</name>

@@ -323,17 +323,18 @@ int runToolLength(const QStringList &args)
             if (ok)
                 tripZ = probe.pointZMm();
         });
-    const std::optional<double> length =
-        tripZ ? std::optional<double>(session::toolLengthFromTrip(sensor, *tripZ)) : std::nullopt;
+    const bool tripped = tripZ.has_value();
+    const double tripMm = tripZ.value_or(0);
+    const double lengthMm = tripped ? session::toolLengthFromTrip(sensor, tripMm) : 0;
     QJsonObject j;
     j[QStringLiteral("tool")] = a->tool;
-    j[QStringLiteral("trip_z_mm")] = tripZ ? QJsonValue(*tripZ) : QJsonValue();
-    j[QStringLiteral("length_mm")] = length ? QJsonValue(*length) : QJsonValue();
+    j[QStringLiteral("trip_z_mm")] = tripped ? QJsonValue(tripMm) : QJsonValue();
+    j[QStringLiteral("length_mm")] = tripped ? QJsonValue(lengthMm) : QJsonValue();
     j[QStringLiteral("table")] = file.path.isEmpty() ? QJsonValue() : QJsonValue(file.path);
     j[QStringLiteral("unit_steps")] = cli::stepsJson(run.unitSteps);
     cli::out(QString::fromUtf8(QJsonDocument(j).toJson(QJsonDocument::Compact)) +
              QLatin1Char('\n'));
-    if (!run.ok || !length) {
+    if (!run.ok || !tripped) {
         cli::err(ProbeCli::tr("frezka-cli probe tool-length: %1\n").arg(run.error));
         return 1;
     }
@@ -342,16 +343,16 @@ int runToolLength(const QStringList &args)
                               "names no tool table: set tools.tableFile to keep it, or apply it "
                               "with G43.1 Z%2.\n")
                      .arg(a->tool)
-                     .arg(*length, 0, 'f', 4)
-                     .arg(*tripZ, 0, 'f', 4));
+                     .arg(lengthMm, 0, 'f', 4)
+                     .arg(tripMm, 0, 'f', 4));
         return 0;
     }
-    if (!storeToolLength(file, a->tool, *length))
+    if (!storeToolLength(file, a->tool, lengthMm))
         return 1;
     cli::err(ProbeCli::tr("Tool %1 is %2 mm long (tripped at machine Z %3); written to %4.\n")
                  .arg(a->tool)
-                 .arg(*length, 0, 'f', 4)
-                 .arg(*tripZ, 0, 'f', 4)
+                 .arg(lengthMm, 0, 'f', 4)
+                 .arg(tripMm, 0, 'f', 4)
                  .arg(file.path));
     return 0;
 }

@@ -152,6 +152,23 @@ TEST(Errors, SoftLimitNamesTheLineAndNothingRuns)
     EXPECT_TRUE(r.program.commands.empty());
 }
 
+TEST(Errors, ASoftLimitOfTheRotaryAxisIsInDegrees)
+{
+    machine::MachineConfig c = gve64();
+    c.axes[3].present = true;
+    c.axes[3].softMinMm = -10;
+    c.axes[3].softMaxMm = 10;
+    gcode::Toolpath tp;
+    tp.setOrigin({10, 10, -1, 0});
+    tp.appendFeed({20, 10, -1, 45}, 1000, 4);
+    const PlanResult r = plan(tp, c);
+    ASSERT_EQ(r.errors.size(), 1u);
+    EXPECT_EQ(r.errors[0].code, PlanErrorCode::SoftLimit);
+    EXPECT_EQ(r.errors[0].message,
+              "line 4: A 45.000 is outside the soft limits -10.000 .. 10.000 deg; check the work "
+              "offset and the program");
+}
+
 TEST(Errors, ArcBulgingOutOfTheTravelIsCaught)
 {
     gcode::Toolpath tp;

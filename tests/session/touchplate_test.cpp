@@ -117,6 +117,62 @@ TEST(TouchPlate, SlowProbingNeedsARetract)
     EXPECT_NE(b.probe.error().indexOf(QStringLiteral("needs a retract above 0 mm")), -1);
 }
 
+// A turning spindle: probing is refused before anything moves (the unit's counters unchanged,
+// no move on the wire); with the spindle stopped the same probe runs.
+TEST(TouchPlate, ATurningSpindleIsRefusedBeforeTheToolMoves)
+{
+    PlateBench b("plane:-5.3,0,0");
+    b.link.setSpindleRpm(12000);
+    ASSERT_TRUE(b.link.runUntil([&] { return b.link.port().unit().spindleTurning(); }, 10));
+    ASSERT_TRUE(b.link.runUntil([&] { return b.link.state().spindleOn; }, 10));
+    const auto before = b.link.port().unit().position();
+    EXPECT_FALSE(b.probe.startAt(10, 10, kPlate));
+    EXPECT_NE(b.probe.error().indexOf(QStringLiteral("The spindle is turning")), -1)
+        << b.probe.error().toStdString();
+    EXPECT_FALSE(b.probe.running());
+    b.link.runFor(2);
+    EXPECT_EQ(b.link.port().unit().position(), before);
+    EXPECT_TRUE(b.link.port().unit().trace().empty() ||
+                std::all_of(b.link.port().unit().trace().begin(),
+                            b.link.port().unit().trace().end(),
+                            [&](const emulator::TracePoint &p) { return p.position == before; }));
+
+    b.link.setSpindleRpm(0);
+    ASSERT_TRUE(b.link.runUntil([&] { return !b.link.port().unit().spindleTurning(); }, 10));
+    ASSERT_TRUE(b.link.runUntil([&] { return !b.link.state().spindleOn; }, 10));
+    ASSERT_TRUE(b.probe.startAt(10, 10, kPlate)) << b.probe.error().toStdString();
+    b.runToEnd();
+    ASSERT_TRUE(b.result && *b.result) << b.probe.error().toStdString();
+    EXPECT_NEAR(*b.probe.pointZMm(), -5.3, 1.0 / 200);
+}
+
+// The spindle switched on while probing (after the fast trip): the slow probe is not run, the
+// tool goes up and never touches again; the error says why.
+TEST(TouchPlate, ASpindleSwitchedOnWhileProbingEndsItBeforeTheNextProbeMove)
+{
+    PlateBench b("plane:-5.3,0,0");
+    b.touchBelowSteps = -5.25 * 200;
+    ASSERT_TRUE(b.probe.startAt(10, 10, kPlate)) << b.probe.error().toStdString();
+    bool switched = false;
+    b.link.runUntil(
+        [&] {
+            if (!switched && b.link.state().probeTripped) {
+                b.link.setSpindleRpm(12000);
+                switched = true;
+            }
+            return b.result.has_value();
+        },
+        600);
+    ASSERT_TRUE(switched);
+    ASSERT_TRUE(b.result);
+    EXPECT_FALSE(*b.result);
+    EXPECT_NE(b.probe.error().indexOf(QStringLiteral("The spindle is turning")), -1)
+        << b.probe.error().toStdString();
+    // Up at the clearance (a single point's failure: no trip recorded), not down at the work.
+    EXPECT_EQ(b.link.port().unit().position()[2], -4 * 200);
+    EXPECT_TRUE(b.link.port().unit().spindleTurning());
+}
+
 TEST(TouchPlate, TheActiveSystemsZPutsTheWorkTopAtZero)
 {
     OffsetState o;
