@@ -292,12 +292,12 @@ void RunPlanner::flattenTightCaps()
                                  m_link.commandS(m_link.brakeWireBytes(m_d[k].speed));
         tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
     }
-    std::vector<std::int64_t> &caps = m_scratchUnits; // the caps before flattening
+    std::vector<std::int32_t> &caps = m_scratchUnits; // the caps before flattening
     caps.assign(m_capUnits.begin(), m_capUnits.end() - 1);
     for (std::size_t k = 0; k < vertices; ++k) {
         if (!tight[k])
             continue;
-        std::int64_t least = caps[k];
+        std::int32_t least = caps[k];
         for (std::size_t j = k; j > 0 && k - j < kFlatWindow && tight[j - 1]; --j)
             least = std::min(least, caps[j - 1]);
         for (std::size_t j = k + 1; j < vertices && j - k <= kFlatWindow && tight[j]; ++j)
