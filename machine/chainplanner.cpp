@@ -116,7 +116,7 @@ void RunPlanner::planOnce()
         const PaceStart &from = m_paceStart[k];
         Derived &r = m_d[k];
         r.vMm = from.vMm;
-        r.wireCap = kInf;
+        r.wireCap = kNoCap;
         r.speed = from.speed;
         setAccel(r, from.accel, m_options);
     }
