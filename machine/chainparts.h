@@ -39,7 +39,8 @@ inline constexpr std::int32_t kNoCap = std::numeric_limits<std::int32_t>::max();
 // are made of) are not kept: the caps that follow from them are (RunPlanner::m_geoCap), and the
 // directions are derived again where the final statistics need them (RunPlanner::Directions).
 // V, A and the B caps are whole numbers at most the unit's pulse rate (A at most kMaxAccel), so
-// 32 bits: 72 bytes a move, not 88 (issue 17: the plan's peak holds one for every move of a run).
+// 32 bits, and a C command's bytes fit 8: 64 bytes a move, not 88 (issue 17: the plan's peak holds
+// one for every move of a run).
 struct Derived
 {
     double f = 0;              // speed units per path mm (VN: major steps/mm, VK: step length/mm)
@@ -52,12 +53,14 @@ struct Derived
     std::int32_t ownSpeed = 0; // the vector's own V cap (its feed and axis limits)
     std::int32_t wireCap = kNoCap; // B cap at both its ends so that it keeps the link's pace, units
     std::int32_t speedCap = kNoCap; // B cap at both its ends where V lies above its own cap, units
-    std::uint16_t wireBytes = 0;    // the C command on the serial line, bytes (at most ~60)
-    std::uint16_t widestBytes = 0;  // the widest C within the wire window either side (wirePace)
+    // The C command on the serial line, bytes: a letter, four 32-bit step counts of at most 11
+    // characters, separators and a checksum, under 70 (8 bits).
+    std::uint8_t wireBytes = 0;
+    std::uint8_t widestBytes = 0; // the widest C within the wire window either side (wirePace)
     bool isShort = false;
     bool restBefore = false; // the unit stands when it begins (the run's start, a forced rest)
 };
-static_assert(sizeof(Derived) <= 72, "Derived is held for every move of a run");
+static_assert(sizeof(Derived) <= 64, "Derived is held for every move of a run");
 
 // The serial link's timing for the link's pace (PlanOptions::wireLimited, docs/planner.md §4),
 // from the profile's link keys: its baud rate, latency, checksums and packets.

@@ -249,7 +249,7 @@ void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
     for (std::int32_t c : m.d)
         major = std::max<std::int64_t>(major, std::abs(c));
     r.isShort = major < m_options.shortThreshold; // the unit compares major-axis steps
-    r.wireBytes = static_cast<std::uint16_t>(m_link.vectorWireBytes(m.d));
+    r.wireBytes = static_cast<std::uint8_t>(m_link.vectorWireBytes(m.d)); // under 70
 }
 
 // Integer passes over moves first..last (a chain), then the vectors as they go out.
