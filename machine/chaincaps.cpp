@@ -86,7 +86,7 @@ void RunPlanner::vertexCaps(std::size_t k)
     double units = static_cast<double>(std::min(a.speed, b.speed));
     units = std::min(units, m_planGeoCap.empty() ? m_geoCap[k] : m_planGeoCap[k]);
     units = std::min({units, static_cast<double>(a.wireCap),
-                      static_cast<double>(b.wireCap)}); // the link's pace (infinite: off)
+                      static_cast<double>(b.wireCap)}); // the link's pace (kNoCap: off)
     units = std::min({units, static_cast<double>(a.speedCap),
                       static_cast<double>(b.speedCap)});          // V above a vector's own cap
     m_capUnits[k] = static_cast<std::int32_t>(floorUnits(units)); // units <= V <= the pulse rate
