@@ -48,7 +48,7 @@ void RunPlanner::wirePace()
             continue;
         const double room = fastest * fastest - static_cast<double>(r.accel) * 1000.0 * r.units;
         if (room >= static_cast<double>(kMinSpeed * kMinSpeed))
-            r.wireCap = std::floor(std::sqrt(room));
+            r.wireCap = static_cast<std::int32_t>(std::floor(std::sqrt(room))); // below V
         else {
             r.speed = std::clamp<std::int64_t>(static_cast<std::int64_t>(floorUnits(fastest)),
                                                kMinSpeed, r.speed);
@@ -83,7 +83,7 @@ void RunPlanner::sharePacedSpeeds(const std::vector<bool> &lowered)
         std::size_t lastLowered = k; // its last vector the pace lowered
         for (std::size_t j = k + 1; j < n; ++j) {
             const Derived &r = m_d[j];
-            const std::int64_t lower = std::min(level, r.speed);
+            const std::int64_t lower = std::min<std::int64_t>(level, r.speed);
             changes += r.speed != m_d[j - 1].speed ? 1 : 0;
             const double own = r.units / static_cast<double>(r.speed);
             const double loss = (units + r.units) / static_cast<double>(lower) - (owned + own);
@@ -96,7 +96,7 @@ void RunPlanner::sharePacedSpeeds(const std::vector<bool> &lowered)
         }
         level = m_d[k].speed;
         for (std::size_t j = k + 1; j <= lastLowered; ++j)
-            level = std::min(level, m_d[j].speed);
+            level = std::min<std::int64_t>(level, m_d[j].speed);
         for (; k <= lastLowered; ++k) {
             Derived &r = m_d[k];
             r.speed = level;
@@ -269,7 +269,7 @@ double RunPlanner::slowStretch(std::size_t first, std::size_t last, double missi
     double gained = -now;
     for (std::size_t j = first; j < last; ++j) {
         Derived &r = m_d[j];
-        r.speed = std::min(r.speed, level);
+        r.speed = static_cast<std::int32_t>(std::min<std::int64_t>(r.speed, level));
         gained += r.units / static_cast<double>(r.speed);
     }
     return std::max(0.0, gained);
@@ -292,12 +292,12 @@ void RunPlanner::flattenTightCaps()
                                  m_link.commandS(m_link.brakeWireBytes(m_d[k].speed));
         tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
     }
-    std::vector<std::int64_t> &caps = m_scratchUnits; // the caps before flattening
+    std::vector<std::int32_t> &caps = m_scratchUnits; // the caps before flattening
     caps.assign(m_capUnits.begin(), m_capUnits.end() - 1);
     for (std::size_t k = 0; k < vertices; ++k) {
         if (!tight[k])
             continue;
-        std::int64_t least = caps[k];
+        std::int32_t least = caps[k];
         for (std::size_t j = k; j > 0 && k - j < kFlatWindow && tight[j - 1]; --j)
             least = std::min(least, caps[j - 1]);
         for (std::size_t j = k + 1; j < vertices && j - k <= kFlatWindow && tight[j]; ++j)

@@ -32,26 +32,35 @@ inline double floorUnits(double x)
     return std::floor(x + 1e-9 * std::max(1.0, std::abs(x)));
 }
 
+// A B cap that does not bind (Derived::wireCap, speedCap): above every speed the unit takes.
+inline constexpr std::int32_t kNoCap = std::numeric_limits<std::int32_t>::max();
+
 // Everything the passes need about one move, derived once. Its directions (what the vertex caps
 // are made of) are not kept: the caps that follow from them are (RunPlanner::m_geoCap), and the
 // directions are derived again where the final statistics need them (RunPlanner::Directions).
+// V, A and the B caps are whole numbers at most the unit's pulse rate (A at most kMaxAccel), so
+// 32 bits, and a C command's bytes fit 8: 64 bytes a move, not 88 (issue 17: the plan's peak holds
+// one for every move of a run).
 struct Derived
 {
-    double f = 0;           // speed units per path mm (VN: major steps/mm, VK: step length/mm)
-    double units = 0;       // distance in speed units
-    double vMm = 0;         // cruise cap, mm/s
-    double aMm = 0;         // acceleration cap, mm/s²
-    std::int64_t speed = 0; // V
-    std::int64_t accel = 0; // A (thousands)
-    std::int64_t twoAU = 0; // 2 · A · usable distance, integer pulses²/s², floored
+    double f = 0;              // speed units per path mm (VN: major steps/mm, VK: step length/mm)
+    double units = 0;          // distance in speed units
+    double vMm = 0;            // cruise cap, mm/s
+    double aMm = 0;            // acceleration cap, mm/s²
+    std::int64_t twoAU = 0;    // 2 · A · usable distance, integer pulses²/s², floored
+    std::int32_t speed = 0;    // V
+    std::int32_t accel = 0;    // A (thousands)
+    std::int32_t ownSpeed = 0; // the vector's own V cap (its feed and axis limits)
+    std::int32_t wireCap = kNoCap; // B cap at both its ends so that it keeps the link's pace, units
+    std::int32_t speedCap = kNoCap; // B cap at both its ends where V lies above its own cap, units
+    // The C command on the serial line, bytes: a letter, four 32-bit step counts of at most 11
+    // characters, separators and a checksum, under 70 (8 bits).
+    std::uint8_t wireBytes = 0;
+    std::uint8_t widestBytes = 0; // the widest C within the wire window either side (wirePace)
     bool isShort = false;
-    bool restBefore = false;     // the unit stands when it begins (the run's start, a forced rest)
-    std::uint16_t wireBytes = 0; // the C command on the serial line, bytes (at most ~60)
-    std::uint16_t widestBytes = 0; // the widest C within the wire window either side (wirePace)
-    double wireCap = kInf;         // B cap at both its ends so that it keeps the link's pace, units
-    double speedCap = kInf;        // B cap at both its ends where V lies above its own cap, units
-    std::int64_t ownSpeed = 0;     // the vector's own V cap (its feed and axis limits)
+    bool restBefore = false; // the unit stands when it begins (the run's start, a forced rest)
 };
+static_assert(sizeof(Derived) <= 64, "Derived is held for every move of a run");
 
 // The serial link's timing for the link's pace (PlanOptions::wireLimited, docs/planner.md §4),
 // from the profile's link keys: its baud rate, latency, checksums and packets.

@@ -116,7 +116,7 @@ void RunPlanner::planOnce()
         const PaceStart &from = m_paceStart[k];
         Derived &r = m_d[k];
         r.vMm = from.vMm;
-        r.wireCap = kInf;
+        r.wireCap = kNoCap;
         r.speed = from.speed;
         setAccel(r, from.accel, m_options);
     }
@@ -249,14 +249,14 @@ void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
     for (std::int32_t c : m.d)
         major = std::max<std::int64_t>(major, std::abs(c));
     r.isShort = major < m_options.shortThreshold; // the unit compares major-axis steps
-    r.wireBytes = static_cast<std::uint16_t>(m_link.vectorWireBytes(m.d));
+    r.wireBytes = static_cast<std::uint8_t>(m_link.vectorWireBytes(m.d)); // under 70
 }
 
 // Integer passes over moves first..last (a chain), then the vectors as they go out.
 void RunPlanner::chain(std::size_t first, std::size_t last)
 {
     ++m_out.chains;
-    std::vector<std::int64_t> &b = m_scratchUnits;
+    std::vector<std::int32_t> &b = m_scratchUnits; // at most the caps: 32 bits
     b.assign(last - first + 1, 0);
     for (std::size_t k = first; k < last; ++k)
         b[k - first] = m_capUnits[k];
@@ -277,34 +277,37 @@ void RunPlanner::chain(std::size_t first, std::size_t last)
     }
 }
 
-void RunPlanner::fullPasses(std::size_t first, std::vector<std::int64_t> &b) const
+// The speeds are at most the caps (32 bits); their squares and the sums are taken in 64.
+void RunPlanner::fullPasses(std::size_t first, std::vector<std::int32_t> &b) const
 {
     const std::size_t n = b.size();
     for (std::size_t k = n - 1; k > 0; --k) {
-        const std::int64_t entry = isqrt(b[k] * b[k] + m_d[first + k].twoAU);
-        b[k - 1] = std::min(b[k - 1], entry);
+        const std::int64_t exit = b[k];
+        const std::int64_t entry = isqrt(exit * exit + m_d[first + k].twoAU);
+        b[k - 1] = static_cast<std::int32_t>(std::min<std::int64_t>(b[k - 1], entry));
     }
     std::int64_t e = 0;
     for (std::size_t k = 0; k + 1 < n; ++k) {
-        b[k] = std::min(b[k], isqrt(e * e + m_d[first + k].twoAU));
+        b[k] = static_cast<std::int32_t>(
+            std::min<std::int64_t>(b[k], isqrt(e * e + m_d[first + k].twoAU)));
         e = b[k];
     }
 }
 
 // grbl: when a block starts, the planner sees only the next `lookahead` blocks and plans
 // the last of them to stop.
-void RunPlanner::windowedPasses(std::size_t first, std::vector<std::int64_t> &b) const
+void RunPlanner::windowedPasses(std::size_t first, std::vector<std::int32_t> &b) const
 {
     const std::size_t n = b.size();
     const std::size_t window = static_cast<std::size_t>(std::max(2, m_options.grblLookahead));
-    const std::vector<std::int64_t> caps = b;
+    const std::vector<std::int32_t> caps = b;
     std::int64_t e = 0;
     for (std::size_t k = 0; k + 1 < n; ++k) {
         const std::size_t end = std::min(n - 1, k + window - 1);
         std::int64_t exit = 0; // the buffer's last block plans a stop
         for (std::size_t j = end; j > k; --j)
-            exit = std::min(caps[j - 1], isqrt(exit * exit + m_d[first + j].twoAU));
-        b[k] = std::min(exit, isqrt(e * e + m_d[first + k].twoAU));
+            exit = std::min<std::int64_t>(caps[j - 1], isqrt(exit * exit + m_d[first + j].twoAU));
+        b[k] = static_cast<std::int32_t>(std::min(exit, isqrt(e * e + m_d[first + k].twoAU)));
         e = b[k];
     }
 }
@@ -322,24 +325,27 @@ void RunPlanner::bound()
     const std::size_t n = m_moves.size();
     if (n == 0)
         return;
-    std::vector<double> a(n);
-    for (std::size_t k = 0; k < n; ++k) {
+    // Segment k's acceleration, computed where it is used rather than kept (8 bytes a move at the
+    // plan's peak, which the bound is otherwise: 40 MB at 5 M moves).
+    auto accelOf = [this](std::size_t k) {
         const Derived &r = m_d[k];
-        a[k] = 1000.0 * std::clamp(std::floor(r.aMm * r.f / 1000.0 + 1e-9), 1.0,
+        return 1000.0 * std::clamp(std::floor(r.aMm * r.f / 1000.0 + 1e-9), 1.0,
                                    static_cast<double>(kMaxAccel));
-    }
-    std::vector<double> x(n, 0.0);
+    };
+    std::vector<double> &x = m_scratch; // the vertex speeds: the passes' room, no longer needed
+    x.assign(n, 0.0);
     for (std::size_t k = 0; k + 1 < n; ++k)
         x[k] = boundCap(k);
     for (std::size_t k = n - 1; k > 0; --k) {
-        const double entry = std::sqrt(x[k] * x[k] + 2 * a[k] * m_d[k].units);
+        const double entry = std::sqrt(x[k] * x[k] + 2 * accelOf(k) * m_d[k].units);
         x[k - 1] = std::min(x[k - 1], entry);
     }
     double e = 0;
     for (std::size_t k = 0; k < n; ++k) {
         const Derived &r = m_d[k];
-        x[k] = std::min(x[k], std::sqrt(e * e + 2 * a[k] * r.units));
-        m_out.boundS += runVector(e, r.vMm * r.f, x[k], a[k], r.units).timeS;
+        const double a = accelOf(k);
+        x[k] = std::min(x[k], std::sqrt(e * e + 2 * a * r.units));
+        m_out.boundS += runVector(e, r.vMm * r.f, x[k], a, r.units).timeS;
         e = x[k];
     }
 }

@@ -54,8 +54,8 @@ private:
     Directions directions(const Move &m) const;
     void deriveOne(const Move &m, const Directions &dir, Derived &r);
     void chain(std::size_t first, std::size_t last);
-    void fullPasses(std::size_t first, std::vector<std::int64_t> &b) const;
-    void windowedPasses(std::size_t first, std::vector<std::int64_t> &b) const;
+    void fullPasses(std::size_t first, std::vector<std::int32_t> &b) const;
+    void windowedPasses(std::size_t first, std::vector<std::int32_t> &b) const;
     void bound();
 
     // chaincaps.cpp
@@ -114,12 +114,14 @@ private:
     std::vector<bool> m_softStop;
     std::vector<bool> m_stopAfter; // Move::stopAfter: no pass reads the moves themselves
     std::vector<double> m_extraS;  // link time of the B, V, A commands before move k (last plan)
-    std::vector<std::int64_t> m_capUnits; // B cap at the end of move k, speed units
+    // B cap at the end of move k, speed units: at most the unit's pulse rate (32 bits: 4 bytes a
+    // move less at the plan's peak, as the chain's speeds in m_scratchUnits).
+    std::vector<std::int32_t> m_capUnits;
     // Room one pass at a time uses (wirePace's and paceModalChanges' prefix sums, the caps
     // before flattening, a chain's speeds), kept from plan to plan: a run of millions of moves
     // otherwise maps, faults in and returns the same megabytes in every pass of every plan.
     std::vector<double> m_scratch;
-    std::vector<std::int64_t> m_scratchUnits;
+    std::vector<std::int32_t> m_scratchUnits;
     RunOutcome m_out;
 };
 

@@ -76,7 +76,7 @@ void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const Lin
         for (std::size_t j = first; j < end; ++j) {
             Derived &r = d[j];
             if (level > r.speed)
-                r.speedCap = roomCap[j];
+                r.speedCap = static_cast<std::int32_t>(roomCap[j]); // below V
             r.speed = level;
         }
     };
@@ -102,15 +102,15 @@ void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const Lin
         } else if (flexible && !near(r.speed)) {
             open(k);
         } else if (flexible && !rigid) {
-            level = std::max(level, r.speed);
-            least = std::min(least, r.speed);
+            level = std::max<std::int64_t>(level, r.speed);
+            least = std::min<std::int64_t>(least, r.speed);
         } else if (r.speed == level || (!flexible && !rigid && r.speed > level)) {
             level = r.speed; // a rigid vector at or above a flexible stretch's level
             rigid = rigid || !flexible;
         } else if (rigid) {
             // Below the stretch's V it takes the stretch down with it; above it, it runs at
             // the stretch's V: either while the time lost stays below a V command's cost.
-            const std::int64_t lower = std::min(level, r.speed);
+            const std::int64_t lower = std::min<std::int64_t>(level, r.speed);
             const double loss = (units + r.units) / static_cast<double>(lower) - (owned + own);
             if (loss > kRigidShare * penalty || (flexible && r.speed < level))
                 open(k);
