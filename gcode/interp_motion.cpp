@@ -303,7 +303,21 @@ bool Interpreter::probe(int motion, const Target &target, Error *error)
         return failAt(ErrorCode::ZeroFeedRate, col, gName(motion), error);
     if (end == m_pos)
         return failAt(ErrorCode::ProbeNoMotion, col, {}, error);
-    m_toolpath.appendProbe(end, static_cast<ProbeKind>(motion - 382), m_feedMm, pathLine());
+    const auto kind = static_cast<ProbeKind>(motion - 382);
+    const std::size_t n = m_probes++;
+    if (n < m_options.probeResults.size()) { // it has run: the rest goes on from where it stopped
+        const ProbeResult &r = m_options.probeResults[n];
+        m_toolpath.appendProbe(r.machineMm, kind, m_feedMm, pathLine());
+        moveTo({r.machineMm, toProgram(r.machineMm)});
+        m_probe = m_prog;
+        m_probed = r.tripped;
+        return true;
+    }
+    if (m_provisionalEntry == Result::kNoEntry) {
+        m_provisionalEntry = m_toolpath.size();
+        m_provisionalLine = pathLine();
+    }
+    m_toolpath.appendProbe(end, kind, m_feedMm, pathLine());
     moveTo(target);
     m_probe = m_prog;
     m_probed = true;

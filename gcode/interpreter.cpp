@@ -216,6 +216,9 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
     result.ended = m_ended;
     finishMark(&result.mark);
     result.toolTable = m_tools;
+    result.provisionalEntry = m_provisionalEntry;
+    result.provisionalLine = m_provisionalLine;
+    result.probes = m_probes;
     result.toolTableChanged = m_toolsChanged;
     result.toolpath = std::move(m_toolpath);
     m_toolpath = Toolpath{};

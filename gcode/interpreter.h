@@ -39,6 +39,15 @@ inline constexpr char kAxisLetters[4] = {'x', 'y', 'z', 'a'}; // Block letters o
 inline constexpr std::uint32_t kAxisBits =
     (1u << ('x' - 'a')) | (1u << ('y' - 'a')) | (1u << ('z' - 'a')) | (1u << ('a' - 'a'));
 
+// The outcome of a probe move (G38.x) the machine has run: where it stopped (machine mm, the
+// trip point or the programmed end) and whether the probe input changed.
+struct ProbeResult
+{
+    Point4 machineMm;
+    bool tripped = true;
+    friend bool operator==(const ProbeResult &, const ProbeResult &) = default;
+};
+
 struct Options
 {
     bool collectAllErrors = false; // check mode: report every bad block and go on
@@ -82,6 +91,12 @@ struct Options
     // Run from a line: the state where this line (1-based) begins is recorded in Result::mark
     // (gcode/linestate.h); 0 = none. The program is interpreted whole all the same.
     std::uint32_t startLine = 0;
+    // Programs that probe for themselves: the results of the probe moves already run, the first
+    // probe executed first. Probe n (counted in execution order, loops and calls included) with
+    // a result ends at its machineMm (the toolpath's probe entry ends there and the next move
+    // starts there) and sets #5061..#5064 to it and #5070 to tripped; a probe without one keeps
+    // its programmed end (both parameters as if it tripped there) and is provisional.
+    std::vector<ProbeResult> probeResults;
     // Called now and then (every 65 536 lines) with the bytes read so far and the total.
     std::function<void(std::size_t done, std::size_t total)> progress;
     // Set from another thread to stop the interpretation soon (every 4 096 lines executed);
@@ -108,6 +123,12 @@ struct Result
     // caller writes it back (writeToolTableFile) when the program has run.
     ToolTable toolTable;
     bool toolTableChanged = false;
+    // The first probe move without a result in Options::probeResults: its toolpath entry and
+    // line; the path from there on depends on where that probe will stop (kNoEntry / 0: none).
+    std::size_t provisionalEntry = kNoEntry;
+    std::uint32_t provisionalLine = 0;
+    std::size_t probes = 0; // probe moves executed
+    static constexpr std::size_t kNoEntry = std::numeric_limits<std::size_t>::max();
     bool ok() const { return errors.empty(); }
 };
 
@@ -432,6 +453,9 @@ private:
     double m_splineI = 0, m_splineJ = 0;
     Point4 m_probe; // #5061.. (program coordinates, mm)
     bool m_probed = false;
+    std::size_t m_probes = 0;                          // probe moves executed so far
+    std::size_t m_provisionalEntry = Result::kNoEntry; // Result::provisionalEntry
+    std::uint32_t m_provisionalLine = 0;
 };
 
 // Interprets a file (memory-mapped). A file that cannot be read gives FileOpenFailed.

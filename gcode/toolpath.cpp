@@ -123,10 +123,11 @@ void Toolpath::setEnd(std::size_t i, const Point4 &end)
     m_a[i] = end.a;
 }
 
-void Toolpath::appendEntries(const Toolpath &from, std::size_t first)
+void Toolpath::appendEntries(const Toolpath &from, std::size_t first, std::size_t end)
 {
-    reserve(size() + (from.size() > first ? from.size() - first : 0));
-    for (std::size_t i = first; i < from.size(); ++i) {
+    end = std::min(end, from.size());
+    reserve(size() + (end > first ? end - first : 0));
+    for (std::size_t i = first; i < end; ++i) {
         std::uint32_t aux = from.m_aux[i];
         switch (from.m_kind[i]) {
         case MotionKind::Arc:

@@ -105,9 +105,11 @@ public:
     // A dwell (kind Dwell) or another event (kind Event) at the current position.
     void appendEvent(const Event &event, double feedMmPerMin, std::uint32_t line);
 
-    // Appends the entries of `from` from index `first` on, as they are (run from a line: the
-    // program's rest after an approach that ends where from.start(first) is).
-    void appendEntries(const Toolpath &from, std::size_t first);
+    // Appends the entries of `from` from index `first` up to `end` (exclusive; its end when
+    // past it), as they are (run from a line: the program's rest after an approach that ends
+    // where from.start(first) is; a program that probes for itself: up to its next probe).
+    void appendEntries(const Toolpath &from, std::size_t first,
+                       std::size_t end = std::numeric_limits<std::size_t>::max());
 
     // Moves the end of entry i (cutter radius compensation moves the end of a queued move once
     // the next move is known); an arc keeps its centre.

@@ -23,6 +23,7 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     options.coordinateSystem = req.offsets.active;
     options.startMm = {req.startMm[0], req.startMm[1], req.startMm[2], req.startMm[3]};
     options.startLine = req.startLine;
+    options.probeResults = req.probeResults;
     options.toolTable = req.toolTable;
     options.programDirectory = req.programDirectory;
     options.subroutinePath = req.subroutinePath;
@@ -61,6 +62,9 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     }
     out.toolpath = std::make_shared<gcode::Toolpath>(std::move(result.toolpath));
     out.linesRead = result.linesRead;
+    out.provisionalEntry = result.provisionalEntry;
+    out.provisionalLine = result.provisionalLine;
+    out.probes = result.probes;
     out.cancelled = result.cancelled;
     out.errorsNotShown = result.errorsNotShown;
     out.mark = std::move(result.mark);

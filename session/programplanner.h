@@ -9,6 +9,7 @@
 
 #include "session/workoffsets.h"
 
+#include "gcode/interpreter.h"
 #include "gcode/linestate.h"
 #include "gcode/toolpath.h"
 #include "gcode/tooltable.h"
@@ -57,6 +58,8 @@ struct InterpretRequest
     // Splines (G5, G5.1, G5.2) are cut as chords within this of the curve: the profile's
     // motion.chordToleranceMm, the tolerance arcs are chorded with.
     double splineToleranceMm = 0.002;
+    // The results of the probe moves already run (gcode::Options::probeResults).
+    std::vector<gcode::ProbeResult> probeResults;
 };
 
 struct InterpretOutcome
@@ -74,6 +77,11 @@ struct InterpretOutcome
     // program has run).
     gcode::ToolTable toolTable;
     bool toolTableChanged = false;
+    // Where the path starts to depend on a probe not run yet (gcode::Result): the toolpath entry
+    // of that probe and its line (gcode::Result::kNoEntry / 0: none); probes executed.
+    std::size_t provisionalEntry = gcode::Result::kNoEntry;
+    std::uint32_t provisionalLine = 0;
+    std::size_t probes = 0;
 };
 
 InterpretOutcome interpretProgram(const InterpretRequest &request);

@@ -114,6 +114,7 @@ void RunWorkflow::setProgram(std::shared_ptr<const machine::UnitProgram> plan,
     m_planStart = startMm;
     m_name = name;
     m_notRunnable = notRunnable;
+    m_planEndsAtProbe = false;
     const Pending pending = std::exchange(m_pending, Pending::None);
     if (pending == Pending::Check)
         emit checked(m_plan != nullptr);
@@ -131,7 +132,7 @@ bool RunWorkflow::planStartsHere() const
 
 void RunWorkflow::runProgram()
 {
-    if (!m_plan) {
+    if (!m_plan && !m_follow) {
         const QString why =
             m_notRunnable.isEmpty()
                 ? tr("Open a program first.")
@@ -158,6 +159,21 @@ void RunWorkflow::runProgram()
         }
         emit message(tr("Warning: the machine is not homed; the program runs from counters "
                         "that were not set by homing (motion.runBeforeHoming)."));
+    }
+    if (m_follow) { // the whole program from here, up to its first probe
+        ProbeFollow::Next next = m_follow->start(state().positionMm);
+        if (!next.plan) {
+            emit failed(next.error);
+            if (m_step == Step::Running)
+                end(false, next.error);
+            return;
+        }
+        m_plan = next.plan;
+        m_planStart = state().positionMm;
+        m_planEndsAtProbe = next.endsAtProbe;
+        m_probesFollowed = 0;
+        startJob();
+        return;
     }
     // The plan is relative to where it starts: re-plan from the machine's actual position.
     if (m_replan && !planStartsHere()) {
@@ -378,8 +394,43 @@ void RunWorkflow::onError(const driver::MachineError &e)
         end(false, m_error);
 }
 
+// The job ended with its probe move (ProbeFollow plans each job up to the next probe): the
+// rest of the program, interpreted again with the probe's result, runs on from where the
+// machine stands. False when it cannot (the reason is the run's error).
+bool RunWorkflow::followProbe()
+{
+    const driver::MachineState &s = state();
+    const gcode::Point4 at{s.positionMm[0], s.positionMm[1], s.positionMm[2], s.positionMm[3]};
+    const std::uint32_t line = m_plan->commands.empty() ? 0 : m_plan->commands.back().sourceLine;
+    ProbeFollow::Next next = m_follow->afterProbe(at, s.probeTripped);
+    if (!next.plan) {
+        m_error = next.error;
+        emit failed(next.error);
+        return false;
+    }
+    ++m_probesFollowed;
+    const QString text =
+        s.probeTripped ? tr("Line %1: the probe touched at X %2 Y %3 Z %4 (machine); the rest of "
+                            "the program runs as interpreted with that result.")
+                       : tr("Line %1: the probe stopped at X %2 Y %3 Z %4 (machine) without "
+                            "touching; the rest of the program runs as interpreted with that "
+                            "result.");
+    emit message(text.arg(line)
+                     .arg(s.positionMm[0], 0, 'f', 3)
+                     .arg(s.positionMm[1], 0, 'f', 3)
+                     .arg(s.positionMm[2], 0, 'f', 3));
+    m_plan = next.plan;
+    m_planStart = s.positionMm;
+    m_planEndsAtProbe = next.endsAtProbe;
+    emit probeFollowed(line, next);
+    m_link.run(*m_plan);
+    return true;
+}
+
 void RunWorkflow::onJobFinished(bool ok)
 {
+    if (ok && m_follow && m_planEndsAtProbe && followProbe())
+        return; // the same run goes on
     m_lastJobS = jobElapsedS();
     m_jobClock.invalidate();
     emit jobFinished(ok);

@@ -23,8 +23,17 @@
 // spin-up first, as the GUI's Continue does), or are put to the front end (Ask:
 // programStopped(), then resume() or abort()). Other holds (an input, a failed probe, the path
 // guard) end a headless run whenever setEndOnHold() is on.
+//
+// Programs that probe for themselves (setProbeFollow(), session/probefollow.h): Run plans the
+// program from the machine's position up to its first probe (the ProbeFollow's, not the plan
+// setProgram() gave); when that job has ended with the probe, the rest of the program is
+// interpreted again with the probe's result and planned from where the machine stands up to the
+// next probe, and runs at once as the same run (no jobFinished in between; probeFollowed() tells
+// the front end, which shows the program as re-interpreted). A probe that fails (a G38.2 that
+// never touched) holds or ends the job as before.
 
 #include "session/machinelink.h"
+#include "session/probefollow.h"
 
 #include <QElapsedTimer>
 #include <QObject>
@@ -71,6 +80,12 @@ public:
     void setProgram(std::shared_ptr<const machine::UnitProgram> plan, const Position &startMm,
                     const QString &name, const QString &notRunnable = {});
     void setReplanner(Replanner replan) { m_replan = std::move(replan); }
+    // The program probes for itself: Run plans it with `follow`, one job up to each probe, the
+    // rest again after every probe move it runs (nullptr: not; the plan runs as given). Not
+    // owned; it must outlive the runs.
+    void setProbeFollow(ProbeFollow *follow) { m_follow = follow; }
+    // Probe moves after which the run went on with the re-interpreted rest, in this run.
+    int probesFollowed() const { return m_probesFollowed; }
     // Runs the program when the machine is ready; re-plans first from the machine's position.
     void runProgram();
     // Re-plans from the machine's position; checked(ok) follows.
@@ -117,6 +132,10 @@ signals:
     void programStopped(std::uint32_t line, const QString &text);
     // Run (or START) was asked before the machine was homed: home first (homeThenRun()).
     void homingNeeded();
+    // The probe move on `line` has run and the rest of the program, interpreted again with its
+    // result, runs on (ProbeFollow::Next: the re-interpreted program and where it is still
+    // provisional).
+    void probeFollowed(std::uint32_t line, const frezka::session::ProbeFollow::Next &next);
 
 private:
     enum class Step : std::uint8_t { None, Connecting, Homing, Running, Ended };
@@ -132,6 +151,7 @@ private:
     void end(bool ok, const QString &why);
     bool planStartsHere() const;
     bool answerProgramStop(const driver::MachineState &state);
+    bool followProbe();
 
     MachineLink &m_link;
     machine::MachineConfig m_profile;
@@ -140,6 +160,9 @@ private:
     Position m_planStart{};
     QString m_name, m_notRunnable;
     Replanner m_replan;
+    ProbeFollow *m_follow = nullptr;
+    int m_probesFollowed = 0;
+    bool m_planEndsAtProbe = false; // the job's last move is a probe to follow (m_follow)
     Pending m_pending = Pending::None;
     Step m_step = Step::None;
     bool m_homeFirst = false;

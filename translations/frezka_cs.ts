@@ -494,6 +494,25 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
     </message>
 </context>
 <context>
+    <name>ProbeFollow</name>
+    <message>
+        <source>%1: the probe move that ran does not end where the machine stopped when the program is interpreted again; it cannot go on from the probe&apos;s result.</source>
+        <translation>%1: provedený pohyb sondy po nové interpretaci programu nekončí tam, kde se stroj zastavil; z výsledku sondy nelze pokračovat.</translation>
+    </message>
+    <message>
+        <source>the program could not be interpreted again</source>
+        <translation>program nelze znovu interpretovat</translation>
+    </message>
+    <message>
+        <source>%1: the program runs %2 probe moves when interpreted with the results of those run so far, fewer than the %3 the machine has run; it cannot go on from the probe&apos;s result.</source>
+        <translation>%1: program interpretovaný s výsledky dosud provedených sond provede %2 pohybů sondy, méně než %3, které stroj už provedl; z výsledku sondy nelze pokračovat.</translation>
+    </message>
+    <message>
+        <source>the program could not be planned</source>
+        <translation>program nelze naplánovat</translation>
+    </message>
+</context>
+<context>
     <name>ProbeGridCli</name>
     <message>
         <source>usage: frezka-cli probe-grid (--area X0,Y0,X1,Y1 | --program FILE) --spacing MM --clearance MM --depth MM --feed MM/MIN --out MAP.csv [--port PATH|sim] [--surface SPEC] %1
@@ -685,6 +704,18 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm), such as plane:-5,0.001,0
 </source>
         <translation>frezka-cli run: --surface %1: očekáváno plane:Z0,DZDX,DZDY, sine:AMP,PERIODA[,Z0] nebo warp:Z0,DZDX,DZDY,AMP,PERIODA (mm stroje), např. plane:-5,0.001,0
+</translation>
+    </message>
+    <message>
+        <source>%1:%2: the path after this probe depends on where it stops: each part is planned when the probe before it has run
+</source>
+        <translation>%1:%2: dráha za touto sondou závisí na tom, kde se zastaví: každá část se naplánuje, až proběhne sonda před ní
+</translation>
+    </message>
+    <message>
+        <source>line %1: the probe has run; the rest of the program runs as interpreted with its result
+</source>
+        <translation>řádek %1: sonda proběhla; zbytek programu běží podle jejího výsledku
 </translation>
     </message>
 </context>
@@ -1002,6 +1033,12 @@ spuštění od řádku: frezka-cli run --from-line N spustí úlohu na řádku N
     <message>
         <source>Probe the work&apos;s zero (Z from a touch plate, X/Y from an edge or a corner) or a tool&apos;s length on the tool sensor (fast then slow G38.2)</source>
         <translation>Sondovat nulu obrobku (Z dotykovou destičkou, X/Y z hrany nebo rohu) nebo délku nástroje na snímači nástrojů (G38.2 rychle, pak pomalu)</translation>
+    </message>
+    <message>
+        <source>%1:%2: note: after this line the path depends on the probe&apos;s result; it is checked here as if the probe ended at its programmed end (run plans it once the probe has run)
+</source>
+        <translation>%1:%2: poznámka: za tímto řádkem závisí dráha na výsledku sondy; zde se kontroluje, jako by sonda skončila v naprogramovaném koncovém bodě (run ji naplánuje, až sonda proběhne)
+</translation>
     </message>
 </context>
 <context>
@@ -7782,6 +7819,14 @@ Volby:
     <message>
         <source>%1: continuing without an operator.</source>
         <translation>%1: pokračuje se bez obsluhy.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe touched at X %2 Y %3 Z %4 (machine); the rest of the program runs as interpreted with that result.</source>
+        <translation>Řádek %1: sonda se dotkla v X %2 Y %3 Z %4 (strojní souřadnice); zbytek programu běží podle tohoto výsledku.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe stopped at X %2 Y %3 Z %4 (machine) without touching; the rest of the program runs as interpreted with that result.</source>
+        <translation>Řádek %1: sonda se zastavila v X %2 Y %3 Z %4 (strojní souřadnice) bez dotyku; zbytek programu běží podle tohoto výsledku.</translation>
     </message>
 </context>
 <context>

@@ -494,6 +494,25 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
     </message>
 </context>
 <context>
+    <name>ProbeFollow</name>
+    <message>
+        <source>%1: the probe move that ran does not end where the machine stopped when the program is interpreted again; it cannot go on from the probe&apos;s result.</source>
+        <translation>%1: the probe move that ran does not end where the machine stopped when the program is interpreted again; it cannot go on from the probe&apos;s result.</translation>
+    </message>
+    <message>
+        <source>the program could not be interpreted again</source>
+        <translation>the program could not be interpreted again</translation>
+    </message>
+    <message>
+        <source>%1: the program runs %2 probe moves when interpreted with the results of those run so far, fewer than the %3 the machine has run; it cannot go on from the probe&apos;s result.</source>
+        <translation>%1: the program runs %2 probe moves when interpreted with the results of those run so far, fewer than the %3 the machine has run; it cannot go on from the probe&apos;s result.</translation>
+    </message>
+    <message>
+        <source>the program could not be planned</source>
+        <translation>the program could not be planned</translation>
+    </message>
+</context>
+<context>
     <name>ProbeGridCli</name>
     <message>
         <source>usage: frezka-cli probe-grid (--area X0,Y0,X1,Y1 | --program FILE) --spacing MM --clearance MM --depth MM --feed MM/MIN --out MAP.csv [--port PATH|sim] [--surface SPEC] %1
@@ -685,6 +704,18 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm), such as plane:-5,0.001,0
 </source>
         <translation>frezka-cli run: --surface %1: expected plane:Z0,DZDX,DZDY, sine:AMP,PERIOD[,Z0] or warp:Z0,DZDX,DZDY,AMP,PERIOD (machine mm), such as plane:-5,0.001,0
+</translation>
+    </message>
+    <message>
+        <source>%1:%2: the path after this probe depends on where it stops: each part is planned when the probe before it has run
+</source>
+        <translation>%1:%2: the path after this probe depends on where it stops: each part is planned when the probe before it has run
+</translation>
+    </message>
+    <message>
+        <source>line %1: the probe has run; the rest of the program runs as interpreted with its result
+</source>
+        <translation>line %1: the probe has run; the rest of the program runs as interpreted with its result
 </translation>
     </message>
 </context>
@@ -1002,6 +1033,12 @@ run from a line: frezka-cli run --from-line N starts the job at line N with the 
     <message>
         <source>Probe the work&apos;s zero (Z from a touch plate, X/Y from an edge or a corner) or a tool&apos;s length on the tool sensor (fast then slow G38.2)</source>
         <translation>Probe the work&apos;s zero (Z from a touch plate, X/Y from an edge or a corner) or a tool&apos;s length on the tool sensor (fast then slow G38.2)</translation>
+    </message>
+    <message>
+        <source>%1:%2: note: after this line the path depends on the probe&apos;s result; it is checked here as if the probe ended at its programmed end (run plans it once the probe has run)
+</source>
+        <translation>%1:%2: note: after this line the path depends on the probe&apos;s result; it is checked here as if the probe ended at its programmed end (run plans it once the probe has run)
+</translation>
     </message>
 </context>
 <context>
@@ -7769,6 +7806,14 @@ Options:
     <message>
         <source>%1: continuing without an operator.</source>
         <translation>%1: continuing without an operator.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe touched at X %2 Y %3 Z %4 (machine); the rest of the program runs as interpreted with that result.</source>
+        <translation>Line %1: the probe touched at X %2 Y %3 Z %4 (machine); the rest of the program runs as interpreted with that result.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe stopped at X %2 Y %3 Z %4 (machine) without touching; the rest of the program runs as interpreted with that result.</source>
+        <translation>Line %1: the probe stopped at X %2 Y %3 Z %4 (machine) without touching; the rest of the program runs as interpreted with that result.</translation>
     </message>
 </context>
 <context>

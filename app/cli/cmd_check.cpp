@@ -18,6 +18,7 @@
 #include "gcode/trace.h"
 #include "machine/machineconfig.h"
 #include "machine/planner.h"
+#include "session/probefollow.h"
 #include "session/travelcheck.h"
 
 #include <QCoreApplication>
@@ -195,6 +196,17 @@ int runCheck(const QStringList &args)
                          .arg(file) +
                      QLatin1Char('\n'));
         return 1;
+    }
+    // A program that probes for itself: what follows its first probe is checked as if the probe
+    // ended at its programmed end (docs/probing.md, "Programs that probe for themselves").
+    if (session::dependsOnProbe(*program->toolpath, program->provisionalEntry)) {
+        cli::err(QCoreApplication::translate("frezka::cli",
+                                             "%1:%2: note: after this line the path depends on "
+                                             "the probe's result; it is checked here as if the "
+                                             "probe ended at its programmed end (run plans it "
+                                             "once the probe has run)\n")
+                     .arg(file)
+                     .arg(program->provisionalLine));
     }
     if (!planFor(file, *program->toolpath, options))
         return 1;

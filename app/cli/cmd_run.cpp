@@ -51,6 +51,7 @@
 #include "machine/planner.h"
 #include "machine/steps.h"
 #include "session/plannedspeed.h"
+#include "session/probefollow.h"
 #include "session/programplanner.h"
 #include "session/runfromline.h"
 
@@ -171,6 +172,7 @@ struct Prepared
     std::optional<double> workTopMm;       // the highest Z a feed move reaches: the top of the work
     std::vector<float> lineEndS;           // planned seconds to the end of each line
     std::optional<session::FromLine> from; // run from a line: the state and the approach
+    std::shared_ptr<session::ProbeFollow> follow; // the program probes for itself
 };
 
 std::optional<double> workTop(const gcode::Toolpath &path)
@@ -184,6 +186,32 @@ std::optional<double> workTop(const gcode::Toolpath &path)
     return top;
 }
 
+// A program that probes for itself (its path after a probe depends on the probe's result): the
+// first job up to its first probe, the rest planned by the run workflow after each probe
+// (session/probefollow.h).
+std::optional<Prepared> prepareFollow(const RunArgs &a, const machine::MachineConfig &config,
+                                      session::InterpretRequest request,
+                                      const session::InterpretOutcome &whole)
+{
+    cli::err(RunCli::tr("%1:%2: the path after this probe depends on where it stops: each part is "
+                        "planned when the probe before it has run\n")
+                 .arg(a.file)
+                 .arg(whole.provisionalLine));
+    auto follow = std::make_shared<session::ProbeFollow>(std::move(request), config);
+    const session::ProbeFollow::Next first = follow->start({});
+    for (const session::ProgramMessage &w : first.planned.warnings)
+        cli::err(RunCli::tr("warning: %1\n").arg(w.text));
+    if (!first.plan) {
+        cli::err(first.error + QLatin1Char('\n'));
+        return std::nullopt;
+    }
+    std::vector<float> lineEndS = session::plannedLineTimes(
+        *first.plan, first.planned.stats.speedModeVk, first.planned.stats.estimatedS);
+    // No work top from the path: its Z after the probe is not known before it runs.
+    return Prepared{config, *first.plan, first.planned.stats, std::nullopt, std::move(lineEndS),
+                    {},     follow};
+}
+
 std::optional<Prepared> prepare(const RunArgs &a)
 {
     std::optional<machine::MachineConfig> config = cli::loadProfile(a.program.machine);
@@ -192,10 +220,15 @@ std::optional<Prepared> prepare(const RunArgs &a)
     // The in-process emulator's link has the latency given here: the plan keeps its pace.
     if (a.port == QLatin1String("sim"))
         config->link.latencyMs = a.latencyMs;
-    const auto g = cli::interpretFile(a.file, a.program, nullptr, std::uint32_t(a.fromLine));
+    session::InterpretRequest request;
+    const auto g =
+        cli::interpretFile(a.file, a.program, nullptr, std::uint32_t(a.fromLine), &request);
     if (!g)
         return std::nullopt;
     std::shared_ptr<const gcode::Toolpath> job = g->toolpath;
+    if (session::dependsOnProbe(*g->toolpath, g->provisionalEntry) && a.fromLine == 0 &&
+        a.program.heightMap.isEmpty())
+        return prepareFollow(a, *config, std::move(request), *g);
     std::optional<session::FromLine> approach;
     if (a.fromLine > 0) {
         // The machine stands at its zero when the run starts (the plan's start, as for a whole
@@ -222,9 +255,13 @@ std::optional<Prepared> prepare(const RunArgs &a)
     }
     std::vector<float> lineEndS =
         session::plannedLineTimes(*p.program, p.stats.speedModeVk, p.stats.estimatedS);
-    return Prepared{
-        *config, std::move(*p.program), p.stats, workTop(*g->toolpath), std::move(lineEndS),
-        approach};
+    return Prepared{*config,
+                    std::move(*p.program),
+                    p.stats,
+                    workTop(*g->toolpath),
+                    std::move(lineEndS),
+                    approach,
+                    nullptr};
 }
 
 double bytesPerVector(const machine::UnitProgram &program, bool checksums)
@@ -255,8 +292,9 @@ void printReport(const RunOutcome &o, const machine::UnitProgram &program,
                  const machine::PlanStats &stats, int baud)
 {
     const int axes = program.axisCount;
-    const machine::Steps4 expected =
-        program.commands.empty() ? program.startSteps : program.commands.back().endSteps;
+    const machine::Steps4 expected = o.lastPlanEnd              ? *o.lastPlanEnd
+                                     : program.commands.empty() ? program.startSteps
+                                                                : program.commands.back().endSteps;
     const driver::JobReport &r = o.report;
     const double streamS = r.lastVectorAckS - r.startS;
     const double bpv = bytesPerVector(program, true);
@@ -301,6 +339,8 @@ void printReport(const RunOutcome &o, const machine::UnitProgram &program,
     j[QStringLiteral("recovered")] = static_cast<qint64>(r.recovered);
     j[QStringLiteral("path_faults")] = static_cast<qint64>(r.pathFaults);
     j[QStringLiteral("program_stops")] = o.programStops;
+    // Probe moves after which the rest of a program that probes for itself was planned again.
+    j[QStringLiteral("probes_followed")] = o.probesFollowed;
     if (o.cutDepth) { // --cut-depth: the tool's depth below the simulated surface while cutting
         const cli::CutDepth &d = *o.cutDepth;
         auto at = [](const std::array<double, 3> &p) { return QJsonArray{p[0], p[1], p[2]}; };
@@ -356,9 +396,10 @@ int runRun(const QStringList &args)
     auto prepared = prepare(*a);
     if (!prepared)
         return 1;
-    const auto &[config, program, stats, top, lineEndS, from] = *prepared;
+    const auto &[config, program, stats, top, lineEndS, from, follow] = *prepared;
     const session::RemainingTime remaining(lineEndS, stats.estimatedS);
     RunArgs run = *a;
+    run.follow = follow;
     if (from && run.virtualClock)
         run.watchBelowZMm = from->safeZMm;
     const RunOutcome o = run.virtualClock ? cli::runVirtual(run, config, program, top, remaining)
@@ -377,7 +418,9 @@ int runRun(const QStringList &args)
     printReport(o, program, stats, baud);
     // A program that ends with a probe that tripped ends where it tripped, not at its
     // programmed end (the job stops short there, driver/link/probemove.h).
+    // A program that probes for itself ends where its last part was planned to.
     const machine::Steps4 expected = o.probeSteps && *o.probeSteps == o.finalSteps ? *o.probeSteps
+                                     : o.lastPlanEnd                               ? *o.lastPlanEnd
                                      : program.commands.empty() ? program.startSteps
                                                                 : program.commands.back().endSteps;
     for (int i = 0; i < program.axisCount; ++i) {

@@ -136,7 +136,8 @@ std::optional<machine::MachineConfig> loadProfile(const QString &path)
 
 std::optional<session::InterpretOutcome> interpretFile(const QString &file,
                                                        const ProgramOptions &options,
-                                                       int *errorCount, std::uint32_t startLine)
+                                                       int *errorCount, std::uint32_t startLine,
+                                                       session::InterpretRequest *requestOut)
 {
     QFile f(file);
     if (!f.open(QIODevice::ReadOnly)) {
@@ -174,6 +175,8 @@ std::optional<session::InterpretOutcome> interpretFile(const QString &file,
     request.maxErrors =
         gcode::Options{}.maxErrors; // a terminal lists as many as the interpreter keeps
     session::InterpretOutcome outcome = session::interpretProgram(request);
+    if (requestOut)
+        *requestOut = request;
     for (const session::ProgramMessage &w : outcome.warnings)
         err(w.text + QLatin1Char('\n'));
     if (errorCount) // the errors shown (the last line may say how many more) and those not

@@ -44,10 +44,10 @@ std::optional<machine::MachineConfig> loadProfile(const QString &path);
 // The file read and interpreted from the offsets at the machine's zero; every error on stderr
 // as FILE:LINE:COL: message; nullopt on any (*errorCount: how many). With --height-map the
 // toolpath is bent to the map (a cut outside it is an error naming its line). startLine: the state
-// where that line begins is in the outcome's mark (run from a line), 0 = none.
-std::optional<session::InterpretOutcome> interpretFile(const QString &file,
-                                                       const ProgramOptions &options,
-                                                       int *errorCount = nullptr,
-                                                       std::uint32_t startLine = 0);
+// where that line begins is in the outcome's mark (run from a line), 0 = none. requestOut: the
+// request it was interpreted with (to interpret it again, session/probefollow.h).
+std::optional<session::InterpretOutcome>
+interpretFile(const QString &file, const ProgramOptions &options, int *errorCount = nullptr,
+              std::uint32_t startLine = 0, session::InterpretRequest *requestOut = nullptr);
 
 } // namespace frezka::cli

@@ -131,6 +131,25 @@ private:
     session::ProgramText m_text;
 };
 
+// A program that probes for itself: the workflow follows its probes; each one's rest is counted
+// and its plan's end kept for the final check.
+void followProbes(const RunArgs &a, session::RunWorkflow &workflow, RunOutcome &out)
+{
+    if (!a.follow)
+        return;
+    workflow.setProbeFollow(a.follow.get());
+    QObject::connect(&workflow, &session::RunWorkflow::probeFollowed,
+                     [&out](std::uint32_t line, const session::ProbeFollow::Next &next) {
+                         ++out.probesFollowed;
+                         const machine::UnitProgram &p = *next.plan;
+                         out.lastPlanEnd =
+                             p.commands.empty() ? p.startSteps : p.commands.back().endSteps;
+                         cli::err(RunCli::tr("line %1: the probe has run; the rest of the program "
+                                             "runs as interpreted with its result\n")
+                                      .arg(line));
+                     });
+}
+
 void setProgramStops(const RunArgs &a, session::RunWorkflow &workflow)
 {
     workflow.setProgramStops(a.continueAtStops ? session::RunWorkflow::ProgramStops::Continue
@@ -286,6 +305,7 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     workflow.setProfile(config);
     workflow.setEndOnHold(true); // nobody at the machine to answer a hold
     workflow.setProgram(std::make_shared<const machine::UnitProgram>(program), {}, a.file);
+    followProbes(a, workflow, out);
     bool ended = false;
     QObject::connect(&workflow, &session::RunWorkflow::runEnded, [&](bool ok) { ended = ok; });
     Progress progress(std::move(remaining));
@@ -361,6 +381,7 @@ RunOutcome runReal(const RunArgs &a, const machine::MachineConfig &config,
     workflow.setProfile(config);
     workflow.setEndOnHold(true);
     workflow.setProgram(std::make_shared<const machine::UnitProgram>(program), {}, a.file);
+    followProbes(a, workflow, out);
     std::optional<bool> finished;
     QEventLoop loop;
     Progress progress(std::move(remaining));

@@ -9,6 +9,7 @@
 #include "driver/link/emulatorport.h"
 #include "machine/machineconfig.h"
 #include "machine/unitprogram.h"
+#include "session/probefollow.h"
 #include "session/remainingtime.h"
 
 #include <QCoreApplication>
@@ -16,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 namespace frezka::cli {
@@ -53,6 +55,9 @@ struct RunArgs
     QString surface;
     // --cut-depth (with --surface): the tool's depth below the surface sampled while it cuts.
     bool cutDepth = false;
+    // Set by the command, not parsed: the program probes for itself (session/probefollow.h); the
+    // run workflow plans each job up to the next probe and the rest again after it.
+    std::shared_ptr<session::ProbeFollow> follow;
 };
 
 // --cut-depth: the tool tip's depth below the simulated surface (mm, positive below), sampled
@@ -81,6 +86,8 @@ struct RunOutcome
     std::optional<std::array<std::int64_t, 4>> firstBelowSteps; // RunArgs::watchBelowZMm's
     std::optional<std::array<std::int64_t, 4>> probeSteps;      // the last probe's trip point
     std::optional<CutDepth> cutDepth;                           // RunArgs::cutDepth's
+    int probesFollowed = 0; // RunArgs::follow: probes after which the rest was planned again
+    std::optional<std::array<std::int64_t, 4>> lastPlanEnd; // ... where the last job's plan ends
     QString error;
 };
 

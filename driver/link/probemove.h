@@ -9,8 +9,11 @@
 // input disarmed. A G38.2/.4 that did not trip fails the job. The planner planned the rest of
 // the program from the probe's programmed end, so when the probe stops short the path guard is
 // switched off, and when motion follows the job ends there (to be planned again from the trip
-// point) rather than run displaced; otherwise the job's stream runs on. A probe move aborted
-// before it stops is not evaluated (no probe error after the abort): the input is disarmed
+// point) rather than run displaced; otherwise the job's stream runs on. A front end that runs
+// a program probing for itself (session/probefollow.h) plans each job only up to and including
+// its next probe, so that nothing follows it: the job ends there (finished, the result in
+// probeSteps / probeTripped) and the front end plans the rest from the trip point. A probe move
+// aborted before it stops is not evaluated (no probe error after the abort): the input is disarmed
 // only. The arming and the
 // reading of the outcome are machine/manualmoves.h's (probeArming, probeOutcome).
 
