@@ -2,6 +2,8 @@
 
 #include "heightmapdialog.h"
 
+#include "heightmapmesh.h"
+
 #include "session/machinelink.h"
 
 #include <QCheckBox>
@@ -38,13 +40,6 @@ QPushButton *button(const char *name)
     auto *b = new QPushButton;
     b->setObjectName(QLatin1String(name));
     return b;
-}
-
-// Blue (the lowest) through green to red (the highest).
-QColor heightColour(double t)
-{
-    t = std::clamp(t, 0.0, 1.0);
-    return QColor::fromHsvF(float((1 - t) * 240.0 / 360.0), 0.45f, 1.0f);
 }
 
 } // namespace
@@ -248,6 +243,7 @@ bool HeightMapDialog::probe()
     m_status->setText(tr("Probing %1 points…").arg(m_probe->pointsTotal()));
     showMap();
     updateButtons();
+    emit mapChanged();
     return true;
 }
 
@@ -268,6 +264,7 @@ void HeightMapDialog::onPointProbed(int, int, int done, int total)
     m_progress->setValue(done);
     m_status->setText(tr("Probed %1 of %2 points.").arg(done).arg(total));
     showMap();
+    emit mapChanged();
 }
 
 void HeightMapDialog::onFinished(bool ok)
@@ -284,6 +281,7 @@ void HeightMapDialog::onFinished(bool ok)
     }
     showMap();
     updateButtons();
+    emit mapChanged();
     emit probingFinished(ok);
 }
 
@@ -292,6 +290,23 @@ void HeightMapDialog::setMap(const gcode::HeightMap &map)
     m_map = map;
     showMap();
     updateButtons();
+    emit mapChanged();
+}
+
+std::vector<bool> HeightMapDialog::probedNodes() const
+{
+    if (!m_map)
+        return {};
+    std::vector<bool> probed(std::size_t(m_map->countX()) * std::size_t(m_map->countY()),
+                             !m_probe->running());
+    if (m_probe->running()) {
+        const auto order = session::serpentineOrder(m_map->countX(), m_map->countY());
+        for (int k = 0; k < m_probe->pointsDone() && k < int(order.size()); ++k) {
+            const auto [i, j] = order[std::size_t(k)];
+            probed[std::size_t(j) * std::size_t(m_map->countX()) + std::size_t(i)] = true;
+        }
+    }
+    return probed;
 }
 
 bool HeightMapDialog::saveTo(const QString &path)
@@ -370,7 +385,7 @@ void HeightMapDialog::showMap()
         if (k >= done)
             continue;
         auto *item = new QTableWidgetItem(QString::number(map.z(i, j), 'f', 3));
-        item->setBackground(heightColour(hi > lo ? (map.z(i, j) - lo) / (hi - lo) : 0.5));
+        item->setBackground(heightMapColour(hi > lo ? (map.z(i, j) - lo) / (hi - lo) : 0.5));
         item->setTextAlignment(Qt::AlignCenter);
         m_table->setItem(map.countY() - 1 - j, i, item);
     }

@@ -17,6 +17,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QCheckBox;
 class QDoubleSpinBox;
@@ -55,6 +56,8 @@ public:
     bool isProbing() const;
     const std::optional<gcode::HeightMap> &map() const { return m_map; }
     void setMap(const gcode::HeightMap &map);
+    // Per node of map() (j * countX + i): probed yet (all when not probing).
+    std::vector<bool> probedNodes() const;
     bool saveTo(const QString &path);   // the map file; false with the error shown
     bool loadFrom(const QString &path); // reads a map file into the dialog
     QString statusText() const;
@@ -66,6 +69,8 @@ public:
 signals:
     void applyRequested(const frezka::gcode::HeightMap &map, bool zeroAtReference);
     void removeRequested();
+    // map() or probedNodes() changed: a point probed, probing started or ended, a map loaded.
+    void mapChanged();
     void probingFinished(bool ok);
 
 protected:

@@ -184,6 +184,8 @@ void MainWindow::buildMenus()
                     m_consoleDock, m_plotDock})
         m_viewMenu->addAction(d->toggleViewAction());
     m_viewMenu->addSeparator();
+    buildHeightMapViewActions();
+    m_viewMenu->addSeparator();
     m_resetLayoutAction =
         m_viewMenu->addAction(QString(), this, [this] { restoreState(m_defaultState); });
 
@@ -243,6 +245,7 @@ void MainWindow::retranslate()
     m_commissionAction->setText(tr("C&ommission this machine…"));
     m_viewMenu->setTitle(tr("&View"));
     m_resetLayoutAction->setText(tr("&Reset layout"));
+    retranslateHeightMapView();
     m_toolsMenu->setTitle(tr("&Tools"));
     if (m_grinderAction)
         m_grinderAction->setText(tr("&Grinder transfer (ANC/K51)…"));

@@ -24,6 +24,8 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 class QLabel;
 class QMenu;
@@ -143,6 +145,9 @@ public:
     // and returned; it probes on `link` (tests: a simulated one), null: the window's own.
     // mainwindow_heightmap.cpp.
     HeightMapDialog *openHeightMap(session::MachineLink *link = nullptr);
+    // The height map file (docs/height-map.md) applied to the program, as the dialog's Apply
+    // without moving the work zero (frezka --height-map); false with *error set when unreadable.
+    bool applyHeightMapFile(const QString &path, QString *error);
     // Machine › Probe work zero… (issue 19 item 2): Z from a plate, X/Y from an edge or corner.
     class ProbeZeroDialog *openProbeZero();
     // The last message shown to the user as an error (tests read it; no modal dialog needed).
@@ -218,6 +223,11 @@ private:
     void buildFromLineActions(); // Machine › Run from line…, Run the whole program
     void buildToolTableAction(); // Machine › Tool table…
     void buildHeightMapAction(); // Machine › Height map…
+    // View › Height map and its Z scale (the map's mesh in the toolpath view), from the settings.
+    void buildHeightMapViewActions();
+    void retranslateHeightMapView();
+    // The view shows the dialog's map (probed so far, or loaded), else the program's, else none.
+    void showHeightMapInView();
     // The program loaded again bent to the map (nullopt: as written); the work's Z zero on the
     // map's first point when zeroAtReference.
     void applyHeightMap(const std::optional<gcode::HeightMap> &map, bool zeroAtReference);
@@ -255,7 +265,10 @@ private:
         *m_disconnectAction, *m_settingsAction, *m_unitConfigAction, *m_runFromLineAction,
         *m_wholeProgramAction, *m_aboutAction, *m_shortcutsAction,
         *m_grinderAction = nullptr, *m_resetLayoutAction, *m_toolTableAction, *m_saveTraceAction,
-        *m_commissionAction = nullptr, *m_heightMapAction = nullptr, *m_probeZeroAction = nullptr;
+        *m_commissionAction = nullptr, *m_heightMapAction = nullptr, *m_probeZeroAction = nullptr,
+        *m_heightMapViewAction = nullptr;
+    QMenu *m_heightMapScaleMenu = nullptr;
+    std::vector<std::pair<QAction *, double>> m_heightMapScaleActions; // View › Height map Z
     ProgramSession *m_program;
     QFileSystemWatcher *m_watcher; // the loaded program's file
     bool m_reloadAfterJob = false; // it changed while its job ran: ask when the job ends

@@ -8,13 +8,16 @@
 #include "consolewidget.h"
 #include "heightmapdialog.h"
 #include "probezerodialog.h"
+#include "toolpathview.h"
 
 #include "session/heightprobe.h"
 #include "session/machinelink.h"
 #include "session/programsession.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QMenu>
+#include <QSettings>
 
 namespace frezka::gui {
 
@@ -24,6 +27,65 @@ void MainWindow::buildHeightMapAction()
     m_heightMapAction->setObjectName(QStringLiteral("heightMap"));
     m_probeZeroAction = m_machineMenu->addAction(QString(), this, [this] { openProbeZero(); });
     m_probeZeroAction->setObjectName(QStringLiteral("probeZero"));
+}
+
+void MainWindow::buildHeightMapViewActions()
+{
+    QSettings settings;
+    ToolpathViewModel *model = m_view->model();
+    m_heightMapViewAction = m_viewMenu->addAction(QString());
+    m_heightMapViewAction->setObjectName(QStringLiteral("viewHeightMap"));
+    m_heightMapViewAction->setCheckable(true);
+    m_heightMapViewAction->setChecked(
+        settings.value(QStringLiteral("view/heightMap"), true).toBool());
+    model->setHeightMapVisible(m_heightMapViewAction->isChecked());
+    connect(m_heightMapViewAction, &QAction::toggled, this, [model](bool on) {
+        model->setHeightMapVisible(on);
+        QSettings().setValue(QStringLiteral("view/heightMap"), on);
+    });
+    m_heightMapScaleMenu = m_viewMenu->addMenu(QString());
+    m_heightMapScaleMenu->setObjectName(QStringLiteral("viewHeightMapScale"));
+    auto *group = new QActionGroup(this);
+    const double saved = settings.value(QStringLiteral("view/heightMapZScale"), 1.0).toDouble();
+    for (const double scale : {1.0, 10.0, 100.0}) {
+        QAction *a = m_heightMapScaleMenu->addAction(QString());
+        a->setObjectName(QStringLiteral("viewHeightMapScale%1").arg(int(scale)));
+        a->setCheckable(true);
+        a->setChecked(scale == saved);
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [model, scale] {
+            model->setHeightMapZScale(scale);
+            QSettings().setValue(QStringLiteral("view/heightMapZScale"), scale);
+        });
+        m_heightMapScaleActions.emplace_back(a, scale);
+    }
+    if (!group->checkedAction()) // a value from elsewhere: true scale
+        m_heightMapScaleActions.front().first->setChecked(true);
+    for (const auto &[action, scale] : m_heightMapScaleActions)
+        if (action->isChecked())
+            model->setHeightMapZScale(scale);
+}
+
+void MainWindow::retranslateHeightMapView()
+{
+    m_heightMapViewAction->setText(tr("&Height map"));
+    m_heightMapViewAction->setToolTip(
+        tr("Show the probed or loaded height map in the toolpath view"));
+    m_heightMapScaleMenu->setTitle(tr("Height map &Z scale"));
+    for (const auto &[action, scale] : m_heightMapScaleActions)
+        action->setText(scale == 1.0 ? tr("&True scale")
+                                     : tr("Heights &exaggerated %1×").arg(int(scale)));
+}
+
+void MainWindow::showHeightMapInView()
+{
+    ToolpathViewModel *model = m_view->model();
+    if (m_heightMap && m_heightMap->map())
+        model->setHeightMap(*m_heightMap->map(), m_heightMap->probedNodes());
+    else if (m_program->heightMap())
+        model->setHeightMap(*m_program->heightMap());
+    else
+        model->clearHeightMap();
 }
 
 ProbeZeroDialog *MainWindow::openProbeZero()
@@ -48,6 +110,7 @@ HeightMapDialog *MainWindow::openHeightMap(session::MachineLink *link)
                 [this](const gcode::HeightMap &map, bool zero) { applyHeightMap(map, zero); });
         connect(m_heightMap, &HeightMapDialog::removeRequested, this,
                 [this] { applyHeightMap(std::nullopt, false); });
+        connect(m_heightMap, &HeightMapDialog::mapChanged, this, [this] { showHeightMapInView(); });
         connect(m_program, &ProgramSession::loaded, m_heightMap, [this] {
             const auto &loaded = m_program->program();
             m_heightMap->setProgramArea(loaded.ok() ? session::cutArea(*loaded.toolpath)
@@ -65,6 +128,15 @@ HeightMapDialog *MainWindow::openHeightMap(session::MachineLink *link)
     return m_heightMap;
 }
 
+bool MainWindow::applyHeightMapFile(const QString &path, QString *error)
+{
+    const std::optional<gcode::HeightMap> map = gcode::HeightMap::load(path, error);
+    if (!map)
+        return false;
+    applyHeightMap(map, false);
+    return true;
+}
+
 void MainWindow::applyHeightMap(const std::optional<gcode::HeightMap> &map, bool zeroAtReference)
 {
     if (map && zeroAtReference) {
@@ -73,6 +145,10 @@ void MainWindow::applyHeightMap(const std::optional<gcode::HeightMap> &map, bool
         m_offsets->setZero(2, at);
     }
     m_program->setHeightMap(map);
+    if (map)
+        m_view->model()->setHeightMap(*map);
+    else
+        m_view->model()->clearHeightMap(); // Remove: the map goes from the view too
     if (m_heightMap) {
         m_heightMap->setWorkZero(m_offsets->state().total());
         m_heightMap->setApplied(map.has_value());

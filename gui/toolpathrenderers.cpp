@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <initializer_list>
 
 namespace frezka::gui {
 namespace {
@@ -62,6 +63,70 @@ std::vector<OverlayLine> toolLines(const ToolpathViewModel &model, float mmPerPi
     return out;
 }
 
+std::vector<OverlayLine> heightMapNodeLines(const ToolpathViewModel &model, float mmPerPixel)
+{
+    std::vector<OverlayLine> out;
+    const HeightMapMesh *mesh = model.shownHeightMap();
+    if (!mesh)
+        return out;
+    const float r = 4.f * mmPerPixel;
+    const QColor c = model.colours().heightMapNode;
+    for (std::size_t k = 0; k < mesh->nodes.size(); ++k) {
+        if (!mesh->probed[k])
+            continue;
+        const QVector3D p = mesh->nodes[k];
+        out.push_back({p - QVector3D(r, 0, 0), p + QVector3D(r, 0, 0), c});
+        out.push_back({p - QVector3D(0, r, 0), p + QVector3D(0, r, 0), c});
+        out.push_back({p - QVector3D(0, 0, r), p + QVector3D(0, 0, r), c});
+    }
+    return out;
+}
+
+namespace {
+
+QColor withAlpha(QColor c, int alpha)
+{
+    c.setAlpha(alpha);
+    return c;
+}
+
+// The mean of the colours (a face's or a line's, from its corners').
+QColor mixed(std::initializer_list<QColor> colours)
+{
+    float r = 0, g = 0, b = 0;
+    for (const QColor &c : colours) {
+        r += c.redF();
+        g += c.greenF();
+        b += c.blueF();
+    }
+    const float n = float(colours.size());
+    return QColor::fromRgbF(r / n, g / n, b / n);
+}
+
+// The mesh's faces (semi-transparent, each triangle its corners' mean colour) and grid lines.
+template<typename ToScreen>
+void paintHeightMap(QPainter &p, const HeightMapMesh &mesh, const ViewColours &colours,
+                    const ToScreen &toScreen)
+{
+    p.setPen(Qt::NoPen);
+    for (std::size_t t = 0; t + 2 < mesh.triangles.size(); t += 3) {
+        const auto a = mesh.triangles[t], b = mesh.triangles[t + 1], c = mesh.triangles[t + 2];
+        p.setBrush(withAlpha(mixed({mesh.colours[a], mesh.colours[b], mesh.colours[c]}),
+                             colours.heightMapFillAlpha));
+        const QPointF corners[3] = {toScreen(mesh.nodes[a]), toScreen(mesh.nodes[b]),
+                                    toScreen(mesh.nodes[c])};
+        p.drawPolygon(corners, 3);
+    }
+    p.setBrush(Qt::NoBrush);
+    for (const auto &[a, b] : mesh.edges) {
+        p.setPen(QPen(
+            withAlpha(mixed({mesh.colours[a], mesh.colours[b]}), colours.heightMapLineAlpha), 1.0));
+        p.drawLine(toScreen(mesh.nodes[a]), toScreen(mesh.nodes[b]));
+    }
+}
+
+} // namespace
+
 bool openGlUsable()
 {
     if (qEnvironmentVariableIntValue("FREZKA_SOFTWARE_VIEW") != 0)
@@ -107,6 +172,14 @@ QImage SoftwareToolpathRenderer::renderImage(const QSize &size) const
         p.setPen(QPen(l.colour, 1.0));
         p.drawLine(toScreen(l.a), toScreen(l.b));
     }
+    const float mmPerPixel = m_model->camera().scaleMmPerPixel(size);
+    if (const HeightMapMesh *mesh = m_model->shownHeightMap()) { // under the path
+        paintHeightMap(p, *mesh, colours, toScreen);
+        for (const auto &l : heightMapNodeLines(*m_model, mmPerPixel)) {
+            p.setPen(QPen(l.colour, 1.0));
+            p.drawLine(toScreen(l.a), toScreen(l.b));
+        }
+    }
     if (const auto &scene = m_model->scene(); scene && !scene->isEmpty()) {
         const std::size_t cutEnd = m_model->cutEntry() == ToolpathViewModel::kNoneCut
                                        ? 0
@@ -124,7 +197,7 @@ QImage SoftwareToolpathRenderer::renderImage(const QSize &size) const
         }
     }
     p.setRenderHint(QPainter::Antialiasing);
-    for (const auto &l : toolLines(*m_model, m_model->camera().scaleMmPerPixel(size))) {
+    for (const auto &l : toolLines(*m_model, mmPerPixel)) {
         p.setPen(QPen(l.colour, 1.0));
         p.drawLine(toScreen(l.a), toScreen(l.b));
     }
@@ -162,6 +235,24 @@ varying vec4 v_colour;
 void main() { gl_FragColor = v_colour; }
 )";
 
+// The height map: each vertex its own colour (alpha included).
+const char *kMeshVertexShader = R"(
+attribute vec3 a_pos;
+attribute vec4 a_colour;
+uniform mat4 u_mvp;
+varying vec4 v_colour;
+void main() {
+    gl_Position = u_mvp * vec4(a_pos, 1.0);
+    v_colour = a_colour;
+}
+)";
+
+void appendVertex(std::vector<float> &out, const QVector3D &p, const QColor &c, int alpha)
+{
+    out.insert(out.end(), {p.x(), p.y(), p.z(), float(c.redF()), float(c.greenF()),
+                           float(c.blueF()), float(alpha) / 255.f});
+}
+
 } // namespace
 
 GlToolpathRenderer::GlToolpathRenderer(ToolpathViewModel *model, QWidget *parent)
@@ -170,6 +261,7 @@ GlToolpathRenderer::GlToolpathRenderer(ToolpathViewModel *model, QWidget *parent
 {
     connect(model, &ToolpathViewModel::changed, this, qOverload<>(&QWidget::update));
     connect(model, &ToolpathViewModel::sceneChanged, this, [this] { m_sceneDirty = true; });
+    connect(model, &ToolpathViewModel::heightMapChanged, this, [this] { m_meshDirty = true; });
 }
 
 GlToolpathRenderer::~GlToolpathRenderer()
@@ -177,6 +269,7 @@ GlToolpathRenderer::~GlToolpathRenderer()
     makeCurrent();
     m_vbo.destroy();
     m_overlayVbo.destroy();
+    m_meshVbo.destroy();
     doneCurrent();
 }
 
@@ -190,9 +283,68 @@ void GlToolpathRenderer::initializeGL()
               m_program.addShaderFromSourceCode(QOpenGLShader::Fragment, kFragmentShader);
     m_program.bindAttributeLocation("a_pos", 0);
     m_ready = m_ready && m_program.link();
+    m_ready = m_ready &&
+              m_meshProgram.addShaderFromSourceCode(QOpenGLShader::Vertex, kMeshVertexShader) &&
+              m_meshProgram.addShaderFromSourceCode(QOpenGLShader::Fragment, kFragmentShader);
+    m_meshProgram.bindAttributeLocation("a_pos", 0);
+    m_meshProgram.bindAttributeLocation("a_colour", 1);
+    m_ready = m_ready && m_meshProgram.link();
     m_vbo.create();
     m_overlayVbo.create();
+    m_meshVbo.create();
     m_sceneDirty = true;
+    m_meshDirty = true;
+}
+
+void GlToolpathRenderer::uploadHeightMap()
+{
+    m_meshDirty = false;
+    m_meshTriangleVertices = m_meshLineVertices = 0;
+    const HeightMapMesh *mesh = m_model->shownHeightMap();
+    if (!mesh)
+        return;
+    const ViewColours &c = m_model->colours();
+    std::vector<float> data; // x, y, z, r, g, b, a: the triangles, then the grid lines
+    data.reserve((mesh->triangles.size() + mesh->edges.size() * 2) * 7);
+    for (std::size_t t = 0; t + 2 < mesh->triangles.size(); t += 3) {
+        const auto a = mesh->triangles[t], b = mesh->triangles[t + 1], d = mesh->triangles[t + 2];
+        const QColor mean = mixed({mesh->colours[a], mesh->colours[b], mesh->colours[d]});
+        for (const auto k : {a, b, d})
+            appendVertex(data, mesh->nodes[k], mean, c.heightMapFillAlpha);
+    }
+    m_meshTriangleVertices = int(data.size() / 7);
+    for (const auto &[a, b] : mesh->edges) {
+        const QColor mean = mixed({mesh->colours[a], mesh->colours[b]});
+        appendVertex(data, mesh->nodes[a], mean, c.heightMapLineAlpha);
+        appendVertex(data, mesh->nodes[b], mean, c.heightMapLineAlpha);
+    }
+    m_meshLineVertices = int(data.size() / 7) - m_meshTriangleVertices;
+    m_meshVbo.bind();
+    m_meshVbo.allocate(data.data(), int(data.size() * sizeof(float)));
+    m_meshVbo.release();
+}
+
+void GlToolpathRenderer::drawHeightMap(const QMatrix4x4 &mvp)
+{
+    if (m_meshDirty)
+        uploadHeightMap();
+    if (m_meshTriangleVertices + m_meshLineVertices == 0)
+        return;
+    m_meshProgram.bind();
+    m_meshProgram.setUniformValue("u_mvp", mvp);
+    m_meshVbo.bind();
+    m_meshProgram.enableAttributeArray(0);
+    m_meshProgram.enableAttributeArray(1);
+    m_meshProgram.setAttributeBuffer(0, GL_FLOAT, 0, 3, 7 * sizeof(float));
+    m_meshProgram.setAttributeBuffer(1, GL_FLOAT, 3 * sizeof(float), 4, 7 * sizeof(float));
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDrawArrays(GL_TRIANGLES, 0, m_meshTriangleVertices);
+    glDrawArrays(GL_LINES, m_meshTriangleVertices, m_meshLineVertices);
+    glDisable(GL_BLEND);
+    m_meshProgram.disableAttributeArray(1);
+    m_meshVbo.release();
+    m_meshProgram.release();
 }
 
 void GlToolpathRenderer::uploadScene()
@@ -241,8 +393,10 @@ void GlToolpathRenderer::paintGL()
     const qreal dpr = devicePixelRatioF();
     const QSize vp(int(width() * dpr), int(height() * dpr));
     glViewport(0, 0, vp.width(), vp.height());
+    const QMatrix4x4 mvp = m_model->camera().viewProjection(size());
+    drawHeightMap(mvp); // under everything but the box: the path shows through it
     m_program.bind();
-    m_program.setUniformValue("u_mvp", m_model->camera().viewProjection(size()));
+    m_program.setUniformValue("u_mvp", mvp);
     const auto &c = m_model->colours();
     const QVector4D cols[4] = {
         {float(c.rapid.redF()), float(c.rapid.greenF()), float(c.rapid.blueF()), 1.f},
@@ -251,6 +405,8 @@ void GlToolpathRenderer::paintGL()
         {float(c.probe.redF()), float(c.probe.greenF()), float(c.probe.blueF()), 1.f}};
     m_program.setUniformValueArray("u_colours", cols, 4);
     drawOverlay(boxLines(*m_model));
+    const float mmPerPixel = m_model->camera().scaleMmPerPixel(size());
+    drawOverlay(heightMapNodeLines(*m_model, mmPerPixel));
     if (m_segmentCount > 0) {
         const auto &scene = m_model->scene();
         const std::size_t cutEnd = m_model->cutEntry() == ToolpathViewModel::kNoneCut
@@ -270,7 +426,7 @@ void GlToolpathRenderer::paintGL()
         glDrawArrays(GL_LINES, GLint(cutEnd * 2), GLsizei((m_segmentCount - cutEnd) * 2));
         m_vbo.release();
     }
-    drawOverlay(toolLines(*m_model, m_model->camera().scaleMmPerPixel(size())));
+    drawOverlay(toolLines(*m_model, mmPerPixel));
     m_program.release();
 }
 

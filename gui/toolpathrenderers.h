@@ -25,6 +25,8 @@ struct OverlayLine
 std::vector<OverlayLine> boxLines(const ToolpathViewModel &model);
 // The tool marker (drawn over the path), about 30 px tall.
 std::vector<OverlayLine> toolLines(const ToolpathViewModel &model, float mmPerPixel);
+// The shown height map's probed nodes as small 3D crosses (about 8 px); none when hidden.
+std::vector<OverlayLine> heightMapNodeLines(const ToolpathViewModel &model, float mmPerPixel);
 
 class SoftwareToolpathRenderer : public QWidget
 {
@@ -61,13 +63,20 @@ protected:
 
 private:
     void uploadScene();
+    void uploadHeightMap();
+    void drawHeightMap(const QMatrix4x4 &mvp);
     void drawOverlay(const std::vector<OverlayLine> &lines);
     void drawLines(const std::vector<float> &xyz, const QColor &colour);
 
     ToolpathViewModel *m_model;
     QOpenGLShaderProgram m_program;
+    QOpenGLShaderProgram m_meshProgram; // per-vertex colours: the height map
     QOpenGLBuffer m_vbo{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer m_overlayVbo{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer m_meshVbo{QOpenGLBuffer::VertexBuffer};
+    int m_meshTriangleVertices = 0; // then the grid lines' vertices
+    int m_meshLineVertices = 0;
+    bool m_meshDirty = true;
     std::vector<std::pair<std::size_t, SegmentClass>> m_runs; // first segment, class
     std::size_t m_segmentCount = 0;
     bool m_sceneDirty = true;

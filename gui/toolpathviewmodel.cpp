@@ -73,6 +73,53 @@ void ToolpathViewModel::setPreset(ViewPreset preset)
     emit changed();
 }
 
+void ToolpathViewModel::setHeightMap(const gcode::HeightMap &map, const std::vector<bool> &probed)
+{
+    m_heightMap = map;
+    m_heightMapProbed = probed;
+    rebuildHeightMap();
+}
+
+void ToolpathViewModel::clearHeightMap()
+{
+    if (!m_heightMap)
+        return;
+    m_heightMap.reset();
+    m_heightMapProbed.clear();
+    rebuildHeightMap();
+}
+
+void ToolpathViewModel::setHeightMapVisible(bool visible)
+{
+    if (visible == m_heightMapVisible)
+        return;
+    m_heightMapVisible = visible;
+    emit heightMapChanged();
+    emit changed();
+}
+
+void ToolpathViewModel::setHeightMapZScale(double scale)
+{
+    if (scale <= 0 || scale == m_heightMapZScale)
+        return;
+    m_heightMapZScale = scale;
+    rebuildHeightMap();
+}
+
+const HeightMapMesh *ToolpathViewModel::shownHeightMap() const
+{
+    return m_heightMap && m_heightMapVisible ? &m_heightMapMesh : nullptr;
+}
+
+void ToolpathViewModel::rebuildHeightMap()
+{
+    m_heightMapMesh = m_heightMap
+                          ? buildHeightMapMesh(*m_heightMap, m_heightMapProbed, m_heightMapZScale)
+                          : HeightMapMesh{};
+    emit heightMapChanged();
+    emit changed();
+}
+
 void ToolpathViewModel::fitAll()
 {
     SceneBounds b;
@@ -80,6 +127,10 @@ void ToolpathViewModel::fitAll()
         b = m_scene->bounds;
     } else if (m_travel.valid) {
         b = m_travel;
+    }
+    if (const HeightMapMesh *mesh = shownHeightMap(); mesh && mesh->bounds.valid) {
+        b.include(mesh->bounds.min);
+        b.include(mesh->bounds.max);
     }
     if (b.valid) {
         b.include(m_tool);

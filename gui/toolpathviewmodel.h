@@ -1,7 +1,9 @@
 #pragma once
 // ToolpathViewModel: what both toolpath renderers show — the scene, the camera, the tool
-// marker, how far the program has been cut, the machine travel box and the program bounds.
+// marker, how far the program has been cut, the machine travel box, the program bounds and the
+// height map's mesh (gui/heightmapmesh.h).
 
+#include "heightmapmesh.h"
 #include "toolpathscene.h"
 #include "viewcamera.h"
 
@@ -9,6 +11,8 @@
 #include <QObject>
 
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace frezka::gui {
 
@@ -24,6 +28,9 @@ struct ViewColours
     QColor travel{110, 110, 120};
     QColor boundsOk{90, 200, 90};
     QColor boundsBad{255, 40, 40};
+    QColor heightMapNode{245, 245, 245}; // the probed nodes' markers
+    int heightMapFillAlpha = 90;         // the mesh's faces: the toolpath shows through
+    int heightMapLineAlpha = 200;        // its grid lines
     QColor colourOf(SegmentClass c) const;
 };
 
@@ -51,6 +58,20 @@ public:
     void setBoundsOutsideLimits(bool outside);
     bool boundsOutsideLimits() const { return m_outside; }
 
+    // The height map drawn over the path (docs/height-map.md, "In the 3D view"); probed: one
+    // flag per node, empty = all probed. The mesh is rebuilt at once; the camera stays.
+    void setHeightMap(const gcode::HeightMap &map, const std::vector<bool> &probed = {});
+    void clearHeightMap();
+    bool hasHeightMap() const { return m_heightMap.has_value(); }
+    // View › Height map: shown or hidden (kept while hidden).
+    void setHeightMapVisible(bool visible);
+    bool heightMapVisible() const { return m_heightMapVisible; }
+    // The heights' exaggeration in the view (1: true scale; the path is never scaled).
+    void setHeightMapZScale(double scale);
+    double heightMapZScale() const { return m_heightMapZScale; }
+    // The mesh to draw: null when there is no map or it is hidden.
+    const HeightMapMesh *shownHeightMap() const;
+
     ViewCamera &camera() { return m_camera; }
     const ViewCamera &camera() const { return m_camera; }
     void setPreset(ViewPreset preset);
@@ -62,6 +83,7 @@ public:
 signals:
     void changed();
     void sceneChanged();
+    void heightMapChanged(); // the shown mesh changed (appeared, went, rebuilt)
 
 private:
     std::shared_ptr<const ToolpathScene> m_scene;
@@ -71,6 +93,13 @@ private:
     bool m_outside = false;
     ViewCamera m_camera;
     ViewColours m_colours;
+    std::optional<gcode::HeightMap> m_heightMap;
+    std::vector<bool> m_heightMapProbed;
+    HeightMapMesh m_heightMapMesh;
+    bool m_heightMapVisible = true;
+    double m_heightMapZScale = 1.0;
+
+    void rebuildHeightMap();
 };
 
 } // namespace frezka::gui

@@ -40,3 +40,32 @@ cat > "$units/machine.json" <<'JSON'
 JSON
 XDG_CONFIG_HOME="$tmp/units" shot en units-line.png --screenshot-running 15 \
     --screenshot-dock unitsDock
+# A height map applied to a PCB-style program (docs/height-map.md "In the 3D view"): the mesh
+# over the cuts, its heights exaggerated 100x (View › Height map Z scale) to show the warp.
+board="$tmp/board"
+mkdir -p "$board/Frezka"
+printf '[view]\nheightMapZScale=100\n' > "$board/Frezka/frezka.conf"
+awk 'BEGIN {
+    print "G21 G90 G94\nG10 L2 P1 X20 Y20 Z-10\nG54\nM3 S10000\nG0 Z2"
+    for (k = 0; k < 5; ++k) {
+        y = 5 + k * 12
+        printf "G0 X5 Y%d\nG1 Z-0.1 F100\nG1 X75 F900\nG1 Y%d\nG1 X5\nG1 Y%d\nG0 Z2\n", y, y + 4, y
+    }
+    print "G0 X26 Y30\nG1 Z-0.1 F100\nG2 X26 Y30 I-6 J0 F900\nG0 Z2\nM5\nM2"
+}' > "$board/board.nc"
+awk 'BEGIN {
+    print "# frezka-height-map 1\n# origin_x_mm: 20\n# origin_y_mm: 20"
+    print "# spacing_x_mm: 10\n# spacing_y_mm: 10\n# count_x: 9\n# count_y: 7"
+    print "# reference_z_mm: -10\nx_mm,y_mm,z_mm"
+    pi = 3.14159265358979
+    for (j = 0; j < 7; ++j)
+        for (i = 0; i < 9; ++i) {
+            x = 10 * i; y = 10 * j
+            z = 0.002 * x + 0.001 * y + 0.05 * sin(x / 100 * 2 * pi) * sin(y / 100 * 2 * pi + 0.5)
+            printf "%d,%d,%.4f\n", 20 + x, 20 + y, z
+        }
+}' > "$board/board-map.csv"
+XDG_CONFIG_HOME="$board" xvfb-run -a -s "-screen 0 1366x768x24" "$build/app/frezka" \
+    --language en --height-map "$board/board-map.csv" --screenshot "$out/height-map-view.png" \
+    "$board/board.nc"
+echo "wrote $out/height-map-view.png"

@@ -4802,6 +4802,26 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>&amp;Probe work zero…</source>
         <translation>&amp;Sondovat nulu obrobku…</translation>
     </message>
+    <message>
+        <source>&amp;Height map</source>
+        <translation>&amp;Výšková mapa</translation>
+    </message>
+    <message>
+        <source>Show the probed or loaded height map in the toolpath view</source>
+        <translation>Zobrazit nasondovanou nebo načtenou výškovou mapu v pohledu na dráhu nástroje</translation>
+    </message>
+    <message>
+        <source>Height map &amp;Z scale</source>
+        <translation>Měřítko &amp;Z výškové mapy</translation>
+    </message>
+    <message>
+        <source>&amp;True scale</source>
+        <translation>&amp;Skutečné měřítko</translation>
+    </message>
+    <message>
+        <source>Heights &amp;exaggerated %1×</source>
+        <translation>Výšky &amp;zvětšené %1×</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -7885,6 +7905,10 @@ Volby:
     <message>
         <source>With --screenshot: show this dock in front of the others (its object name, such as unitsDock).</source>
         <translation>S --screenshot: zobrazit tento panel před ostatními (jeho jméno objektu, např. unitsDock).</translation>
+    </message>
+    <message>
+        <source>Apply this height map file to the program (as Machine › Height map › Apply, the work zero left as it is).</source>
+        <translation>Použít tento soubor výškové mapy na program (jako Stroj › Výšková mapa › Použít na program; nulový bod obrobku zůstane, jak je).</translation>
     </message>
 </context>
 </TS>

@@ -4795,6 +4795,26 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>&amp;Probe work zero…</source>
         <translation>&amp;Probe work zero…</translation>
     </message>
+    <message>
+        <source>&amp;Height map</source>
+        <translation>&amp;Height map</translation>
+    </message>
+    <message>
+        <source>Show the probed or loaded height map in the toolpath view</source>
+        <translation>Show the probed or loaded height map in the toolpath view</translation>
+    </message>
+    <message>
+        <source>Height map &amp;Z scale</source>
+        <translation>Height map &amp;Z scale</translation>
+    </message>
+    <message>
+        <source>&amp;True scale</source>
+        <translation>&amp;True scale</translation>
+    </message>
+    <message>
+        <source>Heights &amp;exaggerated %1×</source>
+        <translation>Heights &amp;exaggerated %1×</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -7872,6 +7892,10 @@ Options:
     <message>
         <source>With --screenshot: show this dock in front of the others (its object name, such as unitsDock).</source>
         <translation>With --screenshot: show this dock in front of the others (its object name, such as unitsDock).</translation>
+    </message>
+    <message>
+        <source>Apply this height map file to the program (as Machine › Height map › Apply, the work zero left as it is).</source>
+        <translation>Apply this height map file to the program (as Machine › Height map › Apply, the work zero left as it is).</translation>
     </message>
 </context>
 </TS>

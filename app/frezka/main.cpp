@@ -16,6 +16,7 @@
 #include <QSettings>
 #include <QTimer>
 
+#include <cstdio>
 #include <functional>
 #include <memory>
 
@@ -108,6 +109,12 @@ int main(int argc, char **argv)
                                         "(its object name, such as unitsDock)."),
         QStringLiteral("name"));
     parser.addOption(screenshotDock);
+    QCommandLineOption heightMap(
+        QStringLiteral("height-map"),
+        QApplication::translate("main", "Apply this height map file to the program (as Machine › "
+                                        "Height map › Apply, the work zero left as it is)."),
+        QStringLiteral("file"));
+    parser.addOption(heightMap);
     parser.addPositionalArgument(QStringLiteral("program"),
                                  QApplication::translate("main", "G-code program to open."));
     parser.process(*app);
@@ -120,6 +127,13 @@ int main(int argc, char **argv)
         options.view = frezka::gui::MainWindowOptions::View::Software;
     frezka::gui::MainWindow window(options);
     window.show();
+    if (parser.isSet(heightMap)) {
+        QString error;
+        if (!window.applyHeightMapFile(parser.value(heightMap), &error)) {
+            std::fprintf(stderr, "%s\n", qPrintable(error));
+            return 2;
+        }
+    }
     if (parser.isSet(screenshot)) {
         const QString png = parser.value(screenshot);
         auto *dock = parser.isSet(screenshotDock)

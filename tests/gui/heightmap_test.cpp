@@ -3,10 +3,12 @@
 // flat over 100 mm), shows the heights, Apply loads the program again bent to the map (the
 // listing keeps its lines) with the work's Z zero on the first point; the window's plan run on
 // the emulator keeps the tool tip 0.08 .. 0.12 mm below the surface wherever it cuts (the
-// unit's counters sampled every 2 ms of the virtual clock), and after Remove it does not.
+// unit's counters sampled every 2 ms of the virtual clock), and after Remove it does not. The
+// toolpath view shows the map node by node as it is probed.
 
 #include "gui/heightmapdialog.h"
 #include "gui/mainwindow.h"
+#include "gui/toolpathview.h"
 
 #include "windowtest.h"
 
@@ -23,6 +25,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace frezka;
@@ -167,6 +170,17 @@ void HeightMapTest::probeApplyAndRunKeepTheDepth()
     QVERIFY(test::button(dialog, "probe")->isEnabled());
     test::button(dialog, "probe")->click();
     QVERIFY2(dialog->isProbing(), qPrintable(dialog->errorText()));
+    // The view shows the map as it is probed: the nodes probed so far, a cell once its four
+    // corners are (row 0, then row 1 from the right: the 11th node closes the first cell).
+    const ToolpathViewModel *view = m_window->toolpathView()->model();
+    auto probedInView = [view] {
+        const HeightMapMesh *mesh = view->shownHeightMap();
+        return mesh ? int(std::count(mesh->probed.begin(), mesh->probed.end(), true)) : 0;
+    };
+    QVERIFY(link.runUntil([&] { return probedInView() >= 11; }, 3600));
+    QVERIFY(dialog->isProbing());
+    QVERIFY(probedInView() < 81);
+    QCOMPARE(view->shownHeightMap()->triangles.size(), std::size_t(6));
     QVERIFY(link.runUntil([&] { return !dialog->isProbing(); }, 3600));
     QVERIFY2(dialog->map().has_value(), qPrintable(dialog->errorText()));
     QCOMPARE(dialog->table()->rowCount(), 9);
@@ -175,6 +189,10 @@ void HeightMapTest::probeApplyAndRunKeepTheDepth()
     const gcode::HeightMap map = *dialog->map();
     QCOMPARE(dialog->table()->item(0, 8)->text(), QString::number(map.z(8, 8), 'f', 3));
     QVERIFY(map.maxZ() - map.minZ() > 0.2); // 0.24 mm: the tilt over the nodes, the sine between
+    QCOMPARE(probedInView(), 81);
+    QCOMPARE(view->shownHeightMap()->nodes[80],
+             QVector3D(float(map.nodeX(8)), float(map.nodeY(8)),
+                       float(map.probing().referenceZMm + map.z(8, 8))));
 
     // Save and load give the same map back.
     const QString file = m_dir.filePath(QStringLiteral("map.csv"));
