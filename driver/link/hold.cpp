@@ -92,6 +92,15 @@ void Hold::goOn()
         running();
         return;
     }
+    if (m_job.leadInHeld() && state().hold == HoldReason::User) {
+        // The operator paused a unit held at a chain's start: a G now would
+        // start the chain with what little is queued, which the wire cannot feed (property seed
+        // 235 with its spindle on: 4 brake violations). The unit stays held (INTA); the job
+        // queues the lead-in and the hold reads the causes and sends its own G.
+        m_needsGo = false;
+        running();
+        return;
+    }
     m_host.send(cmd::go(), [this, running](const Outcome &o) {
         // 6 = nothing to continue: the queue ran out while braking; the job streams on.
         if (o.status == OutcomeStatus::Ok && o.reply.code == ReplyCode::NothingToContinue) {

@@ -79,6 +79,9 @@ public:
     void linkLost();                              // progress must be re-established afterwards
     bool resumeAfterReconnect();                  // connected again: true when a check starts
     bool verifying() const { return m_check.pending(); }
+    // The unit is held at a chain's start until its lead-in is queued (leadinhold.h): a resume
+    // must leave it held, the hold's own G starts the chain.
+    bool leadInHeld() const { return m_active && m_lead.held(); }
     bool offPath() const { return m_guard.faulted(); }
     bool probing() const;
     void returnToPath() { m_guard.returnToPath(); }

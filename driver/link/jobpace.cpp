@@ -330,6 +330,77 @@ double JobPace::leadInSlackS(std::size_t start, std::size_t queuedEnd) const
     return machine::leadInSlackS(leadInPrefixes(), leadInLink(), start, queuedEnd);
 }
 
+namespace {
+// Motion kept in the unit beyond two round trips when a packet is sized to what it holds, s.
+constexpr double kDryReserveS = 0.02;
+// ... and this share of what it holds: the estimate of a second and more of queued motion is off
+// by a percent or two (a 1.5 s packet after a spin-up arrived 11 ms after the unit ran dry).
+constexpr double kHeldDriftShare = 0.05;
+// Bytes of a packet's frame (*S *S *E).
+constexpr std::size_t kPacketFrameBytes = 24;
+} // namespace
+
+double JobPace::packetBudgetS(double heldS, double rttS)
+{
+    return heldS - std::min(2 * rttS + kDryReserveS + kHeldDriftShare * heldS, 0.5 * heldS);
+}
+
+bool JobPace::leadInFeeds(std::size_t start, std::size_t queuedEnd) const
+{
+    const auto &cmds = m_program.commands;
+    const double rtt = m_host.rttS();
+    const bool packets = m_host.options().packets;
+    const std::size_t maxCommands = static_cast<std::size_t>(maxPacket());
+    const std::size_t last = std::min(cmds.size(), queuedEnd + 4 * maxCommands + 64);
+    // The unit starts when G's (or the first packet's) reply is on its way back: the next
+    // command leaves half a round trip later.
+    double t = rtt / 2;
+    std::size_t next = queuedEnd;
+    while (next < last && !machine::restsAt(cmds[next].op)) {
+        const std::size_t lastMotion = m_lastMotion[next];
+        if (lastMotion <= start)
+            return true; // nothing queued moves yet: the unit waits for its first vector
+        // What the unit holds when the next command leaves: the queued motion from the chain's
+        // start less the time run and the braking of the last queued vector.
+        const std::size_t lastVector = lastMotion - 1;
+        // At 100 %, as leadInSlackS: above, the override's ceiling keeps the wire ahead (judged
+        // at the override, chains that ran without a stop at the ceiling were held, and
+        // StreamPace.AFeedOverrideIsKeptWithinWhatTheLinkCanFeed took 2.7 % longer).
+        const double reach = m_timePrefix[next] - m_timePrefix[start] -
+                             std::min(m_brakeS[lastVector + 1],
+                                      m_timePrefix[lastVector + 1] - m_timePrefix[lastVector]);
+        const double held = reach - t;
+        if (held > 1.0)
+            return true; // well ahead: the steady pace holds from here
+        const machine::UnitOp op = cmds[next].op;
+        std::size_t bytes = 0;
+        std::size_t end = next;
+        if (packets && (op == UnitOp::Vector || op == UnitOp::Brake)) {
+            const double budget = packetBudgetS(held, rtt);
+            bytes = kPacketFrameBytes;
+            bool vector = false;
+            while (end < cmds.size() && end - next < maxCommands &&
+                   (cmds[end].op == UnitOp::Vector || cmds[end].op == UnitOp::Brake)) {
+                const auto size =
+                    static_cast<std::size_t>(m_bytePrefix[end + 1] - m_bytePrefix[end]);
+                if (vector && m_host.link().wireTime(bytes + size) > budget)
+                    break;
+                bytes += size;
+                vector = vector || cmds[end].op == UnitOp::Vector;
+                ++end;
+            }
+        } else {
+            bytes = static_cast<std::size_t>(m_bytePrefix[next + 1] - m_bytePrefix[next]);
+            end = next + 1;
+        }
+        t += m_host.link().wireTime(bytes) + rtt;
+        if (t > reach && m_vectorPrefix[end] > m_vectorPrefix[next])
+            return false; // its vectors come after the unit began braking to rest
+        next = end;
+    }
+    return true;
+}
+
 std::int64_t JobPace::plannedSpeedNow() const
 {
     const auto &cmds = m_program.commands;

@@ -82,6 +82,17 @@ public:
     bool chainStartsAt(std::size_t i) const;
     std::size_t firstPacketEnd(std::size_t start) const;
     double leadInSlackS(std::size_t start, std::size_t queuedEnd) const;
+    // Whether packets sized as the job sizes them (packetBudgetS) keep the unit fed when it
+    // starts the chain at `start` with [start, queuedEnd) queued: each packet costs its framing
+    // and a round trip, so packets cut to half of a little held motion on a stretch the wire
+    // barely feeds shrink cycle after cycle until the unit runs dry (property seed 132, and seed
+    // 235 with its spindle on). leadInSlackS counts the wire's bytes as a stream; this plays the
+    // packets, up to a second of motion held or the chain's end.
+    bool leadInFeeds(std::size_t start, std::size_t queuedEnd) const;
+    // The wire time a packet may take while the unit holds `heldS` of motion (its last vector's
+    // braking excluded): the rest is kept for the reply's and the next packet's round trips and
+    // the drift of the estimate, or half of what it holds when it holds little.
+    static double packetBudgetS(double heldS, double rttS);
     // The planned V (pulses/s) in effect at the command the unit executes (0: none yet).
     std::int64_t plannedSpeedNow() const;
     // Where a packet ends to keep polls at their rate where the motion is slow (next = no cap).

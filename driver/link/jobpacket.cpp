@@ -13,14 +13,6 @@ namespace frezka::driver {
 using namespace frezka::protocol;
 using machine::UnitOp;
 
-namespace {
-// Motion kept in the unit beyond two round trips when a packet is sized to what it holds, s.
-constexpr double kDryReserveS = 0.02;
-// ... and this share of what it holds: the estimate of a second and more of queued motion is off
-// by a percent or two (a 1.5 s packet after a spin-up arrived 11 ms after the unit ran dry).
-constexpr double kHeldDriftShare = 0.05;
-} // namespace
-
 // As many C/B commands as fit: the unit takes a packet at its *E, by when it has run part of
 // its queue for as long as the packet takes on the wire. Where the motion ahead keeps pace with
 // the wire, a packet must take no longer than that (each packet then brings more motion than it
@@ -42,8 +34,7 @@ void Job::sendPacket(double now)
     const std::size_t shortEnd = m_pace.slowMotionPacketEnd();
     const bool keepShort = shortEnd > m_cursor.next;
     const double held = m_pace.leadS(); // the packet must arrive before the last vector brakes
-    const double budget =
-        held - std::min(2 * m_host.rttS() + kDryReserveS + kHeldDriftShare * held, 0.5 * held);
+    const double budget = JobPace::packetBudgetS(held, m_host.rttS());
     // While the unit moves, a packet is no longer on the wire than the budget, and holds at
     // least one vector: where the unit holds too little for any budget, the smallest packet
     // is the one that may still arrive in time. A full packet there (30 commands, 40 ms on the

@@ -53,7 +53,9 @@ bool LeadInHold::step(double now)
     if (next == m_decided || !m_host.options().leadInHold || !pace.chainStartsAt(next))
         return false;
     m_decided = next;
-    if (pace.leadInSlackS(next, pace.firstPacketEnd(next)) >= pace.leadInLink().reserveS())
+    const std::size_t firstEnd = pace.firstPacketEnd(next);
+    if (pace.leadInSlackS(next, firstEnd) >= pace.leadInLink().reserveS() &&
+        pace.leadInFeeds(next, firstEnd))
         return false;
     m_state = State::Halting;
     m_start = next;
@@ -84,7 +86,8 @@ bool LeadInHold::fed()
     const std::int64_t capacity = variantInfo(m_host.config().unit.variant).queueCapacity - 1;
     if (pace.vectorsBefore(next) - pace.vectorsBefore(m_start) >= capacity)
         return true;
-    return pace.leadInSlackS(m_start, next) >= pace.leadInLink().reserveS();
+    return pace.leadInSlackS(m_start, next) >= pace.leadInLink().reserveS() &&
+           pace.leadInFeeds(m_start, next);
 }
 
 // ST4 then ST5: an enabled input that fired while the unit was held (the STOP button, a limit)

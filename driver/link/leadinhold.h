@@ -6,14 +6,16 @@
 // leadInSlackS for the first packet a free unit would start with: an A or a V a vector in, a
 // slow link with packets of a few vectors while the unit accelerates), the job sends H first:
 // the standing unit sets INTA and queues what follows without running it. The job streams on
-// in full packets; once the queued motion covers the wire's part of the lead-in (or the chain is
-// all queued, or the queue is full) the interrupt causes are read (ST4/ST5: an input that fired
-// meanwhile holds the job for the operator, as any interrupt does) and G starts the chain.
-// Without it the unit ran dry a few vectors into such a chain and stopped dead where its last
-// vector was too short to brake in (property seed 235: 19 200 Bd, two brake violations).
-// The hold costs the H, the reads and the G (round trips) and the time the queue takes to fill,
-// only at the chains that need it. A pause or an abort meanwhile takes the hold over (their G,
-// or D, releases it).
+// in full packets; once the queued motion covers the wire's part of the lead-in and the job's own
+// packets, sized to what the unit holds, keep it fed (JobPace::leadInFeeds; a free start is held
+// on the same test), or the chain is all queued, or the queue is full, the interrupt causes are
+// read (ST4/ST5: an input that fired meanwhile holds the job for the operator, as any interrupt
+// does) and G starts the chain. Without it the unit ran dry a few vectors into such a chain and
+// stopped dead where its last vector was too short to brake in (property seed 235: 19 200 Bd, two
+// brake violations). The hold costs the H, the reads and the G (round trips) and the time the queue
+// takes to fill, only at the chains that need it. An abort meanwhile takes the hold over (its D
+// clears it); an operator's pause is resumed without G (Hold::goOn): the unit stays held until this
+// G.
 
 #include <cstddef>
 

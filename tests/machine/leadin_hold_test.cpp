@@ -267,3 +267,81 @@ TEST(LeadInHold, ALinkLostWhileHeldNeverStartsTheChainByItself)
     EXPECT_TRUE(held.finished.back());
     EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
 }
+
+// Paused and resumed while held, before the lead-in is queued: the resume's G must not start the
+// chain with only its first vectors queued (the wire then cannot feed it, as without the hold);
+// the job queues the lead-in first and its own G starts the chain (after SR4 and SR5).
+TEST(LeadInHold, ResumeWhileHeldStillQueuesTheLeadInFirst)
+{
+    HeldJob held(drawJob(235, 300), true);
+    ASSERT_TRUE(held.connectAndRun());
+    ASSERT_TRUE(held.runner.runUntil(
+        [&] { return held.core.jobReport().leadInHolds > 0 && held.core.state().inta; }, 600));
+    const std::size_t h = held.find("!0H");
+    ASSERT_FALSE(held.core.pause(held.runner.now(), false));
+    ASSERT_TRUE(held.runner.runUntil(
+        [&] { return held.core.state().mode == driver::MachineMode::Paused; }, 30));
+    held.runner.runFor(1.0);
+    ASSERT_FALSE(held.core.resume(held.runner.now()));
+    ASSERT_TRUE(held.runner.runUntil([&] { return !held.finished.empty(); }, 600));
+    EXPECT_TRUE(held.finished.front());
+    EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
+    EXPECT_EQ(held.port.unit().stats().motion.brakeViolations, 0);
+    // One G after the hold, the lead-in's own: after the causes were read, with the lead-in
+    // queued in full packets.
+    const std::size_t g = held.find("!0G", h);
+    ASSERT_LT(g, held.wire.size());
+    EXPECT_EQ(count(held, "!0G", h), 1u);
+    EXPECT_EQ(held.wire[g - 2], "!0SR4");
+    EXPECT_EQ(held.wire[g - 1], "!0SR5");
+    EXPECT_GT(count(held, "!0C", h) - count(held, "!0C", g), 100u);
+}
+
+namespace {
+
+// Seed 235 with the spindle started first and its M5 kept: the held chain begins with the M5,
+// then a two-step vector at V25 (where the plain seed has V37), an A and a V, then 156-step
+// vectors that take 10 ms each, about what a lone C takes on the 19 200 Bd line. The lead-in's
+// byte count let the unit go with only the slow vector queued; the job's packets, cut to half of
+// what the unit held, shrank to single commands and the unit ran dry at speed.
+RandomJob spindleOffJob()
+{
+    RandomJob j = drawJob(235, 300);
+    j.program = "M3 S12000\n" + j.program;
+    return j;
+}
+
+} // namespace
+
+TEST(LeadInHold, TheHoldLastsUntilTheJobsOwnPacketsKeepTheChainFed)
+{
+    HeldJob held(spindleOffJob(), true);
+    ASSERT_TRUE(held.connectAndRun());
+    ASSERT_TRUE(held.runner.runUntil([&] { return !held.finished.empty(); }, 600));
+    EXPECT_TRUE(held.finished.front());
+    EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
+    EXPECT_EQ(held.port.unit().stats().motion.brakeViolations, 0);
+    const std::size_t h = held.find("!0H");
+    const std::size_t g = held.find("!0G", h);
+    ASSERT_LT(g, held.wire.size());
+    EXPECT_GT(count(held, "!0C", h) - count(held, "!0C", g), 100u);
+}
+
+// The same job paused and resumed while held: 4 brake violations when the resume's G started
+// the chain.
+TEST(LeadInHold, ThePausedAndResumedHoldKeepsTheChainFed)
+{
+    HeldJob held(spindleOffJob(), true);
+    ASSERT_TRUE(held.connectAndRun());
+    ASSERT_TRUE(held.runner.runUntil(
+        [&] { return held.core.jobReport().leadInHolds > 0 && held.core.state().inta; }, 600));
+    ASSERT_FALSE(held.core.pause(held.runner.now(), true));
+    ASSERT_TRUE(held.runner.runUntil(
+        [&] { return held.core.state().mode == driver::MachineMode::Paused; }, 30));
+    held.runner.runFor(1.0);
+    ASSERT_FALSE(held.core.resume(held.runner.now()));
+    ASSERT_TRUE(held.runner.runUntil([&] { return !held.finished.empty(); }, 600));
+    EXPECT_TRUE(held.finished.front());
+    EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
+    EXPECT_EQ(held.port.unit().stats().motion.brakeViolations, 0);
+}
