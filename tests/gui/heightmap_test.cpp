@@ -52,24 +52,10 @@ class HeightMapTest : public QObject
 private slots:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
         QVERIFY(m_dir.isValid());
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
-        QCoreApplication::setOrganizationName(QStringLiteral("FrezkaHeightMapTest"));
-        QSettings().setValue(QStringLiteral("link/autoReconnect"), false);
-        machine::MachineConfig profile = machine::defaultMachineConfig(protocol::Variant::Gve64);
-        // The window's own link stays unconnected: the dialog probes on the simulated link.
-        profile.link.port = m_dir.filePath(QStringLiteral("no-such-port")).toStdString();
-        const QString profilePath = m_dir.filePath(QStringLiteral("machine.json"));
-        QVERIFY(!machine::saveMachineConfig(profile, profilePath.toStdString()));
-        QSettings().setValue(QStringLiteral("lastProfile"), profilePath);
-        MainWindowOptions options;
-        options.view = MainWindowOptions::View::Software;
-        options.restoreLayout = false;
-        m_window = std::make_unique<MainWindow>(options);
-        m_window->show();
-        QTRY_VERIFY_WITH_TIMEOUT(!m_window->lastError().isEmpty(), 20000); // the port is missing
+        // The window's own link stays unconnected (test::unconnectedWindow).
+        m_window = test::unconnectedWindow(m_dir, QStringLiteral("FrezkaHeightMapTest"));
+        QVERIFY(m_window);
     }
 
     void probeApplyAndRunKeepTheDepth();

@@ -4,13 +4,20 @@
 
 #include "gui/mainwindow.h"
 #include "gui/programview.h"
+#include "machine/machineconfig.h"
 
 #include <QByteArray>
+#include <QCoreApplication>
 #include <QFile>
 #include <QProcess>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTest>
+
+#include <memory>
 
 namespace frezka::gui::test {
 
@@ -31,6 +38,34 @@ inline bool openAndWait(MainWindow *window, const QString &path)
     QSignalSpy loaded(window->program(), &ProgramSession::loaded);
     window->openProgram(path);
     return loaded.wait(20000);
+}
+
+// A main window on the default GVE64 profile whose port does not exist, its settings in dir
+// under the organisation's name: its own link stays unconnected while the test drives a
+// simulated one and the window shows it. Shown, once it has said the port is missing; null when
+// it cannot be set up.
+inline std::unique_ptr<MainWindow> unconnectedWindow(const QTemporaryDir &dir,
+                                                     const QString &organisation)
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, dir.path());
+    QCoreApplication::setOrganizationName(organisation);
+    QSettings().setValue(QStringLiteral("link/autoReconnect"), false);
+    machine::MachineConfig profile = machine::defaultMachineConfig(protocol::Variant::Gve64);
+    profile.link.port = dir.filePath(QStringLiteral("no-such-port")).toStdString();
+    const QString profilePath = dir.filePath(QStringLiteral("machine.json"));
+    if (machine::saveMachineConfig(profile, profilePath.toStdString()))
+        return nullptr;
+    QSettings().setValue(QStringLiteral("lastProfile"), profilePath);
+    MainWindowOptions options;
+    options.view = MainWindowOptions::View::Software;
+    options.restoreLayout = false;
+    auto window = std::make_unique<MainWindow>(options);
+    window->show();
+    if (!QTest::qWaitFor([&] { return !window->lastError().isEmpty(); }, 20000))
+        return nullptr;
+    return window;
 }
 
 inline QPushButton *button(QWidget *parent, const char *name)
