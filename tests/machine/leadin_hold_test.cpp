@@ -268,17 +268,17 @@ TEST(LeadInHold, ALinkLostWhileHeldNeverStartsTheChainByItself)
     EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
 }
 
-// Paused and resumed while held, before the lead-in is queued: the resume's G must not start the
-// chain with only its first vectors queued (the wire then cannot feed it, as without the hold);
-// the job queues the lead-in first and its own G starts the chain (after SR4 and SR5).
-TEST(LeadInHold, ResumeWhileHeldStillQueuesTheLeadInFirst)
+namespace {
+
+// Runs the job until the unit is held at a chain's start, pauses it there (stopping the spindle
+// or not), resumes a second later and runs it to its end: it ends at its planned counters
+// without a brake violation on the unit.
+void pauseAndResumeWhileHeld(HeldJob &held, bool stopSpindle)
 {
-    HeldJob held(drawJob(235, 300), true);
     ASSERT_TRUE(held.connectAndRun());
     ASSERT_TRUE(held.runner.runUntil(
         [&] { return held.core.jobReport().leadInHolds > 0 && held.core.state().inta; }, 600));
-    const std::size_t h = held.find("!0H");
-    ASSERT_FALSE(held.core.pause(held.runner.now(), false));
+    ASSERT_FALSE(held.core.pause(held.runner.now(), stopSpindle));
     ASSERT_TRUE(held.runner.runUntil(
         [&] { return held.core.state().mode == driver::MachineMode::Paused; }, 30));
     held.runner.runFor(1.0);
@@ -287,6 +287,18 @@ TEST(LeadInHold, ResumeWhileHeldStillQueuesTheLeadInFirst)
     EXPECT_TRUE(held.finished.front());
     EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
     EXPECT_EQ(held.port.unit().stats().motion.brakeViolations, 0);
+}
+
+} // namespace
+
+// Paused and resumed while held, before the lead-in is queued: the resume's G must not start the
+// chain with only its first vectors queued (the wire then cannot feed it, as without the hold);
+// the job queues the lead-in first and its own G starts the chain (after SR4 and SR5).
+TEST(LeadInHold, ResumeWhileHeldStillQueuesTheLeadInFirst)
+{
+    HeldJob held(drawJob(235, 300), true);
+    ASSERT_NO_FATAL_FAILURE(pauseAndResumeWhileHeld(held, false));
+    const std::size_t h = held.find("!0H");
     // One G after the hold, the lead-in's own: after the causes were read, with the lead-in
     // queued in full packets.
     const std::size_t g = held.find("!0G", h);
@@ -332,16 +344,5 @@ TEST(LeadInHold, TheHoldLastsUntilTheJobsOwnPacketsKeepTheChainFed)
 TEST(LeadInHold, ThePausedAndResumedHoldKeepsTheChainFed)
 {
     HeldJob held(spindleOffJob(), true);
-    ASSERT_TRUE(held.connectAndRun());
-    ASSERT_TRUE(held.runner.runUntil(
-        [&] { return held.core.jobReport().leadInHolds > 0 && held.core.state().inta; }, 600));
-    ASSERT_FALSE(held.core.pause(held.runner.now(), true));
-    ASSERT_TRUE(held.runner.runUntil(
-        [&] { return held.core.state().mode == driver::MachineMode::Paused; }, 30));
-    held.runner.runFor(1.0);
-    ASSERT_FALSE(held.core.resume(held.runner.now()));
-    ASSERT_TRUE(held.runner.runUntil([&] { return !held.finished.empty(); }, 600));
-    EXPECT_TRUE(held.finished.front());
-    EXPECT_EQ(held.port.unit().position(), held.plan.program.commands.back().endSteps);
-    EXPECT_EQ(held.port.unit().stats().motion.brakeViolations, 0);
+    ASSERT_NO_FATAL_FAILURE(pauseAndResumeWhileHeld(held, true));
 }
