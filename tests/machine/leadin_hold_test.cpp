@@ -217,6 +217,11 @@ TEST(LeadInHold, PauseWhileHeldStopsTheSpindleAndStartsNothing)
     EXPECT_EQ(held.port.unit().stats().motion.brakeViolations, 0);
     // On again before the chain goes on, the G the lead-in hold's own (after SR4 and SR5).
     EXPECT_GE(count(held, "!7V500", h), 1u);
+    const std::size_t g = held.find("!0G", h);
+    ASSERT_LT(g, held.wire.size());
+    EXPECT_LT(held.find("!7V500", h), g);
+    EXPECT_EQ(held.wire[g - 2], "!0SR4");
+    EXPECT_EQ(held.wire[g - 1], "!0SR5");
 }
 
 // Abort while held: the queue is cleared, the chain never starts, the spindle is off, the job
