@@ -39,6 +39,14 @@ std::int64_t isqrt(std::int64_t x)
     return r;
 }
 
+// min(cap, floor(sqrt(x))), exact, without the root where the cap is the lesser: floor(sqrt(x))
+// is at least cap >= 0 exactly when cap² <= x. Along a chain the caps bind at most vertices, and
+// the passes' roots are a chain of dependent steps otherwise (each vertex's speed from the next).
+std::int64_t capOrRoot(std::int64_t cap, std::int64_t x)
+{
+    return cap >= 0 && cap * cap <= x ? cap : std::min(cap, isqrt(x));
+}
+
 } // namespace
 
 double dot(const Vec4 &a, const Vec4 &b)
@@ -269,15 +277,14 @@ void RunPlanner::fullPasses(std::size_t first, std::vector<std::int32_t> &b)
     b[n - 1] = 0;
     for (std::size_t k = n - 1; k > 0; --k) {
         const std::int64_t exit = b[k];
-        const std::int64_t entry = isqrt(exit * exit + m_d[first + k].twoAU);
-        b[k - 1] =
-            static_cast<std::int32_t>(std::min<std::int64_t>(m_capUnits[first + k - 1], entry));
+        b[k - 1] = static_cast<std::int32_t>(
+            capOrRoot(m_capUnits[first + k - 1], exit * exit + m_d[first + k].twoAU));
     }
     std::int64_t e = 0;
     for (std::size_t k = 0; k < n; ++k) {
         const Derived &r = m_d[first + k];
         if (k + 1 < n)
-            b[k] = static_cast<std::int32_t>(std::min<std::int64_t>(b[k], isqrt(e * e + r.twoAU)));
+            b[k] = static_cast<std::int32_t>(capOrRoot(b[k], e * e + r.twoAU));
         e = b[k];
         outputVector(r, b[k], k + 1 == n);
     }
