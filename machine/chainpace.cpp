@@ -154,7 +154,13 @@ void RunPlanner::paceModalChanges()
     };
     double held = 0; // motion the unit holds when stretch [first, k) has gone out
     std::size_t first = 0;
+    // The stretch's wire time: a round trip and its vectors' bare wire times, summed in their
+    // order as the walk passes them (not again over the stretch when it closes: a run without a
+    // change is one stretch, and that was a second walk over all its moves).
+    double wire = m_link.roundTripS();
     for (std::size_t k = 0; k <= n; ++k) {
+        if (k > 0)
+            wire += m_link.bareVectorWireS(m_d[k - 1].wireBytes);
         if (k < n)
             timeS[k + 1] = timeS[k] + cruise(k);
         const bool chainStart = k < n && k > 0 && !softStopAllowed(k - 1);
@@ -163,9 +169,6 @@ void RunPlanner::paceModalChanges()
         if (k > first && (k == n || chainStart || changes)) {
             // Stretch [first, k) has gone out: the unit gained its motion less its wire time,
             // and the packet cut short at the change costs a round trip of its own.
-            double wire = m_link.roundTripS();
-            for (std::size_t j = first; j < k; ++j)
-                wire += m_link.bareVectorWireS(m_d[j].wireBytes);
             const std::size_t from = k > queue ? k - queue : 0;
             held = std::min(held + stretchS(first, k) - wire, timeS[k] - timeS[from]);
             held = std::max(held, 0.0);
@@ -209,6 +212,7 @@ void RunPlanner::paceModalChanges()
                 held = std::max(0.0, held - commands * m_link.modalChangeS()); // spent on them
             }
             first = k;
+            wire = m_link.roundTripS();
         }
         if (chainStart)
             held = 0;
