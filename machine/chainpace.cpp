@@ -15,6 +15,18 @@ namespace {
 constexpr int kSlowTries = 4;
 } // namespace
 
+// Move k as derive() left it, before the link's pace and the modal choices of a plan change it.
+void RunPlanner::restart(std::size_t k)
+{
+    const PaceStart &from = m_paceStart[k];
+    Derived &r = m_d[k];
+    r.vMm = from.vMm;
+    r.wireCap = kNoCap;
+    r.speed = from.speed;
+    if (r.accel != from.accel) // twoAU follows A and the move's length (setAccel): as A, so it
+        setAccel(r, from.accel, m_options);
+}
+
 // The link's pace (PlanOptions::wireLimited): a vector must last at least the time its bytes
 // take on the wire, or the unit's queue runs dry mid-chain and the machine stops without
 // braking. Its bytes: the largest vector of its neighbourhood, and the neighbourhood's B
@@ -23,11 +35,17 @@ constexpr int kSlowTries = 4;
 // capping both Bs at sqrt((L/t)² - A·L) keeps it at L/t. Where even that is below the
 // unit's smallest B (a vector of a step or two), V itself is lowered, which costs a V
 // command (rare). The bound takes the floor as a cruise cap.
+//
+// Each move starts again here from what derive() left it (m_paceStart) before the pace takes it:
+// one walk over the moves' figures instead of two, in each of the run's plans.
 void RunPlanner::wirePace()
 {
-    if (!m_options.wireLimited || m_config.link.baud <= 0)
-        return;
     const std::size_t n = m_d.size();
+    if (!m_options.wireLimited || m_config.link.baud <= 0) {
+        for (std::size_t k = 0; k < n; ++k)
+            restart(k);
+        return;
+    }
     std::vector<bool> lowered(n, false); // V itself lowered to keep the pace
     // Prefix sums of the B, V and A commands' link time for their averages.
     std::vector<double> &extraPrefix = m_scratch;
@@ -36,6 +54,7 @@ void RunPlanner::wirePace()
         extraPrefix[k + 1] = extraPrefix[k] + (m_extraS.size() == n ? m_extraS[k] : 0);
     const std::size_t window = m_link.brakeWindow();
     for (std::size_t k = 0; k < n; ++k) {
+        restart(k);
         Derived &r = m_d[k];
         const std::size_t bFrom = k > window ? k - window : 0;
         const std::size_t bTo = std::min(n, k + window + 1);
@@ -135,7 +154,13 @@ void RunPlanner::paceModalChanges()
     };
     double held = 0; // motion the unit holds when stretch [first, k) has gone out
     std::size_t first = 0;
+    // The stretch's wire time: a round trip and its vectors' bare wire times, summed in their
+    // order as the walk passes them (not again over the stretch when it closes: a run without a
+    // change is one stretch, and that was a second walk over all its moves).
+    double wire = m_link.roundTripS();
     for (std::size_t k = 0; k <= n; ++k) {
+        if (k > 0)
+            wire += m_link.bareVectorWireS(m_d[k - 1].wireBytes);
         if (k < n)
             timeS[k + 1] = timeS[k] + cruise(k);
         const bool chainStart = k < n && k > 0 && !softStopAllowed(k - 1);
@@ -144,9 +169,6 @@ void RunPlanner::paceModalChanges()
         if (k > first && (k == n || chainStart || changes)) {
             // Stretch [first, k) has gone out: the unit gained its motion less its wire time,
             // and the packet cut short at the change costs a round trip of its own.
-            double wire = m_link.roundTripS();
-            for (std::size_t j = first; j < k; ++j)
-                wire += m_link.bareVectorWireS(m_d[j].wireBytes);
             const std::size_t from = k > queue ? k - queue : 0;
             held = std::min(held + stretchS(first, k) - wire, timeS[k] - timeS[from]);
             held = std::max(held, 0.0);
@@ -190,6 +212,7 @@ void RunPlanner::paceModalChanges()
                 held = std::max(0.0, held - commands * m_link.modalChangeS()); // spent on them
             }
             first = k;
+            wire = m_link.roundTripS();
         }
         if (chainStart)
             held = 0;
@@ -278,22 +301,30 @@ double RunPlanner::slowStretch(std::size_t first, std::size_t last, double missi
 // Where the vectors are about as short as their bytes on the wire, a B that changes at every
 // vertex (the caps of a wavy path do) costs the link nearly as much as the vector itself, and
 // the link's pace then halves the speed. There the caps are flattened to the least one within
-// kFlatWindow vertices either side: a stretch runs at one B and sends no B inside it.
-void RunPlanner::flattenTightCaps()
+// kFlatWindow vertices either side: a stretch runs at one B and sends no B inside it. The vertex
+// caps themselves (vertexCaps) are taken in the same walk that finds the tight vertices.
+void RunPlanner::capVertices()
 {
-    if (!m_options.wireLimited || m_config.link.baud <= 0 || m_capUnits.size() < 2)
+    const std::size_t n = m_d.size();
+    m_capUnits.assign(n, 0);
+    if (!m_options.wireLimited || m_config.link.baud <= 0 || n < 2) {
+        for (std::size_t k = 0; k + 1 < n; ++k)
+            vertexCaps(k);
         return;
-    const std::size_t vertices = m_capUnits.size() - 1;
+    }
+    const std::size_t vertices = n - 1;
     std::vector<bool> tight(vertices, false);
+    std::vector<std::int32_t> &caps = m_scratchUnits; // the caps before flattening
+    caps.resize(vertices);
     for (std::size_t k = 0; k < vertices; ++k) {
+        vertexCaps(k);
+        caps[k] = m_capUnits[k];
         const double cap = static_cast<double>(m_capUnits[k]);
         // With a B before it (B at most V, so at most V's bytes).
         const double withBrake = m_link.vectorWireS(m_d[k].wireBytes) +
                                  m_link.commandS(m_link.brakeWireBytes(m_d[k].speed));
         tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
     }
-    std::vector<std::int32_t> &caps = m_scratchUnits; // the caps before flattening
-    caps.assign(m_capUnits.begin(), m_capUnits.end() - 1);
     for (std::size_t k = 0; k < vertices; ++k) {
         if (!tight[k])
             continue;

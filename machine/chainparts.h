@@ -81,6 +81,10 @@ public:
     double vectorWireS(double bytes) const;
     // The same without the pace's margins: what the vector takes of the link on average.
     double bareVectorWireS(double bytes) const;
+    // The two of a C command's whole bytes (Derived::wireBytes, widestBytes), memoised: the pace
+    // asks for them at every move of every plan of a run.
+    double vectorWireS(std::uint8_t bytes) const { return wholeBytes(bytes).first; }
+    double bareVectorWireS(std::uint8_t bytes) const { return wholeBytes(bytes).second; }
     // The vectors of a packet that costs one round trip, as the pace counts them.
     double packetVectors() const;
     double roundTripS() const { return 2 * m_config.link.latencyMs / 1000.0 + kReplyS; }
@@ -103,8 +107,22 @@ public:
     static constexpr double kSteadyHeldS = 0.25; // see vectorWireS
 
 private:
+    const std::pair<double, double> &wholeBytes(std::uint8_t bytes) const
+    {
+        auto &slot = m_wholeMemo[bytes];
+        if (slot.first < 0)
+            slot = {vectorWireS(static_cast<double>(bytes)),
+                    bareVectorWireS(static_cast<double>(bytes))};
+        return slot;
+    }
+
     const MachineConfig &m_config;
     const PlanOptions &m_options;
+    mutable std::array<std::pair<double, double>, 256> m_wholeMemo = [] {
+        std::array<std::pair<double, double>, 256> memo;
+        memo.fill({-1.0, -1.0}); // a wire time is never negative: -1 marks empty
+        return memo;
+    }();
     // brakeWireBytes and vectorWireBytes, memoised by value (direct-mapped): the pace asks for a
     // B's bytes at every vertex of every plan of a run and for each vector's once, and encoding
     // a command builds a string each time (a third of deriving a 1 M-move run).

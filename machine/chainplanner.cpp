@@ -39,6 +39,14 @@ std::int64_t isqrt(std::int64_t x)
     return r;
 }
 
+// min(cap, floor(sqrt(x))), exact, without the root where the cap is the lesser: floor(sqrt(x))
+// is at least cap >= 0 exactly when cap² <= x. Along a chain the caps bind at most vertices, and
+// the passes' roots are a chain of dependent steps otherwise (each vertex's speed from the next).
+std::int64_t capOrRoot(std::int64_t cap, std::int64_t x)
+{
+    return cap >= 0 && cap * cap <= x ? cap : std::min(cap, isqrt(x));
+}
+
 } // namespace
 
 double dot(const Vec4 &a, const Vec4 &b)
@@ -112,21 +120,10 @@ void RunPlanner::planOnce()
     m_out.slowLines = m_slowLines;
     m_out.firstFeedCap = m_firstFeedCap;
     m_out.feedCapLines = m_feedCapLines;
-    for (std::size_t k = 0; k < m_d.size(); ++k) {
-        const PaceStart &from = m_paceStart[k];
-        Derived &r = m_d[k];
-        r.vMm = from.vMm;
-        r.wireCap = kNoCap;
-        r.speed = from.speed;
-        setAccel(r, from.accel, m_options);
-    }
-    wirePace();
+    wirePace(); // starts each move again from m_paceStart as it goes
     paceModalChanges();
+    capVertices(); // the vertex caps, flattened where the vectors are as short as their bytes
     const std::size_t n = m_moves.size();
-    m_capUnits.assign(n, 0);
-    for (std::size_t k = 0; k + 1 < n; ++k)
-        vertexCaps(k);
-    flattenTightCaps();
     std::size_t first = 0;
     for (std::size_t k = 0; k < n; ++k) {
         const bool exact = m_options.strategy == PlanStrategy::ExactStop;
@@ -257,41 +254,51 @@ void RunPlanner::chain(std::size_t first, std::size_t last)
 {
     ++m_out.chains;
     std::vector<std::int32_t> &b = m_scratchUnits; // at most the caps: 32 bits
-    b.assign(last - first + 1, 0);
+    b.resize(last - first + 1);
+    if (m_options.strategy != PlanStrategy::GrblJunction) {
+        fullPasses(first, b); // takes the caps and sends the vectors out as it goes
+        return;
+    }
     for (std::size_t k = first; k < last; ++k)
         b[k - first] = m_capUnits[k];
     b.back() = 0;
-    if (m_options.strategy == PlanStrategy::GrblJunction)
-        windowedPasses(first, b);
-    else
-        fullPasses(first, b);
-    for (std::size_t k = first; k <= last; ++k) {
-        const Derived &r = m_d[k];
-        PlannedVector v{static_cast<std::int32_t>(r.speed), static_cast<std::int32_t>(r.accel),
-                        static_cast<std::int32_t>(b[k - first]), k == last, false};
-        if (k == last) // nothing follows: the unit brakes to 0; a short vector cruises at B
-            v.brake =
-                static_cast<std::int32_t>(r.isShort ? std::min(r.speed, r.ownSpeed) : kMinSpeed);
-        v.line = m_options.strategy == PlanStrategy::ExactStop;
-        m_out.vectors.push_back(v);
+    windowedPasses(first, b);
+    for (std::size_t k = first; k <= last; ++k)
+        outputVector(m_d[k], b[k - first], k == last);
+}
+
+// The speeds are at most the caps (32 bits); their squares and the sums are taken in 64. The
+// backward pass takes each vertex's cap as it reaches it, and the forward pass sends each vector
+// out as soon as its exit is known: two walks over the chain's figures instead of four (a spiral
+// of 5 M vectors is one chain, walked in each of the link's pace's plans).
+void RunPlanner::fullPasses(std::size_t first, std::vector<std::int32_t> &b)
+{
+    const std::size_t n = b.size();
+    b[n - 1] = 0;
+    for (std::size_t k = n - 1; k > 0; --k) {
+        const std::int64_t exit = b[k];
+        b[k - 1] = static_cast<std::int32_t>(
+            capOrRoot(m_capUnits[first + k - 1], exit * exit + m_d[first + k].twoAU));
+    }
+    std::int64_t e = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const Derived &r = m_d[first + k];
+        if (k + 1 < n)
+            b[k] = static_cast<std::int32_t>(capOrRoot(b[k], e * e + r.twoAU));
+        e = b[k];
+        outputVector(r, b[k], k + 1 == n);
     }
 }
 
-// The speeds are at most the caps (32 bits); their squares and the sums are taken in 64.
-void RunPlanner::fullPasses(std::size_t first, std::vector<std::int32_t> &b) const
+// Vector k of a chain as it goes out, its exit B planned (the chain's last: nothing follows).
+void RunPlanner::outputVector(const Derived &r, std::int32_t brake, bool chainEnd)
 {
-    const std::size_t n = b.size();
-    for (std::size_t k = n - 1; k > 0; --k) {
-        const std::int64_t exit = b[k];
-        const std::int64_t entry = isqrt(exit * exit + m_d[first + k].twoAU);
-        b[k - 1] = static_cast<std::int32_t>(std::min<std::int64_t>(b[k - 1], entry));
-    }
-    std::int64_t e = 0;
-    for (std::size_t k = 0; k + 1 < n; ++k) {
-        b[k] = static_cast<std::int32_t>(
-            std::min<std::int64_t>(b[k], isqrt(e * e + m_d[first + k].twoAU)));
-        e = b[k];
-    }
+    PlannedVector v{static_cast<std::int32_t>(r.speed), static_cast<std::int32_t>(r.accel), brake,
+                    chainEnd, false};
+    if (chainEnd) // nothing follows: the unit brakes to 0; a short vector cruises at B
+        v.brake = static_cast<std::int32_t>(r.isShort ? std::min(r.speed, r.ownSpeed) : kMinSpeed);
+    v.line = m_options.strategy == PlanStrategy::ExactStop;
+    m_out.vectors.push_back(v);
 }
 
 // grbl: when a block starts, the planner sees only the next `lookahead` blocks and plans

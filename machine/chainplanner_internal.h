@@ -44,7 +44,7 @@ public:
 
 private:
     static constexpr int kWirePasses = 5;         // plans again at most this often
-    static constexpr std::size_t kFlatWindow = 8; // flattenTightCaps: vertices either side
+    static constexpr std::size_t kFlatWindow = 8; // capVertices: vertices either side
     static constexpr double kBrakeBytes = 12;     // paceModalChanges: a B command's bytes, about
     static constexpr double kPacedWireS = 0.005;  // ... the driver's least packet budget
 
@@ -54,7 +54,8 @@ private:
     Directions directions(const Move &m) const;
     void deriveOne(const Move &m, const Directions &dir, Derived &r);
     void chain(std::size_t first, std::size_t last);
-    void fullPasses(std::size_t first, std::vector<std::int32_t> &b) const;
+    void fullPasses(std::size_t first, std::vector<std::int32_t> &b);
+    void outputVector(const Derived &r, std::int32_t brake, bool chainEnd);
     void windowedPasses(std::size_t first, std::vector<std::int32_t> &b) const;
     void bound();
 
@@ -78,7 +79,8 @@ private:
     std::size_t stretchEnd(std::size_t k) const;
     double mergeCostS(std::size_t first, std::size_t k) const;
     void mergeStretches(std::size_t first, std::size_t k);
-    void flattenTightCaps();
+    void capVertices();
+    void restart(std::size_t k);
 
     const std::vector<Move> &m_moves;
     const MachineConfig &m_config;
