@@ -190,6 +190,7 @@ void RunWorkflow::startJob()
     emit message(tr("Running %1.").arg(m_name));
     m_jobClock.start();
     emit jobStarted();
+    m_plannedRestarts = machine::plannedRestarts(*m_plan);
     m_link.run(*m_plan);
 }
 
@@ -423,6 +424,7 @@ bool RunWorkflow::followProbe()
     m_planStart = s.positionMm;
     m_planEndsAtProbe = next.endsAtProbe;
     emit probeFollowed(line, next);
+    m_plannedRestarts += machine::plannedRestarts(*m_plan);
     m_link.run(*m_plan);
     return true;
 }

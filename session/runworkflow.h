@@ -86,6 +86,10 @@ public:
     void setProbeFollow(ProbeFollow *follow) { m_follow = follow; }
     // Probe moves after which the run went on with the re-interpreted rest, in this run.
     int probesFollowed() const { return m_probesFollowed; }
+    // The restarts from rest that the jobs of this run plan (machine::plannedRestarts of each
+    // job's program, a followed probe's rest included): the emulator counts them as starvation
+    // stops, a report subtracts them.
+    std::int64_t plannedRestarts() const { return m_plannedRestarts; }
     // Runs the program when the machine is ready; re-plans first from the machine's position.
     void runProgram();
     // Re-plans from the machine's position; checked(ok) follows.
@@ -162,6 +166,7 @@ private:
     Replanner m_replan;
     ProbeFollow *m_follow = nullptr;
     int m_probesFollowed = 0;
+    std::int64_t m_plannedRestarts = 0;
     bool m_planEndsAtProbe = false; // the job's last move is a probe to follow (m_follow)
     Pending m_pending = Pending::None;
     Step m_step = Step::None;

@@ -309,8 +309,9 @@ void printReport(const RunOutcome &o, const machine::UnitProgram &program,
     j[QStringLiteral("wire_limit_vectors_per_s")] = bpv > 0 ? baud / 10.0 / bpv : 0.0;
     j[QStringLiteral("vectors_per_s")] = streamS > 0 ? r.vectors / streamS : 0.0;
     if (o.unitStats) {
+        // The unit running dry: the emulator's count less the restarts the plans ask for.
         j[QStringLiteral("starvation_stops")] =
-            static_cast<qint64>(o.unitStats->motion.starvationStops);
+            static_cast<qint64>(o.unitStats->motion.starvationStops - o.plannedRestarts);
         j[QStringLiteral("brake_violations")] =
             static_cast<qint64>(o.unitStats->motion.brakeViolations);
         j[QStringLiteral("axis_over_max")] = static_cast<qint64>(o.unitStats->motion.axisOverMax);

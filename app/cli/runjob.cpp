@@ -349,6 +349,7 @@ RunOutcome runVirtual(const RunArgs &a, const machine::MachineConfig &config,
     out.programStops = workflow.programStopsSeen();
     out.error = workflow.error();
     out.report = link.jobReport();
+    out.plannedRestarts = workflow.plannedRestarts();
     out.finalSteps = link.liveState().positionSteps;
     out.unitStats = link.port().unit().stats();
     out.spindleOnAtEnd = link.port().unit().spindleTurning();
@@ -422,6 +423,7 @@ RunOutcome runReal(const RunArgs &a, const machine::MachineConfig &config,
     out.programStops = workflow.programStopsSeen();
     out.error = workflow.error();
     out.report = worker.jobReport();
+    out.plannedRestarts = workflow.plannedRestarts();
     out.finalSteps = link.state().positionSteps;
     if (emulated) {
         out.unitStats = emulated->unit().stats();

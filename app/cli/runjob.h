@@ -87,6 +87,7 @@ struct RunOutcome
     std::optional<std::array<std::int64_t, 4>> probeSteps;      // the last probe's trip point
     std::optional<CutDepth> cutDepth;                           // RunArgs::cutDepth's
     int probesFollowed = 0; // RunArgs::follow: probes after which the rest was planned again
+    std::int64_t plannedRestarts = 0; // session::RunWorkflow::plannedRestarts of the run
     std::optional<std::array<std::int64_t, 4>> lastPlanEnd; // ... where the last job's plan ends
     QString error;
 };

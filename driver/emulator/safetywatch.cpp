@@ -37,9 +37,9 @@ void SafetyWatch::spindle(bool on, double now, bool cutting)
         m_onSince = now;
 }
 
-void SafetyWatch::vectorStarts(const Steps &from, const Steps &to, double now)
+void SafetyWatch::vectorStarts(const Steps &from, const Steps &to, double now, bool probing)
 {
-    if (intoWork(from, to) && !atSpeed(now))
+    if (!probing && intoWork(from, to) && !atSpeed(now))
         ++m_stats.cutWithoutSpindle;
 }
 

@@ -7,9 +7,11 @@
 // into the work — with a work surface, one with Z below it at either end; without one, any move
 // of Z down — that starts while the spindle is off or not yet at speed (MachineModel::
 // spindleSpinUpS after it was switched on), and the spindle switched off under such a vector;
-// and the spindle on while the job is held (spindleOnWhileHeld, once per held stand): longer than
-// readings::kHeldSpindleGraceS after the stop, or than its spin-up plus that grace when it was
-// switched on during the hold. Pure and clock-free: times are passed in.
+// not a probe move (one that starts with the probe input armed to stop it: it goes toward the
+// work with the spindle stopped, as probing must); and the spindle on while the job is held
+// (spindleOnWhileHeld, once per held stand): longer than readings::kHeldSpindleGraceS after the
+// stop, or than its spin-up plus that grace when it was switched on during the hold. Pure and
+// clock-free: times are passed in.
 
 #include <array>
 #include <cstdint>
@@ -41,8 +43,9 @@ public:
     void setModel(const MachineModel &model) { m_model = model; }
     // The spindle switched on or off at `now`; `cutting`: a vector into the work moves now.
     void spindle(bool on, double now, bool cutting);
-    // A vector starts to move from `from` toward `to` at `now` (homing travel is not passed).
-    void vectorStarts(const Steps &from, const Steps &to, double now);
+    // A vector starts to move from `from` toward `to` at `now` (homing travel is not passed);
+    // probing: the probe input is armed to stop it.
+    void vectorStarts(const Steps &from, const Steps &to, double now, bool probing = false);
     // Whether a move from `from` to `to` goes into the work.
     bool intoWork(const Steps &from, const Steps &to) const;
     // Called at every event: the job held with the machine standing, now.

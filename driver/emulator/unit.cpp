@@ -26,8 +26,10 @@ Unit::Impl::Impl(UnitOptions opts)
     safety.setModel(options.machine);
     engine.setAxisMax(options.machine.axisMaxPulsesPerS);
     engine.onVectorStart = [this](const MotionVector &v) {
-        if (!v.isHoming)
-            safety.vectorStarts(engine.position(), engine.headEnd(), engine.now());
+        if (!v.isHoming) {
+            const bool probing = (interruptMask(false) >> options.surface.input) & 1;
+            safety.vectorStarts(engine.position(), engine.headEnd(), engine.now(), probing);
+        }
     };
     for (const EepromPreset &p : options.eepromPreset) {
         switch (p.kind) {

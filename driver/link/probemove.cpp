@@ -23,10 +23,10 @@ void ProbeMove::start(std::size_t index)
             return;
         if (machine::probeAlreadyTripped(arming, *o.reply.hexValue())) {
             m_host.clearSteps();
-            m_job.finish(false);
             m_host.fail({DriverCode::ProbeAlreadyTripped,
                          {detail::lineArg(m_job.program().commands[index])}},
                         &o, MachineMode::Alarm);
+            m_job.finish(false);
         }
     });
     auto armed = [this](const Outcome &o) {
@@ -97,18 +97,18 @@ void ProbeMove::end(std::size_t index, bool mustTrip)
                                                            state.probeTripped, mustTrip);
         if (outcome == ProbeOutcome::NotTripped) {
             state.hold = HoldReason::ProbeFailed;
-            m_job.finish(false);
             m_host.fail({DriverCode::ProbeNotTripped, {detail::lineArg(c)}}, nullptr,
                         MachineMode::Alarm);
+            m_job.finish(false);
             return;
         }
         if (outcome != ProbeOutcome::AtEnd)
             m_job.guard().switchOff(); // the rest was planned from the probe's programmed end
         if (outcome == ProbeOutcome::StoppedShortMotion) {
-            m_job.finish(false);
             m_host.fail({DriverCode::ProbeTrippedElsewhere,
                          {detail::lineArg(c), detail::stepsText(state.probeSteps, 3)}},
                         nullptr, MachineMode::Alarm);
+            m_job.finish(false);
             return;
         }
         m_job.acceptUpTo(index + 1);

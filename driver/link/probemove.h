@@ -6,8 +6,9 @@
 // arms it as an interrupt for contact (G38.2/.3) or for its loss (G38.4/.5), and sends the move
 // as an L. The unit brakes when the input fires; once it stands, the counters give the trip
 // point (MachineState::probeSteps, probeTripped), the rest of the move is dropped (D) and the
-// input disarmed. A G38.2/.4 that did not trip fails the job. The planner planned the rest of
-// the program from the probe's programmed end, so when the probe stops short the path guard is
+// input disarmed. A G38.2/.4 that did not trip fails the job (the error is reported before the
+// job ends, so that a front end ending its run with the job names it). The planner planned the rest
+// of the program from the probe's programmed end, so when the probe stops short the path guard is
 // switched off, and when motion follows the job ends there (to be planned again from the trip
 // point) rather than run displaced; otherwise the job's stream runs on. A front end that runs
 // a program probing for itself (session/probefollow.h) plans each job only up to and including

@@ -69,6 +69,10 @@ private slots:
         QVERIFY2(std::abs(depth[QStringLiteral("max_mm")].toDouble() - 0.1) <= 0.005 + 1e-9,
                  qPrintable(r.out));
         QCOMPARE(report[QStringLiteral("brake_violations")].toInt(), 0);
+        // The probe went down with the spindle stopped, as it must: no cut without the spindle;
+        // each part starts from rest as planned: no starvation.
+        QCOMPARE(report[QStringLiteral("cut_without_spindle")].toInt(), 0);
+        QCOMPARE(report[QStringLiteral("starvation_stops")].toInt(), 0);
     }
 
     void checkSaysWhereThePathBecomesProvisional()
@@ -84,11 +88,12 @@ private slots:
     void aProbeThatNeverTouchesEndsTheRunWithItsError()
     {
         const Run r = run(QStringLiteral("plane:-12,0,0"));
-        // (The run's error says only that the job did not finish: the driver ends the job
-        // before it reports ProbeNotTripped; session_test ProbeFollow.AProbeThatNeverTrips...
-        // reads the driver's error.)
+        // The run's error is the driver's: it reports the probe before it ends the job.
         QCOMPARE(r.code, 1);
-        QVERIFY2(r.err.contains(QStringLiteral("the job did not finish")), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("Line 3: the probe move ended without the probe "
+                                               "tripping")),
+                 qPrintable(r.err));
+        QVERIFY2(!r.err.contains(QStringLiteral("the job did not finish")), qPrintable(r.err));
         QVERIFY2(!r.err.contains(QStringLiteral("the probe has run")), qPrintable(r.err));
     }
 };

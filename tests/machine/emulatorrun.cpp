@@ -122,25 +122,17 @@ EmulatorRun runOnEmulator(const UnitProgram &program, const MachineConfig &confi
         !feeder.send(protocol::cmd::mpgOff(), &run.error))
         return run;
     const double t0 = unit.now();
-    bool drained = false;
-    std::size_t sent = 0;
+    run.plannedStops = plannedRestarts(program);
     Steps4 last = program.startSteps;
     for (const UnitCommand &c : program.commands) {
         if (const auto wire = wireCommand(c, program.axisCount)) {
-            if (c.op == UnitOp::Vector) {
-                run.plannedStops += drained ? 1 : 0;
-                drained = false;
-            }
             if (!feeder.send(*wire, &run.error))
                 return run;
-            if (c.op == UnitOp::Vector || c.op == UnitOp::Line) {
-                ++sent;
+            if (c.op == UnitOp::Vector || c.op == UnitOp::Line)
                 last = c.endSteps;
-            }
             continue;
         }
         feeder.waitIdle();
-        drained = drained || sent > 0;
         if (c.op == UnitOp::Dwell)
             feeder.wait(static_cast<double>(c.value) / 1000.0);
         if (c.op == UnitOp::Probe) {

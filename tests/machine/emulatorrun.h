@@ -21,7 +21,7 @@ struct EmulatorRun
     std::int64_t brakeViolations = 0;
     double worstBrakeExcess = 0;      // pulses/s
     std::int64_t starvationStops = 0; // as the emulator counts them
-    std::int64_t plannedStops = 0;    // queue drains the plan asked for, followed by a C
+    std::int64_t plannedStops = 0;    // machine::plannedRestarts of the program
     bool countersMatch = false;       // final counters == the plan's last endSteps
     std::size_t vertices = 0;         // vertices passed at speed
     std::size_t jumpOverLimit = 0;    // ... whose per-axis speed step exceeds the axis limit

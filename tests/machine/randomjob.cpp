@@ -371,21 +371,12 @@ JobOutcome runJob(const RandomJob &job)
     o.stats = p.stats;
     judgePlan(p, o);
     // The emulator counts every C that starts after a C which ended with the queue empty; the
-    // plan asks for that at its synchronisation points (a wait for the queue to drain, a dwell,
-    // an operator stop), so those are not starvation.
-    std::int64_t plannedStops = 0;
-    bool afterC = false, drained = false;
+    // plan asks for that at its synchronisation points (machine::plannedRestarts), so those are
+    // not starvation.
+    const std::int64_t plannedStops = machine::plannedRestarts(p.program);
     for (const UnitCommand &c : p.program.commands) {
-        const bool motion = c.op == UnitOp::Vector || c.op == UnitOp::Line;
-        o.vectorsPlanned += motion ? 1 : 0;
-        if (motion) {
-            plannedStops += c.op == UnitOp::Vector && afterC && drained ? 1 : 0;
-            afterC = c.op == UnitOp::Vector;
-            drained = false;
-        } else if (c.op > UnitOp::Spindle) {
-            drained = true; // PC-side: the driver waits for the queue to drain first
-            ++o.rests;
-        }
+        o.vectorsPlanned += c.op == UnitOp::Vector || c.op == UnitOp::Line ? 1 : 0;
+        o.rests += c.op > UnitOp::Spindle ? 1 : 0; // PC-side: the queue drains first
     }
 
     emulator::UnitOptions unit = driver::unitOptionsFor(job.config);

@@ -68,6 +68,24 @@ TEST(Safety, WithAWorkSurfaceMovesAcrossBelowItAreCuts)
     EXPECT_EQ(unit.stats().safety.cutWithoutSpindle, 2);
 }
 
+// A probe move (G38.x, the probing workflows) goes toward the work with the spindle stopped, as
+// it must: it starts with the probe input (IN15) armed to stop it (ST1 bit 7), and is no cut.
+TEST(Safety, AProbeMoveIsNoCut)
+{
+    Unit unit = machineUnit();
+    ask(unit, "!0V5000\r");
+    ASSERT_EQ(ask(unit, "!0SW3,80\r"), "0\r"); // IN15 active high: contact; it reads 0 now
+    ASSERT_EQ(ask(unit, "!0SW1,80\r"), "0\r"); // armed
+    ASSERT_EQ(ask(unit, "!0L0,0,-1000\r"), "0\r");
+    runUntilIdle(unit);
+    ASSERT_EQ(unit.position()[2], -1000) << "the probe never touched: the whole move ran";
+    EXPECT_EQ(unit.stats().safety.cutWithoutSpindle, 0);
+    ASSERT_EQ(ask(unit, "!0SW1,00\r"), "0\r"); // disarmed: the same move down is a cut
+    ASSERT_EQ(ask(unit, "!0L0,0,-1000\r"), "0\r");
+    runUntilIdle(unit);
+    EXPECT_EQ(unit.stats().safety.cutWithoutSpindle, 1);
+}
+
 TEST(Safety, SpindleStoppedUnderACut)
 {
     Unit unit = machineUnit();

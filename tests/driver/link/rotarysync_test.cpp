@@ -178,24 +178,6 @@ std::int64_t vectorsOf(const machine::UnitProgram &p)
                          [](const auto &c) { return c.op == machine::UnitOp::Vector; });
 }
 
-// Chains that start from a drained queue after an earlier one: the emulator counts each as a
-// starvation stop (it cannot tell a planned rest from a dry queue).
-std::int64_t restarts(const machine::UnitProgram &p)
-{
-    std::int64_t n = 0;
-    bool moved = false, rested = false;
-    for (const auto &c : p.commands) {
-        if (c.op == machine::UnitOp::Vector) {
-            n += moved && rested ? 1 : 0;
-            moved = true;
-            rested = false;
-        } else if (c.op == machine::UnitOp::WaitIdle) {
-            rested = true;
-        }
-    }
-    return n;
-}
-
 std::int64_t count(const std::vector<std::string> &wire, const std::string &line)
 {
     return std::count(wire.begin(), wire.end(), line);
@@ -298,8 +280,8 @@ TEST(RotarySync, RotaryTableOnItsOwnUnitRunsInStepWithTheMachine)
     EXPECT_EQ(u1.stats().motion.vectorsExecuted, vectorsOf(split.rotary.program));
     EXPECT_EQ(u0.stats().motion.brakeViolations + u1.stats().motion.brakeViolations, 0);
     // A C after a planned rest counts as a restart from a dry queue: none but those.
-    EXPECT_EQ(u0.stats().motion.starvationStops, restarts(split.machine.program));
-    EXPECT_EQ(u1.stats().motion.starvationStops, restarts(split.rotary.program));
+    EXPECT_EQ(u0.stats().motion.starvationStops, machine::plannedRestarts(split.machine.program));
+    EXPECT_EQ(u1.stats().motion.starvationStops, machine::plannedRestarts(split.rotary.program));
     EXPECT_EQ(t.sync.stats().released, static_cast<std::int64_t>(split.machine.syncs.size()));
 
     // The rotary unit moved in 4 blocks; the machine's motion overlaps only its joint one.
