@@ -42,6 +42,8 @@ public:
 
 private:
     enum class State { Off, Halting, Held, Releasing };
+    bool haltBeforeDry();
+    void halt(std::size_t start);
     bool fed();
     void readCause(int n);
     void go();
