@@ -246,8 +246,17 @@ void MotionEngine::finishStop()
 void MotionEngine::completeHead()
 {
     const MotionVector head = m_queue.front();
-    const double allowed =
-        m_stopping || head.lengthSteps() <= 0 ? kNever : std::min(exitTarget(), cruiseFor(head));
+    // A stop (H) brakes along the ramp across whatever is queued; it is within the ramp as long
+    // as a C is there to brake into. Running off the queue (or into an L) while still moving
+    // stops dead: the same fault as a vector too short to brake (docs/gve-protocol.md §7).
+    double allowed = kNever;
+    if (m_stopping) {
+        const bool brakesOn = m_queue.size() > 1 && !m_queue[1].isLine && !m_queue[1].isHoming;
+        if (!brakesOn && !head.isHoming)
+            allowed = 0;
+    } else if (head.lengthSteps() > 0) {
+        allowed = std::min(exitTarget(), cruiseFor(head));
+    }
     for (int i = 0; i < kMaxAxes; ++i)
         m_base[i] += head.steps[i];
     m_queue.pop_front();

@@ -48,6 +48,7 @@ struct JobReport
     double firstStreamPollS = -1; // when the first and last of them started
     double lastStreamPollS = -1;
     std::int64_t leadInHolds = 0; // chains the unit was held at until their start was queued
+    std::int64_t dryHolds = 0;    // chains halted where the unit would have run dry (held again)
     std::int64_t pathFaults = 0;  // times the position left the planned path (path guard)
     std::int64_t rerun = 0;       // vectors sent again after returning (queued ones too)
     std::int64_t returnMoves = 0; // L moves that took the machine back to the path

@@ -58,7 +58,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     m_active = true;
     ++m_serial;
     m_cursor = {};
-    m_streamBlocked = m_queueFullSeen = m_afterRest = false;
+    m_streamBlocked = m_queueFullSeen = m_afterRest = m_chainDamaged = false;
     m_check.reset();
     m_guard.reset();
     m_lead.reset();
@@ -165,6 +165,7 @@ void Job::onCommandOutcome(const Outcome &o, std::size_t index, double now)
     if (m_cursor.next != index || m_guard.faulted())
         return;
     const machine::UnitCommand &c = m_program.commands[index];
+    m_chainDamaged = m_chainDamaged || o.status == OutcomeStatus::Failed || o.recovered > 0;
     if (o.status == OutcomeStatus::Failed) {
         if (isMotion(c.op)) {
             m_check.verify("outcome unknown: " + o.error);

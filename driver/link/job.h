@@ -96,6 +96,11 @@ public:
     void setStreamBlocked(bool on) { m_streamBlocked = on; }
     void setQueueFullSeen(bool on) { m_queueFullSeen = on; }
     void setWaitUntil(double t) { m_waitUntil = t; }
+    // A packet or command of the chain being streamed was damaged, or its reply lost and
+    // recovered: the unit may hold less than the job's packets were sized for (LeadInHold halts
+    // it where it would run dry). Cleared where a chain starts from rest.
+    bool chainDamaged() const { return m_chainDamaged; }
+    void setChainDamaged(bool on) { m_chainDamaged = on; }
     void resetPacketLimit() { m_packetLimit = m_pace.maxPacket(); }
     protocol::Command toCommand(const machine::UnitCommand &c) const;
     ProgressCheck &progress() { return m_check; }
@@ -119,6 +124,7 @@ private:
     bool m_streamBlocked = false; // waiting for idle / operator / verification
     bool m_queueFullSeen = false; // last C/packet hit a full queue
     bool m_afterRest = false;     // a PC-side wait (dwell) ended: the unit holds nothing
+    bool m_chainDamaged = false;  // see chainDamaged()
     double m_waitUntil = -1;      // a dwell or back-off: nothing from the job before this time
     int m_packetLimit = 1;        // adaptive packet size (commands)
     LineErrors m_lineErrors;      // damaged packet lines lately: caps m_packetLimit's growth

@@ -93,6 +93,17 @@ public:
     // braking excluded): the rest is kept for the reply's and the next packet's round trips and
     // the drift of the estimate, or half of what it holds when it holds little.
     static double packetBudgetS(double heldS, double rttS);
+    // The same play from where the unit is now, in the middle of a chain (the model's place, the
+    // commands from the cursor on sent as the job sends them): kFeeds, or 1 + the last vector
+    // the unit holds when it runs dry (brakes to rest at the end of its queue).
+    static constexpr std::size_t kFeeds = static_cast<std::size_t>(-1);
+    std::size_t dryAhead() const;
+    // The vector before `vectorEnd` brakes from its V to rest within its own length (running
+    // dry there is a stop on the ramp, not a brake violation).
+    bool brakesWithin(std::size_t vectorEnd) const;
+    // Where a unit halted `aheadS` seconds from now stands: the command the model has it
+    // execute then plus its braking from the V in effect (at most the last vector queued).
+    std::size_t stopEstimate(double aheadS) const;
     // The planned V (pulses/s) in effect at the command the unit executes (0: none yet).
     std::int64_t plannedSpeedNow() const;
     // Where a packet ends to keep polls at their rate where the motion is slow (next = no cap).
@@ -108,6 +119,12 @@ public:
 
 private:
     void estimateDurations();
+    // Plays the job's packets from `queuedEnd` on, the first leaving at t0 (s from now), with
+    // the unit's motion counted from program time originS: kFeeds, or 1 + the last vector
+    // queued when a packet's vectors come after the unit began braking to rest. `floor`: no
+    // vector at or after it queued yet means the unit has not started (it waits, it feeds).
+    std::size_t playPackets(double originS, std::size_t floor, std::size_t queuedEnd,
+                            double t0) const;
     double rate() const; // program seconds per second of the unit's time
     // The executing command and when it was read, as the pace takes them (JobCursor::paceExec).
     std::size_t exec() const;

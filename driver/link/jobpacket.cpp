@@ -111,6 +111,7 @@ void Job::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, do
     if (m_cursor.next != first || m_guard.faulted())
         return; // superseded (abort, link loss, the path guard dropped the queue)
     if (o.status == OutcomeStatus::Failed) {
+        m_chainDamaged = true;
         m_lineErrors.note(static_cast<int>(n), 1);
         m_packetLimit = std::max(4, m_packetLimit / 2);
         m_check.verify("packet outcome unknown: " + o.error);
@@ -118,6 +119,7 @@ void Job::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, do
     }
     const std::size_t accepted = std::min<std::size_t>(static_cast<std::size_t>(o.accepted), n);
     const bool damaged = o.reply.code == ReplyCode::Syntax || o.reply.code == ReplyCode::Watchdog;
+    m_chainDamaged = m_chainDamaged || damaged || o.recovered > 0;
     m_lineErrors.note(static_cast<int>(o.reply.ok() ? n : accepted + 1), damaged ? 1 : 0);
     acceptUpTo(first + accepted, o.recovered == 0);
     switch (o.reply.code) {

@@ -16,6 +16,13 @@
 // takes to fill, only at the chains that need it. An abort meanwhile takes the hold over (its D
 // clears it); an operator's pause is resumed without G (Hold::goOn): the unit stays held until this
 // G.
+//
+// The same hold in the middle of a chain, after a damaged packet or a recovered reply there
+// (Job::chainDamaged): where the job's own packets from here (JobPace::dryAhead) would come after
+// the unit's last queued vector began braking to rest and that vector cannot brake within itself
+// (a brake violation), the job sends H while the unit still holds the ramp; the unit brakes
+// through its queue and stands, and the chain goes on as above from where it stands
+// (JobPace::stopEstimate: never taken to stand before it does). Property seeds 90 and 132.
 
 #include <cstddef>
 
@@ -42,6 +49,8 @@ public:
 
 private:
     enum class State { Off, Halting, Held, Releasing };
+    bool haltBeforeDry();
+    void halt(std::size_t start);
     bool fed();
     void readCause(int n);
     void go();

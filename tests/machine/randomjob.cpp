@@ -427,6 +427,7 @@ JobOutcome runJob(const RandomJob &job)
     o.starvationStops = stats.motion.starvationStops - plannedStops;
     o.pathFaults = rep.pathFaults;
     o.leadInHolds = rep.leadInHolds;
+    o.dryHolds = rep.dryHolds;
     o.resendShare = rep.commands > 0 ? static_cast<double>(rep.resent) /
                                            static_cast<double>(rep.commands + rep.resent)
                                      : 0;

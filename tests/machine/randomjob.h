@@ -57,6 +57,7 @@ struct JobOutcome
     bool exact = false;
     std::int64_t pathFaults = 0;
     std::int64_t leadInHolds = 0; // chains the driver held the unit at (driver/link/leadinhold.h)
+    std::int64_t dryHolds = 0;    // chains halted where the unit would have run dry (ditto)
     double resendShare = 0;       // resent commands / commands sent in the job
     // What broke, in two groups. wrong: the job ended somewhere the program does not (counters,
     // a vector run twice or never), the plan breaks a limit of the machine, or its estimate lies

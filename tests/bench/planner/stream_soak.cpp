@@ -117,6 +117,7 @@ int main(int argc, char **argv)
     long offPace = 0, starvedCases = 0, brakeCases = 0, starved = 0, estimateOff = 0;
     long failed = 0, clean = 0, faulty = 0, pathFaults = 0, packetsOff = 0, cleanStopped = 0;
     long heldCases = 0, holds = 0;
+    long dryHolds = 0, dryCases = 0, dryClean = 0;
     double worstBoundRatio = 0, worstClean = 0, sumClean = 0, worstResend = 0, sumResend = 0;
     double virtualS = 0;
     long vectors = 0;
@@ -158,6 +159,9 @@ int main(int argc, char **argv)
         virtualS += o.jobS;
         heldCases += o.leadInHolds > 0 ? 1 : 0;
         holds += o.leadInHolds;
+        dryHolds += o.dryHolds;
+        dryCases += o.dryHolds > 0 ? 1 : 0;
+        dryClean += job.wire.byteErrorRate == 0 ? o.dryHolds : 0;
         packetsOff += job.config.link.packets ? 0 : 1;
         if (o.stats.boundS > 0)
             worstBoundRatio = std::max(worstBoundRatio, o.stats.estimatedS / o.stats.boundS);
@@ -191,6 +195,8 @@ int main(int argc, char **argv)
                 virtualS);
     std::printf("packets off                     %ld cases\n", packetsOff);
     std::printf("chains held at their start      %ld (in %ld cases)\n", holds, heldCases);
+    std::printf("chains halted before running dry %ld (in %ld cases; on clean links %ld)\n",
+                dryHolds, dryCases, dryClean);
     std::printf("estimate / bound, worst         %.4f\n", worstBoundRatio);
     std::printf("clean links: job / estimate - 1 mean %.4f %%, worst %.4f %% (%ld cases)\n",
                 clean ? 100 * sumClean / clean : 0.0, 100 * worstClean, clean);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 using namespace frezka::emulator;
 using namespace frezka::emulator::test;
@@ -64,6 +65,38 @@ TEST(Queue, HaltWhenIdleAndWhenVectorsRunOut)
     EXPECT_EQ(unit.takeTransmit(), "8\r");
     EXPECT_EQ(ask(unit, "!0SR6\r"), "8,90\r");
     EXPECT_EQ(unit.position()[0], 10100);
+    // It ran off its queue at sqrt(10 000^2 - 2 * 10 000 * 3 100) pulses/s: a stop past the
+    // ramp, counted as a brake violation (the vectors alone would have been one too).
+    const MotionStats s = unit.stats().motion;
+    EXPECT_EQ(s.brakeViolations, 1);
+    EXPECT_NEAR(s.worstBrakeExcessPulsesPerS, std::sqrt(1e8 - 2e4 * 3100), 1.0);
+}
+
+TEST(Queue, HaltWithinTheQueuedRampIsNoBrakeViolation)
+{
+    Unit unit = fastUnit();
+    // A chain of two vectors passed at full speed (B = V); the H comes near the end of the first
+    // and brakes into the second.
+    ask(unit, "!0B10000\r!0C10000,0,0\r!0C10000,0,0\r");
+    unit.advance(1.4); // 10 000 pulses/s at x 9 000: braking to zero takes 5 000 steps
+    ask(unit, "!0H\r");
+    runUntilIdle(unit);
+    EXPECT_EQ(unit.takeTransmit(), "8\r");
+    EXPECT_EQ(unit.stats().motion.brakeViolations, 0); // stopped in the second vector
+    EXPECT_EQ(unit.position()[0], 14000);
+    ask(unit, "!0G\r");
+    runUntilIdle(unit);
+    EXPECT_EQ(unit.position()[0], 20000);
+    EXPECT_EQ(unit.stats().motion.brakeViolations, 0);
+
+    // The last queued vector, halted while it cruises: it holds the ramp itself.
+    Unit late = fastUnit();
+    ask(late, "!0B2000\r!0C20000,0,0\r");
+    late.advance(1.6); // x 11 000, cruising; its own brake to zero starts at x 15 000
+    ask(late, "!0H\r");
+    runUntilIdle(late);
+    EXPECT_EQ(late.stats().motion.brakeViolations, 0); // within its own ramp: stops at 16 000
+    EXPECT_EQ(late.position()[0], 16000);
 }
 
 TEST(Queue, HaltBrakesAcrossQueuedVectorsAndGoFinishesExactly)
