@@ -87,6 +87,7 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     connectProgram();
     connectLoadCancel();
     connectMachine();
+    connectProbeFollow();
     retranslate();
     resize(1366, 740);
     m_defaultState = saveState();
@@ -107,7 +108,11 @@ MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     updateRunPhase();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    if (m_workflow)
+        m_workflow->setProbeFollow(nullptr); // m_follow goes before the workflow
+}
 
 void MainWindow::buildDocks()
 {

@@ -212,6 +212,13 @@ private:
     QString logLineText(const QString &line) const;
     void onOffsetsChanged();
     void offerProgram();
+    // A program that probes for itself (mainwindow_probefollow.cpp): the run workflow follows
+    // its probes (session/probefollow.h); the preview shows the part after the next probe not
+    // run yet as provisional, and the program as re-interpreted after each probe.
+    void connectProbeFollow();
+    void offerProbeFollow();
+    void onProbeFollowShown();
+    void showProvisional();
     void onJobStarted();
     void onJobFinished(bool ok);
     void onChecked(bool ok);
@@ -279,6 +286,8 @@ private:
     session::WorkOffsets *m_offsets;
     session::MachineLink *m_link = nullptr;
     session::RunWorkflow *m_workflow = nullptr;
+    std::unique_ptr<session::ProbeFollow> m_follow; // the loaded program probes for itself
+    std::shared_ptr<const session::InterpretRequest> m_followRequest; // what m_follow was made of
     session::ConsoleSession *m_consoleSession = nullptr;
     // Rendering of the running job: the actual speed from the live position; the hold shown.
     ActualSpeed m_speed;

@@ -29,6 +29,9 @@ using driver::MachineMode;
 
 void MainWindow::runProgram()
 {
+    // A program that probes for itself runs from its start again: shown as before its probes.
+    if (!m_controller->state().jobActive)
+        m_program->restoreAsLoaded();
     m_workflow->runProgram();
 }
 
@@ -181,6 +184,7 @@ void MainWindow::offerProgram()
     m_workflow->setProgram(p.runnable() ? p.unitProgram : nullptr, {o.x, o.y, o.z, o.a},
                            QFileInfo(p.path).fileName(),
                            p.errors.empty() ? QString() : p.errors.front().text);
+    offerProbeFollow();
 }
 
 // The soft-limit policy (machine/softlimits.h) decides; the driver applies the same function,

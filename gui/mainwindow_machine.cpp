@@ -150,6 +150,15 @@ void MainWindow::onChecked(bool ok)
                 .arg(RunPanel::formatDuration(p.estimatedS)));
         statusBar()->showMessage(tr("Check passed."), 10000);
     }
+    if (p.provisional()) {
+        const QString note = tr("After line %1 the path depends on the probe's result: it is "
+                                "checked and shown as if the probe ended at its programmed end "
+                                "(provisional), and each part is planned once the probe before "
+                                "it has run.")
+                                 .arg(p.provisionalLine);
+        m_console->appendInfo(note);
+        statusBar()->showMessage(ok ? tr("Check passed.") + QLatin1Char(' ') + note : note, 15000);
+    }
     emit programChecked(ok);
 }
 

@@ -7,6 +7,7 @@
 
 #include <QVector4D>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <initializer_list>
@@ -184,15 +185,18 @@ QImage SoftwareToolpathRenderer::renderImage(const QSize &size) const
         const std::size_t cutEnd = m_model->cutEntry() == ToolpathViewModel::kNoneCut
                                        ? 0
                                        : scene->firstSegmentAfter(m_model->cutEntry());
-        std::array<QVector<QLineF>, 5> buckets; // 4 classes + cut
+        const std::size_t provisional = std::max(cutEnd, m_model->firstProvisionalSegment());
+        std::array<QVector<QLineF>, 6> buckets; // 4 classes + cut + provisional
         for (std::size_t i = 0; i < scene->segments.size(); ++i) {
             const auto &s = scene->segments[i];
-            const std::size_t bucket = i < cutEnd ? 4 : std::size_t(s.cls);
+            const std::size_t bucket = i < cutEnd ? 4 : i >= provisional ? 5 : std::size_t(s.cls);
             buckets[bucket].append(QLineF(toScreen(s.from), toScreen(s.to)));
         }
         for (std::size_t b = 0; b < buckets.size(); ++b) {
-            const QColor c = b == 4 ? colours.cut : colours.colourOf(SegmentClass(b));
-            p.setPen(QPen(c, b == 4 ? 2.0 : 1.0));
+            const QColor c = b == 4   ? colours.cut
+                             : b == 5 ? colours.provisional
+                                      : colours.colourOf(SegmentClass(b));
+            p.setPen(QPen(c, b == 4 ? 2.0 : 1.0, b == 5 ? Qt::DashLine : Qt::SolidLine));
             p.drawLines(buckets[b]);
         }
     }
@@ -422,8 +426,17 @@ void GlToolpathRenderer::paintGL()
             glDrawArrays(GL_LINES, 0, GLsizei(cutEnd * 2));
             glLineWidth(1.f);
         }
+        // The path after a probe not run yet: dim, in one colour.
+        const std::size_t provisional =
+            std::min(m_segmentCount, std::max(cutEnd, m_model->firstProvisionalSegment()));
         m_program.setUniformValue("u_mode", 0);
-        glDrawArrays(GL_LINES, GLint(cutEnd * 2), GLsizei((m_segmentCount - cutEnd) * 2));
+        glDrawArrays(GL_LINES, GLint(cutEnd * 2), GLsizei((provisional - cutEnd) * 2));
+        if (provisional < m_segmentCount) {
+            m_program.setUniformValue("u_mode", 1);
+            m_program.setUniformValue("u_solid", c.provisional);
+            glDrawArrays(GL_LINES, GLint(provisional * 2),
+                         GLsizei((m_segmentCount - provisional) * 2));
+        }
         m_vbo.release();
     }
     drawOverlay(toolLines(*m_model, mmPerPixel));

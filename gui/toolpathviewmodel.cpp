@@ -40,6 +40,23 @@ void ToolpathViewModel::setCutEntry(std::uint32_t entry)
     emit changed();
 }
 
+void ToolpathViewModel::setProvisionalAfter(std::uint32_t entry)
+{
+    if (entry == m_provisionalAfter)
+        return;
+    m_provisionalAfter = entry;
+    emit changed();
+}
+
+std::size_t ToolpathViewModel::firstProvisionalSegment() const
+{
+    if (!m_scene)
+        return 0;
+    if (m_provisionalAfter == kNoProvisional)
+        return m_scene->segments.size();
+    return m_scene->firstSegmentAfter(m_provisionalAfter);
+}
+
 void ToolpathViewModel::setToolPosition(const QVector3D &mm)
 {
     if (mm == m_tool)

@@ -24,6 +24,9 @@ struct ViewColours
     QColor arc{60, 210, 140};
     QColor probe{220, 80, 220};
     QColor cut{120, 120, 120};
+    // The path after a probe not run yet (a program that probes for itself): dim, dashed in
+    // the QPainter view.
+    QColor provisional{125, 110, 150};
     QColor tool{255, 60, 60};
     QColor travel{110, 110, 120};
     QColor boundsOk{90, 200, 90};
@@ -48,6 +51,14 @@ public:
     static constexpr std::uint32_t kNoneCut = 0xFFFFFFFFu;
     void setCutEntry(std::uint32_t entry);
     std::uint32_t cutEntry() const { return m_cutEntry; }
+
+    // Entries after this one depend on a probe that has not run (session::ProbeFollow) and are
+    // drawn as provisional; kNoProvisional = none.
+    static constexpr std::uint32_t kNoProvisional = 0xFFFFFFFFu;
+    void setProvisionalAfter(std::uint32_t entry);
+    std::uint32_t provisionalAfter() const { return m_provisionalAfter; }
+    // The first scene segment drawn as provisional (the scene's size: none).
+    std::size_t firstProvisionalSegment() const;
 
     void setToolPosition(const QVector3D &mm);
     QVector3D toolPosition() const { return m_tool; }
@@ -88,6 +99,7 @@ signals:
 private:
     std::shared_ptr<const ToolpathScene> m_scene;
     std::uint32_t m_cutEntry = kNoneCut;
+    std::uint32_t m_provisionalAfter = kNoProvisional;
     QVector3D m_tool;
     SceneBounds m_travel;
     bool m_outside = false;

@@ -12,12 +12,12 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 export XDG_CONFIG_HOME="$tmp/config" XDG_RUNTIME_DIR="$tmp/run"
 mkdir -p "$XDG_RUNTIME_DIR" && chmod 700 "$XDG_RUNTIME_DIR"
-shot() { # language png [extra options]
+shot() { # language png [extra options]; $program: the program (default: the demo)
     local lang=$1 png=$2
     shift 2
     xvfb-run -a -s "-screen 0 1366x768x24" \
         "$build/app/frezka" --language "$lang" --screenshot "$out/$png" "$@" \
-        resources/programs/frezka-demo.nc
+        "${program:-resources/programs/frezka-demo.nc}"
     echo "wrote $out/$png"
 }
 shot en main-window.png
@@ -69,3 +69,23 @@ XDG_CONFIG_HOME="$board" xvfb-run -a -s "-screen 0 1366x768x24" "$build/app/frez
     --language en --height-map "$board/board-map.csv" --screenshot "$out/height-map-view.png" \
     "$board/board.nc"
 echo "wrote $out/height-map-view.png"
+# A program that probes for itself (docs/probing.md "Programs that probe for themselves"), in
+# pcb2gcode's autolevel shape: a touch-off, a 3 x 3 grid into #500..#508, the tracks' Z from
+# them; everything after the first probe is provisional (dim, dashed) until the probes have run.
+auto="$tmp/autolevel"
+mkdir -p "$auto"
+awk 'BEGIN {
+    print "G21 G90 G94\nG10 L2 P1 X20 Y20 Z-10\nG54\nG0 Z5\nG0 X0 Y0\nG38.2 Z-10 F60\nG10 L20 P1 Z0\nG0 Z2"
+    for (j = 0; j < 3; ++j)
+        for (i = 0; i < 3; ++i)
+            printf "G0 X%d Y%d\nG38.2 Z-3 F60\n#%d=#5063\nG0 Z2\n", 30 * i, 30 * j, 500 + 3 * j + i
+    print "M3 S10000"
+    for (k = 0; k < 5; ++k) {
+        y = 5 + k * 12; r = (y < 30) ? 0 : 3
+        printf "#1=[[#%d+#%d+#%d]/3-0.1]\nG0 X5 Y%d\nG1 Z#1 F100\nG1 X55 F600\nG1 Y%d\nG1 X5\n", \
+            500 + r, 501 + r, 502 + r, y, y + 4
+        printf "G1 Y%d\nG0 Z2\n", y
+    }
+    print "M5\nM2"
+}' > "$auto/autolevel.nc"
+program="$auto/autolevel.nc" shot en probing-provisional.png

@@ -80,6 +80,8 @@ ProbeFollow::Next ProbeFollow::interpret(std::size_t *probeEntry)
     next.whole = g.toolpath;
     next.endsAtProbe = dependsOnProbe(*g.toolpath, g.provisionalEntry);
     next.provisionalLine = g.provisionalLine;
+    if (next.endsAtProbe)
+        next.provisionalEntry = g.provisionalEntry;
     m_lastProvisional = g.provisionalEntry;
     return next;
 }

@@ -51,7 +51,9 @@ public:
         std::shared_ptr<const gcode::Toolpath> job;       // what plan was planned from
         bool endsAtProbe = false;          // the job's last move is a probe not run yet
         std::uint32_t provisionalLine = 0; // that probe's line (0: none)
-        PlanOutcome planned;               // the planner's figures, warnings and errors
+        std::size_t provisionalEntry =
+            gcode::Result::kNoEntry; // its entry in whole (none: kNoEntry)
+        PlanOutcome planned;         // the planner's figures, warnings and errors
         QString error;
     };
     // The program from its start at startMm (machine mm), no probe run yet: the first job.

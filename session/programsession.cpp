@@ -79,8 +79,17 @@ void indexToolpath(const gcode::Toolpath &tp, LoadedProgram &result)
 // planned time to each line for the ETA.
 void planLoaded(const LoadJob &job, LoadedProgram &result, StageClock &clock)
 {
-    const PlanOutcome plan = planProgram(*result.toolpath, *job.profile,
-                                         QFileInfo(job.path).fileName(), job.feedOverride);
+    // A program that probes for itself: the part up to and including its first probe (the
+    // first job of its run), the rest planned once the probe has run.
+    std::shared_ptr<const gcode::Toolpath> part = result.toolpath;
+    if (result.provisional()) {
+        auto first = std::make_shared<gcode::Toolpath>();
+        first->setOrigin(result.toolpath->origin());
+        first->appendEntries(*result.toolpath, 0, result.provisionalEntry + 1);
+        part = std::move(first);
+    }
+    const PlanOutcome plan =
+        planProgram(*part, *job.profile, QFileInfo(job.path).fileName(), job.feedOverride);
     clock.done("plan");
     result.errors.insert(result.errors.end(), plan.errors.begin(), plan.errors.end());
     result.warnings.insert(result.warnings.end(), plan.warnings.begin(), plan.warnings.end());
@@ -109,6 +118,47 @@ void startFromLine(const LoadJob &job, const QString &fileName, InterpretOutcome
     }
     result.fromLine = f.from;
     outcome.toolpath = std::move(f.toolpath);
+}
+
+// A program whose path depends on a probe it runs (session/probefollow.h): followed from its
+// first probe when it runs whole, else refused with the probe's line (never run provisional).
+void probesForItself(const LoadJob &job, const InterpretRequest &req,
+                     const InterpretOutcome &outcome, LoadedProgram &result)
+{
+    if (!dependsOnProbe(*outcome.toolpath, outcome.provisionalEntry) || !result.errors.empty())
+        return;
+    const std::uint32_t line = outcome.provisionalLine;
+    if (job.startLine != 0) {
+        result.errors.push_back(
+            {int(job.startLine), 0,
+             ProgramSession::tr("Line %1: the program probes for itself: after line %2 its path "
+                                "depends on that probe's result, and the probes before line %1 "
+                                "would not run. Run the whole program.")
+                 .arg(job.startLine)
+                 .arg(line)});
+        return;
+    }
+    if (job.heightMap) {
+        result.errors.push_back(
+            {int(line), 0,
+             ProgramSession::tr("Line %1: the program probes for itself (after this line its "
+                                "path depends on the probe's result): a height map cannot be "
+                                "applied to it. Remove the map to run the program.")
+                 .arg(line)});
+        return;
+    }
+    auto follow = std::make_shared<InterpretRequest>(req);
+    follow->cancel = nullptr; // the load's own, gone with it
+    follow->progress = nullptr;
+    result.followRequest = std::move(follow);
+    result.provisionalEntry = outcome.provisionalEntry;
+    result.provisionalLine = line;
+    result.warnings.push_back(
+        {int(line), 0,
+         ProgramSession::tr("Line %1: after this line the path depends on the probe's result; it "
+                            "is shown as provisional, and each part is planned and run once the "
+                            "probe before it has run.")
+             .arg(line)});
 }
 
 // What the interpreter is asked for the job's text.
@@ -167,6 +217,7 @@ bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
         result.changedToolTable = std::move(outcome.toolTable);
     if (cancelFlag->load() || !outcome.toolpath)
         return !cancelFlag->load();
+    probesForItself(job, req, outcome, result);
     if (job.startLine != 0 && result.errors.empty() && job.profile)
         startFromLine(job, req.fileName, outcome, result);
     if (job.heightMap && result.errors.empty()) { // bent after the run from a line's approach
@@ -324,9 +375,45 @@ void ProgramSession::finish(std::shared_ptr<LoadedProgram> result, QString failu
         return;
     }
     m_program = std::move(*result);
+    m_asLoaded.reset();
     returnFreeMemory(); // what the program before held
     emit loadProgress(1.0, QString());
     emit loaded();
+}
+
+void ProgramSession::showFollowed(const ProbeFollow::Next &next)
+{
+    if (!next.whole || !next.plan)
+        return;
+    if (!m_asLoaded)
+        m_asLoaded = m_program;
+    LoadedProgram &p = m_program;
+    p.toolpath = next.whole;
+    indexToolpath(*next.whole, p);
+    if (m_buildView)
+        p.view = m_buildView(
+            *next.whole, [](double) {}, nullptr);
+    const machine::PlanStats &stats = next.planned.stats;
+    p.unitProgram = next.plan;
+    p.planStats = stats;
+    p.estimatedS = stats.estimatedS;
+    p.speed = m_profile ? plannedSpeedDecimated(*next.plan, *m_profile, stats.speedModeVk, 4000)
+                        : std::vector<SpeedSample>{};
+    p.lineEndS = plannedLineTimes(*next.plan, stats.speedModeVk, stats.estimatedS);
+    p.provisionalEntry = next.endsAtProbe ? next.provisionalEntry : gcode::Result::kNoEntry;
+    p.provisionalLine = next.endsAtProbe ? next.provisionalLine : 0;
+    ++p.probesFollowed;
+    emit probeFollowShown();
+}
+
+bool ProgramSession::restoreAsLoaded()
+{
+    if (!m_asLoaded)
+        return false;
+    m_program = std::move(*m_asLoaded);
+    m_asLoaded.reset();
+    emit probeFollowShown();
+    return true;
 }
 
 } // namespace frezka::session

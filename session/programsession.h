@@ -11,6 +11,7 @@
 
 #include "session/loadstages.h"
 #include "session/plannedspeed.h"
+#include "session/probefollow.h"
 #include "session/programplanner.h"
 #include "session/programtext.h"
 #include "session/runfromline.h"
@@ -76,6 +77,18 @@ struct LoadedProgram
     std::optional<FromLine> fromLine;
     // The tool table as the program's G10 L1/L10/L11 leave it: written back once it has run.
     std::optional<gcode::ToolTable> changedToolTable;
+    // A program that probes for itself (session/probefollow.h): its path after the probe entry
+    // provisionalEntry (on provisionalLine) depends on where that probe stops (none: kNoEntry
+    // and 0). The load then plans only the part up to and including that probe (unitProgram,
+    // estimatedS, lineEndS are that part's), and followRequest is how the program was
+    // interpreted, for the ProbeFollow that runs it; null for other programs. After a probe has
+    // run (ProgramSession::showFollowed) toolpath is the program as interpreted with the results
+    // so far, the plan that of the part that runs now, and probesFollowed counts them.
+    std::size_t provisionalEntry = gcode::Result::kNoEntry;
+    std::uint32_t provisionalLine = 0;
+    std::shared_ptr<const InterpretRequest> followRequest;
+    int probesFollowed = 0;
+    bool provisional() const { return provisionalEntry != gcode::Result::kNoEntry; }
     // How long each stage of the load took and the memory it held (bench_gui_load prints it).
     std::vector<LoadStage> stages;
 };
@@ -134,6 +147,14 @@ public:
     // the background, its result dropped), so the window never stalls.
     void cancel();
     bool isLoading() const { return m_thread != nullptr; }
+    // A probe of a program that probes for itself has run and the run goes on with `next`
+    // (RunWorkflow::probeFollowed): program() becomes the program as interpreted with the probe
+    // results so far (its view built again here), planned as the part that runs now; the
+    // program as loaded is kept for restoreAsLoaded(). probeFollowShown() follows.
+    void showFollowed(const ProbeFollow::Next &next);
+    // The program as it was loaded, before any probe was followed (a new run starts there);
+    // false when nothing was followed.
+    bool restoreAsLoaded();
     const LoadedProgram &program() const { return m_program; }
     bool hasProgram() const { return m_program.toolpath != nullptr && m_program.ok(); }
 
@@ -143,6 +164,7 @@ signals:
     void loaded();                           // program() holds the result (maybe with errors)
     void loadFailed(const QString &why);     // file unreadable
     void loadCancelled(const QString &path); // cancel() stopped the load of this file
+    void probeFollowShown();                 // showFollowed() or restoreAsLoaded() changed it
 
 private:
     void finish(std::shared_ptr<LoadedProgram> result, QString failure);
@@ -162,6 +184,7 @@ private:
     std::optional<gcode::HeightMap> m_heightMap;
     bool m_measurePeaks = false;
     LoadedProgram m_program;
+    std::optional<LoadedProgram> m_asLoaded; // before showFollowed(), until the next load
     QThread *m_thread = nullptr;
     QString m_loadingPath;
     std::vector<QPointer<QThread>> m_ending; // stopped loads still ending; waited for at the end

@@ -4822,6 +4822,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Heights &amp;exaggerated %1×</source>
         <translation>Výšky &amp;zvětšené %1×</translation>
     </message>
+    <message>
+        <source>After line %1 the path depends on the probe&apos;s result: it is checked and shown as if the probe ended at its programmed end (provisional), and each part is planned once the probe before it has run.</source>
+        <translation>Za řádkem %1 závisí dráha na výsledku sondy: kontroluje se a zobrazuje, jako by sonda skončila v naprogramovaném konci (předběžně), a každá část se naplánuje, až proběhne sonda před ní.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe&apos;s result was followed; the rest of the program is shown and runs as interpreted with it.</source>
+        <translation>Řádek %1: výsledek sondy byl převzat; zbytek programu se zobrazuje a běží tak, jak byl s ním znovu interpretován.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -7706,6 +7714,18 @@ Volby:
     <message>
         <source>Cannot open %1: %2</source>
         <translation>%1 nelze otevřít: %2</translation>
+    </message>
+    <message>
+        <source>Line %1: the program probes for itself: after line %2 its path depends on that probe&apos;s result, and the probes before line %1 would not run. Run the whole program.</source>
+        <translation>Řádek %1: program sám sonduje: za řádkem %2 závisí jeho dráha na výsledku té sondy a sondy před řádkem %1 by neproběhly. Spusťte celý program.</translation>
+    </message>
+    <message>
+        <source>Line %1: the program probes for itself (after this line its path depends on the probe&apos;s result): a height map cannot be applied to it. Remove the map to run the program.</source>
+        <translation>Řádek %1: program sám sonduje (za tímto řádkem závisí jeho dráha na výsledku sondy): výškovou mapu na něj nelze použít. Pro spuštění programu mapu odeberte.</translation>
+    </message>
+    <message>
+        <source>Line %1: after this line the path depends on the probe&apos;s result; it is shown as provisional, and each part is planned and run once the probe before it has run.</source>
+        <translation>Řádek %1: za tímto řádkem závisí dráha na výsledku sondy; zobrazuje se jako předběžná a každá část se naplánuje a spustí, až proběhne sonda před ní.</translation>
     </message>
 </context>
 <context>

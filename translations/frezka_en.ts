@@ -4815,6 +4815,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Heights &amp;exaggerated %1×</source>
         <translation>Heights &amp;exaggerated %1×</translation>
     </message>
+    <message>
+        <source>After line %1 the path depends on the probe&apos;s result: it is checked and shown as if the probe ended at its programmed end (provisional), and each part is planned once the probe before it has run.</source>
+        <translation>After line %1 the path depends on the probe&apos;s result: it is checked and shown as if the probe ended at its programmed end (provisional), and each part is planned once the probe before it has run.</translation>
+    </message>
+    <message>
+        <source>Line %1: the probe&apos;s result was followed; the rest of the program is shown and runs as interpreted with it.</source>
+        <translation>Line %1: the probe&apos;s result was followed; the rest of the program is shown and runs as interpreted with it.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -7693,6 +7701,18 @@ Options:
     <message>
         <source>Cannot open %1: %2</source>
         <translation>Cannot open %1: %2</translation>
+    </message>
+    <message>
+        <source>Line %1: the program probes for itself: after line %2 its path depends on that probe&apos;s result, and the probes before line %1 would not run. Run the whole program.</source>
+        <translation>Line %1: the program probes for itself: after line %2 its path depends on that probe&apos;s result, and the probes before line %1 would not run. Run the whole program.</translation>
+    </message>
+    <message>
+        <source>Line %1: the program probes for itself (after this line its path depends on the probe&apos;s result): a height map cannot be applied to it. Remove the map to run the program.</source>
+        <translation>Line %1: the program probes for itself (after this line its path depends on the probe&apos;s result): a height map cannot be applied to it. Remove the map to run the program.</translation>
+    </message>
+    <message>
+        <source>Line %1: after this line the path depends on the probe&apos;s result; it is shown as provisional, and each part is planned and run once the probe before it has run.</source>
+        <translation>Line %1: after this line the path depends on the probe&apos;s result; it is shown as provisional, and each part is planned and run once the probe before it has run.</translation>
     </message>
 </context>
 <context>

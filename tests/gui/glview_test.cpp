@@ -46,6 +46,39 @@ private slots:
         QVERIFY(bgPixels > img.width() * img.height() / 2);
     }
 
+    // The path after a probe not run yet (issue 19 item 4) in the dim provisional colour.
+    void drawsTheProvisionalPartDim()
+    {
+        QVERIFY2(openGlUsable(), "no OpenGL context (run under xvfb-run)");
+        ToolpathView view(nullptr, ToolpathView::Backend::Auto);
+        QVERIFY(view.usesOpenGl());
+        view.resize(400, 300);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        gcode::Toolpath p;
+        p.appendRapid({0, 0, 5, 0}, 0, 1);
+        p.appendFeed({50, 0, 0, 0}, 600, 2);
+        p.appendFeed({50, 50, 0, 0}, 600, 3);
+        p.appendFeed({0, 50, 0, 0}, 600, 4);
+        view.model()->setScene(std::make_shared<ToolpathScene>(buildScene(p)));
+        view.model()->setPreset(ViewPreset::Top);
+        const QRgb feed = view.model()->colours().feed.rgb() & 0xFFFFFF;
+        const QRgb dim = view.model()->colours().provisional.rgb() & 0xFFFFFF;
+        auto count = [](const QImage &img, QRgb colour) {
+            int n = 0;
+            for (int y = 0; y < img.height(); ++y)
+                for (int x = 0; x < img.width(); ++x)
+                    n += (img.pixel(x, y) & 0xFFFFFF) == colour;
+            return n;
+        };
+        const QImage before = view.grabFrame();
+        QCOMPARE(count(before, dim), 0);
+        view.model()->setProvisionalAfter(1); // the first side as written, two provisional
+        const QImage after = view.grabFrame();
+        QVERIFY2(count(after, dim) > 100, qPrintable(QString::number(count(after, dim))));
+        QVERIFY(count(after, feed) > 50 && count(after, feed) < count(before, feed) / 2);
+    }
+
     // The mesh's node markers at their projected pixels, its faces blended over the background,
     // the path drawn over it in its own colour; nothing of it once hidden.
     void drawsTheHeightMap()

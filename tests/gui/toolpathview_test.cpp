@@ -121,6 +121,55 @@ private slots:
         QVERIFY(countColour(img, c.feed) > 50);
     }
 
+    // A program that probes for itself (issue 19 item 4): the path after the probe not run yet
+    // in the dim provisional colour, dashed (background between the dashes), the rest as before;
+    // a cut part stays the cut colour.
+    void softwareRendererDrawsTheProvisionalPartDimAndDashed()
+    {
+        ToolpathView view(nullptr, ToolpathView::Backend::Software);
+        view.resize(400, 300);
+        view.model()->setScene(std::make_shared<ToolpathScene>(buildScene(square(50, 1))));
+        view.model()->setPreset(ViewPreset::Top);
+        const auto &c = view.model()->colours();
+        auto render = [&] {
+            return static_cast<SoftwareToolpathRenderer *>(view.renderer())
+                ->renderImage({400, 300});
+        };
+        QCOMPARE(view.model()->firstProvisionalSegment(), view.model()->scene()->segments.size());
+        const int allFeed = countColour(render(), c.feed);
+        QCOMPARE(countColour(render(), c.provisional), 0);
+        view.model()->setProvisionalAfter(2); // after the first side: three sides provisional
+        QVERIFY(view.model()->firstProvisionalSegment() < view.model()->scene()->segments.size());
+        const QImage img = render();
+        const int provisional = countColour(img, c.provisional), feed = countColour(img, c.feed);
+        QVERIFY2(provisional > 100, qPrintable(QString::number(provisional)));
+        QVERIFY2(feed > 50 && feed < allFeed / 2, qPrintable(QString::number(feed)));
+        // Dashed: along the far side (y = 50 mm, the top row of the square) what lies under it
+        // (the background, the bounds box) shows between the dashes.
+        int row = -1, best = 0;
+        for (int y = 0; y < img.height(); ++y) {
+            int n = 0;
+            for (int x = 0; x < img.width(); ++x)
+                n += (img.pixel(x, y) & 0xFFFFFF) == (c.provisional.rgb() & 0xFFFFFF);
+            if (n > best)
+                best = n, row = y;
+        }
+        QVERIFY(row >= 0);
+        int first = img.width(), last = -1, gaps = 0;
+        for (int x = 0; x < img.width(); ++x) {
+            if ((img.pixel(x, row) & 0xFFFFFF) == (c.provisional.rgb() & 0xFFFFFF))
+                first = std::min(first, x), last = x;
+        }
+        for (int x = first; x <= last; ++x)
+            gaps += (img.pixel(x, row) & 0xFFFFFF) != (c.provisional.rgb() & 0xFFFFFF);
+        QVERIFY2(gaps > 10, qPrintable(QString::number(gaps)));
+        view.model()->setCutEntry(5); // cut past the probe: the cut colour wins
+        QVERIFY(countColour(render(), c.provisional) < provisional);
+        QVERIFY(countColour(render(), c.cut) > 100);
+        view.model()->setProvisionalAfter(ToolpathViewModel::kNoProvisional);
+        QCOMPARE(countColour(render(), c.provisional), 0);
+    }
+
     void boundsTurnRedOutsideLimits()
     {
         ToolpathView view(nullptr, ToolpathView::Backend::Software);

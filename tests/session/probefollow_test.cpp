@@ -2,6 +2,7 @@
 // in-process emulator with a simulated work top. After each probe move the rest of the program
 // is interpreted again with the trip point and runs on from there; asserted on the unit's own
 // counters (its position and the motion events it traced), not on the plan.
+#include "probefollow_programs.h"
 #include "session/probefollow.h"
 #include "session/runworkflow.h"
 #include "session/simlink.h"
@@ -17,6 +18,10 @@
 
 namespace frezka::session {
 namespace {
+
+using test::autolevelProgram;
+using test::kTouchOff;
+using test::tilted;
 
 constexpr double kStepsPerMm = 200; // the GVE64's default profile, X Y Z
 
@@ -91,18 +96,6 @@ struct FollowBench
     std::vector<std::array<std::int64_t, 4>> seen;
 };
 
-// (a) G38.2 down to the work at Z -3.2, that point made Z0 of G54, a cut 0.1 below it.
-constexpr const char *kTouchOff = "G21 G90 G54\n"
-                                  "G0 X10 Y10\n"
-                                  "G38.2 Z-10 F50\n" // 3
-                                  "G10 L20 P1 Z0\n"
-                                  "G0 Z1\n"
-                                  "M3 S10000\n"
-                                  "G1 Z-0.1 F100\n"
-                                  "G1 X20\n"
-                                  "M5\n"
-                                  "M2\n";
-
 TEST(ProbeFollow, TouchOffThenCutEndsOnTheUnitAtTheSurfaceMinusTheDepth)
 {
     FollowBench b("plane:-3.2,0,0", kTouchOff);
@@ -141,47 +134,6 @@ TEST(ProbeFollow, WithoutFollowingTheProbeTheJobEndsThereAsBefore)
     EXPECT_EQ(b.unitAt()[0], 10 * kStepsPerMm); // it never cut
     // The static plan's cut lies at the probe's programmed depth: 6.9 mm below the surface.
     EXPECT_NEAR(b.whole->end(b.whole->size() - 3).z, -10.1, 1e-9);
-}
-
-// (b) pcb2gcode's autolevel, in its shape: the first probe makes the work's top Z0, a 3x3 grid
-// of probes keeps each trip Z in #500..#508, and each cut point's Z is the bilinear
-// interpolation of its cell's four corners (arithmetic on the parameters) minus the depth.
-std::string autolevelProgram()
-{
-    std::string t = "G21 G90 G94 G54\nG0 Z0\nG0 X0 Y0\nG38.2 Z-6 F60\nG10 L20 P1 Z0\nG0 Z1\n";
-    for (int j = 0; j < 3; ++j) {
-        for (int i = 0; i < 3; ++i) {
-            t += "G0 X" + std::to_string(10 * i) + " Y" + std::to_string(10 * j) + "\n";
-            t += "G38.2 Z-3 F60\n#" + std::to_string(500 + 3 * j + i) + "=#5063\nG0 Z1\n";
-        }
-    }
-    t += "M3 S12000\n";
-    // The cut: a square through four cells, each corner's Z interpolated in its cell.
-    const double pts[][2] = {{4, 3}, {16, 3}, {16, 17}, {4, 17}, {4, 3}};
-    bool first = true;
-    for (const auto &p : pts) {
-        const int ci = std::min(1, int(p[0] / 10)), cj = std::min(1, int(p[1] / 10));
-        const double fx = (p[0] - 10 * ci) / 10, fy = (p[1] - 10 * cj) / 10;
-        const int z00 = 500 + 3 * cj + ci, z10 = z00 + 1, z01 = z00 + 3, z11 = z00 + 4;
-        char z[256];
-        std::snprintf(z, sizeof z,
-                      "#1=[[1-%.3f]*[[1-%.3f]*#%d+%.3f*#%d]+%.3f*[[1-%.3f]*#%d+%.3f*#%d]-0.1]\n",
-                      fy, fx, z00, fx, z10, fy, fx, z01, fx, z11);
-        t += z;
-        char move[96];
-        std::snprintf(move, sizeof move, "G%d X%.3f Y%.3f Z#1 F120\n", first ? 1 : 1, p[0], p[1]);
-        if (first)
-            t += "G0 X4 Y3\n";
-        t += move;
-        first = false;
-    }
-    t += "G0 Z1\nM5\nM2\n";
-    return t;
-}
-
-double tilted(double x, double y)
-{
-    return -2 + 0.02 * x - 0.015 * y; // plane:-2,0.02,-0.015
 }
 
 TEST(ProbeFollow, AutolevelGridCutsFollowTheTiltedSurfaceOnTheUnit)
