@@ -98,6 +98,22 @@ void ProbeFollow::plan(Next *next, std::shared_ptr<gcode::Toolpath> job)
     next->plan = next->planned.program;
 }
 
+QString selfProbingRefusal(std::uint32_t probeLine, std::uint32_t startLine, bool heightMap)
+{
+    if (startLine != 0)
+        return ProbeFollow::tr("Line %1: the program probes for itself: after line %2 its path "
+                               "depends on that probe's result, and the probes before line %1 "
+                               "would not run. Run the whole program.")
+            .arg(startLine)
+            .arg(probeLine);
+    if (heightMap)
+        return ProbeFollow::tr("Line %1: the program probes for itself (after this line its "
+                               "path depends on the probe's result): a height map cannot be "
+                               "applied to it. Remove the map to run the program.")
+            .arg(probeLine);
+    return {};
+}
+
 bool dependsOnProbe(const gcode::Toolpath &whole, std::size_t provisionalEntry)
 {
     if (provisionalEntry >= whole.size())

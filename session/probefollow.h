@@ -75,6 +75,12 @@ private:
     std::size_t m_lastProvisional = 0; // the last interpretation's provisionalEntry
 };
 
+// Why a program that probes for itself (its path depends on the probe of line probeLine) cannot
+// run from line startLine (0: from its start) or with a height map applied: the probes before
+// the line would not run, and the map cannot bend a path not yet known. Empty when it can run
+// (whole, without a map). The window's load and `frezka-cli run` refuse with it.
+QString selfProbingRefusal(std::uint32_t probeLine, std::uint32_t startLine, bool heightMap);
+
 // Whether anything moves after the probe entry provisionalEntry (gcode::Result's; kNoEntry:
 // none): the path then depends on where that probe stops.
 bool dependsOnProbe(const gcode::Toolpath &whole, std::size_t provisionalEntry);

@@ -128,23 +128,9 @@ void probesForItself(const LoadJob &job, const InterpretRequest &req,
     if (!dependsOnProbe(*outcome.toolpath, outcome.provisionalEntry) || !result.errors.empty())
         return;
     const std::uint32_t line = outcome.provisionalLine;
-    if (job.startLine != 0) {
-        result.errors.push_back(
-            {int(job.startLine), 0,
-             ProgramSession::tr("Line %1: the program probes for itself: after line %2 its path "
-                                "depends on that probe's result, and the probes before line %1 "
-                                "would not run. Run the whole program.")
-                 .arg(job.startLine)
-                 .arg(line)});
-        return;
-    }
-    if (job.heightMap) {
-        result.errors.push_back(
-            {int(line), 0,
-             ProgramSession::tr("Line %1: the program probes for itself (after this line its "
-                                "path depends on the probe's result): a height map cannot be "
-                                "applied to it. Remove the map to run the program.")
-                 .arg(line)});
+    const QString refusal = selfProbingRefusal(line, job.startLine, job.heightMap.has_value());
+    if (!refusal.isEmpty()) {
+        result.errors.push_back({int(job.startLine != 0 ? job.startLine : line), 0, refusal});
         return;
     }
     auto follow = std::make_shared<InterpretRequest>(req);

@@ -511,6 +511,14 @@ Návratový kód: 0 hotovo, 1 přenos selhal (důvod se vypíše), 2 chybné pou
         <source>the program could not be planned</source>
         <translation>program nelze naplánovat</translation>
     </message>
+    <message>
+        <source>Line %1: the program probes for itself: after line %2 its path depends on that probe&apos;s result, and the probes before line %1 would not run. Run the whole program.</source>
+        <translation>Řádek %1: program sám sonduje: za řádkem %2 závisí jeho dráha na výsledku té sondy a sondy před řádkem %1 by neproběhly. Spusťte celý program.</translation>
+    </message>
+    <message>
+        <source>Line %1: the program probes for itself (after this line its path depends on the probe&apos;s result): a height map cannot be applied to it. Remove the map to run the program.</source>
+        <translation>Řádek %1: program sám sonduje (za tímto řádkem závisí jeho dráha na výsledku sondy): výškovou mapu na něj nelze použít. Pro spuštění programu mapu odeberte.</translation>
+    </message>
 </context>
 <context>
     <name>ProbeGridCli</name>
@@ -7714,14 +7722,6 @@ Volby:
     <message>
         <source>Cannot open %1: %2</source>
         <translation>%1 nelze otevřít: %2</translation>
-    </message>
-    <message>
-        <source>Line %1: the program probes for itself: after line %2 its path depends on that probe&apos;s result, and the probes before line %1 would not run. Run the whole program.</source>
-        <translation>Řádek %1: program sám sonduje: za řádkem %2 závisí jeho dráha na výsledku té sondy a sondy před řádkem %1 by neproběhly. Spusťte celý program.</translation>
-    </message>
-    <message>
-        <source>Line %1: the program probes for itself (after this line its path depends on the probe&apos;s result): a height map cannot be applied to it. Remove the map to run the program.</source>
-        <translation>Řádek %1: program sám sonduje (za tímto řádkem závisí jeho dráha na výsledku sondy): výškovou mapu na něj nelze použít. Pro spuštění programu mapu odeberte.</translation>
     </message>
     <message>
         <source>Line %1: after this line the path depends on the probe&apos;s result; it is shown as provisional, and each part is planned and run once the probe before it has run.</source>

@@ -511,6 +511,14 @@ Exit status: 0 done, 1 transfer failed (the reason is printed), 2 usage error.
         <source>the program could not be planned</source>
         <translation>the program could not be planned</translation>
     </message>
+    <message>
+        <source>Line %1: the program probes for itself: after line %2 its path depends on that probe&apos;s result, and the probes before line %1 would not run. Run the whole program.</source>
+        <translation>Line %1: the program probes for itself: after line %2 its path depends on that probe&apos;s result, and the probes before line %1 would not run. Run the whole program.</translation>
+    </message>
+    <message>
+        <source>Line %1: the program probes for itself (after this line its path depends on the probe&apos;s result): a height map cannot be applied to it. Remove the map to run the program.</source>
+        <translation>Line %1: the program probes for itself (after this line its path depends on the probe&apos;s result): a height map cannot be applied to it. Remove the map to run the program.</translation>
+    </message>
 </context>
 <context>
     <name>ProbeGridCli</name>
@@ -7701,14 +7709,6 @@ Options:
     <message>
         <source>Cannot open %1: %2</source>
         <translation>Cannot open %1: %2</translation>
-    </message>
-    <message>
-        <source>Line %1: the program probes for itself: after line %2 its path depends on that probe&apos;s result, and the probes before line %1 would not run. Run the whole program.</source>
-        <translation>Line %1: the program probes for itself: after line %2 its path depends on that probe&apos;s result, and the probes before line %1 would not run. Run the whole program.</translation>
-    </message>
-    <message>
-        <source>Line %1: the program probes for itself (after this line its path depends on the probe&apos;s result): a height map cannot be applied to it. Remove the map to run the program.</source>
-        <translation>Line %1: the program probes for itself (after this line its path depends on the probe&apos;s result): a height map cannot be applied to it. Remove the map to run the program.</translation>
     </message>
     <message>
         <source>Line %1: after this line the path depends on the probe&apos;s result; it is shown as provisional, and each part is planned and run once the probe before it has run.</source>

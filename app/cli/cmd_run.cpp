@@ -226,9 +226,16 @@ std::optional<Prepared> prepare(const RunArgs &a)
     if (!g)
         return std::nullopt;
     std::shared_ptr<const gcode::Toolpath> job = g->toolpath;
-    if (session::dependsOnProbe(*g->toolpath, g->provisionalEntry) && a.fromLine == 0 &&
-        a.program.heightMap.isEmpty())
+    if (session::dependsOnProbe(*g->toolpath, g->provisionalEntry)) {
+        // Never the provisional path: run whole, each part planned after its probe, or not.
+        const QString refusal = session::selfProbingRefusal(
+            g->provisionalLine, std::uint32_t(a.fromLine), !a.program.heightMap.isEmpty());
+        if (!refusal.isEmpty()) {
+            cli::err(QStringLiteral("%1: %2\n").arg(a.file, refusal));
+            return std::nullopt;
+        }
         return prepareFollow(a, *config, std::move(request), *g);
+    }
     std::optional<session::FromLine> approach;
     if (a.fromLine > 0) {
         // The machine stands at its zero when the run starts (the plan's start, as for a whole

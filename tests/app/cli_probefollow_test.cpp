@@ -85,6 +85,41 @@ private slots:
                  qPrintable(r.err));
     }
 
+    // From a line after the probe, or with a height map, the path after the probe would run as
+    // provisional (from line 7 the tool went 5.8 mm into the work top): refused, nothing moves.
+    void runFromALineOrWithAHeightMapIsRefused()
+    {
+        const QString map = clitest::writeFile(
+            m_dir, QStringLiteral("map.csv"),
+            "# frezka-height-map 1\n# origin_x_mm: 0\n# origin_y_mm: 0\n# spacing_x_mm: 40\n"
+            "# spacing_y_mm: 40\n# count_x: 2\n# count_y: 2\nx_mm,y_mm,z_mm\n0,0,0\n40,0,0\n"
+            "0,40,0\n40,40,0\n");
+        const struct
+        {
+            QStringList args;
+            const char *says;
+        } cases[] = {
+            {{QStringLiteral("--from-line"), QStringLiteral("7")},
+             "touchoff.nc: Line 7: the program probes for itself: after line 3 its path depends "
+             "on that probe's result"},
+            {{QStringLiteral("--height-map"), map},
+             "touchoff.nc: Line 3: the program probes for itself (after this line its path "
+             "depends on the probe's result): a height map cannot be applied to it"},
+        };
+        for (const auto &c : cases) {
+            const Run r = clitest::runCli(
+                QStringLiteral(FREZKA_CLI),
+                QStringList{QStringLiteral("run"), program(), QStringLiteral("--port"),
+                            QStringLiteral("sim"), QStringLiteral("--surface"),
+                            QStringLiteral("plane:-3.2,0,0")} +
+                    c.args);
+            QCOMPARE(r.code, 1);
+            QVERIFY2(r.err.contains(QLatin1String(c.says)), qPrintable(r.err));
+            QVERIFY2(!r.out.contains(QLatin1String("\"final_steps\"")),
+                     qPrintable(r.out)); // no run
+        }
+    }
+
     void aProbeThatNeverTouchesEndsTheRunWithItsError()
     {
         const Run r = run(QStringLiteral("plane:-12,0,0"));

@@ -222,13 +222,18 @@ private slots:
         QVERIFY2(m_messages.contains(QStringLiteral("Line 40: the probe's result was followed")),
                  qPrintable(m_messages));
         // Every point the unit reported more than 0.05 below the surface is a cut point, 0.1
-        // below it within 1.5 steps.
+        // below it within 1.5 steps; at X4 Y3 the tool may be on its way down (the plunge: the
+        // window polls in real time), never deeper.
         int cutPoints = 0;
         for (const auto &p : seen) {
             const double x = p[0] / kStepsPerMm, y = p[1] / kStepsPerMm, z = p[2] / kStepsPerMm;
             const double depth = programs::tilted(x, y) - z;
             if (depth < 0.05)
                 continue;
+            if (p[0] == std::int64_t(4 * kStepsPerMm) && p[1] == std::int64_t(3 * kStepsPerMm)) {
+                QVERIFY2(depth <= 0.1 + 1.5 / kStepsPerMm, qPrintable(QString::number(depth)));
+                continue;
+            }
             ++cutPoints;
             QVERIFY2(std::abs(depth - 0.1) <= 1.5 / kStepsPerMm,
                      qPrintable(QStringLiteral("%1 at %2 %3 %4").arg(depth).arg(x).arg(y).arg(z)));
