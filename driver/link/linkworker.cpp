@@ -289,4 +289,18 @@ void LinkWorker::turnEmulatedWheel(int axis, int multiplier, int detents)
                           "on, and enable the MPG in the profile's EEPROM settings"));
 }
 
+std::optional<emulator::Stats> LinkWorker::builtInEmulatorStats() const
+{
+    Transport *t = m_transport;
+    if (auto *tracing = qobject_cast<TracingTransport *>(t))
+        t = tracing->inner();
+    auto *emulated = qobject_cast<EmulatorTransport *>(t);
+    if (!emulated || !emulated->isOpen())
+        return std::nullopt;
+    const emulator::Unit *unit = emulated->simulation().unitAt(m_config.unit.address);
+    if (!unit)
+        return std::nullopt;
+    return unit->stats();
+}
+
 } // namespace frezka::driver

@@ -70,6 +70,10 @@ public slots:
     // moves only while its MPG is on and enabled in its EEPROM; a turn it ignores, or any turn
     // on another port, changes nothing and says why in a logLine.
     void turnEmulatedWheel(int axis, int multiplier, int detents);
+    // What the built-in emulator's machine unit has counted (vectors, brake violations,
+    // starvation stops, cuts without the spindle...): for tests that drive the window and judge
+    // what the unit did. Empty on another port or while not connected.
+    std::optional<emulator::Stats> builtInEmulatorStats() const;
     // The same operations by name, as MachineController has them, for the direct users of a
     // worker without a controller (frezka-cli run, session::QtMachineLink<LinkWorker>).
     void run(const frezka::machine::UnitProgram &program) { execute(op::Run{program}); }

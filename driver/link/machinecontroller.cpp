@@ -1,5 +1,6 @@
 #include "machinecontroller.h"
 
+#include "driver/emulator/unit.h"
 #include "driver/link/linkworker.h"
 
 #include <QThread>
@@ -141,6 +142,14 @@ void MachineController::turnEmulatedWheel(int axis, int multiplier, int detents)
     QMetaObject::invokeMethod(m_worker, [w = m_worker, axis, multiplier, detents] {
         w->turnEmulatedWheel(axis, multiplier, detents);
     });
+}
+std::optional<emulator::Stats> MachineController::builtInEmulatorStats() const
+{
+    std::optional<emulator::Stats> stats;
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker, &stats] { stats = w->builtInEmulatorStats(); },
+        Qt::BlockingQueuedConnection);
+    return stats;
 }
 void MachineController::setSpindleRpm(double rpm)
 {

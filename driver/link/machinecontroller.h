@@ -32,9 +32,14 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QThread;
+
+namespace frezka::emulator {
+struct Stats;
+}
 
 namespace frezka::driver {
 
@@ -109,6 +114,9 @@ public slots:
     // Turns the built-in emulator's handwheel (LinkWorker::turnEmulatedWheel): axis 0..3,
     // multiplier 1/10/100, detents signed. Elsewhere a no-op with a logLine saying so.
     void turnEmulatedWheel(int axis, int multiplier, int detents);
+    // What the built-in emulator's machine unit has counted (LinkWorker::builtInEmulatorStats),
+    // read in the link thread while this one waits; empty on another port.
+    std::optional<frezka::emulator::Stats> builtInEmulatorStats() const;
 
     void setSpindleRpm(double rpm);      // !7V, per mille from the profile's max rpm
     void setOutput(int output, bool on); // OUTn (0..3) on or off, others kept

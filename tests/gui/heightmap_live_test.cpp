@@ -28,18 +28,10 @@ class HeightMapLiveTest : public QObject
 private slots:
     void initTestCase()
     {
-        qputenv("FREZKA_EMULATOR_SURFACE", "plane:-5,0.01,0.005");
-        QStandardPaths::setTestModeEnabled(true);
         QVERIFY(m_dir.isValid());
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
-        QCoreApplication::setOrganizationName(QStringLiteral("FrezkaHeightMapLiveTest"));
-        MainWindowOptions options;
-        options.view = MainWindowOptions::View::Software;
-        options.restoreLayout = false;
-        m_window = std::make_unique<MainWindow>(options);
-        m_window->show();
-        QTRY_VERIFY_WITH_TIMEOUT(m_window->controller()->state().mode == MachineMode::Idle, 30000);
+        m_window = gui::test::emulatorWindow(m_dir, "plane:-5,0.01,0.005",
+                                             QStringLiteral("FrezkaHeightMapLiveTest"));
+        QVERIFY(m_window);
     }
 
     void probesTheBuiltInEmulatorsSurface()

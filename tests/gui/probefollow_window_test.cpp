@@ -88,10 +88,24 @@ class ProbeFollowWindowTest : public QObject
         auto sample =
             connect(m_window->controller(), &driver::MachineController::stateChanged, this,
                     [seen](const driver::MachineState &s) { seen->push_back(s.positionSteps); });
+        const emulator::Stats before = window::emulatorStats(m_window.get());
         window::button(m_window->runPanel(), "run")->click();
         const bool ended = finished.wait(kTimeoutMs);
         disconnect(sample);
         disconnect(said);
+        // What the unit did: it ran, never cut without the spindle at speed, never kept it
+        // turning while held, and braked on its ramp every time.
+        const emulator::Stats after = window::emulatorStats(m_window.get());
+        m_unitRan = after.motion.vectorsExecuted > before.motion.vectorsExecuted &&
+                    after.safety == before.safety &&
+                    after.motion.brakeViolations == before.motion.brakeViolations;
+        if (!m_unitRan)
+            qWarning("the unit: %lld vectors, %lld cuts without the spindle, %lld held with "
+                     "it on, %lld brake violations",
+                     qlonglong(after.motion.vectorsExecuted - before.motion.vectorsExecuted),
+                     qlonglong(after.safety.cutWithoutSpindle - before.safety.cutWithoutSpindle),
+                     qlonglong(after.safety.spindleOnWhileHeld - before.safety.spindleOnWhileHeld),
+                     qlonglong(after.motion.brakeViolations - before.motion.brakeViolations));
         if (!ended)
             return false;
         *ok = finished.front().front().toBool();
@@ -103,18 +117,10 @@ class ProbeFollowWindowTest : public QObject
 private slots:
     void initTestCase()
     {
-        qputenv("FREZKA_EMULATOR_SURFACE", "plane:-2,0.02,-0.015");
-        QStandardPaths::setTestModeEnabled(true);
         QVERIFY(m_dir.isValid());
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
-        QCoreApplication::setOrganizationName(QStringLiteral("FrezkaProbeFollowWindowTest"));
-        MainWindowOptions options;
-        options.view = MainWindowOptions::View::Software;
-        options.restoreLayout = false;
-        m_window = std::make_unique<MainWindow>(options);
-        m_window->show();
-        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Idle, 30000);
+        m_window = window::emulatorWindow(m_dir, "plane:-2,0.02,-0.015",
+                                          QStringLiteral("FrezkaProbeFollowWindowTest"));
+        QVERIFY(m_window);
         window::button(m_window->jogPanel(), "homeAll")->click();
         QTRY_VERIFY_WITH_TIMEOUT(state().homed && state().mode == MachineMode::Idle, kTimeoutMs);
     }
@@ -150,6 +156,7 @@ private slots:
         QVERIFY(runToTheEnd(&seen, &ok));
         disconnect(shown);
         QVERIFY2(ok, qPrintable(m_window->lastError()));
+        QVERIFY(m_unitRan);
         QVERIFY(!state().lastError ||
                 state().lastError->reason.code != driver::DriverCode::ProbeTrippedElsewhere);
         QCOMPARE(m_window->workflow()->probesFollowed(), 1);
@@ -210,6 +217,7 @@ private slots:
         QVERIFY(runToTheEnd(&seen, &ok));
         disconnect(shown);
         QVERIFY2(ok, qPrintable(m_window->lastError()));
+        QVERIFY(m_unitRan);
         QCOMPARE(m_window->workflow()->probesFollowed(), 10);
         QCOMPARE(probesOnTheWire() - probesBefore, 10);
         // The provisional part starts at the next grid probe (lines 8, 12 .. 40), none after.
@@ -283,6 +291,7 @@ private:
     QTemporaryDir m_dir;
     std::unique_ptr<MainWindow> m_window;
     QString m_messages;
+    bool m_unitRan = false; // the last run: the unit moved, safely (runToTheEnd)
 };
 
 QTEST_MAIN(ProbeFollowWindowTest)

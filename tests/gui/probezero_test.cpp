@@ -50,18 +50,10 @@ private slots:
     void initTestCase()
     {
         // The work: X 10..90, Y 8..90 for a 4 mm tool (its centre touches 2 mm before a side).
-        qputenv("FREZKA_EMULATOR_SURFACE", "block:8,6,92,92,5");
-        QStandardPaths::setTestModeEnabled(true);
         QVERIFY(m_dir.isValid());
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
-        QCoreApplication::setOrganizationName(QStringLiteral("FrezkaProbeZeroTest"));
-        MainWindowOptions options;
-        options.view = MainWindowOptions::View::Software;
-        options.restoreLayout = false;
-        m_window = std::make_unique<MainWindow>(options);
-        m_window->show();
-        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Idle, 30000);
+        m_window = gui::test::emulatorWindow(m_dir, "block:8,6,92,92,5",
+                                             QStringLiteral("FrezkaProbeZeroTest"));
+        QVERIFY(m_window);
         m_window->offsets()->setSystem(0, {1, 2, 3, 0});
         m_window->selectWorkOffset(0);
     }

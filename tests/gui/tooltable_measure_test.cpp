@@ -36,12 +36,7 @@ private slots:
     void initTestCase()
     {
         // Tool 2 trips 7.25 mm above the reference tool's -30.
-        qputenv("FREZKA_EMULATOR_SURFACE", "plane:-22.75,0,0");
-        QStandardPaths::setTestModeEnabled(true);
         QVERIFY(m_dir.isValid());
-        QSettings::setDefaultFormat(QSettings::IniFormat);
-        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
-        QCoreApplication::setOrganizationName(QStringLiteral("FrezkaToolMeasureTest"));
         machine::MachineConfig profile = machine::defaultMachineConfig(protocol::Variant::Gve64);
         profile.link.port = "emulator";
         machine::ToolSensorConfig &s = profile.tools.sensor;
@@ -54,19 +49,13 @@ private slots:
         s.slowFeedMmPerMin = 40;
         s.retractMm = 1;
         s.referenceZMm = -30;
-        const QString profilePath = m_dir.filePath(QStringLiteral("machine.json"));
-        QVERIFY(!machine::saveMachineConfig(profile, profilePath.toStdString()));
-        QSettings().setValue(QStringLiteral("lastProfile"), profilePath);
         QFile table(m_dir.filePath(QStringLiteral("tool.tbl")));
         QVERIFY(table.open(QIODevice::WriteOnly));
         table.write("T1 P1 Z0 D6 ;reference\nT2 P2 Z1 D2 ;engraver\n");
         table.close();
-        MainWindowOptions options;
-        options.view = MainWindowOptions::View::Software;
-        options.restoreLayout = false;
-        m_window = std::make_unique<MainWindow>(options);
-        m_window->show();
-        QTRY_VERIFY_WITH_TIMEOUT(state().mode == MachineMode::Idle, 30000);
+        m_window = gui::test::emulatorWindow(m_dir, "plane:-22.75,0,0",
+                                             QStringLiteral("FrezkaToolMeasureTest"), &profile);
+        QVERIFY(m_window);
     }
 
     void measuresTheSelectedToolIntoTheTable()

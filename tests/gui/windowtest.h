@@ -1,7 +1,10 @@
 #pragma once
-// Helpers the main-window tests share (screen_test, workflow_test): a program written to a
-// temporary directory, opened in the window, and a button found by its object name.
+// Helpers the main-window tests share: a window unconnected or on the built-in emulator with
+// its settings apart, a program written to a temporary directory and opened in the window, a
+// button found by its object name, what the emulator counted or received.
 
+#include "driver/emulator/unit.h"
+#include "driver/link/machinecontroller.h"
 #include "gui/mainwindow.h"
 #include "gui/programview.h"
 #include "machine/machineconfig.h"
@@ -40,6 +43,27 @@ inline bool openAndWait(MainWindow *window, const QString &path)
     return loaded.wait(20000);
 }
 
+// The window's settings (and QStandardPaths) in dir under the organisation's name, apart from
+// the user's and from other tests'.
+inline void isolateSettings(const QTemporaryDir &dir, const QString &organisation)
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, dir.path());
+    QCoreApplication::setOrganizationName(organisation);
+}
+
+// Saves the profile as dir/machine.json and makes it the window's last profile; false when it
+// cannot be written.
+inline bool useProfile(const QTemporaryDir &dir, const machine::MachineConfig &profile)
+{
+    const QString profilePath = dir.filePath(QStringLiteral("machine.json"));
+    if (machine::saveMachineConfig(profile, profilePath.toStdString()))
+        return false;
+    QSettings().setValue(QStringLiteral("lastProfile"), profilePath);
+    return true;
+}
+
 // A main window on the default GVE64 profile whose port does not exist, its settings in dir
 // under the organisation's name: its own link stays unconnected while the test drives a
 // simulated one and the window shows it. Shown, once it has said the port is missing; null when
@@ -47,17 +71,12 @@ inline bool openAndWait(MainWindow *window, const QString &path)
 inline std::unique_ptr<MainWindow> unconnectedWindow(const QTemporaryDir &dir,
                                                      const QString &organisation)
 {
-    QStandardPaths::setTestModeEnabled(true);
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, dir.path());
-    QCoreApplication::setOrganizationName(organisation);
+    isolateSettings(dir, organisation);
     QSettings().setValue(QStringLiteral("link/autoReconnect"), false);
     machine::MachineConfig profile = machine::defaultMachineConfig(protocol::Variant::Gve64);
     profile.link.port = dir.filePath(QStringLiteral("no-such-port")).toStdString();
-    const QString profilePath = dir.filePath(QStringLiteral("machine.json"));
-    if (machine::saveMachineConfig(profile, profilePath.toStdString()))
+    if (!useProfile(dir, profile))
         return nullptr;
-    QSettings().setValue(QStringLiteral("lastProfile"), profilePath);
     MainWindowOptions options;
     options.view = MainWindowOptions::View::Software;
     options.restoreLayout = false;
@@ -66,6 +85,43 @@ inline std::unique_ptr<MainWindow> unconnectedWindow(const QTemporaryDir &dir,
     if (!QTest::qWaitFor([&] { return !window->lastError().isEmpty(); }, 20000))
         return nullptr;
     return window;
+}
+
+// A main window on the built-in emulator (the default profile, or `profile` when given), its
+// settings in dir under the organisation's name, the emulated work's surface as
+// FREZKA_EMULATOR_SURFACE gives it (docs/emulator.md; empty: none). Shown, once the unit is
+// connected and idle; null when it cannot be set up.
+inline std::unique_ptr<MainWindow> emulatorWindow(const QTemporaryDir &dir, const char *surface,
+                                                  const QString &organisation,
+                                                  const machine::MachineConfig *profile = nullptr)
+{
+    if (surface && *surface)
+        qputenv("FREZKA_EMULATOR_SURFACE", surface);
+    else
+        qunsetenv("FREZKA_EMULATOR_SURFACE");
+    isolateSettings(dir, organisation);
+    if (profile && !useProfile(dir, *profile))
+        return nullptr;
+    MainWindowOptions options;
+    options.view = MainWindowOptions::View::Software;
+    options.restoreLayout = false;
+    auto window = std::make_unique<MainWindow>(options);
+    window->show();
+    if (!QTest::qWaitFor(
+            [&] { return window->controller()->state().mode == driver::MachineMode::Idle; }, 30000))
+        return nullptr;
+    return window;
+}
+
+// What the window's built-in emulator has counted so far (its machine unit); a default (all
+// zero, vectorsExecuted -1) when the window is not on it, so that a comparison fails.
+inline emulator::Stats emulatorStats(MainWindow *window)
+{
+    if (auto stats = window->controller()->builtInEmulatorStats())
+        return *stats;
+    emulator::Stats none;
+    none.motion.vectorsExecuted = -1;
+    return none;
 }
 
 inline QPushButton *button(QWidget *parent, const char *name)
