@@ -220,6 +220,8 @@ Result Interpreter::run(std::string_view text, const std::function<void(std::siz
     result.provisionalLine = m_provisionalLine;
     result.probes = m_probes;
     result.toolTableChanged = m_toolsChanged;
+    result.workOffsetsMm = m_origin;
+    result.workOffsetsChanged = m_origin != m_options.workOffsetsMm;
     result.toolpath = std::move(m_toolpath);
     m_toolpath = Toolpath{};
     return result;

@@ -123,6 +123,11 @@ struct Result
     // caller writes it back (writeToolTableFile) when the program has run.
     ToolTable toolTable;
     bool toolTableChanged = false;
+    // G54..G59.3 as the program leaves them (G10 L2/L20; Options::workOffsetsMm otherwise),
+    // machine mm; changed: they differ from Options::workOffsetsMm. The caller keeps them once
+    // the program has run, as LinuxCNC keeps #5221.. in its parameter file.
+    std::array<std::array<double, 4>, 9> workOffsetsMm{};
+    bool workOffsetsChanged = false;
     // The first probe move without a result in Options::probeResults: its toolpath entry and
     // line; the path from there on depends on where that probe will stop (kNoEntry / 0: none).
     std::size_t provisionalEntry = kNoEntry;

@@ -241,6 +241,7 @@ private:
     void buildTraceAction();   // Machine › Save serial trace… (mainwindow_trace.cpp)
     void loadToolTable();      // the profile's table into the program session
     void writeBackToolTable(); // after a run: the table as the program's G10 L1.. left it
+    void keepWorkOffsets();    // after a run: G54..G59.3 as the program's G10 L2/L20 left them
     // Machine › Commission this machine… (mainwindow_commission.cpp)
     void buildCommissionAction();
     // At an M6 hold: the tool's comment, length and diameter from the table (empty: none).

@@ -15,6 +15,7 @@
 #include "session/programinfo.h"
 #include "session/programmodes.h"
 #include "session/travelcheck.h"
+#include "session/workoffsets.h"
 
 #include <QFileInfo>
 #include <QFileSystemWatcher>
@@ -216,6 +217,35 @@ void MainWindow::onOffsetsChanged()
     m_dro->setPositions(st.shownMm(), m_offsets->workPosition(st.shownMm()));
     m_program->setStartPosition(st.positionMm);
     m_program->reload(); // offsets apply by re-interpreting the program
+}
+
+void MainWindow::keepWorkOffsets()
+{
+    const auto &changed = m_program->program().changedWorkOffsets;
+    if (!changed)
+        return;
+    session::OffsetState next = m_offsets->state();
+    QStringList said;
+    for (int s = 0; s < session::kWorkSystems; ++s) {
+        const session::Axes4 &now = next.systems[std::size_t(s)];
+        const session::Axes4 &set = (*changed)[std::size_t(s)];
+        if (set == now)
+            continue;
+        said += tr("%1 X%2 Y%3 Z%4 A%5")
+                    .arg(session::workSystemName(s))
+                    .arg(set[0], 0, 'f', 3)
+                    .arg(set[1], 0, 'f', 3)
+                    .arg(set[2], 0, 'f', 3)
+                    .arg(set[3], 0, 'f', 3);
+        next.systems[std::size_t(s)] = set;
+    }
+    if (said.isEmpty())
+        return;
+    // As LinuxCNC keeps #5221.. in its parameter file: the next program (and this one run
+    // again) starts from the offsets this one set, e.g. the Z zero of a touch-off.
+    m_console->appendInfo(tr("The program set work offsets (G10 L2/L20), kept: %1 (machine mm).")
+                              .arg(said.join(QStringLiteral("; "))));
+    m_offsets->setState(next);
 }
 
 void MainWindow::setWorkZero(int axis)

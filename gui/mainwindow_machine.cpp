@@ -131,6 +131,7 @@ void MainWindow::onJobFinished(bool ok)
         statusBar()->showMessage(
             tr("Program finished in %1.").arg(RunPanel::formatDuration(elapsedS)), 15000);
         m_console->appendInfo(tr("Program finished."));
+        keepWorkOffsets();
         writeBackToolTable();
     }
     if (m_program->startLine() != 0)

@@ -78,6 +78,10 @@ ProbeFollow::Next ProbeFollow::interpret(std::size_t *probeEntry)
         }
     }
     next.whole = g.toolpath;
+    if (g.toolTableChanged)
+        next.toolTable = g.toolTable;
+    if (g.workOffsetsChanged)
+        next.workOffsetsMm = g.workOffsetsMm;
     next.endsAtProbe = dependsOnProbe(*g.toolpath, g.provisionalEntry);
     next.provisionalLine = g.provisionalLine;
     if (next.endsAtProbe)

@@ -31,6 +31,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace frezka::session {
@@ -54,6 +55,10 @@ public:
         std::size_t provisionalEntry =
             gcode::Result::kNoEntry; // its entry in whole (none: kNoEntry)
         PlanOutcome planned;         // the planner's figures, warnings and errors
+        // What the program's G10 leave with the results so far (InterpretOutcome): the tool
+        // table (G10 L1/L10/L11) and G54..G59.3 (G10 L2/L20), when changed.
+        std::optional<gcode::ToolTable> toolTable;
+        std::optional<std::array<std::array<double, 4>, 9>> workOffsetsMm;
         QString error;
     };
     // The program from its start at startMm (machine mm), no probe run yet: the first job.

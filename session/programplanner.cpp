@@ -70,6 +70,8 @@ InterpretOutcome interpretProgram(const InterpretRequest &req)
     out.mark = std::move(result.mark);
     out.toolTable = std::move(result.toolTable);
     out.toolTableChanged = result.toolTableChanged;
+    out.workOffsetsMm = result.workOffsetsMm;
+    out.workOffsetsChanged = result.workOffsetsChanged;
     return out;
 }
 

@@ -77,6 +77,10 @@ struct InterpretOutcome
     // program has run).
     gcode::ToolTable toolTable;
     bool toolTableChanged = false;
+    // G54..G59.3 as the program's G10 L2/L20 leave them (changed: to be kept once the program
+    // has run; gcode::Result::workOffsetsMm).
+    std::array<std::array<double, 4>, 9> workOffsetsMm{};
+    bool workOffsetsChanged = false;
     // Where the path starts to depend on a probe not run yet (gcode::Result): the toolpath entry
     // of that probe and its line (gcode::Result::kNoEntry / 0: none); probes executed.
     std::size_t provisionalEntry = gcode::Result::kNoEntry;

@@ -201,6 +201,8 @@ bool loadInThread(const LoadJob &job, LoadedProgram &result, QString &failure)
     result.errors = std::move(outcome.errors);
     if (outcome.toolTableChanged)
         result.changedToolTable = std::move(outcome.toolTable);
+    if (outcome.workOffsetsChanged)
+        result.changedWorkOffsets = outcome.workOffsetsMm;
     if (cancelFlag->load() || !outcome.toolpath)
         return !cancelFlag->load();
     probesForItself(job, req, outcome, result);
@@ -388,6 +390,9 @@ void ProgramSession::showFollowed(const ProbeFollow::Next &next)
     p.lineEndS = plannedLineTimes(*next.plan, stats.speedModeVk, stats.estimatedS);
     p.provisionalEntry = next.endsAtProbe ? next.provisionalEntry : gcode::Result::kNoEntry;
     p.provisionalLine = next.endsAtProbe ? next.provisionalLine : 0;
+    // What the program's G10 set, with the probes' results so far (kept once it has run).
+    p.changedToolTable = next.toolTable;
+    p.changedWorkOffsets = next.workOffsetsMm;
     ++p.probesFollowed;
     emit probeFollowShown();
 }

@@ -77,6 +77,8 @@ struct LoadedProgram
     std::optional<FromLine> fromLine;
     // The tool table as the program's G10 L1/L10/L11 leave it: written back once it has run.
     std::optional<gcode::ToolTable> changedToolTable;
+    // G54..G59.3 as the program's G10 L2/L20 leave them: the window's own once it has run.
+    std::optional<OffsetTable> changedWorkOffsets;
     // A program that probes for itself (session/probefollow.h): its path after the probe entry
     // provisionalEntry (on provisionalLine) depends on where that probe stops (none: kNoEntry
     // and 0). The load then plans only the part up to and including that probe (unitProgram,

@@ -4838,6 +4838,14 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>Line %1: the probe&apos;s result was followed; the rest of the program is shown and runs as interpreted with it.</source>
         <translation>Řádek %1: výsledek sondy byl převzat; zbytek programu se zobrazuje a běží tak, jak byl s ním znovu interpretován.</translation>
     </message>
+    <message>
+        <source>%1 X%2 Y%3 Z%4 A%5</source>
+        <translation>%1 X%2 Y%3 Z%4 A%5</translation>
+    </message>
+    <message>
+        <source>The program set work offsets (G10 L2/L20), kept: %1 (machine mm).</source>
+        <translation>Program nastavil pracovní posunutí (G10 L2/L20), ponechána: %1 (strojní mm).</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>

@@ -4831,6 +4831,14 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>Line %1: the probe&apos;s result was followed; the rest of the program is shown and runs as interpreted with it.</source>
         <translation>Line %1: the probe&apos;s result was followed; the rest of the program is shown and runs as interpreted with it.</translation>
     </message>
+    <message>
+        <source>%1 X%2 Y%3 Z%4 A%5</source>
+        <translation>%1 X%2 Y%3 Z%4 A%5</translation>
+    </message>
+    <message>
+        <source>The program set work offsets (G10 L2/L20), kept: %1 (machine mm).</source>
+        <translation>The program set work offsets (G10 L2/L20), kept: %1 (machine mm).</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>

@@ -73,6 +73,24 @@ TEST(ProbeResult, TheTripPointIsTheProbesEndAndItsParameters)
     EXPECT_NEAR(t.end(entryOfLine(t, 9)).x, -22, 1e-12);
 }
 
+TEST(ProbeResult, TheOffsetsTheProgramSetsComeOutForTheCallerToKeep)
+{
+    // With the trip point: G54's Z is where it tripped; the other systems as they came in.
+    const Result tripped = run(kTouchOff, {{{10, 20, -3.2, 0}, true}});
+    EXPECT_TRUE(tripped.workOffsetsChanged);
+    EXPECT_EQ(tripped.workOffsetsMm[0], (std::array<double, 4>{0, 0, -3.2, 0}));
+    EXPECT_EQ(tripped.workOffsetsMm[1], (std::array<double, 4>{}));
+    // Provisional: the programmed end; the session takes the last re-interpretation's.
+    EXPECT_EQ(run(kTouchOff).workOffsetsMm[0][2], -10);
+    // A program without G10 L2/L20 leaves them as given, and says so.
+    Options o;
+    o.workOffsetsMm[2] = {1, 2, 3, 4};
+    Interpreter interp(o);
+    const Result plain = interp.run("G21 G90 G56\nG0 X1\nM2\n");
+    EXPECT_FALSE(plain.workOffsetsChanged);
+    EXPECT_EQ(plain.workOffsetsMm, o.workOffsetsMm);
+}
+
 TEST(ProbeResult, ProbeSuccessParameterFollowsTheResult)
 {
     const char *text = "G21 G90\nG38.3 Z-5 F50\n#1 = #5070\nG0 X[#1 * 7]\nM2\n";

@@ -18,6 +18,7 @@
 
 #include "driver/emulator/serialtrace.h"
 #include "driver/link/machinecontroller.h"
+#include "session/workoffsets.h"
 
 #include <QRegularExpression>
 #include <QSettings>
@@ -89,8 +90,14 @@ class ProbeFollowWindowTest : public QObject
             connect(m_window->controller(), &driver::MachineController::stateChanged, this,
                     [seen](const driver::MachineState &s) { seen->push_back(s.positionSteps); });
         const emulator::Stats before = window::emulatorStats(m_window.get());
+        const session::OffsetState offsetsBefore = m_window->offsets()->state();
+        QSignalSpy reloaded(m_window->program(), &ProgramSession::loaded);
         window::button(m_window->runPanel(), "run")->click();
         const bool ended = finished.wait(kTimeoutMs);
+        // Offsets the program set are kept, and the program is loaded again with them.
+        if (ended && !(m_window->offsets()->state() == offsetsBefore) && reloaded.isEmpty() &&
+            !reloaded.wait(20000))
+            return false;
         disconnect(sample);
         disconnect(said);
         // What the unit did: it ran, never cut without the spindle at speed, never kept it
@@ -179,6 +186,11 @@ private slots:
         for (const auto &p : seen)
             lowest = std::min(lowest, p[2]);
         QVERIFY(double(lowest) >= (surfaceMm - 0.1) * kStepsPerMm - 1);
+        // The window keeps the Z zero the program's G10 L20 set at the trip point (the next
+        // program starts from it), and the console says so.
+        QVERIFY2(std::abs(m_window->offsets()->systems()[0][2] - surfaceMm) <= 1 / kStepsPerMm,
+                 qPrintable(QString::number(m_window->offsets()->systems()[0][2])));
+        QCOMPARE(m_window->offsets()->systems()[0][0], 0.0);
     }
 
     // pcb2gcode's autolevel shape: a zero probe, a 3 × 3 grid into #500..#508, the cut's Z
@@ -247,8 +259,12 @@ private slots:
                      qPrintable(QStringLiteral("%1 at %2 %3 %4").arg(depth).arg(x).arg(y).arg(z)));
         }
         QVERIFY2(cutPoints >= 5, qPrintable(QString::number(cutPoints)));
-        // A new Run starts from the program as loaded: provisional after its first probe again.
-        QVERIFY(m_window->program()->restoreAsLoaded());
+        // The program's G10 L20 made the first probe's trip point (X0 Y0) G54's Z zero: kept,
+        // and the program loaded again with it, provisional after its first probe again.
+        QVERIFY2(std::abs(m_window->offsets()->systems()[0][2] - programs::tilted(0, 0)) <=
+                     1 / kStepsPerMm,
+                 qPrintable(QString::number(m_window->offsets()->systems()[0][2])));
+        QVERIFY(!m_window->program()->restoreAsLoaded()); // nothing followed is shown any more
         QCOMPARE(program().provisionalLine, 4u);
         QCOMPARE(view()->provisionalAfter(), std::uint32_t(program().provisionalEntry));
     }

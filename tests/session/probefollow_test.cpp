@@ -42,6 +42,8 @@ struct FollowBench
                          [this](std::uint32_t line, const ProbeFollow::Next &next) {
                              followedLines.push_back(line);
                              provisional.push_back(next.provisionalLine);
+                             lastToolTable = next.toolTable;
+                             lastWorkOffsets = next.workOffsetsMm;
                          });
         const InterpretOutcome g = interpretProgram(request(program));
         EXPECT_TRUE(g.errors.empty()) << (g.errors.empty() ? "" : g.errors[0].text.toStdString());
@@ -58,6 +60,8 @@ struct FollowBench
         InterpretRequest r;
         r.text = program;
         r.fileName = QStringLiteral("test.ngc");
+        r.toolTable = gcode::ToolTable{};
+        r.toolTable->tools.push_back({1, 1, {}, 6, 0, 0, 0, "reference"});
         return r;
     }
     static emulator::UnitOptions unitWith(const machine::MachineConfig &c, const char *surface)
@@ -94,6 +98,8 @@ struct FollowBench
     std::optional<bool> ended;
     std::vector<std::uint32_t> followedLines, provisional;
     std::vector<std::array<std::int64_t, 4>> seen;
+    std::optional<gcode::ToolTable> lastToolTable; // the last followed part's (Next::toolTable)
+    std::optional<std::array<std::array<double, 4>, 9>> lastWorkOffsets;
 };
 
 TEST(ProbeFollow, TouchOffThenCutEndsOnTheUnitAtTheSurfaceMinusTheDepth)
@@ -118,6 +124,33 @@ TEST(ProbeFollow, TouchOffThenCutEndsOnTheUnitAtTheSurfaceMinusTheDepth)
     // the spindle: no work surface is set for its safety watch here.)
     EXPECT_EQ(b.unitStats().motion.brakeViolations, 0);
     EXPECT_EQ(b.unitStats().motion.axisOverMax, 0);
+}
+
+TEST(ProbeFollow, WhatTheProgramsG10SetAfterAProbeIsTakenFromItsResult)
+{
+    // A tool measured by probing (G10 L10) and a work zero set there (G10 L20): what the caller
+    // keeps once the program has run (the window's offsets, the tool table file) must be the
+    // probe's result, -3.2, not the programmed end's -10 it was interpreted with before it ran.
+    const char *program = "G21 G90 G54 G49\n"
+                          "G0 X10 Y10\n"
+                          "G38.2 Z-10 F50\n" // 3
+                          "G10 L10 P1 Z0\n"
+                          "G10 L20 P2 Z0\n"
+                          "G0 Z0\n"
+                          "M2\n";
+    FollowBench b("plane:-3.2,0,0", program);
+    const InterpretOutcome before = interpretProgram(FollowBench::request(program));
+    ASSERT_TRUE(before.toolTableChanged && before.workOffsetsChanged);
+    EXPECT_EQ(before.toolTable.find(1)->offsetMm[2], -10);
+    EXPECT_EQ(before.workOffsetsMm[1][2], -10);
+    b.run();
+    ASSERT_TRUE(b.ended && *b.ended) << b.workflow.error().toStdString();
+    ASSERT_EQ(b.followedLines, std::vector<std::uint32_t>{3});
+    ASSERT_TRUE(b.lastToolTable && b.lastWorkOffsets);
+    // Where the unit stopped: the surface within a step (its braking after the trip).
+    EXPECT_NEAR(b.lastToolTable->find(1)->offsetMm[2], -3.2, 1.0 / kStepsPerMm);
+    EXPECT_NEAR((*b.lastWorkOffsets)[1][2], -3.2, 1.0 / kStepsPerMm);
+    EXPECT_EQ((*b.lastWorkOffsets)[0], (std::array<double, 4>{})); // G54 untouched
 }
 
 TEST(ProbeFollow, WithoutFollowingTheProbeTheJobEndsThereAsBefore)
