@@ -185,7 +185,7 @@ void RunPlanner::paceModalChanges()
                 if (held < need) {
                     // Either the stretch before runs slower by the time missing, or the two
                     // stretches share one V and A (no change to send): whichever costs less.
-                    if (mergeCostS(first, k) <= need - held) {
+                    if (mergeCostS(first, k, need - held) <= need - held) {
                         mergeStretches(first, k);
                         for (std::size_t j = first; j <= k; ++j)
                             timeS[j + 1] = timeS[j] + cruise(j);
@@ -241,8 +241,8 @@ std::size_t RunPlanner::stretchEnd(std::size_t k) const
 // own. The first alone counted nothing where the corners are slow and the vectors never reach V
 // (property seed 157: A 1 merged over vectors whose own was 5, each twice as long); the second
 // alone misses what a lower A costs the corners of a chain of short vectors (the bundled engrave
-// 0.3 % slower).
-double RunPlanner::mergeCostS(std::size_t first, std::size_t k) const
+// 0.3 % slower). Summed only until it exceeds limitS (the caller asks whether it stays within).
+double RunPlanner::mergeCostS(std::size_t first, std::size_t k, double limitS) const
 {
     const std::size_t end = stretchEnd(k);
     const double v = static_cast<double>(std::min(m_d[first].speed, m_d[k].speed));
@@ -258,6 +258,8 @@ double RunPlanner::mergeCostS(std::size_t first, std::size_t k) const
                                            static_cast<std::int64_t>(a), paced) -
                                vectorTimeS(m_d, m_geoCap, j, r.speed, r.accel, paced);
         cost += std::max(scaled, between);
+        if (cost > limitS)
+            break; // each term is at least 0: the merge costs more than the limit already
     }
     return cost;
 }
