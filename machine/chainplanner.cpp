@@ -179,7 +179,7 @@ void RunPlanner::derive()
         m_d[k].widestBytes = m_d[widest.front()].wireBytes;
     }
     chooseSpeeds(m_d, m_options, m_link);
-    chooseAccels(m_d, m_options, m_link);
+    chooseAccels(m_d, m_geoCap, m_options, m_link);
     m_paceStart.resize(m_d.size());
     for (std::size_t k = 0; k < m_d.size(); ++k) {
         const Derived &r = m_d[k];
@@ -339,10 +339,21 @@ void RunPlanner::bound()
         return 1000.0 * std::clamp(std::floor(r.aMm * r.f / 1000.0 + 1e-9), 1.0,
                                    static_cast<double>(kMaxAccel));
     };
+    // Segment k's cruise cap. V is a whole number of speed units: a vector that cruises (or, if
+    // short, runs at its B, a whole number too) does so at most at floor(cap). Only a vector whose
+    // V lies above its cap and whose peak stays below the cap without reaching V could go faster
+    // than floor(cap), and its peak is at least sqrt(A·units) with A at least 1000 pulses/s²: where
+    // that lies above the cap, the floor is the cap (property seed 70: a 10 285-unit move at a cap
+    // of 13.9 runs at V 13, 51 s longer than a bound at 13.9 said). Its exit is at most its cruise.
+    auto cruiseOf = [this](std::size_t k) {
+        const Derived &r = m_d[k];
+        const double c = r.vMm * r.f;
+        return 1000.0 * r.units > c * c ? floorUnits(c) : c;
+    };
     std::vector<double> &x = m_scratch; // the vertex speeds: the passes' room, no longer needed
     x.assign(n, 0.0);
     for (std::size_t k = 0; k + 1 < n; ++k)
-        x[k] = boundCap(k);
+        x[k] = std::min(boundCap(k), cruiseOf(k));
     for (std::size_t k = n - 1; k > 0; --k) {
         const double entry = std::sqrt(x[k] * x[k] + 2 * accelOf(k) * m_d[k].units);
         x[k - 1] = std::min(x[k - 1], entry);
@@ -352,7 +363,7 @@ void RunPlanner::bound()
         const Derived &r = m_d[k];
         const double a = accelOf(k);
         x[k] = std::min(x[k], std::sqrt(e * e + 2 * a * r.units));
-        m_out.boundS += runVector(e, r.vMm * r.f, x[k], a, r.units).timeS;
+        m_out.boundS += runVector(e, cruiseOf(k), x[k], a, r.units).timeS;
         e = x[k];
     }
 }

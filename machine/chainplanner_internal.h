@@ -77,7 +77,7 @@ private:
     double slowStretch(std::size_t first, std::size_t last, double missingS);
     double fromRestS(double cruiseS, std::size_t first, std::size_t last) const;
     std::size_t stretchEnd(std::size_t k) const;
-    double mergeCostS(std::size_t first, std::size_t k) const;
+    double mergeCostS(std::size_t first, std::size_t k, double limitS) const;
     void mergeStretches(std::size_t first, std::size_t k);
     void capVertices();
     void restart(std::size_t k);

@@ -3,8 +3,11 @@
 // vector within its own caps.
 #include "machine/modalchoice.h"
 
+#include "machine/unitmodel.h"
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace frezka::machine::detail {
 
@@ -12,6 +15,18 @@ namespace {
 
 constexpr double kRigidShare = 1.0;   // chooseSpeeds: the loss worth a shared V, of a V's cost
 constexpr double kFlexibleRoom = 0.8; // chooseSpeeds: B cap at least 0.89 of a vector's own cap
+
+// The fastest speed the vertex after move k allows: its geometric caps and both Vs, 0 at a rest,
+// the unit's least speed at a corner below it (passed at that speed).
+double cornerSpeed(const std::vector<Derived> &d, const std::vector<double> &vertexCaps,
+                   std::size_t k)
+{
+    if (k + 1 >= d.size() || d[k + 1].restBefore || k >= vertexCaps.size())
+        return 0.0;
+    const double v = std::min(
+        {vertexCaps[k], static_cast<double>(d[k].speed), static_cast<double>(d[k + 1].speed)});
+    return std::max(v, static_cast<double>(kMinSpeed));
+}
 
 } // namespace
 
@@ -133,21 +148,41 @@ void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const Lin
 // vector's direction jitters with the step rounding: its cap is the least of its neighbours
 // within accelWindowSteps speed units. A long vector keeps its own cap: there the
 // acceleration matters and one A command costs the link nothing in comparison.
-// The time a stretch loses to a lower A is estimated as if each vector were all acceleration
-// (t ~ 1/sqrt(A)): vector j, t_j long at its cap c_j, takes t_j sqrt(c_j / least) at the
-// stretch's least cap. The sums S = sum t_j sqrt(c_j) and T = sum t_j give the loss
-// S / sqrt(least) - T in one step as the stretch grows. An over-estimate: a vector that cruises
-// or brakes for part of its length loses less.
-void chooseAccels(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link)
+// The time a stretch loses to a lower A is estimated as if the time t_j that A sets in vector j
+// went with 1/sqrt(A): at its cap c_j that part takes t_j sqrt(c_j / least) at the stretch's
+// least cap. The sums S = sum t_j sqrt(c_j) and T = sum t_j give the loss S / sqrt(least) - T in
+// one step as the stretch grows. t_j is the larger of the vector's cruise time (an over-estimate
+// where it cruises) and the time it spends below its cruise speed (see below).
+void chooseAccels(std::vector<Derived> &d, const std::vector<double> &vertexCaps,
+                  const PlanOptions &options, const LinkTiming &link)
 {
     const std::size_t n = d.size();
     const double penalty = options.speedChangeCost * link.modalChangeS();
     std::vector<std::int64_t> caps(n);
     for (std::size_t k = 0; k < n; ++k)
         caps[k] = accelCap(d, k, options);
-    const auto timeOf = [&d](std::size_t j) {
-        return d[j].speed > 0 ? d[j].units / static_cast<double>(d[j].speed) : 0.0;
+    // What A costs vector j: its cruise time as before, or where more, the time it spends
+    // below its cruise speed between the fastest vertex speeds its corners allow (vectorTimeS,
+    // the cruise at most what the link's pace will leave it). Where the corners are slow a quick
+    // vector never reaches V and nearly all its time goes with 1/sqrt(A) (property seed 157);
+    // where the pace holds it to its wire time, little does.
+    const auto paced = [&](std::size_t j) {
+        if (!options.wireLimited || !(penalty > 0))
+            return std::numeric_limits<double>::infinity();
+        return d[j].units / link.vectorWireS(d[j].widestBytes);
     };
+    std::vector<double> times(n, 0.0);
+    for (std::size_t j = 0; j < n; ++j) {
+        const Derived &r = d[j];
+        if (r.speed <= 0)
+            continue;
+        const double cruise = r.units / static_cast<double>(r.speed);
+        const double fastest = paced(j);
+        const double below = vectorTimeS(d, vertexCaps, j, r.speed, caps[j], fastest) -
+                             r.units / std::min(fastest, static_cast<double>(r.speed));
+        times[j] = std::max(cruise, below);
+    }
+    const auto timeOf = [&times](std::size_t j) { return times[j]; };
     std::size_t k = 0;
     while (k < n) {
         std::size_t end = k + 1;
@@ -179,6 +214,27 @@ void chooseAccels(std::vector<Derived> &d, const PlanOptions &options, const Lin
         for (; k < end; ++k)
             setAccel(d[k], least, options);
     }
+}
+
+// Where the corners are slow (a reversal, a corner below the unit's smallest speed) a quick vector
+// never reaches V and its whole time goes with 1/sqrt(A): counted as its cruise time, a shared
+// A 1 over vectors whose own was 5 looked free and doubled their time (property seed 157, the
+// plan 69 % over its bound). The vertex speeds are the most its corners allow (the geometric
+// caps, both Vs; a rest 0, a corner below the unit's least speed that speed), so the time is
+// at most what the plan gives it: the estimate errs toward sharing, as before.
+double vectorTimeS(const std::vector<Derived> &d, const std::vector<double> &vertexCaps,
+                   std::size_t j, std::int64_t speed, std::int64_t accel, double fastest)
+{
+    const Derived &r = d[j];
+    if (speed <= 0)
+        return 0.0;
+    const double a = 1000.0 * static_cast<double>(std::max<std::int64_t>(accel, 1));
+    const double v = std::min(static_cast<double>(speed), fastest);
+    double e = std::min(j == 0 ? 0.0 : cornerSpeed(d, vertexCaps, j - 1), v);
+    double x = std::min(cornerSpeed(d, vertexCaps, j), v);
+    x = std::min(x, std::sqrt(e * e + 2 * a * r.units));
+    e = std::min(e, std::sqrt(x * x + 2 * a * r.units));
+    return runVector(e, v, x, a, r.units).timeS;
 }
 
 void setAccel(Derived &r, std::int64_t accel, const PlanOptions &options)

@@ -14,8 +14,15 @@ namespace frezka::machine::detail {
 void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link);
 // Sets each vector's A (Derived::accel) and its braking room (Derived::twoAU). Quick vectors
 // share one A while their caps lie within PlanOptions::accelTolerance, or while the time the
-// lower A costs them stays below what an A command costs the link.
-void chooseAccels(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link);
+// lower A costs them stays below what an A command costs the link. vertexCaps: per vertex (after
+// move k) the caps its geometry sets on the scalar speed, speed units (the time a lower A costs).
+void chooseAccels(std::vector<Derived> &d, const std::vector<double> &vertexCaps,
+                  const PlanOptions &options, const LinkTiming &link);
+// Vector j's time at V `speed` (at most `fastest`, speed units/s) and A `accel` (thousands)
+// between the fastest speeds its two corners allow (vertexCaps as for chooseAccels, both Vs as d
+// has them), seconds.
+double vectorTimeS(const std::vector<Derived> &d, const std::vector<double> &vertexCaps,
+                   std::size_t j, std::int64_t speed, std::int64_t accel, double fastest);
 // Sets a vector's A (thousands of pulses/s²) and the usable 2·A·distance that follows from it.
 void setAccel(Derived &r, std::int64_t accel, const PlanOptions &options);
 // The A cap of vector k, thousands of pulses/s².

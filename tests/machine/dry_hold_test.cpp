@@ -1,5 +1,6 @@
 // The unit halted where it would run dry in the middle of a chain (driver/link/leadinhold.h,
-// JobPace::dryAhead), read on the wire and on the emulated unit: property seeds 90 and 132, both
+// JobPace::dryAhead), read on the wire and on the emulated unit: property seeds 90 (now 14, below)
+// and 132, both
 // on links that garble one byte in a thousand. Seed 90 (GVE84, 38 400 Bd, 7.3 ms): a damaged
 // packet and 0.34 s of recovery while the unit held a few one-step Z vectors; seed 132 (GVE64,
 // 19 200 Bd): a chain's first packet damaged after 18 lines, the unit started on those and the
@@ -50,9 +51,12 @@ void runsWithoutRunningDryAtSpeed(unsigned seed)
 
 } // namespace
 
-TEST(DryHold, Seed90ADamagedPacketWhileTheUnitHeldLittleEndsInAHaltOnTheRamp)
+// Seed 90 was this case until issue 12's tenth session changed its plan (the A estimate, the
+// pace's stretch times): it now runs without a halt and without a brake violation. Seed 14 (GVE64,
+// 38 400 Bd, 15.3 ms, 1 byte in 1 000 garbled) halts four chains after damaged packets.
+TEST(DryHold, Seed14DamagedPacketsWhileTheUnitHeldLittleEndInAHaltOnTheRamp)
 {
-    runsWithoutRunningDryAtSpeed(90);
+    runsWithoutRunningDryAtSpeed(14);
 }
 
 TEST(DryHold, Seed132PacketsShrinkingAfterADamagedFirstPacketEndInAHaltOnTheRamp)
