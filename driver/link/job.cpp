@@ -7,6 +7,7 @@
 #include "driver/link/programcheck.h"
 #include "driver/link/unitcontrols.h"
 #include "gcode/toolpath.h"
+#include "machine/pathcheck.h"
 #include "machine/steps.h"
 #include "machine/unitwire.h"
 
@@ -59,6 +60,7 @@ std::optional<MachineError> Job::start(machine::UnitProgram program, double now)
     ++m_serial;
     m_cursor = {};
     m_streamBlocked = m_queueFullSeen = m_afterRest = m_chainDamaged = false;
+    m_restVerified = kNoRest;
     m_check.reset();
     m_guard.reset();
     m_lead.reset();
@@ -209,6 +211,7 @@ void Job::atRest(std::size_t index, std::function<void()> then)
             // took the unit for empty when the chain after it began).
             m_cursor.exec = index;
             m_cursor.execAt = m_host.now();
+            m_restVerified = index;
             then();
         });
     });
@@ -237,9 +240,23 @@ void Job::handlePcOp(const machine::UnitCommand &c)
         operatorStop(c, index);
         return;
     case UnitOp::ProgramEnd:
+        // Right after a wait for the queue to drain, checked at rest, nothing was sent: the unit
+        // stands where the program ends (F and the position again took two round trips).
+        if (!m_guard.off() && index > 0 && m_restVerified == index - 1 &&
+            index + 1 == m_program.commands.size() &&
+            machine::sameSteps(m_host.liveState().positionSteps, m_guard.plannedBefore(index + 1),
+                               m_program.axisCount)) {
+            acceptUpTo(index + 1);
+            finish(true);
+            return;
+        }
         atRest(index, [this, index] {
             acceptUpTo(index + 1);
-            finishWithPosition();
+            // The path guard's read at rest was the program's end: read again only without it.
+            if (!m_guard.off() && index + 1 == m_program.commands.size())
+                finish(true);
+            else
+                finishWithPosition();
         });
         return;
     case UnitOp::Probe:

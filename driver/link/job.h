@@ -125,9 +125,12 @@ private:
     bool m_queueFullSeen = false; // last C/packet hit a full queue
     bool m_afterRest = false;     // a PC-side wait (dwell) ended: the unit holds nothing
     bool m_chainDamaged = false;  // see chainDamaged()
-    double m_waitUntil = -1;      // a dwell or back-off: nothing from the job before this time
-    int m_packetLimit = 1;        // adaptive packet size (commands)
-    LineErrors m_lineErrors;      // damaged packet lines lately: caps m_packetLimit's growth
+    // The last command the job waited at and found the unit standing where the plan has it.
+    static constexpr std::size_t kNoRest = static_cast<std::size_t>(-1);
+    std::size_t m_restVerified = kNoRest;
+    double m_waitUntil = -1; // a dwell or back-off: nothing from the job before this time
+    int m_packetLimit = 1;   // adaptive packet size (commands)
+    LineErrors m_lineErrors; // damaged packet lines lately: caps m_packetLimit's growth
     JobFigures m_figures;
     JobPace m_pace;
     JobOverride m_override{m_host, m_pace};

@@ -2,6 +2,8 @@
 
 #include "emulatorrun.h"
 
+#include "machine/unitmodel.h"
+
 #include "driver/link/machinecore.h"
 #include "driver/link/simrunner.h"
 #include "gcode/error.h"
@@ -423,6 +425,8 @@ JobOutcome runJob(const RandomJob &job)
     o.jobS = rep.endS - rep.startS;
     const emulator::Stats stats = port.unit().stats();
     o.vectorsExecuted = stats.motion.vectorsExecuted;
+    o.movingS = stats.motion.movingTimeS;
+    o.modelMotionS = runUnitModel(p.program, p.stats.speedModeVk).motionS;
     o.brakeViolations = stats.motion.brakeViolations;
     o.starvationStops = stats.motion.starvationStops - plannedStops;
     o.pathFaults = rep.pathFaults;

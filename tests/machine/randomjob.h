@@ -59,6 +59,11 @@ struct JobOutcome
     std::int64_t leadInHolds = 0; // chains the driver held the unit at (driver/link/leadinhold.h)
     std::int64_t dryHolds = 0;    // chains halted where the unit would have run dry (ditto)
     double resendShare = 0;       // resent commands / commands sent in the job
+    // Where the job's time went against the estimate: the unit's moving time (the emulator's)
+    // against the plan's model (runUnitModel's motionS); the rest is time the unit stood (rests,
+    // T pauses, holds, dwells) against the estimate's waits and the link's part of each rest.
+    double movingS = 0;
+    double modelMotionS = 0;
     // What broke, in two groups. wrong: the job ended somewhere the program does not (counters,
     // a vector run twice or never), the plan breaks a limit of the machine, or its estimate lies
     // below the time-optimal bound (a plan faster than the limits allow, or a wrong bound): never

@@ -15,6 +15,11 @@
 //                                                and without either
 //   STREAM_SOAK_VERBOSE=1 also lists every case off the link's pace (else only those that
 //   stopped with an error on a clean link, which it must never do).
+//   STREAM_SOAK_SPLIT=1 prints, per clean case, where its time went against the estimate: the
+//   unit's moving time against the plan's model, the rest standing (rests, holds, T, dwells).
+// The clean links' figures against the estimate count the jobs at 100 % only, as the judge
+// does (until 2026-11-27 the jobs at a feed override were counted too: 13 of the 32 "more than
+// 2 % off" in the 200 cases from seed 1, and the 36-43 % worst).
 #include "randomjob.h"
 
 #include "gcode/interpreter.h"
@@ -116,7 +121,7 @@ int main(int argc, char **argv)
     const bool verbose = std::getenv("STREAM_SOAK_VERBOSE") != nullptr;
     long offPace = 0, starvedCases = 0, brakeCases = 0, starved = 0, estimateOff = 0;
     long failed = 0, clean = 0, faulty = 0, pathFaults = 0, packetsOff = 0, cleanStopped = 0;
-    long heldCases = 0, holds = 0;
+    long heldCases = 0, holds = 0, cleanOverride = 0, cleanOverrideOff = 0;
     long dryHolds = 0, dryCases = 0, dryClean = 0;
     double worstBoundRatio = 0, worstClean = 0, sumClean = 0, worstResend = 0, sumResend = 0;
     double virtualS = 0;
@@ -170,7 +175,19 @@ int main(int argc, char **argv)
             std::printf("rests %lld latency %.1f baud %d packets %d over %.4f s\n",
                         static_cast<long long>(o.rests), job.wire.latencyS * 1000, job.wire.baud,
                         job.config.link.packets ? 1 : 0, o.jobS - o.stats.estimatedS);
-        if (job.wire.byteErrorRate == 0) {
+        if (std::getenv("STREAM_SOAK_SPLIT") && job.wire.byteErrorRate == 0)
+            std::printf("split seed %llu: off %+.2f %% over %.4f s moving %+.4f s standing %+.4f "
+                        "s, held %lld, rests %lld, override %d, %s\n",
+                        static_cast<unsigned long long>(seed), 100 * off,
+                        o.jobS - o.stats.estimatedS, o.movingS - o.modelMotionS,
+                        o.jobS - o.stats.estimatedS - (o.movingS - o.modelMotionS),
+                        static_cast<long long>(o.leadInHolds), static_cast<long long>(o.rests),
+                        job.overridePercent, job.summary.c_str());
+        if (job.wire.byteErrorRate == 0 && job.overridePercent != 100) {
+            // The estimate is the plan's at 100 %: timed by the judge only there (randomjob.h).
+            ++cleanOverride;
+            cleanOverrideOff += std::abs(off) > 0.02 ? 1 : 0;
+        } else if (job.wire.byteErrorRate == 0) {
             ++clean;
             worstClean = std::max(worstClean, std::abs(off));
             estimateOff += std::abs(off) > 0.02 ? 1 : 0;
@@ -200,6 +217,8 @@ int main(int argc, char **argv)
     std::printf("estimate / bound, worst         %.4f\n", worstBoundRatio);
     std::printf("clean links: job / estimate - 1 mean %.4f %%, worst %.4f %% (%ld cases)\n",
                 clean ? 100 * sumClean / clean : 0.0, 100 * worstClean, clean);
+    std::printf("clean links at a feed override (not timed): %ld cases, %ld more than 2 %% off\n",
+                cleanOverride, cleanOverrideOff);
     std::printf("faulty links (1/1000 bytes): resent share mean %.2f %%, worst %.2f %%, path "
                 "faults returned in %ld of %ld cases\n",
                 faulty ? 100 * sumResend / faulty : 0.0, 100 * worstResend, pathFaults, faulty);
