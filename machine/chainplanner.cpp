@@ -73,12 +73,14 @@ RunOutcome RunPlanner::run()
 {
     derive();
     planOnce();
+    m_out.plans = 1;
     if (!m_options.wireLimited || m_config.link.baud <= 0) {
         bound();
         jumpStats();
         return std::move(m_out);
     }
     m_extraS.assign(m_moves.size(), 0);
+    int plans = 1;
     for (int pass = 0; pass < kWirePasses; ++pass) {
         bool changed = false;
         // The run's first B, V and A always count: the unit's modal values are unknown.
@@ -101,7 +103,9 @@ RunOutcome RunPlanner::run()
         if (!changed)
             break;
         planOnce();
+        ++plans;
     }
+    m_out.plans = plans;
     bound();
     jumpStats();
     return std::move(m_out);
