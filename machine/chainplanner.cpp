@@ -67,20 +67,31 @@ Vec4 normalized(const Vec4 &v)
 
 // With the link's pace (wireLimited) a vector's wire time includes the B command before it
 // where the plan sends one, which the plan decides: plan without them, then again with the
-// last plan's B bytes spread over each vector's wide neighbourhood (the unit's queue evens
-// them out), a few times: the spread B bytes change little from one plan to the next.
+// last plan's B, V and A commands spread over each vector's wide neighbourhood (the unit's queue
+// evens them out), a few times. They need not settle: where the B commands the pace sets change
+// the pace, a plan's commands go back and forth (the spiral of bench_gui_load: its B commands
+// near the centre changed in all five re-plans, most of them back to the value of two plans
+// before). So a re-plan whose own commands fit what it was paced for within the pace's margin
+// (sentFits) is kept: planning again would only trade one such pattern for the next (the spiral:
+// 4 plans, not 6; docs/planner.md §4).
 RunOutcome RunPlanner::run()
 {
     derive();
     planOnce();
+    ++m_out.plans;
     if (!m_options.wireLimited || m_config.link.baud <= 0) {
         bound();
         jumpStats();
         return std::move(m_out);
     }
-    m_extraS.assign(m_moves.size(), 0);
+    const std::size_t n = m_moves.size();
+    m_extraS.assign(n, 0);
+    int plans = 1;
     for (int pass = 0; pass < kWirePasses; ++pass) {
-        bool changed = false;
+        // The link time of the B, V and A commands the last plan sends before each vector: in the
+        // passes' room (free between plans), compared with what that plan assumed (m_extraS).
+        std::vector<double> &sent = m_scratch;
+        sent.assign(n, 0.0);
         // The run's first B, V and A always count: the unit's modal values are unknown.
         std::int64_t lastB = -1, lastV = -1, lastA = -1;
         for (std::size_t k = 0; k < m_out.vectors.size(); ++k) {
@@ -95,16 +106,56 @@ RunOutcome RunPlanner::run()
             lastB = v.line ? lastB : v.brake;
             lastV = v.speed;
             lastA = v.accel;
+            sent[k] = extra;
+        }
+        // The first plan assumed no commands at all: it is always planned again.
+        if (pass > 0 && sentFits(sent))
+            break;
+        bool changed = false;
+        for (std::size_t k = 0; k < n; ++k) {
+            const double extra = sent[k];
             changed = changed || extra != m_extraS[k];
             m_extraS[k] = extra;
         }
         if (!changed)
             break;
         planOnce();
+        ++plans;
     }
+    m_out.plans = plans;
     bound();
     jumpStats();
     return std::move(m_out);
+}
+
+// Whether the last plan's own B, V and A commands (sent, link time before each vector) fit the
+// link time it was paced for (m_extraS): in every window the pace averages over (wirePace's), what
+// it sends beyond what it assumed is at most the pace's wire margin's share of the window's
+// planned wire time (its vectors, each at its widest neighbour, and the assumed commands). Then a
+// plan again would pace for what this one sends and change its B commands once more, where the
+// margin pays for the difference already. Exact agreement (the pace settled) always fits.
+bool RunPlanner::sentFits(const std::vector<double> &sent) const
+{
+    const std::size_t n = sent.size();
+    const std::size_t window = m_link.brakeWindow();
+    const double share = std::max(0.0, m_options.wireMargin - 1);
+    // The window [k - window, k + window] slides: sums of the differences and of the planned time.
+    double over = 0, planned = 0;
+    auto add = [&](std::size_t j, double sign) {
+        over += sign * (sent[j] - m_extraS[j]);
+        planned += sign * (m_extraS[j] + m_link.vectorWireS(m_d[j].widestBytes));
+    };
+    for (std::size_t j = 0; j < std::min(n, window); ++j)
+        add(j, 1);
+    for (std::size_t k = 0; k < n; ++k) {
+        if (k + window < n)
+            add(k + window, 1);
+        if (k > window)
+            add(k - window - 1, -1);
+        if (over > share * planned)
+            return false;
+    }
+    return true;
 }
 
 // One plan of the run: the derived moves, the link's pace over them (with the B bytes of the

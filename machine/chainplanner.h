@@ -55,6 +55,7 @@ struct RunOutcome
     FeedCap firstFeedCap;                 // the first move whose feed is capped (line 0: none)
     std::size_t feedCapLines = 0;         // lines with a capped feed (consecutive moves: once)
     std::size_t chains = 0;
+    int plans = 0;                       // plans of the run (the first and the pace's re-plans)
     double boundS = 0;                   // time-optimal bound of these moves
     double maxJumpMmPerS = 0;            // largest per-axis speed step at a vertex of the plan
     double maxJumpRatio = 0;             // largest speed step / axis limit

@@ -50,6 +50,7 @@ private:
 
     // chainplanner.cpp
     void planOnce();
+    bool sentFits(const std::vector<double> &sent) const;
     void derive();
     Directions directions(const Move &m) const;
     void deriveOne(const Move &m, const Directions &dir, Derived &r);

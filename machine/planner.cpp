@@ -318,6 +318,8 @@ void Planner::flush()
                       "move; it runs at that speed instead");
     PlanStats &s = m_result.stats;
     s.chains += run.chains;
+    s.movePlans += static_cast<std::size_t>(run.plans) * run.vectors.size();
+    s.mostPlans = std::max(s.mostPlans, run.plans);
     s.maxVertexJumpMmPerS = std::max(s.maxVertexJumpMmPerS, run.maxJumpMmPerS);
     s.maxJumpRatio = std::max(s.maxJumpRatio, run.maxJumpRatio);
     s.jumpOverLimit += run.jumpOverLimit;

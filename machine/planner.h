@@ -88,6 +88,11 @@ struct PlanStats
     std::size_t curveAccelOverLimit = 0; // vertices turning faster than the axes accelerate
     std::size_t brakeViolations = 0;     // vectors the model cannot brake in time (must be 0)
     bool speedModeVk = false;            // VK (path speeds) or VN (major-axis speeds)
+    // How often the planner planned its moves (the link's pace plans a run again with the B, V
+    // and A commands of its last plan, docs/planner.md §4): each move counted once per plan of
+    // its run (movePlans / vectors: the plans a move took), and the most plans of one run.
+    std::size_t movePlans = 0;
+    int mostPlans = 0;
     friend bool operator==(const PlanStats &, const PlanStats &) = default;
 };
 

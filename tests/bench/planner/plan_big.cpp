@@ -98,8 +98,10 @@ int main(int argc, char **argv)
     const machine::PlanResult r = machine::plan(g.toolpath, config);
     clock.done("plan");
     std::printf("%ld lines, %s: %zu commands, %zu vectors, %zu chains, estimated %.3f s, bound "
-                "%.3f s, %zu errors\n",
+                "%.3f s, %zu errors, %.2f plans a move (at most %d a run)\n",
                 lines, unit.c_str(), r.program.commands.size(), r.stats.vectors, r.stats.chains,
-                r.stats.estimatedS, r.stats.boundS, r.errors.size());
+                r.stats.estimatedS, r.stats.boundS, r.errors.size(),
+                r.stats.vectors ? double(r.stats.movePlans) / double(r.stats.vectors) : 0.0,
+                r.stats.mostPlans);
     return 0;
 }
