@@ -1,9 +1,10 @@
 // The program's end, a rest like the others (issue 12, docs/planner.md §7): the job learns that
 // the unit stands, reads the position there once (the path guard's last check) and ends; the
-// estimate pays for that rest. Property seeds 88 and 158 (GVE84 at 38 400 Bd and 5.8 ms, GVE64
-// at 38 400 Bd and 10.8 ms; clean links, two rests each): the end used to read F and the position
-// twice more after the final wait, none of it in the estimate, and the jobs ran 3.4 % and 4.6 %
-// over it.
+// estimate pays for that rest. Property seeds 88 and 39 (GVE84 at 38 400 Bd and 5.8 ms, GVE64
+// at 38 400 Bd and 14.9 ms; clean links): the end used to read F and the position twice more
+// after the final wait, none of it in the estimate (seed 88 ran 3.4 % over it). Seed 158 was the
+// second case until the merge of issue 12's and 17's plan changes (its job now runs 2.3 % under
+// its estimate, the rests' poll phase: docs/benchmarks.md, tenth session).
 
 #include "heldjob.h"
 
@@ -53,7 +54,7 @@ TEST(JobEnd, Seed88EndsOnOnePositionReadWithinTheEstimate)
     endsOnOneReadWithinTheEstimate(88);
 }
 
-TEST(JobEnd, Seed158EndsOnOnePositionReadWithinTheEstimate)
+TEST(JobEnd, Seed39EndsOnOnePositionReadWithinTheEstimate)
 {
-    endsOnOneReadWithinTheEstimate(158);
+    endsOnOneReadWithinTheEstimate(39);
 }
