@@ -64,6 +64,17 @@ inline bool useProfile(const QTemporaryDir &dir, const machine::MachineConfig &p
     return true;
 }
 
+// A main window with the software view and the default layout, shown.
+inline std::unique_ptr<MainWindow> shownWindow()
+{
+    MainWindowOptions options;
+    options.view = MainWindowOptions::View::Software;
+    options.restoreLayout = false;
+    auto window = std::make_unique<MainWindow>(options);
+    window->show();
+    return window;
+}
+
 // A main window on the default GVE64 profile whose port does not exist, its settings in dir
 // under the organisation's name: its own link stays unconnected while the test drives a
 // simulated one and the window shows it. Shown, once it has said the port is missing; null when
@@ -77,11 +88,7 @@ inline std::unique_ptr<MainWindow> unconnectedWindow(const QTemporaryDir &dir,
     profile.link.port = dir.filePath(QStringLiteral("no-such-port")).toStdString();
     if (!useProfile(dir, profile))
         return nullptr;
-    MainWindowOptions options;
-    options.view = MainWindowOptions::View::Software;
-    options.restoreLayout = false;
-    auto window = std::make_unique<MainWindow>(options);
-    window->show();
+    auto window = shownWindow();
     if (!QTest::qWaitFor([&] { return !window->lastError().isEmpty(); }, 20000))
         return nullptr;
     return window;
@@ -102,11 +109,7 @@ inline std::unique_ptr<MainWindow> emulatorWindow(const QTemporaryDir &dir, cons
     isolateSettings(dir, organisation);
     if (profile && !useProfile(dir, *profile))
         return nullptr;
-    MainWindowOptions options;
-    options.view = MainWindowOptions::View::Software;
-    options.restoreLayout = false;
-    auto window = std::make_unique<MainWindow>(options);
-    window->show();
+    auto window = shownWindow();
     if (!QTest::qWaitFor(
             [&] { return window->controller()->state().mode == driver::MachineMode::Idle; }, 30000))
         return nullptr;

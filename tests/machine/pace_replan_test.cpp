@@ -4,6 +4,7 @@
 // first plan and all 5 re-plans, as its B commands near the centre went back and forth; the plan
 // it keeps must still keep the unit fed on the emulated link, at the estimate.
 #include "randomjob.h"
+#include "spiralprogram.h"
 
 #include "gcode/interpreter.h"
 #include "machine/planner.h"
@@ -20,20 +21,7 @@ using namespace frezka::machine;
 
 namespace {
 
-// As bench_gui_load writes it (tests/bench/gui/bench_gui_load.cpp), `lines` long.
-std::string spiral(long lines)
-{
-    std::string s = "G21 G90 G94\nG0 X0 Y0 Z0\nG1 Z-1 F1500\n";
-    char buf[64];
-    for (long i = 3; i < lines - 1; ++i) {
-        const double t = double(i) * 0.002;
-        const double r = 10 + double(i) * 120.0 / double(lines);
-        std::snprintf(buf, sizeof buf, "G1 X%.3f Y%.3f\n", 200 + r * std::cos(t),
-                      150 + r * std::sin(t));
-        s += buf;
-    }
-    return s + "M30\n";
-}
+using test::spiral; // spiralprogram.h
 
 std::string list(const std::vector<std::string> &items)
 {

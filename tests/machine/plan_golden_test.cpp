@@ -8,6 +8,7 @@
 //   FREZKA_PLAN_DUMP_DIR=D writes each plan's full text to D/<case>.txt, to diff two builds
 #include "../bench/gcode/generate.h"
 #include "randomjob.h"
+#include "spiralprogram.h"
 
 #include "gcode/interpreter.h"
 #include "machine/planner.h"
@@ -47,21 +48,7 @@ std::string readFile(const std::string &path)
     return s.str();
 }
 
-// The bench_gui_load spiral (tests/bench/gui/bench_gui_load.cpp), smaller: one long chain of
-// short G1 moves, the shape of the 5 M-line load.
-std::string spiral(long lines)
-{
-    std::string s = "G21 G90 G94\nG0 X0 Y0 Z0\nG1 Z-1 F1500\n";
-    char buf[64];
-    for (long i = 3; i < lines - 1; ++i) {
-        const double t = double(i) * 0.002;
-        const double r = 10 + double(i) * 120.0 / double(lines);
-        std::snprintf(buf, sizeof buf, "G1 X%.3f Y%.3f\n", 200 + r * std::cos(t),
-                      150 + r * std::sin(t));
-        s += buf;
-    }
-    return s + "M30\n";
-}
+using test::spiral; // spiralprogram.h
 
 // Profiles: the three units as shipped, and the link and mode settings that change the pace.
 std::vector<std::pair<std::string, MachineConfig>> profiles()
