@@ -265,13 +265,24 @@ void LinkWorker::executeOn(int unit, const MachineCommand &command)
     service();
 }
 
-void LinkWorker::turnEmulatedWheel(int axis, int multiplier, int detents)
+namespace {
+
+// The built-in emulator behind the transport (a serial trace's wrapper looked through), when
+// it is that and open; null otherwise.
+EmulatorTransport *openBuiltInEmulator(Transport *t)
 {
-    Transport *t = m_transport;
     if (auto *tracing = qobject_cast<TracingTransport *>(t))
         t = tracing->inner();
     auto *emulated = qobject_cast<EmulatorTransport *>(t);
-    if (!emulated || !emulated->isOpen()) {
+    return emulated && emulated->isOpen() ? emulated : nullptr;
+}
+
+} // namespace
+
+void LinkWorker::turnEmulatedWheel(int axis, int multiplier, int detents)
+{
+    EmulatorTransport *emulated = openBuiltInEmulator(m_transport);
+    if (!emulated) {
         emit logLine(QCoreApplication::translate(
             "LinkWorker", "simulated handwheel: not connected to the built-in emulator; "
                           "turn the unit's own MPG wheel"));
@@ -291,11 +302,8 @@ void LinkWorker::turnEmulatedWheel(int axis, int multiplier, int detents)
 
 std::optional<emulator::Stats> LinkWorker::builtInEmulatorStats() const
 {
-    Transport *t = m_transport;
-    if (auto *tracing = qobject_cast<TracingTransport *>(t))
-        t = tracing->inner();
-    auto *emulated = qobject_cast<EmulatorTransport *>(t);
-    if (!emulated || !emulated->isOpen())
+    EmulatorTransport *emulated = openBuiltInEmulator(m_transport);
+    if (!emulated)
         return std::nullopt;
     const emulator::Unit *unit = emulated->simulation().unitAt(m_config.unit.address);
     if (!unit)
