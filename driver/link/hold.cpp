@@ -99,6 +99,8 @@ void Hold::goOn()
         // queues the lead-in and the hold reads the causes and sends its own G.
         m_needsGo = false;
         running();
+        if (m_job.verifying()) // a check waits for the unit to run dry: the hold starts it
+            m_job.releaseLeadIn();
         return;
     }
     m_host.send(cmd::go(), [this, running](const Outcome &o) {

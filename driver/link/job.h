@@ -82,6 +82,7 @@ public:
     // The unit is held at a chain's start until its lead-in is queued (leadinhold.h): a resume
     // must leave it held, the hold's own G starts the chain.
     bool leadInHeld() const { return m_active && m_lead.held(); }
+    void releaseLeadIn() { m_lead.releaseForCheck(); } // for ProgressCheck (leadinhold.h)
     bool offPath() const { return m_guard.faulted(); }
     bool probing() const;
     void returnToPath() { m_guard.returnToPath(); }

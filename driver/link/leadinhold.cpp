@@ -106,7 +106,20 @@ void LeadInHold::halt(std::size_t start)
             return;
         m_state = State::Held;
         m_host.liveState().inta = true;
+        if (m_job.verifying()) // the check began while the H was on its way
+            releaseForCheck();
     });
+}
+
+void LeadInHold::releaseForCheck()
+{
+    // Not while the operator holds the job: the resume starts it (Hold::goOn).
+    if (m_state != State::Held || m_host.liveState().mode != MachineMode::Running)
+        return;
+    m_host.log("starting the held chain: the job's progress is checked from where the unit "
+               "stops");
+    m_state = State::Releasing;
+    readCause(4);
 }
 
 // The whole chain is queued, the queue is full, or the queued motion covers the wire's part.
@@ -119,6 +132,12 @@ bool LeadInHold::fed()
         return true;
     const std::int64_t capacity = variantInfo(m_host.config().unit.variant).queueCapacity - 1;
     if (pace.vectorsBefore(next) - pace.vectorsBefore(m_start) >= capacity)
+        return true;
+    // The held unit refused a vector for a full queue: nothing more fits until it runs. (Held
+    // after a damaged packet, the unit may have stopped short of stopEstimate's guess, holding
+    // more than the count above; waiting for room would wait for ever: a faulty link at 115 200
+    // Bd, the overfeed raster, stood polling for hours.)
+    if (m_job.queueFullSeen())
         return true;
     return pace.leadInSlackS(m_start, next) >= pace.leadInLink().reserveS() &&
            pace.leadInFeeds(m_start, next);

@@ -44,6 +44,11 @@ public:
     // reads or G are on the wire, and the job sends nothing else now).
     bool step(double now);
     bool held() const { return m_state == State::Held; }
+    // A progress check (ProgressCheck) waits for the unit to run dry to read how far it got; a
+    // unit this hold keeps standing never would (the job stood polling for ever on a faulty
+    // link): the held chain is started now, from rest, as fed() would have started it; while
+    // the operator holds the job, once the operator resumes it (Hold::goOn).
+    void releaseForCheck();
     // Where the held chain began (valid while held).
     std::size_t start() const { return m_start; }
 

@@ -21,6 +21,7 @@ void ProgressCheck::verify(const std::string &why)
     ++m_job.report().verified;
     m_needVerify = true;
     m_job.setStreamBlocked(true);
+    m_job.releaseLeadIn(); // a unit held at a chain's start would never run dry
     readStillPosition();
 }
 
