@@ -28,8 +28,8 @@ double cornerSpeed(const std::vector<Derived> &d, const std::vector<double> &ver
     return std::max(v, static_cast<double>(kMinSpeed));
 }
 
-// What an A change before vector k costs the job (chooseAccels): one command's link time and
-// round trip, as every V and A (speedChangeCost x LinkTiming::modalChangeS), and where the unit
+// What an A change before vector k costs the job (chooseAccels' window): one command's link time
+// and round trip, as every V and A (speedChangeCost x LinkTiming::modalChangeS), and where the unit
 // would hold less motion there than the change and the packet after it need (the change stops
 // the packets), the time paceModalChanges then slows the stretch before it by, or the merge it
 // makes instead, which costs at most that. On a wire-paced stretch the unit holds little and an
@@ -189,14 +189,14 @@ void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const Lin
 // under accelKeepS at their V) share one A over a stretch whose caps lie within
 // accelTolerance of each other: the stretch's least cap. Caps drift with the direction
 // (a 3D raster's slope changes the path acceleration the axes allow at every vector); a
-// stretch follows the drift in steps of the tolerance instead of at every vector, and beyond the
-// tolerance while the lower A costs the stretch less than the change would cost the job on this
-// link (changeCosts: one command where the unit holds ample motion, several round trips on a
-// wire-paced stretch). A short vector's direction jitters with the step rounding: it takes the
-// least cap of its neighbours within accelWindowSteps speed units on the same terms (a fixed
-// window cost vectors of a few units up to 13 % of a job where the link carried the A with
-// ease: random jobs 147, 194). A long vector keeps its own cap: there the acceleration
-// matters and one A command costs the link nothing in comparison.
+// stretch follows the drift in steps of the tolerance instead of at every vector, and beyond it
+// while the lower A costs the stretch less than an A command's round trip. A short vector's
+// direction jitters with the step rounding: it takes the least cap of its neighbours within
+// accelWindowSteps speed units where that costs it less than the change would cost the job on
+// this link (changeCosts: one command where the unit holds ample motion, several round trips
+// on a wire-paced stretch; a fixed window cost vectors of a few units up to 13 % of a job where
+// the link carried the A with ease: random jobs 147, 194). A long vector keeps its own cap:
+// there the acceleration matters and one A command costs the link nothing in comparison.
 // The time a stretch loses to a lower A is estimated as if the time t_j that A sets in vector j
 // went with 1/sqrt(A): at its cap c_j that part takes t_j sqrt(c_j / least) at the stretch's
 // least cap. The sums S = sum t_j sqrt(c_j) and T = sum t_j give the loss S / sqrt(least) - T in
@@ -273,7 +273,7 @@ void chooseAccels(std::vector<Derived> &d, const std::vector<double> &vertexCaps
                 const double t = timeSum + timeOf(end);
                 const bool close = static_cast<double>(lo) >=
                                    static_cast<double>(hi) * (1 - options.accelTolerance);
-                if (!close && !(s / std::sqrt(static_cast<double>(lo)) - t < changeCost[end]))
+                if (!close && !(s / std::sqrt(static_cast<double>(lo)) - t < penalty))
                     break;
                 least = lo, most = hi, rootSum = s, timeSum = t, ++end;
             }

@@ -14,10 +14,11 @@ namespace frezka::machine::detail {
 void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const LinkTiming &link);
 // Sets each vector's A (Derived::accel) and its braking room (Derived::twoAU). Quick vectors
 // share one A while their caps lie within PlanOptions::accelTolerance, or while the time the
-// lower A costs them stays below what the A change would cost the job on this link (its command,
-// and where the unit would hold too little motion there, what the packets it stops cost).
-// vertexCaps: per vertex (after move k) the caps its geometry sets on the scalar speed, speed
-// units (the time a lower A costs).
+// lower A costs them stays below what an A command costs the link; a vector shorter than
+// PlanOptions::accelWindowSteps takes its neighbours' least cap where that costs it less than
+// the A change would cost the job on this link (its command, and where the unit would hold too
+// little motion there, what the packets it stops cost). vertexCaps: per vertex (after move k)
+// the caps its geometry sets on the scalar speed, speed units (the time a lower A costs).
 void chooseAccels(std::vector<Derived> &d, const std::vector<double> &vertexCaps,
                   const PlanOptions &options, const LinkTiming &link);
 // Vector j's time at V `speed` (at most `fastest`, speed units/s) and A `accel` (thousands)
