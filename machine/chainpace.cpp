@@ -175,13 +175,9 @@ void RunPlanner::paceModalChanges()
             if (k < n && changes && !chainStart) {
                 const int commands = (m_d[k].speed != m_d[k - 1].speed ? 1 : 0) +
                                      (m_d[k].accel != m_d[k - 1].accel ? 1 : 0);
-                // The packet after the change must arrive (its B and C on the wire and a round
-                // trip), and the driver sizes it to half of what the unit holds at most
-                // (driver/link/job.cpp, sendPacket): its first B and C must fit in that.
-                const double wireBc = (m_d[k].wireBytes + kBrakeBytes) * 10.0 / m_config.link.baud;
-                const double lead = std::max(2 * std::max(kPacedWireS, wireBc),
-                                             m_link.nonPacketS(m_d[k].wireBytes + kBrakeBytes));
-                const double need = commands * m_link.modalChangeS() + lead;
+                // The packet after the change must arrive (LinkTiming::changeLeadS).
+                const double need = commands * m_link.modalChangeS() +
+                                    m_link.changeLeadS(static_cast<double>(m_d[k].wireBytes));
                 if (held < need) {
                     // Either the stretch before runs slower by the time missing, or the two
                     // stretches share one V and A (no change to send): whichever costs less.

@@ -101,10 +101,17 @@ public:
     // What a V or an A command costs the link (its bytes and a round trip; an A is no longer
     // than the largest V): the price the plan weighs against a shared V or A.
     double modalChangeS() const { return nonPacketS(speedWireBytes()); }
+    // What the packet after a V or A change inside a chain needs once the change has gone out:
+    // its first B and C on the wire and a round trip, and at least twice their wire time (the
+    // driver sizes a packet to half of what the unit holds when it holds little,
+    // driver/link/job.cpp, sendPacket). vectorBytes: that C command's bytes.
+    double changeLeadS(double vectorBytes) const;
 
     static constexpr double kReplyS = 0.002;     // a packet's reply and the unit's turnaround
     static constexpr double kShortQueue = 128;   // see packetVectors
     static constexpr double kSteadyHeldS = 0.25; // see vectorWireS
+    static constexpr double kBrakeBytes = 12;    // changeLeadS: a B command's bytes, about
+    static constexpr double kPacedWireS = 0.005; // ... the driver's least packet budget
 
 private:
     const std::pair<double, double> &wholeBytes(std::uint8_t bytes) const

@@ -45,8 +45,6 @@ public:
 private:
     static constexpr int kWirePasses = 5;         // plans again at most this often
     static constexpr std::size_t kFlatWindow = 8; // capVertices: vertices either side
-    static constexpr double kBrakeBytes = 12;     // paceModalChanges: a B command's bytes, about
-    static constexpr double kPacedWireS = 0.005;  // ... the driver's least packet budget
 
     // chainplanner.cpp
     void planOnce();

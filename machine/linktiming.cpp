@@ -54,6 +54,15 @@ double LinkTiming::nonPacketS(double bytes) const
     return bytes * 10.0 / m_config.link.baud + roundTripS();
 }
 
+double LinkTiming::changeLeadS(double vectorBytes) const
+{
+    if (m_config.link.baud <= 0)
+        return 0;
+    const double bytes = vectorBytes + kBrakeBytes;
+    const double wireBc = bytes * 10.0 / m_config.link.baud;
+    return std::max(2 * std::max(kPacedWireS, wireBc), nonPacketS(bytes));
+}
+
 double LinkTiming::commandS(double bytes) const
 {
     if (m_config.link.baud <= 0)

@@ -28,6 +28,51 @@ double cornerSpeed(const std::vector<Derived> &d, const std::vector<double> &ver
     return std::max(v, static_cast<double>(kMinSpeed));
 }
 
+// What an A change before vector k costs the job (chooseAccels' window): one command's link time
+// and round trip, as every V and A (speedChangeCost x LinkTiming::modalChangeS), and where the unit
+// would hold less motion there than the change and the packet after it need (the change stops
+// the packets), the time paceModalChanges then slows the stretch before it by, or the merge it
+// makes instead, which costs at most that. On a wire-paced stretch the unit holds little and an
+// A change costs several round trips; where the vectors last longer than their bytes, only its
+// own. The held motion is followed as paceModalChanges follows it: each vector's cruise time at
+// its V less its bare wire time, at most the unit's queue of vectors, nothing at a chain's
+// start; a round trip for the packet the change cuts short. Where V changes at k anyway, the A
+// adds one command to the change, not a change of its own.
+std::vector<double> changeCosts(const std::vector<Derived> &d, const PlanOptions &options,
+                                const LinkTiming &link)
+{
+    const std::size_t n = d.size();
+    const double change = link.modalChangeS();
+    const double base = options.speedChangeCost * change;
+    std::vector<double> cost(n, base);
+    if (!options.wireLimited || !(base > 0) || options.strategy != PlanStrategy::Full)
+        return cost;
+    const std::size_t queue = link.queueVectors();
+    const auto cruise = [&d](std::size_t j) {
+        return d[j].units / static_cast<double>(std::max<std::int64_t>(d[j].speed, 1));
+    };
+    double held = 0, queued = 0; // the motion the unit holds; the last queue of vectors' cruise
+    std::size_t start = 0;       // the chain's first vector
+    for (std::size_t k = 0; k < n; ++k) {
+        if (d[k].restBefore) {
+            held = queued = 0;
+            start = k;
+        } else {
+            const double lead = link.changeLeadS(static_cast<double>(d[k].wireBytes));
+            const double own = d[k].speed != d[k - 1].speed ? change : 0.0; // a V goes anyway
+            const double packet = lead + link.roundTripS(); // and the packet it cuts short
+            const double withA = std::max(0.0, own + change + packet - held);
+            const double withoutA = own > 0 ? std::max(0.0, own + packet - held) : 0.0;
+            cost[k] = base + withA - withoutA;
+        }
+        queued += cruise(k);
+        if (k - start >= queue)
+            queued -= cruise(k - queue);
+        held = std::clamp(held + cruise(k) - link.bareVectorWireS(d[k].wireBytes), 0.0, queued);
+    }
+    return cost;
+}
+
 } // namespace
 
 // V per vector. Each vector's own cap (feed, axis speeds in its direction, pulse rate)
@@ -144,10 +189,14 @@ void chooseSpeeds(std::vector<Derived> &d, const PlanOptions &options, const Lin
 // under accelKeepS at their V) share one A over a stretch whose caps lie within
 // accelTolerance of each other: the stretch's least cap. Caps drift with the direction
 // (a 3D raster's slope changes the path acceleration the axes allow at every vector); a
-// stretch follows the drift in steps of the tolerance instead of at every vector. A short
-// vector's direction jitters with the step rounding: its cap is the least of its neighbours
-// within accelWindowSteps speed units. A long vector keeps its own cap: there the
-// acceleration matters and one A command costs the link nothing in comparison.
+// stretch follows the drift in steps of the tolerance instead of at every vector, and beyond it
+// while the lower A costs the stretch less than an A command's round trip. A short vector's
+// direction jitters with the step rounding: it takes the least cap of its neighbours within
+// accelWindowSteps speed units where that costs it less than the change would cost the job on
+// this link (changeCosts: one command where the unit holds ample motion, several round trips
+// on a wire-paced stretch; a fixed window cost vectors of a few units up to 13 % of a job where
+// the link carried the A with ease: random jobs 147, 194). A long vector keeps its own cap:
+// there the acceleration matters and one A command costs the link nothing in comparison.
 // The time a stretch loses to a lower A is estimated as if the time t_j that A sets in vector j
 // went with 1/sqrt(A): at its cap c_j that part takes t_j sqrt(c_j / least) at the stretch's
 // least cap. The sums S = sum t_j sqrt(c_j) and T = sum t_j give the loss S / sqrt(least) - T in
@@ -158,9 +207,10 @@ void chooseAccels(std::vector<Derived> &d, const std::vector<double> &vertexCaps
 {
     const std::size_t n = d.size();
     const double penalty = options.speedChangeCost * link.modalChangeS();
+    const std::vector<double> changeCost = changeCosts(d, options, link);
     std::vector<std::int64_t> caps(n);
     for (std::size_t k = 0; k < n; ++k)
-        caps[k] = accelCap(d, k, options);
+        caps[k] = accelCapWithin(d, k, options, 0.0);
     // What A costs vector j: its cruise time as before, or where more, the time it spends
     // below its cruise speed between the fastest vertex speeds its corners allow (vectorTimeS,
     // the cruise at most what the link's pace will leave it). Where the corners are slow a quick
@@ -171,16 +221,33 @@ void chooseAccels(std::vector<Derived> &d, const std::vector<double> &vertexCaps
             return std::numeric_limits<double>::infinity();
         return d[j].units / link.vectorWireS(d[j].widestBytes);
     };
-    std::vector<double> times(n, 0.0);
-    for (std::size_t j = 0; j < n; ++j) {
+    const auto aTimeS = [&](std::size_t j) {
         const Derived &r = d[j];
         if (r.speed <= 0)
-            continue;
+            return 0.0;
         const double cruise = r.units / static_cast<double>(r.speed);
         const double fastest = paced(j);
         const double below = vectorTimeS(d, vertexCaps, j, r.speed, caps[j], fastest) -
                              r.units / std::min(fastest, static_cast<double>(r.speed));
-        times[j] = std::max(cruise, below);
+        return std::max(cruise, below);
+    };
+    std::vector<double> times(n, 0.0);
+    for (std::size_t j = 0; j < n; ++j)
+        times[j] = aTimeS(j);
+    // A short vector's direction jitters with the step rounding, and so does its cap: it takes
+    // the least cap of its neighbours within accelWindowSteps where the time that costs it (its
+    // A time, as below) stays below what the change it saves would cost (changeCosts): on a
+    // wire-paced stretch several round trips, where the unit holds ample motion one command.
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::int64_t window = accelCap(d, k, options);
+        if (window >= caps[k])
+            continue;
+        const double loss =
+            times[k] * (std::sqrt(static_cast<double>(caps[k]) / static_cast<double>(window)) - 1);
+        if (loss < changeCost[k]) {
+            caps[k] = window;
+            times[k] = aTimeS(k);
+        }
     }
     const auto timeOf = [&times](std::size_t j) { return times[j]; };
     std::size_t k = 0;
@@ -253,8 +320,14 @@ bool quick(const std::vector<Derived> &d, std::size_t k, const PlanOptions &opti
 // The A cap of move k, thousands of pulses/s² (see chooseAccels).
 std::int64_t accelCap(const std::vector<Derived> &d, std::size_t k, const PlanOptions &options)
 {
+    return accelCapWithin(d, k, options, options.accelWindowSteps);
+}
+
+std::int64_t accelCapWithin(const std::vector<Derived> &d, std::size_t k,
+                            const PlanOptions &options, double windowSteps)
+{
     const std::size_t n = d.size();
-    const double w = std::max(0.0, options.accelWindowSteps);
+    const double w = std::max(0.0, windowSteps);
     const Derived &r = d[k];
     double a = r.aMm; // r.aMm stays the limit itself: the bound uses it
     double reach = r.units < w ? 0 : w;
