@@ -51,6 +51,7 @@ struct HeldJob
                 wire.push_back(line);
                 wireAt.push_back(port.now());
                 queuedAt.push_back(port.unit().queueLength());
+                movingAt.push_back(port.unit().isMoving());
             }
             return bytes;
         };
@@ -159,6 +160,7 @@ struct HeldJob
     std::vector<std::string> wire;
     std::vector<double> wireAt;        // when each line was put on the wire (the port's clock)
     std::vector<std::size_t> queuedAt; // the vectors the unit held then
+    std::vector<bool> movingAt;        // whether it moved then
     std::vector<bool> finished;
 };
 
