@@ -24,7 +24,7 @@ double Poller::nextTime() const
         break;
     }
     // The job waits for the unit to stand: one read after the other (standPoll).
-    if (m_host.waitingForJobStand())
+    if (standWait())
         return m_lastPoll;
     // A chain held at its start: the unit stands, the display's position once a second.
     if (m_job.leadInHeld())
@@ -71,7 +71,7 @@ void Poller::schedule(double now)
 
 void Poller::start(double now)
 {
-    if (m_host.waitingForJobStand()) {
+    if (standWait()) {
         standPoll(now);
         return;
     }
@@ -136,6 +136,14 @@ void Poller::standPoll(double now)
         return;
     }
     m_host.start(cmd::flag(), [this](const Outcome &o) { onFlags(o); });
+}
+
+// Only near the stop by the job's model: while the unit still runs for a while the polls go on at
+// their rate (the path guard sees a damaged vector within a poll interval, not a second: a job
+// waiting at its end for a long slow chain re-ran 7 vectors after the return, not 5).
+bool Poller::standWait() const
+{
+    return m_host.waitingForJobStand() && m_job.pace().bufferedS() < kStandAheadS + 2 * m_rttS;
 }
 
 void Poller::readPosition()
