@@ -48,7 +48,8 @@ void Planner::feedCapWarning()
 // the unit's next reading, then the reply), reads the position (the path guard), sends the
 // commands that cannot travel in a packet one round trip each, and the unit starts again when
 // the first packet has arrived whole (it runs a packet at its *E; a lone command at its CR).
-Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, double>> holds) const
+Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, double>> holds,
+                                      const ModelResult &model) const
 {
     const LinkConfig &link = m_config.link;
     if (!m_options.wireLimited || link.baud <= 0)
@@ -71,14 +72,38 @@ Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, dou
     // (Job::sendPacket: as many C/B as the queue takes; a single command goes without framing):
     // its bytes on the wire and the latency to the unit, which starts on it at its end.
     // Held (leadinhold.h), the unit starts at the G after the packet's reply, which counts.
-    auto firstPacketS = [&](std::size_t k, bool held) {
-        double bytes = 0;
-        std::size_t n = 0;
+    // Where the motion is slow a free start's packet is cut so that polls keep their rate
+    // (JobPace::slowMotionPacketEnd, at rest: margin 2, the poll's round trip), vec: the motion
+    // commands before k (the model's vectorTimes).
+    const double pollRttS = timing.nonPacketS(kExchangeBytes);
+    auto firstPacketS = [&](std::size_t k, bool held, std::size_t vec) {
+        const std::size_t start = k;
+        std::vector<double> bytesTo{0.0}, motionTo{0.0};
         const bool packet = packetable(cmds.op(k)); // else an L or a C alone
-        for (; k < cmds.size() && n < maxPacket && (n == 0 || (packet && packetable(cmds.op(k))));
-             ++k, ++n)
-            bytes += timing.wireBytes(*wireCommand(cmds[k], m_result.program.axisCount));
-        bytes += n > 1 ? kPacketFramingBytes : 0;
+        for (std::size_t n = 0;
+             k < cmds.size() && n < maxPacket && (n == 0 || (packet && packetable(cmds.op(k))));
+             ++k, ++n) {
+            bytesTo.push_back(bytesTo.back() +
+                              timing.wireBytes(*wireCommand(cmds[k], m_result.program.axisCount)));
+            const bool motion = cmds.op(k) == UnitOp::Vector || cmds.op(k) == UnitOp::Line;
+            motionTo.push_back(motionTo.back() + (motion && vec < model.vectorTimes.size()
+                                                      ? model.vectorTimes[vec++]
+                                                      : 0.0));
+        }
+        std::size_t n = bytesTo.size() - 1;
+        for (const double wire : {kStatusPollS - 2 * pollRttS, kSlowPacketWireS}) {
+            if (held || !packet || wire < 0.005)
+                continue;
+            std::size_t e = 0;
+            while (e < n && bytesTo[e + 1] * 10.0 / link.baud <= wire)
+                ++e;
+            if (e > 0 && e < n && start + e < cmds.size() &&
+                motionTo[e] >= 2 * (wire + 2.75 * pollRttS)) {
+                n = e;
+                break;
+            }
+        }
+        double bytes = bytesTo[n] + (n > 1 ? kPacketFramingBytes : 0);
         return bytes * 10.0 / link.baud + (held ? timing.roundTripS() : link.latencyMs / 1000.0);
     };
     RestCosts costs;
@@ -86,11 +111,13 @@ Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, dou
     bool moved = false;             // a chain ran before this rest: the unit pauses T after it
     double pauseS = kInitialPauseS; // T, as the unit model starts
     double dwellS = 0;              // PC-side dwell since the rest began
-    double commandsS = 0;       // the commands after the rest that travel alone, a round trip each
-    std::size_t chainStart = 0; // the first command after the last rest
-    std::size_t firstSent = 0;  // the first command of the first packet after the rest
-    bool packetStarted = false; // ... seen
-    auto hold = holds.begin();  // the chains the driver holds at their start (leadInHolds)
+    double commandsS = 0;        // the commands after the rest that travel alone, a round trip each
+    std::size_t chainStart = 0;  // the first command after the last rest
+    std::size_t firstSent = 0;   // the first command of the first packet after the rest
+    bool packetStarted = false;  // ... seen
+    std::size_t firstVector = 0; // motion commands before it
+    std::size_t vectors = 0;     // motion commands before i
+    auto hold = holds.begin();   // the chains the driver holds at their start (leadInHolds)
     for (std::size_t i = 0; i < cmds.size(); ++i) {
         const UnitCommand &c = cmds[i];
         double holdS = 0;
@@ -109,7 +136,8 @@ Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, dou
                 // estimate counts the longer of the two (seed 45, packets off: 50 holds charged
                 // beside the pause put the estimate 9 % above the job).
                 const double unitS = moved ? std::max(0.0, pauseS - dwellS) : 0.0;
-                const double firstS = firstPacketS(packetStarted ? firstSent : i, holdS > 0);
+                const double firstS = firstPacketS(packetStarted ? firstSent : i, holdS > 0,
+                                                   packetStarted ? firstVector : vectors);
                 costs.linkS +=
                     std::max(0.0, flagS + positionS + commandsS + firstS + holdS - unitS);
                 costs.unitPauseS += unitS;
@@ -125,6 +153,7 @@ Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, dou
             // travels in the first packet
             if (atRest && !packetStarted) {
                 firstSent = i;
+                firstVector = vectors;
                 packetStarted = true;
             }
         } else if (wireCommand(c, m_result.program.axisCount)) {
@@ -140,6 +169,7 @@ Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, dou
         }
         if (restsAt(c.op))
             chainStart = i + 1;
+        vectors += c.op == UnitOp::Vector || c.op == UnitOp::Line ? 1 : 0;
     }
     // The program's end is a rest too, with nothing after it: the job learns that the unit
     // stands and reads the position there (the path guard's last check) before it ends. Left
@@ -245,7 +275,7 @@ void Planner::finishStats()
     // the machine's (a reversal its jump limits cannot pass moving), not the plan's: the bound
     // pays it as the estimate does (seed 30: 181 such rests, the estimate 2.9 % above a bound
     // that left them out). Rests the plan chooses (exact stop's L moves) stay out of it.
-    const RestCosts rests = restCosts(leadInHolds(model));
+    const RestCosts rests = restCosts(leadInHolds(model), model);
     s.linkWaitS = rests.linkS;
     s.waitS = m_waitS;
     s.estimatedS = model.motionS + model.waitS + s.linkWaitS;
