@@ -88,16 +88,17 @@ public:
     // barely feeds shrink cycle after cycle until the unit runs dry (property seed 132, and seed
     // 235 with its spindle on). leadInSlackS counts the wire's bytes as a stream; this plays the
     // packets, up to a second of motion held or the chain's end.
-    bool leadInFeeds(std::size_t start, std::size_t queuedEnd) const;
+    bool leadInFeeds(std::size_t start, std::size_t queuedEnd, double delayS = 0) const;
     // The wire time a packet may take while the unit holds `heldS` of motion (its last vector's
     // braking excluded): the rest is kept for the reply's and the next packet's round trips and
     // the drift of the estimate, or half of what it holds when it holds little.
     static double packetBudgetS(double heldS, double rttS);
     // The same play from where the unit is now, in the middle of a chain (the model's place, the
-    // commands from the cursor on sent as the job sends them): kFeeds, or 1 + the last vector
-    // the unit holds when it runs dry (brakes to rest at the end of its queue).
+    // commands from the cursor on sent as the job sends them, the first one `delayS` from now:
+    // one recovery of a lost reply on the way): kFeeds, or 1 + the last vector the unit holds
+    // when it runs dry (brakes to rest at the end of its queue).
     static constexpr std::size_t kFeeds = static_cast<std::size_t>(-1);
-    std::size_t dryAhead() const;
+    std::size_t dryAhead(double delayS = 0) const;
     // The vector before `vectorEnd` brakes from its V to rest within its own length (running
     // dry there is a stop on the ramp, not a brake violation).
     bool brakesWithin(std::size_t vectorEnd) const;

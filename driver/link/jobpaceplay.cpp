@@ -30,14 +30,14 @@ double JobPace::packetBudgetS(double heldS, double rttS)
     return heldS - std::min(2 * rttS + kDryReserveS + kHeldDriftShare * heldS, 0.5 * heldS);
 }
 
-bool JobPace::leadInFeeds(std::size_t start, std::size_t queuedEnd) const
+bool JobPace::leadInFeeds(std::size_t start, std::size_t queuedEnd, double delayS) const
 {
     // The unit starts when G's (or the first packet's) reply is on its way back: the next
-    // command leaves half a round trip later.
-    return playPackets(m_timePrefix[start], start, queuedEnd, m_host.rttS() / 2) == kFeeds;
+    // command leaves half a round trip later (and `delayS` more).
+    return playPackets(m_timePrefix[start], start, queuedEnd, m_host.rttS() / 2 + delayS) == kFeeds;
 }
 
-std::size_t JobPace::dryAhead() const
+std::size_t JobPace::dryAhead(double delayS) const
 {
     const auto &cmds = m_program.commands;
     const std::size_t next = m_cursor.next;
@@ -49,10 +49,10 @@ std::size_t JobPace::dryAhead() const
             return kFeeds; // the unit rests before the cursor: a chain's start (LeadInHold)
     }
     // Where the model has the unit now, in program seconds: the commands sent from here on go
-    // as the job sends them, the first one now.
+    // as the job sends them, the first one `delayS` from now.
     const std::size_t from = std::min(exec(), next);
     const double origin = std::min(m_timePrefix[from] + elapsedS() * rate(), m_timePrefix[next]);
-    return playPackets(origin, 0, next, 0.0);
+    return playPackets(origin, 0, next, delayS);
 }
 
 bool JobPace::brakesWithin(std::size_t vectorEnd) const

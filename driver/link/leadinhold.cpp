@@ -22,6 +22,7 @@ void LeadInHold::reset()
         m_host.setHaltExpected(false);
     m_state = State::Off;
     m_decided = kNone;
+    m_afterDamage = false;
 }
 
 bool LeadInHold::step(double now)
@@ -75,7 +76,11 @@ bool LeadInHold::step(double now)
 bool LeadInHold::haltBeforeDry()
 {
     const JobPace &pace = m_job.pace();
-    const std::size_t dry = pace.dryAhead();
+    // After damage the next exchange may need a recovery of its own: a lost reply costs its
+    // allowance, the settle pause and the '@' and '>' (or the resend's) round trips before the
+    // packets go on. The unit must hold that too (property seed 132: a packet cut short waited
+    // for the unit's watchdog while its queue ran out at speed).
+    const std::size_t dry = pace.dryAhead(recoveryS());
     if (dry == JobPace::kFeeds || pace.brakesWithin(dry))
         return false;
     // The H must reach the unit before its last queued vector begins to brake (what leadS
@@ -88,12 +93,20 @@ bool LeadInHold::haltBeforeDry()
     m_decided = m_job.cursor().next;
     ++m_job.report().dryHolds;
     halt(pace.stopEstimate(arrives));
+    m_afterDamage = true;
     return true;
+}
+
+double LeadInHold::recoveryS() const
+{
+    const LinkEngine &link = m_host.link();
+    return link.replyAllowanceS() + link.options().settleS + 2 * m_host.rttS();
 }
 
 void LeadInHold::halt(std::size_t start)
 {
     m_state = State::Halting;
+    m_afterDamage = false;
     m_start = start;
     m_host.setHaltExpected(true); // its INTA is no input's interrupt
     m_host.send(cmd::halt(), [this](const Outcome &o) {
@@ -139,8 +152,10 @@ bool LeadInHold::fed()
     // Bd, the overfeed raster, stood polling for hours.)
     if (m_job.queueFullSeen())
         return true;
+    // Halted after damage: the queue also covers one more recovery, or the next command after
+    // the G finds the unit short of it and halts it again (property seed 81: 90 halts).
     return pace.leadInSlackS(m_start, next) >= pace.leadInLink().reserveS() &&
-           pace.leadInFeeds(m_start, next);
+           pace.leadInFeeds(m_start, next, m_afterDamage ? recoveryS() : 0.0);
 }
 
 // ST4 then ST5: an enabled input that fired while the unit was held (the STOP button, a limit)

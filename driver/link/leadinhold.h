@@ -55,6 +55,9 @@ public:
 private:
     enum class State { Off, Halting, Held, Releasing };
     bool haltBeforeDry();
+    // What one recovery of a lost reply costs the stream after damage: the reply allowance,
+    // the settle pause and the '@' and '>' (or the resend's) round trips, s.
+    double recoveryS() const;
     void halt(std::size_t start);
     bool fed();
     void readCause(int n);
@@ -65,6 +68,7 @@ private:
     State m_state = State::Off;
     std::size_t m_start = 0;
     std::size_t m_decided = static_cast<std::size_t>(-1); // the chain start already judged
+    bool m_afterDamage = false; // held by haltBeforeDry: released with room for a recovery
 };
 
 } // namespace frezka::driver

@@ -29,6 +29,11 @@ double LinkEngine::wireTime(std::size_t bytes) const
     return static_cast<double>(bytes) * 10.0 / m_options.baud;
 }
 
+double LinkEngine::replyAllowanceS() const
+{
+    return 2 * std::max(m_options.latencyS, kAdapterLatencyMaxS) + m_options.replyMarginS;
+}
+
 const Command &LinkEngine::mainCommand() const
 {
     static const Command kPacketEnd = cmd::packetEnd(0);
@@ -62,9 +67,9 @@ double LinkEngine::timeoutFor(const Command &c, std::size_t bytes, double now)
     case Op::Home:
         return wire + m_options.homeTimeoutS;
     case Op::Jump: // the unit is deaf for about 2 s after J and does not answer it
-        return wire + m_options.replyTimeoutS + 2.5;
+        return wire + replyAllowanceS() + 2.5;
     default:
-        return wire + m_options.replyTimeoutS;
+        return wire + replyAllowanceS();
     }
 }
 
@@ -151,9 +156,19 @@ void LinkEngine::grantLine(double now)
     transmitMain(now);
 }
 
+bool LinkEngine::lateWatchdog(const Line &line) const
+{
+    if (line.overlong || m_state == State::Idle || m_state == State::AwaitGrant)
+        return false;
+    const ReplyResult r =
+        decodeReply(line.text, m_checksums ? ChecksumMode::On : ChecksumMode::Off);
+    return r.reply && r.reply->code == ReplyCode::Watchdog && r.reply->values.empty();
+}
+
 void LinkEngine::beginTransaction(double now)
 {
     ++m_stats.transactions;
+    m_watchdogDue = false;
     m_lastRepeat.clear();
     m_packetGap = false;
     m_indexBefore = m_index;
@@ -204,6 +219,17 @@ void LinkEngine::handleLine(const Line &line, double now)
     if (line.text.empty() && !line.overlong) {
         ++m_stats.noiseLines; // a stray CR: nothing to decode, nothing lost
         log(LinkLogKind::Noise, "empty line");
+        return;
+    }
+    if (m_watchdogDue && lateWatchdog(line)) {
+        // The unit's watchdog answer (code 2) to the command whose reply we stopped waiting
+        // for: it was cut short, and the unit answers that only once its watchdog runs out,
+        // which may be after our reply allowance. Taken for a query's answer it would make us
+        // ask again with that query's own answer still on its way, and every reply after it
+        // one late (property seed 32: a packet's '>' answered with the count of '@').
+        m_watchdogDue = false;
+        ++m_stats.noiseLines;
+        log(LinkLogKind::Noise, line.text + " (the watchdog's late answer, dropped)");
         return;
     }
     switch (m_state) {
@@ -302,6 +328,7 @@ void LinkEngine::onTime(double now)
         return;
     case State::AwaitReply:
         ++m_stats.timeouts;
+        m_watchdogDue = true;
         if (!m_decoder.pending().empty())
             m_lastRaw = m_decoder.pending();
         if (m_decoder.pending().empty())

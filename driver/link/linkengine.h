@@ -42,6 +42,9 @@ namespace frezka::driver {
 
 inline constexpr double kNoDeadline = std::numeric_limits<double>::infinity();
 inline constexpr int kDefaultBaud = 115200;
+// The digest's slowest USB-serial adapter, one way (docs/gve-protocol.md §2.2: 1-16 ms): the reply
+// allowance never assumes a faster one, whatever the profile says.
+inline constexpr double kAdapterLatencyMaxS = 0.016;
 
 struct LinkOptions
 {
@@ -50,11 +53,20 @@ struct LinkOptions
     // on the wire sends '@' into it. 0 = not given: MachineCore takes the machine profile's
     // link.baud, the engine alone kDefaultBaud.
     int baud = 0;
-    double replyTimeoutS = 0.2; // beyond the command's and reply's transmit time
-    double haltTimeoutS = 60;   // H replies only when the machine has stopped
-    double homeTimeoutS = 600;  // W replies only when homing has finished
-    double settleS = 0.01;      // quiet time after a garbled line before asking '@'
-    int maxAttempts = 10;       // recovery steps per transaction before it fails
+    // The serial adapter's latency, one way, seconds (USB converters: 1-16 ms, §2.2); < 0 = not
+    // given: MachineCore takes the machine profile's link.latencyMs, the engine alone
+    // kAdapterLatencyMaxS.
+    double latencyS = -1;
+    // The wait for a reply beyond the command's and the reply's transmit times and the round trip
+    // through the adapter (twice the larger of latencyS and kAdapterLatencyMaxS): the unit
+    // answers at once (§2), so this covers only the PC's own scheduling. Until 2026-11-27 a flat
+    // 0.2 s, in which a unit that held a quarter of a second of motion ran dry while the driver
+    // waited for a reply that was lost (property seed 81: a brake violation).
+    double replyMarginS = 0.05;
+    double haltTimeoutS = 60;  // H replies only when the machine has stopped
+    double homeTimeoutS = 600; // W replies only when homing has finished
+    double settleS = 0.01;     // quiet time after a garbled line before asking '@'
+    int maxAttempts = 10;      // recovery steps per transaction before it fails
     // Open packets with *S twice. A lost *S would make the unit run the packet's lines as
     // single commands, where a damaged line leaves a hole that no later check can place; a
     // second *S inside an open packet merely restarts it. The connect sequence tests that the
@@ -161,6 +173,9 @@ public:
     void reset();
     // Seconds a message of n bytes takes on the wire.
     double wireTime(std::size_t bytes) const;
+    // Seconds a reply may take beyond the transmit times before it counts as lost: the round
+    // trip through the adapter and LinkOptions::replyMarginS.
+    double replyAllowanceS() const;
 
     std::function<void(const Outcome &)> onOutcome;
     std::function<void(LinkLogKind, const std::string &)> onLog;
@@ -184,6 +199,8 @@ private:
     void sendAux(const protocol::Command &c, State next, double now,
                  LinkLogKind kind = LinkLogKind::Recovery);
     void handleLine(const protocol::Line &line, double now);
+    // A plain code-2 reply: the unit's watchdog answering a command cut short (m_watchdogDue).
+    bool lateWatchdog(const protocol::Line &line) const;
     void onMainReply(const protocol::Line &line, double now);
     void onIndexReply(const protocol::Line &line, double now);
     void onRepeatReply(const protocol::Line &line, double now);
@@ -236,6 +253,10 @@ private:
     std::optional<std::string> m_unitLastReply;
     // '>' asked after a packet only part of whose lines counted (see onIndexReply).
     bool m_packetGap = false;
+    // The reply to this transaction's command timed out: the unit may still answer it with its
+    // watchdog's code 2 (the command was cut short), later than the reply allowance. The first
+    // such line is dropped, whatever we wait for then (see handleLine).
+    bool m_watchdogDue = false;
     bool packetGapAnswer(const protocol::Reply &reply, const std::string &text, double now);
     LinkStats m_stats;
 };

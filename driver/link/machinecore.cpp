@@ -13,11 +13,14 @@ namespace frezka::driver {
 using namespace frezka::protocol;
 
 namespace {
-// The unit's address: the caller's (a shared line), else the profile's.
+// The unit's address: the caller's (a shared line), else the profile's; so the adapter's latency
+// for the reply allowance (LinkOptions::latencyS).
 LinkOptions linkOptionsFor(LinkOptions link, const machine::MachineConfig &config)
 {
     if (link.unitAddress == 0)
         link.unitAddress = config.unit.address;
+    if (link.latencyS < 0)
+        link.latencyS = config.link.latencyMs / 1000.0;
     return link;
 }
 } // namespace

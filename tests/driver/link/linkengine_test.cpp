@@ -410,3 +410,50 @@ TEST(LinkEngine, PacketGapWithAnAmbiguousRepeatFails)
     EXPECT_EQ(h.outcomes[0].status, OutcomeStatus::Failed);
     EXPECT_NE(h.outcomes[0].error.find("may be the packet's"), std::string::npos);
 }
+
+// A reply is overdue after its transmit times, the round trip through the slowest adapter the
+// digest allows (16 ms each way) or the profile's slower one, and a 50 ms margin: not after a
+// flat 0.2 s, in which a unit holding a quarter second of motion ran dry (property seed 81).
+TEST(LinkEngine, ReplyAllowanceIsTheAdaptersRoundTripAndAMargin)
+{
+    LinkOptions o;
+    o.baud = 38400;
+    o.latencyS = 0.0078;
+    Harness h(o);
+    h.sync(1);
+    h.engine.start(cmd::vector(612, 0, 0), 1); // the sync's '@' long out
+    const std::string sent = h.engine.takeOutput();
+    const double wire = h.engine.wireTime(sent.size()) + h.engine.wireTime(64);
+    EXPECT_NEAR(h.engine.deadline() - 1, wire + 2 * 0.016 + 0.05, 1e-9);
+    o.latencyS = 0.030; // a slower adapter than the digest's: its own round trip
+    Harness slow(o);
+    slow.sync(1);
+    slow.engine.start(cmd::vector(612, 0, 0), 1);
+    EXPECT_NEAR(slow.engine.deadline() - 1, wire + 2 * 0.030 + 0.05, 1e-9);
+}
+
+// A command cut short is answered by the unit's watchdog (code 2) only when the watchdog runs
+// out, which can be after the reply allowance: that late "2" arrives while '@' is awaited. It is
+// dropped, and '@''s own answer is taken; asking '@' again at once would leave the first answer
+// on its way, to be taken for the '>' after it (property seed 32: a packet's count read from an
+// '@' answer, 7 vectors never ran, a path fault).
+TEST(LinkEngine, TheWatchdogsLateAnswerIsNotTakenForTheQuerysAnswer)
+{
+    Harness h;
+    h.sync(40);
+    h.engine.startPacket({cmd::vector(82, 0, 0), cmd::vector(83, 0, 0)}, 0);
+    const std::string packet = h.engine.takeOutput();
+    h.timeout(); // no reply
+    h.timeout(); // settle
+    EXPECT_EQ(h.engine.takeOutput(), encode(cmd::index(), true));
+    h.engine.receive(reply("2"), h.t);    // the watchdog's answer to the packet's cut line
+    EXPECT_EQ(h.engine.takeOutput(), ""); // no second '@'
+    EXPECT_FALSE(h.engine.idle());
+    h.engine.receive(reply("0,40"), h.t);     // '@': the packet was abandoned, nothing of it ran
+    EXPECT_EQ(h.engine.takeOutput(), packet); // sent again, once
+    h.engine.receive(reply("0,2"), h.t);
+    ASSERT_EQ(h.outcomes.size(), 1u);
+    EXPECT_EQ(h.outcomes[0].accepted, 2);
+    EXPECT_EQ(h.outcomes[0].resent, 1);
+    EXPECT_EQ(h.engine.stats().garbledLines, 0);
+}
