@@ -70,12 +70,19 @@ private:
     };
     // The link's part of each rest; `holds`: the chains the driver holds at their start and what
     // each hold costs the link (leadInHolds), by the chain's first command.
-    RestCosts restCosts(std::span<const std::pair<std::size_t, double>> holds) const;
+    RestCosts restCosts(std::span<const std::pair<std::size_t, double>> holds,
+                        const ModelResult &model) const;
     std::vector<std::pair<std::size_t, double>> leadInHolds(const ModelResult &model) const;
-    // restCosts: the driver's status poll interval (driver/link CoreOptions::pollIntervalS) and
-    // the bytes of one command and its reply.
-    static constexpr double kStatusPollS = 0.05;
+    // restCosts: the bytes of one command and its reply (the position read), the replies to F
+    // and to a command (with a checksum: 3 bytes fewer without), and a packet's *S *S *E.
     static constexpr double kExchangeBytes = 20;
+    // The driver's poll interval and its packets' cap where the motion is slow (CoreOptions
+    // pollIntervalS, slowPacketWireS): a free start's first packet is cut to keep polls.
+    static constexpr double kStatusPollS = 0.05;
+    static constexpr double kSlowPacketWireS = 0.1;
+    static constexpr double kFlagReplyBytes = 8; // 0,40,EC CR
+    static constexpr double kOkReplyBytes = 5;   // 0,5C CR
+    static constexpr double kPacketFramingBytes = 24;
 
     const gcode::Toolpath &m_path;
     const MachineConfig &m_config;

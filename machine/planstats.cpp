@@ -44,24 +44,80 @@ void Planner::feedCapWarning()
 
 // The link's part of each rest (docs/planner.md §7): where the queue drains (the program's start,
 // a wait for it to drain, a dwell, an operator stop, a probe) the driver learns that the unit
-// stands from its next status poll (half the poll interval on average), reads the position
-// (the path guard), sends the commands that cannot travel in a packet one round trip each, and
-// the unit starts again when the first packet's first vector arrives.
-Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, double>> holds) const
+// stands from F read back to back (one F exchange after the stop on average: half an exchange to
+// the unit's next reading, then the reply), reads the position (the path guard), sends the
+// commands that cannot travel in a packet one round trip each, and the unit starts again when
+// the first packet has arrived whole (it runs a packet at its *E; a lone command at its CR).
+Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, double>> holds,
+                                      const ModelResult &model) const
 {
     const LinkConfig &link = m_config.link;
     if (!m_options.wireLimited || link.baud <= 0)
         return {};
-    const double exchangeS = detail::LinkTiming(m_config, m_options).nonPacketS(kExchangeBytes);
+    const detail::LinkTiming timing(m_config, m_options);
+    // The position read (the path guard's; its reply is the long one), and F read back to back:
+    // on average half an exchange to the unit's next reading after the stop, then the reply.
+    const double positionS = timing.nonPacketS(kExchangeBytes);
+    const double flagS =
+        timing.nonPacketS(timing.wireBytes(protocol::cmd::flag()) +
+                          (link.checksums ? kFlagReplyBytes : kFlagReplyBytes - 3));
+    const double okReplyBytes = link.checksums ? kOkReplyBytes : kOkReplyBytes - 3;
+    const auto &cmds = m_result.program.commands;
+    const std::size_t maxPacket =
+        static_cast<std::size_t>(protocol::variantInfo(m_config.unit.variant).queueCapacity - 1);
+    auto packetable = [&](UnitOp op) {
+        return link.packets && (op == UnitOp::Vector || op == UnitOp::Brake);
+    };
+    // The first packet after a rest, from command k, as the driver sends it from an empty queue
+    // (Job::sendPacket: as many C/B as the queue takes; a single command goes without framing):
+    // its bytes on the wire and the latency to the unit, which starts on it at its end.
+    // Held (leadinhold.h), the unit starts at the G after the packet's reply, which counts.
+    // Where the motion is slow a free start's packet is cut so that polls keep their rate
+    // (JobPace::slowMotionPacketEnd, at rest: margin 2, the poll's round trip), vec: the motion
+    // commands before k (the model's vectorTimes).
+    const double pollRttS = timing.nonPacketS(kExchangeBytes);
+    auto firstPacketS = [&](std::size_t k, bool held, std::size_t vec) {
+        const std::size_t start = k;
+        std::vector<double> bytesTo{0.0}, motionTo{0.0};
+        const bool packet = packetable(cmds.op(k)); // else an L or a C alone
+        for (std::size_t n = 0;
+             k < cmds.size() && n < maxPacket && (n == 0 || (packet && packetable(cmds.op(k))));
+             ++k, ++n) {
+            bytesTo.push_back(bytesTo.back() +
+                              timing.wireBytes(*wireCommand(cmds[k], m_result.program.axisCount)));
+            const bool motion = cmds.op(k) == UnitOp::Vector || cmds.op(k) == UnitOp::Line;
+            motionTo.push_back(motionTo.back() + (motion && vec < model.vectorTimes.size()
+                                                      ? model.vectorTimes[vec++]
+                                                      : 0.0));
+        }
+        std::size_t n = bytesTo.size() - 1;
+        for (const double wire : {kStatusPollS - 2 * pollRttS, kSlowPacketWireS}) {
+            if (held || !packet || wire < 0.005)
+                continue;
+            std::size_t e = 0;
+            while (e < n && bytesTo[e + 1] * 10.0 / link.baud <= wire)
+                ++e;
+            if (e > 0 && e < n && start + e < cmds.size() &&
+                motionTo[e] >= 2 * (wire + 2.75 * pollRttS)) {
+                n = e;
+                break;
+            }
+        }
+        double bytes = bytesTo[n] + (n > 1 ? kPacketFramingBytes : 0);
+        return bytes * 10.0 / link.baud + (held ? timing.roundTripS() : link.latencyMs / 1000.0);
+    };
     RestCosts costs;
     bool atRest = true;
     bool moved = false;             // a chain ran before this rest: the unit pauses T after it
     double pauseS = kInitialPauseS; // T, as the unit model starts
     double dwellS = 0;              // PC-side dwell since the rest began
-    int commands = 0;
-    std::size_t chainStart = 0; // the first command after the last rest
-    auto hold = holds.begin();  // the chains the driver holds at their start (leadInHolds)
-    const auto &cmds = m_result.program.commands;
+    double commandsS = 0;        // the commands after the rest that travel alone, a round trip each
+    std::size_t chainStart = 0;  // the first command after the last rest
+    std::size_t firstSent = 0;   // the first command of the first packet after the rest
+    bool packetStarted = false;  // ... seen
+    std::size_t firstVector = 0; // motion commands before it
+    std::size_t vectors = 0;     // motion commands before i
+    auto hold = holds.begin();   // the chains the driver holds at their start (leadInHolds)
     for (std::size_t i = 0; i < cmds.size(); ++i) {
         const UnitCommand &c = cmds[i];
         double holdS = 0;
@@ -80,34 +136,47 @@ Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, dou
                 // estimate counts the longer of the two (seed 45, packets off: 50 holds charged
                 // beside the pause put the estimate 9 % above the job).
                 const double unitS = moved ? std::max(0.0, pauseS - dwellS) : 0.0;
+                const double firstS = firstPacketS(packetStarted ? firstSent : i, holdS > 0,
+                                                   packetStarted ? firstVector : vectors);
                 costs.linkS +=
-                    std::max(0.0, kStatusPollS / 2 + (2 + commands) * exchangeS + holdS - unitS);
+                    std::max(0.0, flagS + positionS + commandsS + firstS + holdS - unitS);
                 costs.unitPauseS += unitS;
             } else {
                 costs.linkS += holdS; // after an L: nothing to overlap
             }
             atRest = false;
             moved = true;
-            commands = 0;
+            commandsS = 0;
             dwellS = 0;
+            packetStarted = false;
         } else if (c.op == UnitOp::Brake && link.packets) {
             // travels in the first packet
+            if (atRest && !packetStarted) {
+                firstSent = i;
+                firstVector = vectors;
+                packetStarted = true;
+            }
         } else if (wireCommand(c, m_result.program.axisCount)) {
             pauseS = c.op == UnitOp::Pause ? static_cast<double>(c.value) / 1000.0 : pauseS;
-            commands += atRest ? 1 : 0;
+            commandsS += atRest
+                             ? timing.nonPacketS(
+                                   timing.wireBytes(*wireCommand(c, m_result.program.axisCount)) +
+                                   okReplyBytes)
+                             : 0.0;
         } else {
             atRest = true; // a PC-side wait: the queue drains
             dwellS += c.op == UnitOp::Dwell ? static_cast<double>(c.value) / 1000.0 : 0.0;
         }
         if (restsAt(c.op))
             chainStart = i + 1;
+        vectors += c.op == UnitOp::Vector || c.op == UnitOp::Line ? 1 : 0;
     }
     // The program's end is a rest too, with nothing after it: the job learns that the unit
     // stands and reads the position there (the path guard's last check) before it ends. Left
     // out until 2026-11-27, it put every short job 1-10 % over its estimate (property seeds 29,
-    // 36, 88, 158, 167: 2 or 3 rests, 0.07-0.17 s over).
+    // 36, 88, 158, 167: 2 or 3 rests, 0.07-0.17 s over). F's exchange and the position's.
     if (moved && atRest)
-        costs.linkS += kStatusPollS / 2 + 2 * exchangeS;
+        costs.linkS += flagS + positionS;
     return costs;
 }
 
@@ -135,8 +204,10 @@ std::vector<std::pair<std::size_t, double>> Planner::leadInHolds(const ModelResu
     // H, the reads of ST4/ST5 and G, each with its reply (a status digit, INTA set, and for the
     // reads a byte), one round trip each.
     const double replyBytes = linkConfig.checksums ? 5 : 2;
+    // The unit starts at the G's arrival: its bytes and the latency, not its reply.
     double holdS = timing.nonPacketS(timing.wireBytes(protocol::cmd::halt()) + replyBytes) +
-                   timing.nonPacketS(timing.wireBytes(protocol::cmd::go()) + replyBytes);
+                   timing.wireBytes(protocol::cmd::go()) * 10.0 / linkConfig.baud +
+                   linkConfig.latencyMs / 1000.0;
     for (int n = 4; n < 4 + reads; ++n)
         holdS += timing.nonPacketS(timing.wireBytes(protocol::cmd::statusRead(n)) + replyBytes + 3);
     std::vector<double> time, brake;
@@ -204,7 +275,7 @@ void Planner::finishStats()
     // the machine's (a reversal its jump limits cannot pass moving), not the plan's: the bound
     // pays it as the estimate does (seed 30: 181 such rests, the estimate 2.9 % above a bound
     // that left them out). Rests the plan chooses (exact stop's L moves) stay out of it.
-    const RestCosts rests = restCosts(leadInHolds(model));
+    const RestCosts rests = restCosts(leadInHolds(model), model);
     s.linkWaitS = rests.linkS;
     s.waitS = m_waitS;
     s.estimatedS = model.motionS + model.waitS + s.linkWaitS;

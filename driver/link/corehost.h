@@ -36,6 +36,9 @@ public:
     virtual void afterIdle(std::function<void()> then) = 0;    // RUN = 0
     virtual void afterJobIdle(std::function<void()> then) = 0; // the same, only while running
     virtual void clearJobIdleWaiters() = 0;
+    // The job waits for the unit to stand while it runs (afterJobIdle pending): the poller reads
+    // F alone, back to back, so that the stop is seen one F exchange after it (poller.h).
+    virtual bool waitingForJobStand() const = 0;
     virtual void dropPending() = 0; // the queued steps and every wait for idle
     virtual void afterStopOrInterrupt(std::function<void()> then) = 0; // RUN = 0 or INTA = 1
     virtual void whenStill(std::function<void()> then) = 0;            // two equal position reads
@@ -72,6 +75,9 @@ public:
     virtual double now() const = 0;
     virtual double rttS() const = 0; // a poll's round trip, smoothed
     virtual void restartPollCount() = 0;
+    // The position and F were just read (the job found the unit standing where the plan has
+    // it): the poll schedule starts again now, and no poll comes between that and the restart.
+    virtual void restartPolls() = 0;
     virtual const machine::MachineConfig &config() const = 0;
     virtual const CoreOptions &options() const = 0;
     virtual LinkEngine &link() = 0;

@@ -36,6 +36,9 @@ public:
     // The earlier of `deadline` and the first timer, s.
     double nextTime(double deadline) const;
 
+    // The job waits for the unit to stand (its own waits are pending).
+    bool jobIdlePending() const { return !m_jobIdle.empty(); }
+
     void clearIdle() { m_idle.clear(); }
     void clearJobIdle() { m_jobIdle.clear(); }
     void clearStop() { m_stop.clear(); }

@@ -212,6 +212,9 @@ void Job::atRest(std::size_t index, std::function<void()> then)
             m_cursor.exec = index;
             m_cursor.execAt = m_host.now();
             m_restVerified = index;
+            // F and the position were just read: no poll between them and the restart (a
+            // poll there, due 50 ms after the wait's last F, took another round trip or three).
+            m_host.restartPolls();
             then();
         });
     });

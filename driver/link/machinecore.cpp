@@ -241,6 +241,7 @@ void MachineCore::applyPosition(const Reply &r)
         m_state.positionMm[i] = mmFromSteps(static_cast<int>(i), (*v)[i]);
     }
     m_dirty = true;
+    m_poller.positionRead(m_now);
     if (m_job.active())
         m_job.positionRead();
     m_live.positionRead();
@@ -277,6 +278,12 @@ void MachineCore::afterJobIdle(std::function<void()> then)
 {
     m_waits.addJobIdle(std::move(then));
     afterIdle(nullptr);
+}
+
+bool MachineCore::waitingForJobStand() const
+{
+    return m_waits.jobIdlePending() && m_job.active() && m_state.mode == MachineMode::Running &&
+           !m_toolLift.kept();
 }
 
 void MachineCore::afterStopOrInterrupt(std::function<void()> then)

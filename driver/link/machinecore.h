@@ -184,6 +184,7 @@ private:
     void afterIdle(std::function<void()> then) override;
     void afterJobIdle(std::function<void()> then) override;
     void clearJobIdleWaiters() override { m_waits.clearJobIdle(); }
+    bool waitingForJobStand() const override;
     void dropPending() override;
     // Runs `then` when F shows RUN = 0 or INTA = 1 (an interrupt braking a move).
     void afterStopOrInterrupt(std::function<void()> then) override;
@@ -206,6 +207,7 @@ private:
     double now() const override { return m_now; }
     double rttS() const override { return m_poller.rttS(); }
     void restartPollCount() override { m_poller.restartCount(); }
+    void restartPolls() override { m_poller.restartAt(m_now); }
     const CoreOptions &options() const override { return m_options; }
     LinkEngine &link() override { return m_engine; }
 

@@ -7,6 +7,7 @@
 #include "driver/link/toollift.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace frezka::driver {
 
@@ -22,6 +23,12 @@ double Poller::nextTime() const
     default:
         break;
     }
+    // The job waits for the unit to stand: one read after the other (standPoll).
+    if (standWait())
+        return m_lastPoll;
+    // A chain held at its start: the unit stands, the display's position once a second.
+    if (m_job.leadInHeld())
+        return m_lastPoll + std::max(m_host.options().pollIntervalS, kSlowPositionGapS);
     // Waiting for room in the unit's full queue is part of the stream: polls at the full rate
     // with F and the inputs there (three round trips, 100 ms on a GVE84 at 16 ms) held back the
     // packet the draining queue needed, and the unit ran dry.
@@ -64,8 +71,12 @@ void Poller::schedule(double now)
 
 void Poller::start(double now)
 {
+    if (standWait()) {
+        standPoll(now);
+        return;
+    }
     schedule(now);
-    const Command pos = m_host.positionCommand();
+    m_standWait = false;
     // While streaming, every reply carries INTA (interrupts) and packet replies carry queue
     // full: F and the inputs are read less often there, to leave the wire to the job.
     // Where the stream is wire-bound or the unit holds little, the position alone, F every 8th
@@ -87,6 +98,76 @@ void Poller::start(double now)
         1 + (flags ? 1 : 0) +
         (inputs ? (m_host.config().unit.variant != Variant::Gve84 ? 2 : 1) : 0);
     // Position now, F right after it, inputs after that: one poll, ahead of other steps.
+    if (inputs)
+        sendInputs(true);
+    if (flags)
+        m_host.sendFront(cmd::flag(), [this](const Outcome &o) { onFlags(o); });
+    m_pollSentAt = now;
+    readPosition();
+}
+
+// While the job waits for the unit to stand, one read a turn, back to back: F, and the position
+// once a second (any position read counts: the path guard reads it at every rest) and the inputs
+// at the streaming interval. Those two go while the model has the unit run for longer than they
+// take, so that they do not delay the F that sees the stop (seed 20: the position and both inputs
+// in one wait once a second cost 90 ms each time), or, the model wrong, at twice their interval.
+// At 19 200 Bd and 10 ms a rest is seen 29 ms after it on average, not 67-124 ms as with the
+// position, F and the inputs read at 20 Hz (docs/benchmarks.md, issue 12, eleventh session).
+void Poller::standPoll(double now)
+{
+    schedule(now);
+    m_lastPoll = now; // back to back: the schedule is the last read
+    m_lastPollTransactions = 1;
+    m_pollSentAt = now;
+    const double runsS = m_job.pace().bufferedS();
+    const bool first = !std::exchange(m_standWait, true); // the unit has just started its last
+    auto due = [&](double last, double gap, int reads) {
+        return (now - last >= 2 * gap && first) ||
+               (now - last >= gap && runsS > (reads + 1) * m_rttS);
+    };
+    if (due(m_lastPositionPoll, kSlowPositionGapS, 1)) {
+        readPosition();
+        return;
+    }
+    const bool gve84 = m_host.config().unit.variant == Variant::Gve84;
+    if (due(m_lastInputsPoll, 4 * m_host.options().inputsPollIntervalS, gve84 ? 1 : 2)) {
+        m_lastInputsPoll = now;
+        sendInputs(false);
+        return;
+    }
+    m_host.start(cmd::flag(), [this](const Outcome &o) { onFlags(o); });
+}
+
+// Only near the stop by the job's model: while the unit still runs for a while the polls go on at
+// their rate (the path guard sees a damaged vector within a poll interval, not a second: a job
+// waiting at its end for a long slow chain re-ran 7 vectors after the return, not 5).
+bool Poller::standWait() const
+{
+    return m_host.waitingForJobStand() && m_job.pace().bufferedS() < kStandAheadS + 2 * m_rttS;
+}
+
+void Poller::readPosition()
+{
+    m_host.start(m_host.positionCommand(), [this](const Outcome &o) {
+        if (o.status != OutcomeStatus::Ok || !o.reply.ok())
+            return (void)m_host.unitError(o, "position poll", MachineMode::Alarm);
+        m_rttS = 0.8 * m_rttS + 0.2 * (m_host.now() - m_pollSentAt);
+        m_host.applyPosition(o.reply);
+        if (m_job.active())
+            m_job.checkPolledPosition(m_toolLift.kept());
+    });
+}
+
+void Poller::onFlags(const Outcome &o)
+{
+    if (o.status != OutcomeStatus::Ok || !o.reply.ok())
+        return (void)m_host.unitError(o, "status poll", MachineMode::Alarm);
+    m_host.applyFlags(*o.reply.hexValue());
+}
+
+// front: ahead of the steps queued (after the poll's position read); else I1 now.
+void Poller::sendInputs(bool front)
+{
     auto byte = [this](std::uint8_t &field) {
         return [this, &field](const Outcome &o) {
             if (o.status == OutcomeStatus::Ok && o.reply.ok()) {
@@ -95,26 +176,13 @@ void Poller::start(double now)
             }
         };
     };
-    if (inputs && m_host.config().unit.variant != Variant::Gve84)
-        m_host.sendFront(cmd::input2(), byte(m_host.liveState().inputs2));
-    if (inputs)
-        m_host.sendFront(cmd::input1(), byte(m_host.liveState().inputs1));
-    if (flags) {
-        m_host.sendFront(cmd::flag(), [this](const Outcome &o) {
-            if (o.status != OutcomeStatus::Ok || !o.reply.ok())
-                return (void)m_host.unitError(o, "status poll", MachineMode::Alarm);
-            m_host.applyFlags(*o.reply.hexValue());
-        });
-    }
-    m_pollSentAt = now;
-    m_host.start(pos, [this](const Outcome &o) {
-        if (o.status != OutcomeStatus::Ok || !o.reply.ok())
-            return (void)m_host.unitError(o, "position poll", MachineMode::Alarm);
-        m_rttS = 0.8 * m_rttS + 0.2 * (m_host.now() - m_pollSentAt);
-        m_host.applyPosition(o.reply);
-        if (m_job.active())
-            m_job.checkPolledPosition(m_toolLift.kept());
-    });
+    MachineState &state = m_host.liveState();
+    if (m_host.config().unit.variant != Variant::Gve84)
+        m_host.sendFront(cmd::input2(), byte(state.inputs2));
+    if (front)
+        m_host.sendFront(cmd::input1(), byte(state.inputs1));
+    else
+        m_host.start(cmd::input1(), byte(state.inputs1));
 }
 
 } // namespace frezka::driver

@@ -1,7 +1,9 @@
 #pragma once
 // A random job (randomjob.h) planned and streamed through the driver to the in-process emulator
 // with every line the driver put on the wire kept: the tests of the unit held by H inside a job
-// (leadin_hold_test.cpp, dry_hold_test.cpp) read the wire and the emulated unit.
+// (leadin_hold_test.cpp, dry_hold_test.cpp) read the wire and the emulated unit. A test may damage
+// one chosen packet line instead of the job's random byte errors (PacketDamage): where the damage
+// falls then does not depend on the bytes the driver sends before it (polls, waits).
 
 #include "driver/link/emulatorport.h"
 #include "driver/link/machinecore.h"
@@ -16,17 +18,30 @@
 
 namespace frezka::machine::test {
 
+// One line of one packet damaged on its way to the unit: the `line`-th command (from 1) of the
+// `packet`-th packet (from 1) the driver puts on the wire gets one digit changed by one, so its
+// checksum no longer matches and the unit refuses it and the rest of the packet (code 4, the
+// commands before it accepted). 0: nothing damaged.
+struct PacketDamage
+{
+    int packet = 0;
+    int line = 0;
+};
+
 // A random job's program planned and streamed through the driver to the in-process emulator,
 // every line the driver put on the wire kept.
 struct HeldJob
 {
-    explicit HeldJob(const RandomJob &j, bool hold, bool stopEnabled = false)
-        : job(j)
-        , port(unitOptions(j, stopEnabled), j.wire)
-        , core(config(j, stopEnabled), options(j, hold))
+    explicit HeldJob(const RandomJob &j, bool hold, bool stopEnabled = false,
+                     PacketDamage damage = {})
+        : job(withDamage(j, damage))
+        , port(unitOptions(job, stopEnabled), job.wire)
+        , core(config(job, stopEnabled), options(job, hold))
         , runner(core, port)
+        , damage(damage)
     {
-        port.tamper = [this](std::string_view bytes) {
+        port.tamper = [this](std::string_view in) {
+            const std::string bytes = damaged(in);
             pending += bytes;
             for (std::size_t cr; (cr = pending.find('\r')) != std::string::npos;) {
                 std::string line = pending.substr(0, cr);
@@ -36,11 +51,51 @@ struct HeldJob
                 wire.push_back(line);
                 wireAt.push_back(port.now());
                 queuedAt.push_back(port.unit().queueLength());
+                movingAt.push_back(port.unit().isMoving());
             }
-            return std::string(bytes);
+            return bytes;
         };
         core.onJobFinished = [this](bool ok) { finished.push_back(ok); };
         plan = machine::plan(gcode::interpretText(j.program).toolpath, core.config());
+    }
+    // A chosen damaged line replaces the random byte errors: the link is clean apart from it.
+    static RandomJob withDamage(RandomJob j, PacketDamage damage)
+    {
+        if (damage.packet > 0) {
+            j.wire.byteErrorRate = 0;
+            j.wire.replyLossRate = 0;
+        }
+        return j;
+    }
+    // The bytes with PacketDamage applied: lines are followed as they pass (a write may hold
+    // part of a line); in the chosen line the first digit after the command letter changes.
+    std::string damaged(std::string_view in)
+    {
+        std::string out(in);
+        for (char &c : out) {
+            if (c == '\r') {
+                if (outLine.starts_with("!0*S"))
+                    inPacket = true, packetLine = 0;
+                else if (outLine.starts_with("!0*E"))
+                    inPacket = false, ++packetsSent;
+                else if (inPacket)
+                    ++packetLine;
+                outLine.clear();
+                lineDamaged = false;
+                continue;
+            }
+            const bool target = damage.packet > 0 && inPacket && packetsSent + 1 == damage.packet &&
+                                packetLine + 1 == damage.line && !outLine.starts_with("!0*");
+            if (target && !lineDamaged && outLine.size() >= 3 && c >= '0' && c <= '9') {
+                outLine += c; // the line as written, so that it is still followed
+                c = c == '9' ? '8' : static_cast<char>(c + 1);
+                lineDamaged = true;
+                ++damagedLines;
+                continue;
+            }
+            outLine += c;
+        }
+        return out;
     }
     static machine::MachineConfig config(const RandomJob &j, bool stopEnabled)
     {
@@ -94,10 +149,18 @@ struct HeldJob
     driver::MachineCore core;
     driver::SimRunner runner;
     machine::PlanResult plan;
+    PacketDamage damage;
+    std::string outLine;   // the line being written (PacketDamage)
+    bool inPacket = false; // between a packet's *S and its *E
+    int packetsSent = 0;   // packets ended (*E) so far
+    int packetLine = 0;    // command lines of the current packet so far
+    bool lineDamaged = false;
+    int damagedLines = 0;
     std::string pending;
     std::vector<std::string> wire;
     std::vector<double> wireAt;        // when each line was put on the wire (the port's clock)
     std::vector<std::size_t> queuedAt; // the vectors the unit held then
+    std::vector<bool> movingAt;        // whether it moved then
     std::vector<bool> finished;
 };
 
