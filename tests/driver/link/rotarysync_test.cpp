@@ -69,13 +69,14 @@ struct Interval
 };
 
 // When the unit moved, from its motion trace (a point at every motion event): spans between
-// points whose positions differ, merged where they touch.
+// points whose positions differ or between which the unit had speed (inside its last step the
+// counters stay while it still brakes), merged where they touch.
 std::vector<Interval> movements(const std::vector<emulator::TracePoint> &trace)
 {
     std::vector<Interval> out;
     for (std::size_t i = 1; i < trace.size(); ++i) {
         const auto &p = trace[i - 1], &q = trace[i];
-        if (p.position == q.position)
+        if (p.position == q.position && p.pathSpeedPulsesPerS <= 0)
             continue;
         std::array<std::int64_t, 4> from{}, to{};
         std::copy_n(p.position.begin(), 4, from.begin());
