@@ -67,6 +67,7 @@ private:
     {
         double linkS = 0;      // the link's part of the rests, beyond the unit's T pauses
         double unitPauseS = 0; // the unit's T pauses after them (what dwells did not cover)
+        double boundLinkS = 0; // linkS at its least (the bound's): F's reply alone at each stop
     };
     // The link's part of each rest; `holds`: the chains the driver holds at their start and what
     // each hold costs the link (leadInHolds), by the chain's first command.

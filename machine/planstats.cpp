@@ -58,9 +58,12 @@ Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, dou
     // The position read (the path guard's; its reply is the long one), and F read back to back:
     // on average half an exchange to the unit's next reading after the stop, then the reply.
     const double positionS = timing.nonPacketS(kExchangeBytes);
+    const double flagReplyBytes = link.checksums ? kFlagReplyBytes : kFlagReplyBytes - 3;
     const double flagS =
-        timing.nonPacketS(timing.wireBytes(protocol::cmd::flag()) +
-                          (link.checksums ? kFlagReplyBytes : kFlagReplyBytes - 3));
+        timing.nonPacketS(timing.wireBytes(protocol::cmd::flag()) + flagReplyBytes);
+    // At the least (the bound's part): an F already on its way when the unit stops is answered
+    // at once, so only its reply is sure to follow the stop.
+    const double flagLeastS = flagReplyBytes * 10.0 / link.baud + link.latencyMs / 1000.0;
     const double okReplyBytes = link.checksums ? kOkReplyBytes : kOkReplyBytes - 3;
     const auto &cmds = m_result.program.commands;
     const std::size_t maxPacket =
@@ -138,11 +141,15 @@ Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, dou
                 const double unitS = moved ? std::max(0.0, pauseS - dwellS) : 0.0;
                 const double firstS = firstPacketS(packetStarted ? firstSent : i, holdS > 0,
                                                    packetStarted ? firstVector : vectors);
-                costs.linkS +=
-                    std::max(0.0, flagS + positionS + commandsS + firstS + holdS - unitS);
+                // The job's start reads neither F nor the position (the link did while it
+                // connected): it begins with its first command.
+                const double restS = (moved ? positionS : 0.0) + commandsS + firstS + holdS - unitS;
+                costs.linkS += std::max(0.0, (moved ? flagS : 0.0) + restS);
+                costs.boundLinkS += std::max(0.0, (moved ? flagLeastS : 0.0) + restS);
                 costs.unitPauseS += unitS;
             } else {
                 costs.linkS += holdS; // after an L: nothing to overlap
+                costs.boundLinkS += holdS;
             }
             atRest = false;
             moved = true;
@@ -175,8 +182,10 @@ Planner::RestCosts Planner::restCosts(std::span<const std::pair<std::size_t, dou
     // stands and reads the position there (the path guard's last check) before it ends. Left
     // out until 2026-11-27, it put every short job 1-10 % over its estimate (property seeds 29,
     // 36, 88, 158, 167: 2 or 3 rests, 0.07-0.17 s over). F's exchange and the position's.
-    if (moved && atRest)
+    if (moved && atRest) {
         costs.linkS += flagS + positionS;
+        costs.boundLinkS += flagLeastS + positionS;
+    }
     return costs;
 }
 
@@ -279,7 +288,7 @@ void Planner::finishStats()
     s.linkWaitS = rests.linkS;
     s.waitS = m_waitS;
     s.estimatedS = model.motionS + model.waitS + s.linkWaitS;
-    s.boundS = m_bound + m_waitS + rests.unitPauseS + s.linkWaitS;
+    s.boundS = m_bound + m_waitS + rests.unitPauseS + rests.boundLinkS;
 }
 
 } // namespace frezka::machine::detail

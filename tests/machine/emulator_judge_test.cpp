@@ -27,7 +27,8 @@ void expectHonoured(const PlanResult &r, const MachineConfig &c, double maxRatio
     // The planner's model of the unit is the emulator's (docs/gve-protocol.md §4.2).
     // The emulator here is fed without a link: the plan's model without the link's rests.
     EXPECT_NEAR(run.jobS + r.stats.linkWaitS, r.stats.estimatedS, 1e-6 * r.stats.estimatedS + 1e-9);
-    EXPECT_LE(run.jobS + r.stats.linkWaitS, maxRatio * r.stats.boundS);
+    EXPECT_LE(run.jobS + r.stats.linkWaitS, maxRatio * r.stats.boundS)
+        << "ratio " << (run.jobS + r.stats.linkWaitS) / r.stats.boundS;
 }
 
 gcode::Toolpath uTurns(int count)
@@ -88,7 +89,10 @@ TEST(EmulatorJudge, DenseHelixWithDifferentAxisScales)
     // its own cap with its Bs: 2.3 % above the bound (a V per chord was 0.3 % here, but a round
     // trip per 5 ms chord, which no serial link carries; docs/planner.md §4). 3.1 % since the
     // pace counts a stretch from rest only until the unit must brake (RunPlanner::fromRestS).
-    expectHonoured(r, c, 1.035);
+    // 3.8 % since the job's start is charged neither F nor the position read (it reads neither)
+    // and the bound counts F's reply alone at a rest: both figures lost the same 24 ms of a 1.8 s
+    // job, a sixth of which is the link's part of its rests.
+    expectHonoured(r, c, 1.04);
 }
 
 TEST(EmulatorJudge, DenseHelixInVnMode)

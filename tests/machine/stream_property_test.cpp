@@ -390,12 +390,20 @@ TEST(StreamPace, AnOverrideWithoutPacketsIsKeptWithinOneReplyPerCommand)
 // back to 200 commands after each whole one, and a packet of 200 lines arrives whole about one
 // time in twenty; half the wire went to resends. Their growth is now capped by the rate of
 // damaged lines seen (driver/link/lineerrors.h): a quarter of the commands are sent again, a
-// third before.
+// third before. Where the damage falls is a draw (any change to the polls moves it: one draw
+// came to 0.301), so the share is judged over the same job on five draws of the damage.
 TEST(StreamPace, PacketsOnANoisyLinkStaySmallEnoughToArriveWhole)
 {
-    const JobOutcome o = runJob(drawJob(14, 300));
-    EXPECT_TRUE(o.wrong.empty()) << list(o.wrong);
-    EXPECT_LT(o.resendShare, 0.30); // 0.345 without the cap, 0.253 with it
+    double share = 0;
+    for (std::uint32_t draw = 1; draw <= 5; ++draw) {
+        RandomJob job = drawJob(14, 300);
+        job.wire.seed += draw - 1;
+        const JobOutcome o = runJob(job);
+        EXPECT_TRUE(o.wrong.empty()) << "damage draw " << job.wire.seed << ": " << list(o.wrong);
+        std::printf("damage draw %u: resent share %.3f\n", job.wire.seed, o.resendShare);
+        share += o.resendShare / 5;
+    }
+    EXPECT_LT(share, 0.30);
 }
 
 // Property seed 34 (a GVE114 at 19 200 Bd): a poll saw the unit at rest, then an A and a V went
