@@ -5,6 +5,7 @@
 #include "machine/modalchoice.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace frezka::machine::detail {
@@ -325,27 +326,45 @@ void RunPlanner::capVertices()
         return;
     }
     const std::size_t vertices = n - 1;
-    std::vector<bool> tight(vertices, false);
-    std::vector<std::int32_t> &caps = m_scratchUnits; // the caps before flattening
+    // The caps before flattening, a tight vertex's own and -1 at every other: a flattened cap
+    // reads only the tight vertices of its own stretch.
+    std::vector<std::int32_t> &caps = m_scratchUnits;
     caps.resize(vertices);
     for (std::size_t k = 0; k < vertices; ++k) {
         vertexCaps(k);
-        caps[k] = m_capUnits[k];
-        const double cap = static_cast<double>(m_capUnits[k]);
+        const std::int32_t own = m_capUnits[k];
+        const double cap = static_cast<double>(own);
         // With a B before it (B at most V, so at most V's bytes).
         const double withBrake = m_link.vectorWireS(m_d[k].wireBytes) +
                                  m_link.commandS(m_link.brakeWireBytes(m_d[k].speed));
-        tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
+        const bool tight = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
+        caps[k] = tight ? own : -1;
     }
-    for (std::size_t k = 0; k < vertices; ++k) {
-        if (!tight[k])
+    // Each tight vertex takes the least cap of the tight vertices within kFlatWindow either side
+    // in its stretch of tight vertices: a sliding minimum over each stretch (the candidates,
+    // their caps rising from front to back), one walk instead of 2 x kFlatWindow reads a vertex.
+    std::array<std::size_t, 2 * kFlatWindow + 2> least{}; // a ring of candidate vertices
+    std::size_t k = 0;
+    while (k < vertices) {
+        if (caps[k] < 0) {
+            ++k;
             continue;
-        std::int32_t least = caps[k];
-        for (std::size_t j = k; j > 0 && k - j < kFlatWindow && tight[j - 1]; --j)
-            least = std::min(least, caps[j - 1]);
-        for (std::size_t j = k + 1; j < vertices && j - k <= kFlatWindow && tight[j]; ++j)
-            least = std::min(least, caps[j]);
-        m_capUnits[k] = least;
+        }
+        std::size_t end = k; // the stretch [k, end) of tight vertices
+        while (end < vertices && caps[end] >= 0)
+            ++end;
+        std::size_t front = 0, back = 0, next = k; // ring [front, back), next vertex to enter
+        for (std::size_t j = k; j < end; ++j) {
+            for (; next < std::min(end, j + kFlatWindow + 1); ++next) {
+                while (back > front && caps[least[(back - 1) % least.size()]] >= caps[next])
+                    --back;
+                least[back++ % least.size()] = next;
+            }
+            while (least[front % least.size()] + kFlatWindow < j)
+                ++front;
+            m_capUnits[j] = caps[least[front % least.size()]];
+        }
+        k = end;
     }
 }
 
