@@ -77,21 +77,6 @@ void RunPlanner::vertexGeometry(std::size_t k, const Directions &a, const Direct
     }
 }
 
-void RunPlanner::vertexCaps(std::size_t k)
-{
-    const Derived &a = m_d[k];
-    const Derived &b = m_d[k + 1];
-    if (m_stopAfter[k] || m_options.strategy == PlanStrategy::ExactStop)
-        return; // caps stay 0: the program asks for a stop here (or every vertex is one)
-    double units = static_cast<double>(std::min(a.speed, b.speed));
-    units = std::min(units, m_planGeoCap.empty() ? m_geoCap[k] : m_planGeoCap[k]);
-    units = std::min({units, static_cast<double>(a.wireCap),
-                      static_cast<double>(b.wireCap)}); // the link's pace (kNoCap: off)
-    units = std::min({units, static_cast<double>(a.speedCap),
-                      static_cast<double>(b.speedCap)});          // V above a vector's own cap
-    m_capUnits[k] = static_cast<std::int32_t>(floorUnits(units)); // units <= V <= the pulse rate
-}
-
 // The bound's cap at the vertex after move k: the same limits on a continuous speed in the
 // unit's own speed units (the scalar the unit carries across a vertex), without the plan's
 // integers, its V sharing or its flattening (docs/planner.md §7).

@@ -64,7 +64,6 @@ private:
                   double &curv) const;
     double jumpPerUnit(std::size_t k, const Directions &a, const Directions &b, int i) const;
     void vertexGeometry(std::size_t k, const Directions &a, const Directions &b);
-    void vertexCaps(std::size_t k);
     double boundCap(std::size_t k) const;
     bool softStopAllowed(std::size_t k) const { return m_softStop[k]; }
     void jumpStats();
@@ -79,6 +78,7 @@ private:
     std::size_t stretchEnd(std::size_t k) const;
     double mergeCostS(std::size_t first, std::size_t k, double limitS) const;
     void mergeStretches(std::size_t first, std::size_t k);
+    std::int32_t vertexCap(std::size_t k) const;
     void capVertices();
     void restart(std::size_t k);
 
