@@ -37,13 +37,6 @@ void RunPlanner::pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double 
     curv = std::sqrt(aj * chordMm / (2 * sinHalfPhi));
 }
 
-// Per-axis speed step at the vertex after move k (a, b: the directions of moves k and k+1), per
-// unit of the scalar speed there.
-double RunPlanner::jumpPerUnit(std::size_t k, const Directions &a, const Directions &b, int i) const
-{
-    return std::abs(a.uStep[i] / m_d[k].f - b.uStep[i] / m_d[k + 1].f);
-}
-
 // The caps at the vertex after move k that only its two directions set (derive(), once per
 // run): junction deviation, curvature and the axes' speed steps on the scalar speed, and
 // whether passing it at the unit's smallest speed keeps every axis's speed step within its

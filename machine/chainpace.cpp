@@ -315,7 +315,7 @@ double RunPlanner::slowStretch(std::size_t first, std::size_t last, double missi
 
 // The plan's B cap at the vertex after move k, speed units (0 where the program stops there).
 // Here beside its one caller, capVertices, which takes it at every vertex of every plan.
-std::int32_t RunPlanner::vertexCap(std::size_t k) const
+inline std::int32_t RunPlanner::vertexCap(std::size_t k) const
 {
     const Derived &a = m_d[k];
     const Derived &b = m_d[k + 1];

@@ -196,7 +196,8 @@ void RunPlanner::planOnce()
 void RunPlanner::derive()
 {
     const std::size_t n = m_moves.size();
-    m_d.resize(n);
+    m_d.clear();
+    m_d.reserve(n); // each move's figures made where they are derived: no walk to make them first
     const std::size_t vertices = n > 0 ? n - 1 : 0;
     m_geoCap.assign(vertices, 0);
     m_softStop.assign(vertices, true);
@@ -219,7 +220,7 @@ void RunPlanner::derive()
     Directions before;
     for (std::size_t k = 0; k < n; ++k) {
         const Directions dir = directions(m_moves[k]);
-        Derived &r = m_d[k];
+        Derived &r = m_d.emplace_back();
         deriveOne(m_moves[k], dir, r);
         m_stopAfter[k] = m_moves[k].stopAfter;
         if (k > 0) {

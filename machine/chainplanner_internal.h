@@ -7,6 +7,7 @@
 #include "machine/chainparts.h"
 #include "machine/chainplanner.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -62,7 +63,12 @@ private:
     // chaincaps.cpp
     void pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double chordMm, double &jd,
                   double &curv) const;
-    double jumpPerUnit(std::size_t k, const Directions &a, const Directions &b, int i) const;
+    // Per-axis speed step at the vertex after move k (a, b: the directions of moves k and k+1),
+    // per unit of the scalar speed there; here, inline, for its four calls a vertex.
+    double jumpPerUnit(std::size_t k, const Directions &a, const Directions &b, int i) const
+    {
+        return std::abs(a.uStep[i] / m_d[k].f - b.uStep[i] / m_d[k + 1].f);
+    }
     void vertexGeometry(std::size_t k, const Directions &a, const Directions &b);
     double boundCap(std::size_t k) const;
     bool softStopAllowed(std::size_t k) const { return m_softStop[k]; }
