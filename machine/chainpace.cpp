@@ -144,8 +144,9 @@ void RunPlanner::paceModalChanges()
         return;
     const std::size_t n = m_d.size();
     const std::size_t queue = m_link.queueVectors();
-    std::vector<double> &timeS = m_scratch; // prefix sums of the vectors' cruise times
-    timeS.resize(n + 1); // each sum written as the walk reaches it
+    // Prefix sums of the vectors' cruise times, each written as the walk reaches it.
+    std::vector<double> &timeS = m_scratch;
+    timeS.resize(n + 1);
     timeS[0] = 0;
     auto cruise = [this](std::size_t j) {
         return m_d[j].units / static_cast<double>(std::max<std::int64_t>(m_d[j].speed, 1));
@@ -326,7 +327,7 @@ inline std::int32_t RunPlanner::vertexCap(std::size_t k) const
     units = std::min({units, static_cast<double>(a.wireCap),
                       static_cast<double>(b.wireCap)}); // the link's pace (kNoCap: off)
     units = std::min({units, static_cast<double>(a.speedCap),
-                      static_cast<double>(b.speedCap)});   // V above a vector's own cap
+                      static_cast<double>(b.speedCap)}); // V above a vector's own cap
     return static_cast<std::int32_t>(floorUnits(units)); // units <= V <= the pulse rate
 }
 

@@ -44,8 +44,8 @@ public:
     RunOutcome run();
 
 private:
-    static constexpr int kWirePasses = 5;         // plans again at most this often
-    static constexpr std::size_t kFlatWindow = 8; // capVertices: vertices either side
+    static constexpr int kWirePasses = 5;          // plans again at most this often
+    static constexpr std::size_t kFlatWindow = 8;  // capVertices: vertices either side
     static constexpr std::size_t kWidestRing = 64; // derive: the wire window's candidates
 
     // chainplanner.cpp
