@@ -37,13 +37,6 @@ void RunPlanner::pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double 
     curv = std::sqrt(aj * chordMm / (2 * sinHalfPhi));
 }
 
-// Per-axis speed step at the vertex after move k (a, b: the directions of moves k and k+1), per
-// unit of the scalar speed there.
-double RunPlanner::jumpPerUnit(std::size_t k, const Directions &a, const Directions &b, int i) const
-{
-    return std::abs(a.uStep[i] / m_d[k].f - b.uStep[i] / m_d[k + 1].f);
-}
-
 // The caps at the vertex after move k that only its two directions set (derive(), once per
 // run): junction deviation, curvature and the axes' speed steps on the scalar speed, and
 // whether passing it at the unit's smallest speed keeps every axis's speed step within its
@@ -75,21 +68,6 @@ void RunPlanner::vertexGeometry(std::size_t k, const Directions &a, const Direct
         pathCaps(k, a.uStep, b.uStep, chord, jd, curv);
         m_planGeoCap[k] = jd * fMin;
     }
-}
-
-void RunPlanner::vertexCaps(std::size_t k)
-{
-    const Derived &a = m_d[k];
-    const Derived &b = m_d[k + 1];
-    if (m_stopAfter[k] || m_options.strategy == PlanStrategy::ExactStop)
-        return; // caps stay 0: the program asks for a stop here (or every vertex is one)
-    double units = static_cast<double>(std::min(a.speed, b.speed));
-    units = std::min(units, m_planGeoCap.empty() ? m_geoCap[k] : m_planGeoCap[k]);
-    units = std::min({units, static_cast<double>(a.wireCap),
-                      static_cast<double>(b.wireCap)}); // the link's pace (kNoCap: off)
-    units = std::min({units, static_cast<double>(a.speedCap),
-                      static_cast<double>(b.speedCap)});          // V above a vector's own cap
-    m_capUnits[k] = static_cast<std::int32_t>(floorUnits(units)); // units <= V <= the pulse rate
 }
 
 // The bound's cap at the vertex after move k: the same limits on a continuous speed in the

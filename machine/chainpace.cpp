@@ -5,6 +5,7 @@
 #include "machine/modalchoice.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace frezka::machine::detail {
@@ -49,7 +50,8 @@ void RunPlanner::wirePace()
     std::vector<bool> lowered(n, false); // V itself lowered to keep the pace
     // Prefix sums of the B, V and A commands' link time for their averages.
     std::vector<double> &extraPrefix = m_scratch;
-    extraPrefix.assign(n + 1, 0.0);
+    extraPrefix.resize(n + 1); // every sum written below: no zeroing walk first
+    extraPrefix[0] = 0;
     for (std::size_t k = 0; k < n; ++k)
         extraPrefix[k + 1] = extraPrefix[k] + (m_extraS.size() == n ? m_extraS[k] : 0);
     const std::size_t window = m_link.brakeWindow();
@@ -84,7 +86,7 @@ void RunPlanner::wirePace()
 // while the time that costs stays below the V commands it saves; vectors the pace did not
 // lower join it on the same terms (a plunge that alternates one- and two-step vectors
 // lowers only every other V), but the stretch ends at its last lowered vector. A lower V
-// only lengthens a vector, so the pace holds; the vertex caps follow V (vertexCaps).
+// only lengthens a vector, so the pace holds; the vertex caps follow V (vertexCap).
 void RunPlanner::sharePacedSpeeds(const std::vector<bool> &lowered)
 {
     const double penalty = m_options.speedChangeCost * m_link.modalChangeS();
@@ -142,8 +144,10 @@ void RunPlanner::paceModalChanges()
         return;
     const std::size_t n = m_d.size();
     const std::size_t queue = m_link.queueVectors();
-    std::vector<double> &timeS = m_scratch; // prefix sums of the vectors' cruise times
-    timeS.assign(n + 1, 0.0);
+    // Prefix sums of the vectors' cruise times, each written as the walk reaches it.
+    std::vector<double> &timeS = m_scratch;
+    timeS.resize(n + 1);
+    timeS[0] = 0;
     auto cruise = [this](std::size_t j) {
         return m_d[j].units / static_cast<double>(std::max<std::int64_t>(m_d[j].speed, 1));
     };
@@ -310,42 +314,79 @@ double RunPlanner::slowStretch(std::size_t first, std::size_t last, double missi
     return std::max(0.0, gained);
 }
 
+// The plan's B cap at the vertex after move k, speed units (0 where the program stops there).
+// Here beside its one caller, capVertices, which takes it at every vertex of every plan.
+inline std::int32_t RunPlanner::vertexCap(std::size_t k) const
+{
+    const Derived &a = m_d[k];
+    const Derived &b = m_d[k + 1];
+    if (m_stopAfter[k] || m_options.strategy == PlanStrategy::ExactStop)
+        return 0; // the program asks for a stop here (or every vertex is one)
+    double units = static_cast<double>(std::min(a.speed, b.speed));
+    units = std::min(units, m_planGeoCap.empty() ? m_geoCap[k] : m_planGeoCap[k]);
+    units = std::min({units, static_cast<double>(a.wireCap),
+                      static_cast<double>(b.wireCap)}); // the link's pace (kNoCap: off)
+    units = std::min({units, static_cast<double>(a.speedCap),
+                      static_cast<double>(b.speedCap)}); // V above a vector's own cap
+    return static_cast<std::int32_t>(floorUnits(units)); // units <= V <= the pulse rate
+}
+
 // Where the vectors are about as short as their bytes on the wire, a B that changes at every
 // vertex (the caps of a wavy path do) costs the link nearly as much as the vector itself, and
 // the link's pace then halves the speed. There the caps are flattened to the least one within
 // kFlatWindow vertices either side: a stretch runs at one B and sends no B inside it. The vertex
-// caps themselves (vertexCaps) are taken in the same walk that finds the tight vertices.
+// caps themselves (vertexCap) are taken in the same walk that finds the tight vertices.
 void RunPlanner::capVertices()
 {
     const std::size_t n = m_d.size();
-    m_capUnits.assign(n, 0);
+    m_capUnits.resize(n); // every vertex's cap is written below, and the run's end is 0
+    if (n > 0)
+        m_capUnits[n - 1] = 0;
     if (!m_options.wireLimited || m_config.link.baud <= 0 || n < 2) {
         for (std::size_t k = 0; k + 1 < n; ++k)
-            vertexCaps(k);
+            m_capUnits[k] = vertexCap(k);
         return;
     }
     const std::size_t vertices = n - 1;
-    std::vector<bool> tight(vertices, false);
-    std::vector<std::int32_t> &caps = m_scratchUnits; // the caps before flattening
+    // The caps before flattening, a tight vertex's own and -1 at every other: a flattened cap
+    // reads only the tight vertices of its own stretch.
+    std::vector<std::int32_t> &caps = m_scratchUnits;
     caps.resize(vertices);
     for (std::size_t k = 0; k < vertices; ++k) {
-        vertexCaps(k);
-        caps[k] = m_capUnits[k];
-        const double cap = static_cast<double>(m_capUnits[k]);
+        const std::int32_t own = vertexCap(k);
+        m_capUnits[k] = own;
+        const double cap = static_cast<double>(own);
         // With a B before it (B at most V, so at most V's bytes).
         const double withBrake = m_link.vectorWireS(m_d[k].wireBytes) +
                                  m_link.commandS(m_link.brakeWireBytes(m_d[k].speed));
-        tight[k] = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
+        const bool tight = cap >= kMinSpeed && m_d[k].units < cap * withBrake;
+        caps[k] = tight ? own : -1;
     }
-    for (std::size_t k = 0; k < vertices; ++k) {
-        if (!tight[k])
+    // Each tight vertex takes the least cap of the tight vertices within kFlatWindow either side
+    // in its stretch of tight vertices: a sliding minimum over each stretch (the candidates,
+    // their caps rising from front to back), one walk instead of 2 x kFlatWindow reads a vertex.
+    std::array<std::size_t, 2 * kFlatWindow + 2> least{}; // a ring of candidate vertices
+    std::size_t k = 0;
+    while (k < vertices) {
+        if (caps[k] < 0) {
+            ++k;
             continue;
-        std::int32_t least = caps[k];
-        for (std::size_t j = k; j > 0 && k - j < kFlatWindow && tight[j - 1]; --j)
-            least = std::min(least, caps[j - 1]);
-        for (std::size_t j = k + 1; j < vertices && j - k <= kFlatWindow && tight[j]; ++j)
-            least = std::min(least, caps[j]);
-        m_capUnits[k] = least;
+        }
+        std::size_t end = k; // the stretch [k, end) of tight vertices
+        while (end < vertices && caps[end] >= 0)
+            ++end;
+        std::size_t front = 0, back = 0, next = k; // ring [front, back), next vertex to enter
+        for (std::size_t j = k; j < end; ++j) {
+            for (; next < std::min(end, j + kFlatWindow + 1); ++next) {
+                while (back > front && caps[least[(back - 1) % least.size()]] >= caps[next])
+                    --back;
+                least[back++ % least.size()] = next;
+            }
+            while (least[front % least.size()] + kFlatWindow < j)
+                ++front;
+            m_capUnits[j] = caps[least[front % least.size()]];
+        }
+        k = end;
     }
 }
 

@@ -11,8 +11,8 @@
 #include "machine/unitwire.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <deque>
 #include <limits>
 
 namespace frezka::machine::detail {
@@ -196,39 +196,50 @@ void RunPlanner::planOnce()
 void RunPlanner::derive()
 {
     const std::size_t n = m_moves.size();
-    m_d.resize(n);
+    m_d.clear();
+    m_d.reserve(n); // each move's figures made where they are derived: no walk to make them first
     const std::size_t vertices = n > 0 ? n - 1 : 0;
     m_geoCap.assign(vertices, 0);
     m_softStop.assign(vertices, true);
     m_stopAfter.assign(n, false);
     if (m_options.strategy == PlanStrategy::GrblJunction && !m_options.grblKeepsAllLimits)
         m_planGeoCap.assign(vertices, 0);
+    // Each move's widest neighbour on the wire within the window either side, as the pace charges
+    // it: a sliding maximum, taken in the same walk that derives the moves, `window` moves behind
+    // it (the candidates, their bytes falling from front to back, in a ring).
+    const bool paced = m_options.wireLimited && m_config.link.baud > 0;
+    const std::size_t window = m_link.wireWindow();
+    std::array<std::size_t, kWidestRing> widest{};
+    static_assert(kWidestRing >= 2 * 16 + 2, "LinkTiming::wireWindow() is at most 16");
+    std::size_t front = 0, back = 0; // the ring's candidates [front, back)
+    auto widestOf = [&](std::size_t k) {
+        while (widest[front % kWidestRing] + window < k)
+            ++front;
+        m_d[k].widestBytes = m_d[widest[front % kWidestRing]].wireBytes;
+    };
     Directions before;
     for (std::size_t k = 0; k < n; ++k) {
         const Directions dir = directions(m_moves[k]);
-        deriveOne(m_moves[k], dir, m_d[k]);
+        Derived &r = m_d.emplace_back();
+        deriveOne(m_moves[k], dir, r);
         m_stopAfter[k] = m_moves[k].stopAfter;
-        if (k > 0)
+        if (k > 0) {
             vertexGeometry(k - 1, before, dir);
-        before = dir;
-    }
-    for (std::size_t k = 0; k < n; ++k)
-        m_d[k].restBefore = k == 0 || m_moves[k - 1].stopAfter || !softStopAllowed(k - 1);
-    // The largest vector within the wire window either side, as the pace charges it: a sliding
-    // maximum (the window's candidates, their bytes falling from front to back).
-    const std::size_t window = m_link.wireWindow();
-    std::deque<std::size_t> widest;
-    std::size_t next = 0;
-    for (std::size_t k = 0; k < n && m_options.wireLimited && m_config.link.baud > 0; ++k) {
-        for (; next < std::min(n, k + window + 1); ++next) {
-            while (!widest.empty() && m_d[widest.back()].wireBytes <= m_d[next].wireBytes)
-                widest.pop_back();
-            widest.push_back(next);
+            r.restBefore = m_moves[k - 1].stopAfter || !softStopAllowed(k - 1);
+        } else {
+            r.restBefore = true;
         }
-        while (widest.front() + window < k)
-            widest.pop_front();
-        m_d[k].widestBytes = m_d[widest.front()].wireBytes;
+        before = dir;
+        if (!paced)
+            continue;
+        while (back > front && m_d[widest[(back - 1) % kWidestRing]].wireBytes <= r.wireBytes)
+            --back;
+        widest[back++ % kWidestRing] = k;
+        if (k >= window)
+            widestOf(k - window);
     }
+    for (std::size_t k = n > window ? n - window : 0; paced && k < n; ++k)
+        widestOf(k);
     chooseSpeeds(m_d, m_options, m_link);
     chooseAccels(m_d, m_geoCap, m_options, m_link);
     m_paceStart.resize(m_d.size());

@@ -7,6 +7,7 @@
 #include "machine/chainparts.h"
 #include "machine/chainplanner.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -43,8 +44,9 @@ public:
     RunOutcome run();
 
 private:
-    static constexpr int kWirePasses = 5;         // plans again at most this often
-    static constexpr std::size_t kFlatWindow = 8; // capVertices: vertices either side
+    static constexpr int kWirePasses = 5;          // plans again at most this often
+    static constexpr std::size_t kFlatWindow = 8;  // capVertices: vertices either side
+    static constexpr std::size_t kWidestRing = 64; // derive: the wire window's candidates
 
     // chainplanner.cpp
     void planOnce();
@@ -61,9 +63,13 @@ private:
     // chaincaps.cpp
     void pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double chordMm, double &jd,
                   double &curv) const;
-    double jumpPerUnit(std::size_t k, const Directions &a, const Directions &b, int i) const;
+    // Per-axis speed step at the vertex after move k (a, b: the directions of moves k and k+1),
+    // per unit of the scalar speed there; here, inline, for its four calls a vertex.
+    double jumpPerUnit(std::size_t k, const Directions &a, const Directions &b, int i) const
+    {
+        return std::abs(a.uStep[i] / m_d[k].f - b.uStep[i] / m_d[k + 1].f);
+    }
     void vertexGeometry(std::size_t k, const Directions &a, const Directions &b);
-    void vertexCaps(std::size_t k);
     double boundCap(std::size_t k) const;
     bool softStopAllowed(std::size_t k) const { return m_softStop[k]; }
     void jumpStats();
@@ -78,6 +84,7 @@ private:
     std::size_t stretchEnd(std::size_t k) const;
     double mergeCostS(std::size_t first, std::size_t k, double limitS) const;
     void mergeStretches(std::size_t first, std::size_t k);
+    std::int32_t vertexCap(std::size_t k) const;
     void capVertices();
     void restart(std::size_t k);
 
