@@ -51,6 +51,12 @@ void EmulatorTransport::close()
     emit closed(QString());
 }
 
+void EmulatorTransport::deliverPending()
+{
+    if (m_open)
+        tick(); // the emulator brought to now: what it has sent by now is read
+}
+
 void EmulatorTransport::write(const QByteArray &bytes)
 {
     if (!m_open)

@@ -29,6 +29,7 @@ public:
     void write(const QByteArray &bytes) override;
     bool isOpen() const override { return m_open; }
     QString description() const override;
+    void deliverPending() override;
 
     // The emulated unit (tests drive its inputs: STOP button, probe).
     emulator::Unit &unit() { return m_port->unit(); }

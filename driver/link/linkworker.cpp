@@ -45,6 +45,9 @@ MachineCore &LinkWorker::core()
         m_timer->setSingleShot(true);
         m_timer->setTimerType(Qt::PreciseTimer);
         connect(m_timer, &QTimer::timeout, this, [this] {
+            // A reply already in the port's buffer is read before its deadline is judged.
+            if (m_transport)
+                m_transport->deliverPending();
             if (m_line)
                 m_line->onTime(now());
             else

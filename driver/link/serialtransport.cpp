@@ -4,6 +4,8 @@
 #include <QFileInfo>
 #include <QTimer>
 
+#include <sys/ioctl.h>
+
 namespace frezka::driver {
 
 QString serialOpenFailure(const QString &portName, QSerialPort::SerialPortError error,
@@ -83,6 +85,18 @@ void SerialTransport::close()
         return;
     m_port->close();
     emit closed(QString());
+}
+
+void SerialTransport::deliverPending()
+{
+    if (!m_port || !m_port->isOpen())
+        return;
+    // Bytes in the driver's buffer whose notifier the event loop has not served yet: read
+    // them now (QSerialPort emits readyRead from inside waitForReadyRead). Asked first, so
+    // that an empty port costs no wait and no timeout error.
+    int waiting = 0;
+    if (::ioctl(static_cast<int>(m_port->handle()), FIONREAD, &waiting) == 0 && waiting > 0)
+        m_port->waitForReadyRead(0);
 }
 
 void SerialTransport::write(const QByteArray &bytes)

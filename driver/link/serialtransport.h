@@ -29,6 +29,7 @@ public:
     void write(const QByteArray &bytes) override;
     bool isOpen() const override;
     QString description() const override;
+    void deliverPending() override;
 
 private:
     void onError(QSerialPort::SerialPortError error);

@@ -28,6 +28,7 @@ public:
     void write(const QByteArray &bytes) override;
     bool isOpen() const override { return m_inner->isOpen(); }
     QString description() const override { return m_inner->description(); }
+    void deliverPending() override { m_inner->deliverPending(); }
 
     // Notes the worker's mode changes, errors and job ends in the record; saves it on an alarm.
     void observe(LinkWorker *worker);

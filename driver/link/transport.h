@@ -25,6 +25,11 @@ public:
     virtual bool isOpen() const = 0;
     // For logs: "/dev/ttyUSB0 at 115200 Bd", "built-in GVE64 emulator".
     virtual QString description() const = 0;
+    // Emits bytesReceived now (from inside the call) for bytes that have already arrived but
+    // whose notification the event loop has not delivered yet. The link worker calls it before
+    // it judges a reply's deadline: a busy event loop must not make a reply that came in time
+    // look lost (the allowance after the round trip is 50 ms, linkengine.h).
+    virtual void deliverPending() {}
 
 signals:
     void opened();
