@@ -3,10 +3,10 @@
 // (docs/gve-protocol.md §2.2). Found on the overfeed raster on a faulty link (GVE64 link seed
 // 27, GVE84 link seed 51 of tests/machine/held_check_test.cpp's harness, 1 byte in 1 000
 // garbled): the driver took a C's plain "queue full" (9) for the packet's "none accepted" and
-// later such answers for those of the commands after it; the job stood in an alarm, or the
-// vectors were queued twice. Now a count-less answer that is no complaint fails the packet once
-// its answers have passed, and the job re-establishes its progress from the counters
-// (driver/link/progresscheck.h). Asserted on the emulated unit: every vector run once, the
+// later such answers for those of the commands after it; the job stood in an alarm (going on, it
+// would have sent the queued vectors again). Now a count-less answer that is no complaint fails
+// the packet once its answers have passed, and the job re-establishes its progress from the
+// counters (driver/link/progresscheck.h). Asserted on the emulated unit: every vector run once, the
 // counters at the program's end, no alarm.
 
 #include "heldjob.h"
