@@ -169,6 +169,7 @@ void LinkEngine::beginTransaction(double now)
 {
     ++m_stats.transactions;
     m_watchdogDue = false;
+    m_ranSingly = false;
     m_lastRepeat.clear();
     m_packetGap = false;
     m_indexBefore = m_index;
@@ -276,8 +277,33 @@ std::optional<Reply> LinkEngine::decodeFor(const Command &c, const std::string &
     return res.reply;
 }
 
+bool LinkEngine::answeredSingly(const Line &line) const
+{
+    if (line.overlong)
+        return false;
+    const ReplyResult r =
+        decodeReply(line.text, m_checksums ? ChecksumMode::On : ChecksumMode::Off);
+    return r.reply && r.reply->values.empty() && r.reply->code != ReplyCode::Syntax &&
+           r.reply->code != ReplyCode::Watchdog;
+}
+
 void LinkEngine::onMainReply(const Line &line, double now)
 {
+    if (m_packet && (m_ranSingly || answeredSingly(line))) {
+        // A packet answers once, with its count (a plain 4 or 2 may be a damaged *S's). A plain
+        // 0 or 1 (8 or 9 while held) is a C or B answered as a command of its own: both *S were
+        // damaged and the unit queued the lines it had room for, the others not (GVE64 link
+        // seed 27 of the overfeed raster: a plain 9 taken for the packet's "none accepted", the
+        // vectors queued twice over). Nothing it says settles what ran: wait for the rest of
+        // its answers to pass, then fail the packet (onTime) for the counters to settle it.
+        ++m_stats.noiseLines;
+        log(LinkLogKind::Noise, line.text);
+        if (!m_ranSingly)
+            log(LinkLogKind::Recovery,
+                describe() + ": a line answered on its own: the packet's start was lost");
+        m_ranSingly = true;
+        return;
+    }
     std::string err;
     const auto reply = line.overlong ? std::nullopt : decodeFor(mainCommand(), line.text, err);
     log(LinkLogKind::Received, line.text);
@@ -327,6 +353,13 @@ void LinkEngine::onTime(double now)
         m_deadline = kNoDeadline;
         return;
     case State::AwaitReply:
+        if (m_ranSingly) {
+            m_index.reset(); // every line that arrived whole advanced it: learn it again
+            finishFailed(describe() + ": its lines were answered one by one (both *S damaged); "
+                                      "what the unit queued is not known",
+                         LinkFailure::IndexUnknown, {commandArg()});
+            return;
+        }
         ++m_stats.timeouts;
         m_watchdogDue = true;
         if (!m_decoder.pending().empty())

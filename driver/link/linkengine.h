@@ -257,6 +257,14 @@ private:
     // watchdog's code 2 (the command was cut short), later than the reply allowance. The first
     // such line is dropped, whatever we wait for then (see handleLine).
     bool m_watchdogDue = false;
+    // The packet's lines were answered one by one: both its *S lines arrived damaged, so the
+    // unit ran each C and B as a command of its own, queueing some and refusing others for a full
+    // queue (a gap in the path when it ran meanwhile). Its fate is unknown whatever comes back:
+    // the engine drops the rest of those answers until the packet's deadline, then fails it
+    // (see onMainReply).
+    bool m_ranSingly = false;
+    // A reply without a count that only a single command gives (not a complaint, 4 or 2).
+    bool answeredSingly(const protocol::Line &line) const;
     bool packetGapAnswer(const protocol::Reply &reply, const std::string &text, double now);
     LinkStats m_stats;
 };
