@@ -71,7 +71,7 @@ TEST_P(StreamProperty, NeverEndsWrongAndKeepsTheMachinesLimits)
     const std::uint64_t first =
         only ? only : 1 + static_cast<std::uint64_t>(GetParam()) * kCasesPerShard;
     const std::uint64_t cases = only ? 1 : kCasesPerShard;
-    int paceCases = 0;
+    int paceCases = 0, brakeCases = 0, starvedCases = 0;
     for (std::uint64_t seed = first; seed < first + cases; ++seed) {
         const RandomJob job = drawJob(seed, 600);
         // A profile as a user could write it: every key within its range and the rules.
@@ -84,6 +84,13 @@ TEST_P(StreamProperty, NeverEndsWrongAndKeepsTheMachinesLimits)
             dump(job);
         EXPECT_TRUE(o.wrong.empty()) << "seed " << seed << " (FREZKA_PROPERTY_SEED=" << seed
                                      << "): " << job.summary << list(o.wrong) << list(o.pace);
+        // On a clean link the unit never stops from speed without its ramp (issue 12 item 3;
+        // on faulty links not yet: property seed 188, a GVE84 at 38 400 Bd and 15 ms, one).
+        if (job.wire.byteErrorRate == 0 && job.wire.replyLossRate == 0)
+            EXPECT_EQ(o.brakeViolations, 0) << "seed " << seed << " (FREZKA_PROPERTY_SEED=" << seed
+                                            << "): " << job.summary << list(o.pace);
+        brakeCases += o.brakeViolations > 0 ? 1 : 0;
+        starvedCases += o.starvationStops > 0 ? 1 : 0;
         if (!o.pace.empty()) {
             ++paceCases;
             if (only)
@@ -91,10 +98,11 @@ TEST_P(StreamProperty, NeverEndsWrongAndKeepsTheMachinesLimits)
                             job.summary.c_str(), list(o.pace).c_str());
         }
     }
-    std::printf(
-        "seeds %llu..%llu: %d of %llu cases off the link's pace or the estimate (issue 12)\n",
-        static_cast<unsigned long long>(first), static_cast<unsigned long long>(first + cases - 1),
-        paceCases, static_cast<unsigned long long>(cases));
+    std::printf("seeds %llu..%llu: %d of %llu cases off the link's pace or the estimate (issue "
+                "12); with brake violations %d, with starvation stops %d\n",
+                static_cast<unsigned long long>(first),
+                static_cast<unsigned long long>(first + cases - 1), paceCases,
+                static_cast<unsigned long long>(cases), brakeCases, starvedCases);
 }
 
 INSTANTIATE_TEST_SUITE_P(Shards, StreamProperty, ::testing::Range(0, kShards));
