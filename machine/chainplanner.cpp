@@ -206,14 +206,14 @@ void RunPlanner::derive()
     Directions before;
     for (std::size_t k = 0; k < n; ++k) {
         const Directions dir = directions(m_moves[k]);
-        deriveOne(m_moves[k], dir, m_d[k]);
-        m_stopAfter[k] = m_moves[k].stopAfter;
+        deriveOne(m_moves[k], m_moves.modes(k), dir, m_d[k]);
+        m_stopAfter[k] = m_moves.modes(k).stopAfter;
         if (k > 0)
             vertexGeometry(k - 1, before, dir);
         before = dir;
     }
     for (std::size_t k = 0; k < n; ++k)
-        m_d[k].restBefore = k == 0 || m_moves[k - 1].stopAfter || !softStopAllowed(k - 1);
+        m_d[k].restBefore = k == 0 || m_stopAfter[k - 1] || !softStopAllowed(k - 1);
     // The largest vector within the wire window either side, as the pace charges it: a sliding
     // maximum (the window's candidates, their bytes falling from front to back).
     const std::size_t window = m_link.wireWindow();
@@ -255,11 +255,11 @@ Directions RunPlanner::directions(const Move &m) const
     return r;
 }
 
-void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
+void RunPlanner::deriveOne(const Move &m, const MoveModes &modes, const Directions &dir, Derived &r)
 {
     r.units = speedUnitsLength(m.d, m_vk);
     r.f = r.units / dir.lengthMm;
-    const double asked = m.rapid ? kInf : m.feedMmPerS * m_options.feedOverride;
+    const double asked = modes.rapid ? kInf : modes.feedMmPerS * m_options.feedOverride;
     double v = asked;
     double a = kInf;
     FeedCap cap{m.line, asked, 0, 0, 0};
@@ -268,7 +268,7 @@ void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
         if (u < 1e-12)
             continue;
         const AxisConfig &ax = m_config.axes[static_cast<std::size_t>(i)];
-        const double axisMax = (m.rapid ? ax.rapidMmPerMin : ax.maxSpeedMmPerMin) / 60.0;
+        const double axisMax = (modes.rapid ? ax.rapidMmPerMin : ax.maxSpeedMmPerMin) / 60.0;
         if (axisMax / u < v)
             cap.limit = kAxisLetters[static_cast<std::size_t>(i)], cap.limitMmPerS = axisMax;
         v = std::min(v, axisMax / u);
@@ -277,7 +277,7 @@ void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
     if (m_config.unit.maxPulseRate / r.f < v)
         cap.limit = 'P', cap.limitMmPerS = m_config.unit.maxPulseRate / r.f;
     v = std::min(v, m_config.unit.maxPulseRate / r.f);
-    if (!m.rapid && v < asked * (1 - 1e-9) && m_lastCappedLine != m.line) {
+    if (!modes.rapid && v < asked * (1 - 1e-9) && m_lastCappedLine != m.line) {
         cap.runMmPerS = v;
         if (m_feedCapLines++ == 0)
             m_firstFeedCap = cap;
@@ -419,8 +419,8 @@ void RunPlanner::bound()
     }
 }
 
-RunOutcome planRun(const std::vector<Move> &moves, const MachineConfig &config,
-                   const PlanOptions &options, bool vk)
+RunOutcome planRun(const Moves &moves, const MachineConfig &config, const PlanOptions &options,
+                   bool vk)
 {
     return RunPlanner(moves, config, options, vk).run();
 }

@@ -30,8 +30,7 @@ struct Directions
 class RunPlanner
 {
 public:
-    RunPlanner(const std::vector<Move> &moves, const MachineConfig &config,
-               const PlanOptions &options, bool vk)
+    RunPlanner(const Moves &moves, const MachineConfig &config, const PlanOptions &options, bool vk)
         : m_moves(moves)
         , m_config(config)
         , m_options(options)
@@ -51,7 +50,7 @@ private:
     bool sentFits(const std::vector<double> &sent) const;
     void derive();
     Directions directions(const Move &m) const;
-    void deriveOne(const Move &m, const Directions &dir, Derived &r);
+    void deriveOne(const Move &m, const MoveModes &modes, const Directions &dir, Derived &r);
     void chain(std::size_t first, std::size_t last);
     void fullPasses(std::size_t first, std::vector<std::int32_t> &b);
     void outputVector(const Derived &r, std::int32_t brake, bool chainEnd);
@@ -81,7 +80,7 @@ private:
     void capVertices();
     void restart(std::size_t k);
 
-    const std::vector<Move> &m_moves;
+    const Moves &m_moves;
     const MachineConfig &m_config;
     const PlanOptions &m_options;
     LinkTiming m_link;
