@@ -344,7 +344,7 @@ void RunPlanner::fullPasses(std::size_t first, std::vector<std::int32_t> &b)
 // Vector k of a chain as it goes out, its exit B planned (the chain's last: nothing follows).
 void RunPlanner::outputVector(const Derived &r, std::int32_t brake, bool chainEnd)
 {
-    PlannedVector v{static_cast<std::int32_t>(r.speed), static_cast<std::int32_t>(r.accel), brake,
+    PlannedVector v{static_cast<std::int32_t>(r.speed), brake, static_cast<std::int32_t>(r.accel),
                     chainEnd, false};
     if (chainEnd) // nothing follows: the unit brakes to 0; a short vector cruises at B
         v.brake = static_cast<std::int32_t>(r.isShort ? std::min(r.speed, r.ownSpeed) : kMinSpeed);

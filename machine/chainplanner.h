@@ -60,15 +60,17 @@ private:
 };
 
 // The speeds of moves[k] as it goes to the unit (its steps and line stay in the Move). 32-bit:
-// V and B are at most the unit's pulse rate, A at most kMaxAccel (16 bytes a move, not 32).
+// V and B are at most the unit's pulse rate, A at most kMaxAccel (below 2^17), so A and the two
+// flags share 32 bits (12 bytes a move, not 32).
 struct PlannedVector
 {
-    std::int32_t speed = 0; // V, pulses/s in the mode's units
-    std::int32_t accel = 0; // A, thousands of pulses/s²
-    std::int32_t brake = 0; // B, pulses/s; the chain's last vector: see chainEnd
-    bool chainEnd = false;  // the unit must stop after this vector (queue drains)
-    bool line = false;      // send as L (stand-alone, from and to rest), not C
+    std::int32_t speed = 0;      // V, pulses/s in the mode's units
+    std::int32_t brake = 0;      // B, pulses/s; the chain's last vector: see chainEnd
+    std::int32_t accel : 30 = 0; // A, thousands of pulses/s²
+    bool chainEnd : 1 = false;   // the unit must stop after this vector (queue drains)
+    bool line : 1 = false;       // send as L (stand-alone, from and to rest), not C
 };
+static_assert(sizeof(PlannedVector) == 12, "a PlannedVector is held for every move of a run");
 
 // A feed move whose programmed feed is above what the axes (or the unit's pulse rate) allow in
 // its direction: the plan runs it at the allowed speed.
