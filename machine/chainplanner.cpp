@@ -85,7 +85,7 @@ RunOutcome RunPlanner::run()
         return std::move(m_out);
     }
     const std::size_t n = m_moves.size();
-    m_extraS.assign(n, 0);
+    m_extraS.assign(n);
     int plans = 1;
     for (int pass = 0; pass < kWirePasses; ++pass) {
         // The link time of the B, V and A commands the last plan sends before each vector: in the
@@ -115,7 +115,7 @@ RunOutcome RunPlanner::run()
         for (std::size_t k = 0; k < n; ++k) {
             const double extra = sent[k];
             changed = changed || extra != m_extraS[k];
-            m_extraS[k] = extra;
+            m_extraS.set(k, extra);
         }
         if (!changed)
             break;
