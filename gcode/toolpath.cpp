@@ -1,6 +1,7 @@
 #include "toolpath.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 
@@ -43,17 +44,13 @@ void Toolpath::reserve(std::size_t n)
     m_y.reserve(n);
     m_z.reserve(n);
     m_a.reserve(n);
-    m_feed.reserve(n);
     m_line.reserve(n);
-    m_aux.reserve(n);
     adviseHugePages(m_kind);
     adviseHugePages(m_x);
     adviseHugePages(m_y);
     adviseHugePages(m_z);
     adviseHugePages(m_a);
-    adviseHugePages(m_feed);
     adviseHugePages(m_line);
-    adviseHugePages(m_aux);
 }
 
 void Toolpath::clear()
@@ -69,9 +66,31 @@ void Toolpath::push(MotionKind kind, const Point4 &end, double feed, std::uint32
     m_y.push_back(end.y);
     m_z.push_back(end.z);
     m_a.push_back(end.a);
-    m_feed.push_back(feed);
     m_line.push_back(line);
-    m_aux.push_back(aux);
+    // A new run where the feed differs to the bit (a zero's sign included): feedMmPerMin gives
+    // back exactly what was pushed.
+    if (m_feedValue.empty() ||
+        std::bit_cast<std::uint64_t>(m_feedValue.back()) != std::bit_cast<std::uint64_t>(feed)) {
+        m_feedFrom.push_back(static_cast<std::uint32_t>(m_kind.size() - 1));
+        m_feedValue.push_back(feed);
+    }
+    if (aux != kNone) {
+        m_auxAt.push_back(static_cast<std::uint32_t>(m_kind.size() - 1));
+        m_aux.push_back(aux);
+    }
+}
+
+double Toolpath::feedMmPerMin(std::size_t i) const
+{
+    const auto run = std::upper_bound(m_feedFrom.begin(), m_feedFrom.end(), i);
+    return m_feedValue[static_cast<std::size_t>(run - m_feedFrom.begin()) - 1];
+}
+
+std::uint32_t Toolpath::aux(std::size_t i) const
+{
+    const auto at = std::lower_bound(m_auxAt.begin(), m_auxAt.end(), i);
+    return at != m_auxAt.end() && *at == i ? m_aux[static_cast<std::size_t>(at - m_auxAt.begin())]
+                                           : kNone;
 }
 
 void Toolpath::appendRapid(const Point4 &end, double feedMmPerMin, std::uint32_t line)
@@ -128,7 +147,7 @@ void Toolpath::appendEntries(const Toolpath &from, std::size_t first, std::size_
     end = std::min(end, from.size());
     reserve(size() + (end > first ? end - first : 0));
     for (std::size_t i = first; i < end; ++i) {
-        std::uint32_t aux = from.m_aux[i];
+        std::uint32_t aux = from.aux(i);
         switch (from.m_kind[i]) {
         case MotionKind::Arc:
             m_arcs.push_back(from.m_arcs[aux]);
@@ -142,22 +161,24 @@ void Toolpath::appendEntries(const Toolpath &from, std::size_t first, std::size_
         default:
             break; // rapid, feed: no aux; probe: its kind
         }
-        push(from.m_kind[i], from.end(i), from.m_feed[i], from.m_line[i], aux);
+        push(from.m_kind[i], from.end(i), from.feedMmPerMin(i), from.m_line[i], aux);
     }
 }
 
 std::size_t Toolpath::memoryBytes() const
 {
     return m_kind.capacity() * sizeof(MotionKind) +
-           (m_x.capacity() + m_y.capacity() + m_z.capacity() + m_a.capacity() + m_feed.capacity()) *
+           (m_x.capacity() + m_y.capacity() + m_z.capacity() + m_a.capacity() +
+            m_feedValue.capacity()) *
                sizeof(double) +
-           (m_line.capacity() + m_aux.capacity()) * sizeof(std::uint32_t) +
+           (m_line.capacity() + m_feedFrom.capacity() + m_auxAt.capacity() + m_aux.capacity()) *
+               sizeof(std::uint32_t) +
            m_arcs.capacity() * sizeof(StoredArc) + m_events.capacity() * sizeof(Event);
 }
 
 ArcInfo Toolpath::arc(std::size_t i) const
 {
-    const StoredArc &s = m_arcs[m_aux[i]];
+    const StoredArc &s = m_arcs[aux(i)];
     ArcInfo arc;
     arc.centre = start(i);
     arc.plane = s.plane;

@@ -88,15 +88,16 @@ public:
     MotionKind kind(std::size_t i) const { return m_kind[i]; }
     Point4 end(std::size_t i) const { return {m_x[i], m_y[i], m_z[i], m_a[i]}; }
     Point4 start(std::size_t i) const { return i == 0 ? m_origin : end(i - 1); }
-    double feedMmPerMin(std::size_t i) const { return m_feed[i]; }
+    // The feed in force at entry i (runs of equal feeds are kept once: a binary search).
+    double feedMmPerMin(std::size_t i) const;
     std::uint32_t line(std::size_t i) const { return m_line[i]; }
     bool isMotion(std::size_t i) const { return m_kind[i] <= MotionKind::Probe; }
 
     // Only for kind(i) == Arc / Probe / Dwell or Event. The arc's centre is rebuilt from the
     // stored in-plane coordinates; its normal coordinate and A are the start point's.
     ArcInfo arc(std::size_t i) const;
-    ProbeKind probe(std::size_t i) const { return static_cast<ProbeKind>(m_aux[i]); }
-    const Event &event(std::size_t i) const { return m_events[m_aux[i]]; }
+    ProbeKind probe(std::size_t i) const { return static_cast<ProbeKind>(aux(i)); }
+    const Event &event(std::size_t i) const { return m_events[aux(i)]; }
 
     void appendRapid(const Point4 &end, double feedMmPerMin, std::uint32_t line);
     void appendFeed(const Point4 &end, double feedMmPerMin, std::uint32_t line);
@@ -125,12 +126,21 @@ public:
 private:
     void push(MotionKind kind, const Point4 &end, double feed, std::uint32_t line,
               std::uint32_t aux);
+    // The arc's, probe's or event's index of entry i (a binary search: only those entries
+    // have one).
+    std::uint32_t aux(std::size_t i) const;
 
     Point4 m_origin;
     std::vector<MotionKind> m_kind;
     std::vector<double> m_x, m_y, m_z, m_a;
-    std::vector<double> m_feed;
     std::vector<std::uint32_t> m_line;
+    // The feed as runs of equal values (issue 17: 8 bytes an entry where a program's F words
+    // are modal): run r starts at entry m_feedFrom[r] (ascending, the first at 0).
+    std::vector<std::uint32_t> m_feedFrom;
+    std::vector<double> m_feedValue;
+    // The aux index (arc, probe kind, event) of the entries that have one, by entry: 8 bytes
+    // such an entry, none for a straight move (4 bytes each before).
+    std::vector<std::uint32_t> m_auxAt; // ascending entry indices
     std::vector<std::uint32_t> m_aux;
     struct StoredArc // 24 bytes instead of ArcInfo's 40
     {

@@ -32,7 +32,8 @@ void RunPlanner::pathCaps(std::size_t k, const Vec4 &u0, const Vec4 &u1, double 
                           m_config.axes[static_cast<std::size_t>(i)].accelMmPerS2 / std::abs(j[i]));
     }
     const double sinHalfTheta = std::sqrt(0.5 * (1 - cosTheta));
-    jd = std::sqrt(aj * m_moves[k + 1].junctionDeviationMm * sinHalfTheta / (1 - sinHalfTheta));
+    jd = std::sqrt(aj * m_moves.modes(k + 1).junctionDeviationMm * sinHalfTheta /
+                   (1 - sinHalfTheta));
     const double sinHalfPhi = std::sqrt(0.5 * (1 + cosTheta)); // φ: the turn angle
     curv = std::sqrt(aj * chordMm / (2 * sinHalfPhi));
 }

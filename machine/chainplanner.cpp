@@ -85,7 +85,7 @@ RunOutcome RunPlanner::run()
         return std::move(m_out);
     }
     const std::size_t n = m_moves.size();
-    m_extraS.assign(n, 0);
+    m_extraS.assign(n);
     int plans = 1;
     for (int pass = 0; pass < kWirePasses; ++pass) {
         // The link time of the B, V and A commands the last plan sends before each vector: in the
@@ -115,7 +115,7 @@ RunOutcome RunPlanner::run()
         for (std::size_t k = 0; k < n; ++k) {
             const double extra = sent[k];
             changed = changed || extra != m_extraS[k];
-            m_extraS[k] = extra;
+            m_extraS.set(k, extra);
         }
         if (!changed)
             break;
@@ -221,11 +221,11 @@ void RunPlanner::derive()
     for (std::size_t k = 0; k < n; ++k) {
         const Directions dir = directions(m_moves[k]);
         Derived &r = m_d.emplace_back();
-        deriveOne(m_moves[k], dir, r);
-        m_stopAfter[k] = m_moves[k].stopAfter;
+        deriveOne(m_moves[k], m_moves.modes(k), dir, r);
+        m_stopAfter[k] = m_moves.modes(k).stopAfter;
         if (k > 0) {
             vertexGeometry(k - 1, before, dir);
-            r.restBefore = m_moves[k - 1].stopAfter || !softStopAllowed(k - 1);
+            r.restBefore = m_stopAfter[k - 1] || !softStopAllowed(k - 1);
         } else {
             r.restBefore = true;
         }
@@ -266,11 +266,11 @@ Directions RunPlanner::directions(const Move &m) const
     return r;
 }
 
-void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
+void RunPlanner::deriveOne(const Move &m, const MoveModes &modes, const Directions &dir, Derived &r)
 {
     r.units = speedUnitsLength(m.d, m_vk);
     r.f = r.units / dir.lengthMm;
-    const double asked = m.rapid ? kInf : m.feedMmPerS * m_options.feedOverride;
+    const double asked = modes.rapid ? kInf : modes.feedMmPerS * m_options.feedOverride;
     double v = asked;
     double a = kInf;
     FeedCap cap{m.line, asked, 0, 0, 0};
@@ -279,7 +279,7 @@ void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
         if (u < 1e-12)
             continue;
         const AxisConfig &ax = m_config.axes[static_cast<std::size_t>(i)];
-        const double axisMax = (m.rapid ? ax.rapidMmPerMin : ax.maxSpeedMmPerMin) / 60.0;
+        const double axisMax = (modes.rapid ? ax.rapidMmPerMin : ax.maxSpeedMmPerMin) / 60.0;
         if (axisMax / u < v)
             cap.limit = kAxisLetters[static_cast<std::size_t>(i)], cap.limitMmPerS = axisMax;
         v = std::min(v, axisMax / u);
@@ -288,7 +288,7 @@ void RunPlanner::deriveOne(const Move &m, const Directions &dir, Derived &r)
     if (m_config.unit.maxPulseRate / r.f < v)
         cap.limit = 'P', cap.limitMmPerS = m_config.unit.maxPulseRate / r.f;
     v = std::min(v, m_config.unit.maxPulseRate / r.f);
-    if (!m.rapid && v < asked * (1 - 1e-9) && m_lastCappedLine != m.line) {
+    if (!modes.rapid && v < asked * (1 - 1e-9) && m_lastCappedLine != m.line) {
         cap.runMmPerS = v;
         if (m_feedCapLines++ == 0)
             m_firstFeedCap = cap;
@@ -355,7 +355,7 @@ void RunPlanner::fullPasses(std::size_t first, std::vector<std::int32_t> &b)
 // Vector k of a chain as it goes out, its exit B planned (the chain's last: nothing follows).
 void RunPlanner::outputVector(const Derived &r, std::int32_t brake, bool chainEnd)
 {
-    PlannedVector v{static_cast<std::int32_t>(r.speed), static_cast<std::int32_t>(r.accel), brake,
+    PlannedVector v{static_cast<std::int32_t>(r.speed), brake, static_cast<std::int32_t>(r.accel),
                     chainEnd, false};
     if (chainEnd) // nothing follows: the unit brakes to 0; a short vector cruises at B
         v.brake = static_cast<std::int32_t>(r.isShort ? std::min(r.speed, r.ownSpeed) : kMinSpeed);
@@ -430,8 +430,8 @@ void RunPlanner::bound()
     }
 }
 
-RunOutcome planRun(const std::vector<Move> &moves, const MachineConfig &config,
-                   const PlanOptions &options, bool vk)
+RunOutcome planRun(const Moves &moves, const MachineConfig &config, const PlanOptions &options,
+                   bool vk)
 {
     return RunPlanner(moves, config, options, vk).run();
 }

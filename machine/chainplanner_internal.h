@@ -7,9 +7,12 @@
 #include "machine/chainparts.h"
 #include "machine/chainplanner.h"
 
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <unordered_map>
 #include <vector>
 
 namespace frezka::machine::detail {
@@ -28,11 +31,69 @@ struct Directions
     double pathLengthMm = 0;
 };
 
+// The link time of the B, V and A commands the last plan sent before each move (RunPlanner's
+// m_extraS): sums of a few commands' times, so few distinct values. Each is kept once with a
+// 16-bit index a move (2 bytes a move, not 8: issue 17); past 65 535 distinct values (a bound no
+// link reaches: the values follow the commands' byte counts) a double a move. Reads back exactly
+// the value set (equal bits).
+class ExtraTimes
+{
+public:
+    void assign(std::size_t n)
+    {
+        *this = ExtraTimes{};
+        m_code.assign(n, 0);
+    }
+    std::size_t size() const { return m_full.empty() ? m_code.size() : m_full.size(); }
+    double operator[](std::size_t k) const
+    {
+        return m_full.empty() ? m_values[m_code[k]] : m_full[k];
+    }
+    void set(std::size_t k, double s)
+    {
+        if (!m_full.empty()) {
+            m_full[k] = s;
+            return;
+        }
+        const auto bits = std::bit_cast<std::uint64_t>(s);
+        if (bits != m_lastBits) { // consecutive moves mostly repeat a value: no look-up then
+            auto found = m_index.find(bits);
+            if (found == m_index.end()) {
+                if (m_values.size() > std::numeric_limits<std::uint16_t>::max()) {
+                    widen();
+                    m_full[k] = s;
+                    return;
+                }
+                found = m_index.emplace(bits, static_cast<std::uint16_t>(m_values.size())).first;
+                m_values.push_back(s);
+            }
+            m_lastBits = bits;
+            m_lastCode = found->second;
+        }
+        m_code[k] = m_lastCode;
+    }
+
+private:
+    void widen()
+    {
+        m_full.resize(m_code.size());
+        for (std::size_t k = 0; k < m_code.size(); ++k)
+            m_full[k] = m_values[m_code[k]];
+        m_code = {};
+    }
+
+    std::vector<std::uint16_t> m_code;
+    std::vector<double> m_values{0.0};                                // code 0: no command
+    std::unordered_map<std::uint64_t, std::uint16_t> m_index{{0, 0}}; // a value's bits -> code
+    std::uint64_t m_lastBits = 0;
+    std::uint16_t m_lastCode = 0;
+    std::vector<double> m_full; // past 65 535 values: each move's own
+};
+
 class RunPlanner
 {
 public:
-    RunPlanner(const std::vector<Move> &moves, const MachineConfig &config,
-               const PlanOptions &options, bool vk)
+    RunPlanner(const Moves &moves, const MachineConfig &config, const PlanOptions &options, bool vk)
         : m_moves(moves)
         , m_config(config)
         , m_options(options)
@@ -53,7 +114,7 @@ private:
     bool sentFits(const std::vector<double> &sent) const;
     void derive();
     Directions directions(const Move &m) const;
-    void deriveOne(const Move &m, const Directions &dir, Derived &r);
+    void deriveOne(const Move &m, const MoveModes &modes, const Directions &dir, Derived &r);
     void chain(std::size_t first, std::size_t last);
     void fullPasses(std::size_t first, std::vector<std::int32_t> &b);
     void outputVector(const Derived &r, std::int32_t brake, bool chainEnd);
@@ -88,7 +149,7 @@ private:
     void capVertices();
     void restart(std::size_t k);
 
-    const std::vector<Move> &m_moves;
+    const Moves &m_moves;
     const MachineConfig &m_config;
     const PlanOptions &m_options;
     LinkTiming m_link;
@@ -121,7 +182,7 @@ private:
     std::vector<double> m_planGeoCap;
     std::vector<bool> m_softStop;
     std::vector<bool> m_stopAfter; // Move::stopAfter: no pass reads the moves themselves
-    std::vector<double> m_extraS;  // link time of the B, V, A commands before move k (last plan)
+    ExtraTimes m_extraS;           // link time of the B, V, A commands before move k (last plan)
     // B cap at the end of move k, speed units: at most the unit's pulse rate (32 bits: 4 bytes a
     // move less at the plan's peak, as the chain's speeds in m_scratchUnits).
     std::vector<std::int32_t> m_capUnits;

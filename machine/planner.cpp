@@ -11,6 +11,7 @@
 #include "machine/unitwire.h"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -31,7 +32,32 @@ double coord(const Point4 &p, int i)
     return i == 0 ? p.x : i == 1 ? p.y : i == 2 ? p.z : p.a;
 }
 
+bool sameBits(double a, double b)
+{
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
 } // namespace
+
+// A move's modes are the last move's where they are the same to the bit (a zero's sign
+// included): the planner reads exactly what it was given.
+void Moves::push_back(Move m, const MoveModes &modes)
+{
+    const bool same = !m_modes.empty() && sameBits(m_modes.back().feedMmPerS, modes.feedMmPerS) &&
+                      sameBits(m_modes.back().junctionDeviationMm, modes.junctionDeviationMm) &&
+                      m_modes.back().rapid == modes.rapid &&
+                      m_modes.back().stopAfter == modes.stopAfter;
+    if (!same)
+        m_modes.push_back(modes);
+    m.modes = static_cast<std::uint32_t>(m_modes.size() - 1);
+    m_moves.push_back(m);
+}
+
+void Moves::clear()
+{
+    m_moves.clear();
+    m_modes.clear();
+}
 
 std::string fmt(double v)
 {
@@ -219,12 +245,8 @@ void Planner::addPoint(const Point4 &p, bool rapid, double feedMmPerS, std::uint
     if (!any)
         return; // no step: nothing to send; the intended position waits for the next one
     m.pathDelta = {p.x - m_posMm.x, p.y - m_posMm.y, p.z - m_posMm.z, p.a - m_posMm.a};
-    m.feedMmPerS = feedMmPerS;
-    m.rapid = rapid;
-    m.stopAfter = m_exactStop;
-    m.junctionDeviationMm = m_jd;
     m.line = line;
-    m_moves.push_back(m);
+    m_moves.push_back(m, {feedMmPerS, m_jd, rapid, m_exactStop});
     m_steps = target;
     m_posMm = p;
 }
@@ -250,9 +272,10 @@ void Planner::probe(std::size_t i, double feed)
         return;
     }
     m.pathDelta = {p.x - m_posMm.x, p.y - m_posMm.y, p.z - m_posMm.z, p.a - m_posMm.a};
-    m.feedMmPerS = feed;
     m.line = line;
-    const detail::RunOutcome run = detail::planRun({m}, m_config, m_options, m_vk);
+    detail::Moves alone;
+    alone.push_back(m, {feed, 0, false, false});
+    const detail::RunOutcome run = detail::planRun(alone, m_config, m_options, m_vk);
     if (run.vectors.empty())
         return;
     setModal(UnitOp::Accel, m_accel, run.vectors[0].accel, line);

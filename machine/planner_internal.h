@@ -93,7 +93,7 @@ private:
     gcode::Point4 m_posMm; // intended position (mm) of the last vector's end
     Steps4 m_steps{};      // absolute steps after the last collected move
     Steps4 m_emitted{};    // absolute steps after the last emitted motion command
-    std::vector<Move> m_moves;
+    Moves m_moves;
     std::size_t m_reservedTo = 0; // reserveMoves: the toolpath entry its last reserve reached
     bool m_exactStop = false;
     double m_jd = 0;

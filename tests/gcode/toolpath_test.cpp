@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 using namespace frezka::gcode;
 
@@ -18,6 +21,63 @@ TEST(Toolpath, EntriesKeepOrderAndPosition)
     EXPECT_EQ(tp.kind(2), MotionKind::Dwell);
     EXPECT_EQ(tp.event(2).value, 0.5);
     EXPECT_EQ(tp.line(1), 2u);
+}
+
+// Issue 17: the feed is kept as runs of equal values and the aux index only for the entries that
+// have one; every entry reads back exactly what was appended, in any mix of kinds.
+TEST(Toolpath, FeedsAndAuxReadBackExactlyPerEntry)
+{
+    Toolpath tp;
+    std::vector<double> feeds;
+    for (int i = 0; i < 2000; ++i) {
+        const double f = i % 7 == 0 ? 100.0 + i : (i % 3 == 0 ? -0.0 : 600.0 / 7);
+        const Point4 end{double(i), double(i % 5), 1, 0};
+        switch (i % 11) {
+        case 3:
+            tp.appendArc(end, ArcInfo{{0, 0, 1, 0}, Plane::XY, i % 4 + 1}, f, i + 1);
+            break;
+        case 5:
+            tp.appendProbe(end, ProbeKind::Away, f, i + 1);
+            break;
+        case 8:
+            tp.appendEvent({EventKind::Dwell, double(i)}, f, i + 1);
+            break;
+        default:
+            i % 2 ? tp.appendFeed(end, f, i + 1) : tp.appendRapid(end, f, i + 1);
+        }
+        feeds.push_back(f);
+    }
+    ASSERT_EQ(tp.size(), feeds.size());
+    for (std::size_t i = 0; i < tp.size(); ++i) {
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(tp.feedMmPerMin(i)),
+                  std::bit_cast<std::uint64_t>(feeds[i]))
+            << i;
+        if (i % 11 == 3) {
+            EXPECT_EQ(tp.arc(i).turns, int(i % 4 + 1)) << i;
+        } else if (i % 11 == 5) {
+            EXPECT_EQ(tp.probe(i), ProbeKind::Away) << i;
+        } else if (i % 11 == 8) {
+            EXPECT_EQ(tp.event(i).value, double(i)) << i;
+        }
+    }
+    Toolpath copy;
+    copy.appendEntries(tp, 100, 1500);
+    for (std::size_t i = 0; i < copy.size(); ++i)
+        EXPECT_EQ(copy.feedMmPerMin(i), tp.feedMmPerMin(i + 100)) << i;
+    EXPECT_EQ(copy.event(7).value, tp.event(107).value); // entry 107: a dwell (107 % 11 == 8)
+}
+
+// A program of straight moves at one feed: the position (4 doubles), the line and the kind, 37
+// bytes an entry; 49 when every entry kept its feed and an aux index.
+TEST(Toolpath, StraightMovesAtOneFeedTakeNoFeedOrAuxPerEntry)
+{
+    Toolpath tp;
+    constexpr std::size_t n = 100000;
+    tp.reserve(n);
+    for (std::size_t i = 0; i < n; ++i)
+        tp.appendFeed({double(i), 0, 0, 0}, 1200, static_cast<std::uint32_t>(i + 1));
+    EXPECT_LE(tp.memoryBytes(), n * (4 * sizeof(double) + sizeof(std::uint32_t) + 1) + 4096);
+    EXPECT_EQ(tp.feedMmPerMin(n - 1), 1200);
 }
 
 TEST(Toolpath, ChordArcHonoursToleranceAndEndsExactly)
