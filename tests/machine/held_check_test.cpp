@@ -34,24 +34,7 @@ using namespace frezka::machine::test;
 
 namespace {
 
-// tests/bench/link/overfeed.sh's raster, written the same way.
-std::string overfeedRaster(int feed)
-{
-    std::string s = "G21 G90 G17 G94 G64\nG0 X30 Y30\nG1 Z-5 F300\nF" + std::to_string(feed) + "\n";
-    char line[96];
-    for (int row = 0; row < 12; ++row) {
-        const double y = 30 + row * 0.5;
-        for (int j = 0; j < 1000; ++j) {
-            const int t = row % 2 == 0 ? j : 1000 - j;
-            const double x = 30 + 0.1 * t;
-            const double z = -5 + 0.3 * std::sin(x * 0.7) * std::cos(y * 0.3);
-            std::snprintf(line, sizeof line, "G1 X%.4f Y%.4f Z%.4f\n", x, y, z);
-            s += line;
-        }
-    }
-    return s + "G0 Z-1\nM2\n";
-}
-
+// tests/bench/link/overfeed.sh's raster on a faulty link.
 RandomJob faultyRaster(std::uint32_t seed)
 {
     RandomJob job;

@@ -12,6 +12,9 @@
 #include "machine/planner.h"
 #include "randomjob.h"
 
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -163,5 +166,34 @@ struct HeldJob
     std::vector<bool> movingAt;        // whether it moved then
     std::vector<bool> finished;
 };
+
+// tests/bench/link/overfeed.sh's raster: `rows` rows of 1 000 segments of 0.1 mm over a wavy
+// surface (Z varying), at `feed` mm/min (12 000: three times the GVE64's axes).
+inline std::string overfeedRaster(int feed, int rows = 12)
+{
+    std::string s = "G21 G90 G17 G94 G64\nG0 X30 Y30\nG1 Z-5 F300\nF" + std::to_string(feed) + "\n";
+    char line[96];
+    for (int row = 0; row < rows; ++row) {
+        const double y = 30 + row * 0.5;
+        for (int j = 0; j < 1000; ++j) {
+            const int t = row % 2 == 0 ? j : 1000 - j;
+            const double x = 30 + 0.1 * t;
+            const double z = -5 + 0.3 * std::sin(x * 0.7) * std::cos(y * 0.3);
+            std::snprintf(line, sizeof line, "G1 X%.4f Y%.4f Z%.4f\n", x, y, z);
+            s += line;
+        }
+    }
+    return s + "G0 Z-1\nM2\n";
+}
+
+// The commands the unit runs as vectors (C and L): its vectorsExecuted when none is lost or run
+// twice.
+inline std::int64_t motionCommands(const UnitCommands &cmds)
+{
+    std::int64_t vectors = 0;
+    for (std::size_t i = 0; i < cmds.size(); ++i)
+        vectors += cmds.op(i) == UnitOp::Vector || cmds.op(i) == UnitOp::Line;
+    return vectors;
+}
 
 } // namespace frezka::machine::test

@@ -23,24 +23,6 @@ using namespace frezka::machine::test;
 
 namespace {
 
-// tests/bench/link/overfeed.sh's raster, 4 rows of it.
-std::string raster(int rows)
-{
-    std::string s = "G21 G90 G17 G94 G64\nG0 X30 Y30\nG1 Z-5 F300\nF12000\n";
-    char line[96];
-    for (int row = 0; row < rows; ++row) {
-        const double y = 30 + row * 0.5;
-        for (int j = 0; j < 1000; ++j) {
-            const int t = row % 2 == 0 ? j : 1000 - j;
-            const double x = 30 + 0.1 * t;
-            const double z = -5 + 0.3 * std::sin(x * 0.7) * std::cos(y * 0.3);
-            std::snprintf(line, sizeof line, "G1 X%.4f Y%.4f Z%.4f\n", x, y, z);
-            s += line;
-        }
-    }
-    return s + "G0 Z-1\nM2\n";
-}
-
 RandomJob cleanRaster(const std::string &unit)
 {
     RandomJob job;
@@ -53,7 +35,7 @@ RandomJob cleanRaster(const std::string &unit)
     job.wire.baud = job.config.link.baud;
     job.wire.latencyS = 0.008;
     job.wire.seed = 1;
-    job.program = raster(4);
+    job.program = overfeedRaster(12000, 4); // 4 rows of it
     return job;
 }
 
@@ -106,11 +88,8 @@ void ranOnceToTheEnd(HeldJob &held)
     EXPECT_TRUE(held.finished.front());
     const emulator::Unit &unit = held.port.unit();
     EXPECT_EQ(unit.position(), held.plan.program.commands.back().endSteps);
-    const machine::UnitCommands &cmds = held.plan.program.commands;
-    std::int64_t vectors = 0;
-    for (std::size_t i = 0; i < cmds.size(); ++i)
-        vectors += cmds.op(i) == machine::UnitOp::Vector || cmds.op(i) == machine::UnitOp::Line;
-    EXPECT_EQ(unit.stats().motion.vectorsExecuted, vectors); // none lost, none twice
+    EXPECT_EQ(unit.stats().motion.vectorsExecuted,
+              motionCommands(held.plan.program.commands)); // none lost, none twice
     EXPECT_EQ(held.core.jobReport().pathFaults, 0);
 }
 

@@ -29,11 +29,8 @@ void runsFedToTheEnd(HeldJob &held)
     const emulator::Unit &unit = held.port.unit();
     EXPECT_EQ(unit.stats().motion.brakeViolations, 0);
     EXPECT_EQ(unit.position(), held.plan.program.commands.back().endSteps);
-    const machine::UnitCommands &cmds = held.plan.program.commands;
-    std::int64_t vectors = 0;
-    for (std::size_t i = 0; i < cmds.size(); ++i)
-        vectors += cmds.op(i) == machine::UnitOp::Vector || cmds.op(i) == machine::UnitOp::Line;
-    EXPECT_EQ(unit.stats().motion.vectorsExecuted, vectors); // none lost, none twice
+    EXPECT_EQ(unit.stats().motion.vectorsExecuted,
+              motionCommands(held.plan.program.commands)); // none lost, none twice
 }
 
 // Seconds the engine waits for the reply to a command of `bytes` before it counts it as lost,
