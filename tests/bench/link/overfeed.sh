@@ -3,7 +3,10 @@
 # 0.1 mm over a wavy surface (Z varying), planned and run by frezka-cli on the in-process emulator
 # on a virtual clock, for the GVE64 and GVE84 profiles at 1, 8 and 16 ms adapter latency.
 # Prints one row per run: job time, the plan's estimate, brake violations, starvation stops,
-# vectors per second against the wire's limit.
+# vectors per second against the wire's byte limit (the bytes alone, back to back: no round
+# trips, no queue), the planner's lower bound with the link's pace (docs/planner.md §7: the
+# motion, each packet's round trip and bytes, the unit's queue) and the share of that bound the
+# job reached (bound / job: 100 % = as fast as this link and queue allow).
 #
 #   tests/bench/link/overfeed.sh [BUILD_DIR (default build)] [FEED (default 12000)]
 #   FREZKA_CLI=path/to/frezka-cli runs another build's CLI (the table's "before" column).
@@ -28,7 +31,7 @@ for row in range(12):
 out += ["G0 Z-1", "M2"]
 print("\n".join(out))
 PY
-printf '%-6s %-8s %9s %9s %7s %6s %6s %10s %10s %6s\n' unit latency job_s est_s job/est brake starve vectors/s wire_lim wire%
+printf '%-6s %-8s %9s %9s %7s %6s %6s %10s %10s %6s %9s %7s\n' unit latency job_s est_s job/est brake starve vectors/s wire_lim wire% bound_s bound%
 for unit in gve64 gve84; do
     for ms in 1 8 16; do
         json=$("${FREZKA_CLI:-$build/app/frezka-cli}" run "$work/raster.nc" --machine "resources/machines/$unit.json" \
@@ -37,10 +40,12 @@ for unit in gve64 gve84; do
 import json, sys
 unit, ms, j = sys.argv[1], sys.argv[2], json.loads(sys.argv[3])
 j.setdefault("estimated_s", float("nan"))  # a frezka-cli from before estimated_s was reported
-print("%-6s %-8s %9.2f %9.2f %7.4f %6d %6d %10.1f %10.1f %5.1f%%" % (
+j.setdefault("bound_s", float("nan"))
+print("%-6s %-8s %9.2f %9.2f %7.4f %6d %6d %10.1f %10.1f %5.1f%% %9.2f %6.1f%%" % (
     unit, ms + " ms", j["job_s"], j["estimated_s"], j["job_s"] / j["estimated_s"],
     j["brake_violations"], j["starvation_stops"], j["vectors_per_s"],
-    j["wire_limit_vectors_per_s"], 100 * j["vectors_per_s"] / j["wire_limit_vectors_per_s"]))
+    j["wire_limit_vectors_per_s"], 100 * j["vectors_per_s"] / j["wire_limit_vectors_per_s"],
+    j["bound_s"], 100 * j["bound_s"] / j["job_s"]))
 PY
     done
 done
