@@ -64,3 +64,15 @@ TEST(PlanRatio, AShortVectorTakesItsNeighboursLowerAOnlyWhereTheChangeCostsMore)
     expectWithinTheBound(94);
     expectWithinTheBound(54);
 }
+
+// Quick vectors shared the least A of a stretch whose caps lay within 30 % of each other whatever
+// that cost them, and beyond it priced their loss as if all their time went with 1/sqrt(A), against
+// one change: where they reach their cruise, the time below it goes with 1/A. Seed 184 (a GVE64 at
+// 50 000 pulses/s, 38 400 Bd, VK) lay 5.7 % above the bound. Now a stretch shares A while its
+// loss, counted with 1/A, stays below the changes it saves at their price on this link, and follows
+// the drift within the tolerance only where the stretch is wire-paced or the change would find the
+// unit short of motion (docs/planner.md §5, "A per vector").
+TEST(PlanRatio, AStretchSharesItsLeastAOnlyWhereThatCostsLessThanTheChangesItSaves)
+{
+    expectWithinTheBound(184);
+}
