@@ -74,22 +74,17 @@ struct PlanError
 
 struct PlanStats
 {
-    std::size_t vectors = 0; // C commands
-    std::size_t chains = 0;  // runs of C vectors that start and end at rest
-    double estimatedS = 0;   // job time under the unit's motion model (§4.2)
-    double boundS = 0;       // time-optimal bound for the same path and limits
-    double waitS = 0;        // dwells and spin-up waits (PC side), in both figures
-    double linkWaitS = 0;    // the link's part of each rest (status poll, position check,
-                             // commands outside packets), in both figures
-    // Where the estimate lies above the bound (docs/planner.md §7): the unit model's motion time
-    // and the bound's, and the link's part of the rests as the bound counts it (at its least).
-    double motionS = 0;
-    double boundMotionS = 0;
-    double boundLinkWaitS = 0;
-    double maxVertexJumpMmPerS = 0;      // largest per-axis speed step at a vertex, mm/s
-    double maxJumpRatio = 0;             // largest (speed step / axis limit) at a vertex
-    std::size_t jumpOverLimit = 0;       // vertices whose speed step exceeds an axis limit
-    double maxCurveAccelRatio = 0;       // largest axis acceleration through a turn / limit
+    std::size_t vectors = 0;        // C commands
+    std::size_t chains = 0;         // runs of C vectors that start and end at rest
+    double estimatedS = 0;          // job time under the unit's motion model (§4.2)
+    double boundS = 0;              // time-optimal bound for the same path and limits
+    double waitS = 0;               // dwells and spin-up waits (PC side), in both figures
+    double linkWaitS = 0;           // the link's part of each rest (status poll, position check,
+                                    // commands outside packets), in both figures
+    double maxVertexJumpMmPerS = 0; // largest per-axis speed step at a vertex, mm/s
+    double maxJumpRatio = 0;        // largest (speed step / axis limit) at a vertex
+    std::size_t jumpOverLimit = 0;  // vertices whose speed step exceeds an axis limit
+    double maxCurveAccelRatio = 0;  // largest axis acceleration through a turn / limit
     std::size_t curveAccelOverLimit = 0; // vertices turning faster than the axes accelerate
     std::size_t brakeViolations = 0;     // vectors the model cannot brake in time (must be 0)
     bool speedModeVk = false;            // VK (path speeds) or VN (major-axis speeds)

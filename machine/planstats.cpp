@@ -289,9 +289,6 @@ void Planner::finishStats()
     s.waitS = m_waitS;
     s.estimatedS = model.motionS + model.waitS + s.linkWaitS;
     s.boundS = m_bound + m_waitS + rests.unitPauseS + rests.boundLinkS;
-    s.motionS = model.motionS;
-    s.boundMotionS = m_bound;
-    s.boundLinkWaitS = rests.boundLinkS;
 }
 
 } // namespace frezka::machine::detail

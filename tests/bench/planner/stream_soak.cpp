@@ -12,9 +12,7 @@
 //                                                in link.baud/latencyMs/packets) to DIR/seed-N.*
 //   stream_soak --ratios CASES FIRST_SEED MAX_LINES  each case's estimate / bound as planned,
 //                                                without V and A sharing, without the link's pace,
-//                                                and without either; then where the plan's
-//                                                estimate lies above its bound (gap: motion,
-//                                                the rests' link part, other)
+//                                                and without either
 //   STREAM_SOAK_VERBOSE=1 also lists every case off the link's pace (else only those that
 //   stopped with an error on a clean link, which it must never do).
 //   STREAM_SOAK_SPLIT=1 prints, per clean case, where its time went against the estimate: the
@@ -88,14 +86,7 @@ int ratios(long cases, long first, int maxLines)
                         p.stats.estimatedS, p.stats.boundS,
                         p.stats.boundS > 0 ? p.stats.estimatedS / p.stats.boundS : 0.0);
         }
-        // Where the plan's estimate lies above its bound (as planned): the unit's motion, the
-        // link's part of the rests (the bound counts each F at its least), and the rest (the T
-        // pauses of the rests the plan chooses).
-        const auto planned = frezka::machine::plan(toolpath, job.config, {});
-        const frezka::machine::PlanStats &s = planned.stats;
-        const double motion = s.motionS - s.boundMotionS, link = s.linkWaitS - s.boundLinkWaitS;
-        std::printf(" gap %.3f motion %.3f link %.3f other %.3f  %s\n", s.estimatedS - s.boundS,
-                    motion, link, s.estimatedS - s.boundS - motion - link, job.summary.c_str());
+        std::printf("  %s\n", job.summary.c_str());
     }
     return 0;
 }
