@@ -18,6 +18,8 @@ constexpr double kFastSliceLimitS = 60.0;
 // a debugger) so that a wait is not skipped over.
 constexpr double kWaitSliceLimitS = 0.1;
 constexpr int kWaitIntervalMs = 10;
+// The screen's refresh while the machine moves: 20 Hz, as the real-time link polls.
+constexpr int kShowIntervalMs = 50;
 
 } // namespace
 
@@ -72,8 +74,11 @@ void VirtualClockLink::slice()
     }
     m_wall.restart();
     m_longestSliceMs = std::max(m_longestSliceMs, wall.elapsed());
-    if (m_changed) {
+    // The screen at most at the real-time link's poll rate while the machine moves (a frame of
+    // a big toolpath costs more than a slice), and at once when it comes to wait.
+    if (m_changed && (!m_shown.isValid() || m_shown.elapsed() >= kShowIntervalMs || !moving())) {
         m_changed = false;
+        m_shown.start();
         emit sliceEnded(m_sim->state());
     }
     schedule();

@@ -6,7 +6,9 @@
 // the machine moves (a job, homing, a jog, the connect), at the pace of the wall clock while it
 // waits (idle, held), so that an idle window does not spin. Between slices the loop handles
 // input and paints: the window stays responsive. The run workflow hears every state (the link's
-// stateChanged); the screen, which costs more, is refreshed once per slice (sliceEnded). Only
+// stateChanged); the screen, which costs more (a frame of a big toolpath outlasts a slice), is
+// given the state at the end of a slice at most 20 times a second while the machine moves, as
+// the real-time link polls, and as soon as it comes to wait (sliceEnded). Only
 // the built-in emulator runs on it: a port is refused (connectTo with a SerialPort errors).
 
 #include "session/simlink.h"
@@ -52,7 +54,7 @@ public:
     void execute(const driver::MachineCommand &command) override;
 
 signals:
-    // A slice has ended and the state changed during it: the screen's moment to show it.
+    // A slice has ended, the state changed since the last of these, and it is time to show it.
     void sliceEnded(const frezka::driver::MachineState &state);
 
 private:
@@ -65,7 +67,8 @@ private:
     std::unique_ptr<SimLink> m_sim;
     driver::MachineState m_none; // state() before the first connect
     QTimer *m_timer;
-    QElapsedTimer m_wall; // since the last slice, for the wall-clock pace while waiting
+    QElapsedTimer m_wall;  // since the last slice, for the wall-clock pace while waiting
+    QElapsedTimer m_shown; // since the screen was last given a state
     int m_sliceMs;
     qint64 m_longestSliceMs = 0;
     bool m_changed = false;
