@@ -70,10 +70,16 @@ int main(int argc, char **argv)
 
     QElapsedTimer wall, sinceTick;
     qint64 maxGapMs = 0;
+    double maxGapEndS = 0; // when the largest stall ended: wall seconds into the run
     QTimer ticker;
     ticker.setInterval(5);
-    QObject::connect(&ticker, &QTimer::timeout,
-                     [&] { maxGapMs = std::max(maxGapMs, sinceTick.restart()); });
+    QObject::connect(&ticker, &QTimer::timeout, [&] {
+        const qint64 gap = sinceTick.restart();
+        if (gap > maxGapMs) {
+            maxGapMs = gap;
+            maxGapEndS = wall.elapsed() / 1000.0;
+        }
+    });
     frezka::emulator::Stats before;
     std::shared_ptr<const frezka::machine::UnitProgram> plan;
     double estimateS = -1, loadS = 0;
@@ -117,9 +123,9 @@ int main(int argc, char **argv)
                     estimateS > 0 ? 100.0 * (jobS - estimateS) / estimateS : 0.0);
         std::printf("wall: load+plan %.1f s, run %.1f s\n", loadS, runS);
         std::printf("peak RSS %.0f MB\n", peakRssMb());
-        std::printf("largest event-loop stall while running: %lld ms (longest clock slice "
-                    "%lld ms)\n",
-                    static_cast<long long>(maxGapMs),
+        std::printf("largest event-loop stall while running: %lld ms, ending %.1f s into the "
+                    "run (longest clock slice %lld ms)\n",
+                    static_cast<long long>(maxGapMs), maxGapEndS,
                     static_cast<long long>(clock->longestSliceMs()));
         if (plan) {
             std::printf("vectors run %lld of %lld; counters %s the program's end\n",
