@@ -48,6 +48,7 @@ constexpr int kMaxRecent = 8;
 
 MainWindow::MainWindow(const MainWindowOptions &options, QWidget *parent)
     : QMainWindow(parent)
+    , m_clock(options.clock)
 {
     setObjectName(QStringLiteral("frezkaMainWindow"));
     using B = ToolpathView::Backend;
@@ -265,9 +266,9 @@ void MainWindow::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange) {
         retranslate();
-        if (m_controller) { // the hold's words and the connection in the new language
+        if (m_link) { // the hold's words and the connection in the new language
             m_holdDetail.clear();
-            onState(m_controller->state());
+            onState(m_link->state());
         }
     }
     QMainWindow::changeEvent(event);
@@ -440,7 +441,7 @@ void MainWindow::applyProfile(const machine::MachineConfig &config, const QStrin
     m_workflow->setProfile(config); // the controller's too
     if (newLink) {
         // A new port (or rate) set with Apply is used now, unless a job is on the machine.
-        if (m_controller->state().jobActive)
+        if (m_link->state().jobActive)
             m_console->appendInfo(tr("The new port is used when you connect again after the "
                                      "job."));
         else

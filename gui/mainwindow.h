@@ -16,6 +16,7 @@
 #include "session/programmodes.h"
 #include "session/remainingtime.h"
 #include "session/runworkflow.h"
+#include "session/virtualclocklink.h"
 #include "session/workoffsets.h"
 
 #include <QDateTime>
@@ -65,6 +66,10 @@ struct MainWindowOptions
 {
     enum class View { Auto, Software, OpenGl } view = View::Auto;
     bool restoreLayout = true; // from QSettings
+    // Virtual: the built-in emulator on a virtual clock turned from the event loop, as fast as
+    // the computer allows while the machine moves (frezka --clock virtual; docs/gui.md). A port
+    // is refused then. Real (the default): the emulator or the port in real time.
+    enum class Clock { Real, Virtual } clock = Clock::Real;
 };
 
 class MainWindow : public QMainWindow
@@ -95,6 +100,11 @@ public:
     UnitsPanel *unitsPanel() const { return m_units; }
     ProgramSession *program() const { return m_program; }
     driver::MachineController *controller() const { return m_controller; }
+    // The link the workflow runs on (the controller's, or the virtual clock's) and its state.
+    session::MachineLink *link() const { return m_link; }
+    const driver::MachineState &machineState() const { return m_link->state(); }
+    // The built-in emulator on the virtual clock (MainWindowOptions::Clock::Virtual), else null.
+    session::VirtualClockLink *virtualClock() const { return m_virtualClock; }
     HoldBanner *holdBanner() const { return m_hold; }
     PlacementBar *placementBar() const { return m_placement; }
     session::WorkOffsets *offsets() const { return m_offsets; }
@@ -286,6 +296,8 @@ private:
     PlacementBar *m_placement = nullptr;
     session::WorkOffsets *m_offsets;
     session::MachineLink *m_link = nullptr;
+    session::VirtualClockLink *m_virtualClock = nullptr; // Clock::Virtual only
+    MainWindowOptions::Clock m_clock = MainWindowOptions::Clock::Real;
     session::RunWorkflow *m_workflow = nullptr;
     std::unique_ptr<session::ProbeFollow> m_follow; // the loaded program probes for itself
     std::shared_ptr<const session::InterpretRequest> m_followRequest; // what m_follow was made of

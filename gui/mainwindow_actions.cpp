@@ -31,7 +31,7 @@ using driver::MachineMode;
 void MainWindow::runProgram()
 {
     // A program that probes for itself runs from its start again: shown as before its probes.
-    if (!m_controller->state().jobActive)
+    if (!m_link->state().jobActive)
         m_program->restoreAsLoaded();
     m_workflow->runProgram();
 }
@@ -62,7 +62,7 @@ void MainWindow::reloadProgram()
         showError(tr("Open a program first."));
         return;
     }
-    if (m_controller->state().jobActive) {
+    if (m_link->state().jobActive) {
         showError(tr("The program cannot be reloaded while its job runs: let it finish or "
                      "abort it, then reload."));
         return;
@@ -79,7 +79,7 @@ void MainWindow::onProgramFileChanged(const QString &path)
     if (path != m_program->program().path || !QFileInfo::exists(path) ||
         QFileInfo(path).lastModified() == m_programModified)
         return; // another file, removed, or the version read last (a reload came first)
-    if (m_controller->state().jobActive) {
+    if (m_link->state().jobActive) {
         m_reloadAfterJob = true; // the running job keeps the plan it has; ask when it ends
         return;
     }
@@ -157,7 +157,7 @@ void MainWindow::updatePlacement()
     m_placement->setProgram(p.toolpath ? session::checkTravel(*p.toolpath, profile())
                                        : session::TravelFit{},
                             m_offsets->state(), profile());
-    const auto &st = m_controller->state();
+    const auto &st = m_link->state();
     m_placement->setPosition(st.positionMm, st.mode == MachineMode::Idle);
 }
 
@@ -165,7 +165,7 @@ void MainWindow::updatePlacement()
 // at it (onOffsetsChanged) and the bar hides once it is inside the travel.
 void MainWindow::placeWorkOffset(const session::Axes4 &offsetMm)
 {
-    if (m_controller->state().mode != MachineMode::Idle) {
+    if (m_link->state().mode != MachineMode::Idle) {
         showError(tr("Set the work zero while the machine is ready and still."));
         return;
     }
@@ -192,7 +192,7 @@ void MainWindow::offerProgram()
 // this only puts its refusal into the operator's words at once.
 void MainWindow::jogStep(int axis, double deltaMm, double feedMmPerMin)
 {
-    const auto &st = m_controller->state();
+    const auto &st = m_link->state();
     const auto &a = profile().axes[std::size_t(axis)];
     const bool homed = st.axisHomed(axis);
     const machine::JogMove move = machine::jogStep(
@@ -206,12 +206,12 @@ void MainWindow::jogStep(int axis, double deltaMm, double feedMmPerMin)
                       .arg(a.softMaxMm, 0, 'f', 3));
         return;
     }
-    m_controller->jogStep(axis, deltaMm, feedMmPerMin);
+    m_link->execute(driver::op::JogStep{axis, deltaMm, feedMmPerMin});
 }
 
 void MainWindow::onOffsetsChanged()
 {
-    const auto &st = m_controller->state();
+    const auto &st = m_link->state();
     m_program->setWorkOffsets(m_offsets->state());
     m_dro->setActiveOffset(m_offsets->active());
     m_dro->setPositions(st.shownMm(), m_offsets->workPosition(st.shownMm()));
@@ -250,7 +250,7 @@ void MainWindow::keepWorkOffsets()
 
 void MainWindow::setWorkZero(int axis)
 {
-    const auto &st = m_controller->state();
+    const auto &st = m_link->state();
     if (st.mode != MachineMode::Idle) {
         showError(tr("Set the work zero while the machine is ready and still."));
         return;

@@ -40,7 +40,7 @@ void MainWindow::runFromLine(int line)
                       .arg(p.text->lineCount()));
         return;
     }
-    const auto &st = m_controller->state();
+    const auto &st = m_link->state();
     if (st.mode != driver::MachineMode::Idle && st.mode != driver::MachineMode::Disconnected) {
         showError(tr("The machine is busy (%1): run from a line once it is ready.")
                       .arg(machineModeText(st.mode)));
@@ -56,7 +56,7 @@ void MainWindow::runWholeProgram()
     if (m_program->startLine() == 0)
         return;
     m_program->setStartLine(0);
-    m_program->setStartPosition(m_controller->state().positionMm);
+    m_program->setStartPosition(m_link->state().positionMm);
     m_program->reload();
 }
 

@@ -63,12 +63,21 @@ void MainWindow::buildCentral()
 void MainWindow::connectMachine()
 {
     m_controller = new driver::MachineController(this);
-    m_link = new session::QtMachineLink<driver::MachineController>(*m_controller, this);
+    if (m_clock == MainWindowOptions::Clock::Virtual) {
+        // The built-in emulator on a virtual clock: the screen shows the state once per slice of
+        // the clock (the workflow hears every one); the controller stays unconnected.
+        m_virtualClock = new session::VirtualClockLink(this);
+        m_link = m_virtualClock;
+        connect(m_virtualClock, &session::VirtualClockLink::sliceEnded, this, &MainWindow::onState);
+        connect(m_link, &session::MachineLink::errorOccurred, this, &MainWindow::onMachineError);
+    } else {
+        m_link = new session::QtMachineLink<driver::MachineController>(*m_controller, this);
+        connect(m_controller, &driver::MachineController::stateChanged, this, &MainWindow::onState);
+        connect(m_controller, &driver::MachineController::errorOccurred, this,
+                &MainWindow::onMachineError);
+    }
     m_workflow = new session::RunWorkflow(*m_link, this);
     m_consoleSession = new session::ConsoleSession(*m_workflow, *m_offsets, this);
-    connect(m_controller, &driver::MachineController::stateChanged, this, &MainWindow::onState);
-    connect(m_controller, &driver::MachineController::errorOccurred, this,
-            &MainWindow::onMachineError);
     connect(m_controller, &driver::MachineController::logLine, this, &MainWindow::onLogLine);
     buildUnitsDock();
 
@@ -128,6 +137,11 @@ void MainWindow::onJobFinished(bool ok)
         const auto &toolpath = m_program->program().toolpath;
         m_view->model()->setCutEntry(
             std::uint32_t(std::max<std::size_t>(1, toolpath ? toolpath->size() : 1) - 1));
+        // The listing at the job's last line too: the states between the last one shown and
+        // the end may not all have been shown (on the virtual clock, one a slice).
+        if (const auto &unit = m_program->program().unitProgram;
+            unit && !unit->commands.empty() && unit->commands.back().sourceLine > 0)
+            m_listing->showCurrentLine(int(unit->commands.back().sourceLine));
         statusBar()->showMessage(
             tr("Program finished in %1.").arg(RunPanel::formatDuration(elapsedS)), 15000);
         m_console->appendInfo(tr("Program finished."));
@@ -168,7 +182,7 @@ void MainWindow::onChecked(bool ok)
 QString MainWindow::eepromDifferenceText(const driver::EepromDifference &d) const
 {
     return tr("Unit EEPROM differs from the profile: %1 is %2 in the unit, %3 in the profile")
-        .arg(eepromLabel(m_controller->state().variant, d.entry.address),
+        .arg(eepromLabel(m_link->state().variant, d.entry.address),
              eepromValueText(d.entry.kind, d.unitValue),
              eepromValueText(d.entry.kind, d.entry.value));
 }
@@ -176,7 +190,7 @@ QString MainWindow::eepromDifferenceText(const driver::EepromDifference &d) cons
 void MainWindow::onConnected()
 {
     // Once, in the user's words (the driver's own English log line of each is not shown).
-    for (const auto &d : m_controller->state().eepromDifferences)
+    for (const auto &d : m_link->state().eepromDifferences)
         m_console->appendInfo(eepromDifferenceText(d));
 }
 
@@ -205,17 +219,21 @@ void MainWindow::connectControls()
     connect(m_hold, &HoldBanner::liftRequested, m_workflow, &RunWorkflow::toolLift);
     connect(m_hold, &HoldBanner::lowerRequested, m_workflow, &RunWorkflow::lowerTool);
     connect(m_hold, &HoldBanner::spindleHoldRequested, this,
-            [this](bool stop) { m_controller->execute(driver::op::HoldSpindle{stop}); });
+            [this](bool stop) { m_link->execute(driver::op::HoldSpindle{stop}); });
 
     connect(m_jog, &JogPanel::jogStepRequested, this, &MainWindow::jogStep);
-    connect(m_jog, &JogPanel::jogContinuousStarted, m_controller,
-            &driver::MachineController::jogContinuous);
-    connect(m_jog, &JogPanel::jogContinuousStopped, m_controller,
-            &driver::MachineController::jogStop);
+    // Through the link (the controller's, or the virtual clock's: MainWindowOptions::clock).
+    connect(m_jog, &JogPanel::jogContinuousStarted, this,
+            [this](int axis, int direction, double speed) {
+                m_link->execute(driver::op::JogContinuous{axis, direction, speed});
+            });
+    connect(m_jog, &JogPanel::jogContinuousStopped, this,
+            [this] { m_link->execute(driver::op::JogStop{}); });
     // axis -1: every axis the profile homes, in its order; otherwise that axis alone.
-    connect(m_jog, &JogPanel::homeRequested, m_controller,
-            [this](int axis) { m_controller->home(axis < 0 ? 0xFu : 1u << axis); });
-    connect(m_jog, &JogPanel::mpgToggled, m_controller, &driver::MachineController::setMpg);
+    connect(m_jog, &JogPanel::homeRequested, this,
+            [this](int axis) { m_link->home(axis < 0 ? 0xFu : 1u << axis); });
+    connect(m_jog, &JogPanel::mpgToggled, this,
+            [this](bool on) { m_link->execute(driver::op::SetMpg{on}); });
     connect(m_jog, &JogPanel::wheelTurned, m_controller,
             &driver::MachineController::turnEmulatedWheel);
 
@@ -232,7 +250,7 @@ void MainWindow::connectControls()
 void MainWindow::connectOutputs()
 {
     connect(m_outputs, &OutputsPanel::spindleRequested, this,
-            [this](bool on, double rpm) { m_controller->setSpindleRpm(on ? rpm : 0.0); });
+            [this](bool on, double rpm) { m_link->setSpindleRpm(on ? rpm : 0.0); });
     auto outputFunction = [this](machine::OutputFunction f, bool on) {
         const int output = machine::outputNumber(profile(), f);
         if (output < 0) {
@@ -240,24 +258,19 @@ void MainWindow::connectOutputs()
                          "Settings › Machine profile › Outputs."));
             return;
         }
-        m_controller->setOutput(output, on);
+        m_link->execute(driver::op::SetOutput{output, on});
     };
     connect(m_outputs, &OutputsPanel::coolantRequested, this,
             [outputFunction](bool on) { outputFunction(machine::OutputFunction::Coolant, on); });
     connect(m_outputs, &OutputsPanel::airRequested, this,
             [outputFunction](bool on) { outputFunction(machine::OutputFunction::AirBlow, on); });
     connect(m_outputs, &OutputsPanel::outputRequested, this, outputFunction);
-    connect(m_outputs, &OutputsPanel::feedOverrideRequested, m_controller,
-            &driver::MachineController::setOverride);
-    connect(m_outputs, &OutputsPanel::spindleOverrideRequested, this, [this](int percent) {
-        m_controller->execute(driver::op::SetSpindleOverride{percent});
-    });
-    connect(m_outputs, &OutputsPanel::feedStepRequested, this, [this](int direction) {
-        if (direction > 0)
-            m_controller->overrideUp();
-        else
-            m_controller->overrideDown();
-    });
+    connect(m_outputs, &OutputsPanel::feedOverrideRequested, this,
+            [this](int percent) { m_link->execute(driver::op::SetOverride{percent}); });
+    connect(m_outputs, &OutputsPanel::spindleOverrideRequested, this,
+            [this](int percent) { m_link->execute(driver::op::SetSpindleOverride{percent}); });
+    connect(m_outputs, &OutputsPanel::feedStepRequested, this,
+            [this](int direction) { m_link->execute(driver::op::OverrideStep{direction > 0}); });
 }
 
 // A run asked before homing: home, then run - or not. The question is a window-modal box that
@@ -298,9 +311,20 @@ void MainWindow::connectToUnit()
     settings.setValue(QStringLiteral("link/baud"), config.link.baud);
     m_workflow->setAutoReconnect(
         settings.value(QStringLiteral("link/autoReconnect"), true).toBool());
+    const driver::ConnectionSettings connection = session::RunWorkflow::connectionFor(config);
+    if (m_clock == MainWindowOptions::Clock::Virtual &&
+        connection.kind != driver::ConnectionSettings::Kind::Emulator) {
+        // A real machine moves in real time: only the built-in emulator runs on the virtual
+        // clock, and nothing is opened.
+        showError(tr("The port %1 is not opened: on the virtual clock (--clock virtual) only the "
+                     "built-in emulator runs. Choose the emulator as the port, or start Frezka "
+                     "without --clock virtual.")
+                      .arg(connection.portName));
+        return;
+    }
     if (!prepareLine(config))
         return;
-    m_workflow->connectToUnit(session::RunWorkflow::connectionFor(config));
+    m_workflow->connectToUnit(connection);
 }
 
 void MainWindow::disconnectFromUnit()
@@ -328,7 +352,8 @@ void MainWindow::onState(const driver::MachineState &state)
     m_outputs->showFeedOverride(state.overridePercent, state.overrideHeldPercent());
     m_outputs->showSpindleOverride(state.spindleOverridePercent);
     m_jog->setMpgOn(state.mpgOn);
-    m_jog->setSimulatedWheelAvailable(isConnected(state.mode) &&
+    // The simulated wheel turns the real-time driver's emulator (not the virtual clock's).
+    m_jog->setSimulatedWheelAvailable(isConnected(state.mode) && !m_virtualClock &&
                                       m_workflow->connection().kind ==
                                           driver::ConnectionSettings::Kind::Emulator);
     m_jog->setHomedAxes(homed, isConnected(state.mode));
@@ -369,7 +394,7 @@ void MainWindow::onLogLine(const QString &line)
 
 void MainWindow::updateRunPhase()
 {
-    const auto &st = m_controller ? m_controller->state() : driver::MachineState{};
+    const auto &st = m_link ? m_link->state() : driver::MachineState{};
     const bool connected = isConnected(st.mode);
     RunPhase phase = m_program->program().runnable() ? RunPhase::Ready : RunPhase::NoProgram;
     if (m_program->program().ok() && !m_program->program().runnable())

@@ -61,7 +61,7 @@ void MainWindow::onProbeFollowShown()
     showProvisional();
     m_plot->setPlanned(p.speed);
     m_remaining = session::RemainingTime(p.lineEndS, p.estimatedS);
-    if (!m_controller->state().jobActive)
+    if (!m_link->state().jobActive)
         m_run->setProgress(0, 0, p.estimatedS);
     checkProgramLimits();
     updatePlacement();

@@ -154,7 +154,7 @@ void MainWindow::updateHold(const driver::MachineState &state)
         m_hold->setStopSpindle(state.outputsHeld || !state.spindleOn);
     else if ((kind == K::Paused || kind == K::Interrupt) && m_hold->stopSpindleOnLift() &&
              state.spindleOn && !state.outputsHeld)
-        m_controller->execute(driver::op::HoldSpindle{true});
+        m_link->execute(driver::op::HoldSpindle{true});
 }
 
 void MainWindow::onMachineError(const driver::MachineError &error)
@@ -165,8 +165,8 @@ void MainWindow::onMachineError(const driver::MachineError &error)
         text += QLatin1Char('\n') + tr("Command: %1").arg(QString::fromStdString(error.command));
     if (!error.reply.empty())
         text += QLatin1Char('\n') + tr("Reply: %1").arg(QString::fromStdString(error.reply));
-    const std::uint32_t line = m_controller->state().sourceLine;
-    if (m_controller->state().jobActive && line > 0 && !m_consoleSession->ranLastJob())
+    const std::uint32_t line = m_link->state().sourceLine;
+    if (m_link->state().jobActive && line > 0 && !m_consoleSession->ranLastJob())
         text += QLatin1Char('\n') + tr("Program line: %1").arg(line);
     showError(text);
 }

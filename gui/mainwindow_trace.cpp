@@ -43,7 +43,7 @@ bool MainWindow::saveSerialTrace(const QString &path, QString *error) const
                     "Application, then repeat what went wrong and save it again.");
         return false;
     }
-    if (const std::string &firmware = m_controller->state().firmware; !firmware.empty())
+    if (const std::string &firmware = m_link->state().firmware; !firmware.empty())
         recorder.setValue("firmware", firmware); // what the unit said, not the profile's
     recorder.setValue("saved", "Machine > Save serial trace");
     return recorder.save(path, error);

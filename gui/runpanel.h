@@ -25,6 +25,9 @@ public:
     RunPhase phase() const { return m_phase; }
     // fraction 0..1; seconds < 0 = unknown.
     void setProgress(double fraction, double elapsedS, double remainingS);
+    // The figures shown (seconds; remaining < 0: unknown).
+    double elapsedS() const { return m_elapsedS; }
+    double remainingS() const { return m_remainingS; }
     static QString formatDuration(double seconds);
 
 signals:

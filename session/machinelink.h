@@ -14,6 +14,8 @@
 
 #include <QObject>
 
+#include <optional>
+
 namespace frezka::session {
 
 class MachineLink : public QObject
@@ -25,6 +27,9 @@ public:
     ~MachineLink() override;
 
     virtual const driver::MachineState &state() const = 0;
+    // The link's own clock in seconds (a virtual one: SimLink, VirtualClockLink), or none when
+    // the link runs in real time (the wall clock is the job's clock then).
+    virtual std::optional<double> clockS() const { return std::nullopt; }
     virtual void setMachineConfig(const machine::MachineConfig &config) = 0;
     virtual void connectTo(const driver::ConnectionSettings &settings) = 0;
     virtual void disconnectFromUnit() = 0;

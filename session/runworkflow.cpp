@@ -185,10 +185,25 @@ void RunWorkflow::runProgram()
     startJob();
 }
 
+void RunWorkflow::startJobClock()
+{
+    m_jobClock.start();
+    m_jobStartS = m_link.clockS();
+}
+
+double RunWorkflow::jobElapsedS() const
+{
+    if (!m_jobClock.isValid())
+        return m_lastJobS;
+    if (const std::optional<double> now = m_link.clockS(); now && m_jobStartS)
+        return *now - *m_jobStartS;
+    return double(m_jobClock.elapsed()) / 1000.0;
+}
+
 void RunWorkflow::startJob()
 {
     emit message(tr("Running %1.").arg(m_name));
-    m_jobClock.start();
+    startJobClock();
     emit jobStarted();
     m_plannedRestarts = machine::plannedRestarts(*m_plan);
     m_link.run(*m_plan);
@@ -268,7 +283,7 @@ void RunWorkflow::onState(const driver::MachineState &s)
 {
     const MachineMode last = std::exchange(m_lastMode, s.mode);
     if (s.jobActive && !m_jobClock.isValid())
-        m_jobClock.start(); // a job not started here (a console line, one kept over a lost link)
+        startJobClock(); // a job not started here (a console line, one kept over a lost link)
     if (s.mode == MachineMode::LinkLost && last != MachineMode::LinkLost) {
         emit linkLost();
         if (m_autoReconnect && !m_userDisconnected)

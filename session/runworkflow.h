@@ -36,8 +36,10 @@
 #include "session/probefollow.h"
 
 #include <QElapsedTimer>
+
 #include <QObject>
 #include <QTimer>
+#include <optional>
 
 #include <array>
 #include <functional>
@@ -105,11 +107,9 @@ public:
     QString error() const { return m_error; }
 
     // ---- during a job
-    // Wall-clock seconds of the job running now, or of the last one when none runs.
-    double jobElapsedS() const
-    {
-        return m_jobClock.isValid() ? double(m_jobClock.elapsed()) / 1000.0 : m_lastJobS;
-    }
+    // Seconds of the job running now, or of the last one when none runs: on the link's own
+    // clock when it has one (a virtual clock: MachineLink::clockS), else the wall clock.
+    double jobElapsedS() const;
     void pause() { m_link.pause(); }
     void resume() { m_link.resume(); }
     // The controlled stop (Stop, Esc): a job is held (H), homing ends; nothing when idle.
@@ -146,6 +146,7 @@ private:
     enum class Pending : std::uint8_t { None, Run, Check };
 
     void onState(const driver::MachineState &state);
+    void startJobClock();
     void onError(const driver::MachineError &error);
     void onJobFinished(bool ok);
     void advance(const driver::MachineState &state, driver::MachineMode last);
@@ -185,7 +186,8 @@ private:
     driver::MachineMode m_lastMode = driver::MachineMode::Disconnected;
     QString m_error;
     QTimer m_reconnect;
-    QElapsedTimer m_jobClock; // from the job's start (or the first state that shows one)
+    QElapsedTimer m_jobClock;          // from the job's start (or the first state that shows one)
+    std::optional<double> m_jobStartS; // the link's clock at the job's start, when it has one
     double m_lastJobS = 0;
 };
 

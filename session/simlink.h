@@ -42,6 +42,7 @@ public:
     const driver::MachineState &liveState() const { return m_core.state(); }
 
     const driver::MachineState &state() const override { return m_state; }
+    std::optional<double> clockS() const override { return now(); }
     void setMachineConfig(const machine::MachineConfig &config) override;
     void connectTo(const driver::ConnectionSettings &settings) override;
     void disconnectFromUnit() override;

@@ -4846,6 +4846,10 @@ Sonda se nedotkla podle očekávání. Přerušte úlohu, nebo pokračujte.</tra
         <source>The program set work offsets (G10 L2/L20), kept: %1 (machine mm).</source>
         <translation>Program nastavil pracovní posunutí (G10 L2/L20), ponechána: %1 (strojní mm).</translation>
     </message>
+    <message>
+        <source>The port %1 is not opened: on the virtual clock (--clock virtual) only the built-in emulator runs. Choose the emulator as the port, or start Frezka without --clock virtual.</source>
+        <translation>Port %1 se neotevírá: na virtuálních hodinách (--clock virtual) běží jen vestavěný emulátor. Zvolte jako port emulátor, nebo spusťte Frezku bez --clock virtual.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -7937,6 +7941,14 @@ Volby:
     <message>
         <source>Apply this height map file to the program (as Machine › Height map › Apply, the work zero left as it is).</source>
         <translation>Použít tento soubor výškové mapy na program (jako Stroj › Výšková mapa › Použít na program; nulový bod obrobku zůstane, jak je).</translation>
+    </message>
+    <message>
+        <source>real (default): the machine in real time; virtual: the built-in emulator on a virtual clock, as fast as the computer allows (a port is refused).</source>
+        <translation>real (výchozí): stroj ve skutečném čase; virtual: vestavěný emulátor na virtuálních hodinách, tak rychle, jak počítač stačí (port se odmítne).</translation>
+    </message>
+    <message>
+        <source>--clock takes real or virtual, not &quot;%1&quot;.</source>
+        <translation>--clock přijímá real nebo virtual, ne &quot;%1&quot;.</translation>
     </message>
 </context>
 </TS>

@@ -4839,6 +4839,10 @@ The probe did not touch as expected. Abort the job or Continue.</translation>
         <source>The program set work offsets (G10 L2/L20), kept: %1 (machine mm).</source>
         <translation>The program set work offsets (G10 L2/L20), kept: %1 (machine mm).</translation>
     </message>
+    <message>
+        <source>The port %1 is not opened: on the virtual clock (--clock virtual) only the built-in emulator runs. Choose the emulator as the port, or start Frezka without --clock virtual.</source>
+        <translation>The port %1 is not opened: on the virtual clock (--clock virtual) only the built-in emulator runs. Choose the emulator as the port, or start Frezka without --clock virtual.</translation>
+    </message>
 </context>
 <context>
     <name>frezka::gui::OutputsPanel</name>
@@ -7924,6 +7928,14 @@ Options:
     <message>
         <source>Apply this height map file to the program (as Machine › Height map › Apply, the work zero left as it is).</source>
         <translation>Apply this height map file to the program (as Machine › Height map › Apply, the work zero left as it is).</translation>
+    </message>
+    <message>
+        <source>real (default): the machine in real time; virtual: the built-in emulator on a virtual clock, as fast as the computer allows (a port is refused).</source>
+        <translation>real (default): the machine in real time; virtual: the built-in emulator on a virtual clock, as fast as the computer allows (a port is refused).</translation>
+    </message>
+    <message>
+        <source>--clock takes real or virtual, not &quot;%1&quot;.</source>
+        <translation>--clock takes real or virtual, not &quot;%1&quot;.</translation>
     </message>
 </context>
 </TS>

@@ -29,9 +29,9 @@ void runForScreenshot(frezka::gui::MainWindow &window, int ms, const std::functi
     auto *timer = new QTimer(&window);
     auto step = std::make_shared<int>(0);
     QObject::connect(timer, &QTimer::timeout, &window, [&window, timer, step, ms, shoot] {
-        const auto &st = window.controller()->state();
+        const auto &st = window.machineState();
         if (*step == 0 && st.mode == MachineMode::Idle) {
-            window.controller()->home();
+            window.link()->home(0xF);
             *step = 1;
         } else if (*step == 1 && st.mode == MachineMode::Idle && st.homed) {
             window.runProgram();
@@ -115,6 +115,13 @@ int main(int argc, char **argv)
                                         "Height map › Apply, the work zero left as it is)."),
         QStringLiteral("file"));
     parser.addOption(heightMap);
+    QCommandLineOption clock(
+        QStringLiteral("clock"),
+        QApplication::translate("main", "real (default): the machine in real time; virtual: the "
+                                        "built-in emulator on a virtual clock, as fast as the "
+                                        "computer allows (a port is refused)."),
+        QStringLiteral("real|virtual"));
+    parser.addOption(clock);
     parser.addPositionalArgument(QStringLiteral("program"),
                                  QApplication::translate("main", "G-code program to open."));
     parser.process(*app);
@@ -125,6 +132,18 @@ int main(int argc, char **argv)
     frezka::gui::MainWindowOptions options;
     if (parser.isSet(software))
         options.view = frezka::gui::MainWindowOptions::View::Software;
+    if (parser.isSet(clock)) {
+        const QString value = parser.value(clock);
+        if (value == QLatin1String("virtual")) {
+            options.clock = frezka::gui::MainWindowOptions::Clock::Virtual;
+        } else if (value != QLatin1String("real")) {
+            std::fprintf(stderr, "%s\n",
+                         qPrintable(QApplication::translate(
+                                        "main", "--clock takes real or virtual, not \"%1\".")
+                                        .arg(value)));
+            return 2;
+        }
+    }
     frezka::gui::MainWindow window(options);
     window.show();
     if (parser.isSet(heightMap)) {
