@@ -118,8 +118,6 @@ void Job::streamStep(double now)
         m_cursor.exec = m_cursor.next;
         m_cursor.execAt = now;
     }
-    if (m_lead.held())
-        m_override.unitHeld(); // a lower XM after damage goes out while the unit stands
     if (m_sync.step(now) || (!m_sync.busy() && m_lead.step(now)))
         return;
     if (m_cursor.next >= m_program.commands.size()) {
@@ -169,10 +167,7 @@ void Job::onCommandOutcome(const Outcome &o, std::size_t index, double now)
     if (m_cursor.next != index || m_guard.faulted())
         return;
     const machine::UnitCommand &c = m_program.commands[index];
-    const bool damaged = o.status == OutcomeStatus::Failed || o.recovered > 0;
-    m_chainDamaged = m_chainDamaged || damaged;
-    if (damaged)
-        m_override.noteDamage(); // the unit's queue must outlast the next recovery (XM)
+    m_chainDamaged = m_chainDamaged || o.status == OutcomeStatus::Failed || o.recovered > 0;
     if (o.status == OutcomeStatus::Failed) {
         if (isMotion(c.op)) {
             m_check.verify("outcome unknown: " + o.error);

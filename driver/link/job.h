@@ -71,7 +71,7 @@ public:
     void positionRead()
     {
         if (m_tracker.positionRead(m_figures.report().startS))
-            m_override.follow(m_active, true);
+            m_override.follow(m_active);
     }
     void unitStands() { m_tracker.unitStands(); } // F read RUN = 0: everything accepted has run
     void checkPolledPosition(bool kept);          // the path guard's check of a poll

@@ -24,8 +24,6 @@ void JobPace::build()
     const auto &cmds = m_program.commands;
     m_waitS = 0;
     m_waitExecAt = -1;
-    m_linkRate = m_linkRateBefore = 1.0;
-    m_linkRateAt = -1;
     m_vectorPrefix.assign(cmds.size() + 1, 0);
     for (std::size_t i = 0; i < cmds.size(); ++i)
         m_vectorPrefix[i + 1] = m_vectorPrefix[i] + (isMotion(cmds[i].op) ? 1 : 0);
@@ -141,38 +139,7 @@ std::size_t JobPace::executingAtFull() const
 // the unit holds more than it does (XM scales cruise only; the motion is at most that slower).
 double JobPace::rate() const
 {
-    return rateAt(m_linkRate);
-}
-
-// The link holds the unit below the operator's speed (JobOverride) on a stretch the wire
-// bounds, short vectors at their cruise: XM scales that cruise, so the motion lasts 1 / factor
-// as long.
-double JobPace::rateAt(double linkFactor) const
-{
-    return linkFactor < 1.0 ? linkFactor
-                            : std::max(1.0, m_host.liveState().overrideSentPercent / 100.0);
-}
-
-void JobPace::setLinkRate(double factor)
-{
-    if (factor == m_linkRate)
-        return;
-    m_linkRateBefore = m_linkRate;
-    m_linkRate = factor;
-    m_linkRateAt = m_host.now();
-}
-
-// Program seconds the unit ran since the anchor (exec, execAt): at the rate before the link's
-// last change of XM until that XM reached the unit (half a round trip after it left), at the
-// rate now since.
-double JobPace::programRunS() const
-{
-    const double elapsed = elapsedS();
-    if (m_linkRateAt < 0)
-        return elapsed * rate();
-    const double since =
-        std::clamp(m_host.now() - (m_linkRateAt + m_host.rttS() / 2), 0.0, elapsed);
-    return (elapsed - since) * rateAt(m_linkRateBefore) + since * rate();
+    return std::max(1.0, m_host.liveState().overrideSentPercent / 100.0);
 }
 
 std::size_t JobPace::exec() const
@@ -216,7 +183,7 @@ double JobPace::runS(std::size_t from, std::size_t to) const
 
 std::size_t JobPace::execEstimate() const
 {
-    double elapsed = programRunS();
+    double elapsed = elapsedS() * rate();
     std::size_t i = std::min(exec(), m_cursor.next);
     while (i < m_cursor.next && elapsed >= m_timePrefix[i + 1] - m_timePrefix[i]) {
         elapsed -= m_timePrefix[i + 1] - m_timePrefix[i];
@@ -228,8 +195,7 @@ std::size_t JobPace::execEstimate() const
 double JobPace::bufferedS() const
 {
     const std::size_t from = std::min(exec(), m_cursor.next);
-    return std::max(0.0,
-                    (m_timePrefix[m_cursor.next] - m_timePrefix[from] - programRunS()) / rate());
+    return std::max(0.0, runS(from, m_cursor.next) - elapsedS());
 }
 
 double JobPace::leadS() const
@@ -258,14 +224,14 @@ int JobPace::maxPacket() const
 // Whether the next queue-full of commands runs faster than it takes to send: then the wire sets
 // the pace and the unit will run dry whatever the driver does, so every round trip not spent on
 // the stream is lost.
-double JobPace::wireShareAhead(bool atPlanSpeed) const
+bool JobPace::wireBoundAhead() const
 {
     const std::size_t next = m_cursor.next;
     if (next >= m_program.commands.size())
-        return 1e9;
+        return false;
     const std::size_t span = static_cast<std::size_t>(maxPacket());
     const std::size_t end = std::min(m_program.commands.size(), next + span);
-    const double motion = runS(next, end) * (atPlanSpeed ? std::min(1.0, rate()) : 1.0);
+    const double motion = runS(next, end);
     const double wire =
         m_host.link().wireTime(static_cast<std::size_t>(m_bytePrefix[end] - m_bytePrefix[next]));
     // Each command that cannot travel in a packet (A, V, ...) is a round trip of its own, and so
@@ -277,16 +243,7 @@ double JobPace::wireShareAhead(bool atPlanSpeed) const
     const double trips = m_host.options().packets
                              ? static_cast<double>(m_tripPrefix[end] - m_tripPrefix[next])
                              : static_cast<double>(end - next);
-    return motion / (wire + std::max(1.0, trips) * m_host.rttS());
-}
-
-double JobPace::packetWireS() const
-{
-    const std::size_t next = m_cursor.next;
-    const std::size_t end =
-        std::min(m_program.commands.size(), next + static_cast<std::size_t>(maxPacket()));
-    return m_host.link().wireTime(static_cast<std::size_t>(m_bytePrefix[end] - m_bytePrefix[next]) +
-                                  24); // *S *S *E
+    return motion < wire + std::max(1.0, trips) * m_host.rttS();
 }
 
 int JobPace::overrideCeiling() const
@@ -388,7 +345,7 @@ std::int64_t JobPace::queuedAfter(double ahead) const
     const std::size_t next = m_cursor.next;
     const std::size_t from = std::min(exec(), next);
     const double at =
-        std::min(m_timePrefix[from] + programRunS() + ahead * rate(), m_timePrefix[next]);
+        std::min(m_timePrefix[from] + (elapsedS() + ahead) * rate(), m_timePrefix[next]);
     // The command executing at program time `at`: the last k with m_timePrefix[k] <= at.
     auto it = std::upper_bound(m_timePrefix.begin() + static_cast<std::ptrdiff_t>(from),
                                m_timePrefix.begin() + static_cast<std::ptrdiff_t>(next) + 1, at);

@@ -71,23 +71,7 @@ public:
     // Vectors still queued in the unit `aheadS` seconds from now.
     std::int64_t queuedAfter(double aheadS) const;
     // The motion of the next queue-full runs faster than the wire can carry it.
-    bool wireBoundAhead() const { return wireShareAhead(false) < 1.0; }
-    // The next queue-full's motion over the time the clean wire takes to carry it (its bytes and
-    // round trips; a large number at the program's end). atPlanSpeed: at the speed the job runs
-    // without the link's hold below 100 % (JobOverride::linkPercent).
-    double wireShareAhead(bool atPlanSpeed) const;
-    // The wire time of a full packet from the cursor on: what a damaged one costs to send again.
-    double packetWireS() const;
-    // The link holds the unit's XM below the operator's (JobOverride): its motion runs at
-    // `factor` of the speed the model counts (1: no hold), from half a round trip after now.
-    void setLinkRate(double factor);
-    double linkRate() const { return m_linkRate; }
-    // Program seconds (at 100 %) per second of the unit's time: the XM above 100 %, the link's
-    // hold below (setLinkRate), else 1 (an operator's override below 100 % is not counted: the
-    // driver never takes the unit for holding more than it does).
-    double rate() const;
-    // Program seconds the unit ran since the last position read, by the model.
-    double programRunS() const;
+    bool wireBoundAhead() const;
     // The highest feed override (percent, at least 100) at which the wire still carries every
     // queue-full of motion from the executing command to a queue-full past the next to send:
     // XM scales speeds, so a stretch paced to the wire at 100 % runs dry above it.
@@ -136,13 +120,13 @@ public:
 
 private:
     void estimateDurations();
-    double rateAt(double linkFactor) const; // rate() with the link's factor at linkFactor
     // Plays the job's packets from `queuedEnd` on, the first leaving at t0 (s from now), with
     // the unit's motion counted from program time originS: kFeeds, or 1 + the last vector
     // queued when a packet's vectors come after the unit began braking to rest. `floor`: no
     // vector at or after it queued yet means the unit has not started (it waits, it feeds).
     std::size_t playPackets(double originS, std::size_t floor, std::size_t queuedEnd,
                             double t0) const;
+    double rate() const; // program seconds per second of the unit's time
     // The executing command and when it was read, as the pace takes them (JobCursor::paceExec).
     std::size_t exec() const;
     double execAt() const;
@@ -175,10 +159,6 @@ private:
     double m_waitS = 0;
     std::size_t m_waitExec = 0;
     double m_waitExecAt = -1;
-    // The link's hold (setLinkRate): the factor now, the one before it and when it changed.
-    double m_linkRate = 1.0;
-    double m_linkRateBefore = 1.0;
-    double m_linkRateAt = -1;
 };
 
 } // namespace frezka::driver

@@ -51,7 +51,7 @@ std::size_t JobPace::dryAhead(double delayS) const
     // Where the model has the unit now, in program seconds: the commands sent from here on go
     // as the job sends them, the first one `delayS` from now.
     const std::size_t from = std::min(exec(), next);
-    const double origin = std::min(m_timePrefix[from] + programRunS(), m_timePrefix[next]);
+    const double origin = std::min(m_timePrefix[from] + elapsedS() * rate(), m_timePrefix[next]);
     return playPackets(origin, 0, next, delayS);
 }
 
@@ -72,7 +72,7 @@ std::size_t JobPace::stopEstimate(double aheadS) const
     const std::size_t at = std::min(execEstimate() + 1, next);
     // Braking from V takes its whole time at most; counted as motion run (the unit is taken to
     // stand later than it does: it holds more than the hold reckons, never less).
-    const double t = m_timePrefix[from] + programRunS() + aheadS * rate() + m_brakeS[at];
+    const double t = m_timePrefix[from] + (elapsedS() + aheadS) * rate() + m_brakeS[at];
     const auto it =
         std::upper_bound(m_timePrefix.begin() + static_cast<std::ptrdiff_t>(from),
                          m_timePrefix.begin() + static_cast<std::ptrdiff_t>(next) + 1, t);
@@ -89,9 +89,6 @@ std::size_t JobPace::playPackets(double originS, std::size_t floor, std::size_t 
     const std::size_t maxCommands = static_cast<std::size_t>(maxPacket());
     const std::size_t last = std::min(cmds.size(), queuedEnd + 4 * maxCommands + 64);
     double t = t0;
-    // Below 100 % only where the link holds the unit down (JobPace::setLinkRate): the motion
-    // queued lasts that much longer.
-    const double slow = std::min(1.0, rate());
     std::size_t next = queuedEnd;
     while (next < last && !machine::restsAt(cmds[next].op)) {
         const std::size_t lastMotion = m_lastMotion[next];
@@ -103,10 +100,9 @@ std::size_t JobPace::playPackets(double originS, std::size_t floor, std::size_t 
         // At 100 %, as leadInSlackS: above, the override's ceiling keeps the wire ahead (judged
         // at the override, chains that ran without a stop at the ceiling were held, and
         // StreamPace.AFeedOverrideIsKeptWithinWhatTheLinkCanFeed took 2.7 % longer).
-        const double reach = (m_timePrefix[next] - originS -
-                              std::min(m_brakeS[lastVector + 1],
-                                       m_timePrefix[lastVector + 1] - m_timePrefix[lastVector])) /
-                             slow;
+        const double reach = m_timePrefix[next] - originS -
+                             std::min(m_brakeS[lastVector + 1],
+                                      m_timePrefix[lastVector + 1] - m_timePrefix[lastVector]);
         const double held = reach - t;
         if (held > 1.0)
             return kFeeds; // well ahead: the steady pace holds from here

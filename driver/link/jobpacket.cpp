@@ -112,7 +112,6 @@ void Job::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, do
         return; // superseded (abort, link loss, the path guard dropped the queue)
     if (o.status == OutcomeStatus::Failed) {
         m_chainDamaged = true;
-        m_override.noteDamage();
         m_lineErrors.note(static_cast<int>(n), 1);
         m_packetLimit = std::max(4, m_packetLimit / 2);
         m_check.verify("packet outcome unknown: " + o.error);
@@ -123,8 +122,6 @@ void Job::onPacketOutcome(const Outcome &o, std::size_t first, std::size_t n, do
     m_chainDamaged = m_chainDamaged || damaged || o.recovered > 0;
     m_lineErrors.note(static_cast<int>(o.reply.ok() ? n : accepted + 1), damaged ? 1 : 0);
     acceptUpTo(first + accepted, o.recovered == 0);
-    if (damaged || o.recovered > 0)
-        m_override.noteDamage(); // the unit's queue must outlast the next recovery (XM)
     switch (o.reply.code) {
     case ReplyCode::Ok:
         m_queueFullSeen = false;

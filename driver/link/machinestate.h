@@ -175,9 +175,6 @@ struct MachineState
     {
         return overrideSentPercent < overridePercent ? overrideSentPercent : 0;
     }
-    // ... held there because the link damages packets (JobOverride::noteDamage: the unit's queue
-    // must outlast the resends), not because the motion ahead is faster than the clean wire.
-    bool overrideHeldForFaults = false;
     bool mpgOn = false;
 
     // job
