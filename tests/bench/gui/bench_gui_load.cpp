@@ -7,6 +7,8 @@
 //   bench_gui_load [lines] [--gl]   (offscreen by default: QT_QPA_PLATFORM=offscreen)
 //   BENCH_PLAN_ONCE=1: also plans the toolpath once without the link's pace, for the re-plans'
 //   share of the plan stage.
+#include "../../gui/spiralprogram.h"
+
 #include "gui/mainwindow.h"
 #include "gui/programview.h"
 #include "gui/toolpathview.h"
@@ -95,27 +97,8 @@ int main(int argc, char **argv)
 
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("big.nc"));
-    {
-        QFile f(path);
-        if (!f.open(QIODevice::WriteOnly))
-            return 1;
-        QByteArray buf;
-        buf.reserve(1 << 20);
-        buf += "G21 G90 G94\nG0 X0 Y0 Z0\nG1 Z-1 F1500\n";
-        // A spiral of short segments, like CAM output for a 3D surface.
-        for (long i = 3; i < lines - 1; ++i) {
-            const double t = double(i) * 0.002;
-            const double r = 10 + double(i) * 120.0 / double(lines);
-            buf += "G1 X" + QByteArray::number(200 + r * std::cos(t), 'f', 3) + " Y" +
-                   QByteArray::number(150 + r * std::sin(t), 'f', 3) + "\n";
-            if (buf.size() > (1 << 20) - 64) {
-                f.write(buf);
-                buf.clear();
-            }
-        }
-        buf += "M30\n";
-        f.write(buf);
-    }
+    if (!frezka::gui::test::writeSpiral(path, lines)) // a spiral of short segments, like CAM output
+        return 1;
     std::printf("program: %ld lines, %.1f MB\n", lines, double(QFile(path).size()) / 1e6);
 
     frezka::gui::MainWindowOptions options;
