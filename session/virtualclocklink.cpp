@@ -1,6 +1,6 @@
 #include "virtualclocklink.h"
 
-#include "driver/link/emulatorport.h"
+#include "driver/link/emulatedunit.h"
 
 #include <QTimer>
 
@@ -103,17 +103,12 @@ void VirtualClockLink::connectTo(const driver::ConnectionSettings &settings)
     // with its own message before it gets here).
     if (settings.kind != driver::ConnectionSettings::Kind::Emulator)
         return;
-    driver::WireOptions wire;
-    wire.baud = settings.baud > 0 ? settings.baud : m_config.link.baud;
-    wire.latencyS = settings.latencyMs / 1000.0;
-    wire.byteErrorRate = settings.faultRate;
-    wire.replyLossRate = settings.faultRate;
-    wire.seed = settings.seed;
+    driver::WireOptions wire = driver::wireFor(settings);
+    if (wire.baud <= 0)
+        wire.baud = m_config.link.baud;
     driver::CoreOptions options;
     options.link.baud = wire.baud;
-    emulator::UnitOptions unit = driver::unitOptionsFor(m_config);
-    if (!settings.surface.isEmpty())
-        driver::setProbeSurface(unit, settings.surface.toStdString(), m_config);
+    const emulator::UnitOptions unit = driver::emulatedUnitFor(settings, m_config);
     // A fresh unit at each connect, as the real-time emulator's; the old one's pending events
     // go with it.
     m_sim = std::make_unique<SimLink>(m_config, unit, wire, options);

@@ -1,6 +1,7 @@
 // The default transport factory: the serial port or the built-in emulator, recorded into the
 // session's serial trace (TraceRecorder::session(), docs/serial-trace.md) unless that is off.
 
+#include "driver/link/emulatedunit.h"
 #include "driver/link/emulatortransport.h"
 #include "driver/link/linkworker.h"
 #include "driver/link/serialtransport.h"
@@ -9,8 +10,6 @@
 #include <QCoreApplication>
 
 namespace frezka::driver {
-
-namespace {
 
 WireOptions wireFor(const ConnectionSettings &settings)
 {
@@ -22,6 +21,17 @@ WireOptions wireFor(const ConnectionSettings &settings)
     wire.seed = settings.seed;
     return wire;
 }
+
+emulator::UnitOptions emulatedUnitFor(const ConnectionSettings &settings,
+                                      const machine::MachineConfig &config)
+{
+    emulator::UnitOptions unit = unitOptionsFor(config);
+    if (!settings.surface.isEmpty())
+        setProbeSurface(unit, settings.surface.toStdString(), config);
+    return unit;
+}
+
+namespace {
 
 // Recorded into the session's serial trace unless that is off.
 Transport *traced(Transport *inner, const ConnectionSettings &settings,
@@ -53,12 +63,8 @@ Transport *createInner(const ConnectionSettings &settings, const machine::Machin
             return nullptr;
         }
         return new SerialTransport(settings.portName, settings.baud, parent);
-    case ConnectionSettings::Kind::Emulator: {
-        emulator::UnitOptions unit = unitOptionsFor(config);
-        if (!settings.surface.isEmpty())
-            setProbeSurface(unit, settings.surface.toStdString(), config);
-        return new EmulatorTransport(unit, wireFor(settings), parent);
-    }
+    case ConnectionSettings::Kind::Emulator:
+        return new EmulatorTransport(emulatedUnitFor(settings, config), wireFor(settings), parent);
     }
     *error = QCoreApplication::translate("LinkWorker", "unknown connection kind");
     return nullptr;
